@@ -1,0 +1,55 @@
+//! `osc2cr`: the command-line front end. It parses arguments, calls the library crates and maps
+//! their results to files, messages and exit codes. No conversion logic lives here.
+//!
+//! Exit status: 0 success, 1 some files of a batch failed, 2 bad usage or bad input.
+
+mod inspect;
+mod map_cmd;
+
+use clap::{Parser, Subcommand};
+use std::process::ExitCode;
+
+/// Convert OpenSCENARIO scenarios (with their OpenDRIVE maps) into CommonRoad scenarios.
+#[derive(Parser)]
+#[command(name = "osc2cr", version, about, long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Convert an OpenDRIVE road network (.xodr) into a CommonRoad lanelet network (.xml).
+    Map(map_cmd::MapArgs),
+    /// Load an OpenSCENARIO file and show what it resolves to: entities, storyboard,
+    /// parameters, warnings.
+    Inspect(inspect::InspectArgs),
+}
+
+/// A failed command: the message for the user and the exit status.
+pub struct Failure {
+    pub message: String,
+    pub status: u8,
+}
+
+impl Failure {
+    /// Bad input or usage (exit status 2).
+    pub fn input(message: impl Into<String>) -> Self {
+        Failure { message: message.into(), status: 2 }
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match &cli.command {
+        Command::Map(args) => map_cmd::run(args),
+        Command::Inspect(args) => inspect::run(args),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(f) => {
+            eprintln!("error: {}", f.message);
+            ExitCode::from(f.status)
+        }
+    }
+}
