@@ -1,1 +1,14 @@
-//! testkit
+//! `testkit` — support for the tests of the other crates (never used by the product):
+//! locates the read-only `../shared` directory and its corpus, prepares the two Python
+//! environments of the CommonRoad checking tools once per process, and runs `cr_check.py` on
+//! batches of files, returning its JSON findings as data.
+//!
+//! It knows the layout of `../shared/tools` and nothing of the converter's crates.
+
+mod cr_check;
+mod python;
+mod shared;
+
+pub use cr_check::{cr_check, CrCheckResult, Finding};
+pub use python::{python_envs, PyEnvs};
+pub use shared::{corpus_files, shared_dir, workspace_root};

@@ -1,0 +1,15 @@
+//! The CommonRoad 2020a XML writer: fixed-notation decimals, escaped text, XSD element order,
+//! deterministic bytes, and atomic file output.
+
+mod atomic;
+mod emitter;
+mod error;
+mod escape;
+mod number;
+mod write;
+
+pub use atomic::write_atomic;
+pub use error::WriteError;
+pub use escape::escape;
+pub use number::{format_decimal, is_written_positive, DECIMALS};
+pub use write::{write_map, write_scenario};

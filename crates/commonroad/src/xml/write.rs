@@ -1,0 +1,490 @@
+//! Serialises a [`Scenario`] (+ planning problems) in exactly the element order of the 2020a
+//! XSD (`xs:sequence` everywhere it matters; `xs:all` state elements in declaration order).
+
+use super::emitter::Emitter;
+use super::error::WriteError;
+use crate::geometry::{AbsoluteShape, PlacedCircle, PlacedRectangle, Point, Polygon, Shape};
+use crate::intersection::Intersection;
+use crate::lanelet::{Adjacent, Lanelet, LineMarking};
+use crate::obstacle::{DynamicObstacle, EnvironmentObstacle, State, StaticObstacle};
+use crate::planning::{GoalPosition, GoalState, Interval, PlanningProblem, PlanningProblemSet};
+use crate::scenario::Scenario;
+use crate::traffic::{TrafficLight, TrafficSign};
+
+/// Writes a scenario file: the scenario and at least one planning problem.
+pub fn write_scenario(
+    scenario: &Scenario,
+    problems: &PlanningProblemSet,
+) -> Result<Vec<u8>, WriteError> {
+    if problems.problems.is_empty() {
+        return Err(WriteError::NoPlanningProblem);
+    }
+    write(scenario, &problems.problems)
+}
+
+/// Writes a map file (`osc2cr map`): the scenario without planning problems. The 2020a XSD
+/// requires a planning problem, so such a file is checked with `cr_check.py --map-only`.
+pub fn write_map(scenario: &Scenario) -> Result<Vec<u8>, WriteError> {
+    write(scenario, &[])
+}
+
+fn write(scenario: &Scenario, problems: &[PlanningProblem]) -> Result<Vec<u8>, WriteError> {
+    let mut e = Emitter::new();
+    let h = &scenario.header;
+    let step = e.decimal("timeStepSize", h.time_step_size)?;
+    e.open(
+        "commonRoad",
+        &[
+            ("commonRoadVersion", "2020a".to_string()),
+            ("benchmarkID", h.benchmark_id.to_string()),
+            ("date", h.date.to_string()),
+            ("author", h.author.clone()),
+            ("affiliation", h.affiliation.clone()),
+            ("source", h.source.clone()),
+            ("timeStepSize", step),
+        ],
+    )?;
+    location(&mut e, scenario)?;
+    if scenario.tags.is_empty() {
+        e.empty("scenarioTags", &[])?;
+    } else {
+        e.open("scenarioTags", &[])?;
+        for t in &scenario.tags {
+            e.empty(t.as_str(), &[])?;
+        }
+        e.close("scenarioTags");
+    }
+    let net = &scenario.network;
+    for l in &net.lanelets {
+        with_context(&mut e, format!("lanelet {}", l.id), |e| lanelet(e, l))?;
+    }
+    for s in &net.traffic_signs {
+        with_context(&mut e, format!("trafficSign {}", s.id), |e| {
+            traffic_sign(e, s)
+        })?;
+    }
+    for t in &net.traffic_lights {
+        with_context(&mut e, format!("trafficLight {}", t.id), |e| {
+            traffic_light(e, t)
+        })?;
+    }
+    for i in &net.intersections {
+        with_context(&mut e, format!("intersection {}", i.id), |e| {
+            intersection(e, i)
+        })?;
+    }
+    for o in &scenario.static_obstacles {
+        with_context(&mut e, format!("staticObstacle {}", o.id), |e| {
+            static_obstacle(e, o)
+        })?;
+    }
+    for o in &scenario.dynamic_obstacles {
+        with_context(&mut e, format!("dynamicObstacle {}", o.id), |e| {
+            dynamic_obstacle(e, o)
+        })?;
+    }
+    for o in &scenario.environment_obstacles {
+        with_context(&mut e, format!("environmentObstacle {}", o.id), |e| {
+            environment_obstacle(e, o)
+        })?;
+    }
+    for p in problems {
+        with_context(&mut e, format!("planningProblem {}", p.id), |e| {
+            planning_problem(e, p)
+        })?;
+    }
+    e.close("commonRoad");
+    Ok(e.finish())
+}
+
+fn with_context(
+    e: &mut Emitter,
+    label: String,
+    f: impl FnOnce(&mut Emitter) -> Result<(), WriteError>,
+) -> Result<(), WriteError> {
+    e.push_context(label);
+    let r = f(e);
+    e.pop_context();
+    r
+}
+
+fn id_attr(id: impl std::fmt::Display) -> [(&'static str, String); 1] {
+    [("id", id.to_string())]
+}
+
+fn ref_attr(id: impl std::fmt::Display) -> [(&'static str, String); 1] {
+    [("ref", id.to_string())]
+}
+
+/// `<tag><x>…</x><y>…</y>[<z>…</z>]</tag>` on one line.
+fn point_markup(e: &Emitter, tag: &str, p: &Point) -> Result<String, WriteError> {
+    let x = e.decimal(&format!("{tag}/x"), p.x)?;
+    let y = e.decimal(&format!("{tag}/y"), p.y)?;
+    let z = match p.z {
+        Some(z) => format!("<z>{}</z>", e.decimal(&format!("{tag}/z"), z)?),
+        None => String::new(),
+    };
+    Ok(format!("<{tag}><x>{x}</x><y>{y}</y>{z}</{tag}>"))
+}
+
+fn point(e: &mut Emitter, tag: &str, p: &Point) -> Result<(), WriteError> {
+    let m = point_markup(e, tag, p)?;
+    e.raw_line(&m);
+    Ok(())
+}
+
+/// `<position><point>…</point></position>` on one line.
+fn position(e: &mut Emitter, p: &Point) -> Result<(), WriteError> {
+    let m = point_markup(e, "point", p)?;
+    e.raw_line(&format!("<position>{m}</position>"));
+    Ok(())
+}
+
+fn exact(e: &mut Emitter, tag: &str, v: f64) -> Result<(), WriteError> {
+    let s = e.decimal(tag, v)?;
+    e.raw_line(&format!("<{tag}><exact>{s}</exact></{tag}>"));
+    Ok(())
+}
+
+fn exact_int(e: &mut Emitter, tag: &str, v: u64) {
+    e.raw_line(&format!("<{tag}><exact>{v}</exact></{tag}>"));
+}
+
+fn interval(e: &mut Emitter, tag: &str, i: &Interval) -> Result<(), WriteError> {
+    let a = e.decimal(tag, i.start())?;
+    let b = e.decimal(tag, i.end())?;
+    e.raw_line(&format!(
+        "<{tag}><intervalStart>{a}</intervalStart><intervalEnd>{b}</intervalEnd></{tag}>"
+    ));
+    Ok(())
+}
+
+fn location(e: &mut Emitter, s: &Scenario) -> Result<(), WriteError> {
+    let l = &s.location;
+    e.open("location", &[])?;
+    e.int("geoNameId", l.geo_name_id);
+    e.num("gpsLatitude", l.gps_latitude)?;
+    e.num("gpsLongitude", l.gps_longitude)?;
+    if let Some(g) = &l.geo_transformation {
+        e.open("geoTransformation", &[])?;
+        e.text("geoReference", &g.geo_reference)?;
+        e.open("additionalTransformation", &[])?;
+        e.num("xTranslation", g.x_translation)?;
+        e.num("yTranslation", g.y_translation)?;
+        e.num("zRotation", g.z_rotation)?;
+        e.positive_num("scaling", g.scaling)?;
+        e.close("additionalTransformation");
+        e.close("geoTransformation");
+    }
+    e.close("location");
+    Ok(())
+}
+
+fn bound(
+    e: &mut Emitter,
+    tag: &str,
+    points: &[Point],
+    marking: Option<LineMarking>,
+) -> Result<(), WriteError> {
+    e.open(tag, &[])?;
+    for p in points {
+        point(e, "point", p)?;
+    }
+    if let Some(m) = marking {
+        e.text("lineMarking", m.as_str())?;
+    }
+    e.close(tag);
+    Ok(())
+}
+
+fn adjacent(e: &mut Emitter, tag: &str, a: &Option<Adjacent>) -> Result<(), WriteError> {
+    if let Some(a) = a {
+        e.empty(
+            tag,
+            &[
+                ("ref", a.lanelet.to_string()),
+                ("drivingDir", a.driving_dir.as_str().to_string()),
+            ],
+        )?;
+    }
+    Ok(())
+}
+
+fn lanelet(e: &mut Emitter, l: &Lanelet) -> Result<(), WriteError> {
+    e.open("lanelet", &id_attr(l.id))?;
+    bound(e, "leftBound", l.bounds.left(), l.left_marking)?;
+    bound(e, "rightBound", l.bounds.right(), l.right_marking)?;
+    for r in &l.predecessors {
+        e.empty("predecessor", &ref_attr(r))?;
+    }
+    for r in &l.successors {
+        e.empty("successor", &ref_attr(r))?;
+    }
+    adjacent(e, "adjacentLeft", &l.adjacent_left)?;
+    adjacent(e, "adjacentRight", &l.adjacent_right)?;
+    if let Some(sl) = &l.stop_line {
+        e.open("stopLine", &[])?;
+        for p in sl.points.iter().flatten() {
+            point(e, "point", p)?;
+        }
+        e.text("lineMarking", sl.line_marking.as_str())?;
+        for r in &sl.traffic_sign_refs {
+            e.empty("trafficSignRef", &ref_attr(r))?;
+        }
+        for r in &sl.traffic_light_refs {
+            e.empty("trafficLightRef", &ref_attr(r))?;
+        }
+        e.close("stopLine");
+    }
+    for t in &l.lanelet_types {
+        e.text("laneletType", t.as_str())?;
+    }
+    for u in &l.user_one_way {
+        e.text("userOneWay", u.as_str())?;
+    }
+    for u in &l.user_bidirectional {
+        e.text("userBidirectional", u.as_str())?;
+    }
+    for r in &l.traffic_sign_refs {
+        e.empty("trafficSignRef", &ref_attr(r))?;
+    }
+    for r in &l.traffic_light_refs {
+        e.empty("trafficLightRef", &ref_attr(r))?;
+    }
+    e.close("lanelet");
+    Ok(())
+}
+
+fn traffic_sign(e: &mut Emitter, s: &TrafficSign) -> Result<(), WriteError> {
+    e.open("trafficSign", &id_attr(s.id))?;
+    for el in &s.elements {
+        e.open("trafficSignElement", &[])?;
+        e.text("trafficSignID", &el.sign_id)?;
+        for v in &el.additional_values {
+            e.text("additionalValue", v)?;
+        }
+        e.close("trafficSignElement");
+    }
+    if let Some(p) = &s.position {
+        position(e, p)?;
+    }
+    e.text("virtual", if s.is_virtual { "true" } else { "false" })?;
+    e.close("trafficSign");
+    Ok(())
+}
+
+fn traffic_light(e: &mut Emitter, t: &TrafficLight) -> Result<(), WriteError> {
+    e.open("trafficLight", &id_attr(t.id))?;
+    e.open("cycle", &[])?;
+    for c in &t.cycle {
+        e.raw_line(&format!(
+            "<cycleElement><duration>{}</duration><color>{}</color></cycleElement>",
+            c.duration,
+            c.color.as_str()
+        ));
+    }
+    if t.time_offset > 0 {
+        e.int("timeOffset", t.time_offset);
+    }
+    e.close("cycle");
+    if let Some(p) = &t.position {
+        position(e, p)?;
+    }
+    if let Some(d) = t.direction {
+        e.text("direction", d.as_str())?;
+    }
+    if let Some(a) = t.active {
+        e.text("active", if a { "true" } else { "false" })?;
+    }
+    e.close("trafficLight");
+    Ok(())
+}
+
+fn intersection(e: &mut Emitter, i: &Intersection) -> Result<(), WriteError> {
+    e.open("intersection", &id_attr(i.id))?;
+    for inc in &i.incomings {
+        e.open("incoming", &id_attr(inc.id))?;
+        let groups = [
+            ("incomingLanelet", &inc.incoming_lanelets),
+            ("successorsRight", &inc.successors_right),
+            ("successorsStraight", &inc.successors_straight),
+            ("successorsLeft", &inc.successors_left),
+        ];
+        for (tag, refs) in groups {
+            for r in refs {
+                e.empty(tag, &ref_attr(r))?;
+            }
+        }
+        if let Some(r) = inc.is_left_of {
+            e.empty("isLeftOf", &ref_attr(r))?;
+        }
+        e.close("incoming");
+    }
+    for crossing in &i.crossings {
+        e.open("crossing", &[])?;
+        for r in crossing {
+            e.empty("crossingLanelet", &ref_attr(r))?;
+        }
+        e.close("crossing");
+    }
+    e.close("intersection");
+    Ok(())
+}
+
+fn polygon(e: &mut Emitter, p: &Polygon) -> Result<(), WriteError> {
+    e.open("polygon", &[])?;
+    for pt in p.points() {
+        point(e, "point", pt)?;
+    }
+    e.close("polygon");
+    Ok(())
+}
+
+fn placed_rectangle(e: &mut Emitter, r: &PlacedRectangle) -> Result<(), WriteError> {
+    e.open("rectangle", &[])?;
+    e.positive_num("length", r.rectangle.length())?;
+    e.positive_num("width", r.rectangle.width())?;
+    e.num("orientation", r.orientation)?;
+    point(e, "center", &r.center)?;
+    e.close("rectangle");
+    Ok(())
+}
+
+fn placed_circle(e: &mut Emitter, c: &PlacedCircle) -> Result<(), WriteError> {
+    e.open("circle", &[])?;
+    e.positive_num("radius", c.circle.radius())?;
+    point(e, "center", &c.center)?;
+    e.close("circle");
+    Ok(())
+}
+
+/// An obstacle shape: no centre or orientation (see `geometry.rs` for why).
+fn shape(e: &mut Emitter, s: &Shape) -> Result<(), WriteError> {
+    e.open("shape", &[])?;
+    match s {
+        Shape::Rectangle(r) => {
+            e.open("rectangle", &[])?;
+            e.positive_num("length", r.length())?;
+            e.positive_num("width", r.width())?;
+            e.close("rectangle");
+        }
+        Shape::Circle(c) => {
+            e.open("circle", &[])?;
+            e.positive_num("radius", c.radius())?;
+            e.close("circle");
+        }
+        Shape::Polygon(p) => polygon(e, p)?,
+    }
+    e.close("shape");
+    Ok(())
+}
+
+/// A dynamic obstacle's state; the same fields for the initial state and every trajectory
+/// state, so the readers see one state class.
+fn state(e: &mut Emitter, tag: &str, s: &State) -> Result<(), WriteError> {
+    e.push_context(format!("time step {}", s.time_step));
+    let r = (|| {
+        e.open(tag, &[])?;
+        position(e, &Point::new(s.x, s.y))?;
+        exact(e, "orientation", s.orientation)?;
+        exact_int(e, "time", s.time_step);
+        exact(e, "velocity", s.velocity)?;
+        exact(e, "acceleration", s.acceleration)?;
+        exact(e, "yawRate", s.yaw_rate)?;
+        e.close(tag);
+        Ok(())
+    })();
+    e.pop_context();
+    r
+}
+
+fn static_obstacle(e: &mut Emitter, o: &StaticObstacle) -> Result<(), WriteError> {
+    e.open("staticObstacle", &id_attr(o.id))?;
+    e.text("type", o.obstacle_type.as_str())?;
+    shape(e, &o.shape)?;
+    e.open("initialState", &[])?;
+    position(e, &Point::new(o.x, o.y))?;
+    exact(e, "orientation", o.orientation)?;
+    exact_int(e, "time", 0);
+    e.close("initialState");
+    e.close("staticObstacle");
+    Ok(())
+}
+
+fn dynamic_obstacle(e: &mut Emitter, o: &DynamicObstacle) -> Result<(), WriteError> {
+    e.open("dynamicObstacle", &id_attr(o.id))?;
+    e.text("type", o.obstacle_type.as_str())?;
+    shape(e, &o.shape)?;
+    state(e, "initialState", &o.initial_state)?;
+    e.open("trajectory", &[])?;
+    for s in &o.trajectory {
+        state(e, "state", s)?;
+    }
+    e.close("trajectory");
+    e.close("dynamicObstacle");
+    Ok(())
+}
+
+fn environment_obstacle(e: &mut Emitter, o: &EnvironmentObstacle) -> Result<(), WriteError> {
+    e.open("environmentObstacle", &id_attr(o.id))?;
+    e.text("type", o.obstacle_type.as_str())?;
+    e.open("shape", &[])?;
+    match &o.shape {
+        AbsoluteShape::Rectangle(r) => placed_rectangle(e, r)?,
+        AbsoluteShape::Circle(c) => placed_circle(e, c)?,
+        AbsoluteShape::Polygon(p) => polygon(e, p)?,
+    }
+    e.close("shape");
+    e.close("environmentObstacle");
+    Ok(())
+}
+
+fn goal_state(e: &mut Emitter, g: &GoalState) -> Result<(), WriteError> {
+    e.open("goalState", &[])?;
+    e.raw_line(&format!(
+        "<time><intervalStart>{}</intervalStart><intervalEnd>{}</intervalEnd></time>",
+        g.time.start(),
+        g.time.end()
+    ));
+    if let Some(pos) = &g.position {
+        e.open("position", &[])?;
+        match pos {
+            GoalPosition::Rectangles(rs) => rs.iter().try_for_each(|r| placed_rectangle(e, r))?,
+            GoalPosition::Circles(cs) => cs.iter().try_for_each(|c| placed_circle(e, c))?,
+            GoalPosition::Polygons(ps) => ps.iter().try_for_each(|p| polygon(e, p))?,
+            GoalPosition::Lanelets(ls) => ls
+                .iter()
+                .try_for_each(|l| e.empty("lanelet", &ref_attr(l)))?,
+        }
+        e.close("position");
+    }
+    if let Some(o) = &g.orientation {
+        interval(e, "orientation", o)?;
+    }
+    if let Some(v) = &g.velocity {
+        interval(e, "velocity", v)?;
+    }
+    e.close("goalState");
+    Ok(())
+}
+
+fn planning_problem(e: &mut Emitter, p: &PlanningProblem) -> Result<(), WriteError> {
+    e.open("planningProblem", &id_attr(p.id))?;
+    let s = &p.initial_state;
+    e.open("initialState", &[])?;
+    position(e, &Point::new(s.x, s.y))?;
+    exact(e, "velocity", s.velocity)?;
+    exact(e, "orientation", s.orientation)?;
+    exact(e, "yawRate", s.yaw_rate)?;
+    exact(e, "slipAngle", s.slip_angle)?;
+    exact_int(e, "time", 0);
+    if let Some(a) = s.acceleration {
+        exact(e, "acceleration", a)?;
+    }
+    e.close("initialState");
+    for g in &p.goal_states {
+        goal_state(e, g)?;
+    }
+    e.close("planningProblem");
+    Ok(())
+}
