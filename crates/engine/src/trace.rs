@@ -1,0 +1,115 @@
+//! The result of a run: every entity's state at every engine step, and the storyboard's
+//! state transitions. This is the engine's only output format; the CommonRoad converter and
+//! the conformance CSV both read it.
+
+use std::fmt::Write as _;
+
+/// Where an entity is on the road network.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RoadPos {
+    /// Index of the road in `opendrive::RoadNetwork::roads`.
+    pub road: u32,
+    /// OpenDRIVE lane id.
+    pub lane_id: i32,
+    /// Lateral offset from the lane centre, m (positive to the left of the reference line direction).
+    pub lane_offset: f64,
+    /// Distance along the road's reference line, m.
+    pub s: f64,
+}
+
+/// One entity's state at one step. Position is the entity's reference point (OpenSCENARIO
+/// position; a vehicle's rear axle centre) in the road network's frame.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Sample {
+    pub x: f64,
+    pub y: f64,
+    pub z: f64,
+    /// Heading, rad.
+    pub h: f64,
+    /// Signed speed along the heading, m/s.
+    pub speed: f64,
+    /// Longitudinal acceleration, m/s².
+    pub acceleration: f64,
+    /// Rate of change of the heading, rad/s.
+    pub yaw_rate: f64,
+    pub road: Option<RoadPos>,
+    pub visible: bool,
+}
+
+/// The samples of one entity. `samples[k]` is its state at `k * Trace::step` seconds, `None`
+/// while the entity does not exist (not yet added, or deleted).
+#[derive(Debug, Clone, PartialEq)]
+pub struct EntityTrace {
+    pub name: String,
+    pub samples: Vec<Option<Sample>>,
+}
+
+/// A storyboard element changed state (for comparison with esmini's event log).
+#[derive(Debug, Clone, PartialEq)]
+pub struct StoryboardEvent {
+    pub time: f64,
+    pub element: String,
+    pub from: String,
+    pub transition: String,
+    pub to: String,
+}
+
+/// Everything a run produced.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Trace {
+    /// Engine step, s.
+    pub step: f64,
+    /// Number of steps recorded; every `EntityTrace::samples` has this length.
+    pub len: usize,
+    pub entities: Vec<EntityTrace>,
+    pub events: Vec<StoryboardEvent>,
+}
+
+impl Trace {
+    /// Time of step `k`, s.
+    pub fn time(&self, k: usize) -> f64 {
+        k as f64 * self.step
+    }
+
+    /// Simulated duration, s (time of the last recorded step).
+    pub fn duration(&self) -> f64 {
+        self.time(self.len.saturating_sub(1))
+    }
+
+    /// The trace as CSV in the format `conformance.py` reads
+    /// (`time,entity,x,y,z,h,speed,bb_cx,...,lane_id,lane_offset,s`). `boxes` gives each
+    /// entity's bounding box `(cx, cy, cz, length, width, height)` by index.
+    pub fn to_csv(&self, boxes: &[[f64; 6]]) -> String {
+        let mut out = String::from(
+            "time,entity,x,y,z,h,speed,bb_cx,bb_cy,bb_cz,length,width,height,lane_id,lane_offset,s\n",
+        );
+        for k in 0..self.len {
+            let t = self.time(k);
+            for (i, e) in self.entities.iter().enumerate() {
+                let Some(Some(s)) = e.samples.get(k) else { continue };
+                let b = boxes.get(i).copied().unwrap_or([0.0; 6]);
+                let _ = write!(
+                    out,
+                    "{:.3},{},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},",
+                    t, csv_field(&e.name), s.x, s.y, s.z, s.h, s.speed, b[0], b[1], b[2], b[3], b[4], b[5]
+                );
+                match s.road {
+                    Some(r) => {
+                        let _ = writeln!(out, "{},{:.4},{:.4}", r.lane_id, r.lane_offset, r.s);
+                    }
+                    None => out.push_str(",,\n"),
+                }
+            }
+        }
+        out
+    }
+}
+
+/// Quote a CSV field when it needs it.
+fn csv_field(s: &str) -> std::borrow::Cow<'_, str> {
+    if s.contains([',', '"', '\n']) {
+        format!("\"{}\"", s.replace('"', "\"\"")).into()
+    } else {
+        s.into()
+    }
+}
