@@ -1,1 +1,34 @@
-//! opendrive
+//! OpenDRIVE (1.4–1.8) for osc2cr: the parser into a typed f64 model, the plan-view and
+//! lane geometry, and road coordinates both ways ((road, lane, s, offset) → world and
+//! world → nearest (road, lane, s, t)), plus the road/lane topology helpers the lanelet
+//! converter and the engine build on.
+//!
+//! This crate knows nothing of OpenSCENARIO or CommonRoad. World coordinates are the
+//! file's own x/y (the header `<offset>` is kept in [`Header`] but not applied, as esmini
+//! does). Errors carry file, line and column; warnings are returned, never printed.
+
+pub mod driving_direction;
+pub mod error;
+pub mod geometry;
+pub mod links;
+pub mod model;
+pub mod network;
+mod parse;
+pub mod projection;
+pub mod road_geometry;
+pub mod spatial_index;
+
+pub use driving_direction::{driving_heading, drives_along_s};
+pub use error::{Error, SourcePos, Warning};
+pub use geometry::{CurvePose, Geometry, PRange, Shape};
+pub use links::{section_at_end, LaneRef, RoadEnd};
+pub use model::header::{Header, HeaderOffset};
+pub use model::junction::{Connection, Control, Controller, Junction, JunctionController, JunctionType, LaneLink};
+pub use model::lanes::{Lane, LaneChange, LaneSection, LaneSpeed, LaneType, RoadMark, RoadMarkType};
+pub use model::objects::{Object, ObjectRepeat};
+pub use model::poly::CubicRecord;
+pub use model::road::{ContactPoint, ElementDir, ElementType, Road, RoadKind, RoadLink, RoadTypeRecord, SpeedLimit, TrafficRule};
+pub use model::signals::{LaneValidity, Signal, SignalOrientation, SignalReference};
+pub use network::{load, parse_str, Loaded, RoadNetwork};
+pub use projection::LanePosition;
+pub use road_geometry::{LaneBorders, WorldPose};

@@ -1,0 +1,171 @@
+//! World → road: nearest (road, lane, s, t) of a point, via the spatial index and a Newton
+//! projection onto the exact reference line.
+
+use crate::model::road::Road;
+use crate::network::RoadNetwork;
+use crate::road_geometry::LaneBorders;
+
+/// Where a world point lies on the road network.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LanePosition {
+    /// Index into [`RoadNetwork::roads`].
+    pub road: usize,
+    /// Lane section index at `s`.
+    pub section: usize,
+    pub lane_id: i32,
+    pub s: f64,
+    /// Lateral coordinate from the reference line (+ left).
+    pub t: f64,
+    /// t − t of the lane centre.
+    pub offset: f64,
+    /// 0 when the point is on a lane of this road, else its distance from the road's area.
+    pub distance: f64,
+    /// Heading of the reference line at s.
+    pub heading: f64,
+}
+
+impl LanePosition {
+    /// Whether the point lies on a lane of the road.
+    pub fn is_on_road(&self) -> bool {
+        self.distance == 0.0
+    }
+}
+
+/// Along-track residual below which a projection counts as falling inside the road's s range.
+const END_TOLERANCE: f64 = 1e-6;
+
+/// Project (x, y) onto the reference line of `road` starting from `s_guess`.
+/// Returns (s, t, along-track residual; non-zero only past the road's ends).
+pub fn project_onto_road(road: &Road, x: f64, y: f64, s_guess: f64) -> (f64, f64, f64) {
+    let mut s = s_guess.clamp(0.0, road.length);
+    for _ in 0..40 {
+        let p = road.reference_pose(s);
+        let (sin, cos) = p.hdg.sin_cos();
+        let (dx, dy) = (x - p.x, y - p.y);
+        let along = dx * cos + dy * sin;
+        let lat = -dx * sin + dy * cos;
+        // Newton on d(along)/ds = -(1 - κ t); damped when the point is near the centre of curvature.
+        let denom = (1.0 - p.curvature * lat).max(0.2);
+        let next = (s + along / denom).clamp(0.0, road.length);
+        let done = (next - s).abs() < 1e-11;
+        s = next;
+        if done {
+            break;
+        }
+    }
+    let p = road.reference_pose(s);
+    let (sin, cos) = p.hdg.sin_cos();
+    let (dx, dy) = (x - p.x, y - p.y);
+    (s, -dx * sin + dy * cos, dx * cos + dy * sin)
+}
+
+/// Lane of `road` at (s, t): the lane whose borders contain t, or the outermost lane on
+/// that side with the lateral distance beyond it. Zero-width lanes are never chosen when
+/// another lane contains t.
+fn lane_at(road: &Road, section: usize, s: f64, t: f64) -> Option<(i32, LaneBorders, f64)> {
+    let base = road.lane_offset_at(s);
+    let left = road.side_borders(section, true, s);
+    let right = road.side_borders(section, false, s);
+    let (first, second) = if t > base { (&left, &right) } else { (&right, &left) };
+    for side in [first, second] {
+        if let Some((id, b)) = side.iter().find(|(_, b)| b.width() > 0.0 && b.contains(t)) {
+            return Some((*id, *b, 0.0));
+        }
+    }
+    // Outside: outermost non-degenerate lane on the side of t.
+    let side = if first.iter().any(|(_, b)| b.width() > 0.0) { first } else { second };
+    let (id, b) = side.iter().rev().find(|(_, b)| b.width() > 0.0).or_else(|| side.last())?;
+    let dist = (t - b.outer).abs().min((t - b.inner).abs());
+    Some((*id, *b, dist))
+}
+
+impl RoadNetwork {
+    /// Locate (x, y) on road `road` starting the projection at `s_guess`.
+    pub fn locate_on_road(&self, road: usize, x: f64, y: f64, s_guess: f64) -> Option<LanePosition> {
+        let r = self.roads.get(road)?;
+        let (s, t, along) = project_onto_road(r, x, y, s_guess);
+        let section = r.section_index_at(s);
+        let (lane_id, borders, lateral) = lane_at(r, section, s, t)?;
+        let off_end = if along.abs() > END_TOLERANCE { along.abs() } else { 0.0 };
+        let distance = if off_end > 0.0 || lateral > 0.0 { off_end.hypot(lateral) } else { 0.0 };
+        Some(LanePosition {
+            road,
+            section,
+            lane_id,
+            s,
+            t,
+            offset: t - borders.center(),
+            distance,
+            heading: r.reference_pose(s).hdg,
+        })
+    }
+
+    /// Best s guess per road from the candidate segments: (road, s, squared distance).
+    fn road_candidates(&self, x: f64, y: f64, seg_ids: &[u32], out: &mut Vec<(usize, f64, f64)>) {
+        for &i in seg_ids {
+            let Some(sg) = self.index.segments.get(i as usize) else { continue };
+            let (u, d2) = sg.project(x, y);
+            let s = sg.s0 + u * (sg.s1 - sg.s0);
+            match out.iter_mut().find(|c| c.0 == sg.road) {
+                Some(c) if d2 < c.2 => *c = (sg.road, s, d2),
+                Some(_) => {}
+                None => out.push((sg.road, s, d2)),
+            }
+        }
+    }
+
+    /// Every lane (of any type) that contains (x, y), one per road, sorted by road index.
+    pub fn lanes_containing(&self, x: f64, y: f64) -> Vec<LanePosition> {
+        let mut ids = Vec::new();
+        self.index.ring(x, y, 0, &mut ids);
+        let mut cands = Vec::new();
+        self.road_candidates(x, y, &ids, &mut cands);
+        let mut out: Vec<LanePosition> =
+            cands.iter().filter_map(|&(r, s, _)| self.locate_on_road(r, x, y, s)).filter(|p| p.is_on_road()).collect();
+        out.sort_by_key(|p| p.road);
+        out
+    }
+
+    /// Nearest lane of (x, y). A point on several roads (junctions) prefers `hint` (the road
+    /// the caller was on), then the lane whose centre is nearest; an off-road point gets the
+    /// road whose lanes are nearest. `None` only for a network without roads.
+    pub fn world_to_lane(&self, x: f64, y: f64, hint: Option<usize>) -> Option<LanePosition> {
+        let mut ids = Vec::new();
+        let start = self.index.first_ring(x, y);
+        let mut ring = start;
+        let mut found_at = None;
+        loop {
+            let more = self.index.ring(x, y, ring, &mut ids);
+            if found_at.is_none() && !ids.is_empty() {
+                found_at = Some(ring);
+            }
+            // One extra ring after the first hit: a nearer segment may sit in a neighbouring cell.
+            if found_at.is_some_and(|f| ring > f) || !more {
+                break;
+            }
+            ring += 1;
+        }
+        let mut cands = Vec::new();
+        self.road_candidates(x, y, &ids, &mut cands);
+        let mut best: Option<LanePosition> = None;
+        for &(r, s, _) in &cands {
+            let Some(p) = self.locate_on_road(r, x, y, s) else { continue };
+            let better = match &best {
+                None => true,
+                Some(b) => {
+                    let key = |q: &LanePosition| (q.distance, if Some(q.road) == hint { 0 } else { 1 }, q.offset.abs(), q.road);
+                    let (kp, kb) = (key(&p), key(b));
+                    if p.distance == 0.0 && b.distance == 0.0 {
+                        (kp.1, kp.2, kp.3) < (kb.1, kb.2, kb.3)
+                    } else {
+                        kp.0 < kb.0 || (kp.0 == kb.0 && kp.3 < kb.3)
+                    }
+                }
+            };
+            if better {
+                best = Some(p);
+            }
+        }
+        best
+    }
+}

@@ -1,0 +1,162 @@
+//! Lane borders, lane centres, world positions and links on small hand-written maps,
+//! checked against hand computation.
+
+use opendrive::{parse_str, ContactPoint, LaneRef, TrafficRule};
+use std::path::Path;
+
+const MAP: &str = r#"<?xml version="1.0"?>
+<OpenDRIVE>
+  <header revMajor="1" revMinor="6" name="t"><offset x="100" y="0" z="0" hdg="0"/></header>
+  <road id="A" length="100" junction="-1" rule="LHT">
+    <link><successor elementType="road" elementId="B" contactPoint="start"/></link>
+    <type s="0" type="motorway"><speed max="130" unit="km/h"/></type>
+    <planView><geometry s="0" x="10" y="5" hdg="0.3" length="100"><line/></geometry></planView>
+    <elevationProfile><elevation s="0" a="1" b="0.02" c="0" d="0"/></elevationProfile>
+    <lanes>
+      <laneOffset s="0" a="0.5" b="0" c="0" d="0"/>
+      <laneSection s="0">
+        <left>
+          <lane id="2" type="sidewalk"><width sOffset="0" a="2" b="0.01" c="0" d="0"/></lane>
+          <lane id="1" type="driving"><link><successor id="1"/></link><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane>
+        </left>
+        <center><lane id="0" type="none"/></center>
+        <right>
+          <lane id="-1" type="driving"><link><successor id="-1"/></link>
+            <width sOffset="0" a="3" b="0" c="0" d="0"/><width sOffset="50" a="3" b="0" c="0.001" d="0"/></lane>
+          <lane id="-2" type="border"><border sOffset="0" a="-7" b="0" c="0" d="0"/></lane>
+        </right>
+      </laneSection>
+    </lanes>
+  </road>
+  <road id="B" length="157.07963267948966" junction="-1">
+    <link><predecessor elementType="road" elementId="A" contactPoint="end"/><successor elementType="junction" elementId="J"/></link>
+    <planView><geometry s="0" x="105.5336489125606" y="34.552020666133956" hdg="0.3" length="157.07963267948966"><arc curvature="0.01"/></geometry></planView>
+    <lanes>
+      <laneSection s="0">
+        <left><lane id="1" type="driving"><link><predecessor id="1"/></link><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></left>
+        <center><lane id="0" type="none"/></center>
+        <right><lane id="-1" type="driving"><link><predecessor id="-1"/></link><width sOffset="0" a="3" b="0" c="0" d="0"/></lane></right>
+      </laneSection>
+    </lanes>
+  </road>
+  <road id="C" length="20" junction="J">
+    <link><predecessor elementType="road" elementId="B" contactPoint="end"/></link>
+    <planView><geometry s="0" x="171.51527715898723" y="159.6376902448285" hdg="1.8707963267948966" length="20"><line/></geometry></planView>
+    <lanes><laneSection s="0">
+      <center><lane id="0" type="none"/></center>
+      <right><lane id="-1" type="driving"><link><predecessor id="-1"/></link><width sOffset="0" a="3" b="0" c="0" d="0"/></lane></right>
+    </laneSection></lanes>
+  </road>
+  <junction id="J" name="j">
+    <connection id="0" incomingRoad="B" connectingRoad="C" contactPoint="start"><laneLink from="-1" to="-1"/></connection>
+  </junction>
+</OpenDRIVE>"#;
+
+fn net() -> opendrive::RoadNetwork {
+    parse_str(MAP, Path::new("mem.xodr")).expect("map parses").network
+}
+
+#[test]
+fn width_borders_are_cumulative_from_the_lane_offset() {
+    let n = net();
+    let a = n.road("A").expect("road A");
+    for &s in &[0.0, 20.0, 49.0, 70.0, 100.0] {
+        let base = 0.5;
+        let l1 = a.lane_borders(0, 1, s).expect("lane 1");
+        assert!((l1.inner - base).abs() < 1e-12 && (l1.outer - (base + 3.5)).abs() < 1e-12);
+        let l2 = a.lane_borders(0, 2, s).expect("lane 2");
+        assert!((l2.outer - (base + 3.5 + 2.0 + 0.01 * s)).abs() < 1e-12, "s={s}");
+        let w1 = if s < 50.0 { 3.0 } else { 3.0 + 0.001 * (s - 50.0).powi(2) };
+        let r1 = a.lane_borders(0, -1, s).expect("lane -1");
+        assert!((r1.outer - (base - w1)).abs() < 1e-12, "s={s}");
+        // border record: outer t = lane offset + border value
+        let r2 = a.lane_borders(0, -2, s).expect("lane -2");
+        assert!((r2.outer - (base - 7.0)).abs() < 1e-12 && (r2.inner - r1.outer).abs() < 1e-12);
+        assert!((a.lane_center_t(0, 1, s).unwrap_or(f64::NAN) - (base + 1.75)).abs() < 1e-12);
+    }
+    assert!(a.lane_borders(0, 3, 10.0).is_none());
+}
+
+#[test]
+fn lane_to_world_on_a_line_and_an_arc() {
+    let n = net();
+    let ia = n.road_index("A").expect("A");
+    // line: reference point at s plus t along the left normal
+    let (s, off) = (40.0, 0.25);
+    let p = n.lane_to_world(ia, 1, s, off).expect("pose");
+    let t = 0.5 + 1.75 + off;
+    let (h, x0, y0) = (0.3f64, 10.0, 5.0);
+    assert!((p.x - (x0 + s * h.cos() - t * h.sin())).abs() < 1e-12);
+    assert!((p.y - (y0 + s * h.sin() + t * h.cos())).abs() < 1e-12);
+    assert!((p.z - (1.0 + 0.02 * s)).abs() < 1e-12);
+    assert!((p.heading - 0.3).abs() < 1e-15);
+    // B: arc of radius 100 starting where A ends; a point at t lies at radius 100 - t
+    let ib = n.road_index("B").expect("B");
+    let (bx, by) = (10.0 + 100.0 * h.cos(), 5.0 + 100.0 * h.sin());
+    let (cx, cy) = (bx - 100.0 * h.sin(), by + 100.0 * h.cos());
+    for &s in &[0.0, 30.0, 78.5, 157.0] {
+        let q = n.lane_to_world(ib, -1, s, 0.0).expect("pose");
+        let r = ((q.x - cx).powi(2) + (q.y - cy).powi(2)).sqrt();
+        assert!((r - 101.5).abs() < 1e-9, "s={s} r={r}");
+        assert!((q.heading - (0.3 + 0.01 * s)).abs() < 1e-12);
+    }
+}
+
+#[test]
+fn world_to_lane_recovers_road_coordinates() {
+    let n = net();
+    let ib = n.road_index("B").expect("B");
+    let p = n.lane_to_world(ib, 1, 60.0, -0.4).expect("pose");
+    let q = n.world_to_lane(p.x, p.y, None).expect("found");
+    assert_eq!((q.road, q.lane_id), (ib, 1));
+    assert!((q.s - 60.0).abs() < 1e-9 && (q.offset + 0.4).abs() < 1e-9 && q.is_on_road());
+    // a point 10 m beyond the right edge of road B: nearest lane -1, distance 10
+    let far = n.road_to_world(ib, 80.0, -13.0).expect("pose");
+    let r = n.world_to_lane(far.x, far.y, None).expect("found");
+    assert_eq!((r.road, r.lane_id), (ib, -1));
+    assert!((r.distance - 10.0).abs() < 1e-9, "{r:?}");
+    assert!(n.lanes_containing(far.x, far.y).is_empty());
+}
+
+#[test]
+fn header_offset_is_kept_not_applied() {
+    let n = net();
+    let off = n.header.offset.expect("offset");
+    assert_eq!(off.x, 100.0);
+    let p = n.road_to_world(0, 0.0, 0.0).expect("pose");
+    assert!((p.x - 10.0).abs() < 1e-12, "positions stay in the file frame");
+    assert_eq!(off.apply(1.0, 2.0, 3.0), (101.0, 2.0, 3.0));
+}
+
+#[test]
+fn model_fields_are_read() {
+    let n = net();
+    let a = n.road("A").expect("A");
+    assert_eq!(a.rule, TrafficRule::LeftHand);
+    assert_eq!(n.road("B").map(|r| r.rule), Some(TrafficRule::RightHand));
+    let t = a.type_at(10.0).expect("type");
+    assert_eq!(t.kind, opendrive::RoadKind::Motorway);
+    let v = t.speed.as_ref().and_then(|s| s.max_mps).expect("speed");
+    assert!((v - 130.0 / 3.6).abs() < 1e-12);
+    assert_eq!(n.road("C").and_then(|r| r.junction.clone()).as_deref(), Some("J"));
+    assert_eq!(a.lane_sections[0].left.iter().map(|l| l.id).collect::<Vec<_>>(), vec![1, 2]);
+    assert_eq!(a.lane_sections[0].lane(2).map(|l| l.kind), Some(opendrive::LaneType::Sidewalk));
+}
+
+#[test]
+fn links_across_roads_and_junctions() {
+    let n = net();
+    let (ia, ib, ic) = (n.road_index("A").unwrap_or(9), n.road_index("B").unwrap_or(9), n.road_index("C").unwrap_or(9));
+    let succ = n.lane_successors(LaneRef { road: ia, section: 0, lane: -1 });
+    assert_eq!(succ, vec![LaneRef { road: ib, section: 0, lane: -1 }]);
+    let back = n.lane_predecessors(LaneRef { road: ib, section: 0, lane: 1 });
+    assert_eq!(back, vec![LaneRef { road: ia, section: 0, lane: 1 }]);
+    // B's end → junction J → C's start, lane -1 → -1 (found both via the connection and via C's own link)
+    let j = n.lane_successors(LaneRef { road: ib, section: 0, lane: -1 });
+    assert_eq!(j, vec![LaneRef { road: ic, section: 0, lane: -1 }]);
+    assert!(n.lane_successors(LaneRef { road: ib, section: 0, lane: 1 }).is_empty());
+    let ends = n.roads_at(ib, ContactPoint::End);
+    assert_eq!(ends, vec![opendrive::RoadEnd { road: ic, contact: ContactPoint::Start }]);
+    let pred_c = n.lane_predecessors(LaneRef { road: ic, section: 0, lane: -1 });
+    assert_eq!(pred_c, vec![LaneRef { road: ib, section: 0, lane: -1 }]);
+}

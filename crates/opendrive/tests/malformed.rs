@@ -1,0 +1,61 @@
+//! Malformed input: messages name what was expected, with the right line and column.
+
+use opendrive::{parse_str, Error};
+use std::path::Path;
+
+fn err(text: &str) -> Error {
+    match parse_str(text, Path::new("bad.xodr")) {
+        Ok(_) => panic!("expected an error"),
+        Err(e) => e,
+    }
+}
+
+const ROAD_HEAD: &str = "<OpenDRIVE>\n<header revMajor=\"1\" revMinor=\"6\"/>\n<road id=\"1\" length=\"10\" junction=\"-1\">\n<planView>\n";
+const ROAD_TAIL: &str = "</planView>\n<lanes><laneSection s=\"0\"><center><lane id=\"0\" type=\"none\"/></center></laneSection></lanes>\n</road>\n</OpenDRIVE>\n";
+
+#[test]
+fn unclosed_tag() {
+    let e = err("<OpenDRIVE>\n  <header revMajor=\"1\" revMinor=\"6\">\n</OpenDRIVE>\n");
+    let msg = e.to_string();
+    assert!(matches!(e, Error::Xml { .. }), "{msg}");
+    assert!(msg.starts_with("bad.xodr:3:"), "{msg}");
+}
+
+#[test]
+fn not_a_number() {
+    let text = format!("{ROAD_HEAD}  <geometry s=\"0\" x=\"abc\" y=\"0\" hdg=\"0\" length=\"10\"><line/></geometry>\n{ROAD_TAIL}");
+    let e = err(&text);
+    let msg = e.to_string();
+    // x's value starts at line 5, column 22 (two spaces, `<geometry s="0" x="` is 19 more)
+    assert_eq!(e.position().map(|p| (p.line, p.col)), Some((5, 22)), "{msg}");
+    assert!(msg.contains("expected a number") && msg.contains("`abc`") && msg.contains("`x`"), "{msg}");
+}
+
+#[test]
+fn non_finite_number() {
+    let text = format!("{ROAD_HEAD}<geometry s=\"0\" x=\"0\" y=\"NaN\" hdg=\"0\" length=\"10\"><line/></geometry>\n{ROAD_TAIL}");
+    let msg = err(&text).to_string();
+    assert!(msg.starts_with("bad.xodr:5:26:") && msg.contains("finite"), "{msg}");
+    let text = format!("{ROAD_HEAD}<geometry s=\"0\" x=\"0\" y=\"1e999\" hdg=\"0\" length=\"10\"><line/></geometry>\n{ROAD_TAIL}");
+    assert!(err(&text).to_string().contains("finite"));
+}
+
+#[test]
+fn missing_attribute() {
+    let text = format!("{ROAD_HEAD}<geometry s=\"0\" x=\"0\" y=\"0\" hdg=\"0\"><line/></geometry>\n{ROAD_TAIL}");
+    let msg = err(&text).to_string();
+    assert!(msg.starts_with("bad.xodr:5:1:"), "{msg}");
+    assert!(msg.contains("missing the required attribute `length`"), "{msg}");
+}
+
+#[test]
+fn missing_file_names_the_path() {
+    let e = opendrive::load("/nonexistent/dir/map.xodr").expect_err("error");
+    assert!(e.to_string().contains("/nonexistent/dir/map.xodr"), "{e}");
+}
+
+#[test]
+fn wrong_root_element() {
+    let msg = err("<OpenSCENARIO/>").to_string();
+    assert!(msg.contains("expected the root element <OpenDRIVE>"), "{msg}");
+}
