@@ -1,1 +1,29 @@
-//! openscenario
+//! `openscenario`: reads ASAM OpenSCENARIO XML 1.0–1.3 files (and mixtures of versions) into one
+//! typed, fully resolved model — parameters and `${...}` expressions evaluated, catalog
+//! references replaced by their entries, relative paths made absolute — plus parameter value
+//! distributions as lazy sequences of parameter sets.
+//!
+//! It owns the file format and nothing else: it does not load the OpenDRIVE road network it
+//! names, does not simulate, and knows nothing of CommonRoad. Errors carry file, line and
+//! column; warnings are returned as data.
+
+mod attr;
+mod catalog;
+mod catalog_file;
+pub mod distribution;
+mod error;
+pub mod expr;
+mod load;
+pub mod model;
+mod params;
+mod read;
+mod xml;
+
+pub use attr::XmlEnum;
+pub use catalog::CatalogKind;
+pub use catalog_file::{CatalogEntry, CatalogFile};
+pub use distribution::{Distribution, ParameterSet};
+pub use error::{Error, ErrorKind, Location, Warning};
+pub use load::{load, load_scenario, load_str, Content, LoadOptions, Loaded};
+pub use model::*;
+pub use params::{ParameterDeclaration, ParameterType};

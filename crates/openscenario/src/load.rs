@@ -1,0 +1,86 @@
+//! Entry points: load a file (scenario, parameter distribution or catalog) into the model.
+
+use crate::catalog_file::{read_catalog_file, CatalogFile};
+use crate::distribution::{read_distribution, Distribution};
+use crate::error::{absolute, Error, ErrorKind, Location, Warning};
+use crate::model::Scenario;
+use crate::read::{read_scenario, Reader};
+use crate::xml::{parse_str, read_file, Doc};
+use std::path::Path;
+
+/// Options of a load.
+#[derive(Debug, Clone, Default)]
+pub struct LoadOptions {
+    /// Values for global parameters (`--param NAME=VALUE`); they replace the declared values.
+    pub parameters: Vec<(String, String)>,
+    /// Seed for stochastic distributions; None: the file's `randomSeed` (or 0).
+    pub seed: Option<u64>,
+}
+
+/// What a file turned out to be.
+#[derive(Debug, Clone)]
+pub enum Content {
+    Scenario(Box<Scenario>),
+    Distribution(Distribution),
+    Catalog(CatalogFile),
+}
+
+/// A loaded file with the warnings collected while reading it.
+#[derive(Debug, Clone)]
+pub struct Loaded {
+    pub content: Content,
+    pub warnings: Vec<Warning>,
+}
+
+/// Loads an OpenSCENARIO file: a scenario (parameters and catalogs resolved), a
+/// ParameterValueDistribution (its scenario is not loaded), or a catalog.
+pub fn load(path: &Path, options: &LoadOptions) -> Result<Loaded, Error> {
+    let doc = read_file(path)?;
+    load_doc(path, doc, options)
+}
+
+/// Like [`load`] with the text given; `path` names the file in messages and anchors relative paths.
+pub fn load_str(path: &Path, text: &str, options: &LoadOptions) -> Result<Loaded, Error> {
+    let doc = parse_str(path, text)?;
+    load_doc(path, doc, options)
+}
+
+/// Loads a file that must be a scenario.
+pub fn load_scenario(path: &Path, options: &LoadOptions) -> Result<(Scenario, Vec<Warning>), Error> {
+    let loaded = load(path, options)?;
+    match loaded.content {
+        Content::Scenario(s) => Ok((*s, loaded.warnings)),
+        _ => Err(Error::new(
+            ErrorKind::Structure,
+            Location::file_only(path),
+            "expected a scenario (OpenSCENARIO with a Storyboard), found a distribution or catalog file",
+        )),
+    }
+}
+
+fn load_doc(path: &Path, doc: Doc, options: &LoadOptions) -> Result<Loaded, Error> {
+    let abs = absolute(path);
+    let root = &doc.root;
+    if root.name != "OpenSCENARIO" {
+        return Err(Error::new(
+            ErrorKind::Structure,
+            Location { file: doc.file.clone(), line: root.pos.line, col: root.pos.col },
+            format!("expected root element <OpenSCENARIO>, found <{}>", root.name),
+        ));
+    }
+    let mut reader = Reader::new();
+    let content = if root.child("Storyboard").is_some() {
+        Content::Scenario(Box::new(read_scenario(&mut reader, &abs, &doc.file, root, &options.parameters)?))
+    } else if let Some(d) = root.child("ParameterValueDistribution") {
+        Content::Distribution(read_distribution(&mut reader.warnings, &abs, &doc.file, root, d, options.seed)?)
+    } else if let Some(c) = root.child("Catalog") {
+        Content::Catalog(read_catalog_file(&mut reader, &doc.file, c)?)
+    } else {
+        return Err(Error::new(
+            ErrorKind::Structure,
+            Location { file: doc.file.clone(), line: root.pos.line, col: root.pos.col },
+            "expected a Storyboard (scenario), a ParameterValueDistribution or a Catalog in <OpenSCENARIO>",
+        ));
+    };
+    Ok(Loaded { content, warnings: reader.warnings })
+}

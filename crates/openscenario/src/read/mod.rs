@@ -1,0 +1,134 @@
+//! Reading the positioned XML tree into the model, resolving parameters and catalogs.
+
+mod action;
+mod condition;
+mod entity;
+mod environment;
+mod global_action;
+mod position;
+mod scenario;
+mod storyboard;
+mod trajectory;
+
+pub(crate) use scenario::read_scenario;
+
+use crate::attr::Cx;
+use crate::catalog::{CatalogKind, CatalogStore};
+use crate::error::{Error, ErrorKind, Location, Warning};
+use crate::params::{read_declarations, ParameterDeclaration, Scope};
+use crate::xml::Elem;
+
+/// Deepest chain of catalog references (an entry referring to another catalog, ...).
+const MAX_CATALOG_DEPTH: usize = 16;
+
+pub(crate) struct Reader {
+    pub warnings: Vec<Warning>,
+    pub catalogs: CatalogStore,
+    catalog_depth: usize,
+}
+
+impl Reader {
+    pub fn new() -> Self {
+        Reader { warnings: Vec::new(), catalogs: CatalogStore::default(), catalog_depth: 0 }
+    }
+
+    pub fn warn(&mut self, location: Location, message: impl Into<String>) {
+        self.warnings.push(Warning { location, message: message.into() });
+    }
+
+    /// Records an element the model does not represent yet.
+    pub fn unsupported(&mut self, cx: &Cx, e: &Elem, parent: &str) {
+        self.warn(cx.loc(e.pos), format!("<{}> in {parent} is not supported yet; it is kept as a placeholder", e.name));
+    }
+
+    /// Declarations of an entry (Vehicle, Maneuver, ...) resolved with `assignments`.
+    pub fn declarations(
+        &mut self,
+        cx: &Cx,
+        e: &Elem,
+        assignments: &[(String, String)],
+    ) -> Result<Vec<ParameterDeclaration>, Error> {
+        let decls = read_declarations(e.child("ParameterDeclarations"), cx.scope, assignments, &cx.file, &mut self.warnings)?;
+        for (name, _) in assignments {
+            if !decls.iter().any(|d| &d.name == name) {
+                self.warn(
+                    cx.loc(e.pos),
+                    format!("parameter assignment '{name}' does not match any parameter declared by <{}>", e.name),
+                );
+            }
+        }
+        Ok(decls)
+    }
+
+    /// Resolves a CatalogReference element and reads the entry with `read`, which receives the
+    /// catalog's context (its file, a scope whose parent is the referring scope), the entry
+    /// element and the resolved parameter assignments.
+    pub fn catalog_entry<T>(
+        &mut self,
+        cx: &Cx,
+        reference: &Elem,
+        kinds: &[CatalogKind],
+        read: impl FnOnce(&mut Reader, &Cx, &Elem, &[(String, String)]) -> Result<T, Error>,
+    ) -> Result<T, Error> {
+        let catalog = cx.text(reference, "catalogName")?;
+        let entry = cx.text(reference, "entryName")?;
+        let mut assignments = Vec::new();
+        if let Some(pa) = reference.child("ParameterAssignments") {
+            for a in pa.children_named("ParameterAssignment") {
+                let name = cx.name_ref(a, "parameterRef")?;
+                let value = cx.text(a, "value")?;
+                match assignments.iter_mut().find(|(n, _): &&mut (String, String)| n == &name) {
+                    Some(slot) => slot.1 = value,
+                    None => assignments.push((name, value)),
+                }
+            }
+        }
+        let at = cx.loc(reference.pos);
+        if self.catalog_depth >= MAX_CATALOG_DEPTH {
+            return Err(Error::new(ErrorKind::Limit, at, format!("catalog references nested deeper than {MAX_CATALOG_DEPTH}")));
+        }
+        let found = self.catalogs.find(kinds, &catalog, &entry, &at, &mut self.warnings)?;
+        let Some(elem) = found.elem() else {
+            return Err(Error::new(ErrorKind::MissingCatalogEntry, at, format!("catalog entry '{entry}' vanished")));
+        };
+        let expected: Vec<&str> = kinds.iter().flat_map(|k| k.entry_elements().iter().copied()).collect();
+        if !expected.contains(&elem.name.as_str()) {
+            return Err(Error::new(
+                ErrorKind::Structure,
+                at,
+                format!(
+                    "catalog entry '{entry}' of catalog '{catalog}' is a <{}>, expected {}",
+                    elem.name,
+                    expected.join(" or ")
+                ),
+            ));
+        }
+        let scope = Scope { params: Vec::new(), parent: Some(cx.scope) };
+        let entry_cx = Cx::new(found.doc.file.clone(), &scope);
+        self.catalog_depth += 1;
+        let result = read(self, &entry_cx, elem, &assignments);
+        self.catalog_depth -= 1;
+        result
+    }
+}
+
+/// One entry of a catalog file read on its own.
+pub(crate) fn read_catalog_entry(
+    r: &mut Reader,
+    cx: &Cx,
+    e: &Elem,
+) -> Result<Option<crate::catalog_file::CatalogEntry>, Error> {
+    use crate::catalog_file::CatalogEntry;
+    Ok(Some(match e.name.as_str() {
+        "Vehicle" | "Pedestrian" | "MiscObject" => CatalogEntry::Object(entity::read_entity_object_entry(r, cx, e, &[])?),
+        "Controller" => CatalogEntry::Controller(entity::read_controller(r, cx, e, &[])?),
+        "Environment" => CatalogEntry::Environment(environment::read_environment(r, cx, e, &[])?),
+        "Maneuver" => CatalogEntry::Maneuver(storyboard::read_maneuver(r, cx, e, &[])?),
+        "Trajectory" => CatalogEntry::Trajectory(trajectory::read_trajectory(r, cx, e, &[])?),
+        "Route" => CatalogEntry::Route(trajectory::read_route(r, cx, e, &[])?),
+        _ => {
+            r.unsupported(cx, e, "Catalog");
+            return Ok(None);
+        }
+    }))
+}

@@ -1,0 +1,107 @@
+//! Locating the shared corpus.
+#![allow(dead_code)]
+
+use std::path::{Path, PathBuf};
+
+/// `../shared` (or $OSC2CR_SHARED). None (with a notice) when absent, unless CI is set.
+pub fn shared() -> Option<PathBuf> {
+    let dir = std::env::var_os("OSC2CR_SHARED")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared"));
+    if dir.join("corpus").is_dir() {
+        return Some(dir);
+    }
+    if std::env::var_os("CI").is_some() {
+        panic!("corpus not found at {} (set OSC2CR_SHARED)", dir.display());
+    }
+    eprintln!("notice: corpus not found at {}; test skipped", dir.display());
+    None
+}
+
+/// Every `.xosc` under `dir`, sorted.
+pub fn xosc_files(dir: &Path) -> Vec<PathBuf> {
+    let mut out = Vec::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        let Ok(rd) = std::fs::read_dir(&d) else { continue };
+        for e in rd.flatten() {
+            let p = e.path();
+            if p.is_dir() {
+                stack.push(p);
+            } else if p.extension().is_some_and(|x| x == "xosc") {
+                out.push(p);
+            }
+        }
+    }
+    out.sort();
+    out
+}
+
+/// Path relative to the corpus root, with '/' separators.
+pub fn rel(corpus: &Path, p: &Path) -> String {
+    p.strip_prefix(corpus).unwrap_or(p).to_string_lossy().replace('\\', "/")
+}
+
+/// A fresh directory under the system temp dir for one test.
+pub fn temp_dir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("osc2cr-openscenario-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).expect("create temp dir");
+    d
+}
+
+/// 1-based (line, column) of the first occurrence of `needle` in `text`.
+pub fn pos_of(text: &str, needle: &str) -> (u32, u32) {
+    let at = text.find(needle).unwrap_or_else(|| panic!("'{needle}' not in text"));
+    let before = &text[..at];
+    let line = before.matches('\n').count() as u32 + 1;
+    let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) as u32 + 1;
+    (line, col)
+}
+
+pub const VEHICLE: &str = r#"<Vehicle name="car" vehicleCategory="car">
+          <BoundingBox><Center x="1.5" y="0" z="0.9"/><Dimensions width="2" length="4.5" height="1.5"/></BoundingBox>
+          <Performance maxSpeed="70" maxAcceleration="5" maxDeceleration="9"/>
+          <Axles>
+            <FrontAxle maxSteering="0.5" wheelDiameter="0.6" trackWidth="1.8" positionX="3" positionZ="0.3"/>
+            <RearAxle maxSteering="0" wheelDiameter="0.6" trackWidth="1.8" positionX="0" positionZ="0.3"/>
+          </Axles>
+          <Properties/>
+        </Vehicle>"#;
+
+/// A minimal scenario with the given parts.
+pub fn scenario(params: &str, catalogs: &str, entities: &str, init: &str, stories: &str) -> String {
+    format!(
+        r#"<?xml version="1.0" encoding="UTF-8"?>
+<OpenSCENARIO>
+  <FileHeader revMajor="1" revMinor="0" date="2020-01-01T00:00:00" description="test" author="test"/>
+  <ParameterDeclarations>
+    {params}
+  </ParameterDeclarations>
+  <CatalogLocations>{catalogs}</CatalogLocations>
+  <RoadNetwork><LogicFile filepath="road.xodr"/></RoadNetwork>
+  <Entities>
+    {entities}
+  </Entities>
+  <Storyboard>
+    <Init><Actions>
+      {init}
+    </Actions></Init>
+    {stories}
+  </Storyboard>
+</OpenSCENARIO>
+"#
+    )
+}
+
+/// An entity named `name` with the inline test vehicle.
+pub fn car(name: &str) -> String {
+    format!(r#"<ScenarioObject name="{name}">{VEHICLE}</ScenarioObject>"#)
+}
+
+/// A Private init block teleporting `entity` to a world position with the given x attribute text.
+pub fn teleport(entity: &str, x: &str) -> String {
+    format!(
+        r#"<Private entityRef="{entity}"><PrivateAction><TeleportAction><Position><WorldPosition x="{x}" y="0"/></Position></TeleportAction></PrivateAction></Private>"#
+    )
+}
