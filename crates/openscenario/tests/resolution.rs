@@ -208,3 +208,16 @@ fn corpus_catalog_lookup_by_file_name() {
     assert!(env.weather.is_some());
     assert!(!env.name.is_empty());
 }
+
+#[test]
+fn partly_modelled_elements_say_what_they_drop() {
+    let action = r#"<UserDefinedAction><CustomCommandAction type="log">hello</CustomCommandAction></UserDefinedAction>"#;
+    let stories = story("", action, r#"<ByValueCondition><SimulationTimeCondition value="1" rule="greaterThan"/></ByValueCondition>"#);
+    let text = scenario("", "", &car("Ego"), "", &stories);
+    let (s, w) = ok(&text, &LoadOptions::default());
+    let event = &s.storyboard.stories[0].acts[0].maneuver_groups[0].maneuvers[0].events[0];
+    assert_eq!(event.actions[0].kind, ActionKind::CustomCommand { command_type: "log".into() });
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert!(w[0].message.contains("CustomCommandAction"), "{w:?}");
+    assert_eq!((w[0].location.line, w[0].location.col), common::pos_of(&text, "<CustomCommandAction"));
+}

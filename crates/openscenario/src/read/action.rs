@@ -24,6 +24,9 @@ pub(crate) fn read_action_kind(r: &mut Reader, cx: &Cx, c: &Elem) -> Result<Acti
         "GlobalAction" => read_global_action(r, cx, c),
         "UserDefinedAction" => {
             let cc = c.child("CustomCommandAction");
+            if let Some(cc) = cc {
+                r.warn(cx.loc(cc.pos), "CustomCommandAction: its text content is not interpreted (only its type is kept)");
+            }
             Ok(ActionKind::CustomCommand {
                 command_type: cc.map(|cc| cx.opt_text(cc, "type")).transpose()?.flatten().unwrap_or_default(),
             })
@@ -172,6 +175,7 @@ pub(crate) fn read_private_action(r: &mut Reader, cx: &Cx, wrapper: &Elem) -> Re
             match c.name.as_str() {
                 "LightStateAction" => light_state(cx, c)?,
                 "AnimationAction" => {
+                    r.warn(cx.loc(c.pos), "AnimationAction: only the animation type, loop, duration and state are kept");
                     let ty = c.child("AnimationType").and_then(|t| t.first_child());
                     PrivateAction::Animation {
                         animation_type: ty.map(|t| t.name.clone()).unwrap_or_default(),

@@ -24,9 +24,12 @@ fn modify_rule(cx: &Cx, m: &Elem) -> Result<ModifyRule, Error> {
     Ok(ModifyRule { kind, value: cx.f64(c, "value")? })
 }
 
-fn traffic_definition(cx: &Cx, e: &Elem) -> Result<String, Error> {
+fn traffic_definition(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<String, Error> {
     Ok(match e.child("TrafficDefinition") {
-        Some(d) => cx.opt_text(d, "name")?.unwrap_or_default(),
+        Some(d) => {
+            r.warn(cx.loc(d.pos), "TrafficDefinition: only its name is kept (vehicle and controller distributions are not modelled)");
+            cx.opt_text(d, "name")?.unwrap_or_default()
+        }
         None => String::new(),
     })
 }
@@ -78,13 +81,13 @@ pub(crate) fn read_global_action(r: &mut Reader, cx: &Cx, wrapper: &Elem) -> Res
                     radius: cx.f64(c, "radius")?,
                     rate: cx.f64(c, "rate")?,
                     velocity: cx.opt_f64(c, "velocity")?,
-                    definition: traffic_definition(cx, c)?,
+                    definition: traffic_definition(r, cx, c)?,
                 },
                 "TrafficSinkAction" => GlobalAction::TrafficSink {
                     position: read_position(r, cx, cx.child(c, "Position")?)?,
                     radius: cx.f64(c, "radius")?,
                     rate: cx.opt_f64(c, "rate")?,
-                    definition: traffic_definition(cx, c)?,
+                    definition: traffic_definition(r, cx, c)?,
                 },
                 "TrafficSwarmAction" => GlobalAction::TrafficSwarm {
                     central_entity: cx.text(cx.child(c, "CentralObject")?, "entityRef")?,
@@ -94,12 +97,15 @@ pub(crate) fn read_global_action(r: &mut Reader, cx: &Cx, wrapper: &Elem) -> Res
                     offset: cx.f64_or(c, "offset", 0.0)?,
                     number_of_vehicles: cx.u32_or(c, "numberOfVehicles", 0)?,
                     velocity: cx.opt_f64(c, "velocity")?,
-                    definition: traffic_definition(cx, c)?,
+                    definition: traffic_definition(r, cx, c)?,
                 },
-                "TrafficAreaAction" => GlobalAction::TrafficArea {
+                "TrafficAreaAction" => {
+                    r.warn(cx.loc(c.pos), "TrafficAreaAction: the area's geometry is not modelled");
+                    GlobalAction::TrafficArea {
                     continuous: cx.bool_or(c, "continuous", false)?,
                     number_of_entities: cx.u32_or(c, "numberOfEntities", 0)?,
-                },
+                    }
+                }
                 "TrafficStopAction" => GlobalAction::TrafficStop { name: cx.opt_text(e, "trafficName")? },
                 _ => return Ok(unsupported(r, cx, c, "TrafficAction")),
             }
