@@ -1,0 +1,24 @@
+//! Route planning over an OpenDRIVE road network for AssignRouteAction, AcquirePositionAction
+//! and RoutePosition: from waypoints given as (road, lane, s) to the sequence of lanes an
+//! entity drives through, respecting driving directions, lane links through lane sections
+//! and junctions, and lane changes between adjacent same-direction lanes (at a cost).
+//!
+//! This crate knows the road network (crate `opendrive`) but not OpenSCENARIO: the engine
+//! resolves waypoint positions to road coordinates and decides what an entity without a
+//! route does at a junction. It only plans routes and answers questions about them
+//! (route s ↔ road s, which road follows at a junction).
+
+mod cost;
+mod error;
+mod route;
+mod search;
+mod waypoint;
+
+pub use error::RouteError;
+pub use route::{Leg, NextRoad, Route, RoutePoint};
+pub use waypoint::{Strategy, Waypoint};
+
+/// Most waypoints accepted for one route (hostile input).
+pub const MAX_WAYPOINTS: usize = 10_000;
+/// Extra cost of one lane change, in metres of driving (shortest) or its time (fastest).
+pub const LANE_CHANGE_COST_M: f64 = 30.0;

@@ -1,0 +1,227 @@
+//! Paths from already-resolved world poses, one constructor per shape.
+
+use crate::error::TrajectoryError;
+use crate::nurbs::Nurbs;
+use crate::nurbs_path::NurbsPath;
+use crate::path::{Curve, Path};
+use crate::polyline::Polyline;
+use crate::pose::Pose;
+use crate::spiral::Spiral;
+use crate::time_table::TimeTable;
+use crate::{MAX_ITEMS, MAX_LENGTH};
+
+/// Vertices closer than this (m) are the same point.
+const SAME_POINT: f64 = 1e-9;
+
+/// One clothoid-spline segment with its start resolved (None: continue from the previous
+/// segment's end, or from the path's start pose for the first).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SplineSegment {
+    pub start: Option<Pose>,
+    pub curvature_start: f64,
+    pub curvature_end: f64,
+    pub length: f64,
+    /// Heading offset added at the start of the segment (rad).
+    pub h_offset: f64,
+    pub time_start: Option<f64>,
+}
+
+fn check_count(shape: &'static str, what: &'static str, found: usize, needed: usize) -> Result<(), TrajectoryError> {
+    if found > MAX_ITEMS {
+        return Err(TrajectoryError::TooMany { shape, what, max: MAX_ITEMS, found });
+    }
+    if found < needed {
+        return Err(TrajectoryError::TooFew { shape, what, needed, found });
+    }
+    Ok(())
+}
+
+fn check_num(shape: &'static str, what: impl Into<String>, v: f64) -> Result<f64, TrajectoryError> {
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(TrajectoryError::BadNumber { shape, what: what.into(), constraint: "", value: v })
+    }
+}
+
+fn check_pose(shape: &'static str, what: impl Into<String>, p: &Pose) -> Result<(), TrajectoryError> {
+    if p.is_finite() {
+        Ok(())
+    } else {
+        let v = [p.x, p.y, p.z, p.heading].into_iter().find(|v| !v.is_finite()).unwrap_or(f64::NAN);
+        Err(TrajectoryError::BadNumber { shape, what: what.into(), constraint: "", value: v })
+    }
+}
+
+fn check_length(shape: &'static str, length: f64) -> Result<(), TrajectoryError> {
+    if length.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+        return Err(TrajectoryError::ZeroLength { shape });
+    }
+    if length > MAX_LENGTH {
+        return Err(TrajectoryError::BadNumber { shape, what: "the total length".into(), constraint: " ≤ 1e6 m", value: length });
+    }
+    Ok(())
+}
+
+/// Time stamps if every item has one; a warning if only some do.
+fn all_or_none(shape: &'static str, times: &[Option<f64>], warnings: &mut Vec<String>) -> Option<Vec<f64>> {
+    let have = times.iter().filter(|t| t.is_some()).count();
+    if have == times.len() && have > 0 {
+        return Some(times.iter().map(|t| t.unwrap_or(0.0)).collect());
+    }
+    if have > 0 {
+        warnings.push(format!("{shape}: only {have} of {} time stamps given; the time stamps are ignored", times.len()));
+    }
+    None
+}
+
+impl Path {
+    /// A polyline through `vertices` (pose, optional time). Repeated vertices are dropped
+    /// from the geometry (their time stamps stay: the entity waits there); a closed
+    /// polyline gets a segment back to its first vertex.
+    pub fn polyline(vertices: &[(Pose, Option<f64>)], closed: bool) -> Result<Path, TrajectoryError> {
+        const SHAPE: &str = "Polyline";
+        check_count(SHAPE, "vertices", vertices.len(), 2)?;
+        let mut warnings = Vec::new();
+        let mut xyz: Vec<[f64; 3]> = Vec::with_capacity(vertices.len() + 1);
+        let mut stamps = Vec::with_capacity(vertices.len());
+        let mut s = 0.0;
+        for (i, (p, t)) in vertices.iter().enumerate() {
+            check_pose(SHAPE, format!("vertex {i}"), p)?;
+            if let Some(t) = t {
+                check_num(SHAPE, format!("time of vertex {i}"), *t)?;
+            }
+            match xyz.last() {
+                Some(q) if (p.x - q[0]).hypot(p.y - q[1]) <= SAME_POINT => {
+                    warnings.push(format!("{SHAPE}: vertex {i} repeats the previous one and adds no segment"));
+                }
+                Some(q) => {
+                    s += (p.x - q[0]).hypot(p.y - q[1]);
+                    xyz.push([p.x, p.y, p.z]);
+                }
+                None => xyz.push([p.x, p.y, p.z]),
+            }
+            stamps.push((s, *t));
+        }
+        if xyz.len() < 2 {
+            return Err(TrajectoryError::ZeroLength { shape: SHAPE });
+        }
+        if closed {
+            if let (Some(first), Some(last)) = (xyz.first().copied(), xyz.last()) {
+                if (first[0] - last[0]).hypot(first[1] - last[1]) > SAME_POINT {
+                    xyz.push(first);
+                }
+            }
+        }
+        let line = Polyline::new(&xyz, closed);
+        let length = line.length();
+        check_length(SHAPE, length)?;
+        let times: Vec<Option<f64>> = stamps.iter().map(|p| p.1).collect();
+        let times = match all_or_none(SHAPE, &times, &mut warnings) {
+            Some(ts) => {
+                if closed && xyz.len() > vertices.len() {
+                    warnings.push(format!("{SHAPE}: closed and timed; the closing segment has no time stamps and takes no time"));
+                }
+                Some(TimeTable::new(SHAPE, stamps.iter().zip(ts).map(|((s, _), t)| (*s, t)).collect())?)
+            }
+            None => None,
+        };
+        Ok(Path { curve: Curve::Polyline(line), length, closed, times, warnings })
+    }
+
+    /// One clothoid from `start`: curvature κ + κ'·s for s in [0, length]; `time` is
+    /// (startTime, stopTime), spread linearly over the length.
+    pub fn clothoid(start: Pose, curvature: f64, curvature_prime: f64, length: f64, time: (Option<f64>, Option<f64>), closed: bool) -> Result<Path, TrajectoryError> {
+        let seg = SplineSegment { start: Some(start), curvature_start: curvature, curvature_end: curvature + curvature_prime * length, length, h_offset: 0.0, time_start: time.0 };
+        let mut path = Path::clothoid_spline(start, &[seg], time.1, closed)?;
+        for w in path.warnings.iter_mut() {
+            *w = w.replace("ClothoidSpline", "Clothoid");
+        }
+        Ok(path)
+    }
+
+    /// Clothoid segments one after the other; `time_end` is the time at the end of the last.
+    /// Zero-length segments are skipped with a warning.
+    pub fn clothoid_spline(start: Pose, segments: &[SplineSegment], time_end: Option<f64>, closed: bool) -> Result<Path, TrajectoryError> {
+        const SHAPE: &str = "ClothoidSpline";
+        check_count(SHAPE, "segments", segments.len(), 1)?;
+        check_pose(SHAPE, "the start pose", &start)?;
+        let mut warnings = Vec::new();
+        let mut list = Vec::with_capacity(segments.len());
+        let mut stamps: Vec<(f64, Option<f64>)> = Vec::with_capacity(segments.len() + 1);
+        let mut at = start;
+        let mut s = 0.0;
+        for (i, seg) in segments.iter().enumerate() {
+            let k0 = check_num(SHAPE, format!("curvatureStart of segment {i}"), seg.curvature_start)?;
+            let k1 = check_num(SHAPE, format!("curvatureEnd of segment {i}"), seg.curvature_end)?;
+            let len = check_num(SHAPE, format!("length of segment {i}"), seg.length)?;
+            let h_off = check_num(SHAPE, format!("hOffset of segment {i}"), seg.h_offset)?;
+            if let Some(t) = seg.time_start {
+                check_num(SHAPE, format!("timeStart of segment {i}"), t)?;
+            }
+            if len < 0.0 {
+                return Err(TrajectoryError::BadNumber { shape: SHAPE, what: format!("length of segment {i}"), constraint: " ≥ 0", value: len });
+            }
+            if let Some(p) = seg.start {
+                check_pose(SHAPE, format!("start of segment {i}"), &p)?;
+                at = p;
+            }
+            at.heading += h_off;
+            stamps.push((s, seg.time_start));
+            if len <= 0.0 {
+                warnings.push(format!("{SHAPE}: segment {i} has zero length and is skipped"));
+                continue;
+            }
+            if s + len > MAX_LENGTH {
+                return Err(TrajectoryError::BadNumber { shape: SHAPE, what: "the total length".into(), constraint: " ≤ 1e6 m", value: s + len });
+            }
+            let sp = Spiral::new(at, k0, (k1 - k0) / len, len);
+            at = sp.end_pose();
+            list.push((s, sp));
+            s += len;
+        }
+        check_length(SHAPE, s)?;
+        if let Some(t) = time_end {
+            check_num(SHAPE, "timeEnd", t)?;
+        }
+        stamps.push((s, time_end));
+        let times: Vec<Option<f64>> = stamps.iter().map(|p| p.1).collect();
+        let times = match all_or_none(SHAPE, &times, &mut warnings) {
+            Some(ts) => Some(TimeTable::new(SHAPE, stamps.iter().zip(ts).map(|((s, _), t)| (*s, t)).collect())?),
+            None => None,
+        };
+        Ok(Path { curve: Curve::Spirals(list), length: s, closed, times, warnings })
+    }
+
+    /// A NURBS curve: control points (pose, weight, optional time), knots. Only x, y, z of
+    /// the poses count (esmini ignores control-point orientations too).
+    pub fn nurbs(order: u32, control_points: &[(Pose, Option<f64>, Option<f64>)], knots: &[f64], closed: bool) -> Result<Path, TrajectoryError> {
+        const SHAPE: &str = "NURBS";
+        check_count(SHAPE, "control points", control_points.len(), 2)?;
+        check_count(SHAPE, "knots", knots.len(), 0)?;
+        let mut warnings = Vec::new();
+        let mut pts = Vec::with_capacity(control_points.len());
+        for (i, (p, w, t)) in control_points.iter().enumerate() {
+            check_pose(SHAPE, format!("control point {i}"), p)?;
+            if let Some(t) = t {
+                check_num(SHAPE, format!("time of control point {i}"), *t)?;
+            }
+            pts.push([p.x, p.y, p.z, w.unwrap_or(1.0)]);
+        }
+        let curve = Nurbs::new(order, pts, knots.to_vec())?;
+        let np = NurbsPath::new(curve)?;
+        let length = np.length();
+        check_length(SHAPE, length)?;
+        let times: Vec<Option<f64>> = control_points.iter().map(|c| c.2).collect();
+        let times = match all_or_none(SHAPE, &times, &mut warnings) {
+            Some(ts) => {
+                if let Some(i) = ts.windows(2).position(|w| matches!(w, [a, b] if b < a)) {
+                    return Err(TrajectoryError::NotMonotone { shape: SHAPE, what: "control point times", index: i + 1 });
+                }
+                Some(TimeTable::new(SHAPE, np.time_stamps(&ts))?)
+            }
+            None => None,
+        };
+        Ok(Path { curve: Curve::Nurbs(np), length, closed, times, warnings })
+    }
+}

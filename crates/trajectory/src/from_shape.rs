@@ -1,0 +1,68 @@
+//! Paths from the OpenSCENARIO model: positions resolved through the engine's closure.
+
+use crate::constructors::SplineSegment;
+use crate::error::TrajectoryError;
+use crate::path::Path;
+use crate::pose::Pose;
+use openscenario::model::{Position, Shape, Trajectory};
+
+/// The engine's position resolver: world pose of a position, None if it cannot be placed.
+pub type Resolver<'a> = &'a dyn Fn(&Position) -> Option<Pose>;
+
+fn resolve(shape: &'static str, what: String, resolver: Resolver, p: &Position) -> Result<Pose, TrajectoryError> {
+    resolver(p).ok_or(TrajectoryError::Unresolved { shape, what })
+}
+
+impl Path {
+    /// [`Path::from_shape`] with the trajectory's own `closed` flag.
+    pub fn from_trajectory(trajectory: &Trajectory, current: Pose, resolver: Resolver) -> Result<Path, TrajectoryError> {
+        Path::from_shape(&trajectory.shape, trajectory.closed, current, resolver)
+    }
+
+    /// Build the path of a shape. `current` is the entity's pose when the action starts: the
+    /// start of a Clothoid without a Position and of a ClothoidSpline whose first segment
+    /// has no PositionStart. Positions are resolved in document order.
+    pub fn from_shape(shape: &Shape, closed: bool, current: Pose, resolver: Resolver) -> Result<Path, TrajectoryError> {
+        match shape {
+            Shape::Polyline(vertices) => {
+                let mut v = Vec::with_capacity(vertices.len().min(crate::MAX_ITEMS + 1));
+                for (i, vx) in vertices.iter().take(crate::MAX_ITEMS + 1).enumerate() {
+                    v.push((resolve("Polyline", format!("vertex {i}"), resolver, &vx.position)?, vx.time));
+                }
+                Path::polyline(&v, closed)
+            }
+            Shape::Clothoid { curvature, curvature_prime, length, start_time, stop_time, position } => {
+                let start = match position {
+                    Some(p) => resolve("Clothoid", "the start".into(), resolver, p)?,
+                    None => current,
+                };
+                Path::clothoid(start, *curvature, *curvature_prime, *length, (*start_time, *stop_time), closed)
+            }
+            Shape::ClothoidSpline { segments, time_end } => {
+                let mut segs = Vec::with_capacity(segments.len().min(crate::MAX_ITEMS + 1));
+                for (i, s) in segments.iter().take(crate::MAX_ITEMS + 1).enumerate() {
+                    let start = match &s.position_start {
+                        Some(p) => Some(resolve("ClothoidSpline", format!("the start of segment {i}"), resolver, p)?),
+                        None => None,
+                    };
+                    segs.push(SplineSegment {
+                        start,
+                        curvature_start: s.curvature_start,
+                        curvature_end: s.curvature_end,
+                        length: s.length,
+                        h_offset: s.h_offset.unwrap_or(0.0),
+                        time_start: s.time_start,
+                    });
+                }
+                Path::clothoid_spline(current, &segs, *time_end, closed)
+            }
+            Shape::Nurbs { order, control_points, knots } => {
+                let mut cps = Vec::with_capacity(control_points.len().min(crate::MAX_ITEMS + 1));
+                for (i, c) in control_points.iter().take(crate::MAX_ITEMS + 1).enumerate() {
+                    cps.push((resolve("NURBS", format!("control point {i}"), resolver, &c.position)?, c.weight, c.time));
+                }
+                Path::nurbs(*order, &cps, knots, closed)
+            }
+        }
+    }
+}

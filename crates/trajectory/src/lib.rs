@@ -1,0 +1,37 @@
+//! Trajectory shapes of OpenSCENARIO (polyline, clothoid, clothoid spline, NURBS) turned into
+//! arc-length-parameterised 2-D paths with optional time stamps, for FollowTrajectoryAction
+//! and TrajectoryPosition.
+//!
+//! This crate owns the geometry of a trajectory and its own time axis. It does not know
+//! the road network, entities or the simulation clock: vertex positions are resolved to
+//! world poses by a closure the engine passes in, and [`TimeMapping`] only converts between
+//! simulation time and trajectory time as the engine asks. Where the standard is silent
+//! the behaviour follows esmini (corner blending of polyline headings, NURBS sampling and
+//! control-point time interpolation).
+
+mod angle;
+mod constructors;
+mod from_shape;
+mod error;
+mod nurbs;
+mod nurbs_path;
+mod path;
+mod polyline;
+mod pose;
+mod spiral;
+mod time_mapping;
+mod time_table;
+
+pub use constructors::SplineSegment;
+pub use error::TrajectoryError;
+pub use from_shape::Resolver;
+pub use nurbs::Nurbs;
+pub use path::Path;
+pub use pose::{PathPoint, Pose};
+pub use time_mapping::{TimeDomain, TimeMapping};
+pub use time_table::TimeTable;
+
+/// Upper bound on vertices / control points / knots / segments accepted from a file.
+pub const MAX_ITEMS: usize = 100_000;
+/// Upper bound on a trajectory's length in metres (hostile input).
+pub const MAX_LENGTH: f64 = 1.0e6;

@@ -1,0 +1,82 @@
+//! Straight segments between vertices. The heading follows each segment and, as esmini
+//! does, turns linearly across a corner over min(4 m, segment length) on each side, half
+//! the turn on either side of the vertex.
+
+use crate::angle;
+use crate::pose::PathPoint;
+
+/// Half-width of esmini's corner blending.
+const CORNER_RADIUS: f64 = 4.0;
+
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Polyline {
+    /// (x, y, z, s) of each vertex; s strictly increasing.
+    pts: Vec<[f64; 4]>,
+    /// Heading of segment i (pts[i] → pts[i+1]).
+    headings: Vec<f64>,
+    /// The last segment returns to the first vertex: corners wrap.
+    closed: bool,
+}
+
+impl Polyline {
+    /// `pts` are (x, y, z) without zero-length segments, at least two of them.
+    pub(crate) fn new(xyz: &[[f64; 3]], closed: bool) -> Polyline {
+        let mut pts = Vec::with_capacity(xyz.len());
+        let mut headings = Vec::with_capacity(xyz.len());
+        let mut s = 0.0;
+        for (i, p) in xyz.iter().enumerate() {
+            if let Some(prev) = i.checked_sub(1).and_then(|j| xyz.get(j)) {
+                s += (p[0] - prev[0]).hypot(p[1] - prev[1]);
+                headings.push(angle::normalize((p[1] - prev[1]).atan2(p[0] - prev[0])));
+            }
+            pts.push([p[0], p[1], p[2], s]);
+        }
+        Polyline { pts, headings, closed }
+    }
+
+    pub(crate) fn length(&self) -> f64 {
+        self.pts.last().map_or(0.0, |p| p[3])
+    }
+
+    fn heading(&self, i: Option<usize>) -> Option<f64> {
+        i.and_then(|i| self.headings.get(i)).copied()
+    }
+
+    pub(crate) fn eval(&self, s: f64) -> PathPoint {
+        let nseg = self.headings.len();
+        let i = self.pts.partition_point(|p| p[3] <= s).saturating_sub(1).min(nseg.saturating_sub(1));
+        let (Some(a), Some(b), Some(h)) = (self.pts.get(i), self.pts.get(i + 1), self.heading(Some(i))) else {
+            let p = self.pts.first().copied().unwrap_or([0.0; 4]);
+            return PathPoint { s, x: p[0], y: p[1], z: p[2], heading: 0.0, curvature: 0.0 };
+        };
+        let len = b[3] - a[3];
+        let local = (s - a[3]).clamp(0.0, len);
+        let u = if len > 0.0 { local / len } else { 0.0 };
+        let lerp = |k: usize| a[k] + u * (b[k] - a[k]);
+        let r = CORNER_RADIUS.min(len);
+        let prev = if i > 0 { Some(i - 1) } else if self.closed { Some(nseg - 1) } else { None };
+        let next = if i + 1 < nseg { Some(i + 1) } else if self.closed { Some(0) } else { None };
+        // Same precedence as esmini: the corner at the start wins when both overlap.
+        let (heading, curvature) = if r > 0.0 && local < r {
+            match self.heading(prev) {
+                Some(hp) => {
+                    let turn = angle::diff(h, hp);
+                    (hp + (r + local) / (2.0 * r) * turn, turn / (2.0 * r))
+                }
+                None => (h, 0.0),
+            }
+        } else if r > 0.0 && local > len - r {
+            match self.heading(next) {
+                Some(hn) => {
+                    let turn = angle::diff(hn, h);
+                    let a = (r + (len - local)) / (2.0 * r);
+                    (h + (1.0 - a) * turn, turn / (2.0 * r))
+                }
+                None => (h, 0.0),
+            }
+        } else {
+            (h, 0.0)
+        };
+        PathPoint { s, x: lerp(0), y: lerp(1), z: lerp(2), heading: angle::normalize(heading), curvature }
+    }
+}
