@@ -5,6 +5,7 @@
 
 mod inspect;
 mod map_cmd;
+mod simulate;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
@@ -24,6 +25,8 @@ enum Command {
     /// Load an OpenSCENARIO file and show what it resolves to: entities, storyboard,
     /// parameters, warnings.
     Inspect(inspect::InspectArgs),
+    /// Run a scenario with the engine and write its trace as CSV (the format of conformance.py).
+    Simulate(simulate::SimulateArgs),
 }
 
 /// A failed command: the message for the user and the exit status.
@@ -44,6 +47,7 @@ fn main() -> ExitCode {
     let result = match &cli.command {
         Command::Map(args) => map_cmd::run(args),
         Command::Inspect(args) => inspect::run(args),
+        Command::Simulate(args) => simulate::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -3,7 +3,33 @@
 //! transitions, and warnings for whatever it could not do.
 //!
 //! It knows the `openscenario` model and the `opendrive` road network, and nothing of CommonRoad.
+//! Behaviour follows the ASAM standard and, where the standard leaves room, esmini 3.6 (the
+//! reference traces): see `run` for the order of one frame.
+//!
+//! Module map: `run` (the loop) · `sim` (run state) · `storyboard` (element states and
+//! transitions) · `conditions` (triggers, edges, delays, each condition) · `actions` (speed,
+//! lane change, lane offset, teleport, parameters) · `motion` (default controller) · `roads`
+//! (lane geometry, following lanes through junctions) · `positions` · `dynamics` (transition
+//! shapes) · `entities` · `trace` (the output).
 
+mod actions;
+mod conditions;
+mod dynamics;
+mod entities;
+mod motion;
+mod positions;
+mod roads;
+mod rules;
+mod run;
+mod settings;
+mod sim;
+mod storyboard;
 pub mod trace;
+mod values;
+mod warning;
 
+pub use entities::bounding_boxes;
+pub use run::{simulate, Run};
+pub use settings::Settings;
 pub use trace::{EntityTrace, RoadPos, Sample, StoryboardEvent, Trace};
+pub use warning::{Error, Warning};

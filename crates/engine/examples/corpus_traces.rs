@@ -1,0 +1,86 @@
+//! Write the engine's trace of every corpus scenario that has a reference trace:
+//! `cargo run --release -p engine --example corpus_traces -- SHARED_DIR OUT_DIR`
+//! (OUT_DIR/<path under corpus without .xosc>.csv), and print the engine's speed.
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+fn xosc_files(dir: &Path, out: &mut Vec<PathBuf>) {
+    let Ok(rd) = std::fs::read_dir(dir) else { return };
+    let mut entries: Vec<_> = rd.flatten().map(|e| e.path()).collect();
+    entries.sort();
+    for p in entries {
+        if p.is_dir() {
+            xosc_files(&p, out);
+        } else if p.extension().is_some_and(|e| e == "xosc") {
+            out.push(p);
+        }
+    }
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let shared = PathBuf::from(args.get(1).map_or("../shared", |s| s.as_str()));
+    let out_dir = PathBuf::from(args.get(2).map_or("TRACES", |s| s.as_str()));
+    let filter = args.get(3).cloned();
+    let corpus = shared.join("corpus");
+    let reference = shared.join("reference/esmini-3.6.0");
+    let mut files = Vec::new();
+    xosc_files(&corpus, &mut files);
+    let (mut sim_time, mut wall) = (0.0, 0.0);
+    for f in files {
+        let rel = f.strip_prefix(&corpus).unwrap_or(&f).with_extension("");
+        if !reference.join(rel.with_extension("json")).exists() {
+            continue;
+        }
+        if let Some(flt) = &filter {
+            if !rel.to_string_lossy().contains(flt.as_str()) {
+                continue;
+            }
+        }
+        let (scenario, _) = match openscenario::load_scenario(&f, &Default::default()) {
+            Ok(s) => s,
+            Err(e) => {
+                eprintln!("{}: load failed: {e}", rel.display());
+                continue;
+            }
+        };
+        let net = scenario.road_network.logic_file.as_ref().and_then(|p| match opendrive::load(p) {
+            Ok(l) => Some(l.network),
+            Err(e) => {
+                eprintln!("{}: road network: {e}", rel.display());
+                None
+            }
+        });
+        let t0 = Instant::now();
+        let run = match engine::simulate(&scenario, net.as_ref(), &engine::Settings::default()) {
+            Ok(r) => r,
+            Err(e) => {
+                eprintln!("{}: {e}", rel.display());
+                continue;
+            }
+        };
+        let el = t0.elapsed().as_secs_f64();
+        wall += el;
+        sim_time += run.trace.duration();
+        eprintln!("{}: {:.2} s simulated in {:.2} ms, {} warnings", rel.display(), run.trace.duration(), el * 1e3, run.warnings.len());
+        if std::env::var("WARN").is_ok() {
+            for w in &run.warnings {
+                eprintln!("   {w}");
+            }
+        }
+        let path = out_dir.join(rel.with_extension("csv"));
+        if let Some(p) = path.parent() {
+            let _ = std::fs::create_dir_all(p);
+        }
+        let _ = std::fs::write(&path, run.trace.to_csv(&engine::bounding_boxes(&scenario)));
+        if std::env::var("EVENTS").is_ok() {
+            let mut ev = String::from("time,element,from,transition,to\n");
+            for e in &run.trace.events {
+                ev.push_str(&format!("{:.3},{},{},{},{}\n", e.time, e.element, e.from, e.transition, e.to));
+            }
+            let _ = std::fs::write(out_dir.join(rel.with_extension("events.csv")), ev);
+        }
+    }
+    println!("simulated {sim_time:.1} s in {:.1} ms of engine time: {:.0}x real time", wall * 1e3, sim_time / wall.max(1e-12));
+}

@@ -1,0 +1,131 @@
+//! LaneChangeAction: the entity's offset, measured from the centre of the target lane, follows
+//! the transition shape from where it starts to the target lane offset, over time or distance
+//! (a rate is read as a lateral speed); lateral speed never exceeds the forward speed. Each
+//! step moves the entity by speed·dt split into its lateral and longitudinal parts, turns it
+//! by the slope of the path, and re-attaches it to the lane it is actually in.
+
+use super::ActionRt;
+use crate::dynamics::{sign, Transition, SMALL};
+use crate::positions::step_lane;
+use crate::roads::lane_geometry::{lane_borders, lane_center_t};
+use crate::roads::{move_along_s, LanePos, MoveStatus};
+use crate::sim::Sim;
+use opendrive::RoadNetwork;
+use openscenario::{DynamicsDimension, LaneChangeTarget, TransitionDynamics};
+
+#[derive(Debug, Clone)]
+pub struct LaneChangeRt {
+    pub transition: Transition,
+    /// The entity's position expressed in the target lane.
+    pub internal: LanePos,
+}
+
+/// Re-express `lp` in the lane of its road that contains its lateral position.
+pub fn relane(net: &RoadNetwork, lp: &mut LanePos) {
+    let Some(road) = net.roads.get(lp.road) else { return };
+    let s = lp.s.clamp(0.0, road.length);
+    let section = road.section_index_at(s);
+    let Some(t) = lane_center_t(road, lp.lane_id, s).map(|c| c + lp.offset) else { return };
+    let Some(sec) = road.lane_sections.get(section) else { return };
+    for lane in sec.left.iter().chain(sec.right.iter()) {
+        if let Some((a, b)) = lane_borders(road, section, lane.id, s) {
+            let (lo, hi) = if a <= b { (a, b) } else { (b, a) };
+            if hi > lo && t >= lo && t <= hi {
+                lp.lane_id = lane.id;
+                lp.offset = t - 0.5 * (a + b);
+                return;
+            }
+        }
+    }
+}
+
+impl<'a> Sim<'a> {
+    pub(super) fn start_lane_change(&mut self, slot: usize, e: usize, d: &TransitionDynamics, target: &LaneChangeTarget, target_offset: f64) -> ActionRt {
+        let Some(net) = self.net else {
+            self.warn_action(slot, "LaneChangeAction needs a road network".into());
+            return ActionRt::Done;
+        };
+        let Some(lp) = self.entities.get(e).and_then(|x| x.lane) else {
+            self.warn_action(slot, "LaneChangeAction: the entity is not on a road".into());
+            return ActionRt::Done;
+        };
+        let target_lane = match target {
+            LaneChangeTarget::Absolute { lane_id } => *lane_id,
+            LaneChangeTarget::Relative { entity, value } => {
+                let Some(r) = self.entity_index(entity).and_then(|i| self.entities[i].lane) else {
+                    self.warn_action(slot, format!("LaneChangeAction: reference entity `{entity}` unknown or off the road"));
+                    return ActionRt::Done;
+                };
+                let forward = if r.dir < 0.0 { -1 } else { 1 };
+                // A positive value is to the left of the reference entity's driving direction.
+                step_lane(r.lane_id, value * forward)
+            }
+        };
+        let Some(road) = net.roads.get(lp.road) else { return ActionRt::Done };
+        let s = lp.s.clamp(0.0, road.length);
+        let (Some(cur_c), Some(tgt_c)) = (lane_center_t(road, lp.lane_id, s), lane_center_t(road, target_lane, s)) else {
+            self.warn_action(slot, format!("LaneChangeAction: lane {target_lane} does not exist on road `{}` here", road.id));
+            return ActionRt::Done;
+        };
+        let offset_in_target = cur_c + lp.offset - tgt_c;
+        let internal = LanePos { lane_id: target_lane, offset: offset_in_target, ..lp };
+        let lane_sign = sign(f64::from(target_lane));
+        let mut t = Transition::new(d.shape, d.dimension, d.value);
+        if d.dimension == DynamicsDimension::Rate {
+            // A rate is a lateral speed: the span follows from the distance to cover.
+            t.dimension = DynamicsDimension::Time;
+            let dist = (target_offset - offset_in_target).abs();
+            t.set_param_target(if d.value.abs() > SMALL { dist / d.value.abs() } else { 0.0 });
+        }
+        t.set_start(lane_sign * offset_in_target);
+        t.set_target(lane_sign * target_offset);
+        if let Some(en) = self.entities.get_mut(e) {
+            en.yaw_offset = 0.0;
+        }
+        ActionRt::LaneChange(LaneChangeRt { transition: t, internal })
+    }
+
+    pub(super) fn step_lane_change(&mut self, e: usize, l: &mut LaneChangeRt) -> bool {
+        let Some(net) = self.net else { return true };
+        let Some(en) = self.entities.get(e) else { return true };
+        let speed = en.speed;
+        if speed.abs() < SMALL {
+            return false;
+        }
+        let dt = self.dt;
+        let t = &mut l.transition;
+        if t.dimension == DynamicsDimension::Distance {
+            t.step(dt * speed);
+        } else {
+            t.step(dt);
+        }
+        t.set_max_rate(speed);
+        let agnostic = t.value();
+        let rate = t.scaled_derivative();
+        let lane_sign = sign(f64::from(l.internal.lane_id));
+        let old_offset = l.internal.offset;
+        l.internal.offset = agnostic * lane_sign;
+        let dist = speed * dt;
+        let d_lat = l.internal.offset - old_offset;
+        let d_long = sign(speed) * (dist * dist - d_lat * d_lat).max(0.0).sqrt();
+        let status = move_along_s(net, &mut l.internal, d_long);
+        let done = t.done(agnostic);
+        let yaw = if done {
+            0.0
+        } else {
+            let angle = if t.dimension == DynamicsDimension::Distance { rate.atan() } else { (rate / crate::dynamics::avoid_zero(speed)).atan() };
+            l.internal.dir * lane_sign * angle
+        };
+        let mut attached = l.internal;
+        relane(net, &mut attached);
+        let en = &mut self.entities[e];
+        en.yaw_offset = yaw;
+        en.set_lane_pos(net, attached);
+        en.moved_by_action = true;
+        if status == MoveStatus::EndOfRoad {
+            en.speed = 0.0;
+            en.at_road_end = true;
+        }
+        done
+    }
+}

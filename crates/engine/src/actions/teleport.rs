@@ -1,0 +1,31 @@
+//! TeleportAction: put the entity at a position (speed unchanged).
+
+use crate::positions::resolve;
+use crate::roads::road_follow::wrap;
+use crate::sim::Sim;
+use openscenario::Position;
+
+impl<'a> Sim<'a> {
+    pub(super) fn teleport(&mut self, slot: usize, e: usize, pos: &Position) {
+        let placement = match resolve(pos, self.net, &self.entities) {
+            Ok(p) => p,
+            Err(msg) => {
+                self.warn_action(slot, format!("TeleportAction: {msg}; the entity stays where it is"));
+                return;
+            }
+        };
+        let net = self.net;
+        let Some(en) = self.entities.get_mut(e) else { return };
+        en.at_road_end = false;
+        match (placement.lane, net) {
+            (Some(lp), Some(net)) => {
+                if let Some(pose) = lp.pose(net) {
+                    en.yaw_offset = wrap(placement.h - lp.facing_heading(&pose));
+                }
+                en.set_lane_pos(net, lp);
+                en.h = crate::entities::wrap_2pi(placement.h);
+            }
+            _ => en.set_world(net, placement.x, placement.y, placement.z, placement.h),
+        }
+    }
+}

@@ -1,0 +1,138 @@
+//! Entity conditions, evaluated for each triggering entity and combined by the
+//! triggering-entities rule (any: one true is enough; all: every one must be true).
+
+use super::distance::{between, boxes_overlap, corners, to_point};
+use super::ConditionRt;
+use crate::dynamics::SMALL;
+use crate::entities::EntityKind;
+use crate::positions::resolve;
+use crate::rules::compare;
+use crate::sim::Sim;
+use openscenario::{
+    CollisionTarget, CoordinateSystem, DistanceOptions, EntityCondition as C, ObjectType, RelativeDistanceType, TriggeringEntitiesRule, TtcTarget,
+};
+
+fn cs_of(o: &DistanceOptions) -> CoordinateSystem {
+    match (o.coordinate_system, o.along_route) {
+        (Some(cs), _) => cs,
+        (None, Some(true)) => CoordinateSystem::Road,
+        _ => CoordinateSystem::Entity,
+    }
+}
+
+impl<'a> Sim<'a> {
+    pub(super) fn check_entity(&mut self, c: &mut ConditionRt<'a>, rule: TriggeringEntitiesRule, cond: &'a C) -> bool {
+        if c.triggering.is_empty() {
+            return self.warn_once(c, "no known triggering entity".into());
+        }
+        let needs_other = matches!(cond, C::TimeHeadway { .. } | C::RelativeSpeed { .. } | C::RelativeDistance { .. })
+            || matches!(cond, C::TimeToCollision { target: TtcTarget::Entity(_), .. })
+            || matches!(cond, C::Collision { target: CollisionTarget::Entity(_) });
+        if needs_other && c.other.is_none() {
+            return self.warn_once(c, "the referenced entity is unknown".into());
+        }
+        // Positions are resolved once per evaluation (they may be relative to moving entities).
+        let point = match cond {
+            C::ReachPosition { position, .. } | C::Distance { position, .. } | C::TimeToCollision { target: TtcTarget::Position(position), .. } => {
+                match resolve(position, self.net, &self.entities) {
+                    Ok(p) => Some((p.x, p.y)),
+                    Err(e) => return self.warn_once(c, e),
+                }
+            }
+            _ => None,
+        };
+        if let C::RelativeClearance { .. } | C::Angle { .. } | C::RelativeAngle { .. } = cond {
+            return self.warn_once(c, format!("{} is not supported; it never becomes true", cond.element_name()));
+        }
+        let mut result = false;
+        for i in 0..c.triggering.len() {
+            let idx = c.triggering[i];
+            let r = self.check_one(idx, c.other, point, cond);
+            result = r;
+            match rule {
+                TriggeringEntitiesRule::Any if r => break,
+                TriggeringEntitiesRule::All if !r => break,
+                _ => {}
+            }
+        }
+        result
+    }
+
+    fn check_one(&self, idx: usize, other: Option<usize>, point: Option<(f64, f64)>, cond: &C) -> bool {
+        let Some(e) = self.entities.get(idx) else { return false };
+        if !e.active {
+            return false;
+        }
+        let o = other.and_then(|i| self.entities.get(i));
+        let t = self.time;
+        match cond {
+            C::Speed { value, rule, .. } => compare(e.speed, *value, *rule),
+            C::RelativeSpeed { value, rule, .. } => o.is_some_and(|o| compare(e.speed - o.speed, *value, *rule)),
+            C::Acceleration { value, rule, .. } => compare(e.accel, *value, *rule),
+            C::StandStill { duration } => e.standstill_since.is_some_and(|s| t - s >= duration - SMALL),
+            C::TraveledDistance { value } => e.odometer >= *value,
+            C::EndOfRoad { duration } => e.end_of_road && t - e.end_of_road_since >= duration - SMALL,
+            C::Offroad { duration } => e.offroad_since.is_some_and(|s| t - s >= duration - SMALL),
+            C::ReachPosition { tolerance, .. } => point.is_some_and(|(x, y)| (e.x - x).hypot(e.y - y) < *tolerance),
+            C::Distance { value, rule, options, .. } => point.is_some_and(|(x, y)| {
+                let kind = options.relative_distance_type.unwrap_or(RelativeDistanceType::EuclidianDistance);
+                compare(to_point(self.net, e, x, y, cs_of(options), kind, options.freespace).abs(), *value, *rule)
+            }),
+            C::RelativeDistance { value, rule, options, .. } => o.is_some_and(|o| {
+                let kind = options.relative_distance_type.unwrap_or(RelativeDistanceType::EuclidianDistance);
+                compare(between(self.net, e, o, cs_of(options), kind, options.freespace).abs(), *value, *rule)
+            }),
+            C::TimeHeadway { value, rule, options, .. } => o.is_some_and(|o| {
+                let kind = options.relative_distance_type.unwrap_or(RelativeDistanceType::Longitudinal);
+                let d = between(self.net, e, o, cs_of(options), kind, options.freespace);
+                if d < 0.0 || e.speed < SMALL {
+                    return false;
+                }
+                compare((d / e.speed).abs(), *value, *rule)
+            }),
+            C::TimeToCollision { value, rule, options, .. } => {
+                let kind = options.relative_distance_type.unwrap_or(RelativeDistanceType::Longitudinal);
+                let (d, rel_speed) = match (o, point) {
+                    (Some(o), _) => {
+                        let d = between(self.net, e, o, cs_of(options), kind, options.freespace);
+                        let (ovx, ovy) = o.vel;
+                        let rel = if ovx.abs() < SMALL && ovy.abs() < SMALL {
+                            e.speed
+                        } else {
+                            let on = ovx.hypot(ovy);
+                            let proj = (e.vel.0 * ovx + e.vel.1 * ovy) / on;
+                            crate::dynamics::sign(e.speed) * crate::dynamics::sign(proj) * (proj - o.speed.abs())
+                        };
+                        (d, rel)
+                    }
+                    (None, Some((x, y))) => (to_point(self.net, e, x, y, cs_of(options), kind, options.freespace), e.speed),
+                    _ => return false,
+                };
+                if d.abs() < SMALL || rel_speed.abs() < SMALL {
+                    return false;
+                }
+                let ttc = d / rel_speed;
+                ttc >= 0.0 && compare(ttc, *value, *rule)
+            }
+            C::Collision { target } => {
+                let ca = corners(e);
+                match target {
+                    CollisionTarget::Entity(_) => o.is_some_and(|o| o.active && boxes_overlap(&ca, &corners(o))),
+                    CollisionTarget::ByType(ty) => self.entities.iter().enumerate().any(|(j, b)| {
+                        j != idx
+                            && b.active
+                            && matches!(
+                                (ty, b.kind),
+                                (ObjectType::Vehicle, EntityKind::Vehicle)
+                                    | (ObjectType::Pedestrian, EntityKind::Pedestrian)
+                                    | (ObjectType::MiscellaneousObject, EntityKind::Misc)
+                                    | (ObjectType::External, EntityKind::External)
+                            )
+                            && boxes_overlap(&ca, &corners(b))
+                    }),
+                }
+            }
+            C::RelativeClearance { .. } | C::Angle { .. } | C::RelativeAngle { .. } => false,
+        }
+    }
+}

@@ -1,0 +1,69 @@
+//! Value conditions: simulation time, parameters, variables, storyboard element states.
+
+use super::ConditionRt;
+use crate::rules::{compare, compare_text};
+use crate::sim::Sim;
+use crate::storyboard::{State, Transition};
+use openscenario::{StoryboardElementState as Want, ValueCondition};
+
+impl<'a> Sim<'a> {
+    pub(super) fn check_value(&mut self, c: &mut ConditionRt<'a>, v: &ValueCondition) -> bool {
+        match v {
+            ValueCondition::SimulationTime { value, rule } => compare(self.time, *value, *rule),
+            ValueCondition::Parameter { parameter, value, rule } => match self.params.get(parameter) {
+                Some(cur) => compare_text(cur, value, *rule),
+                None => self.warn_once(c, format!("parameter `{parameter}` is not declared")),
+            },
+            ValueCondition::Variable { variable, value, rule } => match self.vars.get(variable) {
+                Some(cur) => compare_text(cur, value, *rule),
+                None => self.warn_once(c, format!("variable `{variable}` is not declared")),
+            },
+            ValueCondition::StoryboardElementState { state, element, .. } => {
+                let Some(target) = c.element else {
+                    return self.warn_once(c, format!("storyboard element `{element}` not found"));
+                };
+                // Changes since the last evaluation count once; otherwise the latest state holds
+                // (a transition is only true in the evaluation that sees it).
+                let mut result = false;
+                let mut seen = None;
+                for &(node, st, tr) in self.state_log.get(c.cursor..).unwrap_or(&[]) {
+                    if node == target {
+                        result |= state_matches(*state, st, Some(tr));
+                        seen = Some((st, tr));
+                    }
+                }
+                c.cursor = self.state_log.len();
+                match seen {
+                    Some(s) => c.latest = Some(s),
+                    None => result = c.latest.is_some_and(|(st, _)| state_matches(*state, st, None)),
+                }
+                result
+            }
+            ValueCondition::TimeOfDay { .. }
+            | ValueCondition::UserDefinedValue { .. }
+            | ValueCondition::TrafficSignal { .. }
+            | ValueCondition::TrafficSignalController { .. } => self.warn_once(c, format!("{} is not supported; it never becomes true", v.element_name())),
+        }
+    }
+
+    /// Warn once per condition and evaluate to false.
+    pub(super) fn warn_once(&mut self, c: &mut ConditionRt<'a>, msg: String) -> bool {
+        if !c.warned {
+            c.warned = true;
+            self.warnings.push(crate::Warning::at(&c.model.origin, format!("condition `{}`: {msg}", c.model.name)));
+        }
+        false
+    }
+}
+
+fn state_matches(want: Want, st: State, tr: Option<Transition>) -> bool {
+    match want {
+        Want::StandbyState => st == State::Standby,
+        Want::RunningState => st == State::Running,
+        Want::CompleteState => st == State::Complete,
+        Want::StartTransition => tr == Some(Transition::Start),
+        Want::EndTransition => tr == Some(Transition::End),
+        Want::StopTransition => tr == Some(Transition::Stop),
+        Want::SkipTransition => tr == Some(Transition::Skip),
+    }
+}

@@ -1,0 +1,169 @@
+//! Distances between entities (and from an entity to a point) in the coordinate systems of
+//! the standard: entity (the first entity's heading), road and lane (s and t along the road),
+//! world; longitudinal, lateral or euclidean; between reference points or bounding boxes
+//! (freespace). Longitudinal and lateral results are signed: positive ahead / to the left.
+
+use crate::entities::Entity;
+use crate::roads::lane_geometry::lane_center_t;
+use opendrive::RoadNetwork;
+use openscenario::{CoordinateSystem, RelativeDistanceType};
+
+/// The four corners of an entity's bounding box in world coordinates.
+pub fn corners(e: &Entity) -> [(f64, f64); 4] {
+    let (s, c) = e.h.sin_cos();
+    let (cx, cy) = e.box_center();
+    let (hl, hw) = (0.5 * e.bbox[3], 0.5 * e.bbox[4]);
+    let mut out = [(0.0, 0.0); 4];
+    for (i, (a, b)) in [(hl, hw), (hl, -hw), (-hl, -hw), (-hl, hw)].into_iter().enumerate() {
+        out[i] = (cx + a * c - b * s, cy + a * s + b * c);
+    }
+    out
+}
+
+/// Signed gap between the projections of two point sets on axis (ux, uy), measured from `a` to `b`.
+fn interval_gap(a: &[(f64, f64)], b: &[(f64, f64)], ux: f64, uy: f64) -> f64 {
+    let proj = |p: &[(f64, f64)]| {
+        p.iter().fold((f64::MAX, f64::MIN), |(lo, hi), &(x, y)| {
+            let d = x * ux + y * uy;
+            (lo.min(d), hi.max(d))
+        })
+    };
+    let (a0, a1) = proj(a);
+    let (b0, b1) = proj(b);
+    if b0 > a1 {
+        b0 - a1
+    } else if a0 > b1 {
+        -(a0 - b1)
+    } else {
+        0.0
+    }
+}
+
+fn seg_point_dist(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let l2 = dx * dx + dy * dy;
+    let u = if l2 > 0.0 { (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / l2).clamp(0.0, 1.0) } else { 0.0 };
+    (p.0 - a.0 - u * dx).hypot(p.1 - a.1 - u * dy)
+}
+
+/// Whether two convex quadrilaterals overlap (separating axis test).
+pub fn boxes_overlap(a: &[(f64, f64); 4], b: &[(f64, f64); 4]) -> bool {
+    for poly in [a, b] {
+        for i in 0..4 {
+            let (p, q) = (poly[i], poly[(i + 1) % 4]);
+            let (nx, ny) = (-(q.1 - p.1), q.0 - p.0);
+            if interval_gap(a, b, nx, ny) != 0.0 {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+/// Shortest distance between two boxes (0 when they overlap).
+pub fn box_distance(a: &[(f64, f64); 4], b: &[(f64, f64); 4]) -> f64 {
+    if boxes_overlap(a, b) {
+        return 0.0;
+    }
+    let mut d = f64::MAX;
+    for i in 0..4 {
+        for j in 0..4 {
+            d = d.min(seg_point_dist(a[i], b[j], b[(j + 1) % 4]));
+            d = d.min(seg_point_dist(b[j], a[i], a[(i + 1) % 4]));
+        }
+    }
+    d
+}
+
+fn road_t(net: &RoadNetwork, e: &Entity) -> Option<(usize, f64, f64, f64)> {
+    let lp = e.lane?;
+    let road = net.roads.get(lp.road)?;
+    Some((lp.road, lp.s, lane_center_t(road, lp.lane_id, lp.s)? + lp.offset, lp.dir))
+}
+
+/// Distance from entity `a` to entity `b`.
+pub fn between(net: Option<&RoadNetwork>, a: &Entity, b: &Entity, cs: CoordinateSystem, kind: RelativeDistanceType, freespace: bool) -> f64 {
+    if matches!(cs, CoordinateSystem::Road | CoordinateSystem::Lane) {
+        if let (Some(net), Some(ra), Some(rb)) = (net, net.and_then(|n| road_t(n, a)), net.and_then(|n| road_t(n, b))) {
+            let _ = net;
+            if ra.0 == rb.0 {
+                let ds = (rb.1 - ra.1) * ra.3;
+                let dt = (rb.2 - ra.2) * ra.3;
+                return match kind {
+                    RelativeDistanceType::Longitudinal => {
+                        if freespace {
+                            shrink(ds, a.bbox[3] * 0.5 + a.bbox[0] * ds.signum(), b.bbox[3] * 0.5 - b.bbox[0] * ds.signum())
+                        } else {
+                            ds
+                        }
+                    }
+                    RelativeDistanceType::Lateral => {
+                        if freespace {
+                            shrink(dt, a.bbox[4] * 0.5, b.bbox[4] * 0.5)
+                        } else {
+                            dt
+                        }
+                    }
+                    RelativeDistanceType::EuclidianDistance => {
+                        if freespace {
+                            box_distance(&corners(a), &corners(b))
+                        } else {
+                            ds.hypot(dt)
+                        }
+                    }
+                };
+            }
+        }
+    }
+    let (ux, uy) = (a.h.cos(), a.h.sin());
+    match kind {
+        RelativeDistanceType::Longitudinal => {
+            if freespace {
+                interval_gap(&corners(a), &corners(b), ux, uy)
+            } else {
+                (b.x - a.x) * ux + (b.y - a.y) * uy
+            }
+        }
+        RelativeDistanceType::Lateral => {
+            if freespace {
+                interval_gap(&corners(a), &corners(b), -uy, ux)
+            } else {
+                -(b.x - a.x) * uy + (b.y - a.y) * ux
+            }
+        }
+        RelativeDistanceType::EuclidianDistance => {
+            if freespace {
+                box_distance(&corners(a), &corners(b))
+            } else {
+                (b.x - a.x).hypot(b.y - a.y)
+            }
+        }
+    }
+}
+
+/// A signed distance reduced by extents on both sides, not past zero.
+fn shrink(d: f64, ext_a: f64, ext_b: f64) -> f64 {
+    let m = d.abs() - ext_a.max(0.0) - ext_b.max(0.0);
+    if m <= 0.0 {
+        0.0
+    } else {
+        m * d.signum()
+    }
+}
+
+/// Distance from entity `a` to the point (x, y).
+pub fn to_point(net: Option<&RoadNetwork>, a: &Entity, x: f64, y: f64, cs: CoordinateSystem, kind: RelativeDistanceType, freespace: bool) -> f64 {
+    let mut p = a.clone();
+    p.x = x;
+    p.y = y;
+    p.bbox = [0.0; 6];
+    if matches!(cs, CoordinateSystem::Road | CoordinateSystem::Lane) {
+        if let Some(n) = net {
+            let hint = a.lane.map(|l| l.road);
+            if let Some(lp) = n.world_to_lane(x, y, hint) {
+                p.lane = Some(crate::roads::LanePos { road: lp.road, lane_id: lp.lane_id, s: lp.s, offset: lp.offset, dir: 1.0 });
+            }
+        }
+    }
+    between(net, a, &p, cs, kind, freespace)
+}

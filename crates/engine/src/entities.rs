@@ -1,0 +1,181 @@
+//! The engine's entities: each scenario entity's dimensions and performance, and its state
+//! (pose, speed, attachment to the road network, timers for the state conditions).
+
+use crate::roads::lane_position::LanePos;
+use crate::roads::road_follow::wrap;
+use opendrive::RoadNetwork;
+use openscenario::{EntityObject, Scenario};
+
+/// What kind of object an entity is (for CollisionCondition by type).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum EntityKind {
+    Vehicle,
+    Pedestrian,
+    Misc,
+    External,
+}
+
+/// One entity during a run.
+#[derive(Debug, Clone)]
+pub struct Entity {
+    pub name: String,
+    pub kind: EntityKind,
+    /// Bounding box: centre (x, y, z) relative to the reference point, length, width, height.
+    pub bbox: [f64; 6],
+    pub max_speed: f64,
+    pub max_acc: f64,
+    pub max_dec: f64,
+    pub x: f64,
+    pub y: f64,
+    pub z: f64,
+    pub h: f64,
+    pub speed: f64,
+    pub accel: f64,
+    pub yaw_rate: f64,
+    /// World velocity of the last step (for relative speeds).
+    pub vel: (f64, f64),
+    /// Nearest lane (also when off the road), `None` without a road network.
+    pub lane: Option<LanePos>,
+    /// Whether the reference point lies on a lane.
+    pub on_road: bool,
+    /// Heading relative to the driving direction it faces (lane changes tilt it).
+    pub yaw_offset: f64,
+    pub visible: bool,
+    pub odometer: f64,
+    /// Set when an action moved the entity along the road this step (the default controller
+    /// then leaves it alone).
+    pub moved_by_action: bool,
+    /// The last move ended at a road end with no continuation (position status).
+    pub at_road_end: bool,
+    /// The EndOfRoad state conditions see (updated from `at_road_end` after each step).
+    pub end_of_road: bool,
+    pub end_of_road_since: f64,
+    pub offroad_since: Option<f64>,
+    pub standstill_since: Option<f64>,
+    /// A controller was activated on it (recorded; behaviour is part 2).
+    pub controller_active: bool,
+    /// The entity exists (AddEntity/DeleteEntity, part 2, toggle this).
+    pub active: bool,
+}
+
+impl Entity {
+    pub fn from_scenario(scenario: &Scenario) -> Vec<Entity> {
+        scenario
+            .entities
+            .iter()
+            .map(|e| {
+                let (kind, perf) = match &e.object {
+                    EntityObject::Vehicle(v) => (EntityKind::Vehicle, Some(v.performance)),
+                    EntityObject::Pedestrian(_) => (EntityKind::Pedestrian, None),
+                    EntityObject::MiscObject(_) => (EntityKind::Misc, None),
+                    EntityObject::External { .. } => (EntityKind::External, None),
+                };
+                let bbox = e
+                    .object
+                    .bounding_box()
+                    .map_or([0.0; 6], |b| [b.center.x, b.center.y, b.center.z, b.length, b.width, b.height]);
+                let big = 1e10;
+                Entity {
+                    name: e.name.clone(),
+                    kind,
+                    bbox,
+                    max_speed: perf.map_or(big, |p| p.max_speed),
+                    max_acc: perf.map_or(big, |p| p.max_acceleration),
+                    max_dec: perf.map_or(big, |p| p.max_deceleration),
+                    x: 0.0,
+                    y: 0.0,
+                    z: 0.0,
+                    h: 0.0,
+                    speed: 0.0,
+                    accel: 0.0,
+                    yaw_rate: 0.0,
+                    vel: (0.0, 0.0),
+                    lane: None,
+                    on_road: false,
+                    yaw_offset: 0.0,
+                    visible: true,
+                    odometer: 0.0,
+                    moved_by_action: false,
+                    at_road_end: false,
+                    end_of_road: false,
+                    end_of_road_since: 0.0,
+                    offroad_since: None,
+                    standstill_since: None,
+                    controller_active: false,
+                    active: true,
+                }
+            })
+            .collect()
+    }
+
+    /// Place the entity on a lane position, heading along the direction it faces plus `yaw_offset`.
+    pub fn set_lane_pos(&mut self, net: &RoadNetwork, lp: LanePos) {
+        self.lane = Some(lp);
+        if let Some(p) = lp.pose(net) {
+            self.x = p.x;
+            self.y = p.y;
+            self.z = p.z;
+            self.h = wrap_2pi(lp.facing_heading(&p) + self.yaw_offset);
+            self.on_road = self.lane_contains(net, &lp, p.t);
+        }
+    }
+
+    /// Place the entity at a world pose; attach it to the nearest lane (`hint`: road preferred).
+    pub fn set_world(&mut self, net: Option<&RoadNetwork>, x: f64, y: f64, z: Option<f64>, h: f64) {
+        self.x = x;
+        self.y = y;
+        self.h = wrap_2pi(h);
+        let Some(net) = net else {
+            self.z = z.unwrap_or(0.0);
+            self.lane = None;
+            self.on_road = false;
+            return;
+        };
+        let hint = self.lane.map(|l| l.road);
+        match net.world_to_lane(x, y, hint) {
+            Some(lp) => {
+                let rel = wrap(h - lp.heading);
+                let dir = if rel.abs() <= std::f64::consts::FRAC_PI_2 + 1e-9 { 1.0 } else { -1.0 };
+                let l = LanePos { road: lp.road, lane_id: lp.lane_id, s: lp.s, offset: lp.offset, dir };
+                self.lane = Some(l);
+                self.on_road = lp.is_on_road();
+                self.yaw_offset = wrap(h - if dir < 0.0 { lp.heading + std::f64::consts::PI } else { lp.heading });
+                self.z = z.unwrap_or_else(|| net.roads.get(lp.road).map_or(0.0, |r| r.elevation_at(lp.s)));
+            }
+            None => {
+                self.lane = None;
+                self.on_road = false;
+                self.z = z.unwrap_or(0.0);
+            }
+        }
+    }
+
+    fn lane_contains(&self, net: &RoadNetwork, lp: &LanePos, t: f64) -> bool {
+        let Some(road) = net.roads.get(lp.road) else { return false };
+        let (r, l) = crate::roads::lane_geometry::road_extent(road, lp.s);
+        t >= r - 1e-9 && t <= l + 1e-9
+    }
+
+    /// Bounding-box centre in world coordinates.
+    pub fn box_center(&self) -> (f64, f64) {
+        let (s, c) = self.h.sin_cos();
+        (self.x + self.bbox[0] * c - self.bbox[1] * s, self.y + self.bbox[0] * s + self.bbox[1] * c)
+    }
+}
+
+/// Angle in [0, 2π) as esmini reports headings.
+pub fn wrap_2pi(a: f64) -> f64 {
+    let two_pi = 2.0 * std::f64::consts::PI;
+    let x = a % two_pi;
+    if x < 0.0 {
+        x + two_pi
+    } else {
+        x
+    }
+}
+
+/// Each entity's bounding box `(cx, cy, cz, length, width, height)`, in the order of the
+/// trace's entities (the argument [`crate::Trace::to_csv`] takes).
+pub fn bounding_boxes(scenario: &Scenario) -> Vec<[f64; 6]> {
+    Entity::from_scenario(scenario).iter().map(|e| e.bbox).collect()
+}

@@ -1,0 +1,82 @@
+//! The default controller and the bookkeeping after each move: an entity no action moved keeps
+//! its lane and lateral offset and drives on along the road network at its speed (straight
+//! ahead when there is no road); then speed-derived quantities, odometer and the timers of the
+//! stand-still, off-road and end-of-road conditions are updated.
+
+use crate::dynamics::SMALL;
+use crate::roads::road_follow::wrap;
+use crate::roads::{move_along_s, MoveStatus};
+use crate::sim::Sim;
+
+/// Below this speed an entity stands still (esmini's threshold), m/s.
+const STAND_STILL: f64 = 1e-3;
+
+/// The state before a step, to derive rates from.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Before {
+    pub x: f64,
+    pub y: f64,
+    pub h: f64,
+    pub speed: f64,
+}
+
+impl<'a> Sim<'a> {
+    /// Move every entity no action moved this step by speed · dt.
+    pub fn default_controller(&mut self, dt: f64) {
+        let net = self.net;
+        for en in &mut self.entities {
+            if !en.active || en.moved_by_action || en.speed.abs() <= SMALL {
+                continue;
+            }
+            match (net, en.lane) {
+                (Some(net), Some(mut lp)) => {
+                    let status = move_along_s(net, &mut lp, en.speed * dt);
+                    en.set_lane_pos(net, lp);
+                    if status == MoveStatus::EndOfRoad {
+                        // Stuck at the end since the previous step: esmini stops the entity.
+                        if en.at_road_end {
+                            en.speed = 0.0;
+                        }
+                        en.at_road_end = true;
+                    } else {
+                        en.at_road_end = false;
+                    }
+                }
+                _ => {
+                    en.x += en.speed * dt * en.h.cos();
+                    en.y += en.speed * dt * en.h.sin();
+                }
+            }
+        }
+    }
+
+    /// Update derived quantities after the moves of a step of length `dt`.
+    pub fn after_move(&mut self, before: &[Before], dt: f64) {
+        let time = self.time;
+        for (en, b) in self.entities.iter_mut().zip(before) {
+            let (dx, dy) = (en.x - b.x, en.y - b.y);
+            en.odometer += (dx * dx + dy * dy).sqrt();
+            if dt > SMALL {
+                en.vel = (dx / dt, dy / dt);
+                en.accel = (en.speed - b.speed) / dt;
+                en.yaw_rate = wrap(en.h - b.h) / dt;
+            }
+            if en.at_road_end && !en.end_of_road {
+                en.end_of_road = true;
+                en.end_of_road_since = time;
+            } else if !en.at_road_end {
+                en.end_of_road = false;
+            }
+            if en.speed.abs() < STAND_STILL {
+                en.standstill_since.get_or_insert(time);
+            } else {
+                en.standstill_since = None;
+            }
+            if en.on_road || en.lane.is_none() && self.net.is_none() {
+                en.offroad_since = None;
+            } else {
+                en.offroad_since.get_or_insert(time);
+            }
+        }
+    }
+}

@@ -1,0 +1,162 @@
+//! Resolving an OpenSCENARIO position to a world pose and, where it names one, a lane position.
+//!
+//! Headings as esmini places entities: a lane or road position without orientation faces the
+//! lane's driving direction; a relative orientation turns from there; an absolute one is the
+//! world heading. Relative object/world positions take the reference entity's heading.
+
+use crate::entities::Entity;
+use crate::roads::lane_geometry::{lane_borders, lane_center_t};
+use crate::roads::lane_position::LanePos;
+use crate::roads::road_follow::wrap;
+use opendrive::{drives_along_s, RoadNetwork};
+use openscenario::{Orientation, Position, ReferenceContext};
+use std::f64::consts::PI;
+
+/// Where a position puts an entity.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Placement {
+    pub x: f64,
+    pub y: f64,
+    pub z: Option<f64>,
+    pub h: f64,
+    /// The exact lane position when the position was given in road terms.
+    pub lane: Option<LanePos>,
+}
+
+/// Why a position could not be resolved.
+pub type PositionError = String;
+
+/// Resolve `pos`; `entities` gives the reference entities of relative positions.
+pub fn resolve(pos: &Position, net: Option<&RoadNetwork>, entities: &[Entity]) -> Result<Placement, PositionError> {
+    let find = |name: &str| entities.iter().find(|e| e.name == name).ok_or_else(|| format!("unknown entity `{name}`"));
+    match pos {
+        Position::World { x, y, z, h, .. } => Ok(Placement { x: *x, y: *y, z: *z, h: h.unwrap_or(0.0), lane: None }),
+        Position::RelativeWorld { entity, dx, dy, dz, orientation } => {
+            let e = find(entity)?;
+            let h = orient(e.h, orientation.as_ref());
+            Ok(Placement { x: e.x + dx, y: e.y + dy, z: dz.map(|d| e.z + d), h, lane: None })
+        }
+        Position::RelativeObject { entity, dx, dy, dz, orientation } => {
+            let e = find(entity)?;
+            let (s, c) = e.h.sin_cos();
+            let h = orient(e.h, orientation.as_ref());
+            Ok(Placement { x: e.x + dx * c - dy * s, y: e.y + dx * s + dy * c, z: dz.map(|d| e.z + d), h, lane: None })
+        }
+        Position::Lane { road_id, lane_id, s, offset, orientation } => {
+            let net = net.ok_or("a LanePosition needs a road network")?;
+            let road = net.road_index(road_id).ok_or_else(|| format!("unknown road `{road_id}`"))?;
+            lane_placement(net, road, *lane_id, *s, *offset, orientation.as_ref())
+        }
+        Position::Road { road_id, s, t, orientation } => {
+            let net = net.ok_or("a RoadPosition needs a road network")?;
+            let road = net.road_index(road_id).ok_or_else(|| format!("unknown road `{road_id}`"))?;
+            road_placement(net, road, *s, *t, orientation.as_ref())
+        }
+        Position::RelativeRoad { entity, ds, dt, orientation } => {
+            let net = net.ok_or("a RelativeRoadPosition needs a road network")?;
+            let e = find(entity)?;
+            let lp = e.lane.ok_or_else(|| format!("entity `{entity}` is not on a road"))?;
+            let road = net.roads.get(lp.road).ok_or("reference road missing")?;
+            let t = lane_center_t(road, lp.lane_id, lp.s).unwrap_or(0.0) + lp.offset;
+            road_placement(net, lp.road, lp.s + ds, t + dt, orientation.as_ref())
+        }
+        Position::RelativeLane { entity, d_lane, ds, ds_lane, offset, orientation } => {
+            let net = net.ok_or("a RelativeLanePosition needs a road network")?;
+            let e = find(entity)?;
+            let lp = e.lane.ok_or_else(|| format!("entity `{entity}` is not on a road"))?;
+            let road = net.roads.get(lp.road).ok_or("reference road missing")?;
+            // dLane counts lanes to the left of the reference entity's driving direction.
+            let sign = if lp.dir < 0.0 { -1 } else { 1 };
+            let lane_id = step_lane(lp.lane_id, sign * d_lane);
+            let s = lp.s + ds.unwrap_or(0.0) + ds_lane.unwrap_or(0.0) * lp.dir;
+            let s = s.clamp(0.0, road.length);
+            // Without an orientation the entity faces the way the reference entity faces (esmini).
+            let r = net.roads.get(lp.road).ok_or("reference road missing")?;
+            if lane_borders(r, r.section_index_at(s), lane_id, s).is_none() {
+                return Err(format!("road `{}` has no lane {} at s = {:.3}", r.id, lane_id, s));
+            }
+            let along = if orientation.is_some() { drives_along_s(r.rule, lane_id) } else { lp.dir > 0.0 };
+            place(net, lp.road, lane_id, s, *offset, along, orientation.as_ref())
+        }
+        Position::Route { .. } => Err("RoutePosition is not supported yet".into()),
+        Position::Geo { .. } => Err("GeoPosition is not supported".into()),
+        Position::Trajectory { .. } => Err("TrajectoryPosition is not supported yet".into()),
+    }
+}
+
+/// Lane id `k` lanes from `lane` (positive: towards higher ids), skipping the centre lane 0.
+pub fn step_lane(lane: i32, k: i32) -> i32 {
+    let mut id = lane.saturating_add(k);
+    if lane != 0 && (id == 0 || id.signum() != lane.signum()) {
+        id += if k > 0 { 1 } else { -1 };
+    }
+    id
+}
+
+fn orient(base: f64, o: Option<&Orientation>) -> f64 {
+    match o {
+        Some(o) => match (o.reference, o.h) {
+            (Some(ReferenceContext::Absolute), Some(h)) => h,
+            (_, Some(h)) => base + h,
+            _ => base,
+        },
+        None => base,
+    }
+}
+
+/// Placement on lane `lane_id` of road `road` at `s` with `offset`.
+pub fn lane_placement(net: &RoadNetwork, road: usize, lane_id: i32, s: f64, offset: f64, o: Option<&Orientation>) -> Result<Placement, PositionError> {
+    let r = net.roads.get(road).ok_or("road missing")?;
+    let s = s.clamp(0.0, r.length);
+    if lane_borders(r, r.section_index_at(s), lane_id, s).is_none() {
+        return Err(format!("road `{}` has no lane {} at s = {:.3}", r.id, lane_id, s));
+    }
+    let along = drives_along_s(r.rule, lane_id);
+    place(net, road, lane_id, s, offset, along, o)
+}
+
+fn place(net: &RoadNetwork, road: usize, lane_id: i32, s: f64, offset: f64, along: bool, o: Option<&Orientation>) -> Result<Placement, PositionError> {
+    let mut lp = LanePos { road, lane_id, s, offset, dir: if along { 1.0 } else { -1.0 } };
+    let pose = lp.pose(net).ok_or("lane missing")?;
+    let facing = lp.facing_heading(&pose);
+    let h = match o {
+        Some(Orientation { reference: Some(ReferenceContext::Absolute), h: Some(h), .. }) => *h,
+        // A relative heading is taken from the road's reference direction, as esmini does.
+        Some(Orientation { h: Some(h), .. }) => pose.road_heading + h + if along { 0.0 } else { PI },
+        _ => facing,
+    };
+    // Facing the other way than the lane's direction makes the entity drive against s.
+    let rel = wrap(h - pose.road_heading);
+    lp.dir = if rel.abs() <= std::f64::consts::FRAC_PI_2 + 1e-9 { 1.0 } else { -1.0 };
+    Ok(Placement { x: pose.x, y: pose.y, z: Some(pose.z), h, lane: Some(lp) })
+}
+
+/// Placement at road coordinates (s, t): the lane containing t.
+pub fn road_placement(net: &RoadNetwork, road: usize, s: f64, t: f64, o: Option<&Orientation>) -> Result<Placement, PositionError> {
+    let r = net.roads.get(road).ok_or("road missing")?;
+    let s = s.clamp(0.0, r.length);
+    let section = r.section_index_at(s);
+    let mut found = None;
+    if let Some(sec) = r.lane_sections.get(section) {
+        for lane in sec.left.iter().chain(sec.right.iter()) {
+            if let Some((a, b)) = lane_borders(r, section, lane.id, s) {
+                let (lo, hi) = if a <= b { (a, b) } else { (b, a) };
+                if t >= lo && t <= hi && hi > lo {
+                    found = Some((lane.id, 0.5 * (a + b)));
+                    break;
+                }
+            }
+        }
+        if found.is_none() {
+            // Outside the road: the outermost lane on the side of t.
+            let side = if t >= r.lane_offset_at(s) { &sec.left } else { &sec.right };
+            let other = if t >= r.lane_offset_at(s) { &sec.right } else { &sec.left };
+            if let Some(l) = side.last().or(other.first()) {
+                found = lane_center_t(r, l.id, s).map(|c| (l.id, c));
+            }
+        }
+    }
+    let (lane_id, center) = found.unwrap_or((0, r.lane_offset_at(s)));
+    let along = drives_along_s(r.rule, lane_id);
+    place(net, road, lane_id, s, t - center, along, o)
+}

@@ -1,0 +1,9 @@
+//! The road network as the engine sees it: lane geometry without allocation, a position
+//! attached to a lane, and moving along the lanes through sections, roads and junctions.
+
+pub mod lane_geometry;
+pub mod lane_position;
+pub mod road_follow;
+
+pub use lane_position::LanePos;
+pub use road_follow::{move_along_s, MoveStatus};

@@ -1,0 +1,38 @@
+//! Comparison rules of conditions, with esmini's tolerance (strict comparisons need a margin
+//! of 1e-10, equality accepts it).
+
+use crate::dynamics::SMALL;
+use openscenario::Rule;
+
+pub fn compare(a: f64, b: f64, rule: Rule) -> bool {
+    match rule {
+        Rule::GreaterThan => a > b + SMALL,
+        Rule::GreaterOrEqual => a >= b - SMALL,
+        Rule::LessThan => a < b - SMALL,
+        Rule::LessOrEqual => a <= b + SMALL,
+        Rule::EqualTo => (a - b).abs() < SMALL || a == b,
+        Rule::NotEqualTo => !((a - b).abs() < SMALL || a == b),
+    }
+}
+
+/// Compare two values given as text: numerically when both parse, else as strings.
+pub fn compare_text(a: &str, b: &str, rule: Rule) -> bool {
+    let num = |s: &str| -> Option<f64> {
+        match s.trim() {
+            "true" => Some(1.0),
+            "false" => Some(0.0),
+            t => t.parse::<f64>().ok(),
+        }
+    };
+    if let (Some(x), Some(y)) = (num(a), num(b)) {
+        return compare(x, y, rule);
+    }
+    match rule {
+        Rule::GreaterThan => a > b,
+        Rule::GreaterOrEqual => a >= b,
+        Rule::LessThan => a < b,
+        Rule::LessOrEqual => a <= b,
+        Rule::EqualTo => a == b,
+        Rule::NotEqualTo => a != b,
+    }
+}

@@ -1,0 +1,134 @@
+//! The main loop. One frame, as esmini orders it: the storyboard is evaluated and its actions
+//! stepped at the current time t (triggers first, then Init actions, then story actions in
+//! document order); if it is still running, time advances to t + dt, the default controller
+//! moves every entity no action moved, and the state at t + dt is recorded. Frame 0 runs the
+//! Init actions and the first evaluation with dt = 0 and records the state at t = 0. The run
+//! ends when the storyboard's stop trigger fires (no row is recorded for that frame) or after
+//! the row at the maximum time.
+
+use crate::motion::Before;
+use crate::sim::Sim;
+use crate::storyboard::{State, Transition};
+use crate::trace::{EntityTrace, RoadPos, Sample, Trace};
+use crate::{Error, Settings, Warning};
+use opendrive::RoadNetwork;
+use openscenario::Scenario;
+
+/// What a run produced.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Run {
+    pub trace: Trace,
+    pub warnings: Vec<Warning>,
+}
+
+/// Run `scenario` on `roads` (None: no road network; road positions then fail with warnings).
+pub fn simulate(scenario: &Scenario, roads: Option<&RoadNetwork>, settings: &Settings) -> Result<Run, Error> {
+    settings.check()?;
+    let dt = settings.step;
+    let steps = (settings.max_time / dt + 1e-9).floor() as usize;
+    let mut sim = Sim::new(scenario, roads, dt);
+    let mut trace = Trace {
+        step: dt,
+        len: 0,
+        entities: sim.entities.iter().map(|e| EntityTrace { name: e.name.clone(), samples: Vec::with_capacity(steps + 1) }).collect(),
+        events: Vec::new(),
+    };
+    let mut before = vec![Before::default(); sim.entities.len()];
+    let root = 0;
+
+    // Frame 0: Init actions and the first storyboard evaluation, no time passes.
+    sim.time = 0.0;
+    for slot in init_order(&sim) {
+        sim.start_action(slot);
+    }
+    sim.set_state(root, Transition::Start, State::Running);
+    let stories = sim.nodes[root].children.clone();
+    for s in stories {
+        sim.start_element(s);
+    }
+    snapshot(&sim, &mut before);
+    storyboard_step(&mut sim, 0.0);
+    sim.after_move(&before, 0.0);
+    record(&sim, &mut trace);
+
+    for k in 1..=steps {
+        sim.time = (k - 1) as f64 * dt;
+        snapshot(&sim, &mut before);
+        for e in &mut sim.entities {
+            e.moved_by_action = false;
+        }
+        storyboard_step(&mut sim, dt);
+        if sim.nodes[root].state != State::Running {
+            break;
+        }
+        sim.time = k as f64 * dt;
+        sim.default_controller(dt);
+        sim.after_move(&before, dt);
+        record(&sim, &mut trace);
+    }
+    trace.events = std::mem::take(&mut sim.events);
+    Ok(Run { trace, warnings: sim.warnings })
+}
+
+/// Init actions in document order, except that a teleport relative to an entity that an Init
+/// teleport places later waits for that teleport (esmini places the reference first).
+fn init_order(sim: &Sim) -> Vec<usize> {
+    use openscenario::{ActionKind, PrivateAction};
+    let teleport_ref = |slot: usize| -> (Option<usize>, Option<usize>) {
+        let a = &sim.actions[slot];
+        match &a.model.kind {
+            ActionKind::Private(PrivateAction::Teleport(p)) => {
+                (a.actors.first().copied(), p.reference_entity().and_then(|n| sim.entity_index(n)))
+            }
+            _ => (None, None),
+        }
+    };
+    let mut pending: Vec<usize> = sim.init_actions.clone();
+    let mut order = Vec::with_capacity(pending.len());
+    while !pending.is_empty() {
+        let placed_later = |e: usize, pending: &[usize]| pending.iter().any(|&s| teleport_ref(s).0 == Some(e));
+        let pick = pending
+            .iter()
+            .position(|&s| match teleport_ref(s) {
+                (_, Some(r)) => !placed_later(r, &pending) || teleport_ref(s).0 == Some(r),
+                _ => true,
+            })
+            .unwrap_or(0);
+        order.push(pending.remove(pick));
+    }
+    order
+}
+
+fn storyboard_step(sim: &mut Sim, dt: f64) {
+    sim.dt = dt;
+    sim.eval_triggers(0);
+    for k in 0..sim.init_actions.len() {
+        let slot = sim.init_actions[k];
+        sim.step_action(slot);
+    }
+    sim.step_tree(0);
+}
+
+fn snapshot(sim: &Sim, before: &mut [Before]) {
+    for (b, e) in before.iter_mut().zip(&sim.entities) {
+        *b = Before { x: e.x, y: e.y, h: e.h, speed: e.speed };
+    }
+}
+
+fn record(sim: &Sim, trace: &mut Trace) {
+    for (et, e) in trace.entities.iter_mut().zip(&sim.entities) {
+        let sample = e.active.then(|| Sample {
+            x: e.x,
+            y: e.y,
+            z: e.z,
+            h: e.h,
+            speed: e.speed,
+            acceleration: e.accel,
+            yaw_rate: e.yaw_rate,
+            road: e.lane.map(|l| RoadPos { road: l.road as u32, lane_id: l.lane_id, lane_offset: l.offset, s: l.s }),
+            visible: e.visible,
+        });
+        et.samples.push(sample);
+    }
+    trace.len += 1;
+}

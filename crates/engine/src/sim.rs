@@ -1,0 +1,207 @@
+//! The state of one run: entities, the storyboard's nodes, triggers and actions, parameters,
+//! the event log and the warnings. Behaviour lives in `storyboard`, `conditions`, `actions`
+//! and `step`; this file only builds the state from the scenario.
+
+use crate::actions::ActionSlot;
+use crate::conditions::TriggerRt;
+use crate::entities::Entity;
+use crate::storyboard::{Kind, Node, State, Transition};
+use crate::values::Values;
+use crate::Warning;
+use crate::trace::StoryboardEvent;
+use opendrive::RoadNetwork;
+use openscenario::{Action, ActionKind, Scenario, Trigger};
+
+pub struct Sim<'a> {
+    pub scenario: &'a Scenario,
+    pub net: Option<&'a RoadNetwork>,
+    pub dt: f64,
+    /// Simulation time of the storyboard step in progress, s.
+    pub time: f64,
+    pub entities: Vec<Entity>,
+    pub nodes: Vec<Node>,
+    pub triggers: Vec<TriggerRt<'a>>,
+    pub actions: Vec<ActionSlot<'a>>,
+    /// Action slots of the Init section, in document order (global first, as esmini).
+    pub init_actions: Vec<usize>,
+    pub params: Values,
+    pub vars: Values,
+    pub events: Vec<StoryboardEvent>,
+    /// Every state change (node, new state, transition), read by StoryboardElementState conditions.
+    pub state_log: Vec<(usize, State, Transition)>,
+    pub warnings: Vec<Warning>,
+}
+
+impl<'a> Sim<'a> {
+    pub fn new(scenario: &'a Scenario, net: Option<&'a RoadNetwork>, dt: f64) -> Sim<'a> {
+        let mut sim = Sim {
+            scenario,
+            net,
+            dt,
+            time: 0.0,
+            entities: Entity::from_scenario(scenario),
+            nodes: Vec::new(),
+            triggers: Vec::new(),
+            actions: Vec::new(),
+            init_actions: Vec::new(),
+            params: Values::from_declarations(&scenario.parameters),
+            vars: Values::from_declarations(&scenario.variables),
+            events: Vec::new(),
+            state_log: Vec::new(),
+            warnings: Vec::new(),
+        };
+        sim.build();
+        sim
+    }
+
+    pub fn entity_index(&self, name: &str) -> Option<usize> {
+        self.entities.iter().position(|e| e.name == name)
+    }
+
+    fn push_node(&mut self, node: Node) -> usize {
+        let id = self.nodes.len();
+        if let Some(p) = node.parent {
+            if let Some(pn) = self.nodes.get_mut(p) {
+                pn.children.push(id);
+            }
+        }
+        self.nodes.push(node);
+        id
+    }
+
+    fn add_trigger(&mut self, t: Option<&'a Trigger>, start: bool) -> Option<usize> {
+        let t = t?;
+        // An empty start trigger behaves as none (esmini starts the element at once).
+        if start && t.groups.is_empty() {
+            return None;
+        }
+        let rt = TriggerRt::new(t, self);
+        self.triggers.push(rt);
+        Some(self.triggers.len() - 1)
+    }
+
+    fn add_action(&mut self, action: &'a Action, name: &str, parent: Option<usize>, actors: Vec<usize>) -> usize {
+        let node = self.push_node(Node::new(Kind::Action, name, parent));
+        let slot = ActionSlot::new(node, action, actors);
+        self.actions.push(slot);
+        let idx = self.actions.len() - 1;
+        if let Some(n) = self.nodes.get_mut(node) {
+            n.action = Some(idx);
+        }
+        idx
+    }
+
+    fn build(&mut self) {
+        let sc = self.scenario;
+        let sb = &sc.storyboard;
+        let root = self.push_node(Node::new(Kind::Storyboard, "storyBoard", None));
+        let stop = self.add_trigger(sb.stop_trigger.as_ref(), false);
+        self.nodes[root].stop_trigger = stop;
+        for a in &sb.init.global {
+            let name = format!("Init {}", a.kind.element_name());
+            let slot = self.add_action(a, &name, None, Vec::new());
+            self.init_actions.push(slot);
+        }
+        for p in &sb.init.private {
+            let actors = match self.entity_index(&p.entity) {
+                Some(i) => vec![i],
+                None => {
+                    self.warnings.push(Warning::at(&sc.entities.first().map(|e| e.origin.clone()).unwrap_or_else(|| sb_origin(sc)), format!("Init actions for unknown entity `{}` ignored", p.entity)));
+                    continue;
+                }
+            };
+            for a in &p.actions {
+                let name = format!("Init {} {}", p.entity, a.kind.element_name());
+                let slot = self.add_action(a, &name, None, actors.clone());
+                self.init_actions.push(slot);
+            }
+        }
+        for story in &sb.stories {
+            let sn = self.push_node(Node::new(Kind::Story, &story.name, Some(root)));
+            for act in &story.acts {
+                let an = self.push_node(Node::new(Kind::Act, &act.name, Some(sn)));
+                let st = self.add_trigger(act.start_trigger.as_ref(), true);
+                let sp = self.add_trigger(act.stop_trigger.as_ref(), false);
+                self.nodes[an].start_trigger = st;
+                self.nodes[an].stop_trigger = sp;
+                for mg in &act.maneuver_groups {
+                    let mut node = Node::new(Kind::ManeuverGroup, &mg.name, Some(an));
+                    node.max_executions = mg.maximum_execution_count.max(1);
+                    let gn = self.push_node(node);
+                    let mut actors = Vec::new();
+                    for a in &mg.actors {
+                        match self.entity_index(a) {
+                            Some(i) => actors.push(i),
+                            None => {
+                                let expanded = self.selection_members(a);
+                                if expanded.is_empty() {
+                                    self.warnings.push(Warning::at(&mg.origin, format!("actor `{a}` of maneuver group `{}` is not an entity; ignored", mg.name)));
+                                }
+                                actors.extend(expanded);
+                            }
+                        }
+                    }
+                    if mg.select_triggering_entities {
+                        self.warnings.push(Warning::at(&mg.origin, format!("selectTriggeringEntities of maneuver group `{}` is not supported; the listed actors act", mg.name)));
+                    }
+                    for m in &mg.maneuvers {
+                        let mn = self.push_node(Node::new(Kind::Maneuver, &m.name, Some(gn)));
+                        for ev in &m.events {
+                            let mut node = Node::new(Kind::Event, &ev.name, Some(mn));
+                            node.max_executions = ev.maximum_execution_count.max(1);
+                            node.priority = ev.priority;
+                            let en = self.push_node(node);
+                            let st = self.add_trigger(ev.start_trigger.as_ref(), true);
+                            self.nodes[en].start_trigger = st;
+                            for a in &ev.actions {
+                                let private = matches!(a.kind, ActionKind::Private(_));
+                                let actors = if private { actors.clone() } else { Vec::new() };
+                                self.add_action(a, &a.name, Some(en), actors);
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        // Resolve element references of StoryboardElementState conditions now that every node exists.
+        let nodes = &self.nodes;
+        for t in &mut self.triggers {
+            t.resolve_elements(nodes);
+        }
+    }
+
+    fn selection_members(&self, name: &str) -> Vec<usize> {
+        let mut out = Vec::new();
+        if let Some(sel) = self.scenario.entity_selections.iter().find(|s| s.name == name) {
+            for m in &sel.members {
+                match m {
+                    openscenario::SelectionMember::Entity(n) => out.extend(self.entity_index(n)),
+                    openscenario::SelectionMember::ByType(_) => {}
+                }
+            }
+        }
+        out
+    }
+
+    /// Record a state change of node `id` (event log + condition log).
+    pub fn set_state(&mut self, id: usize, transition: Transition, to: State) {
+        let Some(n) = self.nodes.get_mut(id) else { return };
+        let from = n.state;
+        if from == to && transition != Transition::Start {
+            return;
+        }
+        n.state = to;
+        self.events.push(StoryboardEvent {
+            time: self.time,
+            element: n.name.clone(),
+            from: from.name().to_string(),
+            transition: transition.name().to_string(),
+            to: to.name().to_string(),
+        });
+        self.state_log.push((id, to, transition));
+    }
+}
+
+fn sb_origin(sc: &Scenario) -> openscenario::Origin {
+    openscenario::Origin { file: std::sync::Arc::from(sc.path.as_path()), line: 0, col: 0 }
+}

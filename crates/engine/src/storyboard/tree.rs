@@ -1,0 +1,92 @@
+//! The storyboard tree flattened into a vector of nodes (parents before children, in document
+//! order), each with its state, triggers and execution counts.
+
+use openscenario::Priority;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Kind {
+    Storyboard,
+    Story,
+    Act,
+    ManeuverGroup,
+    Maneuver,
+    Event,
+    Action,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum State {
+    Init,
+    Standby,
+    Running,
+    Complete,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Transition {
+    InitToStandby,
+    Start,
+    End,
+    Stop,
+    Skip,
+}
+
+impl State {
+    pub fn name(self) -> &'static str {
+        match self {
+            State::Init => "init",
+            State::Standby => "standby",
+            State::Running => "running",
+            State::Complete => "complete",
+        }
+    }
+}
+
+impl Transition {
+    pub fn name(self) -> &'static str {
+        match self {
+            Transition::InitToStandby => "initToStandby",
+            Transition::Start => "start",
+            Transition::End => "end",
+            Transition::Stop => "stop",
+            Transition::Skip => "skip",
+        }
+    }
+}
+
+/// One storyboard element.
+#[derive(Debug, Clone)]
+pub struct Node {
+    pub kind: Kind,
+    pub name: String,
+    pub parent: Option<usize>,
+    pub children: Vec<usize>,
+    pub state: State,
+    /// Index into the run's triggers; `None`: no trigger (a start then happens at once).
+    pub start_trigger: Option<usize>,
+    pub stop_trigger: Option<usize>,
+    /// `maximumExecutionCount` of maneuver groups and events (others: 1).
+    pub max_executions: u32,
+    pub executions: u32,
+    pub priority: Priority,
+    /// Index into the run's action slots (action nodes only).
+    pub action: Option<usize>,
+}
+
+impl Node {
+    pub fn new(kind: Kind, name: &str, parent: Option<usize>) -> Node {
+        Node {
+            kind,
+            name: name.to_string(),
+            parent,
+            children: Vec::new(),
+            state: State::Init,
+            start_trigger: None,
+            stop_trigger: None,
+            max_executions: 1,
+            executions: 0,
+            priority: Priority::Override,
+            action: None,
+        }
+    }
+}

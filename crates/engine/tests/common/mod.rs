@@ -1,0 +1,113 @@
+//! Shared helpers for the engine's scenario tests: a scenario on the straight fixture road
+//! (1000 m along +x; lanes 1, -1, -2 each 3.5 m wide, so lane -1's centre is y = -1.75) with
+//! two cars, Ego and Target (bounding box centre 1.5 m ahead of the reference point, 4.5 m x 2 m).
+
+#![allow(dead_code)]
+
+use engine::{Run, Settings};
+use std::path::Path;
+
+pub fn fixtures() -> std::path::PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures")
+}
+
+fn car(name: &str) -> String {
+    format!(
+        r#"<ScenarioObject name="{name}"><Vehicle name="car" vehicleCategory="car">
+  <ParameterDeclarations/>
+  <Performance maxSpeed="70" maxAcceleration="200" maxDeceleration="200"/>
+  <BoundingBox><Center x="1.5" y="0" z="0.9"/><Dimensions width="2.0" length="4.5" height="1.8"/></BoundingBox>
+  <Axles><FrontAxle maxSteering="0.5" wheelDiameter="0.6" trackWidth="1.8" positionX="3.1" positionZ="0.3"/>
+  <RearAxle maxSteering="0" wheelDiameter="0.6" trackWidth="1.8" positionX="0" positionZ="0.3"/></Axles>
+  <Properties/></Vehicle></ScenarioObject>"#
+    )
+}
+
+/// A scenario: `init` inside <Actions>, `stories` after </Init>, `stop` the storyboard StopTrigger content.
+pub fn xosc(init: &str, stories: &str, stop: &str) -> String {
+    format!(
+        r#"<?xml version="1.0" encoding="UTF-8"?>
+<OpenSCENARIO>
+<FileHeader revMajor="1" revMinor="1" date="2024-01-01T00:00:00" description="test" author="osc2cr"/>
+<ParameterDeclarations><ParameterDeclaration name="X" parameterType="double" value="0"/></ParameterDeclarations>
+<CatalogLocations/>
+<RoadNetwork><LogicFile filepath="straight.xodr"/></RoadNetwork>
+<Entities>{}{}</Entities>
+<Storyboard>
+<Init><Actions>{init}</Actions></Init>
+{stories}
+<StopTrigger>{stop}</StopTrigger>
+</Storyboard>
+</OpenSCENARIO>"#,
+        car("Ego"),
+        car("Target")
+    )
+}
+
+pub fn lane_pos(s: f64, lane: i32) -> String {
+    format!(r#"<Position><LanePosition roadId="1" laneId="{lane}" offset="0" s="{s}"/></Position>"#)
+}
+
+pub fn teleport(entity: &str, s: f64, lane: i32) -> String {
+    format!(r#"<Private entityRef="{entity}"><PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction></Private>"#, lane_pos(s, lane))
+}
+
+pub fn speed_action(shape: &str, dim: &str, value: f64, target: f64) -> String {
+    format!(
+        r#"<PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="{shape}" dynamicsDimension="{dim}" value="{value}"/><SpeedActionTarget><AbsoluteTargetSpeed value="{target}"/></SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction>"#
+    )
+}
+
+pub fn init_speed(entity: &str, shape: &str, dim: &str, value: f64, target: f64) -> String {
+    format!(r#"<Private entityRef="{entity}">{}</Private>"#, speed_action(shape, dim, value, target))
+}
+
+pub fn sim_time(value: f64, rule: &str, edge: &str, delay: f64) -> String {
+    format!(
+        r#"<Condition name="t" delay="{delay}" conditionEdge="{edge}"><ByValueCondition><SimulationTimeCondition value="{value}" rule="{rule}"/></ByValueCondition></Condition>"#
+    )
+}
+
+pub fn trigger(conditions: &str) -> String {
+    format!("<StartTrigger><ConditionGroup>{conditions}</ConditionGroup></StartTrigger>")
+}
+
+/// A story with one act (started at once) whose maneuver group has `actor` and the given events.
+pub fn story(actor: &str, events: &str) -> String {
+    format!(
+        r#"<Story name="S"><Act name="A"><ManeuverGroup maximumExecutionCount="1" name="G"><Actors selectTriggeringEntities="false"><EntityRef entityRef="{actor}"/></Actors><Maneuver name="M">{events}</Maneuver></ManeuverGroup>{}</Act></Story>"#,
+        trigger(&sim_time(0.0, "greaterOrEqual", "none", 0.0))
+    )
+}
+
+pub fn event(name: &str, priority: &str, action: &str, start: &str) -> String {
+    format!(r#"<Event name="{name}" priority="{priority}"><Action name="{name}Action">{action}</Action>{start}</Event>"#)
+}
+
+pub fn run_with(text: &str, settings: &Settings) -> Run {
+    let path = fixtures().join("test.xosc");
+    let loaded = openscenario::load_str(&path, text, &Default::default()).expect("test scenario loads");
+    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
+    let net = opendrive::load(fixtures().join("straight.xodr")).expect("fixture road loads").network;
+    engine::simulate(&scenario, Some(&net), settings).expect("simulate")
+}
+
+pub fn run(text: &str) -> Run {
+    run_with(text, &Settings { step: 0.01, max_time: 20.0 })
+}
+
+/// Sample of `entity` at time `t`.
+pub fn at(run: &Run, entity: &str, t: f64) -> engine::Sample {
+    let e = run.trace.entities.iter().find(|e| e.name == entity).expect("entity in trace");
+    let k = (t / run.trace.step).round() as usize;
+    e.samples.get(k).copied().flatten().expect("sample exists")
+}
+
+/// Time of the first transition `transition` of element `element`.
+pub fn event_time(run: &Run, element: &str, transition: &str) -> Option<f64> {
+    run.trace.events.iter().find(|e| e.element == element && e.transition == transition).map(|e| e.time)
+}
+
+pub fn close(a: f64, b: f64, tol: f64) -> bool {
+    (a - b).abs() <= tol
+}

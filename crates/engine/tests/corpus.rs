@@ -1,0 +1,70 @@
+//! Every corpus scenario runs without panic, and the traces of those with an esmini reference
+//! compare to it with `conformance.py` above a floor (set a little below the measured rate).
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// Fraction of compared scenarios that must be exact or close (measured: see the crate notes).
+const FLOOR: f64 = 0.40;
+
+fn shared() -> Option<PathBuf> {
+    let p = std::env::var_os("OSC2CR_SHARED").map(PathBuf::from).unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared"));
+    if p.join("corpus").exists() {
+        Some(p)
+    } else if std::env::var_os("CI").is_some() {
+        panic!("corpus not found at {} (set OSC2CR_SHARED)", p.display());
+    } else {
+        eprintln!("corpus not found at {}: test skipped", p.display());
+        None
+    }
+}
+
+fn xosc_files(dir: &Path, out: &mut Vec<PathBuf>) {
+    let Ok(rd) = std::fs::read_dir(dir) else { return };
+    let mut entries: Vec<_> = rd.flatten().map(|e| e.path()).collect();
+    entries.sort();
+    for p in entries {
+        if p.is_dir() {
+            xosc_files(&p, out);
+        } else if p.extension().is_some_and(|e| e == "xosc") {
+            out.push(p);
+        }
+    }
+}
+
+#[test]
+fn corpus_runs_and_conforms() {
+    let Some(shared) = shared() else { return };
+    let corpus = shared.join("corpus");
+    let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join("engine-corpus-traces");
+    let _ = std::fs::remove_dir_all(&out);
+    let mut files = Vec::new();
+    xosc_files(&corpus, &mut files);
+    let mut ran = 0;
+    for f in &files {
+        let Ok((scenario, _)) = openscenario::load_scenario(f, &Default::default()) else { continue };
+        let net = scenario.road_network.logic_file.as_ref().and_then(|p| opendrive::load(p).ok()).map(|l| l.network);
+        let run = engine::simulate(&scenario, net.as_ref(), &engine::Settings::default()).expect("default settings are valid");
+        ran += 1;
+        let rel = f.strip_prefix(&corpus).expect("under corpus").with_extension("csv");
+        let path = out.join(rel);
+        std::fs::create_dir_all(path.parent().expect("parent")).expect("mkdir");
+        std::fs::write(&path, run.trace.to_csv(&engine::bounding_boxes(&scenario))).expect("write trace");
+    }
+    assert!(ran > 50, "only {ran} corpus scenarios loaded");
+    let status = Command::new("python3")
+        .arg(shared.join("tools/conformance.py"))
+        .arg("--ref-dir")
+        .arg(shared.join("reference/esmini-3.6.0"))
+        .arg("--ours-dir")
+        .arg(&out)
+        .arg("--quiet")
+        .arg("--fail-under")
+        .arg(FLOOR.to_string())
+        .status();
+    match status {
+        Ok(s) => assert!(s.success(), "conformance below {FLOOR}"),
+        Err(e) if std::env::var_os("CI").is_none() => eprintln!("python3 not available ({e}): comparison skipped"),
+        Err(e) => panic!("python3: {e}"),
+    }
+}
