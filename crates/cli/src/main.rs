@@ -3,8 +3,10 @@
 //!
 //! Exit status: 0 success, 1 some files of a batch failed, 2 bad usage or bad input.
 
+mod convert_cmd;
 mod inspect;
 mod map_cmd;
+mod render_cmd;
 mod simulate;
 
 use clap::{Parser, Subcommand};
@@ -20,6 +22,9 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
+    /// Convert OpenSCENARIO scenarios (files, folders, parameter distributions) into
+    /// CommonRoad scenarios: lanelet network, obstacles, the ego's planning problem.
+    Convert(Box<convert_cmd::ConvertArgs>),
     /// Convert an OpenDRIVE road network (.xodr) into a CommonRoad lanelet network (.xml).
     Map(map_cmd::MapArgs),
     /// Load an OpenSCENARIO file and show what it resolves to: entities, storyboard,
@@ -27,6 +32,8 @@ enum Command {
     Inspect(inspect::InspectArgs),
     /// Run a scenario with the engine and write its trace as CSV (the format of conformance.py).
     Simulate(simulate::SimulateArgs),
+    /// Draw a scenario (.xml, or .xosc converted first) as PNG/SVG stills or an animated GIF.
+    Render(render_cmd::RenderArgs),
 }
 
 /// A failed command: the message for the user and the exit status.
@@ -45,9 +52,11 @@ impl Failure {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match &cli.command {
+        Command::Convert(args) => convert_cmd::run(args),
         Command::Map(args) => map_cmd::run(args),
         Command::Inspect(args) => inspect::run(args),
         Command::Simulate(args) => simulate::run(args),
+        Command::Render(args) => render_cmd::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

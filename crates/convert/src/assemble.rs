@@ -1,0 +1,128 @@
+//! Steps 3–5 of the paper's algorithm: the lanelet network and the simulated trace become one
+//! CommonRoad scenario with obstacles and the ego's planning problem, checked by
+//! `commonroad::Scenario::validate`.
+
+use std::collections::BTreeSet;
+
+use commonroad::{
+    Header, Lanelet, LaneletBounds, LaneletNetwork, LaneletType, PlanningProblemSet, Point,
+    Scenario, State, Tag,
+};
+use engine::Trace;
+use openscenario::Entity;
+
+use crate::ego::choose_ego;
+use crate::goal::planning_problem;
+use crate::obstacles::obstacles;
+use crate::options::ConvertOptions;
+use crate::tags::scenario_tags;
+use crate::tracks::{tracks, Placement, Track};
+
+/// A scenario ready to be written, and what the report says about it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Assembled {
+    pub scenario: Scenario,
+    pub problems: PlanningProblemSet,
+    /// The entity chosen as ego.
+    pub ego: String,
+    /// Dynamic, static and environment obstacles.
+    pub obstacles: usize,
+    /// Lanelets of the road network (0 when a placeholder stands in for a missing network).
+    pub lanelets: usize,
+    pub warnings: Vec<String>,
+}
+
+/// Builds the scenario from a trace. `network` is the converted road network (`None`: the
+/// scenario names none, or it could not be used).
+pub fn assemble(
+    header: Header,
+    network: Option<LaneletNetwork>,
+    extra_tags: &BTreeSet<Tag>,
+    trace: &Trace,
+    entities: &[Entity],
+    options: &ConvertOptions,
+) -> Result<Assembled, String> {
+    let (tracks, mut warnings) = tracks(trace, entities, options.dt);
+    let ego_index = choose_ego(&tracks, &options.ego)?;
+    let ego = &tracks[ego_index];
+    let Placement::Moving(runs) = &ego.placement else {
+        return Err(format!("the ego {:?} does not move", ego.entity));
+    };
+    let first = runs.first().and_then(|r| r.first()).copied();
+    let last = runs.last().and_then(|r| r.last()).copied();
+    let (Some(first), Some(last)) = (first, last) else {
+        return Err(format!("the ego {:?} has no state", ego.entity));
+    };
+
+    let mut scenario = Scenario::new(header);
+    scenario.tags = scenario_tags(network.as_ref());
+    scenario.tags.extend(extra_tags.iter().copied());
+    let lanelets = network.as_ref().map_or(0, |n| n.lanelets.len());
+    let needs_placeholder = lanelets == 0;
+    if let Some(n) = network {
+        scenario.network = n;
+    }
+    let mut ids = scenario.id_allocator(None);
+    if needs_placeholder {
+        let lanelet = placeholder_lanelet(&first, ego, &mut ids)?;
+        scenario.network.lanelets.push(lanelet);
+        warnings.push(
+            "no road network: a placeholder lanelet (type unknown) the size of the ego is written \
+             under the ego's initial position, because a CommonRoad file needs at least one lanelet"
+                .to_string(),
+        );
+    }
+
+    let skip = options.drop_ego.then_some(ego.entity.as_str());
+    let built = obstacles(&tracks, skip, &mut ids);
+    warnings.extend(built.warnings);
+    let n_obstacles = built.dynamic.len() + built.statics.len() + built.environment.len();
+    scenario.dynamic_obstacles = built.dynamic;
+    scenario.static_obstacles = built.statics;
+    scenario.environment_obstacles = built.environment;
+
+    let problem = planning_problem(ids.planning_problem(), &first, &last, &options.goal)
+        .map_err(|e| format!("planning problem of the ego {:?}: {e}", ego.entity))?;
+    let problems = PlanningProblemSet {
+        problems: vec![problem],
+    };
+    let found = scenario.validate(Some(&problems));
+    if !found.is_empty() {
+        let list: Vec<String> = found.iter().take(5).map(ToString::to_string).collect();
+        return Err(format!(
+            "the CommonRoad scenario is inconsistent ({} problems): {}",
+            found.len(),
+            list.join("; ")
+        ));
+    }
+    Ok(Assembled {
+        scenario,
+        problems,
+        ego: ego.entity.clone(),
+        obstacles: n_obstacles,
+        lanelets,
+        warnings,
+    })
+}
+
+/// A lanelet the size of the ego's box under its initial state, aligned with its heading.
+fn placeholder_lanelet(
+    first: &State,
+    ego: &Track,
+    ids: &mut commonroad::IdAllocator,
+) -> Result<Lanelet, String> {
+    let (s, c) = first.orientation.sin_cos();
+    let (hl, hw) = (0.5 * ego.length, 0.5 * ego.width);
+    let at = |along: f64, left: f64| {
+        Point::new(
+            first.x + c * along - s * left,
+            first.y + s * along + c * left,
+        )
+    };
+    let bounds = LaneletBounds::new(
+        vec![at(-hl, hw), at(hl, hw)],
+        vec![at(-hl, -hw), at(hl, -hw)],
+    )
+    .map_err(|e| format!("placeholder lanelet: {e}"))?;
+    Ok(Lanelet::new(ids.lanelet(), bounds, LaneletType::Unknown))
+}

@@ -1,0 +1,199 @@
+//! One scenario end to end (the paper's algorithm): load the OpenSCENARIO file, load its
+//! OpenDRIVE file and convert it to lanelets, run the storyboard, build obstacles and the
+//! planning problem, check, and serialise. Every stage's warnings are kept as data, every
+//! stage is timed, and a failure names its stage.
+
+use std::path::Path;
+use std::time::Instant;
+
+use commonroad::{Header, LaneletNetwork};
+use openscenario::{Content, LoadOptions, Scenario};
+
+use crate::assemble::assemble;
+use crate::header::{benchmark_id, date_prefix, fallback_date};
+use crate::options::ConvertOptions;
+use crate::report::{Failure, Stage, StageWarning, Timings};
+use crate::stages::{run_engine, run_map};
+
+/// Facts about a converted scenario, for the report.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Facts {
+    pub benchmark_id: Option<String>,
+    pub ego: Option<String>,
+    pub lanelets: usize,
+    pub obstacles: usize,
+    /// Simulated duration, s.
+    pub duration_s: Option<f64>,
+    pub tags: Vec<String>,
+}
+
+/// The result of converting one scenario: the file's bytes or why not, and what happened.
+#[derive(Debug, Clone)]
+pub struct Conversion {
+    pub result: Result<Vec<u8>, Failure>,
+    pub warnings: Vec<StageWarning>,
+    pub timings: Timings,
+    pub facts: Facts,
+}
+
+/// Which scenario to convert and how to name it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Request<'a> {
+    /// The OpenSCENARIO scenario file.
+    pub path: &'a Path,
+    /// The name in the benchmark id (reduced to letters and digits there).
+    pub name: &'a str,
+    /// Configuration id of the benchmark id: the variation index, 1 without variations.
+    pub config: u64,
+    /// Parameter values of a variation, applied after `ConvertOptions::parameters`.
+    pub parameters: &'a [(String, String)],
+    /// Source text for the header when `ConvertOptions::source` is not set.
+    pub source: String,
+}
+
+fn ms(t: Instant) -> f64 {
+    t.elapsed().as_secs_f64() * 1e3
+}
+
+/// Converts one scenario file into CommonRoad XML bytes (nothing is written).
+pub fn convert_scenario(request: &Request<'_>, options: &ConvertOptions) -> Conversion {
+    let start = Instant::now();
+    let mut c = Conversion {
+        result: Err(Failure {
+            stage: Stage::Load,
+            message: String::new(),
+        }),
+        warnings: Vec::new(),
+        timings: Timings::default(),
+        facts: Facts::default(),
+    };
+    c.result = run(request, options, &mut c.warnings, &mut c.timings, &mut c.facts);
+    c.timings.total_ms = ms(start);
+    c
+}
+
+fn fail(stage: Stage, message: impl Into<String>) -> Failure {
+    Failure {
+        stage,
+        message: message.into(),
+    }
+}
+
+fn warn<T: ToString>(out: &mut Vec<StageWarning>, stage: Stage, list: &[T]) {
+    out.extend(list.iter().map(|w| StageWarning {
+        stage,
+        message: w.to_string(),
+    }));
+}
+
+fn run(
+    request: &Request<'_>,
+    options: &ConvertOptions,
+    warnings: &mut Vec<StageWarning>,
+    timings: &mut Timings,
+    facts: &mut Facts,
+) -> Result<Vec<u8>, Failure> {
+    options.check().map_err(|m| fail(Stage::Load, m))?;
+
+    // 1. the scenario
+    let t = Instant::now();
+    let mut parameters = options.parameters.clone();
+    parameters.extend(request.parameters.iter().cloned());
+    let load_options = LoadOptions {
+        parameters,
+        seed: options.seed,
+    };
+    let loaded = openscenario::load(request.path, &load_options)
+        .map_err(|e| fail(Stage::Load, e.to_string()))?;
+    warn(warnings, Stage::Load, &loaded.warnings);
+    let scenario: Scenario = match loaded.content {
+        Content::Scenario(s) => *s,
+        Content::Distribution(_) => {
+            return Err(fail(
+                Stage::Load,
+                "a parameter value distribution names another scenario file; a distribution cannot vary a distribution",
+            ))
+        }
+        Content::Catalog(_) => {
+            return Err(fail(Stage::Load, "a catalog file is not a scenario"))
+        }
+    };
+    timings.load_ms = ms(t);
+
+    // 2. the road network and its lanelets
+    let t = Instant::now();
+    let road = match &scenario.road_network.logic_file {
+        Some(path) => {
+            let loaded = opendrive::load(path).map_err(|e| fail(Stage::RoadNetwork, e.to_string()))?;
+            warn(warnings, Stage::RoadNetwork, &loaded.warnings);
+            Some(loaded.network)
+        }
+        None => {
+            warnings.push(StageWarning {
+                stage: Stage::RoadNetwork,
+                message: "the scenario names no road network (RoadNetwork/LogicFile)".into(),
+            });
+            None
+        }
+    };
+    timings.road_network_ms = ms(t);
+    let t = Instant::now();
+    let (lanelets, map_tags): (Option<LaneletNetwork>, _) = match &road {
+        Some(r) => {
+            let m = run_map(r, options);
+            warn(warnings, Stage::Map, &m.warnings);
+            (Some(m.network), m.tags)
+        }
+        None => (None, Default::default()),
+    };
+    timings.map_ms = ms(t);
+
+    // 3. the run
+    let t = Instant::now();
+    let run = run_engine(&scenario, road.as_ref(), options).map_err(|e| fail(Stage::Engine, e))?;
+    warn(warnings, Stage::Engine, &run.warnings);
+    timings.engine_ms = ms(t);
+    facts.duration_s = Some(run.trace.duration());
+
+    // 4. obstacles, planning problem, checks
+    let t = Instant::now();
+    let header = header(request, &scenario, options).map_err(|e| fail(Stage::Build, e))?;
+    facts.benchmark_id = Some(header.benchmark_id.to_string());
+    let built = assemble(header, lanelets, &map_tags, &run.trace, &scenario.entities, options)
+        .map_err(|e| fail(Stage::Build, e))?;
+    warn(warnings, Stage::Build, &built.warnings);
+    facts.ego = Some(built.ego.clone());
+    facts.lanelets = built.lanelets;
+    facts.obstacles = built.obstacles;
+    facts.tags = built.scenario.tags.iter().map(|t| t.as_str().to_string()).collect();
+    timings.build_ms = ms(t);
+
+    // 5. bytes
+    let t = Instant::now();
+    let bytes = commonroad::xml::write_scenario(&built.scenario, &built.problems)
+        .map_err(|e| fail(Stage::Write, e.to_string()))?;
+    timings.write_ms = ms(t);
+    Ok(bytes)
+}
+
+fn header(request: &Request<'_>, scenario: &Scenario, options: &ConvertOptions) -> Result<Header, String> {
+    let benchmark_id = benchmark_id(&options.country, request.name, request.config)
+        .map_err(|e| e.to_string())?;
+    let date = options
+        .date
+        .or_else(|| date_prefix(&scenario.header.date))
+        .unwrap_or_else(fallback_date);
+    let author = match &options.author {
+        Some(a) => a.clone(),
+        None if !scenario.header.author.trim().is_empty() => scenario.header.author.trim().to_string(),
+        None => "osc2cr".to_string(),
+    };
+    Ok(Header {
+        benchmark_id,
+        date,
+        author,
+        affiliation: options.affiliation.clone(),
+        source: options.source.clone().unwrap_or_else(|| request.source.clone()),
+        time_step_size: options.dt,
+    })
+}

@@ -1,0 +1,57 @@
+//! The two stages other crates own, behind one narrow call each: OpenDRIVE → lanelets (`map`)
+//! and the storyboard run (`engine`).
+
+use std::collections::BTreeSet;
+
+use commonroad::{LaneletNetwork, Tag};
+use engine::{Settings, Trace};
+
+use crate::options::ConvertOptions;
+
+/// The lanelet network of a road network.
+pub struct MapOutput {
+    pub network: LaneletNetwork,
+    /// Tags that follow from the network (road class, lane count, intersection, …).
+    pub tags: BTreeSet<Tag>,
+    pub warnings: Vec<String>,
+}
+
+/// What the engine returns.
+pub struct EngineOutput {
+    pub trace: Trace,
+    pub warnings: Vec<String>,
+}
+
+/// Lanelets of `road`. Signals that name no country are read as the benchmark's country when
+/// one is given (ZAM: the map converter's default).
+pub fn run_map(road: &opendrive::RoadNetwork, options: &ConvertOptions) -> MapOutput {
+    let defaults = map::MapOptions::default();
+    let map_options = map::MapOptions {
+        default_country: (options.country != "ZAM").then(|| options.country.clone()),
+        tolerance: options.map_tolerance.unwrap_or(defaults.tolerance),
+        ..defaults
+    };
+    let result = map::convert(road, &map_options);
+    MapOutput {
+        tags: map::derived_tags(&result.network),
+        warnings: result.warnings.iter().map(ToString::to_string).collect(),
+        network: result.network,
+    }
+}
+
+/// Runs the storyboard.
+pub fn run_engine(
+    scenario: &openscenario::Scenario,
+    road: Option<&opendrive::RoadNetwork>,
+    options: &ConvertOptions,
+) -> Result<EngineOutput, String> {
+    let settings = Settings {
+        step: options.step,
+        max_time: options.max_time,
+    };
+    let run = engine::simulate(scenario, road, &settings).map_err(|e| e.to_string())?;
+    Ok(EngineOutput {
+        trace: run.trace,
+        warnings: run.warnings.iter().map(ToString::to_string).collect(),
+    })
+}

@@ -1,0 +1,133 @@
+//! Builders for synthetic entities and traces (tests only).
+#![allow(dead_code)]
+
+use engine::{EntityTrace, Sample, Trace};
+use openscenario::{
+    Axle, Axles, BoundingBox, Entity, EntityObject, Location, MiscObject, MiscObjectCategory,
+    Pedestrian, PedestrianCategory, Performance, Properties, Vec3, Vehicle, VehicleCategory,
+};
+use std::path::Path;
+
+pub fn bbox(cx: f64, cy: f64, length: f64, width: f64) -> BoundingBox {
+    BoundingBox {
+        center: Vec3 { x: cx, y: cy, z: 0.75 },
+        width,
+        length,
+        height: 1.5,
+    }
+}
+
+fn origin() -> Location {
+    Location::file_only(Path::new("synthetic.xosc"))
+}
+
+pub fn vehicle(name: &str, category: VehicleCategory, bb: BoundingBox) -> Entity {
+    let axle = Axle {
+        max_steering: 0.5,
+        wheel_diameter: 0.6,
+        track_width: 1.6,
+        position_x: 0.0,
+        position_z: 0.3,
+    };
+    Entity {
+        name: name.into(),
+        object: EntityObject::Vehicle(Vehicle {
+            name: name.into(),
+            category,
+            role: None,
+            mass: None,
+            model3d: None,
+            parameters: Vec::new(),
+            bounding_box: bb,
+            performance: Performance {
+                max_speed: 70.0,
+                max_acceleration: 10.0,
+                max_deceleration: 10.0,
+                max_acceleration_rate: None,
+                max_deceleration_rate: None,
+            },
+            axles: Axles { front: Some(axle), rear: axle, additional: Vec::new() },
+            properties: Properties::default(),
+            trailer_hitch: None,
+            trailer_coupler: None,
+            trailer: None,
+        }),
+        controllers: Vec::new(),
+        origin: origin(),
+    }
+}
+
+pub fn car(name: &str) -> Entity {
+    vehicle(name, VehicleCategory::Car, bbox(1.4, 0.0, 4.5, 2.0))
+}
+
+pub fn pedestrian(name: &str, category: PedestrianCategory, bb: BoundingBox) -> Entity {
+    Entity {
+        name: name.into(),
+        object: EntityObject::Pedestrian(Pedestrian {
+            name: name.into(),
+            category,
+            role: None,
+            mass: 80.0,
+            model3d: None,
+            parameters: Vec::new(),
+            bounding_box: bb,
+            properties: Properties::default(),
+        }),
+        controllers: Vec::new(),
+        origin: origin(),
+    }
+}
+
+pub fn misc(name: &str, category: MiscObjectCategory, bb: BoundingBox) -> Entity {
+    Entity {
+        name: name.into(),
+        object: EntityObject::MiscObject(MiscObject {
+            name: name.into(),
+            category,
+            mass: 100.0,
+            model3d: None,
+            parameters: Vec::new(),
+            bounding_box: bb,
+            properties: Properties::default(),
+        }),
+        controllers: Vec::new(),
+        origin: origin(),
+    }
+}
+
+pub fn sample(x: f64, y: f64, h: f64, speed: f64) -> Sample {
+    Sample {
+        x,
+        y,
+        z: 0.0,
+        h,
+        speed,
+        acceleration: 0.0,
+        yaw_rate: 0.0,
+        road: None,
+        visible: true,
+    }
+}
+
+/// A trace of `len` steps of 0.01 s; `f(k)` gives each entity's sample at step k.
+pub fn trace(len: usize, names: &[&str], f: impl Fn(usize, usize) -> Option<Sample>) -> Trace {
+    Trace {
+        step: 0.01,
+        len,
+        entities: names
+            .iter()
+            .enumerate()
+            .map(|(i, n)| EntityTrace {
+                name: n.to_string(),
+                samples: (0..len).map(|k| f(i, k)).collect(),
+            })
+            .collect(),
+        events: Vec::new(),
+    }
+}
+
+/// Straight motion along +x at `v` m/s from `x0`, heading 0.
+pub fn straight(x0: f64, y: f64, v: f64) -> impl Fn(usize) -> Sample {
+    move |k| sample(x0 + v * k as f64 * 0.01, y, 0.0, v)
+}
