@@ -56,6 +56,8 @@ pub struct Entity {
     pub controller_active: bool,
     /// The entity exists (AddEntity/DeleteEntity, part 2, toggle this).
     pub active: bool,
+    /// The route assigned by AssignRouteAction / AcquirePositionAction: junction choices follow it.
+    pub route: Option<std::sync::Arc<routing::Route>>,
 }
 
 impl Entity {
@@ -103,6 +105,7 @@ impl Entity {
                     standstill_since: None,
                     controller_active: false,
                     active: true,
+                    route: None,
                 }
             })
             .collect()

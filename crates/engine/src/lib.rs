@@ -14,17 +14,21 @@
 
 mod actions;
 mod conditions;
+mod controllers;
 mod dynamics;
 mod entities;
 mod motion;
+mod position_cache;
 mod positions;
 mod roads;
+mod route_position;
 mod rules;
 mod run;
 mod settings;
 mod sim;
 mod storyboard;
 pub mod trace;
+mod trajectory_position;
 mod values;
 mod warning;
 

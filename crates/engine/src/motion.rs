@@ -5,7 +5,7 @@
 
 use crate::dynamics::SMALL;
 use crate::roads::road_follow::wrap;
-use crate::roads::{move_along_s, MoveStatus};
+use crate::roads::{move_along_route, MoveStatus};
 use crate::sim::Sim;
 
 /// Below this speed an entity stands still (esmini's threshold), m/s.
@@ -30,7 +30,7 @@ impl<'a> Sim<'a> {
             }
             match (net, en.lane) {
                 (Some(net), Some(mut lp)) => {
-                    let status = move_along_s(net, &mut lp, en.speed * dt);
+                    let status = move_along_route(net, &mut lp, en.speed * dt, en.route.as_deref());
                     en.set_lane_pos(net, lp);
                     if status == MoveStatus::EndOfRoad {
                         // Stuck at the end since the previous step: esmini stops the entity.

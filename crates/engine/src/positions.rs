@@ -76,11 +76,16 @@ pub fn resolve(pos: &Position, net: Option<&RoadNetwork>, entities: &[Entity]) -
                 return Err(format!("road `{}` has no lane {} at s = {:.3}", r.id, lane_id, s));
             }
             let along = if orientation.is_some() { drives_along_s(r.rule, lane_id) } else { lp.dir > 0.0 };
-            place(net, lp.road, lane_id, s, *offset, along, orientation.as_ref())
+            // The offset is to the left of the reference entity's driving direction (esmini).
+            place(net, lp.road, lane_id, s, offset * lp.dir, along, orientation.as_ref())
         }
-        Position::Route { .. } => Err("RoutePosition is not supported yet".into()),
+        Position::Route { route, orientation, in_route } => {
+            crate::route_position::route_placement(route, in_route, orientation.as_ref(), net, entities)
+        }
         Position::Geo { .. } => Err("GeoPosition is not supported".into()),
-        Position::Trajectory { .. } => Err("TrajectoryPosition is not supported yet".into()),
+        Position::Trajectory { trajectory, s, t, orientation } => {
+            crate::trajectory_position::trajectory_placement(trajectory, *s, *t, orientation.as_ref(), net, entities)
+        }
     }
 }
 

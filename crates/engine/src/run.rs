@@ -24,6 +24,7 @@ pub struct Run {
 /// Run `scenario` on `roads` (None: no road network; road positions then fail with warnings).
 pub fn simulate(scenario: &Scenario, roads: Option<&RoadNetwork>, settings: &Settings) -> Result<Run, Error> {
     settings.check()?;
+    crate::position_cache::clear();
     let dt = settings.step;
     let steps = (settings.max_time / dt + 1e-9).floor() as usize;
     let mut sim = Sim::new(scenario, roads, dt);
@@ -62,6 +63,7 @@ pub fn simulate(scenario: &Scenario, roads: Option<&RoadNetwork>, settings: &Set
             break;
         }
         sim.time = k as f64 * dt;
+        sim.step_controllers(dt);
         sim.default_controller(dt);
         sim.after_move(&before, dt);
         record(&sim, &mut trace);

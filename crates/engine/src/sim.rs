@@ -30,6 +30,8 @@ pub struct Sim<'a> {
     /// Every state change (node, new state, transition), read by StoryboardElementState conditions.
     pub state_log: Vec<(usize, State, Transition)>,
     pub warnings: Vec<Warning>,
+    /// Each entity's assigned controller (None: the default controller).
+    pub controllers: Vec<Option<crate::controllers::ControllerRt>>,
 }
 
 impl<'a> Sim<'a> {
@@ -49,7 +51,13 @@ impl<'a> Sim<'a> {
             events: Vec::new(),
             state_log: Vec::new(),
             warnings: Vec::new(),
+            controllers: vec![None; scenario.entities.len()],
         };
+        for (i, e) in scenario.entities.iter().enumerate() {
+            for c in &e.controllers {
+                sim.assign_controller(i, c);
+            }
+        }
         sim.build();
         sim
     }

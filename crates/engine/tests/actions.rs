@@ -135,11 +135,9 @@ fn visibility_is_recorded() {
 
 #[test]
 fn unsupported_action_is_a_positioned_warning() {
-    let traj = r#"<PrivateAction><RoutingAction><AcquirePositionAction>"#.to_string()
-        + &lane_pos(100.0, -1)
-        + "</AcquirePositionAction></RoutingAction></PrivateAction>";
+    let traj = r#"<PrivateAction><RoutingAction><RandomRouteAction/></RoutingAction></PrivateAction>"#.to_string();
     let init = format!("{}<Private entityRef=\"Ego\">{traj}</Private>", teleport("Ego", 10.0, -1));
     let run = run(&xosc(&init, "", &trigger_stop(1.0)));
-    let w = run.warnings.iter().find(|w| w.message.contains("AcquirePositionAction")).expect("warning");
+    let w = run.warnings.iter().find(|w| w.message.contains("RandomRouteAction")).expect("warning");
     assert!(w.line > 0 && w.col > 0);
 }

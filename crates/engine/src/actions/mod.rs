@@ -3,10 +3,15 @@
 //! (longitudinal / lateral), as esmini does; an action node ends when all its instances are
 //! done.
 
+pub mod follow_trajectory;
 pub mod global;
 pub mod lane_change;
 pub mod lane_offset;
+pub mod routing;
+pub mod long_distance;
 pub mod speed;
+pub mod speed_profile;
+pub mod synchronize;
 pub mod teleport;
 
 use crate::sim::Sim;
@@ -23,6 +28,10 @@ pub enum ActionRt {
     Speed(speed::SpeedRt),
     LaneChange(lane_change::LaneChangeRt),
     LaneOffset(lane_offset::LaneOffsetRt),
+    FollowTrajectory(Box<follow_trajectory::FollowTrajectoryRt>),
+    SpeedProfile(speed_profile::SpeedProfileRt),
+    Synchronize(Box<synchronize::SynchronizeRt>),
+    LongDistance(Box<long_distance::LongDistanceRt>),
     /// Nothing left to do.
     Done,
 }
@@ -57,6 +66,9 @@ impl<'a> ActionSlot<'a> {
                 | PrivateAction::LongitudinalDistance { .. }
                 | PrivateAction::Synchronize { .. } => LONG,
                 PrivateAction::LaneChange { .. } | PrivateAction::LaneOffset { .. } | PrivateAction::LateralDistance { .. } => LAT,
+                // Without timing the speed stays with the longitudinal actions (esmini runs a
+                // SpeedProfileAction alongside such a trajectory).
+                PrivateAction::FollowTrajectory { time_reference: openscenario::TimeReference::None, .. } => LAT,
                 PrivateAction::FollowTrajectory { .. } => LONG | LAT,
                 _ => 0,
             },
@@ -128,10 +140,33 @@ impl<'a> Sim<'a> {
     fn start_private(&mut self, slot: usize, e: usize, p: &'a PrivateAction) -> ActionRt {
         match p {
             PrivateAction::Speed { dynamics, target } => self.start_speed(slot, e, dynamics, target),
+            PrivateAction::LongitudinalDistance { entity, distance, time_gap, freespace, continuous, coordinate_system, displacement, constraints } => {
+                let spec = long_distance::LongDistanceSpec {
+                    entity,
+                    distance: *distance,
+                    time_gap: *time_gap,
+                    freespace: *freespace,
+                    continuous: *continuous,
+                    coordinate_system: *coordinate_system,
+                    displacement: *displacement,
+                    constraints: constraints.as_ref(),
+                };
+                self.start_long_distance(slot, e, &spec)
+            }
+            PrivateAction::Synchronize { master, target_position_master, target_position, final_speed, target_tolerance_master, target_tolerance } => self
+                .start_synchronize(slot, master, target_position_master, target_position, final_speed.as_ref(), (*target_tolerance_master, *target_tolerance)),
             PrivateAction::LaneChange { dynamics, target, target_lane_offset } => {
                 self.start_lane_change(slot, e, dynamics, target, target_lane_offset.unwrap_or(0.0))
             }
             PrivateAction::LaneOffset { shape, max_lateral_acc, target, .. } => self.start_lane_offset(slot, e, *shape, *max_lateral_acc, target),
+            PrivateAction::AssignRoute(route) => self.assign_route(slot, e, route),
+            PrivateAction::AcquirePosition(pos) => self.acquire_position(slot, e, pos),
+            PrivateAction::SpeedProfile { entity, following_mode, constraints, entries } => {
+                self.start_speed_profile(slot, e, entity.as_deref(), *following_mode, constraints.as_ref(), entries)
+            }
+            PrivateAction::FollowTrajectory { trajectory, time_reference, following_mode, initial_distance_offset } => {
+                self.start_follow_trajectory(slot, e, trajectory, time_reference, *following_mode, *initial_distance_offset)
+            }
             PrivateAction::Teleport(pos) => {
                 self.teleport(slot, e, pos);
                 ActionRt::Done
@@ -147,11 +182,15 @@ impl<'a> Sim<'a> {
                 if let Some(en) = self.entities.get_mut(e) {
                     en.controller_active = on;
                 }
+                self.activate_controller(e, longitudinal.unwrap_or(true));
                 ActionRt::Done
             }
-            PrivateAction::AssignController { controller, .. } => {
+            PrivateAction::AssignController { controller, activate_longitudinal, .. } => {
                 if let Some(c) = controller {
-                    self.warn_action(slot, format!("controller `{}` is recorded but not modelled; the default controller drives", c.name));
+                    self.assign_controller(e, c);
+                    if *activate_longitudinal == Some(true) {
+                        self.activate_controller(e, true);
+                    }
                 }
                 ActionRt::Done
             }
@@ -177,6 +216,10 @@ impl<'a> Sim<'a> {
                 ActionRt::Speed(s) => self.step_speed(e, s),
                 ActionRt::LaneChange(l) => self.step_lane_change(e, l),
                 ActionRt::LaneOffset(l) => self.step_lane_offset(e, l),
+                ActionRt::FollowTrajectory(f) => self.step_follow_trajectory(e, f),
+                ActionRt::SpeedProfile(p) => self.step_speed_profile(e, p),
+                ActionRt::Synchronize(y) => self.step_synchronize(e, y),
+                ActionRt::LongDistance(d) => self.step_long_distance(e, d),
                 ActionRt::Done => true,
             };
             if !done {

@@ -3,7 +3,8 @@
 
 pub mod lane_geometry;
 pub mod lane_position;
+pub mod road_distance;
 pub mod road_follow;
 
 pub use lane_position::LanePos;
-pub use road_follow::{move_along_s, MoveStatus};
+pub use road_follow::{move_along_route, move_along_s, MoveStatus};

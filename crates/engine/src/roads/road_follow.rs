@@ -24,6 +24,11 @@ const MAX_HOPS: usize = 16;
 
 /// Move `pos` by `dist` metres along the direction it faces (negative: backwards).
 pub fn move_along_s(net: &RoadNetwork, pos: &mut LanePos, dist: f64) -> MoveStatus {
+    move_along_route(net, pos, dist, None)
+}
+
+/// [`move_along_s`], taking at junctions the road an assigned route continues on.
+pub fn move_along_route(net: &RoadNetwork, pos: &mut LanePos, dist: f64, route: Option<&routing::Route>) -> MoveStatus {
     let Some(road) = net.roads.get(pos.road) else { return MoveStatus::EndOfRoad };
     let s0 = pos.s.clamp(0.0, road.length);
     let p = road.reference_pose(s0);
@@ -49,7 +54,8 @@ pub fn move_along_s(net: &RoadNetwork, pos: &mut LanePos, dist: f64) -> MoveStat
         let here = LaneRef { road: pos.road, section, lane: pos.lane_id };
         let heading_in = road.reference_pose(if end == ContactPoint::End { road.length } else { 0.0 }).hdg
             + if end == ContactPoint::End { 0.0 } else { std::f64::consts::PI };
-        let Some((next, contact)) = choose_continuation(net, here, end, heading_in) else {
+        let routed = route.and_then(|r| routed_continuation(net, r, here, end));
+        let Some((next, contact)) = routed.or_else(|| choose_continuation(net, here, end, heading_in)) else {
             pos.s = s.clamp(0.0, road.length);
             return MoveStatus::EndOfRoad;
         };
@@ -71,6 +77,22 @@ pub fn move_along_s(net: &RoadNetwork, pos: &mut LanePos, dist: f64) -> MoveStat
         }
     }
     MoveStatus::Ok
+}
+
+/// The lane continuing `here` across its `end` onto the road the route takes next, if the
+/// route passes this road in this direction and a lane leads there.
+fn routed_continuation(net: &RoadNetwork, route: &routing::Route, here: LaneRef, end: ContactPoint) -> Option<(LaneRef, ContactPoint)> {
+    let next = route.next_road_after(here.road, end == ContactPoint::End)?;
+    let cands = net.lanes_across(here, end);
+    let on_road = |c: &&LaneRef| c.road == next.road;
+    // The route's own lane when it is reachable, else the lane link's lane on that road.
+    let pick = cands.iter().filter(on_road).find(|c| c.lane == next.lane).or_else(|| cands.iter().find(on_road))?;
+    let contact = if pick.road == here.road {
+        if end == ContactPoint::End { ContactPoint::Start } else { ContactPoint::End }
+    } else {
+        next.contact
+    };
+    Some((*pick, contact))
 }
 
 /// The lane continuing `here` across its `end`, and the contact point on that lane's road.

@@ -261,7 +261,9 @@ fn activate_controller(cx: &Cx, e: &Elem) -> Result<PrivateAction, Error> {
 }
 
 fn steady_state(cx: &Cx, e: &Elem) -> Result<Option<SteadyState>, Error> {
-    let Some(s) = e.child("SteadyState").and_then(|s| s.first_child()) else { return Ok(None) };
+    // 1.1+ wraps it in <SteadyState>; esmini's earlier extension puts it directly inside.
+    let direct = e.children.iter().find(|c| c.name == "TargetDistanceSteadyState" || c.name == "TargetTimeSteadyState");
+    let Some(s) = e.child("SteadyState").and_then(|s| s.first_child()).or(direct) else { return Ok(None) };
     Ok(match s.name.as_str() {
         "TargetDistanceSteadyState" => Some(SteadyState::Distance(cx.f64(s, "distance")?)),
         "TargetTimeSteadyState" => Some(SteadyState::Time(cx.f64(s, "time")?)),

@@ -1,0 +1,160 @@
+//! LongitudinalDistanceAction: keep a distance (or a time gap, converted with the reference
+//! entity's speed) behind or ahead of a reference entity.
+//!
+//! As esmini: without acceleration limits the actor is put at the requested distance at once
+//! and takes the reference's speed; with limits a critically damped spring pulls the distance
+//! error to zero (stiffness 0.4 × the limit in the direction of the pull), its acceleration
+//! clipped to the limits and its change per second to the jerk limits, and the speed to the
+//! maximum speed. "any" displacement keeps the side the actor is on when the action starts. A
+//! non-continuous action ends when the distance is within 0.1 m.
+
+use super::ActionRt;
+use crate::conditions::distance::between;
+use crate::roads::move_along_s;
+use crate::sim::Sim;
+use openscenario::{CoordinateSystem, DynamicConstraints, LongitudinalDisplacement, RelativeDistanceType};
+
+const LARGE: f64 = 1e10;
+const SPRING: f64 = 0.4;
+/// Distance error below which a non-continuous action is done, m.
+const THRESHOLD: f64 = 0.1;
+
+#[derive(Debug, Clone)]
+pub struct LongDistanceRt {
+    target: usize,
+    /// Distance in m, or time gap in s when `time_gap`.
+    value: f64,
+    time_gap: bool,
+    freespace: bool,
+    continuous: bool,
+    cs: CoordinateSystem,
+    /// +1 trailing (reference ahead), -1 leading.
+    side: f64,
+    max_acc: f64,
+    max_dec: f64,
+    max_acc_rate: f64,
+    max_dec_rate: f64,
+    max_speed: f64,
+    acceleration: f64,
+}
+
+/// The longitudinal action's parameters as the model gives them.
+pub struct LongDistanceSpec<'s> {
+    pub entity: &'s str,
+    pub distance: Option<f64>,
+    pub time_gap: Option<f64>,
+    pub freespace: bool,
+    pub continuous: bool,
+    pub coordinate_system: Option<CoordinateSystem>,
+    pub displacement: Option<LongitudinalDisplacement>,
+    pub constraints: Option<&'s DynamicConstraints>,
+}
+
+impl<'a> Sim<'a> {
+    fn long_gap(&self, e: usize, r: &LongDistanceRt) -> f64 {
+        match (self.entities.get(e), self.entities.get(r.target)) {
+            (Some(a), Some(b)) => between(self.net, a, b, r.cs, RelativeDistanceType::Longitudinal, r.freespace),
+            _ => 0.0,
+        }
+    }
+
+    pub(super) fn start_long_distance(&mut self, slot: usize, e: usize, spec: &LongDistanceSpec) -> ActionRt {
+        let Some(target) = self.entity_index(spec.entity) else {
+            self.warn_action(slot, format!("LongitudinalDistanceAction: unknown entity `{}`", spec.entity));
+            return ActionRt::Done;
+        };
+        let (value, time_gap) = match (spec.distance, spec.time_gap) {
+            (Some(d), _) => (d, false),
+            (None, Some(t)) => (t, true),
+            (None, None) => {
+                self.warn_action(slot, "LongitudinalDistanceAction needs a distance or a timeGap; the action completes at once".into());
+                return ActionRt::Done;
+            }
+        };
+        let c = spec.constraints.copied().unwrap_or(DynamicConstraints {
+            max_acceleration: None,
+            max_deceleration: None,
+            max_speed: None,
+            max_acceleration_rate: None,
+            max_deceleration_rate: None,
+        });
+        let mut rt = LongDistanceRt {
+            target,
+            value,
+            time_gap,
+            freespace: spec.freespace,
+            continuous: spec.continuous,
+            cs: spec.coordinate_system.unwrap_or(CoordinateSystem::Entity),
+            side: 1.0,
+            max_acc: c.max_acceleration.unwrap_or(LARGE),
+            max_dec: c.max_deceleration.unwrap_or(LARGE),
+            max_acc_rate: c.max_acceleration_rate.unwrap_or(LARGE),
+            max_dec_rate: c.max_deceleration_rate.unwrap_or(LARGE),
+            max_speed: c.max_speed.unwrap_or(LARGE),
+            acceleration: 0.0,
+        };
+        rt.side = match spec.displacement.unwrap_or(LongitudinalDisplacement::TrailingReferencedEntity) {
+            LongitudinalDisplacement::TrailingReferencedEntity => 1.0,
+            LongitudinalDisplacement::LeadingReferencedEntity => -1.0,
+            LongitudinalDisplacement::Any => {
+                if self.long_gap(e, &rt) < 0.0 {
+                    -1.0
+                } else {
+                    1.0
+                }
+            }
+        };
+        ActionRt::LongDistance(Box::new(rt))
+    }
+
+    /// One step; true when the action is done.
+    pub(super) fn step_long_distance(&mut self, e: usize, r: &mut LongDistanceRt) -> bool {
+        let dt = self.dt;
+        let distance = self.long_gap(e, r);
+        let (Some(me), Some(other)) = (self.entities.get(e), self.entities.get(r.target)) else { return true };
+        let (speed, ref_speed) = (me.speed, other.speed);
+        let requested = r.side * if r.time_gap { ref_speed.abs() * r.value } else { r.value }.abs();
+        let diff = distance - requested;
+        let done = !r.continuous && diff.abs() < THRESHOLD;
+        if r.max_acc >= LARGE && r.max_dec >= LARGE {
+            let net = self.net;
+            if let Some(en) = self.entities.get_mut(e) {
+                match (net, en.lane) {
+                    (Some(net), Some(mut lp)) => {
+                        move_along_s(net, &mut lp, diff);
+                        en.set_lane_pos(net, lp);
+                    }
+                    _ => {
+                        en.x += diff * en.h.cos();
+                        en.y += diff * en.h.sin();
+                    }
+                }
+                en.speed = ref_speed;
+            }
+            return done;
+        }
+        let tension = if diff < 0.0 { r.max_acc } else { r.max_dec };
+        let k = tension * SPRING;
+        let damping = 2.0 * k.sqrt();
+        let mut acc = diff * k - (speed - ref_speed) * damping;
+        let jerk;
+        if acc < 0.0 {
+            jerk = -r.max_dec_rate;
+            acc = acc.max(-r.max_dec);
+        } else {
+            jerk = r.max_acc_rate;
+            acc = acc.min(r.max_acc);
+        }
+        if jerk < 0.0 && acc < r.acceleration {
+            acc = acc.max(r.acceleration + jerk * dt);
+        } else if jerk > 0.0 && acc > r.acceleration {
+            acc = acc.min(r.acceleration + jerk * dt);
+        }
+        r.acceleration = acc;
+        let v = (speed + acc * dt).clamp(-r.max_speed, r.max_speed);
+        if let Some(en) = self.entities.get_mut(e) {
+            en.speed = v;
+        }
+        done
+    }
+}

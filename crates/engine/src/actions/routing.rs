@@ -1,0 +1,55 @@
+//! AssignRouteAction and AcquirePositionAction: both give the entity a route (the second from
+//! where it is to the target position) and complete at once; the route then decides which
+//! way the entity goes at junctions (see `roads::road_follow`).
+
+use super::ActionRt;
+use crate::positions::resolve;
+use crate::route_position::{plan_route, waypoint_of};
+use crate::sim::Sim;
+use openscenario::{Position, Route};
+use std::sync::Arc;
+
+impl<'a> Sim<'a> {
+    pub(super) fn assign_route(&mut self, slot: usize, e: usize, route: &Route) -> ActionRt {
+        let Some(net) = self.net else {
+            self.warn_action(slot, "AssignRouteAction needs a road network".into());
+            return ActionRt::Done;
+        };
+        match plan_route(route, net, &self.entities) {
+            Ok(r) => {
+                for w in &r.warnings {
+                    let msg = format!("route `{}`: {w}", route.name);
+                    self.warn_action(slot, msg);
+                }
+                if let Some(en) = self.entities.get_mut(e) {
+                    en.route = Some(Arc::new(r));
+                }
+            }
+            Err(msg) => self.warn_action(slot, format!("AssignRouteAction: route `{}` cannot be planned: {msg}", route.name)),
+        }
+        ActionRt::Done
+    }
+
+    pub(super) fn acquire_position(&mut self, slot: usize, e: usize, target: &Position) -> ActionRt {
+        let Some(net) = self.net else {
+            self.warn_action(slot, "AcquirePositionAction needs a road network".into());
+            return ActionRt::Done;
+        };
+        let Some(en) = self.entities.get(e) else { return ActionRt::Done };
+        let from = en.lane.map(|lp| routing::Waypoint { road: lp.road, lane: lp.lane_id, s: lp.s, along_s: Some(lp.dir > 0.0) });
+        let to = resolve(target, Some(net), &self.entities).ok().and_then(|p| waypoint_of(&p));
+        let (Some(from), Some(to)) = (from, to) else {
+            self.warn_action(slot, "AcquirePositionAction: the entity or the target is not on a lane".into());
+            return ActionRt::Done;
+        };
+        match routing::Route::plan(net, &[from, to], &[routing::Strategy::Shortest, routing::Strategy::Shortest], false) {
+            Ok(r) => {
+                if let Some(en) = self.entities.get_mut(e) {
+                    en.route = Some(Arc::new(r));
+                }
+            }
+            Err(msg) => self.warn_action(slot, format!("AcquirePositionAction: no route to the target: {msg}")),
+        }
+        ActionRt::Done
+    }
+}

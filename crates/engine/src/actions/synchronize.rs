@@ -1,0 +1,300 @@
+//! SynchronizeAction: the actor adapts its speed so that it reaches its target position when the
+//! master entity reaches the master's target position, optionally arriving at a final speed
+//! (absolute or relative to the master) that it keeps over a steady-state distance or time
+//! before the target.
+//!
+//! The speed profile is esmini's: with a final speed, constant-acceleration phases — straight to
+//! the final speed when that fits (linear), else accelerate-then-decelerate or the reverse
+//! (non-linear, convex or concave, switching to linear at the apex), or stop and wait when even
+//! that would need a negative speed; without a final speed, the constant acceleration that
+//! covers the distance in the master's time. Distances are measured along the roads when both
+//! ends are on the road network, else in a straight line. The action ends when the actor or the
+//! master is within its tolerance, when either distance starts to grow (a target was passed),
+//! or when the master arrives within the next step; then the actor takes the final speed.
+
+use super::ActionRt;
+use crate::positions::{resolve, Placement};
+use crate::roads::road_distance::road_distance;
+use crate::sim::Sim;
+use openscenario::{FinalSpeed, Position, SpeedTargetValueType, SteadyState};
+
+const SMALL: f64 = 1e-10;
+const LARGE: f64 = 1e10;
+/// The deceleration esmini uses to stop at once, m/s².
+const STOP_DECELERATION: f64 = -8.0;
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Mode {
+    None,
+    NonLinear,
+    Linear,
+    Stopped,
+    StopImmediately,
+    Waiting,
+    SteadyState,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Submode {
+    None,
+    Concave,
+    Convex,
+}
+
+#[derive(Debug, Clone, Copy)]
+enum Final {
+    Absolute(f64),
+    Relative { value: f64, factor: bool },
+}
+
+#[derive(Debug, Clone)]
+pub struct SynchronizeRt {
+    master: usize,
+    target_master: Placement,
+    target: Placement,
+    final_speed: Option<Final>,
+    steady_dist: Option<f64>,
+    steady_time: Option<f64>,
+    tolerance: f64,
+    tolerance_master: f64,
+    mode: Mode,
+    submode: Submode,
+    last_dist: f64,
+    last_master_dist: f64,
+}
+
+impl<'a> Sim<'a> {
+    pub(super) fn start_synchronize(
+        &mut self,
+        slot: usize,
+        master: &str,
+        target_master: &Position,
+        target: &Position,
+        final_speed: Option<&FinalSpeed>,
+        tolerances: (Option<f64>, Option<f64>),
+    ) -> ActionRt {
+        let Some(master) = self.entity_index(master) else {
+            self.warn_action(slot, format!("SynchronizeAction: unknown master entity `{master}`"));
+            return ActionRt::Done;
+        };
+        let (tm, t) = match (resolve(target_master, self.net, &self.entities), resolve(target, self.net, &self.entities)) {
+            (Ok(a), Ok(b)) => (a, b),
+            (Err(e), _) | (_, Err(e)) => {
+                self.warn_action(slot, format!("SynchronizeAction: target position: {e}; the action completes at once"));
+                return ActionRt::Done;
+            }
+        };
+        let (fin, steady) = match final_speed {
+            None => (None, None),
+            Some(FinalSpeed::Absolute { value, steady_state }) => (Some(Final::Absolute(*value)), *steady_state),
+            Some(FinalSpeed::RelativeToMaster { value, value_type, steady_state }) => {
+                (Some(Final::Relative { value: *value, factor: *value_type == SpeedTargetValueType::Factor }), *steady_state)
+            }
+        };
+        let (steady_dist, steady_time) = match steady {
+            Some(SteadyState::Distance(d)) => (Some(d), None),
+            Some(SteadyState::Time(t)) => (None, Some(t)),
+            None => (None, None),
+        };
+        let mut rt = SynchronizeRt {
+            master,
+            target_master: tm,
+            target: t,
+            final_speed: fin,
+            steady_dist,
+            steady_time,
+            // esmini's default tolerance when none is given.
+            tolerance: tolerances.1.unwrap_or(1.0),
+            tolerance_master: tolerances.0.unwrap_or(1.0),
+            mode: Mode::None,
+            submode: Submode::None,
+            last_dist: LARGE,
+            last_master_dist: LARGE,
+        };
+        // A steady-state time becomes a distance at the final speed the action starts with.
+        if let Some(st) = rt.steady_time.take() {
+            rt.steady_dist = Some(st * self.final_speed_value(&rt));
+        }
+        ActionRt::Synchronize(Box::new(rt))
+    }
+
+    fn final_speed_value(&self, s: &SynchronizeRt) -> f64 {
+        let ms = self.entities.get(s.master).map_or(0.0, |m| m.speed);
+        match s.final_speed {
+            Some(Final::Absolute(v)) => v,
+            Some(Final::Relative { value, factor: true }) => ms * value,
+            Some(Final::Relative { value, factor: false }) => ms + value,
+            None => 0.0,
+        }
+    }
+
+    /// Distance of entity `e` to a placement: along the roads when both are on the network.
+    fn distance_to(&self, e: usize, p: &Placement) -> f64 {
+        let Some(en) = self.entities.get(e) else { return 0.0 };
+        if let (Some(net), Some(a), Some(b)) = (self.net, en.lane, p.lane) {
+            if let Some(d) = road_distance(net, a.road, a.s, b.road, b.s) {
+                return d;
+            }
+        }
+        (en.x - p.x).hypot(en.y - p.y)
+    }
+
+    /// Speed projected on the road's s axis, keeping the sign of the speed.
+    fn speed_along_road(&self, e: usize) -> f64 {
+        self.entities.get(e).map_or(0.0, |en| en.speed.signum() * (en.speed * en.yaw_offset.cos()).abs())
+    }
+
+    /// One step; true when the action is done.
+    pub(super) fn step_synchronize(&mut self, e: usize, s: &mut SynchronizeRt) -> bool {
+        let dt = self.dt;
+        let master_dist_raw = self.distance_to(s.master, &s.target_master);
+        let dist_raw = self.distance_to(e, &s.target);
+        let mut done = dist_raw < s.tolerance + SMALL
+            || master_dist_raw < s.tolerance_master + SMALL
+            || dist_raw > s.last_dist
+            || master_dist_raw > s.last_master_dist;
+        s.last_dist = dist_raw;
+        s.last_master_dist = master_dist_raw;
+        let mut dist = (dist_raw - s.tolerance).max(SMALL);
+        let master_dist = (master_dist_raw - s.tolerance_master).max(SMALL);
+        let master_speed = self.speed_along_road(s.master);
+        let mut t_master = LARGE;
+        if master_speed > SMALL {
+            t_master = master_dist / master_speed;
+            if t_master < dt {
+                done = true;
+            }
+        }
+        let speed = self.entities.get(e).map_or(0.0, |x| x.speed);
+        if done {
+            if s.final_speed.is_some() {
+                let v = self.final_speed_value(s);
+                self.set_speed(e, v);
+            }
+            return true;
+        }
+        if s.final_speed.is_none() {
+            let average = dist / t_master;
+            let final_speed = 2.0 * average - speed;
+            let acc = (final_speed - speed) / t_master;
+            self.set_speed(e, speed + acc * dt);
+            return false;
+        }
+        let v1 = self.final_speed_value(s);
+        if let Some(ss) = s.steady_dist {
+            if s.mode != Mode::SteadyState {
+                let time_to_ss = ss / v1;
+                if dist - ss < SMALL || t_master - time_to_ss < SMALL {
+                    s.mode = Mode::SteadyState;
+                    s.submode = Submode::None;
+                } else {
+                    dist -= ss;
+                    t_master -= time_to_ss;
+                }
+            }
+        }
+        match s.mode {
+            Mode::SteadyState => {
+                self.set_speed(e, v1);
+                return false;
+            }
+            Mode::Waiting => {
+                if t_master >= LARGE {
+                    return false;
+                }
+                s.mode = Mode::None;
+            }
+            Mode::StopImmediately => {
+                let v = speed + STOP_DECELERATION * dt;
+                if v < 0.0 {
+                    self.set_speed(e, 0.0);
+                    s.mode = Mode::Waiting;
+                } else {
+                    self.set_speed(e, v);
+                }
+                return false;
+            }
+            Mode::Stopped => {
+                if t_master < 2.0 * dist / v1 {
+                    s.mode = Mode::Linear;
+                } else {
+                    self.set_speed(e, 0.0);
+                    return false;
+                }
+            }
+            _ => {}
+        }
+        if s.mode == Mode::Linear {
+            let v = if t_master > LARGE - 1.0 { 0.0 } else { linear_start_speed(v1.max(0.0), t_master, dist).max(0.0) };
+            self.set_speed(e, v);
+            return false;
+        }
+        if s.mode == Mode::NonLinear && t_master < LARGE {
+            let v0_on_line = 2.0 * dist / t_master - v1;
+            if (speed - v0_on_line).abs() < 0.1 {
+                // Passed the apex: constant acceleration from here; keep the speed this step.
+                s.mode = Mode::Linear;
+                return false;
+            }
+        }
+        if s.mode == Mode::None {
+            s.mode = Mode::NonLinear;
+            s.submode = if (v1 + speed) / 2.0 < dist / t_master { Submode::Convex } else { Submode::Concave };
+        }
+        let (st, t) = (dist, t_master);
+        let v0 = self.speed_along_road(e);
+        let root = 2f64.sqrt() * (2.0 * st * st - 2.0 * (v1 + v0) * t * st + (v1 * v1 + v0 * v0) * t * t).max(0.0).sqrt();
+        let (mut vx, mut acc) = (0.0, 0.0);
+        if (v1 - v0).abs() < SMALL {
+            vx = (st - (t / 2.0) * v0) / (t / 2.0);
+            acc = (vx - v0) / (t / 2.0);
+        } else {
+            let x1 = -(root + 2.0 * st - 2.0 * v1 * t) / (2.0 * (v1 - v0));
+            let x2 = -(-root + 2.0 * st - 2.0 * v1 * t) / (2.0 * (v1 - v0));
+            let vx1 = (2.0 * st - root) / (2.0 * t);
+            let vx2 = (2.0 * st + root) / (2.0 * t);
+            if x1 > 0.0 && x1 < t {
+                vx = vx1;
+                acc = (vx1 - v0) / x1;
+            } else if x2 > 0.0 && x2 < t {
+                vx = vx2;
+                acc = (vx2 - v0) / x2;
+            }
+        }
+        if s.mode == Mode::NonLinear && ((s.submode == Submode::Concave && acc > 0.0) || (s.submode == Submode::Convex && acc < 0.0)) {
+            // The apex of the profile: linear from the next step, keep the speed now.
+            s.mode = Mode::Linear;
+            acc = 0.0;
+        }
+        if s.mode == Mode::NonLinear && vx < 0.0 {
+            // Even the slowest two-phase profile needs to stop: decelerate to a stop and wait.
+            let t1 = 2.0 * v0 * st / (v0 * v0 + v1 * v1);
+            acc = if t1.abs() > SMALL { -v0 / t1 } else { 0.0 };
+            if t1 * v0 / 2.0 > st / 2.0 {
+                acc = STOP_DECELERATION;
+                s.mode = Mode::StopImmediately;
+            }
+            if v0 + acc * dt < 0.0 {
+                self.set_speed(e, 0.0);
+                s.mode = Mode::Stopped;
+                return false;
+            }
+        }
+        self.set_speed(e, speed + acc * dt);
+        false
+    }
+
+    fn set_speed(&mut self, e: usize, v: f64) {
+        if let Some(en) = self.entities.get_mut(e) {
+            en.speed = v;
+        }
+    }
+}
+
+/// Start speed of a constant-acceleration profile that covers `dist` in `time` ending at `v_final`.
+fn linear_start_speed(v_final: f64, time: f64, dist: f64) -> f64 {
+    if time < 0.001 || dist < 0.001 {
+        return 0.0;
+    }
+    2.0 * dist / time - v_final
+}

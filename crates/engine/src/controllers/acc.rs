@@ -1,0 +1,153 @@
+//! ACCController, as esmini's adaptive cruise control: the entity cruises at a set speed and
+//! follows the nearest vehicle ahead in its lane (linked through roads, within a look-ahead of
+//! max(50 m, twice the stopping distance), lateral offset below `lateralDist`) at a distance of
+//! 3 m + `timeGap` × speed, blending a distance term and a speed term into an acceleration
+//! clipped to the vehicle's limits. Another action changing the speed sets a new set speed. In
+//! `override` mode it moves the entity itself; otherwise (additive) it only sets the speed.
+
+use crate::conditions::distance::between;
+use crate::roads::lane_geometry::lane_center_t;
+use crate::roads::road_distance::road_distance;
+use crate::roads::{move_along_s, LanePos};
+use crate::sim::Sim;
+use opendrive::RoadNetwork;
+use openscenario::{Controller, CoordinateSystem, RelativeDistanceType};
+
+const LARGE: f64 = 1e10;
+/// Minimum gap to the lead vehicle, m.
+const MIN_DIST: f64 = 3.0;
+const ACCELERATION_FACTOR: f64 = 0.7;
+
+#[derive(Debug, Clone)]
+pub struct AccRt {
+    pub active: bool,
+    time_gap: f64,
+    set_speed: f64,
+    set_speed_given: bool,
+    lateral_dist: f64,
+    current_speed: f64,
+    override_mode: bool,
+}
+
+impl AccRt {
+    pub fn new(c: &Controller) -> AccRt {
+        let num = |n: &str| c.properties.get(n).and_then(|v| v.trim().parse::<f64>().ok());
+        AccRt {
+            active: false,
+            time_gap: num("timeGap").unwrap_or(1.5),
+            set_speed: num("setSpeed").unwrap_or(0.0),
+            set_speed_given: num("setSpeed").is_some(),
+            lateral_dist: num("lateralDist").unwrap_or(5.0),
+            current_speed: 0.0,
+            override_mode: c.properties.get("mode") == Some("override"),
+        }
+    }
+
+    pub fn activate(&mut self, speed: f64, longitudinal: bool) {
+        if !longitudinal {
+            return;
+        }
+        self.active = true;
+        self.current_speed = speed;
+        if !self.override_mode || !self.set_speed_given {
+            self.set_speed = speed;
+        }
+    }
+}
+
+/// Signed distance along the lanes from `a` forward to `b` (within `max`), whether `b` is in the
+/// lane `a`'s lane leads to, and the lateral offset of `b` from there.
+fn lane_delta(net: &RoadNetwork, a: LanePos, b: LanePos, max: f64) -> Option<(f64, bool, f64)> {
+    let t = |p: &LanePos| net.roads.get(p.road).and_then(|r| lane_center_t(r, p.lane_id, p.s)).map(|c| c + p.offset);
+    if a.road == b.road {
+        let ds = (b.s - a.s) * a.dir;
+        return Some((ds, a.lane_id == b.lane_id, (t(&b)? - t(&a)?) * a.dir));
+    }
+    let d = road_distance(net, a.road, a.s, b.road, b.s)?;
+    if d > max {
+        return None;
+    }
+    let mut p = a;
+    move_along_s(net, &mut p, d);
+    if p.road != b.road {
+        return None;
+    }
+    Some((d, p.lane_id == b.lane_id, (t(&b)? - t(&p)?) * p.dir))
+}
+
+impl<'a> Sim<'a> {
+    pub(super) fn step_acc(&mut self, e: usize, a: &mut AccRt, dt: f64) {
+        let Some(me) = self.entities.get(e) else { return };
+        // In override mode esmini's longitudinal actions leave the entity alone; otherwise a
+        // speed another action set becomes the new set speed.
+        if !a.override_mode && (me.speed - a.current_speed).abs() > 1e-3 {
+            a.set_speed = me.speed;
+        }
+        let lookahead = (2.0 * MIN_DIST + a.current_speed.powi(2) / me.max_dec).max(50.0);
+        let mut min_gap = LARGE;
+        let mut lead: Option<usize> = None;
+        for (i, p) in self.entities.iter().enumerate() {
+            if i == e || !p.active {
+                continue;
+            }
+            if let (Some(net), Some(la), Some(lb)) = (self.net, me.lane, p.lane) {
+                if let Some((ds, same_lane, dt_lat)) = lane_delta(net, la, lb, lookahead) {
+                    let dh = crate::roads::road_follow::wrap(me.h - p.h).abs();
+                    let front = me.bbox[3] / 2.0 + me.bbox[0];
+                    let back = if dh < std::f64::consts::FRAC_PI_2 { p.bbox[3] / 2.0 - p.bbox[0] } else { p.bbox[3] / 2.0 + p.bbox[0] };
+                    let gap = ds - front - back;
+                    if same_lane && gap > 0.0 && gap < min_gap && dt_lat.abs() < a.lateral_dist {
+                        min_gap = gap;
+                        lead = Some(i);
+                    }
+                }
+            }
+            if lead != Some(i) {
+                // Also a vehicle right in front, whatever the lanes say.
+                let x = between(self.net, me, p, CoordinateSystem::Entity, RelativeDistanceType::Longitudinal, true);
+                let y = between(self.net, me, p, CoordinateSystem::Entity, RelativeDistanceType::Lateral, true);
+                if x > 0.0 && x < 1.0 + p.bbox[3] + 0.5 * (a.current_speed - p.speed).max(0.0) && y < 0.2 && y > -0.5 {
+                    min_gap = x;
+                    lead = Some(i);
+                }
+            }
+        }
+        let (max_acc, max_dec) = (me.max_acc, me.max_dec);
+        match lead.and_then(|i| self.entities.get(i)) {
+            Some(l) => {
+                if min_gap < 1.0 {
+                    a.current_speed = 0.0;
+                } else {
+                    let follow = MIN_DIST + a.time_gap * a.current_speed.max(l.speed).abs();
+                    let dist_factor = ((min_gap - follow) / follow).min(1.0);
+                    let dv_min = a.current_speed - a.set_speed.min(l.speed);
+                    let dv_set = a.current_speed - a.set_speed;
+                    let acc = (2.5 * dist_factor - dist_factor * dv_set - (1.0 - dist_factor) * dv_min).clamp(-max_dec, max_acc);
+                    // Never faster than the set speed when following.
+                    a.current_speed = (a.current_speed + acc * dt).max(0.0).min(a.set_speed);
+                }
+            }
+            None => {
+                let acc = ((a.set_speed - a.current_speed) * ACCELERATION_FACTOR * max_acc).clamp(-max_dec, ACCELERATION_FACTOR * max_acc);
+                let v = a.current_speed + acc * dt;
+                a.current_speed = if (v - a.set_speed).abs() > (a.current_speed - a.set_speed).abs() { a.set_speed } else { v };
+            }
+        }
+        let net = self.net;
+        let Some(en) = self.entities.get_mut(e) else { return };
+        if a.override_mode && !en.moved_by_action {
+            match (net, en.lane) {
+                (Some(net), Some(mut lp)) => {
+                    move_along_s(net, &mut lp, a.current_speed * dt);
+                    en.set_lane_pos(net, lp);
+                }
+                _ => {
+                    en.x += a.current_speed * dt * en.h.cos();
+                    en.y += a.current_speed * dt * en.h.sin();
+                }
+            }
+            en.moved_by_action = true;
+        }
+        en.speed = a.current_speed;
+    }
+}

@@ -1,0 +1,74 @@
+//! Controllers: the driver models a scenario assigns to entities (ObjectController or
+//! AssignControllerAction) and switches on with ActivateControllerAction. A controller's type is
+//! its `esminiController` property, else its name (esmini's rule).
+//!
+//! Modelled: ACCController (see `acc`). Every other type leaves the entity to the default
+//! controller and the storyboard, with a warning naming it; the ones that need a human or an
+//! outside process (Interactive, External, SUMO, HID, UDP driver) say so.
+
+pub mod acc;
+
+use crate::sim::Sim;
+use crate::Warning;
+use openscenario::Controller;
+
+/// A controller's state during a run.
+#[derive(Debug, Clone)]
+pub enum ControllerRt {
+    Acc(acc::AccRt),
+}
+
+/// Types that need a driver or a co-simulator outside osc2cr.
+const OUTSIDE_INPUT: [&str; 6] = ["InteractiveController", "ExternalController", "SumoController", "HIDController", "UDPDriverController", "ExternalDriverModel"];
+
+/// The esmini type of a controller.
+pub fn controller_type(c: &Controller) -> &str {
+    c.properties.get("esminiController").unwrap_or(c.name.as_str())
+}
+
+impl<'a> Sim<'a> {
+    /// Assign controller `c` to entity `e`; warns when its type is not modelled.
+    pub fn assign_controller(&mut self, e: usize, c: &Controller) {
+        let kind = controller_type(c);
+        let rt = match kind {
+            "ACCController" => Some(ControllerRt::Acc(acc::AccRt::new(c))),
+            _ => None,
+        };
+        if rt.is_none() {
+            let why = if OUTSIDE_INPUT.contains(&kind) {
+                "needs a driver or a process outside osc2cr"
+            } else {
+                "is not modelled"
+            };
+            self.warnings.push(Warning::at(&c.origin, format!("controller `{}` ({kind}) {why}; the default controller drives and the storyboard's actions apply", c.name)));
+        }
+        if let Some(slot) = self.controllers.get_mut(e) {
+            *slot = rt;
+        }
+    }
+
+    /// ActivateControllerAction on entity `e` for the given domains.
+    pub fn activate_controller(&mut self, e: usize, longitudinal: bool) {
+        let Some(speed) = self.entities.get(e).map(|en| en.speed) else { return };
+        if let Some(Some(ControllerRt::Acc(a))) = self.controllers.get_mut(e) {
+            a.activate(speed, longitudinal);
+        }
+    }
+
+    /// Step every active controller by `dt` (after the storyboard, before the default controller).
+    pub fn step_controllers(&mut self, dt: f64) {
+        for e in 0..self.controllers.len() {
+            let Some(mut rt) = self.controllers.get_mut(e).and_then(|c| c.take()) else { continue };
+            match &mut rt {
+                ControllerRt::Acc(a) => {
+                    if a.active && self.entities.get(e).is_some_and(|en| en.active) {
+                        self.step_acc(e, a, dt);
+                    }
+                }
+            }
+            if let Some(slot) = self.controllers.get_mut(e) {
+                *slot = Some(rt);
+            }
+        }
+    }
+}

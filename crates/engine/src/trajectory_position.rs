@@ -1,0 +1,33 @@
+//! TrajectoryPosition: a point at arc length s along a trajectory, t metres to its left,
+//! facing along the trajectory (turned by a relative orientation, replaced by an absolute one).
+//! The trajectory's own positions are resolved from the run's current state; a clothoid
+//! without a start position starts at the world origin heading east.
+
+use crate::entities::Entity;
+use crate::positions::{resolve, Placement, PositionError};
+use opendrive::RoadNetwork;
+use openscenario::{Orientation, ReferenceContext, Trajectory};
+use trajectory::{Path, Pose};
+
+pub fn trajectory_placement(
+    traj: &Trajectory,
+    s: f64,
+    t: Option<f64>,
+    orientation: Option<&Orientation>,
+    net: Option<&RoadNetwork>,
+    entities: &[Entity],
+) -> Result<Placement, PositionError> {
+    let resolver = |p: &openscenario::Position| {
+        resolve(p, net, entities).ok().map(|pl| Pose::new(pl.x, pl.y, pl.z.unwrap_or(0.0), pl.h))
+    };
+    let path = crate::position_cache::path(traj, || Path::from_trajectory(traj, Pose::default(), &resolver).map_err(|e| e.to_string()));
+    let path = path.map_err(|e| format!("trajectory `{}`: {e}", traj.name))?;
+    let p = path.pose_at(s);
+    let (x, y) = p.offset(t.unwrap_or(0.0));
+    let h = match orientation {
+        Some(Orientation { reference: Some(ReferenceContext::Absolute), h: Some(h), .. }) => *h,
+        Some(Orientation { h: Some(h), .. }) => p.heading + h,
+        _ => p.heading,
+    };
+    Ok(Placement { x, y, z: None, h, lane: None })
+}
