@@ -89,6 +89,14 @@ pub struct ConvertArgs {
     /// Wall-clock limit per scenario, s.
     #[arg(long, default_value_t = 60.0, value_name = "SECS")]
     pub timeout: f64,
+    /// Convert only part K of N of the work (scenarios and variations, in a fixed order; K from
+    /// 1): the N shards together write exactly the files of one run without --shard.
+    #[arg(long, value_name = "K/N")]
+    pub shard: Option<convert::Shard>,
+    /// Also write a PNG picture of each converted scenario beside it (same name, .png): the
+    /// roads, the obstacles at the first time step, the ego and its goal region.
+    #[arg(long)]
+    pub render: bool,
     /// Write a JSON report (per scenario: status, failure, warnings, timings, counts, …).
     #[arg(long, value_name = "FILE")]
     pub report: Option<PathBuf>,
@@ -167,7 +175,7 @@ pub fn run(args: &ConvertArgs) -> Result<(), Failure> {
         .jobs
         .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
         .max(1);
-    let batch = BatchOptions { out_dir: args.output.clone(), jobs, timeout: Some(Duration::from_secs_f64(args.timeout)) };
+    let batch = BatchOptions { out_dir: args.output.clone(), jobs, timeout: Some(Duration::from_secs_f64(args.timeout)), shard: args.shard, render: args.render };
     let bar = bar();
     let report = convert::run_batch(&args.inputs, &options, &batch, &bar).map_err(Failure::input)?;
     bar.0.finish_and_clear();
@@ -205,7 +213,7 @@ pub fn run(args: &ConvertArgs) -> Result<(), Failure> {
         if args.verbose || warnings == 0 { "" } else { " (-v lists them)" },
         args.output.display()
     );
-    if report.scenarios.is_empty() {
+    if report.planned == 0 {
         return Err(Failure::input("no scenario to convert among the inputs"));
     }
     if failed > 0 {
@@ -230,5 +238,6 @@ fn stage_name(s: Stage) -> &'static str {
         Stage::Build => "build",
         Stage::Write => "write",
         Stage::Timeout => "timeout",
+        Stage::Render => "render",
     }
 }

@@ -1,7 +1,8 @@
 //! A batch: every scenario (and every parameter variation) of the inputs, converted in
 //! parallel on `jobs` threads, each within a time limit, each output written whole or not at
 //! all. Results come back in input order whatever the number of threads, and a failing
-//! scenario never stops the others.
+//! scenario never stops the others. With a shard, every output is still named on the whole
+//! batch, and only the shard's part is converted.
 
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
@@ -13,10 +14,13 @@ use rayon::prelude::*;
 
 use crate::discover::{discover, FileKind, Found};
 use crate::options::ConvertOptions;
-use crate::pipeline::{convert_scenario, Conversion, Request};
+use crate::picture::write_picture;
+use crate::pipeline::{convert_scenario_keeping, Conversion, Model, Request};
 use crate::report::{
     BatchReport, Failure, ScenarioReport, Skipped, Stage, StageWarning, Status, Timings, Variation,
 };
+use crate::shard::Shard;
+use crate::single::{batch_name, batch_source};
 use crate::summary::summarise;
 
 /// How a batch runs.
@@ -27,6 +31,10 @@ pub struct BatchOptions {
     pub jobs: usize,
     /// Wall-clock limit per scenario; `None`: none.
     pub timeout: Option<Duration>,
+    /// Convert only this part of the batch (`None`: all of it).
+    pub shard: Option<Shard>,
+    /// Also write a PNG picture beside every converted scenario (`--render`).
+    pub render: bool,
 }
 
 /// Told about the batch's progress (e.g. a progress bar); called from worker threads.
@@ -68,7 +76,17 @@ pub fn run_batch(
     let found = discover(inputs)?;
     let mut skipped = Vec::new();
     let mut early = Vec::new(); // (position, report) of distributions that failed to load
-    let jobs = plan(&found, options, &batch.out_dir, &mut skipped, &mut early);
+    let mut jobs = plan(&found, options, &batch.out_dir, &mut skipped, &mut early);
+    let planned = jobs.len() + early.len();
+    if let Some(shard) = batch.shard {
+        jobs.retain(|(pos, _)| shard.contains(*pos));
+        early.retain(|(pos, _)| shard.contains(*pos));
+        // skipped files are reported once, by the first shard, so that the shards' reports
+        // together list what one unsharded report lists
+        if shard.index() != 1 {
+            skipped.clear();
+        }
+    }
     progress.start(jobs.len() + early.len());
     for (_, r) in &early {
         progress.done(r);
@@ -82,7 +100,7 @@ pub fn run_batch(
     let run: Vec<(usize, ScenarioReport)> = pool.install(|| {
         jobs.par_iter()
             .map(|(pos, job)| {
-                let report = run_job(job, &options, batch.timeout);
+                let report = run_job(job, &options, batch.timeout, batch.render);
                 progress.done(&report);
                 (*pos, report)
             })
@@ -96,6 +114,7 @@ pub fn run_batch(
         scenarios,
         skipped,
         summary,
+        planned,
     })
 }
 
@@ -124,7 +143,7 @@ fn plan(
                         input: f.path.clone(),
                         folder: f.folder.clone(),
                         scenario: f.path.clone(),
-                        name: name_of(&f.path),
+                        name: batch_name(&f.path),
                         output,
                         variation: None,
                         notes: Vec::new(),
@@ -174,7 +193,7 @@ fn plan(
                             input: f.path.clone(),
                             folder: f.folder.clone(),
                             scenario: dist.scenario_file.clone(),
-                            name: name_of(&f.path),
+                            name: batch_name(&f.path),
                             output,
                             variation: Some(Variation {
                                 index: k,
@@ -209,12 +228,6 @@ fn unique(out_dir: &Path, stem: &Path, used: &mut BTreeSet<PathBuf>) -> PathBuf 
     }
 }
 
-fn name_of(path: &Path) -> String {
-    path.file_stem()
-        .map(|s| s.to_string_lossy().into_owned())
-        .unwrap_or_default()
-}
-
 fn failed_early(f: &Found, message: &str) -> ScenarioReport {
     ScenarioReport {
         input: f.path.clone(),
@@ -234,20 +247,19 @@ fn failed_early(f: &Found, message: &str) -> ScenarioReport {
         obstacles: 0,
         duration_s: None,
         tags: Vec::new(),
+        picture: None,
     }
 }
 
 /// Converts in a worker thread so that a scenario over its time limit can be abandoned (the
 /// engine cannot be interrupted; the thread finishes on its own, its result is discarded).
-fn convert_limited(job: &Job, options: &Arc<ConvertOptions>, timeout: Option<Duration>) -> Conversion {
-    let source = match &job.variation {
-        Some(v) => format!(
-            "OpenSCENARIO {} (parameter set {}), converted by osc2cr",
-            file_name(&job.input),
-            v.index
-        ),
-        None => format!("OpenSCENARIO {}, converted by osc2cr", file_name(&job.input)),
-    };
+fn convert_limited(
+    job: &Job,
+    options: &Arc<ConvertOptions>,
+    timeout: Option<Duration>,
+    keep: bool,
+) -> (Conversion, Option<Model>) {
+    let source = batch_source(&job.input, job.variation.as_ref().map(|v| v.index));
     let params = job.variation.as_ref().map(|v| v.parameters.clone()).unwrap_or_default();
     let Some(limit) = timeout else {
         let request = Request {
@@ -257,7 +269,7 @@ fn convert_limited(job: &Job, options: &Arc<ConvertOptions>, timeout: Option<Dur
             parameters: &params,
             source,
         };
-        return convert_scenario(&request, options);
+        return convert_scenario_keeping(&request, options, keep);
     };
     let (tx, rx) = mpsc::channel();
     let (path, name, config) = (
@@ -274,7 +286,7 @@ fn convert_limited(job: &Job, options: &Arc<ConvertOptions>, timeout: Option<Dur
             parameters: &params,
             source,
         };
-        let _ = tx.send(convert_scenario(&request, &opts));
+        let _ = tx.send(convert_scenario_keeping(&request, &opts, keep));
     });
     let timed_out = |msg: String| Conversion {
         result: Err(Failure {
@@ -289,25 +301,27 @@ fn convert_limited(job: &Job, options: &Arc<ConvertOptions>, timeout: Option<Dur
         facts: Default::default(),
     };
     if let Err(e) = spawned {
-        return timed_out(format!("cannot start a worker thread: {e}"));
+        return (timed_out(format!("cannot start a worker thread: {e}")), None);
     }
     match rx.recv_timeout(limit) {
         Ok(c) => c,
-        Err(_) => timed_out(format!(
-            "not converted within the time limit of {} s (--timeout)",
-            limit.as_secs_f64()
-        )),
+        Err(_) => {
+            let message = format!(
+                "not converted within the time limit of {} s (--timeout)",
+                limit.as_secs_f64()
+            );
+            (timed_out(message), None)
+        }
     }
 }
 
-fn file_name(p: &Path) -> String {
-    p.file_name()
-        .map(|s| s.to_string_lossy().into_owned())
-        .unwrap_or_default()
-}
-
-fn run_job(job: &Job, options: &Arc<ConvertOptions>, timeout: Option<Duration>) -> ScenarioReport {
-    let mut c = convert_limited(job, options, timeout);
+fn run_job(
+    job: &Job,
+    options: &Arc<ConvertOptions>,
+    timeout: Option<Duration>,
+    render: bool,
+) -> ScenarioReport {
+    let (mut c, model) = convert_limited(job, options, timeout, render);
     let mut warnings = job.notes.clone();
     warnings.append(&mut c.warnings);
     let mut output = None;
@@ -338,6 +352,17 @@ fn run_job(job: &Job, options: &Arc<ConvertOptions>, timeout: Option<Duration>) 
         }
         Err(f) => Some(f),
     };
+    // a picture that cannot be drawn or written is a warning: the scenario itself is fine
+    let mut picture = None;
+    if let (Some(out), Some(model)) = (&output, &model) {
+        match write_picture(out, model) {
+            Ok(p) => picture = Some(p),
+            Err(message) => warnings.push(StageWarning {
+                stage: Stage::Render,
+                message,
+            }),
+        }
+    }
     ScenarioReport {
         input: job.input.clone(),
         folder: job.folder.clone(),
@@ -357,5 +382,6 @@ fn run_job(job: &Job, options: &Arc<ConvertOptions>, timeout: Option<Duration>) 
         obstacles: c.facts.obstacles,
         duration_s: c.facts.duration_s,
         tags: c.facts.tags,
+        picture,
     }
 }

@@ -3,11 +3,12 @@
 //! `engine` run the storyboard, turns the trace into CommonRoad obstacles (Table I types,
 //! bounding-box centres, headings wrapped and resampled to the CommonRoad step) and the ego's
 //! planning problem, checks and serialises the result; and it runs batches of scenario files
-//! and parameter variations in parallel with a report per scenario.
+//! and parameter variations in parallel with a report per scenario, whole or as one shard.
 //!
 //! It glues the other crates together and owns the OpenSCENARIO → CommonRoad mapping; it does
-//! not parse files itself, simulate, convert roads, or print anything (warnings, failures and
-//! timings are returned as data; the `osc2cr` binary presents them).
+//! not parse files itself, simulate, convert roads, draw (`render` draws the pictures of
+//! `--render`), or print anything (warnings, failures and timings are returned as data; the
+//! `osc2cr` binary presents them).
 
 mod angle;
 mod assemble;
@@ -20,9 +21,12 @@ mod header;
 mod obstacle_type;
 mod obstacles;
 mod options;
+mod picture;
 mod pipeline;
 mod report;
 mod resample;
+mod shard;
+mod single;
 mod stages;
 mod summary;
 mod tags;
@@ -39,12 +43,17 @@ pub use header::{benchmark_id, check_country, date_prefix, fallback_date, parse_
 pub use obstacle_type::{cr_type, CrType};
 pub use obstacles::{obstacles, Obstacles};
 pub use options::ConvertOptions;
-pub use pipeline::{convert_scenario, Conversion, Facts, Request};
+pub use picture::{picture_path, write_picture};
+pub use pipeline::{convert_scenario, convert_scenario_keeping, Conversion, Facts, Model, Request};
 pub use report::{
     BatchReport, Failure, FolderSummary, ScenarioReport, Skipped, Stage, StageWarning, Status,
     Timings, Variation,
 };
 pub use resample::{cr_step_count, resample, whole_multiple, Pose};
+pub use shard::Shard;
+pub use single::{
+    batch_name, batch_source, convert_file, convert_variation, load_distribution, output_file_name,
+};
 pub use summary::{render as render_summary, summarise};
 pub use tags::scenario_tags;
 pub use tracks::{tracks, Placement, Track, MIN_BOX_SIDE};

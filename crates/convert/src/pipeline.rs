@@ -55,8 +55,25 @@ fn ms(t: Instant) -> f64 {
     t.elapsed().as_secs_f64() * 1e3
 }
 
+/// The CommonRoad model a conversion serialised, kept on request (e.g. to draw it).
+#[derive(Debug, Clone)]
+pub struct Model {
+    pub scenario: commonroad::Scenario,
+    pub problems: commonroad::PlanningProblemSet,
+}
+
 /// Converts one scenario file into CommonRoad XML bytes (nothing is written).
 pub fn convert_scenario(request: &Request<'_>, options: &ConvertOptions) -> Conversion {
+    convert_scenario_keeping(request, options, false).0
+}
+
+/// Like [`convert_scenario`]; with `keep`, a successful conversion also returns the model it
+/// serialised (not kept otherwise: a batch of large maps should not hold every model).
+pub fn convert_scenario_keeping(
+    request: &Request<'_>,
+    options: &ConvertOptions,
+    keep: bool,
+) -> (Conversion, Option<Model>) {
     let start = Instant::now();
     let mut c = Conversion {
         result: Err(Failure {
@@ -67,9 +84,14 @@ pub fn convert_scenario(request: &Request<'_>, options: &ConvertOptions) -> Conv
         timings: Timings::default(),
         facts: Facts::default(),
     };
-    c.result = run(request, options, &mut c.warnings, &mut c.timings, &mut c.facts);
+    let mut model = None;
+    c.result = run(request, options, &mut c.warnings, &mut c.timings, &mut c.facts)
+        .map(|(bytes, m)| {
+            model = keep.then_some(m);
+            bytes
+        });
     c.timings.total_ms = ms(start);
-    c
+    (c, model)
 }
 
 fn fail(stage: Stage, message: impl Into<String>) -> Failure {
@@ -92,7 +114,7 @@ fn run(
     warnings: &mut Vec<StageWarning>,
     timings: &mut Timings,
     facts: &mut Facts,
-) -> Result<Vec<u8>, Failure> {
+) -> Result<(Vec<u8>, Model), Failure> {
     options.check().map_err(|m| fail(Stage::Load, m))?;
 
     // 1. the scenario
@@ -173,7 +195,11 @@ fn run(
     let bytes = commonroad::xml::write_scenario(&built.scenario, &built.problems)
         .map_err(|e| fail(Stage::Write, e.to_string()))?;
     timings.write_ms = ms(t);
-    Ok(bytes)
+    let model = Model {
+        scenario: built.scenario,
+        problems: built.problems,
+    };
+    Ok((bytes, model))
 }
 
 fn header(request: &Request<'_>, scenario: &Scenario, options: &ConvertOptions) -> Result<Header, String> {

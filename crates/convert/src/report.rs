@@ -22,6 +22,8 @@ pub enum Stage {
     Write,
     /// The per-scenario time limit.
     Timeout,
+    /// The picture beside the output (`--render`); only ever a warning.
+    Render,
 }
 
 /// A warning of one stage.
@@ -87,6 +89,8 @@ pub struct ScenarioReport {
     /// Simulated duration, s.
     pub duration_s: Option<f64>,
     pub tags: Vec<String>,
+    /// The picture written beside the output (`--render`).
+    pub picture: Option<PathBuf>,
 }
 
 /// A file of a batch that is not a scenario.
@@ -116,6 +120,8 @@ pub struct BatchReport {
     pub scenarios: Vec<ScenarioReport>,
     pub skipped: Vec<Skipped>,
     pub summary: Vec<FolderSummary>,
+    /// Conversions of the whole batch, all shards together (`scenarios` holds one shard's).
+    pub planned: usize,
 }
 
 impl BatchReport {

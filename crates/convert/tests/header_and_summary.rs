@@ -45,6 +45,7 @@ fn report(folder: &str, ok: bool, ms: f64, dur: f64) -> ScenarioReport {
         obstacles: 0,
         duration_s: Some(dur),
         tags: Vec::new(),
+        picture: None,
     }
 }
 

@@ -1,0 +1,131 @@
+//! `osc2cr convert --shard K/N`: the N shards of a folder (scenarios, a parameter distribution,
+//! a name collision, a sub-folder) together write exactly the files of one unsharded run —
+//! same names, same bytes — and each conversion is done by exactly one shard.
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn osc2cr(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_osc2cr"))
+        .args(args)
+        .output()
+        .expect("osc2cr runs")
+}
+
+fn tmp(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("osc2cr-shard-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).expect("temp dir");
+    d
+}
+
+fn s(p: &Path) -> &str {
+    p.to_str().expect("utf-8 path")
+}
+
+/// Every file under `dir` (relative path → bytes).
+fn files(dir: &Path) -> BTreeMap<PathBuf, Vec<u8>> {
+    let mut out = BTreeMap::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        for e in std::fs::read_dir(&d).expect("read dir").flatten() {
+            let p = e.path();
+            if p.is_dir() {
+                stack.push(p);
+            } else {
+                let rel = p.strip_prefix(dir).expect("under dir").to_path_buf();
+                out.insert(rel, std::fs::read(&p).expect("read output"));
+            }
+        }
+    }
+    out
+}
+
+/// A library folder: the shipped example, a 3 × 3 distribution over it (converted up to 7),
+/// a scenario whose name collides with the distribution's first variation, and a sub-folder.
+fn library() -> PathBuf {
+    let root = testkit::workspace_root().join("examples");
+    let lib = tmp("lib");
+    let scenario = std::fs::read_to_string(root.join("cut_in.xosc")).expect("example");
+    let road = std::fs::read(root.join("two_lane_curve.xodr")).expect("example road");
+    std::fs::create_dir_all(lib.join("sub")).expect("sub folder");
+    for dir in [lib.clone(), lib.join("sub")] {
+        std::fs::write(dir.join("cut_in.xosc"), &scenario).expect("write");
+        std::fs::write(dir.join("two_lane_curve.xodr"), &road).expect("write");
+    }
+    std::fs::write(lib.join("speeds_1.xosc"), &scenario).expect("write");
+    let dist = r#"<?xml version="1.0" encoding="utf-8"?>
+<OpenSCENARIO>
+  <FileHeader revMajor="1" revMinor="2" date="2026-01-02T00:00:00" description="speeds" author="test"/>
+  <ParameterValueDistribution>
+    <ScenarioFile filepath="cut_in.xosc"/>
+    <Deterministic>
+      <DeterministicSingleParameterDistribution parameterName="EgoSpeed">
+        <DistributionSet><Element value="10"/><Element value="12"/><Element value="15"/></DistributionSet>
+      </DeterministicSingleParameterDistribution>
+      <DeterministicSingleParameterDistribution parameterName="OvertakerSpeed">
+        <DistributionRange stepWidth="2"><Range lowerLimit="20" upperLimit="24"/></DistributionRange>
+      </DeterministicSingleParameterDistribution>
+    </Deterministic>
+  </ParameterValueDistribution>
+</OpenSCENARIO>
+"#;
+    std::fs::write(lib.join("speeds.xosc"), dist).expect("write");
+    lib
+}
+
+#[test]
+fn three_shards_write_exactly_the_unsharded_files() {
+    let lib = library();
+    let common = ["--max-variations", "7", "-j", "2"];
+    let run = |out: &Path, shard: Option<&str>| {
+        let mut args = vec!["convert", s(&lib), "-o", s(out)];
+        args.extend(common);
+        if let Some(k) = shard {
+            args.extend(["--shard", k]);
+        }
+        let r = osc2cr(&args);
+        assert!(r.status.success(), "{:?}: {}", shard, String::from_utf8_lossy(&r.stderr));
+        files(out)
+    };
+    let whole = run(&tmp("whole"), None);
+
+    // names by the CLI's rule: files in sorted order (cut_in, speeds, speeds_1, sub/cut_in),
+    // variations `_k` for k = 1..=7, and `-2` for the second claim on a name
+    let mut expected: Vec<PathBuf> = vec!["cut_in.xml".into()];
+    expected.extend((1..=7).map(|k| PathBuf::from(format!("speeds_{k}.xml"))));
+    expected.push("speeds_1-2.xml".into());
+    expected.push(PathBuf::from("sub").join("cut_in.xml"));
+    expected.sort();
+    assert_eq!(whole.keys().cloned().collect::<Vec<_>>(), expected);
+
+    let mut union = BTreeMap::new();
+    let mut sizes = Vec::new();
+    for k in 1..=3 {
+        let part = run(&tmp(&format!("shard{k}")), Some(&format!("{k}/3")));
+        sizes.push(part.len());
+        for (name, bytes) in part {
+            assert!(union.insert(name.clone(), bytes).is_none(), "{} written by two shards", name.display());
+        }
+    }
+    // 10 conversions at positions 0..9: p mod 3 = 0 → 4, 1 → 3, 2 → 3
+    assert_eq!(sizes, vec![4, 3, 3]);
+    assert_eq!(union.keys().collect::<Vec<_>>(), whole.keys().collect::<Vec<_>>());
+    for (name, bytes) in &whole {
+        assert!(union[name] == *bytes, "{} differs between the shard and the whole run", name.display());
+    }
+}
+
+#[test]
+fn more_shards_than_work_is_not_an_error_and_a_bad_shard_is() {
+    let example = testkit::workspace_root().join("examples/cut_in.xosc");
+    let out = tmp("empty-shard");
+    let r = osc2cr(&["convert", s(&example), "-o", s(&out), "--shard", "2/2"]);
+    assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
+    assert!(files(&out).is_empty(), "the only scenario belongs to shard 1");
+    for bad in ["0/2", "3/2", "1/0", "half"] {
+        let r = osc2cr(&["convert", s(&example), "-o", s(&out), "--shard", bad]);
+        assert_eq!(r.status.code(), Some(2), "--shard {bad}");
+    }
+}

@@ -1,0 +1,120 @@
+//! One conversion named exactly as a batch names it — the same benchmark id, header source
+//! and output file name — so that callers outside a batch (the Python package, a distributed
+//! scheduler) produce the bytes and files `osc2cr convert` produces.
+
+use std::path::{Path, PathBuf};
+
+use openscenario::{Content, Distribution, LoadOptions};
+
+use crate::options::ConvertOptions;
+use crate::pipeline::{convert_scenario, Conversion, Request};
+use crate::report::{Failure, Stage};
+
+/// Header source of a batch conversion: `input` is the file given (scenario or distribution),
+/// `variation` the 1-based parameter set of a distribution.
+pub fn batch_source(input: &Path, variation: Option<u64>) -> String {
+    match variation {
+        Some(k) => format!(
+            "OpenSCENARIO {} (parameter set {k}), converted by osc2cr",
+            file_name(input)
+        ),
+        None => format!("OpenSCENARIO {}, converted by osc2cr", file_name(input)),
+    }
+}
+
+/// The scenario name of the benchmark id: the stem of the file given.
+pub fn batch_name(input: &Path) -> String {
+    input
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default()
+}
+
+/// The output file name of a file given directly: `<stem>.xml`, or `<stem>_<k>.xml` for
+/// variation `k` (a batch adds `-2`, `-3`, … only when two inputs would share a name).
+pub fn output_file_name(input: &Path, variation: Option<u64>) -> PathBuf {
+    let stem = input
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "scenario".into());
+    match variation {
+        Some(k) => PathBuf::from(format!("{stem}_{k}.xml")),
+        None => PathBuf::from(format!("{stem}.xml")),
+    }
+}
+
+fn file_name(p: &Path) -> String {
+    p.file_name()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default()
+}
+
+/// Converts the scenario file `path` as `osc2cr convert path` does (no file is written).
+pub fn convert_file(path: &Path, options: &ConvertOptions) -> Conversion {
+    let name = batch_name(path);
+    let request = Request {
+        path,
+        name: &name,
+        config: 1,
+        parameters: &[],
+        source: batch_source(path, None),
+    };
+    convert_scenario(&request, options)
+}
+
+/// Loads the parameter distribution file `path` with the options' global parameters and seed,
+/// as a batch does. `Err` when it cannot be loaded or is not a distribution.
+pub fn load_distribution(path: &Path, options: &ConvertOptions) -> Result<Distribution, Failure> {
+    let load = LoadOptions {
+        parameters: options.parameters.clone(),
+        seed: options.seed,
+    };
+    let fail = |message: String| Failure {
+        stage: Stage::Load,
+        message,
+    };
+    match openscenario::load(path, &load) {
+        Ok(l) => match l.content {
+            Content::Distribution(d) => Ok(d),
+            _ => Err(fail(format!(
+                "{}: expected a ParameterValueDistribution",
+                path.display()
+            ))),
+        },
+        Err(e) => Err(fail(e.to_string())),
+    }
+}
+
+/// Converts variation `index` (1-based) of the distribution `dist` loaded from `path`, as a
+/// batch does; a failure when the distribution has no such run.
+pub fn convert_variation(
+    path: &Path,
+    dist: &Distribution,
+    index: u64,
+    options: &ConvertOptions,
+) -> Conversion {
+    let Some(parameters) = index.checked_sub(1).and_then(|i| dist.get(i)) else {
+        return Conversion {
+            result: Err(Failure {
+                stage: Stage::Load,
+                message: format!(
+                    "{}: no parameter set {index}; the distribution has {} (numbered from 1)",
+                    path.display(),
+                    dist.len()
+                ),
+            }),
+            warnings: Vec::new(),
+            timings: Default::default(),
+            facts: Default::default(),
+        };
+    };
+    let name = batch_name(path);
+    let request = Request {
+        path: &dist.scenario_file,
+        name: &name,
+        config: index,
+        parameters: &parameters,
+        source: batch_source(path, Some(index)),
+    };
+    convert_scenario(&request, options)
+}

@@ -1,0 +1,116 @@
+//! Failures → `osc2cr.ConversionError` (defined in Python, `osc2cr/_errors.py`, so that it
+//! pickles across processes with its attributes): the message, and the file, line and column
+//! when the message starts with a position (`path:line:col: …` or `path: …`, the form every
+//! loader error takes).
+
+use std::path::Path;
+
+use convert::{Failure, Stage};
+use pyo3::prelude::*;
+
+/// Where a failure happened, as far as its message says.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Position {
+    pub file: String,
+    pub line: Option<u32>,
+    pub column: Option<u32>,
+    /// The message without the position.
+    pub detail: String,
+}
+
+/// Splits `path:line:col: detail` (the path may itself contain `:`); else `path: detail` when
+/// the message starts with `fallback` (the file converted); else no file is known from the text
+/// and `fallback` is the file.
+pub fn position(message: &str, fallback: &Path) -> Position {
+    // the first ":<digits>:<digits>: " marks the end of the path
+    let bytes = message.as_bytes();
+    let mut i = 0;
+    while let Some(off) = message[i..].find(':') {
+        let start = i + off;
+        if let Some((line, col, rest)) = numbers_after(&message[start + 1..]) {
+            if start > 0 {
+                return Position {
+                    file: message[..start].to_string(),
+                    line: Some(line),
+                    column: Some(col),
+                    detail: rest.to_string(),
+                };
+            }
+        }
+        i = start + 1;
+        if i >= bytes.len() {
+            break;
+        }
+    }
+    let file = fallback.display().to_string();
+    let detail = message
+        .strip_prefix(file.as_str())
+        .and_then(|r| r.strip_prefix(": "))
+        .unwrap_or(message);
+    Position {
+        file,
+        line: None,
+        column: None,
+        detail: detail.to_string(),
+    }
+}
+
+/// `"12:5: rest"` → (12, 5, "rest").
+fn numbers_after(s: &str) -> Option<(u32, u32, &str)> {
+    let (line, rest) = s.split_once(':')?;
+    let (col, rest) = rest.split_once(':')?;
+    let line = digits(line)?;
+    let col = digits(col)?;
+    Some((line, col, rest.strip_prefix(' ').unwrap_or(rest)))
+}
+
+fn digits(s: &str) -> Option<u32> {
+    if s.is_empty() || !s.bytes().all(|b| b.is_ascii_digit()) {
+        return None;
+    }
+    s.parse().ok()
+}
+
+pub fn stage_name(s: Stage) -> &'static str {
+    match s {
+        Stage::Load => "load",
+        Stage::RoadNetwork => "road_network",
+        Stage::Map => "map",
+        Stage::Engine => "engine",
+        Stage::Build => "build",
+        Stage::Write => "write",
+        Stage::Timeout => "timeout",
+        Stage::Render => "render",
+    }
+}
+
+/// The Python exception for `failure` of converting `file` (variation `variation`, if any).
+pub fn conversion_error(py: Python<'_>, failure: &Failure, file: &Path, variation: Option<u64>) -> PyErr {
+    let p = position(&failure.message, file);
+    let made = (|| -> PyResult<PyErr> {
+        let class = py.import("osc2cr._errors")?.getattr("ConversionError")?;
+        let value = class.call1((
+            failure.message.clone(),
+            p.file,
+            p.line,
+            p.column,
+            stage_name(failure.stage),
+            variation,
+        ))?;
+        Ok(PyErr::from_value(value))
+    })();
+    made.unwrap_or_else(|e| e)
+}
+
+/// A reason given as text (e.g. "not a scenario"), for `file`.
+pub fn message_error(py: Python<'_>, message: String, file: &Path) -> PyErr {
+    conversion_error(
+        py,
+        &Failure {
+            stage: Stage::Load,
+            message,
+        },
+        file,
+        None,
+    )
+}

@@ -1,0 +1,92 @@
+//! `osc2cr-python`: the native module `osc2cr._osc2cr` of the Python package `osc2cr`
+//! (PyO3, built with maturin). It exposes the Rust converter to Python as plain values — XML
+//! text, parameter dicts, warnings as (stage, message) pairs — and raises
+//! `osc2cr.ConversionError` with file, line and column on failure. Conversions run with the
+//! GIL released, so Python threads (a Dask worker's, for one) convert in parallel.
+//!
+//! It owns only the mapping between Python values and `convert`'s API: it knows nothing of
+//! commonroad-io (the Python side reads the XML with it) and does no conversion itself.
+
+mod errors;
+mod options;
+mod variations;
+
+use std::path::PathBuf;
+
+use convert::{Conversion, FileKind};
+use pyo3::prelude::*;
+
+pub use variations::Variations;
+
+/// (XML text, [(stage, warning message)]) of a successful conversion.
+type Converted = (String, Vec<(&'static str, String)>);
+
+fn finish(py: Python<'_>, c: Conversion, file: &std::path::Path, variation: Option<u64>) -> PyResult<Converted> {
+    let warnings = c
+        .warnings
+        .iter()
+        .map(|w| (errors::stage_name(w.stage), w.message.clone()))
+        .collect();
+    match c.result {
+        Ok(bytes) => Ok((String::from_utf8_lossy(&bytes).into_owned(), warnings)),
+        Err(f) => Err(errors::conversion_error(py, &f, file, variation)),
+    }
+}
+
+/// Converts the scenario file `path`; returns (xml, warnings). The bytes are those
+/// `osc2cr convert path` writes.
+#[pyfunction]
+#[pyo3(signature = (path, **options))]
+fn convert_file(
+    py: Python<'_>,
+    path: PathBuf,
+    options: Option<&Bound<'_, pyo3::types::PyDict>>,
+) -> PyResult<Converted> {
+    let (opts, _) = options::from_kwargs(options)?;
+    let c = py.detach(|| convert::convert_file(&path, &opts));
+    if c.result.is_err() && convert::classify(&path) == FileKind::Distribution {
+        return Err(errors::message_error(
+            py,
+            format!(
+                "{}: a parameter value distribution: convert its variations with osc2cr.variations()",
+                path.display()
+            ),
+            &path,
+        ));
+    }
+    finish(py, c, &path, None)
+}
+
+/// Converts variation `index` (1-based) of the distribution file `path`; returns (xml, warnings).
+#[pyfunction]
+#[pyo3(signature = (path, index, **options))]
+fn convert_variation(
+    py: Python<'_>,
+    path: PathBuf,
+    index: u64,
+    options: Option<&Bound<'_, pyo3::types::PyDict>>,
+) -> PyResult<Converted> {
+    let (opts, _) = options::from_kwargs(options)?;
+    let dist = convert::load_distribution(&path, &opts)
+        .map_err(|f| errors::conversion_error(py, &f, &path, None))?;
+    let c = py.detach(|| convert::convert_variation(&path, &dist, index, &opts));
+    finish(py, c, &path, Some(index))
+}
+
+/// The options the functions accept.
+#[pyfunction]
+fn option_names() -> Vec<&'static str> {
+    options::NAMES.to_vec()
+}
+
+/// Native part of the `osc2cr` package; use the functions of `osc2cr` instead.
+#[pymodule]
+fn _osc2cr(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(convert_file, m)?)?;
+    m.add_function(wrap_pyfunction!(convert_variation, m)?)?;
+    m.add_function(wrap_pyfunction!(variations::variations, m)?)?;
+    m.add_function(wrap_pyfunction!(option_names, m)?)?;
+    m.add_class::<Variations>()?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    Ok(())
+}
