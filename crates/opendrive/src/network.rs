@@ -65,7 +65,21 @@ pub fn parse_str(text: &str, file: &Path) -> Result<Loaded, Error> {
     for (i, j) in parsed.junctions.iter().enumerate() {
         junction_ids.entry(j.id.clone()).or_insert(i);
     }
-    let index = SpatialIndex::build(&parsed.roads);
+    let (index, coarse) = SpatialIndex::build(&parsed.roads);
+    let mut warnings = parsed.warnings;
+    for r in coarse.iter().filter_map(|&i| parsed.roads.get(i)) {
+        warnings.push(Warning {
+            file: file.to_path_buf(),
+            line: r.pos.line,
+            col: r.pos.col,
+            message: format!(
+                "road `{}`: its reference line is too long or too tightly curved for the spatial index (more than {} samples per road, {} per network); sampled coarser, so finding a position near it is slower and less exact",
+                r.id,
+                crate::spatial_index::MAX_SAMPLES_PER_ROAD,
+                crate::spatial_index::MAX_SEGMENTS
+            ),
+        });
+    }
     let network = RoadNetwork {
         file: file.to_path_buf(),
         header: parsed.header,
@@ -76,7 +90,6 @@ pub fn parse_str(text: &str, file: &Path) -> Result<Loaded, Error> {
         junction_ids,
         index,
     };
-    let mut warnings = parsed.warnings;
     warnings.extend(network.check_references());
     Ok(Loaded { network, warnings })
 }

@@ -101,14 +101,20 @@ impl Road {
     /// Borders of every lane of one side at `s`, innermost first: (lane id, borders).
     /// `left` selects positive ids. Gaps in the id sequence are tolerated.
     pub fn side_borders(&self, section_idx: usize, left: bool, s: f64) -> Vec<(i32, LaneBorders)> {
-        let Some(sec) = self.lane_sections.get(section_idx) else { return Vec::new() };
-        let lanes: &[Lane] = if left { &sec.left } else { &sec.right };
+        self.side_border_iter(section_idx, left, s).collect()
+    }
+
+    /// [`Road::side_borders`] without collecting: the borders are cumulated lazily, so a
+    /// caller that needs only the outermost lane allocates nothing.
+    pub fn side_border_iter(&self, section_idx: usize, left: bool, s: f64) -> impl ExactSizeIterator<Item = (i32, LaneBorders)> + '_ {
+        let (lanes, ds): (&[Lane], f64) = match self.lane_sections.get(section_idx) {
+            Some(sec) => (if left { &sec.left } else { &sec.right }, s - sec.s),
+            None => (&[], 0.0),
+        };
         let sign = if left { 1.0 } else { -1.0 };
-        let base = self.lane_offset_at(s);
-        let ds = s - sec.s;
+        let base = if lanes.is_empty() { 0.0 } else { self.lane_offset_at(s) };
         let mut inner = base;
-        let mut out = Vec::with_capacity(lanes.len());
-        for lane in lanes {
+        lanes.iter().map(move |lane| {
             let outer = if !lane.widths.is_empty() {
                 inner + sign * record_at(&lane.widths, ds).map_or(0.0, |r| r.value(ds - r.s))
             } else if let Some(b) = record_at(&lane.borders, ds) {
@@ -116,10 +122,10 @@ impl Road {
             } else {
                 inner
             };
-            out.push((lane.id, LaneBorders { inner, outer }));
+            let b = LaneBorders { inner, outer };
             inner = outer;
-        }
-        out
+            (lane.id, b)
+        })
     }
 
     /// Borders of lane `lane_id` of section `section_idx` at `s` (centre lane: both at the

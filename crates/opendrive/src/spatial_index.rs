@@ -5,10 +5,16 @@ use crate::model::road::Road;
 
 /// Reference lines are sampled at most this far apart (and closer on curves).
 const MAX_STEP: f64 = 2.0;
-/// Hostile-input caps: samples per road, grid cells, lateral reach.
-const MAX_SAMPLES_PER_ROAD: usize = 200_000;
+/// Hostile-input caps: samples per road and per network (a segment is 64 bytes), grid
+/// cells, lateral reach. Past a sample cap a road is sampled coarser (and its reach widened
+/// to match), never dropped.
+pub const MAX_SAMPLES_PER_ROAD: usize = 200_000;
+pub const MAX_SEGMENTS: usize = 1_000_000;
 const MAX_CELLS: f64 = 4_000_000.0;
 const MAX_REACH: f64 = 500.0;
+/// Budget of (cell, segment) entries of the grid (4 bytes each), unless the segments alone
+/// need more (each is entered at least once).
+const MAX_ENTRIES: usize = 2_000_000;
 
 /// A piece of a reference line between two samples.
 #[derive(Debug, Clone, Copy)]
@@ -48,53 +54,87 @@ pub struct SpatialIndex {
     items: Vec<u32>,
 }
 
-fn road_segments(idx: usize, road: &Road, out: &mut Vec<Segment>) {
-    let mut stations = Vec::new();
+/// Stations along one road's reference line, each with the slack to add to the reach of the
+/// segment that starts there, and whether the road had to be sampled coarser than wanted.
+fn road_stations(road: &Road, budget: usize) -> (Vec<(f64, f64)>, bool) {
+    // (start, end, wanted count) per geometry
+    let mut pieces = Vec::with_capacity(road.geometries.len());
+    let mut wanted = 0usize;
     for g in &road.geometries {
         let k = g.max_abs_curvature();
         // Chord error of a step h on curvature k is k h²/8: keep it under ~1 cm.
         let step = if k > 0.0 { MAX_STEP.min((0.08 / k).sqrt()) } else { MAX_STEP };
         let end = (g.s + g.length).min(road.length);
-        let n = (((end - g.s) / step).ceil().max(1.0) as usize).min(MAX_SAMPLES_PER_ROAD);
-        for i in 0..n {
-            stations.push(g.s + (end - g.s) * i as f64 / n as f64);
-        }
-        if stations.len() > MAX_SAMPLES_PER_ROAD {
-            break;
-        }
+        let n = ((end - g.s) / step).ceil().clamp(1.0, 1e15) as usize;
+        wanted = wanted.saturating_add(n);
+        pieces.push((g.s, end, n));
     }
-    stations.push(road.length);
-    stations.retain(|s| s.is_finite());
-    stations.dedup_by(|a, b| (*a - *b).abs() < 1e-9);
+    // Over budget (a long, tight arc): spread the budget by the wanted counts. A point of a
+    // curve between two stations h apart (in s) lies within h/2 of one of them, so adding
+    // h/2 to the reach keeps every road found; only the projection's first guess is worse.
+    let scale = if wanted > budget { budget as f64 / wanted as f64 } else { 1.0 };
+    let mut stations = Vec::with_capacity(wanted.min(budget) + 1);
+    for &(a, b, n) in &pieces {
+        let m = ((n as f64 * scale).floor() as usize).clamp(1, n);
+        let slack = if m < n { 0.5 * (b - a) / m as f64 } else { 0.0 };
+        stations.extend((0..m).map(|i| (a + (b - a) * i as f64 / m as f64, slack)));
+    }
+    stations.push((road.length, 0.0));
+    stations.retain(|(s, _)| s.is_finite());
+    // keep the larger slack of merged stations
+    stations.dedup_by(|b, a| {
+        let same = (a.0 - b.0).abs() < 1e-9;
+        if same {
+            a.1 = a.1.max(b.1);
+        }
+        same
+    });
+    (stations, scale < 1.0)
+}
+
+/// Appends the segments of road `idx`; returns whether it was sampled coarser than wanted.
+fn road_segments(idx: usize, road: &Road, budget: usize, out: &mut Vec<Segment>) -> bool {
+    let (stations, coarse) = road_stations(road, budget);
     let reach_at = |s: f64| {
         let sec = road.section_index_at(s);
-        let l = road.side_borders(sec, true, s).last().map_or(0.0, |(_, b)| b.outer.abs());
-        let r = road.side_borders(sec, false, s).last().map_or(0.0, |(_, b)| b.outer.abs());
+        let l = road.side_border_iter(sec, true, s).last().map_or(0.0, |(_, b)| b.outer.abs());
+        let r = road.side_border_iter(sec, false, s).last().map_or(0.0, |(_, b)| b.outer.abs());
         l.max(r).max(road.lane_offset_at(s).abs())
     };
-    let mut prev: Option<(f64, f64, f64, f64)> = None;
-    for &s in &stations {
+    let mut prev: Option<(f64, f64, f64, f64, f64)> = None;
+    for &(s, slack) in &stations {
         let p = road.reference_pose(s);
         let reach = reach_at(s);
-        if let Some((s0, x0, y0, r0)) = prev {
-            out.push(Segment { road: idx, s0, s1: s, x0, y0, x1: p.x, y1: p.y, reach: (r0.max(reach) + 2.0).min(MAX_REACH) });
+        if let Some((s0, x0, y0, r0, slack0)) = prev {
+            out.push(Segment { road: idx, s0, s1: s, x0, y0, x1: p.x, y1: p.y, reach: (r0.max(reach) + 2.0).min(MAX_REACH) + slack0 });
         }
-        prev = Some((s, p.x, p.y, reach));
+        prev = Some((s, p.x, p.y, reach, slack));
     }
     if stations.len() == 1 {
-        if let Some((s0, x0, y0, r0)) = prev {
+        if let Some((s0, x0, y0, r0, _)) = prev {
             out.push(Segment { road: idx, s0, s1: s0, x0, y0, x1: x0, y1: y0, reach: (r0 + 2.0).min(MAX_REACH) });
         }
     }
+    coarse
 }
 
 impl SpatialIndex {
-    /// Build the index over all roads.
-    pub fn build(roads: &[Road]) -> SpatialIndex {
+    /// Build the index over all roads; also returns the indices of the roads that had to be
+    /// sampled coarser than wanted (hostile-input caps, see [`MAX_SAMPLES_PER_ROAD`]).
+    pub fn build(roads: &[Road]) -> (SpatialIndex, Vec<usize>) {
         let mut segments = Vec::new();
+        let mut coarse = Vec::new();
         for (i, r) in roads.iter().enumerate() {
-            road_segments(i, r, &mut segments);
+            let budget = MAX_SAMPLES_PER_ROAD.min(MAX_SEGMENTS.saturating_sub(segments.len()));
+            if road_segments(i, r, budget, &mut segments) {
+                coarse.push(i);
+            }
         }
+        (SpatialIndex::grid(segments), coarse)
+    }
+
+    /// The grid over `segments`.
+    fn grid(segments: Vec<Segment>) -> SpatialIndex {
         let (mut min_x, mut min_y, mut max_x, mut max_y) = (f64::MAX, f64::MAX, f64::MIN, f64::MIN);
         for sg in &segments {
             min_x = min_x.min(sg.x0.min(sg.x1) - sg.reach);
@@ -106,12 +146,17 @@ impl SpatialIndex {
             return SpatialIndex { segments, cell: 1.0, ..Default::default() };
         }
         let (w, h) = ((max_x - min_x).max(1.0), (max_y - min_y).max(1.0));
-        let cell = 8.0f64.max((w * h / MAX_CELLS).sqrt());
-        let nx = (w / cell).ceil() as usize + 1;
-        let ny = (h / cell).ceil() as usize + 1;
-        let mut index = SpatialIndex { segments, min_x, min_y, cell, nx, ny, cell_start: Vec::new(), items: Vec::new() };
+        let mut index = SpatialIndex { segments, min_x, min_y, ..Default::default() };
+        index.set_cell(8.0f64.max((w * h / MAX_CELLS).sqrt()), w, h);
+        // Many wide segments over a small area (a long, tight arc with very wide lanes) would
+        // each be entered in thousands of cells: coarsen the grid until the entries fit the
+        // budget. Corpus maps stay far below it, so their grid is unchanged.
+        let budget = MAX_ENTRIES.max(4 * index.segments.len());
+        while index.entry_count() > budget && index.cell < w.max(h) {
+            index.set_cell(index.cell * 2.0, w, h);
+        }
         // Two passes (count, fill) keep memory compact and the order deterministic.
-        let mut counts = vec![0u32; nx * ny + 1];
+        let mut counts = vec![0u32; index.nx * index.ny + 1];
         index.for_each_cell_of_segments(|c, _| counts[c] += 1);
         let mut start = Vec::with_capacity(counts.len());
         let mut acc = 0u32;
@@ -132,6 +177,21 @@ impl SpatialIndex {
         index.cell_start = start;
         index.items = items;
         index
+    }
+
+    fn set_cell(&mut self, cell: f64, w: f64, h: f64) {
+        self.cell = cell;
+        self.nx = (w / cell).ceil() as usize + 1;
+        self.ny = (h / cell).ceil() as usize + 1;
+    }
+
+    /// Number of (cell, segment) entries the grid would hold with the current cell size.
+    fn entry_count(&self) -> usize {
+        self.segments.iter().fold(0usize, |acc, sg| {
+            let (cx0, cy0) = self.cell_of(sg.x0.min(sg.x1) - sg.reach, sg.y0.min(sg.y1) - sg.reach);
+            let (cx1, cy1) = self.cell_of(sg.x0.max(sg.x1) + sg.reach, sg.y0.max(sg.y1) + sg.reach);
+            acc.saturating_add((cx1 + 1).saturating_sub(cx0).saturating_mul((cy1 + 1).saturating_sub(cy0)))
+        })
     }
 
     fn for_each_cell_of_segments(&self, mut f: impl FnMut(usize, usize)) {

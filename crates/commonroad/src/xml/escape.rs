@@ -7,6 +7,17 @@
 /// Returns the first character that XML 1.0 cannot represent, if any.
 pub fn escape(s: &str) -> Result<String, char> {
     let mut out = String::with_capacity(s.len());
+    escape_into(&mut out, s)?;
+    Ok(out)
+}
+
+/// [`escape`] appended to `out` (which may be left partly written on error).
+pub(crate) fn escape_into(out: &mut String, s: &str) -> Result<(), char> {
+    // Most values (ids, enum words) need no escaping: copy them in one go.
+    if !s.chars().any(|c| matches!(c, '&' | '<' | '>' | '"' | '\'') || (c as u32) < 0x20 || c == '\u{FFFE}' || c == '\u{FFFF}') {
+        out.push_str(s);
+        return Ok(());
+    }
     for ch in s.chars() {
         match ch {
             '&' => out.push_str("&amp;"),
@@ -21,5 +32,5 @@ pub fn escape(s: &str) -> Result<String, char> {
             c => out.push(c),
         }
     }
-    Ok(out)
+    Ok(())
 }

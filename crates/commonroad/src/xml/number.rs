@@ -8,6 +8,8 @@
 //! (UTM-sized) coordinates. Angles get 1e-6 rad, speeds 1e-6 m/s. Trailing zeros are trimmed
 //! (one digit after the point is kept) to keep files small; `-0` is written as `0.0`.
 
+use std::fmt::Write;
+
 /// Digits after the decimal point.
 pub const DECIMALS: usize = 6;
 
@@ -15,18 +17,29 @@ pub const DECIMALS: usize = 6;
 /// exact binary value to even), trailing zeros trimmed, e.g. `1.5`, `-0.000001`, `20.0`.
 /// Returns `None` for NaN and infinities, which `xs:decimal` cannot express.
 pub fn format_decimal(v: f64) -> Option<String> {
+    let mut s = String::new();
+    push_decimal(&mut s, v).then_some(s)
+}
+
+/// Appends [`format_decimal`]`(v)` to `out` without allocating (the writer formats tens of
+/// thousands of numbers per file). Returns false, leaving `out` unchanged, for NaN and
+/// infinities.
+pub(crate) fn push_decimal(out: &mut String, v: f64) -> bool {
     if !v.is_finite() {
-        return None;
+        return false;
     }
-    let mut s = format!("{:.*}", DECIMALS, v);
+    let start = out.len();
+    // Writing into a String cannot fail.
+    let _ = write!(out, "{:.*}", DECIMALS, v);
     // keep at least one digit after the point
-    while s.ends_with('0') && !s.ends_with(".0") {
-        s.pop();
+    while out.ends_with('0') && !out.ends_with(".0") {
+        out.pop();
     }
-    if s == "-0.0" {
-        s = "0.0".to_string();
+    if out.get(start..) == Some("-0.0") {
+        out.truncate(start);
+        out.push_str("0.0");
     }
-    Some(s)
+    true
 }
 
 /// Whether `v` is written as a positive decimal (`positiveDecimal`): finite, > 0, and not

@@ -29,19 +29,19 @@ pub fn write_map(scenario: &Scenario) -> Result<Vec<u8>, WriteError> {
 }
 
 fn write(scenario: &Scenario, problems: &[PlanningProblem]) -> Result<Vec<u8>, WriteError> {
-    let mut e = Emitter::new();
+    let mut e = Emitter::with_capacity(estimated_size(scenario, problems));
     let h = &scenario.header;
     let step = e.decimal("timeStepSize", h.time_step_size)?;
     e.open(
         "commonRoad",
         &[
-            ("commonRoadVersion", "2020a".to_string()),
-            ("benchmarkID", h.benchmark_id.to_string()),
-            ("date", h.date.to_string()),
-            ("author", h.author.clone()),
-            ("affiliation", h.affiliation.clone()),
-            ("source", h.source.clone()),
-            ("timeStepSize", step),
+            ("commonRoadVersion", &"2020a"),
+            ("benchmarkID", &h.benchmark_id),
+            ("date", &h.date),
+            ("author", &h.author),
+            ("affiliation", &h.affiliation),
+            ("source", &h.source),
+            ("timeStepSize", &step),
         ],
     )?;
     location(&mut e, scenario)?;
@@ -97,6 +97,16 @@ fn write(scenario: &Scenario, problems: &[PlanningProblem]) -> Result<Vec<u8>, W
     Ok(e.finish())
 }
 
+/// Bytes the file will roughly take (a `<point>` line is ~60 bytes, a trajectory state
+/// ~420), so that the buffer is allocated once.
+fn estimated_size(scenario: &Scenario, problems: &[PlanningProblem]) -> usize {
+    let net = &scenario.network;
+    let points: usize = net.lanelets.iter().map(|l| 2 * l.bounds.len()).sum();
+    let states: usize = scenario.dynamic_obstacles.iter().map(|o| o.trajectory.len() + 1).sum();
+    let others = net.lanelets.len() + net.traffic_signs.len() + net.traffic_lights.len() + net.intersections.len();
+    4096 + 64 * points + 450 * states + 400 * (others + scenario.static_obstacles.len() + problems.len())
+}
+
 fn with_context(
     e: &mut Emitter,
     label: String,
@@ -108,54 +118,89 @@ fn with_context(
     r
 }
 
-fn id_attr(id: impl std::fmt::Display) -> [(&'static str, String); 1] {
-    [("id", id.to_string())]
+fn id_attr(id: &dyn std::fmt::Display) -> [(&'static str, &dyn std::fmt::Display); 1] {
+    [("id", id)]
 }
 
-fn ref_attr(id: impl std::fmt::Display) -> [(&'static str, String); 1] {
-    [("ref", id.to_string())]
+fn ref_attr(id: &dyn std::fmt::Display) -> [(&'static str, &dyn std::fmt::Display); 1] {
+    [("ref", id)]
 }
 
-/// `<tag><x>…</x><y>…</y>[<z>…</z>]</tag>` on one line.
-fn point_markup(e: &Emitter, tag: &str, p: &Point) -> Result<String, WriteError> {
-    let x = e.decimal(&format!("{tag}/x"), p.x)?;
-    let y = e.decimal(&format!("{tag}/y"), p.y)?;
-    let z = match p.z {
-        Some(z) => format!("<z>{}</z>", e.decimal(&format!("{tag}/z"), z)?),
-        None => String::new(),
-    };
-    Ok(format!("<{tag}><x>{x}</x><y>{y}</y>{z}</{tag}>"))
+/// `<tag><x>…</x><y>…</y>[<z>…</z>]</tag>` (no indentation, no line end).
+fn point_markup(e: &mut Emitter, tag: &str, p: &Point) -> Result<(), WriteError> {
+    e.push("<");
+    e.push(tag);
+    e.push("><x>");
+    e.push_decimal(p.x, || format!("{tag}/x"))?;
+    e.push("</x><y>");
+    e.push_decimal(p.y, || format!("{tag}/y"))?;
+    e.push("</y>");
+    if let Some(z) = p.z {
+        e.push("<z>");
+        e.push_decimal(z, || format!("{tag}/z"))?;
+        e.push("</z>");
+    }
+    e.push("</");
+    e.push(tag);
+    e.push(">");
+    Ok(())
 }
 
+/// A point element on its own line.
 fn point(e: &mut Emitter, tag: &str, p: &Point) -> Result<(), WriteError> {
-    let m = point_markup(e, tag, p)?;
-    e.raw_line(&m);
+    e.begin_line();
+    point_markup(e, tag, p)?;
+    e.end_line();
     Ok(())
 }
 
 /// `<position><point>…</point></position>` on one line.
 fn position(e: &mut Emitter, p: &Point) -> Result<(), WriteError> {
-    let m = point_markup(e, "point", p)?;
-    e.raw_line(&format!("<position>{m}</position>"));
+    e.begin_line();
+    e.push("<position>");
+    point_markup(e, "point", p)?;
+    e.push("</position>");
+    e.end_line();
     Ok(())
 }
 
 fn exact(e: &mut Emitter, tag: &str, v: f64) -> Result<(), WriteError> {
-    let s = e.decimal(tag, v)?;
-    e.raw_line(&format!("<{tag}><exact>{s}</exact></{tag}>"));
+    e.begin_line();
+    e.push("<");
+    e.push(tag);
+    e.push("><exact>");
+    e.push_decimal(v, || tag.to_string())?;
+    e.push("</exact></");
+    e.push(tag);
+    e.push(">");
+    e.end_line();
     Ok(())
 }
 
 fn exact_int(e: &mut Emitter, tag: &str, v: u64) {
-    e.raw_line(&format!("<{tag}><exact>{v}</exact></{tag}>"));
+    e.begin_line();
+    e.push("<");
+    e.push(tag);
+    e.push("><exact>");
+    e.push_display(v);
+    e.push("</exact></");
+    e.push(tag);
+    e.push(">");
+    e.end_line();
 }
 
 fn interval(e: &mut Emitter, tag: &str, i: &Interval) -> Result<(), WriteError> {
-    let a = e.decimal(tag, i.start())?;
-    let b = e.decimal(tag, i.end())?;
-    e.raw_line(&format!(
-        "<{tag}><intervalStart>{a}</intervalStart><intervalEnd>{b}</intervalEnd></{tag}>"
-    ));
+    e.begin_line();
+    e.push("<");
+    e.push(tag);
+    e.push("><intervalStart>");
+    e.push_decimal(i.start(), || tag.to_string())?;
+    e.push("</intervalStart><intervalEnd>");
+    e.push_decimal(i.end(), || tag.to_string())?;
+    e.push("</intervalEnd></");
+    e.push(tag);
+    e.push(">");
+    e.end_line();
     Ok(())
 }
 
@@ -201,17 +246,14 @@ fn adjacent(e: &mut Emitter, tag: &str, a: &Option<Adjacent>) -> Result<(), Writ
     if let Some(a) = a {
         e.empty(
             tag,
-            &[
-                ("ref", a.lanelet.to_string()),
-                ("drivingDir", a.driving_dir.as_str().to_string()),
-            ],
+            &[("ref", &a.lanelet), ("drivingDir", &a.driving_dir.as_str())],
         )?;
     }
     Ok(())
 }
 
 fn lanelet(e: &mut Emitter, l: &Lanelet) -> Result<(), WriteError> {
-    e.open("lanelet", &id_attr(l.id))?;
+    e.open("lanelet", &id_attr(&l.id))?;
     bound(e, "leftBound", l.bounds.left(), l.left_marking)?;
     bound(e, "rightBound", l.bounds.right(), l.right_marking)?;
     for r in &l.predecessors {
@@ -256,7 +298,7 @@ fn lanelet(e: &mut Emitter, l: &Lanelet) -> Result<(), WriteError> {
 }
 
 fn traffic_sign(e: &mut Emitter, s: &TrafficSign) -> Result<(), WriteError> {
-    e.open("trafficSign", &id_attr(s.id))?;
+    e.open("trafficSign", &id_attr(&s.id))?;
     for el in &s.elements {
         e.open("trafficSignElement", &[])?;
         e.text("trafficSignID", &el.sign_id)?;
@@ -274,7 +316,7 @@ fn traffic_sign(e: &mut Emitter, s: &TrafficSign) -> Result<(), WriteError> {
 }
 
 fn traffic_light(e: &mut Emitter, t: &TrafficLight) -> Result<(), WriteError> {
-    e.open("trafficLight", &id_attr(t.id))?;
+    e.open("trafficLight", &id_attr(&t.id))?;
     e.open("cycle", &[])?;
     for c in &t.cycle {
         e.raw_line(&format!(
@@ -301,9 +343,9 @@ fn traffic_light(e: &mut Emitter, t: &TrafficLight) -> Result<(), WriteError> {
 }
 
 fn intersection(e: &mut Emitter, i: &Intersection) -> Result<(), WriteError> {
-    e.open("intersection", &id_attr(i.id))?;
+    e.open("intersection", &id_attr(&i.id))?;
     for inc in &i.incomings {
-        e.open("incoming", &id_attr(inc.id))?;
+        e.open("incoming", &id_attr(&inc.id))?;
         let groups = [
             ("incomingLanelet", &inc.incoming_lanelets),
             ("successorsRight", &inc.successors_right),
@@ -316,7 +358,7 @@ fn intersection(e: &mut Emitter, i: &Intersection) -> Result<(), WriteError> {
             }
         }
         if let Some(r) = inc.is_left_of {
-            e.empty("isLeftOf", &ref_attr(r))?;
+            e.empty("isLeftOf", &ref_attr(&r))?;
         }
         e.close("incoming");
     }
@@ -399,7 +441,7 @@ fn state(e: &mut Emitter, tag: &str, s: &State) -> Result<(), WriteError> {
 }
 
 fn static_obstacle(e: &mut Emitter, o: &StaticObstacle) -> Result<(), WriteError> {
-    e.open("staticObstacle", &id_attr(o.id))?;
+    e.open("staticObstacle", &id_attr(&o.id))?;
     e.text("type", o.obstacle_type.as_str())?;
     shape(e, &o.shape)?;
     e.open("initialState", &[])?;
@@ -412,7 +454,7 @@ fn static_obstacle(e: &mut Emitter, o: &StaticObstacle) -> Result<(), WriteError
 }
 
 fn dynamic_obstacle(e: &mut Emitter, o: &DynamicObstacle) -> Result<(), WriteError> {
-    e.open("dynamicObstacle", &id_attr(o.id))?;
+    e.open("dynamicObstacle", &id_attr(&o.id))?;
     e.text("type", o.obstacle_type.as_str())?;
     shape(e, &o.shape)?;
     state(e, "initialState", &o.initial_state)?;
@@ -426,7 +468,7 @@ fn dynamic_obstacle(e: &mut Emitter, o: &DynamicObstacle) -> Result<(), WriteErr
 }
 
 fn environment_obstacle(e: &mut Emitter, o: &EnvironmentObstacle) -> Result<(), WriteError> {
-    e.open("environmentObstacle", &id_attr(o.id))?;
+    e.open("environmentObstacle", &id_attr(&o.id))?;
     e.text("type", o.obstacle_type.as_str())?;
     e.open("shape", &[])?;
     match &o.shape {
@@ -469,7 +511,7 @@ fn goal_state(e: &mut Emitter, g: &GoalState) -> Result<(), WriteError> {
 }
 
 fn planning_problem(e: &mut Emitter, p: &PlanningProblem) -> Result<(), WriteError> {
-    e.open("planningProblem", &id_attr(p.id))?;
+    e.open("planningProblem", &id_attr(&p.id))?;
     let s = &p.initial_state;
     e.open("initialState", &[])?;
     position(e, &Point::new(s.x, s.y))?;

@@ -4,6 +4,7 @@
 mod header;
 mod junction;
 mod lanes;
+mod line_index;
 mod objects;
 mod plan_view;
 mod road;
@@ -38,7 +39,7 @@ pub fn parse_document(text: &str, file: &Path) -> Result<Parsed, Error> {
         let p = e.pos();
         Error::Xml { file: file.to_path_buf(), line: p.row, col: p.col, message: e.to_string() }
     })?;
-    let mut ctx = Ctx { file, doc: &doc, warnings: Vec::new() };
+    let mut ctx = Ctx::new(file, &doc);
     let root = doc.root_element();
     if root.tag_name().name() != "OpenDRIVE" {
         return Err(ctx.error(root, format!("expected the root element <OpenDRIVE>, found <{}>", root.tag_name().name())));

@@ -1,20 +1,24 @@
 //! Attribute reading with positioned errors and warnings; the context of one parse.
 
+use super::line_index::LineIndex;
 use crate::error::{Error, SourcePos, Warning};
 use roxmltree::{Document, Node};
 use std::path::Path;
 
-/// Parse state: the file name for messages, the document for positions, warnings so far.
+/// Parse state: the file name for messages, the document's line index for positions,
+/// warnings so far.
 pub struct Ctx<'a, 'input> {
     pub file: &'a Path,
-    pub doc: &'a Document<'input>,
+    pub lines: LineIndex<'input>,
     pub warnings: Vec<Warning>,
 }
 
 impl<'a, 'input> Ctx<'a, 'input> {
+    pub fn new(file: &'a Path, doc: &Document<'input>) -> Self {
+        Ctx { file, lines: LineIndex::new(doc.input_text()), warnings: Vec::new() }
+    }
     pub fn pos_of(&self, byte: usize) -> SourcePos {
-        let p = self.doc.text_pos_at(byte);
-        SourcePos { line: p.row, col: p.col }
+        self.lines.pos(byte)
     }
     pub fn pos(&self, node: Node) -> SourcePos {
         self.pos_of(node.range().start)
