@@ -62,53 +62,52 @@ pub struct Entity {
 
 impl Entity {
     pub fn from_scenario(scenario: &Scenario) -> Vec<Entity> {
-        scenario
-            .entities
-            .iter()
-            .map(|e| {
-                let (kind, perf) = match &e.object {
-                    EntityObject::Vehicle(v) => (EntityKind::Vehicle, Some(v.performance)),
-                    EntityObject::Pedestrian(_) => (EntityKind::Pedestrian, None),
-                    EntityObject::MiscObject(_) => (EntityKind::Misc, None),
-                    EntityObject::External { .. } => (EntityKind::External, None),
-                };
-                let bbox = e
-                    .object
-                    .bounding_box()
-                    .map_or([0.0; 6], |b| [b.center.x, b.center.y, b.center.z, b.length, b.width, b.height]);
-                let big = 1e10;
-                Entity {
-                    name: e.name.clone(),
-                    kind,
-                    bbox,
-                    max_speed: perf.map_or(big, |p| p.max_speed),
-                    max_acc: perf.map_or(big, |p| p.max_acceleration),
-                    max_dec: perf.map_or(big, |p| p.max_deceleration),
-                    x: 0.0,
-                    y: 0.0,
-                    z: 0.0,
-                    h: 0.0,
-                    speed: 0.0,
-                    accel: 0.0,
-                    yaw_rate: 0.0,
-                    vel: (0.0, 0.0),
-                    lane: None,
-                    on_road: false,
-                    yaw_offset: 0.0,
-                    visible: true,
-                    odometer: 0.0,
-                    moved_by_action: false,
-                    at_road_end: false,
-                    end_of_road: false,
-                    end_of_road_since: 0.0,
-                    offroad_since: None,
-                    standstill_since: None,
-                    controller_active: false,
-                    active: true,
-                    route: None,
-                }
-            })
-            .collect()
+        scenario.entities.iter().map(Entity::from_model).collect()
+    }
+
+    /// The run state of one scenario entity, at rest at the origin.
+    pub fn from_model(e: &openscenario::Entity) -> Entity {
+        let (kind, perf) = match &e.object {
+            EntityObject::Vehicle(v) => (EntityKind::Vehicle, Some(v.performance)),
+            EntityObject::Pedestrian(_) => (EntityKind::Pedestrian, None),
+            EntityObject::MiscObject(_) => (EntityKind::Misc, None),
+            EntityObject::External { .. } => (EntityKind::External, None),
+        };
+        let bbox = e
+            .object
+            .bounding_box()
+            .map_or([0.0; 6], |b| [b.center.x, b.center.y, b.center.z, b.length, b.width, b.height]);
+        let big = 1e10;
+        Entity {
+            name: e.name.clone(),
+            kind,
+            bbox,
+            max_speed: perf.map_or(big, |p| p.max_speed),
+            max_acc: perf.map_or(big, |p| p.max_acceleration),
+            max_dec: perf.map_or(big, |p| p.max_deceleration),
+            x: 0.0,
+            y: 0.0,
+            z: 0.0,
+            h: 0.0,
+            speed: 0.0,
+            accel: 0.0,
+            yaw_rate: 0.0,
+            vel: (0.0, 0.0),
+            lane: None,
+            on_road: false,
+            yaw_offset: 0.0,
+            visible: true,
+            odometer: 0.0,
+            moved_by_action: false,
+            at_road_end: false,
+            end_of_road: false,
+            end_of_road_since: 0.0,
+            offroad_since: None,
+            standstill_since: None,
+            controller_active: false,
+            active: true,
+            route: None,
+        }
     }
 
     /// Place the entity on a lane position, heading along the direction it faces plus `yaw_offset`.
@@ -119,7 +118,7 @@ impl Entity {
             self.y = p.y;
             self.z = p.z;
             self.h = wrap_2pi(lp.facing_heading(&p) + self.yaw_offset);
-            self.on_road = self.lane_contains(net, &lp, p.t);
+            self.on_road = inside_real_lane(net, &lp, &p) || self.lane_contains(net, &lp, p.t);
         }
     }
 
@@ -134,14 +133,15 @@ impl Entity {
             self.on_road = false;
             return;
         };
-        let hint = self.lane.map(|l| l.road);
-        match net.world_to_lane(x, y, hint) {
+        let hint = self.lane.map(|l| (l.road, l.s));
+        match crate::roads::locate::world_to_lane(net, x, y, hint) {
             Some(lp) => {
                 let rel = wrap(h - lp.heading);
                 let dir = if rel.abs() <= std::f64::consts::FRAC_PI_2 + 1e-9 { 1.0 } else { -1.0 };
                 let l = LanePos { road: lp.road, lane_id: lp.lane_id, s: lp.s, offset: lp.offset, dir };
                 self.lane = Some(l);
-                self.on_road = lp.is_on_road();
+                self.on_road =
+                    lp.is_on_road() && net.roads.get(lp.road).is_some_and(|r| !crate::roads::offroad::is_off_road(r, lp.s, lp.t));
                 self.yaw_offset = wrap(h - if dir < 0.0 { lp.heading + std::f64::consts::PI } else { lp.heading });
                 self.z = z.unwrap_or_else(|| net.roads.get(lp.road).map_or(0.0, |r| r.elevation_at(lp.s)));
             }
@@ -155,8 +155,7 @@ impl Entity {
 
     fn lane_contains(&self, net: &RoadNetwork, lp: &LanePos, t: f64) -> bool {
         let Some(road) = net.roads.get(lp.road) else { return false };
-        let (r, l) = crate::roads::lane_geometry::road_extent(road, lp.s);
-        t >= r - 1e-9 && t <= l + 1e-9
+        !crate::roads::offroad::is_off_road(road, lp.s, t)
     }
 
     /// Bounding-box centre in world coordinates.
@@ -164,6 +163,22 @@ impl Entity {
         let (s, c) = self.h.sin_cos();
         (self.x + self.bbox[0] * c - self.bbox[1] * s, self.y + self.bbox[0] * s + self.bbox[1] * c)
     }
+}
+
+/// Cheap sufficient test for being on the road (the full test sums the widths of every lane on
+/// a side): inside its own lane, that lane not of type `none`, on a road without lane offset
+/// (the off-road rule measures widths from the centre lane but compares |t|).
+fn inside_real_lane(net: &RoadNetwork, lp: &LanePos, p: &crate::roads::lane_position::LanePose) -> bool {
+    let Some((a, b)) = p.lane else { return false };
+    if p.t < a.min(b) - 1e-9 || p.t > a.max(b) + 1e-9 {
+        return false;
+    }
+    let Some(road) = net.roads.get(lp.road) else { return false };
+    if !(0.0..=road.length).contains(&lp.s) || road.lane_offset_at(lp.s) != 0.0 {
+        return false;
+    }
+    let Some(sec) = road.section_at(lp.s) else { return false };
+    lp.lane_id == 0 || sec.left.iter().chain(&sec.right).any(|l| l.id == lp.lane_id && l.kind != opendrive::LaneType::None)
 }
 
 /// Angle in [0, 2π) as esmini reports headings.

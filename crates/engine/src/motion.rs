@@ -42,6 +42,9 @@ impl<'a> Sim<'a> {
                         en.at_road_end = false;
                     }
                 }
+                // Without a road network there is no road to drive along: esmini's default
+                // controller leaves the entity where it is and stops it (trailer_connect).
+                (None, _) => en.speed = 0.0,
                 _ => {
                     en.x += en.speed * dt * en.h.cos();
                     en.y += en.speed * dt * en.h.sin();

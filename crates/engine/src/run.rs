@@ -25,6 +25,8 @@ pub struct Run {
 pub fn simulate(scenario: &Scenario, roads: Option<&RoadNetwork>, settings: &Settings) -> Result<Run, Error> {
     settings.check()?;
     crate::position_cache::clear();
+    crate::roads::pose_memo::clear();
+    crate::roads::locate::clear();
     let dt = settings.step;
     let steps = (settings.max_time / dt + 1e-9).floor() as usize;
     let mut sim = Sim::new(scenario, roads, dt);
@@ -39,6 +41,7 @@ pub fn simulate(scenario: &Scenario, roads: Option<&RoadNetwork>, settings: &Set
 
     // Frame 0: Init actions and the first storyboard evaluation, no time passes.
     sim.time = 0.0;
+    sim.align_trailers();
     for slot in init_order(&sim) {
         sim.start_action(slot);
     }
@@ -49,6 +52,7 @@ pub fn simulate(scenario: &Scenario, roads: Option<&RoadNetwork>, settings: &Set
     }
     snapshot(&sim, &mut before);
     storyboard_step(&mut sim, 0.0);
+    sim.pull_trailers();
     sim.after_move(&before, 0.0);
     record(&sim, &mut trace);
 
@@ -64,7 +68,9 @@ pub fn simulate(scenario: &Scenario, roads: Option<&RoadNetwork>, settings: &Set
         }
         sim.time = k as f64 * dt;
         sim.step_controllers(dt);
+        sim.hold_trailers();
         sim.default_controller(dt);
+        sim.pull_trailers();
         sim.after_move(&before, dt);
         record(&sim, &mut trace);
     }

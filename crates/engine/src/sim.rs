@@ -32,6 +32,8 @@ pub struct Sim<'a> {
     pub warnings: Vec<Warning>,
     /// Each entity's assigned controller (None: the default controller).
     pub controllers: Vec<Option<crate::controllers::ControllerRt>>,
+    /// Who pulls whom (actions/trailer.rs).
+    pub trailers: crate::actions::trailer::Trailers,
 }
 
 impl<'a> Sim<'a> {
@@ -52,7 +54,9 @@ impl<'a> Sim<'a> {
             state_log: Vec::new(),
             warnings: Vec::new(),
             controllers: vec![None; scenario.entities.len()],
+            trailers: Default::default(),
         };
+        sim.trailers = crate::actions::trailer::Trailers::build(scenario, &mut sim.entities);
         for (i, e) in scenario.entities.iter().enumerate() {
             for c in &e.controllers {
                 sim.assign_controller(i, c);

@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 /// Fraction of compared scenarios that must be exact or close (measured: see the crate notes).
-const FLOOR: f64 = 0.70;
+const FLOOR: f64 = 0.90;
 
 fn shared() -> Option<PathBuf> {
     let p = std::env::var_os("OSC2CR_SHARED").map(PathBuf::from).unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared"));

@@ -63,20 +63,44 @@ pub fn project_onto_road(road: &Road, x: f64, y: f64, s_guess: f64) -> (f64, f64
 /// that side with the lateral distance beyond it. Zero-width lanes are never chosen when
 /// another lane contains t.
 fn lane_at(road: &Road, section: usize, s: f64, t: f64) -> Option<(i32, LaneBorders, f64)> {
-    let base = road.lane_offset_at(s);
-    let left = road.side_borders(section, true, s);
-    let right = road.side_borders(section, false, s);
-    let (first, second) = if t > base { (&left, &right) } else { (&right, &left) };
-    for side in [first, second] {
-        if let Some((id, b)) = side.iter().find(|(_, b)| b.width() > 0.0 && b.contains(t)) {
-            return Some((*id, *b, 0.0));
-        }
+    let first_left = t > road.lane_offset_at(s);
+    // Scanned lazily, without collecting the borders: this runs for every located point.
+    let first = scan_side(road, section, first_left, s, t);
+    if let Some((id, b)) = first.containing {
+        return Some((id, b, 0.0));
+    }
+    let second = scan_side(road, section, !first_left, s, t);
+    if let Some((id, b)) = second.containing {
+        return Some((id, b, 0.0));
     }
     // Outside: outermost non-degenerate lane on the side of t.
-    let side = if first.iter().any(|(_, b)| b.width() > 0.0) { first } else { second };
-    let (id, b) = side.iter().rev().find(|(_, b)| b.width() > 0.0).or_else(|| side.last())?;
+    let side = if first.outermost_wide.is_some() { first } else { second };
+    let (id, b) = side.outermost_wide.or(side.outermost)?;
     let dist = (t - b.outer).abs().min((t - b.inner).abs());
-    Some((*id, *b, dist))
+    Some((id, b, dist))
+}
+
+/// What one side's lanes say about t (innermost first, stopping at the first containing lane).
+#[derive(Clone, Copy)]
+struct SideScan {
+    containing: Option<(i32, LaneBorders)>,
+    outermost_wide: Option<(i32, LaneBorders)>,
+    outermost: Option<(i32, LaneBorders)>,
+}
+
+fn scan_side(road: &Road, section: usize, left: bool, s: f64, t: f64) -> SideScan {
+    let mut out = SideScan { containing: None, outermost_wide: None, outermost: None };
+    for (id, b) in road.side_border_iter(section, left, s) {
+        out.outermost = Some((id, b));
+        if b.width() > 0.0 {
+            if b.contains(t) {
+                out.containing = Some((id, b));
+                break;
+            }
+            out.outermost_wide = Some((id, b));
+        }
+    }
+    out
 }
 
 impl RoadNetwork {

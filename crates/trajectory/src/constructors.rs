@@ -6,6 +6,7 @@ use crate::nurbs_path::NurbsPath;
 use crate::path::{Curve, Path};
 use crate::polyline::Polyline;
 use crate::pose::Pose;
+use crate::sampled::Sampled;
 use crate::spiral::Spiral;
 use crate::time_table::TimeTable;
 use crate::{MAX_ITEMS, MAX_LENGTH};
@@ -133,7 +134,7 @@ impl Path {
     /// (startTime, stopTime), spread linearly over the length.
     pub fn clothoid(start: Pose, curvature: f64, curvature_prime: f64, length: f64, time: (Option<f64>, Option<f64>), closed: bool) -> Result<Path, TrajectoryError> {
         let seg = SplineSegment { start: Some(start), curvature_start: curvature, curvature_end: curvature + curvature_prime * length, length, h_offset: 0.0, time_start: time.0 };
-        let mut path = Path::clothoid_spline(start, &[seg], time.1, closed)?;
+        let mut path = Path::spirals(start, &[seg], time.1, closed)?;
         for w in path.warnings.iter_mut() {
             *w = w.replace("ClothoidSpline", "Clothoid");
         }
@@ -141,8 +142,21 @@ impl Path {
     }
 
     /// Clothoid segments one after the other; `time_end` is the time at the end of the last.
-    /// Zero-length segments are skipped with a warning.
+    /// Zero-length segments are skipped with a warning. The path is esmini's one-metre polyline
+    /// of the segments (see `sampled.rs`).
     pub fn clothoid_spline(start: Pose, segments: &[SplineSegment], time_end: Option<f64>, closed: bool) -> Result<Path, TrajectoryError> {
+        let exact = Path::spirals(start, segments, time_end, closed)?;
+        if exact.length < 1.0 {
+            return Ok(exact);
+        }
+        // The length stays the curve's: esmini moves on to the true length, standing at the
+        // last vertex over the final fraction of a metre.
+        let sampled = Sampled::new(exact.length, 1.0, |s| exact.pose_at(s));
+        Ok(Path { curve: Curve::Sampled(sampled), length: exact.length, closed, times: exact.times, warnings: exact.warnings })
+    }
+
+    /// The exact clothoid segments (a Clothoid shape; the base of a ClothoidSpline).
+    fn spirals(start: Pose, segments: &[SplineSegment], time_end: Option<f64>, closed: bool) -> Result<Path, TrajectoryError> {
         const SHAPE: &str = "ClothoidSpline";
         check_count(SHAPE, "segments", segments.len(), 1)?;
         check_pose(SHAPE, "the start pose", &start)?;

@@ -18,6 +18,7 @@ mod nurbs_path;
 mod path;
 mod polyline;
 mod pose;
+mod sampled;
 mod spiral;
 mod time_mapping;
 mod time_table;

@@ -1,15 +1,21 @@
-//! A NURBS curve made walkable: sampled uniformly in its parameter (as esmini does, but
-//! finer) to map arc length → parameter; positions are then evaluated exactly at the
-//! interpolated parameter and headings interpolated between samples.
+//! A NURBS curve made walkable the way esmini does it: sampled uniformly in its parameter
+//! with about one sample per metre of control polygon; arc length is the length of that
+//! polyline, a position is the exact curve point at the parameter interpolated linearly
+//! between two samples, and the heading is interpolated between the samples' headings.
+//! Matching the coarse sampling matters: the times of the control points are spread over
+//! the samples, so a finer sampling would move the entity differently in time.
 
 use crate::angle;
 use crate::error::TrajectoryError;
 use crate::nurbs::Nurbs;
 use crate::pose::PathPoint;
 
-/// Target chord between samples (m) and the sample count bounds.
-const SAMPLE_STEP: f64 = 0.1;
-const MIN_SAMPLES_PER_POINT: usize = 16;
+/// Control-polygon length per sample (m), as esmini's NURBS_STEPLENGTH.
+const STEP_LENGTH: f64 = 1.0;
+/// Parameter offset used to find the tangent direction at a sample (esmini: 0.001 or less).
+const TANGENT_DU: f64 = 0.001;
+/// Points closer than this count as coincident (esmini's SMALL_NUMBER).
+const SMALL: f64 = 1e-10;
 const MAX_SAMPLES: usize = 200_000;
 
 #[derive(Debug, Clone, PartialEq)]
@@ -17,6 +23,9 @@ pub(crate) struct NurbsPath {
     curve: Nurbs,
     /// (s, u, heading) at each sample; s non-decreasing.
     samples: Vec<(f64, f64, f64)>,
+    /// Parameter where each sample's basis values were taken for the time rule (the tangent
+    /// probe's parameter, as esmini reads the basis values left by its last evaluation).
+    probe_u: Vec<f64>,
 }
 
 impl NurbsPath {
@@ -29,42 +38,59 @@ impl NurbsPath {
         if !polygon.is_finite() {
             return Err(TrajectoryError::BadNumber { shape: "NURBS", what: "control polygon length".into(), constraint: "", value: polygon });
         }
-        let wanted = (polygon / SAMPLE_STEP).ceil();
-        let n = if wanted.is_finite() && wanted < MAX_SAMPLES as f64 { wanted as usize } else { MAX_SAMPLES };
-        let n = n.max(MIN_SAMPLES_PER_POINT * pts.len()).min(MAX_SAMPLES);
+        if polygon <= 0.0 {
+            return Err(TrajectoryError::ZeroLength { shape: "NURBS" });
+        }
+        let wanted = (1.0 + polygon / STEP_LENGTH).floor();
+        let n = if wanted < MAX_SAMPLES as f64 { (wanted as usize).max(1) } else { MAX_SAMPLES };
         let (a, b) = curve.domain();
-        let du = (b - a) / n as f64;
-        let eps = (b - a) * 1e-7;
-        let mut samples = Vec::with_capacity(n + 1);
+        // esmini walks the parameter from 0 to the last knot, evaluating clamped to the domain.
+        let u_max = b;
+        let du = u_max / n as f64;
+        let probe = du.abs().min(TANGENT_DU);
+        let at = |u: f64| curve.point(u.clamp(a, (b - SMALL).max(a)));
+        let mut samples: Vec<(f64, f64, f64)> = Vec::with_capacity(n + 1);
+        let mut probe_u = Vec::with_capacity(n + 1);
         let mut s = 0.0;
         let mut prev: Option<[f64; 3]> = None;
-        let mut prev_heading = 0.0;
+        let mut heading = f64::NAN;
         for i in 0..=n {
-            let u = if i == n { b } else { a + i as f64 * du };
-            let p = curve.point(u);
-            if let Some(q) = prev {
-                s += (p[0] - q[0]).hypot(p[1] - q[1]);
+            let u = i as f64 * du;
+            let p = at(u);
+            let pu = if i < n { (u + probe).min(u_max) } else { (u - probe).max(0.0) };
+            let q = at(pu);
+            if let Some(o) = prev {
+                s += (p[0] - o[0]).hypot(p[1] - o[1]);
             }
-            let (lo, hi) = (curve.point((u - eps).max(a)), curve.point((u + eps).min(b)));
-            let (dx, dy) = (hi[0] - lo[0], hi[1] - lo[1]);
-            // Where the tangent vanishes (coincident control points) keep the last heading.
-            let heading = if dx.hypot(dy) > 1e-12 { angle::normalize(dy.atan2(dx)) } else { prev_heading };
-            prev_heading = heading;
+            if (q[0] - p[0]).hypot(q[1] - p[1]) > SMALL {
+                heading = if i == 0 {
+                    f64::NAN // taken from the next sample below
+                } else if i < n {
+                    angle::normalize((q[1] - p[1]).atan2(q[0] - p[0]))
+                } else {
+                    angle::normalize((p[1] - q[1]).atan2(p[0] - q[0]))
+                };
+            }
+            // Coincident probe: the heading of the previous sample is kept.
             samples.push((s, u, heading));
+            probe_u.push(pu);
             prev = Some(p);
         }
         if !(s.is_finite() && s > 0.0) {
             return Err(TrajectoryError::ZeroLength { shape: "NURBS" });
         }
-        // A first sample at a vanishing tangent borrows the heading of the second.
-        if let (Some(second), Some(first)) = (samples.get(1).copied(), samples.first_mut()) {
-            let p0 = curve.point(a);
-            let (lo, hi) = (p0, curve.point(a + eps));
-            if (hi[0] - lo[0]).hypot(hi[1] - lo[1]) <= 1e-12 {
-                first.2 = second.2;
+        // Missing headings (start, or a start on coincident points) come from the successor.
+        if let Some(last) = samples.last_mut() {
+            if last.2.is_nan() {
+                last.2 = 0.0;
             }
         }
-        Ok(NurbsPath { curve, samples })
+        for k in (0..samples.len().saturating_sub(1)).rev() {
+            if samples[k].2.is_nan() {
+                samples[k].2 = samples[k + 1].2;
+            }
+        }
+        Ok(NurbsPath { curve, samples, probe_u })
     }
 
     pub(crate) fn length(&self) -> f64 {
@@ -79,7 +105,8 @@ impl NurbsPath {
         };
         let ds = s1 - s0;
         let a = if ds > 0.0 { ((s - s0) / ds).clamp(0.0, 1.0) } else { 0.0 };
-        let p = self.curve.point(u0 + a * (u1 - u0));
+        let (lo, hi) = self.curve.domain();
+        let p = self.curve.point((u0 + a * (u1 - u0)).clamp(lo, (hi - SMALL).max(lo)));
         let turn = angle::diff(h1, h0);
         PathPoint {
             s,
@@ -91,40 +118,36 @@ impl NurbsPath {
         }
     }
 
-    /// (s, time) at every sample, time interpolated linearly in the parameter between the
-    /// parameters where each control point's basis function peaks (esmini's rule).
+    /// (s, time) at every sample, esmini's rule: each control point's time belongs to the
+    /// sample parameter where its basis function was largest; times between are linear in the
+    /// parameter; the current control point advances at most one per sample.
     pub(crate) fn time_stamps(&self, times: &[f64]) -> Vec<(f64, f64)> {
         let n = self.curve.control_points().len();
-        let mut peak_u = vec![f64::NEG_INFINITY; n];
-        let mut peak_v = vec![f64::NEG_INFINITY; n];
-        for &(_, u, _) in &self.samples {
-            let (first, vals) = self.curve.basis_nonzero(u);
+        let mut peak_u = vec![0.0; n];
+        let mut peak_v = vec![0.0; n];
+        let (lo, hi) = self.curve.domain();
+        for (&(_, u, _), &pu) in self.samples.iter().zip(&self.probe_u) {
+            let (first, vals) = self.curve.basis_nonzero(pu.clamp(lo, (hi - SMALL).max(lo)));
             for (i, v) in vals.into_iter().enumerate().map(|(r, v)| (first + r, v)) {
-                if let (Some(pv), Some(pu)) = (peak_v.get_mut(i), peak_u.get_mut(i)) {
+                if let (Some(pv), Some(pk)) = (peak_v.get_mut(i), peak_u.get_mut(i)) {
                     if v > *pv {
                         *pv = v;
-                        *pu = u;
+                        *pk = u;
                     }
                 }
             }
         }
-        // Peaks move forward with the index; enforce it against rounding.
-        let mut last = f64::NEG_INFINITY;
-        for u in peak_u.iter_mut() {
-            *u = u.max(last);
-            last = *u;
-        }
         let mut out = Vec::with_capacity(self.samples.len());
         let mut k = 0usize;
         for &(s, u, _) in &self.samples {
-            while k + 2 < n && peak_u.get(k + 1).is_some_and(|&p| u >= p) {
-                k += 1;
+            if n >= 2 && peak_u.get(k + 1).is_some_and(|&p| u >= p) {
+                k = (k + 1).min(n - 2);
             }
             let (Some(&ua), Some(&ub), Some(&ta), Some(&tb)) = (peak_u.get(k), peak_u.get(k + 1), times.get(k), times.get(k + 1)) else {
                 out.push((s, times.first().copied().unwrap_or(0.0)));
                 continue;
             };
-            let w = if ub > ua { ((u - ua) / (ub - ua)).clamp(0.0, 1.0) } else { 1.0 };
+            let w = if ub != ua { (u - ua) / (ub - ua) } else { 1.0 };
             out.push((s, ta + w * (tb - ta)));
         }
         out

@@ -3,6 +3,7 @@
 use crate::nurbs_path::NurbsPath;
 use crate::polyline::Polyline;
 use crate::pose::PathPoint;
+use crate::sampled::Sampled;
 use crate::spiral::Spiral;
 use crate::time_table::TimeTable;
 
@@ -12,6 +13,8 @@ pub(crate) enum Curve {
     /// Consecutive clothoid segments with the path s where each starts.
     Spirals(Vec<(f64, Spiral)>),
     Nurbs(NurbsPath),
+    /// A curve as esmini's one-metre polyline (ClothoidSpline).
+    Sampled(Sampled),
 }
 
 /// A trajectory as a path: `pose_at(s)` for s in [0, length], optional time stamps.
@@ -65,6 +68,7 @@ impl Path {
         let mut p = match &self.curve {
             Curve::Polyline(p) => p.eval(s),
             Curve::Nurbs(n) => n.eval(s),
+            Curve::Sampled(p) => p.eval(s),
             Curve::Spirals(list) => {
                 let i = list.partition_point(|(s0, _)| *s0 <= s).saturating_sub(1);
                 match list.get(i) {

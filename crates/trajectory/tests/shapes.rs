@@ -144,12 +144,13 @@ fn clothoid_spline_chains_segments_and_restarts_at_given_positions() {
     ];
     let path = Path::clothoid_spline(p(0.0, 0.0), &segs, Some(5.0), false).unwrap();
     assert!(close(path.length(), arc + 15.0, 1e-12));
-    // quarter circle left ends at (r, r) heading north, then 5 m north
-    let q = path.pose_at(arc + 5.0 - 1e-9);
-    assert!(close(q.x, r, 1e-8) && close(q.y, r + 5.0, 1e-8), "{q:?}");
-    // third segment starts at its own position, heading offset by π/2
-    let q = path.pose_at(arc + 5.0 + 4.0);
-    assert!(close(q.x, 100.0, 1e-9) && close(q.y, 4.0, 1e-9), "{q:?}");
+    // esmini's polyline has a vertex every whole metre, exactly on the curve.
+    // quarter circle left ends at (r, r) heading north, then 5 m north: s = 20 is 20 − arc north
+    let q = path.pose_at(20.0);
+    assert!(close(q.x, r, 1e-8) && close(q.y, r + 20.0 - arc, 1e-8), "{q:?}");
+    // third segment starts at its own position, heading offset by π/2: s = 25 is 25 − arc − 5 north of it
+    let q = path.pose_at(25.0);
+    assert!(close(q.x, 100.0, 1e-9) && close(q.y, 25.0 - arc - 5.0, 1e-9), "{q:?}");
     assert!(close(path.s_at_time(4.0).unwrap(), arc + 10.0, 1e-9));
 }
 
@@ -188,14 +189,21 @@ fn circle_nurbs(r: f64) -> Path {
 fn nurbs_full_circle_lies_on_the_circle() {
     let r = 12.0;
     let path = circle_nurbs(r);
-    assert!(close(path.length(), 2.0 * PI * r, 1e-3), "{}", path.length());
+    // esmini's length is that of a polyline through ~1 sample per metre of control polygon:
+    // inscribed in the circle, so a little shorter than the circumference.
+    assert!(path.length() <= 2.0 * PI * r && path.length() > 2.0 * PI * r * (1.0 - 1e-3), "{}", path.length());
     for i in 0..=200 {
         let q = path.pose_at(path.length() * i as f64 / 200.0);
         assert!(close(q.x.hypot(q.y), r, 1e-9), "{q:?}");
-        // tangent perpendicular to the radius, counter-clockwise
+        // tangent perpendicular to the radius, counter-clockwise; the first sample borrows the
+        // heading of the second (esmini), so the first metre or so is off by up to one step's turn
         let expect = q.y.atan2(q.x) + FRAC_PI_2;
-        assert!(angle_close(q.heading, expect, 2e-3), "{q:?}");
-        assert!(close(q.curvature, 1.0 / r, 1e-3), "{q:?}");
+        if q.s > 1.5 {
+            assert!(angle_close(q.heading, expect, 2e-3), "{q:?}");
+            assert!(close(q.curvature, 1.0 / r, 5e-3), "{q:?}");
+        } else {
+            assert!(angle_close(q.heading, expect, 0.1), "{q:?}");
+        }
     }
 }
 
@@ -206,22 +214,28 @@ fn nurbs_with_clamped_knots_interpolates_the_end_control_points() {
     let a = path.pose_at(0.0);
     let b = path.pose_at(path.length());
     assert!(close(a.x, 0.0, 1e-12) && close(a.y, 0.0, 1e-12));
-    assert!(close(b.x, 40.0, 1e-12) && close(b.y, 10.0, 1e-12));
-    // end tangents point along the first and last legs of the control polygon
-    assert!(angle_close(a.heading, 20f64.atan2(10.0), 1e-4));
-    assert!(angle_close(b.heading, 15f64.atan2(10.0), 1e-4));
+    // the end is evaluated just inside the last knot, as esmini does
+    assert!(close(b.x, 40.0, 1e-6) && close(b.y, 10.0, 1e-6));
+    // end tangents point along the first and last legs of the control polygon; the start takes
+    // the heading of the second sample (about 1 m on), as esmini does, so only roughly
+    assert!(angle_close(a.heading, 20f64.atan2(10.0), 0.1));
+    // (the last heading is probed 0.001 back in the parameter)
+    assert!(angle_close(b.heading, 15f64.atan2(10.0), 5e-3), "{b:?}");
 }
 
 #[test]
 fn nurbs_times_follow_control_point_peaks() {
     // Order 2 (a polyline): basis of point i peaks exactly at its knot, so time is linear
     // in the parameter between control points, and the parameter is linear in s per leg.
-    let cps = [(p(0.0, 0.0), None, Some(0.0)), (p(10.0, 0.0), None, Some(1.0)), (p(10.0, 30.0), None, Some(4.0))];
+    // Control polygon 39.5 m: floor(1 + 39.5) = 40 samples, Δu = 0.05, so the corner (u = 1)
+    // is sample 20 and the sampled polyline is the polygon itself.
+    let cps = [(p(0.0, 0.0), None, Some(0.0)), (p(10.0, 0.0), None, Some(1.0)), (p(10.0, 29.5), None, Some(4.0))];
     let path = Path::nurbs(2, &cps, &[0.0, 0.0, 1.0, 2.0, 2.0], false).unwrap();
-    assert!(close(path.length(), 40.0, 1e-9));
+    assert!(close(path.length(), 39.5, 1e-6), "{}", path.length());
     assert!(close(path.s_at_time(0.5).unwrap(), 5.0, 1e-6));
-    assert!(close(path.s_at_time(2.5).unwrap(), 25.0, 1e-6));
-    assert!(close(path.time_at(40.0).unwrap(), 4.0, 1e-12));
+    // t = 2.5 is halfway from 1 s to 4 s: u = 1.5, s = 10 + 29.5 / 2
+    assert!(close(path.s_at_time(2.5).unwrap(), 24.75, 1e-6));
+    assert!(close(path.time_at(path.length()).unwrap(), 4.0, 1e-9));
 }
 
 #[test]

@@ -141,8 +141,9 @@ impl<'a> Sim<'a> {
         let mut new_speed = speed;
         match f.timing {
             None => {
-                let dir = if speed < 0.0 { -1.0 } else { 1.0 };
-                f.s = move_s(&f.path, f.s, dir * speed.abs() * dt);
+                // Reversing (negative speed) still advances along the trajectory, the entity
+                // facing backwards (esmini: trailer_connect's reverse manoeuvre).
+                f.s = move_s(&f.path, f.s, speed.abs() * dt);
             }
             Some(m) => {
                 match m.domain {
@@ -160,7 +161,7 @@ impl<'a> Sim<'a> {
         let (mut x, mut y) = (p.x, p.y);
         let heading = if speed < 0.0 && f.timing.is_none() { p.heading + std::f64::consts::PI } else { p.heading };
         let done = match f.timing {
-            None => !f.path.is_closed() && dt > 0.0 && ((speed > 0.0 && f.s > len - SMALL) || (speed < 0.0 && f.s < SMALL)),
+            None => !f.path.is_closed() && dt > 0.0 && speed != 0.0 && f.s > len - SMALL,
             // Summed steps drift below the last stamp by rounding; esmini's sum reaches it.
             Some(_) => f.path.time_range().is_some_and(|r| f.time >= r.1 - 1e-9),
         };

@@ -95,7 +95,9 @@ impl<'a> Sim<'a> {
         let dt = self.dt;
         let t = &mut l.transition;
         if t.dimension == DynamicsDimension::Distance {
-            t.step(dt * speed);
+            // esmini counts the distance along the road: the step's length projected by the
+            // yaw the entity had relative to its lane.
+            t.step(dt * speed * en.yaw_offset.cos());
         } else {
             t.step(dt);
         }

@@ -7,12 +7,14 @@ pub mod follow_trajectory;
 pub mod global;
 pub mod lane_change;
 pub mod lane_offset;
+pub mod lat_distance;
 pub mod routing;
 pub mod long_distance;
 pub mod speed;
 pub mod speed_profile;
 pub mod synchronize;
 pub mod teleport;
+pub mod trailer;
 
 use crate::sim::Sim;
 use crate::storyboard::{State, Transition};
@@ -32,6 +34,7 @@ pub enum ActionRt {
     SpeedProfile(speed_profile::SpeedProfileRt),
     Synchronize(Box<synchronize::SynchronizeRt>),
     LongDistance(Box<long_distance::LongDistanceRt>),
+    LatDistance(Box<lat_distance::LatDistanceRt>),
     /// Nothing left to do.
     Done,
 }
@@ -153,6 +156,18 @@ impl<'a> Sim<'a> {
                 };
                 self.start_long_distance(slot, e, &spec)
             }
+            PrivateAction::LateralDistance { entity, distance, freespace, continuous, coordinate_system, displacement, constraints } => {
+                let spec = lat_distance::LatDistanceSpec {
+                    entity,
+                    distance: *distance,
+                    freespace: *freespace,
+                    continuous: *continuous,
+                    coordinate_system: *coordinate_system,
+                    displacement: *displacement,
+                    constraints: constraints.as_ref(),
+                };
+                self.start_lat_distance(slot, e, &spec)
+            }
             PrivateAction::Synchronize { master, target_position_master, target_position, final_speed, target_tolerance_master, target_tolerance } => self
                 .start_synchronize(slot, master, target_position_master, target_position, final_speed.as_ref(), (*target_tolerance_master, *target_tolerance)),
             PrivateAction::LaneChange { dynamics, target, target_lane_offset } => {
@@ -169,6 +184,7 @@ impl<'a> Sim<'a> {
             }
             PrivateAction::Teleport(pos) => {
                 self.teleport(slot, e, pos);
+                self.align_chain(e);
                 ActionRt::Done
             }
             PrivateAction::Visibility { graphics, .. } => {
@@ -192,6 +208,14 @@ impl<'a> Sim<'a> {
                         self.activate_controller(e, true);
                     }
                 }
+                ActionRt::Done
+            }
+            PrivateAction::ConnectTrailer { trailer } => {
+                self.connect_trailer(slot, e, trailer);
+                ActionRt::Done
+            }
+            PrivateAction::DisconnectTrailer => {
+                self.disconnect_trailer(e);
                 ActionRt::Done
             }
             other => {
@@ -220,6 +244,7 @@ impl<'a> Sim<'a> {
                 ActionRt::SpeedProfile(p) => self.step_speed_profile(e, p),
                 ActionRt::Synchronize(y) => self.step_synchronize(e, y),
                 ActionRt::LongDistance(d) => self.step_long_distance(e, d),
+                ActionRt::LatDistance(d) => self.step_lat_distance(e, d),
                 ActionRt::Done => true,
             };
             if !done {

@@ -27,5 +27,7 @@ impl<'a> Sim<'a> {
             }
             _ => en.set_world(net, placement.x, placement.y, placement.z, placement.h),
         }
+        // esmini records a teleported entity where it was put: it does not move on this step.
+        en.moved_by_action = true;
     }
 }

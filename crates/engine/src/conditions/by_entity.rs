@@ -41,7 +41,7 @@ impl<'a> Sim<'a> {
             }
             _ => None,
         };
-        if let C::RelativeClearance { .. } | C::Angle { .. } | C::RelativeAngle { .. } = cond {
+        if let C::Angle { .. } | C::RelativeAngle { .. } = cond {
             return self.warn_once(c, format!("{} is not supported; it never becomes true", cond.element_name()));
         }
         let mut result = false;
@@ -67,6 +67,19 @@ impl<'a> Sim<'a> {
         let t = self.time;
         match cond {
             C::Speed { value, rule, .. } => compare(e.speed, *value, *rule),
+            C::RelativeClearance { entities, opposite_lanes, free_space, distance_forward, distance_backward, lane_ranges } => {
+                let (from, to) = lane_ranges.first().copied().unwrap_or((None, None));
+                let c = super::clearance::Clearance {
+                    entities,
+                    opposite_lanes: *opposite_lanes,
+                    free_space: *free_space,
+                    forward: distance_forward.unwrap_or(0.0),
+                    backward: distance_backward.unwrap_or(0.0),
+                    from: from.map_or(i64::MIN / 4, i64::from),
+                    to: to.map_or(i64::MAX / 4, i64::from),
+                };
+                self.relative_clearance(idx, &c)
+            }
             C::RelativeSpeed { value, rule, .. } => o.is_some_and(|o| compare(e.speed - o.speed, *value, *rule)),
             C::Acceleration { value, rule, .. } => compare(e.accel, *value, *rule),
             C::StandStill { duration } => e.standstill_since.is_some_and(|s| t - s >= duration - SMALL),
@@ -83,7 +96,7 @@ impl<'a> Sim<'a> {
                 compare(between(self.net, e, o, cs_of(options), kind, options.freespace).abs(), *value, *rule)
             }),
             C::TimeHeadway { value, rule, options, .. } => o.is_some_and(|o| {
-                let kind = options.relative_distance_type.unwrap_or(RelativeDistanceType::Longitudinal);
+                let kind = options.relative_distance_type.unwrap_or(RelativeDistanceType::EuclidianDistance);
                 let d = between(self.net, e, o, cs_of(options), kind, options.freespace);
                 if d < 0.0 || e.speed < SMALL {
                     return false;
@@ -91,7 +104,7 @@ impl<'a> Sim<'a> {
                 compare((d / e.speed).abs(), *value, *rule)
             }),
             C::TimeToCollision { value, rule, options, .. } => {
-                let kind = options.relative_distance_type.unwrap_or(RelativeDistanceType::Longitudinal);
+                let kind = options.relative_distance_type.unwrap_or(RelativeDistanceType::EuclidianDistance);
                 let (d, rel_speed) = match (o, point) {
                     (Some(o), _) => {
                         let d = between(self.net, e, o, cs_of(options), kind, options.freespace);
@@ -132,7 +145,7 @@ impl<'a> Sim<'a> {
                     }),
                 }
             }
-            C::RelativeClearance { .. } | C::Angle { .. } | C::RelativeAngle { .. } => false,
+            C::Angle { .. } | C::RelativeAngle { .. } => false,
         }
     }
 }

@@ -116,26 +116,35 @@ pub fn between(net: Option<&RoadNetwork>, a: &Entity, b: &Entity, cs: Coordinate
         }
     }
     let (ux, uy) = (a.h.cos(), a.h.sin());
+    // Between reference points esmini signs the euclidean distance by the longitudinal part in
+    // a's frame: negative when b is not strictly ahead.
+    let (dx, dy) = (b.x - a.x, b.y - a.y);
+    let (lon, lat) = (dx * ux + dy * uy, -dx * uy + dy * ux);
     match kind {
         RelativeDistanceType::Longitudinal => {
             if freespace {
                 interval_gap(&corners(a), &corners(b), ux, uy)
             } else {
-                (b.x - a.x) * ux + (b.y - a.y) * uy
+                lon
             }
         }
         RelativeDistanceType::Lateral => {
             if freespace {
                 interval_gap(&corners(a), &corners(b), -uy, ux)
             } else {
-                -(b.x - a.x) * uy + (b.y - a.y) * ux
+                lat
             }
         }
         RelativeDistanceType::EuclidianDistance => {
             if freespace {
                 box_distance(&corners(a), &corners(b))
             } else {
-                (b.x - a.x).hypot(b.y - a.y)
+                let d = lon.hypot(lat);
+                if lon > 0.0 {
+                    d
+                } else {
+                    -d
+                }
             }
         }
     }
@@ -159,8 +168,8 @@ pub fn to_point(net: Option<&RoadNetwork>, a: &Entity, x: f64, y: f64, cs: Coord
     p.bbox = [0.0; 6];
     if matches!(cs, CoordinateSystem::Road | CoordinateSystem::Lane) {
         if let Some(n) = net {
-            let hint = a.lane.map(|l| l.road);
-            if let Some(lp) = n.world_to_lane(x, y, hint) {
+            let hint = a.lane.map(|l| (l.road, l.s));
+            if let Some(lp) = crate::roads::locate::world_to_lane_memo(n, x, y, hint) {
                 p.lane = Some(crate::roads::LanePos { road: lp.road, lane_id: lp.lane_id, s: lp.s, offset: lp.offset, dir: 1.0 });
             }
         }

@@ -5,6 +5,7 @@
 
 pub mod by_entity;
 pub mod by_value;
+pub mod clearance;
 pub mod distance;
 
 use crate::sim::Sim;
@@ -74,8 +75,34 @@ fn find_element(nodes: &[Node], kind: StoryboardElementType, name: &str) -> Opti
         StoryboardElementType::Event => Kind::Event,
         StoryboardElementType::Action => Kind::Action,
     };
-    let last = name.rsplit("::").next().unwrap_or(name);
-    nodes.iter().position(|n| n.kind == want && n.name == last)
+    let mut parts: Vec<&str> = name.split("::").collect();
+    let last = parts.pop().unwrap_or(name);
+    let candidates = || nodes.iter().enumerate().filter(|(_, n)| n.kind == want && n.name == last).map(|(i, _)| i);
+    // A qualified name ("Event::Action") picks the element whose ancestors carry the leading parts, in
+    // order (levels may be skipped); names are often reused ("Action") in different events.
+    candidates()
+        .find(|&i| ancestors_match(nodes, i, &parts))
+        .or_else(|| candidates().next())
+}
+
+/// Whether the ancestors of node `i`, walking up, contain `parts` in reverse order.
+fn ancestors_match(nodes: &[Node], i: usize, parts: &[&str]) -> bool {
+    let mut want = parts.iter().rev();
+    let mut next = want.next();
+    let mut cur = nodes.get(i).and_then(|n| n.parent);
+    let mut guard = 0;
+    while let (Some(p), Some(w)) = (cur, next) {
+        guard += 1;
+        if guard > 64 {
+            break;
+        }
+        let Some(node) = nodes.get(p) else { break };
+        if node.name == *w {
+            next = want.next();
+        }
+        cur = node.parent;
+    }
+    next.is_none()
 }
 
 impl<'a> ConditionRt<'a> {

@@ -7,7 +7,7 @@
 
 use crate::conditions::distance::between;
 use crate::roads::lane_geometry::lane_center_t;
-use crate::roads::road_distance::road_distance;
+use crate::roads::road_distance::road_distance_within;
 use crate::roads::{move_along_s, LanePos};
 use crate::sim::Sim;
 use opendrive::RoadNetwork;
@@ -63,7 +63,7 @@ fn lane_delta(net: &RoadNetwork, a: LanePos, b: LanePos, max: f64) -> Option<(f6
         let ds = (b.s - a.s) * a.dir;
         return Some((ds, a.lane_id == b.lane_id, (t(&b)? - t(&a)?) * a.dir));
     }
-    let d = road_distance(net, a.road, a.s, b.road, b.s)?;
+    let d = road_distance_within(net, a.road, a.s, b.road, b.s, max)?;
     if d > max {
         return None;
     }

@@ -7,6 +7,7 @@
 //! outside process (Interactive, External, SUMO, HID, UDP driver) say so.
 
 pub mod acc;
+pub mod alks_r157;
 
 use crate::sim::Sim;
 use crate::Warning;
@@ -16,6 +17,7 @@ use openscenario::Controller;
 #[derive(Debug, Clone)]
 pub enum ControllerRt {
     Acc(acc::AccRt),
+    AlksR157(Box<alks_r157::AlksR157Rt>),
 }
 
 /// Types that need a driver or a co-simulator outside osc2cr.
@@ -32,6 +34,13 @@ impl<'a> Sim<'a> {
         let kind = controller_type(c);
         let rt = match kind {
             "ACCController" => Some(ControllerRt::Acc(acc::AccRt::new(c))),
+            "ALKS_R157SM_Controller" => {
+                let (rt, note) = alks_r157::AlksR157Rt::new(c);
+                if let Some(n) = note {
+                    self.warnings.push(Warning::at(&c.origin, n));
+                }
+                Some(ControllerRt::AlksR157(Box::new(rt)))
+            }
             _ => None,
         };
         if rt.is_none() {
@@ -50,8 +59,10 @@ impl<'a> Sim<'a> {
     /// ActivateControllerAction on entity `e` for the given domains.
     pub fn activate_controller(&mut self, e: usize, longitudinal: bool) {
         let Some(speed) = self.entities.get(e).map(|en| en.speed) else { return };
-        if let Some(Some(ControllerRt::Acc(a))) = self.controllers.get_mut(e) {
-            a.activate(speed, longitudinal);
+        match self.controllers.get_mut(e) {
+            Some(Some(ControllerRt::Acc(a))) => a.activate(speed, longitudinal),
+            Some(Some(ControllerRt::AlksR157(a))) => a.activate(speed, longitudinal),
+            _ => {}
         }
     }
 
@@ -63,6 +74,11 @@ impl<'a> Sim<'a> {
                 ControllerRt::Acc(a) => {
                     if a.active && self.entities.get(e).is_some_and(|en| en.active) {
                         self.step_acc(e, a, dt);
+                    }
+                }
+                ControllerRt::AlksR157(a) => {
+                    if a.active && self.entities.get(e).is_some_and(|en| en.active) {
+                        self.step_alks_r157(e, a, dt);
                     }
                 }
             }

@@ -38,12 +38,3 @@ pub fn lane_center_t(road: &Road, lane_id: i32, s: f64) -> Option<f64> {
     Some(0.5 * (a + b))
 }
 
-/// Outermost t of the road at `s` on each side (right, left): the road's paved extent.
-pub fn road_extent(road: &Road, s: f64) -> (f64, f64) {
-    let section = road.section_index_at(s);
-    let Some(sec) = road.lane_sections.get(section) else { return (0.0, 0.0) };
-    let base = road.lane_offset_at(s);
-    let left = sec.left.last().and_then(|l| lane_borders(road, section, l.id, s)).map_or(base, |b| b.1);
-    let right = sec.right.last().and_then(|l| lane_borders(road, section, l.id, s)).map_or(base, |b| b.1);
-    (right, left)
-}

@@ -1,7 +1,6 @@
 //! A position attached to a lane: road, lane, s, lateral offset from the lane centre, and
 //! which way along s the entity faces.
 
-use super::lane_geometry::lane_center_t;
 use opendrive::RoadNetwork;
 
 /// An entity's place on the road network.
@@ -27,6 +26,8 @@ pub struct LanePose {
     pub road_heading: f64,
     pub curvature: f64,
     pub t: f64,
+    /// t of the inner and outer border of the position's own lane (`None`: no such lane).
+    pub lane: Option<(f64, f64)>,
 }
 
 impl LanePos {
@@ -34,16 +35,20 @@ impl LanePos {
     pub fn pose(&self, net: &RoadNetwork) -> Option<LanePose> {
         let road = net.roads.get(self.road)?;
         let s = self.s.clamp(0.0, road.length);
-        let t = lane_center_t(road, self.lane_id, s).unwrap_or(0.0) + self.offset;
-        let p = road.reference_pose(s);
+        let lane = super::pose_memo::lane_borders_at(road, self.lane_id, s);
+        let t = lane.map_or(0.0, |(a, b)| 0.5 * (a + b)) + self.offset;
+        let p = super::pose_memo::reference_pose(road, s);
         let (sin, cos) = p.hdg.sin_cos();
+        // On a banked road t lies along the tilted surface (see banking.rs).
+        let (th, dz, turn) = super::banking::banked(road, s, t, p.curvature);
         Some(LanePose {
-            x: p.x - t * sin,
-            y: p.y + t * cos,
-            z: road.elevation_at(s),
-            road_heading: p.hdg,
+            x: p.x - th * sin,
+            y: p.y + th * cos,
+            z: road.elevation_at(s) + dz,
+            road_heading: p.hdg + turn,
             curvature: p.curvature,
             t,
+            lane,
         })
     }
 

@@ -1,8 +1,12 @@
 //! The road network as the engine sees it: lane geometry without allocation, a position
 //! attached to a lane, and moving along the lanes through sections, roads and junctions.
 
+pub mod banking;
 pub mod lane_geometry;
 pub mod lane_position;
+pub mod locate;
+pub mod offroad;
+pub mod pose_memo;
 pub mod road_distance;
 pub mod road_follow;
 

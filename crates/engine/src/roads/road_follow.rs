@@ -7,7 +7,7 @@
 //! esmini starts every entity with junction selector angle 0 (straight on), which this matches
 //! for the first junction an entity meets.
 
-use super::lane_geometry::{lane_borders, lane_center_t};
+use super::lane_geometry::lane_borders;
 use super::lane_position::LanePos;
 use opendrive::{ContactPoint, LaneRef, RoadNetwork};
 
@@ -31,8 +31,8 @@ pub fn move_along_s(net: &RoadNetwork, pos: &mut LanePos, dist: f64) -> MoveStat
 pub fn move_along_route(net: &RoadNetwork, pos: &mut LanePos, dist: f64, route: Option<&routing::Route>) -> MoveStatus {
     let Some(road) = net.roads.get(pos.road) else { return MoveStatus::EndOfRoad };
     let s0 = pos.s.clamp(0.0, road.length);
-    let p = road.reference_pose(s0);
-    let t = lane_center_t(road, pos.lane_id, s0).unwrap_or(0.0) + pos.offset;
+    let p = super::pose_memo::reference_pose(road, s0);
+    let t = super::pose_memo::lane_borders_at(road, pos.lane_id, s0).map_or(0.0, |(a, b)| 0.5 * (a + b)) + pos.offset;
     // Distance along the lane to distance along the reference line.
     let scale = (1.0 - p.curvature * t).max(0.1);
     let ds = pos.dir * dist / scale;

@@ -1,0 +1,183 @@
+//! Trailers: which vehicle tows which (Vehicle `Trailer` reference, ConnectTrailerAction,
+//! DisconnectTrailerAction) and the articulated kinematics that pull a trailer behind its tow
+//! vehicle. As esmini: after every move the trailer's coupler is put on the tow vehicle's hitch
+//! and the trailer turns to point from where its reference point was towards the hitch — a
+//! discrete tractrix, which is what a rigid trailer on a non-slipping axle does.
+
+use crate::entities::Entity;
+use crate::sim::Sim;
+use openscenario::{EntityObject, Scenario, Trailer};
+
+/// Longest chain of trailers followed (guards against reference cycles in hostile input).
+const MAX_CHAIN: usize = 100;
+
+/// Who tows whom, and each entity's hitch and coupler positions (m ahead of its reference
+/// point), indexed like the run's entities (scenario entities, then inline trailers).
+#[derive(Debug, Clone, Default)]
+pub struct Trailers {
+    /// `links[tow] = Some(trailer)`.
+    pub links: Vec<Option<usize>>,
+    pub hitch: Vec<Option<f64>>,
+    pub coupler: Vec<Option<f64>>,
+}
+
+impl Trailers {
+    /// The initial tow links of `scenario`. Inline trailer entities (a vehicle model's
+    /// `Trailer` element holding a whole entity) become run entities appended to `entities`,
+    /// named after their tow vehicle plus `+` as esmini names them.
+    pub fn build(scenario: &Scenario, entities: &mut Vec<Entity>) -> Trailers {
+        let mut t = Trailers::default();
+        for e in &scenario.entities {
+            let (h, c) = joints(e);
+            t.hitch.push(h);
+            t.coupler.push(c);
+            t.links.push(None);
+        }
+        for (i, e) in scenario.entities.iter().enumerate() {
+            let mut tow = i;
+            let mut model = e;
+            for _ in 0..MAX_CHAIN {
+                let EntityObject::Vehicle(v) = &model.object else { break };
+                match &v.trailer {
+                    Some(Trailer::Ref(name)) => {
+                        t.links[tow] = scenario.entities.iter().position(|o| &o.name == name).filter(|&k| k != tow);
+                        break;
+                    }
+                    Some(Trailer::Entity(inner)) => {
+                        let mut en = Entity::from_model(inner);
+                        en.name = format!("{}+", entities.get(tow).map_or("", |x| x.name.as_str()));
+                        entities.push(en);
+                        let k = entities.len() - 1;
+                        let (h, c) = joints(inner);
+                        t.hitch.push(h);
+                        t.coupler.push(c);
+                        t.links.push(None);
+                        t.links[tow] = Some(k);
+                        tow = k;
+                        model = inner;
+                    }
+                    None => break,
+                }
+            }
+        }
+        t
+    }
+}
+
+/// An entity model's hitch and coupler positions.
+fn joints(e: &openscenario::Entity) -> (Option<f64>, Option<f64>) {
+    match &e.object {
+        EntityObject::Vehicle(v) => (v.trailer_hitch, v.trailer_coupler),
+        _ => (None, None),
+    }
+}
+
+impl<'a> Sim<'a> {
+    /// ConnectTrailerAction: `tow` now pulls `trailer` (both need a hitch/coupler).
+    pub fn connect_trailer(&mut self, slot: usize, tow: usize, trailer_name: &str) {
+        let Some(trailer) = self.entity_index(trailer_name) else {
+            self.warn_action(slot, format!("ConnectTrailerAction: unknown trailer entity `{trailer_name}`"));
+            return;
+        };
+        if trailer == tow || self.trailers.hitch.get(tow).copied().flatten().is_none() || self.trailers.coupler.get(trailer).copied().flatten().is_none() {
+            self.warn_action(slot, format!("ConnectTrailerAction: `{trailer_name}` needs a TrailerCoupler and the tow vehicle a TrailerHitch"));
+            return;
+        }
+        // A trailer hangs on one hitch only.
+        for l in self.trailers.links.iter_mut() {
+            if *l == Some(trailer) {
+                *l = None;
+            }
+        }
+        if let Some(l) = self.trailers.links.get_mut(tow) {
+            *l = Some(trailer);
+        }
+    }
+
+    /// DisconnectTrailerAction: the trailer stays where it is, standing still.
+    pub fn disconnect_trailer(&mut self, tow: usize) {
+        if let Some(t) = self.trailers.links.get_mut(tow).and_then(|l| l.take()) {
+            if let Some(en) = self.entities.get_mut(t) {
+                en.speed = 0.0;
+            }
+        }
+    }
+
+    fn is_towed(&self, e: usize) -> bool {
+        self.trailers.links.contains(&Some(e))
+    }
+
+    /// Keep the default controller off towed trailers: their tow vehicle moves them.
+    pub fn hold_trailers(&mut self) {
+        for k in 0..self.trailers.links.len() {
+            if let Some(t) = self.trailers.links[k] {
+                if let Some(en) = self.entities.get_mut(t) {
+                    en.moved_by_action = true;
+                }
+            }
+        }
+    }
+
+    /// Pull every trailer chain behind its front tow vehicle.
+    pub fn pull_trailers(&mut self) {
+        for front in 0..self.trailers.links.len() {
+            if self.trailers.links[front].is_none() || self.is_towed(front) {
+                continue;
+            }
+            let mut tow = front;
+            for _ in 0..MAX_CHAIN {
+                let Some(trailer) = self.trailers.links.get(tow).copied().flatten() else { break };
+                self.pull(tow, trailer);
+                tow = trailer;
+            }
+        }
+    }
+
+    /// Put every trailer chain straight behind its front tow vehicle (before the Init actions).
+    pub fn align_trailers(&mut self) {
+        for front in 0..self.trailers.links.len() {
+            if self.trailers.links[front].is_some() && !self.is_towed(front) {
+                self.align_chain(front);
+            }
+        }
+    }
+
+    /// Put the trailers behind `front` straight behind it, moving at its speed (esmini does this
+    /// when it places a tow vehicle).
+    pub fn align_chain(&mut self, front: usize) {
+        let Some(f) = self.entities.get(front) else { return };
+        let (h, speed) = (f.h, f.speed);
+        let (c, s) = (h.cos(), h.sin());
+        let mut tow = front;
+        for _ in 0..MAX_CHAIN {
+            let Some(trailer) = self.trailers.links.get(tow).copied().flatten() else { break };
+            let hitch = self.trailers.hitch.get(tow).copied().flatten().unwrap_or(0.0);
+            let coupler = self.trailers.coupler.get(trailer).copied().flatten().unwrap_or(0.0);
+            let Some(tv) = self.entities.get(tow) else { break };
+            let (x, y) = (tv.x + (hitch - coupler) * c, tv.y + (hitch - coupler) * s);
+            let net = self.net;
+            if let Some(en) = self.entities.get_mut(trailer) {
+                en.set_world(net, x, y, None, h);
+                en.speed = speed;
+            }
+            tow = trailer;
+        }
+    }
+
+    fn pull(&mut self, tow: usize, trailer: usize) {
+        let (Some(hitch), Some(coupler)) = (self.trailers.hitch.get(tow).copied().flatten(), self.trailers.coupler.get(trailer).copied().flatten()) else { return };
+        let Some(tv) = self.entities.get(tow) else { return };
+        let (hx, hy) = (tv.x + hitch * tv.h.cos(), tv.y + hitch * tv.h.sin());
+        let speed = tv.speed;
+        let net = self.net;
+        let Some(en) = self.entities.get_mut(trailer) else { return };
+        let (dx, dy) = (en.x - hx, en.y - hy);
+        let len = (dx * dx + dy * dy).sqrt();
+        // Trailer reference point on the hitch: keep its heading.
+        let (ux, uy) = if len > 1e-9 { (dx / len, dy / len) } else { (-en.h.cos(), -en.h.sin()) };
+        let (x, y) = (hx + ux * coupler, hy + uy * coupler);
+        let h = uy.atan2(ux) + std::f64::consts::PI;
+        en.set_world(net, x, y, None, h);
+        en.speed = speed;
+    }
+}

@@ -1,0 +1,97 @@
+//! RelativeClearanceCondition as esmini evaluates it: true when no other entity (or none of the
+//! listed ones) is inside the window [-distanceBackward, distanceForward] along the road in the
+//! relative lane range, *and* the range names at least one existing driving lane at the
+//! entity's position (a free but non-existent lane is not clearance).
+
+use crate::entities::Entity;
+use crate::roads::road_distance::road_distance_within;
+use crate::sim::Sim;
+use opendrive::{LaneType, Road, RoadNetwork};
+
+/// The parameters of one RelativeClearanceCondition.
+pub struct Clearance<'c> {
+    pub entities: &'c [String],
+    pub opposite_lanes: bool,
+    pub free_space: bool,
+    pub forward: f64,
+    pub backward: f64,
+    /// Relative lane range (from, to); open ends are unbounded.
+    pub from: i64,
+    pub to: i64,
+}
+
+impl<'a> Sim<'a> {
+    /// Whether entity `idx` has the clearance `c` around it.
+    pub(super) fn relative_clearance(&self, idx: usize, c: &Clearance) -> bool {
+        let (Some(net), Some(me)) = (self.net, self.entities.get(idx)) else { return false };
+        let Some(lp) = me.lane else { return false };
+        let Some(road) = net.roads.get(lp.road) else { return false };
+        let others: Vec<usize> = if c.entities.is_empty() {
+            (0..self.entities.len()).collect()
+        } else {
+            c.entities.iter().filter_map(|n| self.entity_index(n)).collect()
+        };
+        let occupied = others.into_iter().filter(|&j| j != idx).filter_map(|j| self.entities.get(j)).any(|o| {
+            if !o.active {
+                return false;
+            }
+            let Some((ds, dlane, opposite)) = delta(net, me, o, c.forward.max(c.backward), c.free_space) else { return false };
+            ds >= -c.backward && ds <= c.forward && dlane >= c.from && dlane <= c.to && (c.opposite_lanes || !opposite)
+        });
+        !occupied && lane_exists(road, lp.s, lp.lane_id as i64, c)
+    }
+}
+
+/// Some driving lane at `s` with an id in `own + from ..= own + to` (same side unless opposite
+/// lanes are allowed). Lane ids are offset arithmetically, as esmini does.
+fn lane_exists(road: &Road, s: f64, own: i64, c: &Clearance) -> bool {
+    let Some(sec) = road.lane_sections.get(road.section_index_at(s)) else { return false };
+    let (lo, hi) = (own.saturating_add(c.from), own.saturating_add(c.to));
+    sec.left.iter().chain(sec.right.iter()).any(|l| {
+        let id = l.id as i64;
+        is_driving(l.kind) && id >= lo && id <= hi && (c.opposite_lanes || id.signum() == own.signum())
+    })
+}
+
+fn is_driving(k: LaneType) -> bool {
+    matches!(
+        k,
+        LaneType::Driving
+            | LaneType::Entry
+            | LaneType::Exit
+            | LaneType::OnRamp
+            | LaneType::OffRamp
+            | LaneType::ConnectingRamp
+            | LaneType::MwyEntry
+            | LaneType::MwyExit
+            | LaneType::Bidirectional
+    )
+}
+
+/// Road-level difference from `a` to `b`: signed ds (+ ahead of `a`), lane difference (b − a)
+/// and whether `b` is on a lane of the other direction. `None`: not within `max` along the roads.
+fn delta(net: &RoadNetwork, a: &Entity, b: &Entity, max: f64, free_space: bool) -> Option<(f64, i64, bool)> {
+    let (la, lb) = (a.lane?, b.lane?);
+    let mut ds = if la.road == lb.road {
+        (lb.s - la.s) * la.dir
+    } else {
+        let d = road_distance_within(net, la.road, la.s, lb.road, lb.s, max)?;
+        // Across roads the sign comes from which side of `a` `b` lies on along its heading.
+        let ahead = (b.x - a.x) * a.h.cos() + (b.y - a.y) * a.h.sin();
+        if ahead < 0.0 {
+            -d
+        } else {
+            d
+        }
+    };
+    if free_space {
+        let ext = if ds >= 0.0 { 0.5 * a.bbox[3] + a.bbox[0] + 0.5 * b.bbox[3] - b.bbox[0] } else { 0.5 * a.bbox[3] - a.bbox[0] + 0.5 * b.bbox[3] + b.bbox[0] };
+        ds = if ds.abs() <= ext { 0.0 } else { ds - ext * ds.signum() };
+    }
+    if ds.abs() > max + 1e-9 {
+        return None;
+    }
+    let dlane = lb.lane_id as i64 - la.lane_id as i64;
+    let opposite = (la.lane_id as i64).signum() != (lb.lane_id as i64).signum();
+    Some((ds, dlane, opposite))
+}

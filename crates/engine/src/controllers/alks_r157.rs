@@ -1,0 +1,654 @@
+//! ALKS_R157SM_Controller, as esmini's UN R157 ALKS safety models. Each step the model scans the
+//! entities ahead (same or neighbour lane, pedestrians anywhere; within its range), picks the one
+//! to focus on (closest threat: same lane = deceleration / cut-out, neighbour lane intruding =
+//! cut-in), decides whether the situation is critical and then brakes; otherwise a simple cruise
+//! control (if `cruise`) keeps the set speed (the speed at activation) or follows the target.
+//!
+//! Models: `Regulation` (reaction time 0.35 s, brakes at 6 m/s² once TTC < dv/12 + 0.45 s; a
+//! cut-in when the intruder's front wheel is 0.3 m inside the ego lane) and `ReferenceDriver`
+//! (perceive 0.4 s, react 0.75 s with 0.4 m/s² release deceleration, then brake with a jerk
+//! limited ramp to 0.774 g; AEB at `aebTTC` to 0.85 g; cut-in perception on the lateral
+//! wandering threshold 0.375 m or `lateralTrigDistance`). RSS and FSM fall back to
+//! ReferenceDriver with a warning. Distances are free space in road coordinates (s, t).
+
+use crate::entities::EntityKind;
+use crate::roads::move_along_s;
+use crate::roads::road_follow::wrap;
+use crate::sim::Sim;
+use openscenario::{Controller, EntityObject};
+
+const SMALL: f64 = 1e-10;
+const LARGE: f64 = 1e10;
+const G: f64 = 9.8;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Model {
+    Regulation,
+    ReferenceDriver,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Mode {
+    Critical,
+    TargetInSight,
+    NoTarget,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Scen {
+    None,
+    CutIn,
+    CutOut,
+    Deceleration,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Phase {
+    Inactive,
+    Perceive,
+    React,
+    BrakeRef,
+}
+
+#[derive(Debug, Clone, Copy)]
+struct Info {
+    obj: Option<usize>,
+    dist_long: f64,
+    dist_lat: f64,
+    dv_s: f64,
+    dv_t: f64,
+    ttc: f64,
+    thw: f64,
+    dlane: i32,
+    action: Scen,
+}
+
+impl Info {
+    fn empty() -> Info {
+        Info { obj: None, dist_long: LARGE, dist_lat: LARGE, dv_s: 0.0, dv_t: 0.0, ttc: LARGE, thw: LARGE, dlane: 0, action: Scen::None }
+    }
+}
+
+#[derive(Debug, Clone)]
+struct Trigger {
+    /// Wandering trigger (threshold adapted to the target's lane offset) or fixed lateral distance.
+    wandering: bool,
+    base: f64,
+    threshold: f64,
+    active: bool,
+    obj: Option<usize>,
+    t0: f64,
+}
+
+/// Road-frame state of one entity for the model.
+#[derive(Debug, Clone, Copy)]
+struct Frame {
+    s: f64,
+    t: f64,
+    lane: i32,
+    road: usize,
+    offset: f64,
+    /// heading relative to the road
+    hrel: f64,
+    v_s: f64,
+    v_t: f64,
+    acc_s: f64,
+    lane_width: f64,
+}
+
+#[derive(Debug, Clone)]
+pub struct AlksR157Rt {
+    pub active: bool,
+    override_mode: bool,
+    pub model: Model,
+    rt: f64,
+    max_dec: f64,
+    max_range: f64,
+    set_speed: f64,
+    acc: f64,
+    cruise: bool,
+    full_stop: bool,
+    always_trig: bool,
+    mode: Mode,
+    scen: Scen,
+    focus: Info,
+    tmp: Info,
+    // ReferenceDriver
+    phase: Phase,
+    timer: f64,
+    time_mode: bool,
+    perception_t: f64,
+    perception_dist: f64,
+    perception_time: f64,
+    ped_eval_time: f64,
+    aeb_ttc: f64,
+    aeb_active: bool,
+    overlap_tol: f64,
+    trigger: Trigger,
+    /// Ego speed at the start of the current step.
+    speed_now: f64,
+}
+
+impl AlksR157Rt {
+    /// The runtime state, and a note when the model is not one of the two modelled.
+    pub fn new(c: &Controller) -> (AlksR157Rt, Option<String>) {
+        let p = |n: &str| c.properties.get(n).map(|s| s.trim().to_string());
+        let num = |n: &str| p(n).and_then(|v| v.parse::<f64>().ok());
+        let name = p("model").unwrap_or_default();
+        let (model, note) = match name.as_str() {
+            "Regulation" => (Model::Regulation, None),
+            "ReferenceDriver" => (Model::ReferenceDriver, None),
+            other => (Model::ReferenceDriver, Some(format!("ALKS_R157SM model `{other}` is not modelled; ReferenceDriver drives"))),
+        };
+        let (rt, max_dec, max_range) = match model {
+            Model::Regulation => (0.35, 6.0, 46.0),
+            Model::ReferenceDriver => (0.75, 0.774 * 9.81, 100.0),
+        };
+        let lat_trig = num("lateralTrigDistance");
+        let trigger = match lat_trig {
+            Some(th) => Trigger { wandering: false, base: th, threshold: th, active: false, obj: None, t0: 0.0 },
+            None => Trigger { wandering: true, base: 0.375, threshold: 0.375, active: false, obj: None, t0: 0.0 },
+        };
+        let rt_ = AlksR157Rt {
+            active: false,
+            override_mode: p("mode").as_deref() != Some("additive"),
+            model,
+            rt,
+            max_dec,
+            max_range,
+            set_speed: 0.0,
+            acc: 0.0,
+            cruise: !matches!(p("cruise").as_deref(), Some("false") | Some("False")),
+            full_stop: p("fullStop").as_deref() == Some("true"),
+            always_trig: p("alwaysTrigOnScenario").as_deref() == Some("true"),
+            mode: Mode::NoTarget,
+            scen: Scen::None,
+            focus: Info::empty(),
+            tmp: Info::empty(),
+            phase: Phase::Inactive,
+            timer: 0.0,
+            time_mode: p("cutInPerceptionDelayMode").as_deref() == Some("Time"),
+            perception_t: 0.0,
+            perception_dist: 0.72,
+            perception_time: 0.4,
+            ped_eval_time: num("pedestrianRiskEvaluationTime").unwrap_or(0.4),
+            aeb_ttc: num("aebTTC").unwrap_or(1.5),
+            aeb_active: false,
+            overlap_tol: num("overlapTolerance").unwrap_or(0.2),
+            trigger,
+            speed_now: 0.0,
+        };
+        (rt_, note)
+    }
+
+    pub fn activate(&mut self, speed: f64, longitudinal: bool) {
+        self.set_speed = speed;
+        if longitudinal {
+            self.active = true;
+        }
+    }
+
+    fn min_dist(&self, v: f64) -> f64 {
+        match self.model {
+            Model::Regulation => {
+                let tg = if v * 3.6 < 10.0 { 1.0 + (v.max(2.0) - 2.0) / 7.8 } else { 1.0 + v * 3.6 / 100.0 };
+                (v * tg).max(2.0)
+            }
+            Model::ReferenceDriver => 2.0 + v * 2.0,
+        }
+    }
+
+    fn reset(&mut self) {
+        self.phase = Phase::Inactive;
+        self.scen = Scen::None;
+    }
+}
+
+fn sign(x: f64) -> f64 {
+    if x > 0.0 {
+        1.0
+    } else if x < 0.0 {
+        -1.0
+    } else {
+        0.0
+    }
+}
+
+impl<'a> Sim<'a> {
+    fn alks_frame(&self, i: usize) -> Option<Frame> {
+        let net = self.net?;
+        let en = self.entities.get(i)?;
+        let lp = en.lane?;
+        let pose = lp.pose(net)?;
+        let hrel = wrap(en.h - pose.road_heading);
+        let (c, s) = (pose.road_heading.cos(), pose.road_heading.sin());
+        let v_s = en.vel.0 * c + en.vel.1 * s;
+        let v_t = -en.vel.0 * s + en.vel.1 * c;
+        let lane_width = pose.lane.map(|(a, b)| (b - a).abs()).unwrap_or(0.0);
+        Some(Frame { s: lp.s, t: pose.t, lane: lp.lane_id, road: lp.road, offset: lp.offset, hrel, v_s, v_t, acc_s: en.accel * hrel.cos(), lane_width })
+    }
+
+    /// Free-space distances (along s, across t) from entity `a` to `b`, signed from `a`'s view.
+    fn alks_free_space(&self, a: usize, fa: &Frame, b: usize, fb: &Frame) -> (f64, f64) {
+        let ext = |i: usize, f: &Frame| {
+            let bb = self.entities[i].bbox;
+            let (mut s0, mut s1, mut t0, mut t1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+            for (dx, dy) in [(1.0, 1.0), (1.0, -1.0), (-1.0, 1.0), (-1.0, -1.0)] {
+                let x = bb[0] + dx * bb[3] / 2.0;
+                let y = bb[1] + dy * bb[4] / 2.0;
+                let (c, s) = (f.hrel.cos(), f.hrel.sin());
+                let cs = f.s + x * c - y * s;
+                let ct = f.t + x * s + y * c;
+                s0 = s0.min(cs);
+                s1 = s1.max(cs);
+                t0 = t0.min(ct);
+                t1 = t1.max(ct);
+            }
+            (s0, s1, t0, t1)
+        };
+        let (as0, as1, at0, at1) = ext(a, fa);
+        let (bs0, bs1, bt0, bt1) = ext(b, fb);
+        let dir = if fa.hrel.abs() > std::f64::consts::FRAC_PI_2 { -1.0 } else { 1.0 };
+        let ds = if bs0 > as1 { bs0 - as1 } else if as0 > bs1 { -(as0 - bs1) } else { 0.0 };
+        let dt = if bt0 > at1 { bt0 - at1 } else if at0 > bt1 { -(at0 - bt1) } else { 0.0 };
+        (ds * dir, dt * dir)
+    }
+
+    /// esmini's Model::Process: measurements of `info.obj` from the ego `e`. false: not relevant.
+    fn alks_process(&self, e: usize, a: &AlksR157Rt, info: &mut Info) -> bool {
+        let Some(o) = info.obj else { return false };
+        if o == e || !self.entities.get(o).is_some_and(|x| x.active) {
+            return false;
+        }
+        let (Some(fe), Some(fo)) = (self.alks_frame(e), self.alks_frame(o)) else { return false };
+        if fe.road != fo.road {
+            return false;
+        }
+        let dir = if fe.hrel.abs() > std::f64::consts::FRAC_PI_2 { -1.0 } else { 1.0 };
+        let ds_ref = (fo.s - fe.s) * dir;
+        if ds_ref.abs() > a.max_range {
+            return false;
+        }
+        let mut dlane = (fo.lane - fe.lane) * dir as i32;
+        if dlane == 2 && fo.lane == 1 && fe.lane == -1 {
+            dlane = 1;
+        } else if dlane == -2 && fo.lane == -1 && fe.lane == 1 {
+            dlane = -1;
+        }
+        let ped = self.entities[o].kind == EntityKind::Pedestrian;
+        if !(ds_ref > SMALL && (ped || (dlane > -2 && dlane < 2))) {
+            return false;
+        }
+        info.dlane = dlane;
+        let (dl, dlat) = self.alks_free_space(e, &fe, o, &fo);
+        info.dist_lat = dlat;
+        info.dist_long = dl;
+        info.dv_s = (fe.v_s - fo.v_s) * dir;
+        info.dv_t = (fe.v_t - fo.v_t) * sign(fo.t - fe.t);
+        if info.dv_s > 0.0 {
+            info.ttc = info.dist_long / info.dv_s;
+            info.thw = info.dist_long / fe.v_s;
+        } else {
+            info.ttc = LARGE;
+            info.thw = LARGE;
+        }
+        true
+    }
+
+    fn alks_trigger_update(&self, a: &mut AlksR157Rt, info: &Info, fe: &Frame) {
+        let tr = &mut a.trigger;
+        let Some(o) = info.obj.filter(|_| info.dv_t >= SMALL) else {
+            if tr.active {
+                tr.active = false;
+                tr.obj = None;
+                tr.t0 = 0.0;
+            }
+            return;
+        };
+        if Some(o) != tr.obj {
+            let Some(fo) = self.alks_frame(o) else { return };
+            tr.obj = Some(o);
+            tr.active = true;
+            tr.t0 = fo.t;
+            if tr.wandering {
+                tr.threshold = tr.base;
+                if (fo.t > fe.t && fo.offset > 0.0) || (fo.t < fe.t && fo.offset < 0.0) {
+                    tr.threshold += fo.offset.abs();
+                } else {
+                    tr.threshold = (tr.threshold - fo.offset.abs()).max(0.0);
+                }
+            }
+        }
+    }
+
+    fn alks_trigger_eval(&self, a: &AlksR157Rt) -> bool {
+        let tr = &a.trigger;
+        match (tr.active, tr.obj) {
+            (true, Some(o)) => self.alks_frame(o).is_some_and(|f| (f.t - tr.t0).abs() > tr.threshold),
+            _ => false,
+        }
+    }
+
+    /// CheckSafety: true when the object is no threat; sets `info.action`.
+    fn alks_check_safety(&self, e: usize, a: &mut AlksR157Rt, info: &mut Info) -> bool {
+        let Some(o) = info.obj else { return true };
+        if info.dist_lat == LARGE {
+            return true;
+        }
+        let (Some(fe), Some(fo)) = (self.alks_frame(e), self.alks_frame(o)) else { return true };
+        let oe = &self.entities[o];
+        match a.model {
+            Model::Regulation => {
+                if info.dlane == 0 {
+                    info.action = Scen::Deceleration;
+                    return false;
+                }
+                if info.dist_lat > -SMALL {
+                    let x = match self.scenario.entities.get(o).map(|x| &x.object) {
+                        Some(EntityObject::Vehicle(v)) if oe.kind == EntityKind::Vehicle => v.axles.front.map(|f| f.position_x).unwrap_or(oe.bbox[3] / 2.0),
+                        _ => oe.bbox[3] / 2.0,
+                    };
+                    let y = -sign(info.dlane as f64) * oe.bbox[4] / 2.0;
+                    let yr = x * fo.hrel.sin() + y * fo.hrel.cos();
+                    let offset = (fo.offset + yr) * -sign(info.dlane as f64);
+                    if offset > fo.lane_width / 2.0 + 0.3 {
+                        info.action = Scen::CutIn;
+                        return false;
+                    }
+                }
+                true
+            }
+            Model::ReferenceDriver => {
+                let c_lane_offset = fo.offset + oe.bbox[0] * oe.h.sin();
+                self.alks_trigger_update(a, info, &fe);
+                if oe.kind == EntityKind::Pedestrian {
+                    if info.dv_t > SMALL {
+                        info.action = Scen::CutIn;
+                        return false;
+                    }
+                } else if info.dlane == 0 {
+                    if c_lane_offset.abs() > 0.375 && info.dv_t < -SMALL {
+                        info.action = Scen::CutOut;
+                    } else if -sign(fo.lane as f64) * fo.acc_s < -5.0 + SMALL {
+                        info.action = Scen::Deceleration;
+                    }
+                    return false;
+                } else if self.alks_trigger_eval(a) {
+                    info.action = Scen::CutIn;
+                    return false;
+                } else if info.action == Scen::CutIn {
+                    info.action = Scen::None;
+                }
+                true
+            }
+        }
+    }
+
+    fn alks_detect(&self, e: usize, a: &mut AlksR157Rt) {
+        let mut cand = Info::empty();
+        let is_vehicle = |i: Option<usize>| i.is_some_and(|i| self.entities[i].kind == EntityKind::Vehicle);
+        for i in 0..self.entities.len() {
+            let mut tmp = a.tmp;
+            tmp.obj = Some(i);
+            let ok = self.alks_process(e, a, &mut tmp);
+            if ok && !self.alks_check_safety(e, a, &mut tmp) {
+                let cand_cutout = is_vehicle(cand.obj) && cand.action == Scen::CutOut;
+                if tmp.dist_long < cand.dist_long || (tmp.dlane == 0 && cand_cutout) {
+                    if is_vehicle(tmp.obj) && tmp.action == Scen::CutOut && cand.obj.is_some() && cand.dlane == 0 {
+                        if tmp.ttc < cand.ttc {
+                            cand = tmp;
+                        }
+                    } else if tmp.dlane == 0 && cand_cutout {
+                        if tmp.ttc < cand.ttc {
+                            cand = tmp;
+                            cand.action = Scen::CutOut;
+                        }
+                    } else {
+                        cand = tmp;
+                    }
+                }
+            }
+            a.tmp = tmp;
+        }
+        if cand.obj.is_some() && cand.action != Scen::None && (cand.obj != a.focus.obj || cand.action != a.focus.action) {
+            a.scen = cand.action;
+        }
+        a.focus = cand;
+    }
+
+    fn alks_cruise(&self, _e: usize, a: &mut AlksR157Rt, v: f64) -> f64 {
+        if a.cruise {
+            if a.focus.obj.is_none() {
+                a.mode = Mode::NoTarget;
+                a.acc = if (v - a.set_speed).abs() < SMALL {
+                    0.0
+                } else if v > a.set_speed {
+                    -2.0
+                } else {
+                    2.0
+                };
+                return (v + a.acc * self.dt).clamp(0.0, a.set_speed.max(0.0));
+            } else if a.focus.dist_long > 0.0 && a.focus.ttc > a.focus.dv_s / 12.0 + 0.35 {
+                a.mode = Mode::TargetInSight;
+                a.acc = if v.abs() < SMALL { 0.0 } else { (2.0 * -a.focus.dv_s + (a.focus.dist_long - a.min_dist(v))).clamp(-4.0, 3.0) };
+                return (v + a.acc * self.dt).clamp(0.0, a.set_speed.max(0.0));
+            }
+        }
+        a.acc = 0.0;
+        v
+    }
+
+    fn alks_overlapping_front(&self, e: usize, o: usize, tol: f64) -> bool {
+        let (Some(fe), Some(fo)) = (self.alks_frame(e), self.alks_frame(o)) else { return false };
+        let (be, bo) = (self.entities[e].bbox, self.entities[o].bbox);
+        let ce = fe.t + be[1];
+        let (e0, e1) = (ce - be[4] / 2.0, ce + be[4] / 2.0);
+        // the other's lateral extent in road coordinates
+        let mut t0 = f64::MAX;
+        let mut t1 = f64::MIN;
+        for (dx, dy) in [(1.0, 1.0), (1.0, -1.0), (-1.0, 1.0), (-1.0, -1.0)] {
+            let x = bo[0] + dx * bo[3] / 2.0;
+            let y = bo[1] + dy * bo[4] / 2.0;
+            let t = fo.t + x * fo.hrel.sin() + y * fo.hrel.cos();
+            t0 = t0.min(t);
+            t1 = t1.max(t);
+        }
+        let inside = t0 > e0 - tol && t1 < e1 + tol;
+        let covering = t0 < e0 + tol && t1 > e1 - tol;
+        inside || covering
+    }
+
+    fn alks_check_critical(&self, e: usize, a: &mut AlksR157Rt, v: f64) -> bool {
+        let dt = self.dt;
+        match a.model {
+            Model::Regulation => {
+                if a.focus.obj.is_none() {
+                    a.mode = Mode::NoTarget;
+                    return false;
+                } else if a.mode == Mode::Critical && a.full_stop {
+                    return true;
+                } else if a.focus.dv_s > 0.0 && a.focus.dist_long > 0.0 && a.focus.ttc < a.focus.dv_s / (2.0 * a.max_dec) + a.rt + 0.1 {
+                    a.mode = Mode::Critical;
+                    return true;
+                }
+                a.mode = Mode::TargetInSight;
+                false
+            }
+            Model::ReferenceDriver => {
+                if a.phase == Phase::Inactive || a.phase == Phase::Perceive {
+                    if self.alks_check_perception(a) {
+                        a.phase = Phase::React;
+                        a.timer = a.rt;
+                    }
+                } else if a.phase == Phase::React {
+                    a.timer -= dt;
+                }
+                if a.mode == Mode::NoTarget && a.focus.obj.is_some() {
+                    a.mode = Mode::TargetInSight;
+                }
+                if a.full_stop && a.mode == Mode::Critical {
+                    if v < SMALL {
+                        a.reset();
+                        a.mode = if a.focus.obj.is_some() { Mode::TargetInSight } else { Mode::NoTarget };
+                    }
+                } else if a.focus.obj.is_none() {
+                    a.reset();
+                    a.mode = Mode::NoTarget;
+                } else if (v > SMALL && a.focus.dist_long > 0.0) || a.full_stop {
+                    self.alks_check_critical_condition(a);
+                }
+                if let Some(o) = a.focus.obj {
+                    if !a.aeb_active && a.focus.ttc < a.aeb_ttc && self.alks_overlapping_front(e, o, a.overlap_tol) {
+                        a.aeb_active = true;
+                    }
+                }
+                a.mode == Mode::Critical || a.aeb_active
+            }
+        }
+    }
+
+    fn alks_check_perception(&self, a: &mut AlksR157Rt) -> bool {
+        let dt = self.dt;
+        let ped = a.focus.obj.is_some_and(|o| self.entities[o].kind == EntityKind::Pedestrian);
+        match a.scen {
+            Scen::CutIn => {
+                if a.phase == Phase::Inactive {
+                    if ped && a.focus.dv_s > SMALL {
+                        a.timer = a.ped_eval_time;
+                        a.phase = Phase::Perceive;
+                    } else if self.alks_trigger_eval(a) {
+                        a.perception_t = a.focus.obj.and_then(|o| self.alks_frame(o)).map(|f| f.t).unwrap_or(0.0);
+                        if a.time_mode {
+                            a.timer = a.perception_time;
+                        } else {
+                            a.perception_dist = 0.72;
+                        }
+                        a.phase = Phase::Perceive;
+                    }
+                } else if a.phase == Phase::Perceive {
+                    if ped {
+                        if a.focus.dv_s > SMALL {
+                            a.timer -= dt;
+                            if a.timer < SMALL {
+                                a.phase = Phase::React;
+                            }
+                        }
+                    } else if a.time_mode {
+                        a.timer -= dt;
+                        if a.timer < SMALL {
+                            a.phase = Phase::React;
+                        }
+                    } else if let Some(o) = a.focus.obj {
+                        let to = self.alks_frame(o).map(|f| f.t).unwrap_or(0.0);
+                        if (to - a.perception_t).abs() > a.perception_dist {
+                            a.phase = Phase::React;
+                        }
+                    }
+                    if a.phase == Phase::React {
+                        a.timer = a.rt;
+                        return true;
+                    }
+                }
+                false
+            }
+            Scen::CutOut | Scen::Deceleration => {
+                if a.phase == Phase::Inactive {
+                    let start = if a.scen == Scen::CutOut {
+                        a.focus.dv_s > SMALL
+                    } else {
+                        a.focus.obj.and_then(|o| self.alks_frame(o)).is_some_and(|f| f.acc_s < -5.0)
+                    };
+                    if start {
+                        a.phase = Phase::Perceive;
+                        a.timer = a.perception_time;
+                    }
+                } else if a.phase == Phase::Perceive {
+                    a.timer -= dt;
+                    return a.timer < SMALL;
+                }
+                false
+            }
+            Scen::None => false,
+        }
+    }
+
+    fn alks_check_critical_condition(&self, a: &mut AlksR157Rt) {
+        let crit = match a.scen {
+            Scen::CutIn => a.focus.ttc < 2.0,
+            Scen::CutOut | Scen::Deceleration => a.focus.thw < 2.0,
+            Scen::None => return,
+        };
+        if a.always_trig || crit {
+            if a.phase == Phase::React && a.timer < SMALL {
+                a.mode = Mode::Critical;
+            }
+        } else if a.phase == Phase::React {
+            a.reset();
+        } else if a.mode == Mode::Critical && a.focus.dist_long > a.min_dist(a.speed_now) {
+            // critical until out of the minimum distance
+            a.mode = if a.focus.obj.is_some() { Mode::TargetInSight } else { Mode::NoTarget };
+            if a.focus.dv_s < SMALL {
+                a.reset();
+            }
+        }
+    }
+
+    fn alks_react(&self, a: &mut AlksR157Rt, v: f64) -> f64 {
+        let dt = self.dt;
+        match a.model {
+            Model::Regulation => {
+                a.acc = -a.max_dec;
+                (v + a.acc * dt).max(0.0)
+            }
+            Model::ReferenceDriver => {
+                if a.phase == Phase::React && a.timer < SMALL {
+                    a.phase = Phase::BrakeRef;
+                }
+                if (a.phase == Phase::BrakeRef || a.aeb_active) && v < SMALL {
+                    a.phase = Phase::Inactive;
+                    a.aeb_active = false;
+                    a.timer = 0.0;
+                }
+                if a.phase == Phase::React {
+                    a.acc = (-0.4f64).min(a.acc);
+                } else if a.phase == Phase::BrakeRef {
+                    a.acc -= dt * 0.774 * G / 0.6;
+                }
+                if a.aeb_active {
+                    a.acc -= dt * 0.85 * G / 0.6;
+                }
+                a.acc = if a.aeb_active { a.acc.max(-0.85 * G) } else { a.acc.max(-0.774 * G) };
+                (v + a.acc * dt).max(0.0)
+            }
+        }
+    }
+
+    pub(super) fn step_alks_r157(&mut self, e: usize, a: &mut AlksR157Rt, dt: f64) {
+        let Some(v) = self.entities.get(e).map(|en| en.speed) else { return };
+        a.speed_now = v;
+        if a.focus.obj.is_some() && a.model == Model::ReferenceDriver && a.phase != Phase::Inactive && a.full_stop {
+            let mut f = a.focus;
+            self.alks_process(e, a, &mut f);
+            a.focus = f;
+        } else {
+            self.alks_detect(e, a);
+        }
+        let speed = if self.alks_check_critical(e, a, v) { self.alks_react(a, v) } else { self.alks_cruise(e, a, v) };
+        let net = self.net;
+        let Some(en) = self.entities.get_mut(e) else { return };
+        if a.override_mode && !en.moved_by_action {
+            match (net, en.lane) {
+                (Some(net), Some(mut lp)) => {
+                    move_along_s(net, &mut lp, speed * dt);
+                    en.set_lane_pos(net, lp);
+                }
+                _ => {
+                    en.x += speed * dt * en.h.cos();
+                    en.y += speed * dt * en.h.sin();
+                }
+            }
+            en.moved_by_action = true;
+        }
+        en.speed = speed;
+    }
+}

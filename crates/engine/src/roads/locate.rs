@@ -1,0 +1,131 @@
+//! World → lane for the engine's per-step questions, cheaper than a full network search:
+//! an entity that moved a little is looked for first on the road it was on (starting the
+//! projection at its last s); only when the point is not on that road does the spatial-index
+//! search run. A point on the hinted road is what the full search returns too (it prefers the
+//! hinted road among the roads containing the point). Exact repeats of full searches (fixed
+//! target points of distance conditions) come from a small memo.
+
+use opendrive::{LanePosition, RoadNetwork};
+use std::cell::RefCell;
+
+const MEMO_SIZE: usize = 32;
+
+/// (network address, x bits, y bits, hint).
+type Key = (usize, u64, u64, Option<usize>);
+
+thread_local! {
+    static MEMO: RefCell<Vec<(Key, Option<LanePosition>)>> = const { RefCell::new(Vec::new()) };
+}
+
+/// Nearest lane of (x, y); `hint`: the road and s the caller was at.
+pub fn world_to_lane(net: &RoadNetwork, x: f64, y: f64, hint: Option<(usize, f64)>) -> Option<LanePosition> {
+    if let Some((road, s)) = hint {
+        if let Some(p) = net.locate_on_road(road, x, y, s) {
+            if p.is_on_road() {
+                return Some(p);
+            }
+        }
+    }
+    net.world_to_lane(x, y, hint.map(|h| h.0))
+}
+
+/// [`world_to_lane`] for points that are asked about again and again (fixed positions): the
+/// hinted road first, then a memo of full searches.
+pub fn world_to_lane_memo(net: &RoadNetwork, x: f64, y: f64, hint: Option<(usize, f64)>) -> Option<LanePosition> {
+    if let Some((road, s)) = hint {
+        if let Some(p) = net.locate_on_road(road, x, y, s) {
+            if p.is_on_road() {
+                return Some(p);
+            }
+        }
+    }
+    let k: Key = (net as *const RoadNetwork as usize, x.to_bits(), y.to_bits(), hint.map(|h| h.0));
+    if let Some(hit) = MEMO.with(|m| m.borrow().iter().find(|e| e.0 == k).map(|e| e.1)) {
+        return hit;
+    }
+    let r = net.world_to_lane(x, y, hint.map(|h| h.0));
+    MEMO.with(|m| {
+        let mut m = m.borrow_mut();
+        if m.len() >= MEMO_SIZE {
+            m.remove(0);
+        }
+        m.push((k, r));
+    });
+    r
+}
+
+/// Forget the memo (a run starts).
+pub fn clear() {
+    MEMO.with(|m| m.borrow_mut().clear());
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Two roads: a paramPoly3 arc-ish road 0 (100 m) linked to a straight road 1 along +x.
+    fn net() -> RoadNetwork {
+        let xodr = r#"<OpenDRIVE><header revMajor="1" revMinor="6"/>
+<road id="0" length="100" junction="-1"><link><successor elementType="road" elementId="1" contactPoint="start"/></link>
+<planView><geometry s="0" x="0" y="0" hdg="0" length="100"><paramPoly3 aU="0" bU="100" cU="0" dU="0" aV="0" bV="0" cV="5" dV="-2" pRange="normalized"/></geometry></planView>
+<lanes><laneSection s="0"><left><lane id="1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></left><center><lane id="0" type="none"/></center>
+<right><lane id="-1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right></laneSection></lanes></road>
+<road id="1" length="100" junction="-1"><link><predecessor elementType="road" elementId="0" contactPoint="end"/></link>
+<planView><geometry s="0" x="100" y="300" hdg="0" length="100"><line/></geometry></planView>
+<lanes><laneSection s="0"><center><lane id="0" type="none"/></center>
+<right><lane id="-1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right></laneSection></lanes></road>
+</OpenDRIVE>"#;
+        opendrive::parse_str(xodr, std::path::Path::new("t.xodr")).map(|l| l.network).unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    #[test]
+    fn hinted_lookup_agrees_with_the_full_search_on_the_road() {
+        let n = net();
+        for k in 0..40 {
+            let s = 1.0 + 2.4 * k as f64;
+            let Some(p) = n.roads.first().map(|r| r.reference_pose(s)) else { panic!("road 0") };
+            // 1.75 m to the right of the reference line: lane -1's centre.
+            let (x, y) = (p.x + 1.75 * p.hdg.sin(), p.y - 1.75 * p.hdg.cos());
+            let full = n.world_to_lane(x, y, Some(0)).unwrap_or_else(|| panic!("full search"));
+            let fast = world_to_lane(&n, x, y, Some((0, (s - 3.0).max(0.0)))).unwrap_or_else(|| panic!("fast"));
+            assert_eq!((full.road, full.lane_id), (fast.road, fast.lane_id));
+            assert!((full.s - s).abs() < 1e-6 && (fast.s - s).abs() < 1e-6, "{} {} {s}", full.s, fast.s);
+            assert!((fast.offset - full.offset).abs() < 1e-9 && fast.offset.abs() < 1e-6);
+        }
+    }
+
+    #[test]
+    fn off_the_hinted_road_the_full_search_answers() {
+        let n = net();
+        // A point on road 1, hinted with road 0: found on road 1 all the same.
+        let p = world_to_lane(&n, 150.0, 298.25, Some((0, 50.0))).unwrap_or_else(|| panic!("found"));
+        assert_eq!((p.road, p.lane_id), (1, -1));
+        assert!((p.s - 50.0).abs() < 1e-9);
+        // Asked twice, the memo answers the same.
+        let a = world_to_lane_memo(&n, 150.0, 298.25, Some((0, 50.0)));
+        let b = world_to_lane_memo(&n, 150.0, 298.25, Some((0, 50.0)));
+        assert_eq!(a, b);
+        assert_eq!(a.map(|p| p.road), Some(1));
+    }
+
+    #[test]
+    fn memoized_reference_poses_are_bit_identical() {
+        let n = net();
+        let Some(road) = n.roads.first() else { panic!("road 0") };
+        super::super::pose_memo::clear();
+        for k in 0..600 {
+            let s = (k % 300) as f64 * 0.33;
+            assert_eq!(super::super::pose_memo::reference_pose(road, s), road.reference_pose(s));
+        }
+    }
+
+    #[test]
+    fn bounded_road_distance_matches_the_unbounded_one() {
+        use super::super::road_distance::{road_distance, road_distance_within};
+        let n = net();
+        // From road 0 at s = 40 to road 1 at s = 30: 60 + 30 m.
+        assert_eq!(road_distance(&n, 0, 40.0, 1, 30.0), Some(90.0));
+        assert_eq!(road_distance_within(&n, 0, 40.0, 1, 30.0, 100.0), Some(90.0));
+        assert_eq!(road_distance_within(&n, 0, 40.0, 1, 30.0, 50.0), None);
+    }
+}

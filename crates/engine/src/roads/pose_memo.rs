@@ -1,0 +1,74 @@
+//! Memo of road reference-line poses. The engine asks for the pose at the same (road, s) more
+//! than once per step (an entity placed at s one step is moved from s the next), and a pose
+//! on a paramPoly3 costs an arc-length inversion. The memo is a pure function cache keyed by
+//! the road's identity and the exact bits of s, so results are bit-identical to the direct
+//! call (the borders of an entity's lane likewise); `clear` runs when a run starts (addresses are only stable while a network is borrowed).
+
+use opendrive::{CurvePose, Road};
+use std::cell::RefCell;
+
+const SLOTS: usize = 256;
+
+/// (road address, geometry address, length bits, s bits).
+type Key = (usize, usize, u64, u64);
+
+thread_local! {
+    static MEMO: RefCell<Vec<Option<(Key, CurvePose)>>> = RefCell::new(vec![None; SLOTS]);
+}
+
+fn key(road: &Road, s: f64) -> Key {
+    (road as *const Road as usize, road.geometries.as_ptr() as usize, road.length.to_bits(), s.to_bits())
+}
+
+fn slot(k: &Key) -> usize {
+    // Fibonacci hashing of the mixed key: cheap and spreads nearby s values.
+    let h = (k.0 as u64 ^ k.3.rotate_left(17) ^ k.2.rotate_left(41)).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+    (h >> 56) as usize % SLOTS
+}
+
+/// `road.reference_pose(s)`, from the memo when it was asked before.
+pub fn reference_pose(road: &Road, s: f64) -> CurvePose {
+    let k = key(road, s);
+    let i = slot(&k);
+    if let Some(p) = MEMO.with(|m| m.borrow().get(i).copied().flatten().filter(|e| e.0 == k).map(|e| e.1)) {
+        return p;
+    }
+    let p = road.reference_pose(s);
+    MEMO.with(|m| {
+        if let Some(e) = m.borrow_mut().get_mut(i) {
+            *e = Some((k, p));
+        }
+    });
+    p
+}
+
+/// Forget every entry (a run starts; networks of earlier runs may be gone).
+pub fn clear() {
+    MEMO.with(|m| m.borrow_mut().iter_mut().for_each(|e| *e = None));
+    LANES.with(|m| m.borrow_mut().iter_mut().for_each(|e| *e = None));
+}
+
+type LaneKey = (usize, i32, u64);
+type LaneEntry = Option<(LaneKey, Option<(f64, f64)>)>;
+
+thread_local! {
+    static LANES: RefCell<Vec<LaneEntry>> = RefCell::new(vec![None; SLOTS]);
+}
+
+/// Borders (inner, outer) of lane `lane_id` at `s` (section looked up), from the memo when it
+/// was asked before: an entity's lane is asked at the s where it was placed when it moves on.
+pub fn lane_borders_at(road: &Road, lane_id: i32, s: f64) -> Option<(f64, f64)> {
+    let k: LaneKey = (road as *const Road as usize, lane_id, s.to_bits());
+    let h = (k.0 as u64 ^ k.2.rotate_left(17) ^ u64::from(lane_id as u32).rotate_left(29)).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+    let i = (h >> 56) as usize % SLOTS;
+    if let Some(b) = LANES.with(|m| m.borrow().get(i).copied().flatten().filter(|e| e.0 == k).map(|e| e.1)) {
+        return b;
+    }
+    let b = super::lane_geometry::lane_borders(road, road.section_index_at(s), lane_id, s);
+    LANES.with(|m| {
+        if let Some(e) = m.borrow_mut().get_mut(i) {
+            *e = Some((k, b));
+        }
+    });
+    b
+}
