@@ -13,20 +13,7 @@ fn median(v: &mut [Duration]) -> Duration {
 
 fn main() {
     let shared = std::env::var_os("OSC2CR_SHARED").map(std::path::PathBuf::from).unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared"));
-    let mut files = Vec::new();
-    let mut stack = vec![shared.join("corpus")];
-    while let Some(d) = stack.pop() {
-        let Ok(rd) = std::fs::read_dir(&d) else { continue };
-        for e in rd.flatten() {
-            let p = e.path();
-            if p.is_dir() {
-                stack.push(p);
-            } else if p.extension().is_some_and(|x| x.eq_ignore_ascii_case("xodr")) {
-                files.push(p);
-            }
-        }
-    }
-    files.sort();
+    let files = testkit::files_with_ext(&shared.join("corpus"), "xodr");
     if files.is_empty() {
         eprintln!("notice: no corpus maps under {}; nothing to time", shared.display());
         return;

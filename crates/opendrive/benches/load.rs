@@ -6,23 +6,6 @@ use rand_chacha::ChaCha8Rng;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-fn corpus(shared: &Path) -> Vec<PathBuf> {
-    let mut out = Vec::new();
-    let mut stack = vec![shared.join("corpus")];
-    while let Some(d) = stack.pop() {
-        let Ok(rd) = std::fs::read_dir(&d) else { continue };
-        for e in rd.flatten() {
-            let p = e.path();
-            if p.is_dir() {
-                stack.push(p);
-            } else if p.extension().is_some_and(|x| x == "xodr") {
-                out.push(p);
-            }
-        }
-    }
-    out.sort();
-    out
-}
 
 fn median(v: &mut [f64]) -> f64 {
     v.sort_by(f64::total_cmp);
@@ -35,7 +18,7 @@ fn main() {
         .find(|a| !a.starts_with('-'))
         .map(PathBuf::from)
         .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared"));
-    let files = corpus(&shared);
+    let files = testkit::files_with_ext(&shared.join("corpus"), "xodr");
     if files.is_empty() {
         eprintln!("no corpus under {}", shared.display());
         return;

@@ -8,23 +8,6 @@
 
 use std::path::{Path, PathBuf};
 
-fn corpus(shared: &Path) -> Vec<PathBuf> {
-    let mut out = Vec::new();
-    let mut stack = vec![shared.join("corpus")];
-    while let Some(d) = stack.pop() {
-        let Ok(rd) = std::fs::read_dir(&d) else { continue };
-        for e in rd.flatten() {
-            let p = e.path();
-            if p.is_dir() {
-                stack.push(p);
-            } else if p.extension().is_some_and(|x| x == "xodr") {
-                out.push(p);
-            }
-        }
-    }
-    out.sort();
-    out
-}
 
 fn median(v: &mut [f64]) -> f64 {
     if v.is_empty() {
@@ -36,7 +19,7 @@ fn median(v: &mut [f64]) -> f64 {
 
 fn main() {
     let shared = std::env::args().nth(1).map(PathBuf::from).unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared"));
-    let files = corpus(&shared);
+    let files = testkit::files_with_ext(&shared.join("corpus"), "xodr");
     let (mut all, mut failed) = (Vec::new(), 0usize);
     println!("{:>10} {:>10} {:>8}  map", "median mm", "max mm", "points");
     for f in &files {

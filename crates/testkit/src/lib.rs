@@ -11,4 +11,4 @@ mod shared;
 
 pub use cr_check::{cr_check, CrCheckResult, Finding};
 pub use python::{python_envs, PyEnvs};
-pub use shared::{corpus_files, shared_dir, workspace_root};
+pub use shared::{corpus_files, files_with_ext, shared_dir, workspace_root};

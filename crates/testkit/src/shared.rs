@@ -39,11 +39,17 @@ pub fn shared_dir() -> Option<PathBuf> {
 /// Every file under `<shared>/corpus` whose extension is `ext` (case-insensitive, without
 /// the dot), sorted; empty when the shared directory is missing.
 pub fn corpus_files(ext: &str) -> Vec<PathBuf> {
-    let Some(shared) = shared_dir() else {
-        return Vec::new();
-    };
+    match shared_dir() {
+        Some(shared) => files_with_ext(&shared.join("corpus"), ext),
+        None => Vec::new(),
+    }
+}
+
+/// Every file below `dir` (recursively) whose extension is `ext` (case-insensitive, without
+/// the dot), sorted; unreadable directories are passed over.
+pub fn files_with_ext(dir: &Path, ext: &str) -> Vec<PathBuf> {
     let mut out = Vec::new();
-    let mut stack = vec![shared.join("corpus")];
+    let mut stack = vec![dir.to_path_buf()];
     while let Some(dir) = stack.pop() {
         let Ok(entries) = std::fs::read_dir(&dir) else {
             continue;
@@ -52,10 +58,7 @@ pub fn corpus_files(ext: &str) -> Vec<PathBuf> {
             let path = entry.path();
             if path.is_dir() {
                 stack.push(path);
-            } else if path
-                .extension()
-                .is_some_and(|e| e.eq_ignore_ascii_case(ext))
-            {
+            } else if path.extension().is_some_and(|e| e.eq_ignore_ascii_case(ext)) {
                 out.push(path);
             }
         }

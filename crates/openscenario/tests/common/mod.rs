@@ -20,21 +20,7 @@ pub fn shared() -> Option<PathBuf> {
 
 /// Every `.xosc` under `dir`, sorted.
 pub fn xosc_files(dir: &Path) -> Vec<PathBuf> {
-    let mut out = Vec::new();
-    let mut stack = vec![dir.to_path_buf()];
-    while let Some(d) = stack.pop() {
-        let Ok(rd) = std::fs::read_dir(&d) else { continue };
-        for e in rd.flatten() {
-            let p = e.path();
-            if p.is_dir() {
-                stack.push(p);
-            } else if p.extension().is_some_and(|x| x == "xosc") {
-                out.push(p);
-            }
-        }
-    }
-    out.sort();
-    out
+    testkit::files_with_ext(dir, "xosc")
 }
 
 /// Path relative to the corpus root, with '/' separators.
