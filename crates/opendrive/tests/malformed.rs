@@ -59,3 +59,16 @@ fn wrong_root_element() {
     let msg = err("<OpenSCENARIO/>").to_string();
     assert!(msg.contains("expected the root element <OpenDRIVE>"), "{msg}");
 }
+
+#[test]
+fn a_file_cut_off_is_reported_where_it_ends() {
+    // Cut inside the fourth line, 5 characters into `<planView>`: the error is at 4:6.
+    let text = format!("{ROAD_HEAD}{ROAD_TAIL}");
+    let cut_at = ROAD_HEAD.len() - "iew>\n".len() - 1;
+    let e = err(&text[..cut_at]);
+    let msg = e.to_string();
+    assert!(matches!(e, Error::Xml { line: 4, col: 6, .. }), "{msg}");
+    // And a file whose root is never closed, ending after a newline: the position after it.
+    let e = err("<OpenDRIVE>\n<header revMajor=\"1\" revMinor=\"6\"/>\n");
+    assert!(matches!(e, Error::Xml { line: 3, col: 1, .. }), "{}", e);
+}

@@ -173,3 +173,16 @@ fn truncated_documents_fail_cleanly() {
         assert_eq!(e.kind, ErrorKind::Xml, "cut at {cut}: {e}");
     }
 }
+
+#[test]
+fn a_document_cut_off_is_reported_where_it_ends() {
+    let text = scenario("", "", &car("Ego"), &teleport("Ego", "1"), "");
+    let cut = &text[..text.len() / 2];
+    let e = fail(cut);
+    assert_eq!(e.kind, ErrorKind::Xml, "{e}");
+    // The end of the cut text: the line count and the length of the last line, by hand.
+    let lines: Vec<&str> = cut.split('\n').collect();
+    let want = (lines.len() as u32, lines.last().map_or(0, |l| l.chars().count()) as u32 + 1);
+    assert_eq!(at(&e), want, "{e}");
+    assert_ne!(at(&e), (1, 1), "{e}");
+}
