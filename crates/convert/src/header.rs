@@ -44,14 +44,14 @@ pub fn parse_date(text: &str) -> Result<Date, String> {
     date_prefix(t).ok_or_else(|| format!("expected a valid date YYYY-MM-DD, got {text:?}"))
 }
 
-/// A three-letter upper-case country code (`ZAM` or ISO 3166 alpha-3: the readers reject
-/// others, which this cannot check without a table).
+/// A country code a benchmark id may start with: `ZAM` or an ISO 3166 alpha-3 code in upper
+/// case (commonroad-io refuses to read a file with any other).
 pub fn check_country(code: &str) -> Result<(), String> {
-    if code.len() == 3 && code.bytes().all(|b| b.is_ascii_uppercase()) {
+    if crate::country::is_known_country(code) {
         Ok(())
     } else {
         Err(format!(
-            "country must be ZAM or an ISO 3166 alpha-3 code in upper case (e.g. DEU), got {code:?}"
+            "country must be ZAM or an ISO 3166 alpha-3 code in upper case (e.g. DEU, USA, SWE), got {code:?}"
         ))
     }
 }

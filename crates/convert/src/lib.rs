@@ -14,6 +14,7 @@ mod angle;
 mod assemble;
 mod batch;
 mod bbox;
+mod country;
 mod discover;
 mod ego;
 mod goal;

@@ -15,6 +15,9 @@ fn benchmark_ids_keep_only_letters_and_digits() {
     assert_eq!(benchmark_id("DEU", "a_b", 1).expect("valid").to_string(), "DEU_ab-1_1_T-1");
     assert!(check_country("DEU").is_ok());
     assert!(check_country("de").is_err() && check_country("DEUT").is_err());
+    // Shaped right but not a country: commonroad-io would refuse the file.
+    assert!(check_country("XYZ").is_err() && check_country("GER").is_err());
+    assert!(check_country("ZAM").is_ok() && check_country("SWE").is_ok());
 }
 
 #[test]
