@@ -54,8 +54,11 @@ pub struct Entity {
     pub standstill_since: Option<f64>,
     /// A controller was activated on it (recorded; behaviour is part 2).
     pub controller_active: bool,
-    /// The entity exists (AddEntity/DeleteEntity, part 2, toggle this).
+    /// The entity exists (AddEntityAction / DeleteEntityAction toggle this; `actions/add_delete_entity.rs`).
     pub active: bool,
+    /// Added (put in place) during this step: the next `after_move` derives no velocity, yaw
+    /// rate or odometer from the jump.
+    pub appeared: bool,
     /// The route assigned by AssignRouteAction / AcquirePositionAction: junction choices follow it.
     pub route: Option<std::sync::Arc<routing::Route>>,
 }
@@ -106,6 +109,7 @@ impl Entity {
             standstill_since: None,
             controller_active: false,
             active: true,
+            appeared: false,
             route: None,
         }
     }
@@ -117,7 +121,9 @@ impl Entity {
             self.x = p.x;
             self.y = p.y;
             self.z = p.z;
-            self.h = wrap_2pi(lp.facing_heading(&p) + self.yaw_offset);
+            // Along a lane that widens or narrows the path drifts sideways; esmini's heading follows it.
+            let drift = net.roads.get(lp.road).map_or(0.0, |r| crate::roads::lane_slope::drift_angle(r, lp.lane_id, lp.s, p.t, p.curvature));
+            self.h = wrap_2pi(lp.facing_heading(&p) + self.yaw_offset + drift);
             self.on_road = inside_real_lane(net, &lp, &p) || self.lane_contains(net, &lp, p.t);
         }
     }

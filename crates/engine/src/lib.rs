@@ -9,22 +9,27 @@
 //! Module map: `run` (the loop) · `sim` (run state) · `storyboard` (element states and
 //! transitions) · `conditions` (triggers, edges, delays, each condition) · `actions` (speed,
 //! lane change, lane offset, teleport, parameters) · `motion` (default controller) · `roads`
-//! (lane geometry, following lanes through junctions) · `positions` · `dynamics` (transition
-//! shapes) · `entities` · `trace` (the output).
+//! (lane geometry, following lanes through junctions) · `positions` · `signals` (traffic signals and
+//! their controllers) · `dynamics` (transition shapes) · `entities` · `trace` (the output).
 
 mod actions;
 mod conditions;
 mod controllers;
 mod dynamics;
 mod entities;
+pub mod esmini_random;
+mod ghost;
+mod ghost_trail;
 mod motion;
 mod position_cache;
 mod positions;
+mod recorded;
 mod roads;
 mod route_position;
 mod rules;
 mod run;
 mod settings;
+mod signals;
 mod sim;
 mod storyboard;
 pub mod trace;
@@ -33,7 +38,8 @@ mod values;
 mod warning;
 
 pub use entities::bounding_boxes;
-pub use run::{simulate, Run};
-pub use settings::Settings;
-pub use trace::{EntityTrace, RoadPos, Sample, StoryboardEvent, Trace};
+pub use recorded::{EnvironmentChange, LightChange};
+pub use run::{simulate, simulate_with, Run};
+pub use settings::{RunControl, Settings};
+pub use trace::{EntityTrace, RoadPos, Sample, SignalState, StoryboardEvent, Trace};
 pub use warning::{Error, Warning};

@@ -5,7 +5,7 @@
 
 use crate::dynamics::SMALL;
 use crate::roads::road_follow::wrap;
-use crate::roads::{move_along_route, MoveStatus};
+use crate::roads::{move_along_route_drawing, MoveStatus};
 use crate::sim::Sim;
 
 /// Below this speed an entity stands still (esmini's threshold), m/s.
@@ -24,13 +24,15 @@ impl<'a> Sim<'a> {
     /// Move every entity no action moved this step by speed · dt.
     pub fn default_controller(&mut self, dt: f64) {
         let net = self.net;
+        let random = &mut self.random;
         for en in &mut self.entities {
             if !en.active || en.moved_by_action || en.speed.abs() <= SMALL {
                 continue;
             }
             match (net, en.lane) {
                 (Some(net), Some(mut lp)) => {
-                    let status = move_along_route(net, &mut lp, en.speed * dt, en.route.as_deref());
+                    // esmini's own move: a junction tie is decided by its generator.
+                    let status = move_along_route_drawing(net, &mut lp, en.speed * dt, en.route.as_deref(), random);
                     en.set_lane_pos(net, lp);
                     if status == MoveStatus::EndOfRoad {
                         // Stuck at the end since the previous step: esmini stops the entity.
@@ -58,11 +60,20 @@ impl<'a> Sim<'a> {
         let time = self.time;
         for (en, b) in self.entities.iter_mut().zip(before) {
             let (dx, dy) = (en.x - b.x, en.y - b.y);
-            en.odometer += (dx * dx + dy * dy).sqrt();
-            if dt > SMALL {
-                en.vel = (dx / dt, dy / dt);
-                en.accel = (en.speed - b.speed) / dt;
-                en.yaw_rate = wrap(en.h - b.h) / dt;
+            if en.appeared {
+                // Just added: where it was before (deleted, or never placed) says nothing
+                // about its motion.
+                en.appeared = false;
+                en.vel = (en.speed * en.h.cos(), en.speed * en.h.sin());
+                en.accel = 0.0;
+                en.yaw_rate = 0.0;
+            } else {
+                en.odometer += (dx * dx + dy * dy).sqrt();
+                if dt > SMALL {
+                    en.vel = (dx / dt, dy / dt);
+                    en.accel = (en.speed - b.speed) / dt;
+                    en.yaw_rate = wrap(en.h - b.h) / dt;
+                }
             }
             if en.at_road_end && !en.end_of_road {
                 en.end_of_road = true;

@@ -1,8 +1,8 @@
 //! Resolving an OpenSCENARIO position to a world pose and, where it names one, a lane position.
 //!
 //! Headings as esmini places entities: a lane or road position without orientation faces the
-//! lane's driving direction; a relative orientation turns from there; an absolute one is the
-//! world heading. Relative object/world positions take the reference entity's heading.
+//! lane's driving direction; a relative orientation turns from there (a RoadPosition's from the
+//! road's reference direction, on either side); an absolute one is the world heading. Relative object/world positions take the reference entity's heading.
 
 use crate::entities::Entity;
 use crate::roads::lane_geometry::{lane_borders, lane_center_t};
@@ -50,7 +50,15 @@ pub fn resolve(pos: &Position, net: Option<&RoadNetwork>, entities: &[Entity]) -
         Position::Road { road_id, s, t, orientation } => {
             let net = net.ok_or("a RoadPosition needs a road network")?;
             let road = net.road_index(road_id).ok_or_else(|| format!("unknown road `{road_id}`"))?;
-            road_placement(net, road, *s, *t, orientation.as_ref())
+            let mut p = road_placement(net, road, *s, *t, orientation.as_ref())?;
+            // esmini turns a RoadPosition's relative heading from the road's reference
+            // direction on either side of the road (a LanePosition's from the lane's direction).
+            if let Some(Orientation { reference, h: Some(h), .. }) = orientation {
+                if *reference != Some(ReferenceContext::Absolute) {
+                    turn_from_road_direction(net, &mut p, *h);
+                }
+            }
+            Ok(p)
         }
         Position::RelativeRoad { entity, ds, dt, orientation } => {
             let net = net.ok_or("a RelativeRoadPosition needs a road network")?;
@@ -134,6 +142,14 @@ fn place(net: &RoadNetwork, road: usize, lane_id: i32, s: f64, offset: f64, alon
     let rel = wrap(h - pose.road_heading);
     lp.dir = if rel.abs() <= std::f64::consts::FRAC_PI_2 + 1e-9 { 1.0 } else { -1.0 };
     Ok(Placement { x: pose.x, y: pose.y, z: Some(pose.z), h, lane: Some(lp) })
+}
+
+/// Face `p` at `h` from its road's reference direction; the lane direction it drives follows.
+fn turn_from_road_direction(net: &RoadNetwork, p: &mut Placement, h: f64) {
+    let Some(lp) = p.lane.as_mut() else { return };
+    let Some(pose) = lp.pose(net) else { return };
+    p.h = pose.road_heading + h;
+    lp.dir = if wrap(h).abs() <= std::f64::consts::FRAC_PI_2 + 1e-9 { 1.0 } else { -1.0 };
 }
 
 /// Placement at road coordinates (s, t): the lane containing t.

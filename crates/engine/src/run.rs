@@ -10,7 +10,7 @@ use crate::motion::Before;
 use crate::sim::Sim;
 use crate::storyboard::{State, Transition};
 use crate::trace::{EntityTrace, RoadPos, Sample, Trace};
-use crate::{Error, Settings, Warning};
+use crate::{Error, RunControl, Settings, Warning};
 use opendrive::RoadNetwork;
 use openscenario::Scenario;
 
@@ -19,28 +19,49 @@ use openscenario::Scenario;
 pub struct Run {
     pub trace: Trace,
     pub warnings: Vec<Warning>,
+    /// Light states LightStateActions asked for, in the order asked (not simulated).
+    pub lights: Vec<crate::LightChange>,
+    /// Environments EnvironmentActions set, in the order set (not simulated).
+    pub environment: Vec<crate::EnvironmentChange>,
 }
 
-/// Run `scenario` on `roads` (None: no road network; road positions then fail with warnings).
+/// Run `scenario` on `roads` (None: no road network; road positions then fail with warnings),
+/// with esmini's random generator seeded as the reference traces were made (`--seed 0`).
 pub fn simulate(scenario: &Scenario, roads: Option<&RoadNetwork>, settings: &Settings) -> Result<Run, Error> {
+    let control = RunControl { seed: crate::esmini_random::DEFAULT_SEED, deadline: None };
+    simulate_with(scenario, roads, settings, &control)
+}
+
+/// Steps between two looks at the clock when a deadline is set.
+const DEADLINE_CHECK_STEPS: usize = 256;
+
+/// [`simulate`] with a random seed (esmini's `--seed`) and an optional wall-clock deadline.
+pub fn simulate_with(scenario: &Scenario, roads: Option<&RoadNetwork>, settings: &Settings, control: &RunControl) -> Result<Run, Error> {
+    let seed = control.seed;
     settings.check()?;
     crate::position_cache::clear();
     crate::roads::pose_memo::clear();
     crate::roads::locate::clear();
     let dt = settings.step;
-    let steps = (settings.max_time / dt + 1e-9).floor() as usize;
     let mut sim = Sim::new(scenario, roads, dt);
+    sim.random = crate::esmini_random::EsminiRandom::new(seed);
+    // A ghost's head start runs before time 0 (ghost.rs); otherwise t0 = 0.
+    let t0 = sim.time_origin();
+    let steps = ((settings.max_time - t0) / dt + 1e-9).floor() as usize;
     let mut trace = Trace {
+        start: t0,
         step: dt,
         len: 0,
         entities: sim.entities.iter().map(|e| EntityTrace { name: e.name.clone(), samples: Vec::with_capacity(steps + 1) }).collect(),
         events: Vec::new(),
+        signal_states: Vec::new(),
+        ghosts: sim.ghost.iter().filter_map(|g| sim.entities.get(g.entity)).map(|e| e.name.clone()).collect(),
     };
     let mut before = vec![Before::default(); sim.entities.len()];
     let root = 0;
 
     // Frame 0: Init actions and the first storyboard evaluation, no time passes.
-    sim.time = 0.0;
+    sim.time = t0;
     sim.align_trailers();
     for slot in init_order(&sim) {
         sim.start_action(slot);
@@ -52,12 +73,18 @@ pub fn simulate(scenario: &Scenario, roads: Option<&RoadNetwork>, settings: &Set
     }
     snapshot(&sim, &mut before);
     storyboard_step(&mut sim, 0.0);
+    sim.step_natural_drivers(0.0);
     sim.pull_trailers();
     sim.after_move(&before, 0.0);
+    sim.record_ghost_trail(0.0);
     record(&sim, &mut trace);
 
     for k in 1..=steps {
-        sim.time = (k - 1) as f64 * dt;
+        sim.time = t0 + (k - 1) as f64 * dt;
+        if k % DEADLINE_CHECK_STEPS == 0 && control.deadline.is_some_and(|d| std::time::Instant::now() >= d) {
+            return Err(Error::Deadline(sim.time));
+        }
+        let restarting = sim.ghost_restarting();
         snapshot(&sim, &mut before);
         for e in &mut sim.entities {
             e.moved_by_action = false;
@@ -66,16 +93,27 @@ pub fn simulate(scenario: &Scenario, roads: Option<&RoadNetwork>, settings: &Set
         if sim.nodes[root].state != State::Running {
             break;
         }
-        sim.time = k as f64 * dt;
-        sim.step_controllers(dt);
+        sim.time = t0 + k as f64 * dt;
+        if restarting {
+            sim.hold_during_restart();
+        } else {
+            sim.step_controllers(dt);
+        }
         sim.hold_trailers();
         sim.default_controller(dt);
+        if !restarting {
+            sim.step_followers(dt);
+            sim.step_acc_controllers(dt);
+        }
+        sim.step_natural_drivers(dt);
         sim.pull_trailers();
         sim.after_move(&before, dt);
+        sim.record_ghost_trail(dt);
         record(&sim, &mut trace);
     }
     trace.events = std::mem::take(&mut sim.events);
-    Ok(Run { trace, warnings: sim.warnings })
+    trace.signal_states = std::mem::take(&mut sim.signals.log);
+    Ok(Run { trace, warnings: sim.warnings, lights: sim.lights, environment: sim.environment })
 }
 
 /// Init actions in document order, except that a teleport relative to an entity that an Init
@@ -109,6 +147,8 @@ fn init_order(sim: &Sim) -> Vec<usize> {
 
 fn storyboard_step(sim: &mut Sim, dt: f64) {
     sim.dt = dt;
+    // Traffic-signal controllers change phase before the triggers look at the signals.
+    sim.signals.advance(sim.time);
     sim.eval_triggers(0);
     for k in 0..sim.init_actions.len() {
         let slot = sim.init_actions[k];

@@ -15,6 +15,18 @@ impl Default for Settings {
     }
 }
 
+/// What steers one run besides its settings: esmini's random seed and a wall-clock limit.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct RunControl {
+    /// Seed of esmini's random generator (esmini's `--seed`; the reference traces use 0). It
+    /// decides what esmini leaves to chance, e.g. which of two equally turning junction arms an
+    /// entity takes.
+    pub seed: u32,
+    /// Stop with [`crate::Error::Deadline`] once this instant has passed (a batch's per-scenario
+    /// time limit). Checked every few hundred steps, so a run overshoots it by well under 1 ms.
+    pub deadline: Option<std::time::Instant>,
+}
+
 /// Most steps one run may take (hostile settings: a tiny step with a huge cap).
 pub const MAX_STEPS: usize = 10_000_000;
 

@@ -34,6 +34,17 @@ pub struct Sim<'a> {
     pub controllers: Vec<Option<crate::controllers::ControllerRt>>,
     /// Who pulls whom (actions/trailer.rs).
     pub trailers: crate::actions::trailer::Trailers,
+    /// The ghost of a FollowGhost / FollowReference controller (ghost.rs).
+    pub ghost: Option<crate::ghost::Ghost>,
+    /// Maneuver groups with `selectTriggeringEntities` (storyboard/select_triggering.rs).
+    pub triggering_actors: Vec<crate::storyboard::select_triggering::TriggeringActors>,
+    /// Light states and environments asked for (recorded.rs).
+    pub lights: Vec<crate::recorded::LightChange>,
+    pub environment: Vec<crate::recorded::EnvironmentChange>,
+    /// Traffic-signal states and controllers (signals.rs).
+    pub signals: crate::signals::Signals<'a>,
+    /// esmini's global random generator (esmini_random.rs), seeded by `simulate_seeded`.
+    pub random: crate::esmini_random::EsminiRandom,
 }
 
 impl<'a> Sim<'a> {
@@ -55,7 +66,14 @@ impl<'a> Sim<'a> {
             warnings: Vec::new(),
             controllers: vec![None; scenario.entities.len()],
             trailers: Default::default(),
+            ghost: None,
+            triggering_actors: Vec::new(),
+            lights: Vec::new(),
+            environment: Vec::new(),
+            signals: Default::default(),
+            random: Default::default(),
         };
+        sim.signals = crate::signals::Signals::new(scenario, net, &mut sim.warnings);
         sim.trailers = crate::actions::trailer::Trailers::build(scenario, &mut sim.entities);
         for (i, e) in scenario.entities.iter().enumerate() {
             for c in &e.controllers {
@@ -63,6 +81,7 @@ impl<'a> Sim<'a> {
             }
         }
         sim.build();
+        sim.setup_ghost();
         sim
     }
 
@@ -153,9 +172,7 @@ impl<'a> Sim<'a> {
                             }
                         }
                     }
-                    if mg.select_triggering_entities {
-                        self.warnings.push(Warning::at(&mg.origin, format!("selectTriggeringEntities of maneuver group `{}` is not supported; the listed actors act", mg.name)));
-                    }
+                    let first_slot = self.actions.len();
                     for m in &mg.maneuvers {
                         let mn = self.push_node(Node::new(Kind::Maneuver, &m.name, Some(gn)));
                         for ev in &m.events {
@@ -171,6 +188,10 @@ impl<'a> Sim<'a> {
                                 self.add_action(a, &a.name, Some(en), actors);
                             }
                         }
+                    }
+                    if mg.select_triggering_entities {
+                        let slots = (first_slot..self.actions.len()).filter(|&k| matches!(self.actions[k].model.kind, ActionKind::Private(_))).collect();
+                        self.triggering_actors.push(crate::storyboard::select_triggering::TriggeringActors { group: gn, listed: actors, slots });
                     }
                 }
             }

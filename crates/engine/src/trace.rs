@@ -1,6 +1,6 @@
-//! The result of a run: every entity's state at every engine step, and the storyboard's
-//! state transitions. This is the engine's only output format; the CommonRoad converter and
-//! the conformance CSV both read it.
+//! The result of a run: every entity's state at every engine step, the storyboard's
+//! state transitions, and every change of a traffic signal's state. This is the engine's only
+//! output format; the CommonRoad converter and the conformance CSV both read it.
 
 use std::fmt::Write as _;
 
@@ -54,26 +54,59 @@ pub struct StoryboardEvent {
     pub to: String,
 }
 
+/// A traffic signal took a state (OpenSCENARIO state text, e.g. "off;off;on") at `time`, set by
+/// a TrafficSignalStateAction or by a phase of a traffic-signal controller.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SignalState {
+    pub time: f64,
+    /// The signal's name in the scenario (its OpenDRIVE signal id).
+    pub signal: String,
+    pub state: String,
+}
+
 /// Everything a run produced.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Trace {
+    /// Time of the first step, s: 0, or −head start when a ghost runs ahead (`ghost.rs`).
+    pub start: f64,
     /// Engine step, s.
     pub step: f64,
     /// Number of steps recorded; every `EntityTrace::samples` has this length.
     pub len: usize,
     pub entities: Vec<EntityTrace>,
     pub events: Vec<StoryboardEvent>,
+    /// Every change of a traffic signal's state, in the order it happened (time 0 holds the
+    /// initial states). Only signals that a controller or an action sets appear.
+    pub signal_states: Vec<SignalState>,
+    /// Entities that are ghosts (FollowGhost/FollowReference run them ahead of their entity):
+    /// part of the run, not road users.
+    pub ghosts: Vec<String>,
 }
 
 impl Trace {
     /// Time of step `k`, s.
     pub fn time(&self, k: usize) -> f64 {
-        k as f64 * self.step
+        self.start + k as f64 * self.step
     }
 
-    /// Simulated duration, s (time of the last recorded step).
+    /// Simulated duration, s (from the first to the last recorded step).
     pub fn duration(&self) -> f64 {
+        self.len.saturating_sub(1) as f64 * self.step
+    }
+
+    /// Time of the last recorded step, s (the scenario's end; `duration()` when `start` is 0).
+    pub fn end_time(&self) -> f64 {
         self.time(self.len.saturating_sub(1))
+    }
+
+    /// Index of the row at time 0: 0, or the number of head-start rows a ghost ran before the
+    /// scenario's own time began (those rows are not part of the scenario).
+    pub fn zero_index(&self) -> usize {
+        if self.start < 0.0 && self.step > 0.0 {
+            ((-self.start / self.step).round() as usize).min(self.len)
+        } else {
+            0
+        }
     }
 
     /// The trace as CSV in the format `conformance.py` reads

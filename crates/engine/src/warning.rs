@@ -30,9 +30,12 @@ impl fmt::Display for Warning {
     }
 }
 
-/// A run that could not start.
+/// A run that could not start, or was stopped.
 #[derive(Debug, Clone, thiserror::Error)]
 pub enum Error {
     #[error("invalid settings: {0}")]
     Settings(String),
+    /// The run's wall-clock deadline passed; the simulated time it had reached.
+    #[error("stopped at {0:.2} s of simulated time: the time limit for the run passed")]
+    Deadline(f64),
 }

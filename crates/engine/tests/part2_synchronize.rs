@@ -17,7 +17,7 @@ fn synchronize(master_s: f64, target_s: f64, final_speed: &str) -> String {
 
 fn scenario(target_speed: f64, final_speed: &str) -> String {
     // Ego at s = 10 drives 10 m/s towards s = 110; Target at s = 50 (lane -2) must reach s = 150
-    // at the same time. The default tolerance (1 m) makes both distances effectively 99 m.
+    // at the same time: 100 m each (esmini 3.6's default tolerance is 0 m).
     let init = format!(
         "{}{}{}{}",
         teleport("Ego", 10.0, -1),
@@ -41,15 +41,15 @@ fn same_speed_same_distance_keeps_the_speed() {
 
 #[test]
 fn without_final_speed_accelerates_constantly_to_arrive_together() {
-    // 99 m in 9.9 s from 5 m/s: constant acceleration a = 2·(99 − 5·9.9)/9.9² = 1.0101 m/s²
-    // (final speed 15.1 m/s); the action ends when the master is within its tolerance.
+    // 100 m in 10 s from 5 m/s: constant acceleration a = 2·(100 − 5·10)/10² = 1 m/s²
+    // (final speed 15 m/s); the action ends when the master arrives.
     let run = run(&scenario(5.0, ""));
     let v5 = at(&run, "Target", 5.0).speed;
-    assert!(close(v5, 5.0 + 5.0 * 1.0101, 0.05), "{v5}");
+    assert!(close(v5, 5.0 + 5.0 * 1.0, 0.05), "{v5}");
     let end = event_time(&run, "SyncAction", "end").expect("sync ends");
-    assert!(close(end, 9.9, 0.05), "{end}");
+    assert!(close(end, 10.0, 0.05), "{end}");
     let g = at(&run, "Target", end);
-    assert!(close(g.x, 149.0, 0.3), "target at {} when the master arrives", g.x);
+    assert!(close(g.x, 150.0, 0.3), "target at {} when the master arrives", g.x);
 }
 
 #[test]
@@ -59,23 +59,23 @@ fn final_speed_is_reached_on_arrival() {
     let fin = r#"<FinalSpeed><AbsoluteSpeed value="10"/></FinalSpeed>"#;
     let run = run(&scenario(5.0, fin));
     let end = event_time(&run, "SyncAction", "end").expect("sync ends");
-    assert!(close(end, 9.9, 0.05), "{end}");
+    assert!(close(end, 10.0, 0.05), "{end}");
     let g = at(&run, "Target", end + 0.01);
-    assert!(close(g.x, 149.0, 0.5), "{}", g.x);
+    assert!(close(g.x, 150.0, 0.5), "{}", g.x);
     assert!(close(g.speed, 10.0, 1e-9));
     // Average speed 10 from 5 and back to 10: the profile rises above 10 on the way (convex).
-    let peak = (1..990).map(|k| at(&run, "Target", k as f64 * 0.01).speed).fold(0.0, f64::max);
+    let peak = (1..1000).map(|k| at(&run, "Target", k as f64 * 0.01).speed).fold(0.0, f64::max);
     assert!(peak > 12.0, "{peak}");
 }
 
 #[test]
 fn steady_state_holds_the_final_speed_over_the_last_distance() {
-    // Steady state over the last 30 m at 10 m/s (3 s): from t ≈ 6.9 s the speed stays 10 m/s.
+    // Steady state over the last 30 m at 10 m/s (3 s): from t ≈ 7 s the speed stays 10 m/s.
     let fin = r#"<FinalSpeed><AbsoluteSpeed value="10"><TargetDistanceSteadyState distance="30"/></AbsoluteSpeed></FinalSpeed>"#;
     let run = run(&scenario(5.0, fin));
     for t in [7.2, 8.0, 9.5] {
         assert!(close(at(&run, "Target", t).speed, 10.0, 1e-9), "t={t}");
     }
     let end = event_time(&run, "SyncAction", "end").expect("sync ends");
-    assert!(close(at(&run, "Target", end).x, 149.0, 0.6));
+    assert!(close(at(&run, "Target", end).x, 150.0, 0.6));
 }

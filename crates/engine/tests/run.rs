@@ -39,3 +39,22 @@ fn bad_settings_are_errors() {
     let run = engine::simulate(&sc, None, &Settings { step: 0.01, max_time: 0.5 }).expect("runs");
     assert!(run.warnings.iter().any(|w| w.message.contains("road network")));
 }
+
+#[test]
+fn a_passed_deadline_stops_the_run_at_the_next_clock_check() {
+    let text = xosc(&teleport("Ego", 10.0, -1), "", "");
+    let path = fixtures().join("test.xosc");
+    let loaded = openscenario::load_str(&path, &text, &Default::default()).expect("loads");
+    let openscenario::Content::Scenario(sc) = loaded.content else { panic!() };
+    let settings = Settings { step: 0.01, max_time: 60.0 };
+    // The clock is looked at every 256 steps: the first look is in step 256, whose frame
+    // starts at 255 × 0.01 s.
+    let control = engine::RunControl { seed: 0, deadline: Some(std::time::Instant::now()) };
+    match engine::simulate_with(&sc, None, &settings, &control) {
+        Err(engine::Error::Deadline(t)) => assert!(close(t, 2.55, 1e-9), "{t}"),
+        other => panic!("expected a deadline error, got {other:?}"),
+    }
+    // Without a deadline the same run goes to the cap.
+    let run = engine::simulate_with(&sc, None, &settings, &engine::RunControl::default()).expect("runs");
+    assert_eq!(run.trace.len, 6001);
+}

@@ -64,7 +64,17 @@ impl Path {
 
     /// Position, heading and curvature at arc length `s` (see [`Path::normalize_s`]).
     pub fn pose_at(&self, s: f64) -> PathPoint {
-        let s = self.normalize_s(s);
+        self.eval(self.normalize_s(s))
+    }
+
+    /// The point at the end of the path. On a closed path [`Path::pose_at`] wraps the length
+    /// to the start, which is a different point when the shape itself does not return there
+    /// (a NURBS marked closed); an entity that finishes the path stays at its end (esmini).
+    pub fn end_pose(&self) -> PathPoint {
+        self.eval(self.length)
+    }
+
+    fn eval(&self, s: f64) -> PathPoint {
         let mut p = match &self.curve {
             Curve::Polyline(p) => p.eval(s),
             Curve::Nurbs(n) => n.eval(s),

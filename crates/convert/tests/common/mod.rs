@@ -113,6 +113,7 @@ pub fn sample(x: f64, y: f64, h: f64, speed: f64) -> Sample {
 /// A trace of `len` steps of 0.01 s; `f(k)` gives each entity's sample at step k.
 pub fn trace(len: usize, names: &[&str], f: impl Fn(usize, usize) -> Option<Sample>) -> Trace {
     Trace {
+        start: 0.0,
         step: 0.01,
         len,
         entities: names
@@ -123,7 +124,9 @@ pub fn trace(len: usize, names: &[&str], f: impl Fn(usize, usize) -> Option<Samp
                 samples: (0..len).map(|k| f(i, k)).collect(),
             })
             .collect(),
+        ghosts: Vec::new(),
         events: Vec::new(),
+        signal_states: Vec::new(),
     }
 }
 

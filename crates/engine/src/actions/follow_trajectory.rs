@@ -157,14 +157,16 @@ impl<'a> Sim<'a> {
                 }
             }
         }
-        let p = f.path.pose_at(f.s);
-        let (mut x, mut y) = (p.x, p.y);
-        let heading = if speed < 0.0 && f.timing.is_none() { p.heading + std::f64::consts::PI } else { p.heading };
         let done = match f.timing {
             None => !f.path.is_closed() && dt > 0.0 && speed != 0.0 && f.s > len - SMALL,
             // Summed steps drift below the last stamp by rounding; esmini's sum reaches it.
             Some(_) => f.path.time_range().is_some_and(|r| f.time >= r.1 - 1e-9),
         };
+        // A timed path that ends leaves the entity at its end, also when it is marked closed.
+        let at_end = done && f.timing.is_some() && f.path.is_closed() && f.s >= len - SMALL;
+        let p = if at_end { f.path.end_pose() } else { f.path.pose_at(f.s) };
+        let (mut x, mut y) = (p.x, p.y);
+        let heading = if speed < 0.0 && f.timing.is_none() { p.heading + std::f64::consts::PI } else { p.heading };
         if done {
             // The rest of the step's distance continues along the final heading.
             let rest = match f.timing {

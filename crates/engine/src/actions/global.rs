@@ -1,5 +1,6 @@
-//! Global actions: parameter and variable set / modify; everything else is a warning (part 2
-//! adds entities, traffic signals and the environment).
+//! Global actions: parameter and variable set / modify, traffic-signal state and controller
+//! phase (`traffic_signal.rs`), add / delete entity (`add_delete_entity.rs`), environment
+//! (recorded in `Run::environment`); everything else is a warning.
 
 use crate::sim::Sim;
 use openscenario::GlobalAction;
@@ -27,7 +28,14 @@ impl<'a> Sim<'a> {
                     self.warn_action(slot, format!("VariableModifyAction: variable `{variable}` is missing or not a number"));
                 }
             }
-            GlobalAction::Environment(_) => {}
+            GlobalAction::Environment(env) => {
+                let time = self.time;
+                self.environment.push(crate::recorded::EnvironmentChange { time, environment: env.clone() });
+            }
+            GlobalAction::AddEntity { entity, position } => self.add_entity(slot, entity, position),
+            GlobalAction::DeleteEntity { entity } => self.delete_entity(slot, entity),
+            GlobalAction::TrafficSignalState { name, state } => self.set_signal_state(slot, name, state),
+            GlobalAction::TrafficSignalController { controller, phase } => self.set_signal_phase(slot, controller, phase),
             other => self.warn_action(slot, format!("{} is not supported yet; the action completes at once", other.element_name())),
         }
     }

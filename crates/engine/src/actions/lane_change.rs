@@ -85,7 +85,7 @@ impl<'a> Sim<'a> {
         ActionRt::LaneChange(LaneChangeRt { transition: t, internal })
     }
 
-    pub(super) fn step_lane_change(&mut self, e: usize, l: &mut LaneChangeRt) -> bool {
+    pub(crate) fn step_lane_change(&mut self, e: usize, l: &mut LaneChangeRt) -> bool {
         let Some(net) = self.net else { return true };
         let Some(en) = self.entities.get(e) else { return true };
         let speed = en.speed;
@@ -94,6 +94,14 @@ impl<'a> Sim<'a> {
         }
         let dt = self.dt;
         let t = &mut l.transition;
+        // esmini 3.6.0, over time (or rate): the step's lateral part is the rate at the start of
+        // the step times dt, its longitudinal part what is left of speed·dt, and the heading
+        // the direction of that step (asin of rate / speed), not atan(rate / speed).
+        let rate_before = t.scaled_derivative();
+        let lagged = t.dimension != DynamicsDimension::Distance
+            && t.shape != openscenario::DynamicsShape::Step
+            && t.param_target >= SMALL
+            && dt * rate_before.abs() < (speed * dt).abs() + SMALL;
         if t.dimension == DynamicsDimension::Distance {
             // esmini counts the distance along the road: the step's length projected by the
             // yaw the entity had relative to its lane.
@@ -109,13 +117,27 @@ impl<'a> Sim<'a> {
         l.internal.offset = agnostic * lane_sign;
         let dist = speed * dt;
         let d_lat = l.internal.offset - old_offset;
-        let d_long = sign(speed) * (dist * dist - d_lat * d_lat).max(0.0).sqrt();
+        // A step jumps sideways and still drives on the whole speed·dt (esmini 3.6's traces).
+        let d_lat_step = if lagged {
+            dt * rate_before.abs()
+        } else if t.shape == openscenario::DynamicsShape::Step {
+            0.0
+        } else {
+            d_lat.abs()
+        };
+        let d_long = sign(speed) * (dist * dist - d_lat_step * d_lat_step).max(0.0).sqrt();
         let status = move_along_s(net, &mut l.internal, d_long);
         let done = t.done(agnostic);
         let yaw = if done {
             0.0
         } else {
-            let angle = if t.dimension == DynamicsDimension::Distance { rate.atan() } else { (rate / crate::dynamics::avoid_zero(speed)).atan() };
+            let angle = if lagged {
+                (sign(speed) * sign(rate_before) * d_lat_step).atan2(d_long.abs())
+            } else if t.dimension == DynamicsDimension::Distance {
+                rate.atan()
+            } else {
+                (rate / crate::dynamics::avoid_zero(speed)).atan()
+            };
             l.internal.dir * lane_sign * angle
         };
         let mut attached = l.internal;

@@ -3,6 +3,7 @@
 //! (longitudinal / lateral), as esmini does; an action node ends when all its instances are
 //! done.
 
+pub mod add_delete_entity;
 pub mod follow_trajectory;
 pub mod global;
 pub mod lane_change;
@@ -14,6 +15,7 @@ pub mod speed;
 pub mod speed_profile;
 pub mod synchronize;
 pub mod teleport;
+pub mod traffic_signal;
 pub mod trailer;
 
 use crate::sim::Sim;
@@ -123,7 +125,14 @@ impl<'a> Sim<'a> {
             ActionKind::Private(p) => {
                 for k in 0..self.actions[slot].actors.len() {
                     let e = self.actions[slot].actors[k];
-                    let rt = self.start_private(slot, e, p);
+                    let rt = if self.entities.get(e).is_some_and(|en| en.active) {
+                        self.start_private(slot, e, p)
+                    } else {
+                        let name = self.entities.get(e).map_or("", |en| en.name.as_str());
+                        let msg = format!("{}: entity `{name}` does not exist (deleted); nothing to do for it", p.element_name());
+                        self.warn_action(slot, msg);
+                        ActionRt::Done
+                    };
                     self.actions[slot].instances.push(Instance { entity: Some(e), rt });
                 }
             }
@@ -208,6 +217,12 @@ impl<'a> Sim<'a> {
                         self.activate_controller(e, true);
                     }
                 }
+                ActionRt::Done
+            }
+            PrivateAction::LightState { light_type, state, transition_time } => {
+                let (time, entity) = (self.time, self.entities.get(e).map_or(String::new(), |en| en.name.clone()));
+                self.lights.push(crate::recorded::LightChange { time, entity, light: light_type.clone(), state: state.clone(), transition_time: *transition_time });
+                self.warn_action(slot, "LightStateAction: the light state is kept in the run's light log (Run::lights); CommonRoad 2020a has no place for vehicle lights".into());
                 ActionRt::Done
             }
             PrivateAction::ConnectTrailer { trailer } => {

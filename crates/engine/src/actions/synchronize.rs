@@ -103,9 +103,10 @@ impl<'a> Sim<'a> {
             final_speed: fin,
             steady_dist,
             steady_time,
-            // esmini's default tolerance when none is given.
-            tolerance: tolerances.1.unwrap_or(1.0),
-            tolerance_master: tolerances.0.unwrap_or(1.0),
+            // Without targetTolerance(Master) esmini 3.6 aims at the positions themselves (its
+            // distance tolerance default is 0; the synchronised corpus scenarios show it).
+            tolerance: tolerances.1.unwrap_or(0.0),
+            tolerance_master: tolerances.0.unwrap_or(0.0),
             mode: Mode::None,
             submode: Submode::None,
             last_dist: LARGE,

@@ -45,15 +45,28 @@ impl<'a> Sim<'a> {
             return self.warn_once(c, format!("{} is not supported; it never becomes true", cond.element_name()));
         }
         let mut result = false;
+        c.hits.clear();
+        let exists = |s: &Self, i: usize| s.entities.get(i).is_some_and(|e| e.active);
         for i in 0..c.triggering.len() {
             let idx = c.triggering[i];
+            // esmini skips a triggering entity that does not exist (deleted), and every one
+            // while the referenced entity does not exist.
+            if !exists(self, idx) || c.other.is_some_and(|o| !exists(self, o)) {
+                continue;
+            }
             let r = self.check_one(idx, c.other, point, cond);
             result = r;
+            if r {
+                c.hits.push(idx);
+            }
             match rule {
                 TriggeringEntitiesRule::Any if r => break,
                 TriggeringEntitiesRule::All if !r => break,
                 _ => {}
             }
+        }
+        if result {
+            std::mem::swap(&mut c.fired_by, &mut c.hits);
         }
         result
     }

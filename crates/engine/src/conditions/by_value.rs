@@ -9,7 +9,7 @@ use openscenario::{StoryboardElementState as Want, ValueCondition};
 impl<'a> Sim<'a> {
     pub(super) fn check_value(&mut self, c: &mut ConditionRt<'a>, v: &ValueCondition) -> bool {
         match v {
-            ValueCondition::SimulationTime { value, rule } => compare(self.time, *value, *rule),
+            ValueCondition::SimulationTime { value, rule } => compare(self.time, *value - c.time_shift, *rule),
             ValueCondition::Parameter { parameter, value, rule } => match self.params.get(parameter) {
                 Some(cur) => compare_text(cur, value, *rule),
                 None => self.warn_once(c, format!("parameter `{parameter}` is not declared")),
@@ -39,10 +39,11 @@ impl<'a> Sim<'a> {
                 }
                 result
             }
-            ValueCondition::TimeOfDay { .. }
-            | ValueCondition::UserDefinedValue { .. }
-            | ValueCondition::TrafficSignal { .. }
-            | ValueCondition::TrafficSignalController { .. } => self.warn_once(c, format!("{} is not supported; it never becomes true", v.element_name())),
+            ValueCondition::TrafficSignal { name, state } => self.check_signal(c, name, state),
+            ValueCondition::TrafficSignalController { controller, phase } => self.check_signal_controller(c, controller, phase),
+            ValueCondition::TimeOfDay { .. } | ValueCondition::UserDefinedValue { .. } => {
+                self.warn_once(c, format!("{} is not supported; it never becomes true", v.element_name()))
+            }
         }
     }
 

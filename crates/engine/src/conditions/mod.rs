@@ -7,6 +7,8 @@ pub mod by_entity;
 pub mod by_value;
 pub mod clearance;
 pub mod distance;
+pub mod triggering;
+pub mod traffic_signal;
 
 use crate::sim::Sim;
 use crate::storyboard::{Kind, Node, State, Transition};
@@ -23,6 +25,12 @@ pub struct ConditionRt<'a> {
     /// (time, edge-filtered value) at each change, for delays.
     history: Vec<(f64, bool)>,
     pub triggering: Vec<usize>,
+    /// Seconds a SimulationTime condition fires early (a ghost's head start, `ghost.rs`).
+    pub time_shift: f64,
+    /// The triggering entities for which the condition held when it was last true (read by
+    /// `selectTriggeringEntities`), and the scratch list of the evaluation in progress.
+    pub fired_by: Vec<usize>,
+    hits: Vec<usize>,
     pub other: Option<usize>,
     pub element: Option<usize>,
     pub cursor: usize,
@@ -132,6 +140,9 @@ impl<'a> ConditionRt<'a> {
             value: false,
             history: Vec::new(),
             triggering,
+            time_shift: 0.0,
+            fired_by: Vec::new(),
+            hits: Vec::new(),
             other,
             element: None,
             cursor: 0,

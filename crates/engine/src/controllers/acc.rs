@@ -4,6 +4,12 @@
 //! 3 m + `timeGap` × speed, blending a distance term and a speed term into an acceleration
 //! clipped to the vehicle's limits. Another action changing the speed sets a new set speed. In
 //! `override` mode it moves the entity itself; otherwise (additive) it only sets the speed.
+//!
+//! esmini steps its controllers after the default controller has moved every entity: so the
+//! controller sees the others where they are at the end of the step, and in additive mode the
+//! entity moves by the speed the controller set one step earlier. `Sim::step_acc_controllers`
+//! runs after the default controller; before it, `hold_for_acc` keeps the default controller off
+//! an entity the controller moves itself (override mode).
 
 use crate::conditions::distance::between;
 use crate::roads::lane_geometry::lane_center_t;
@@ -27,6 +33,8 @@ pub struct AccRt {
     lateral_dist: f64,
     current_speed: f64,
     override_mode: bool,
+    /// An action moved the entity this step (seen before the default controller ran).
+    moved_by_action: bool,
 }
 
 impl AccRt {
@@ -40,6 +48,7 @@ impl AccRt {
             lateral_dist: num("lateralDist").unwrap_or(5.0),
             current_speed: 0.0,
             override_mode: c.properties.get("mode") == Some("override"),
+            moved_by_action: false,
         }
     }
 
@@ -76,7 +85,33 @@ fn lane_delta(net: &RoadNetwork, a: LanePos, b: LanePos, max: f64) -> Option<(f6
 }
 
 impl<'a> Sim<'a> {
-    pub(super) fn step_acc(&mut self, e: usize, a: &mut AccRt, dt: f64) {
+    /// Before the default controller: remember whether an action moved entity `e`, and in
+    /// override mode keep the default controller from moving it (the controller does).
+    pub(super) fn hold_for_acc(&mut self, e: usize, a: &mut AccRt) {
+        let Some(en) = self.entities.get_mut(e) else { return };
+        a.moved_by_action = en.moved_by_action;
+        if a.override_mode {
+            en.moved_by_action = true;
+        }
+    }
+
+    /// Step every active ACC (and ALKS) controller by `dt`, after the default controller.
+    pub fn step_acc_controllers(&mut self, dt: f64) {
+        for e in 0..self.controllers.len() {
+            if !matches!(self.controllers.get(e), Some(Some(super::ControllerRt::Acc(_)))) {
+                continue;
+            }
+            let Some(Some(super::ControllerRt::Acc(mut a))) = self.controllers.get_mut(e).map(Option::take) else { continue };
+            if a.active && self.entities.get(e).is_some_and(|en| en.active) {
+                self.step_acc(e, &mut a, dt);
+            }
+            if let Some(slot) = self.controllers.get_mut(e) {
+                *slot = Some(super::ControllerRt::Acc(a));
+            }
+        }
+    }
+
+    fn step_acc(&mut self, e: usize, a: &mut AccRt, dt: f64) {
         let Some(me) = self.entities.get(e) else { return };
         // In override mode esmini's longitudinal actions leave the entity alone; otherwise a
         // speed another action set becomes the new set speed.
@@ -135,7 +170,7 @@ impl<'a> Sim<'a> {
         }
         let net = self.net;
         let Some(en) = self.entities.get_mut(e) else { return };
-        if a.override_mode && !en.moved_by_action {
+        if a.override_mode && !a.moved_by_action {
             match (net, en.lane) {
                 (Some(net), Some(mut lp)) => {
                     move_along_s(net, &mut lp, a.current_speed * dt);

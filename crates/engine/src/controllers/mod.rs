@@ -2,12 +2,20 @@
 //! AssignControllerAction) and switches on with ActivateControllerAction. A controller's type is
 //! its `esminiController` property, else its name (esmini's rule).
 //!
-//! Modelled: ACCController (see `acc`). Every other type leaves the entity to the default
-//! controller and the storyboard, with a warning naming it; the ones that need a human or an
-//! outside process (Interactive, External, SUMO, HID, UDP driver) say so.
+//! Modelled: ACCController (see `acc`), ALKSController (the same model, see `alks`). Every
+//! other type leaves the entity to the default controller and the storyboard, with a warning
+//! naming it; the ones that need a human or an outside process (Interactive, External, SUMO,
+//! HID, UDP driver) say so.
 
 pub mod acc;
+pub mod alks;
 pub mod alks_r157;
+pub mod follow_ghost;
+pub mod follow_reference;
+pub mod followers;
+pub mod kinematic_vehicle;
+pub mod natural_driver;
+pub mod natural_view;
 
 use crate::sim::Sim;
 use crate::Warning;
@@ -18,6 +26,9 @@ use openscenario::Controller;
 pub enum ControllerRt {
     Acc(acc::AccRt),
     AlksR157(Box<alks_r157::AlksR157Rt>),
+    NaturalDriver(Box<natural_driver::NaturalDriverRt>),
+    FollowGhost(Box<follow_ghost::FollowGhostRt>),
+    FollowReference(Box<follow_reference::FollowReferenceRt>),
 }
 
 /// Types that need a driver or a co-simulator outside osc2cr.
@@ -34,6 +45,7 @@ impl<'a> Sim<'a> {
         let kind = controller_type(c);
         let rt = match kind {
             "ACCController" => Some(ControllerRt::Acc(acc::AccRt::new(c))),
+            "ALKSController" => Some(ControllerRt::Acc(alks::new(c))),
             "ALKS_R157SM_Controller" => {
                 let (rt, note) = alks_r157::AlksR157Rt::new(c);
                 if let Some(n) = note {
@@ -41,6 +53,9 @@ impl<'a> Sim<'a> {
                 }
                 Some(ControllerRt::AlksR157(Box::new(rt)))
             }
+            "NaturalDriver" => Some(ControllerRt::NaturalDriver(Box::new(natural_driver::NaturalDriverRt::new(c)))),
+            "FollowGhostController" => Some(ControllerRt::FollowGhost(Box::new(follow_ghost::FollowGhostRt::new(c)))),
+            "FollowReferenceController" => Some(ControllerRt::FollowReference(Box::new(follow_reference::FollowReferenceRt::new(c)))),
             _ => None,
         };
         if rt.is_none() {
@@ -62,6 +77,18 @@ impl<'a> Sim<'a> {
         match self.controllers.get_mut(e) {
             Some(Some(ControllerRt::Acc(a))) => a.activate(speed, longitudinal),
             Some(Some(ControllerRt::AlksR157(a))) => a.activate(speed, longitudinal),
+            Some(Some(ControllerRt::NaturalDriver(a))) => a.activate(speed, longitudinal),
+            Some(Some(ControllerRt::FollowGhost(f))) => {
+                if let Some(en) = self.entities.get(e) {
+                    f.activate(en);
+                }
+            }
+            Some(Some(ControllerRt::FollowReference(f))) => {
+                let wheelbase = follow_reference::wheelbase(self.scenario, e);
+                if let Some(en) = self.entities.get(e) {
+                    f.activate(en, wheelbase);
+                }
+            }
             _ => {}
         }
     }
@@ -72,8 +99,9 @@ impl<'a> Sim<'a> {
             let Some(mut rt) = self.controllers.get_mut(e).and_then(|c| c.take()) else { continue };
             match &mut rt {
                 ControllerRt::Acc(a) => {
+                    // Stepped after the default controller (`step_acc_controllers`).
                     if a.active && self.entities.get(e).is_some_and(|en| en.active) {
-                        self.step_acc(e, a, dt);
+                        self.hold_for_acc(e, a);
                     }
                 }
                 ControllerRt::AlksR157(a) => {
@@ -81,6 +109,16 @@ impl<'a> Sim<'a> {
                         self.step_alks_r157(e, a, dt);
                     }
                 }
+                ControllerRt::NaturalDriver(a) => {
+                    // Decides and moves after the default controller (`step_natural_drivers`).
+                    if a.active && self.entities.get(e).is_some_and(|en| en.active) {
+                        self.step_natural_driver_action(e, a, dt);
+                    }
+                }
+                // Steer after the default controller moved what they follow (`step_followers`);
+                // until then the default controller leaves the entity alone.
+                ControllerRt::FollowGhost(f) => self.hold_follower(e, f.active),
+                ControllerRt::FollowReference(f) => self.hold_follower(e, f.active),
             }
             if let Some(slot) = self.controllers.get_mut(e) {
                 *slot = Some(rt);

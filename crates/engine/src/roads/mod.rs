@@ -4,11 +4,13 @@
 pub mod banking;
 pub mod lane_geometry;
 pub mod lane_position;
+pub mod lane_slope;
 pub mod locate;
 pub mod offroad;
 pub mod pose_memo;
 pub mod road_distance;
 pub mod road_follow;
+pub mod zero_width;
 
 pub use lane_position::LanePos;
-pub use road_follow::{move_along_route, move_along_s, MoveStatus};
+pub use road_follow::{move_along_route, move_along_route_drawing, move_along_s, MoveStatus};

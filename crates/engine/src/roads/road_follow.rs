@@ -2,14 +2,19 @@
 //! reference line (lanes off the reference line on curves are longer or shorter), across lane
 //! sections, linked roads and junctions.
 //!
-//! Junction rule without a route: the continuation whose heading at its far end turns least from
-//! the heading at entry (the straightest way through), ties broken by road index then lane id.
-//! esmini starts every entity with junction selector angle 0 (straight on), which this matches
-//! for the first junction an entity meets.
+//! Junction rule without a route, as esmini's `Position::MoveToConnectingRoad` with junction
+//! selector angle 0 (straight on, which is what esmini 3.6's default controller uses): the
+//! continuations are visited in the junction's connection order and the one whose heading at its
+//! far end turns least from the heading the entity drives in wins; a later one that turns less
+//! wins outright, one that turns as much (within 1e-10 rad, e.g. the two ±90° arms of a T) wins
+//! when a coin drawn from esmini's global generator says 1 (`esmini_random`). Only the default
+//! controller's move draws (`move_along_route_drawing`); probes and other moves keep the earlier
+//! arm at a tie, so they never disturb the generator's sequence.
 
 use super::lane_geometry::lane_borders;
 use super::lane_position::LanePos;
-use opendrive::{ContactPoint, LaneRef, RoadNetwork};
+use crate::esmini_random::EsminiRandom;
+use opendrive::{ContactPoint, ElementType, LaneRef, RoadNetwork};
 
 /// What happened during a move.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -22,6 +27,9 @@ pub enum MoveStatus {
 /// Most road changes one move may cross (guards against zero-length road loops).
 const MAX_HOPS: usize = 16;
 
+/// esmini's SMALL_NUMBER: junction arms turning within this of each other are a tie, rad.
+const TIE: f64 = 1e-10;
+
 /// Move `pos` by `dist` metres along the direction it faces (negative: backwards).
 pub fn move_along_s(net: &RoadNetwork, pos: &mut LanePos, dist: f64) -> MoveStatus {
     move_along_route(net, pos, dist, None)
@@ -29,6 +37,28 @@ pub fn move_along_s(net: &RoadNetwork, pos: &mut LanePos, dist: f64) -> MoveStat
 
 /// [`move_along_s`], taking at junctions the road an assigned route continues on.
 pub fn move_along_route(net: &RoadNetwork, pos: &mut LanePos, dist: f64, route: Option<&routing::Route>) -> MoveStatus {
+    move_along(net, pos, dist, route, None)
+}
+
+/// [`move_along_route`] for an entity's own move by the default controller: a junction tie is
+/// broken by a draw from esmini's generator, as esmini does.
+pub fn move_along_route_drawing(
+    net: &RoadNetwork,
+    pos: &mut LanePos,
+    dist: f64,
+    route: Option<&routing::Route>,
+    random: &mut EsminiRandom,
+) -> MoveStatus {
+    move_along(net, pos, dist, route, Some(random))
+}
+
+fn move_along(
+    net: &RoadNetwork,
+    pos: &mut LanePos,
+    dist: f64,
+    route: Option<&routing::Route>,
+    mut random: Option<&mut EsminiRandom>,
+) -> MoveStatus {
     let Some(road) = net.roads.get(pos.road) else { return MoveStatus::EndOfRoad };
     let s0 = pos.s.clamp(0.0, road.length);
     let p = super::pose_memo::reference_pose(road, s0);
@@ -39,6 +69,9 @@ pub fn move_along_route(net: &RoadNetwork, pos: &mut LanePos, dist: f64, route: 
     let mut s = s0 + ds;
     let section_before = road.section_index_at(s0);
     let road_before = pos.road;
+    // Where the entity is when it leaves a road: esmini measures the turn of each junction arm
+    // from the road heading there (the start of the move, then the end of the road it came in by).
+    let mut s_here = s0;
     for _ in 0..MAX_HOPS {
         let Some(road) = net.roads.get(pos.road) else { return MoveStatus::EndOfRoad };
         if s >= 0.0 && s <= road.length {
@@ -47,15 +80,16 @@ pub fn move_along_route(net: &RoadNetwork, pos: &mut LanePos, dist: f64, route: 
             if section_now != section_before && pos.road == road_before {
                 follow_section_change(net, pos, section_before, section_now);
             }
+            super::zero_width::leave_zero_width_lane(net, pos);
             return MoveStatus::Ok;
         }
         let (end, overshoot) = if s > road.length { (ContactPoint::End, s - road.length) } else { (ContactPoint::Start, -s) };
         let section = opendrive::section_at_end(road, end);
         let here = LaneRef { road: pos.road, section, lane: pos.lane_id };
-        let heading_in = road.reference_pose(if end == ContactPoint::End { road.length } else { 0.0 }).hdg
-            + if end == ContactPoint::End { 0.0 } else { std::f64::consts::PI };
+        let facing_back = if pos.dir < 0.0 { std::f64::consts::PI } else { 0.0 };
+        let heading_in = super::pose_memo::reference_pose(road, s_here.clamp(0.0, road.length)).hdg + facing_back;
         let routed = route.and_then(|r| routed_continuation(net, r, here, end));
-        let Some((next, contact)) = routed.or_else(|| choose_continuation(net, here, end, heading_in)) else {
+        let Some((next, contact)) = routed.or_else(|| choose_continuation(net, here, end, heading_in, random.as_deref_mut())) else {
             pos.s = s.clamp(0.0, road.length);
             return MoveStatus::EndOfRoad;
         };
@@ -67,12 +101,17 @@ pub fn move_along_route(net: &RoadNetwork, pos: &mut LanePos, dist: f64, route: 
             pos.dir = -pos.dir;
             pos.offset = -pos.offset;
         }
+        s_here = match contact {
+            ContactPoint::Start => 0.0,
+            ContactPoint::End => next_road.length,
+        };
         s = match contact {
             ContactPoint::Start => overshoot,
             ContactPoint::End => next_road.length - overshoot,
         };
         if s >= 0.0 && s <= next_road.length {
             pos.s = s;
+            super::zero_width::leave_zero_width_lane(net, pos);
             return MoveStatus::Ok;
         }
     }
@@ -96,8 +135,15 @@ fn routed_continuation(net: &RoadNetwork, route: &routing::Route, here: LaneRef,
 }
 
 /// The lane continuing `here` across its `end`, and the contact point on that lane's road.
-fn choose_continuation(net: &RoadNetwork, here: LaneRef, end: ContactPoint, heading_in: f64) -> Option<(LaneRef, ContactPoint)> {
-    let cands = net.lanes_across(here, end);
+/// `heading_in`: the road heading the entity drives in where it is.
+fn choose_continuation(
+    net: &RoadNetwork,
+    here: LaneRef,
+    end: ContactPoint,
+    heading_in: f64,
+    mut random: Option<&mut EsminiRandom>,
+) -> Option<(LaneRef, ContactPoint)> {
+    let mut cands = net.lanes_across(here, end);
     if cands.is_empty() {
         return None;
     }
@@ -112,6 +158,10 @@ fn choose_continuation(net: &RoadNetwork, here: LaneRef, end: ContactPoint, head
         }
         found.unwrap_or(ContactPoint::Start)
     };
+    let junction = junction_at(net, here, end);
+    if let Some(j) = junction {
+        order_by_connections(net, here, j, &mut cands);
+    }
     let mut best: Option<(f64, LaneRef, ContactPoint)> = None;
     for c in cands {
         // Only lanes leading away in the same travel sense (lanes_across gives lane links, which
@@ -125,6 +175,10 @@ fn choose_continuation(net: &RoadNetwork, here: LaneRef, end: ContactPoint, head
         let turn = wrap(far_heading - heading_in).abs();
         let better = match &best {
             None => true,
+            // esmini: a later arm that turns less wins; one that turns as much wins on a coin.
+            Some((bt, _, _)) if junction.is_some() => {
+                turn < *bt || ((turn - bt).abs() < TIE && random.as_deref_mut().is_some_and(|g| g.number_between(0, 1) == 1))
+            }
             Some((bt, b, _)) => turn < bt - 1e-9 || ((turn - bt).abs() <= 1e-9 && (c.road, c.lane.abs()) < (b.road, b.lane.abs())),
         };
         if better {
@@ -132,6 +186,46 @@ fn choose_continuation(net: &RoadNetwork, here: LaneRef, end: ContactPoint, head
         }
     }
     best.map(|(_, l, c)| (l, c))
+}
+
+/// The junction `here` leaves into across `end`, when there is one (not a lane-section change
+/// inside the road).
+fn junction_at(net: &RoadNetwork, here: LaneRef, end: ContactPoint) -> Option<&opendrive::Junction> {
+    let road = net.roads.get(here.road)?;
+    let last = road.lane_sections.len().saturating_sub(1);
+    let inner = match end {
+        ContactPoint::Start => here.section > 0,
+        ContactPoint::End => here.section < last,
+    };
+    if inner {
+        return None;
+    }
+    let link = road.link_at(end)?;
+    if link.element_type != ElementType::Junction {
+        return None;
+    }
+    net.junction(&link.element_id)
+}
+
+/// Sort junction arms the way esmini visits them: by the junction's connections from this road
+/// (document order), lane links in order; arms no connection names come last, by road.
+fn order_by_connections(net: &RoadNetwork, here: LaneRef, junction: &opendrive::Junction, cands: &mut [LaneRef]) {
+    let Some(road) = net.roads.get(here.road) else { return };
+    let rank = |c: &LaneRef| -> usize {
+        let Some(target) = net.roads.get(c.road) else { return usize::MAX };
+        let mut k = 0usize;
+        for conn in junction.connections.iter().filter(|x| x.incoming_road.as_deref() == Some(road.id.as_str())) {
+            for link in conn.lane_links.iter().filter(|l| l.from == here.lane) {
+                if conn.target_road() == Some(target.id.as_str()) && link.to == c.lane {
+                    return k;
+                }
+                k += 1;
+            }
+        }
+        usize::MAX
+    };
+    // Stable: equal ranks (unnamed arms) keep lanes_across's road order.
+    cands.sort_by_key(|c| rank(c));
 }
 
 /// Keep the lane across a lane-section boundary inside one road, following lane links.

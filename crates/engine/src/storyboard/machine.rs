@@ -18,6 +18,9 @@ impl<'a> Sim<'a> {
         } else if state == State::Init || state == State::Standby || self.nodes[id].executions > 0 {
             self.set_state(id, Transition::Start, State::Running);
             self.nodes[id].executions += 1;
+            if kind == Kind::ManeuverGroup && !self.triggering_actors.is_empty() {
+                self.select_triggering_actors(id);
+            }
         }
         if kind != Kind::Event && kind != Kind::Action && self.nodes[id].state == State::Running {
             let children = self.nodes[id].children.clone();

@@ -1,0 +1,131 @@
+//! FollowGhostController, as esmini has it: the storyboard's actions drive a ghost copy of the
+//! entity that starts `headstartTime` seconds early (see `ghost`); the entity itself, in
+//! override mode on both domains, follows the ghost's trail with a simple driver model. In
+//! `position` mode it finds the trail point nearest to itself, takes the ghost's speed at
+//! `max(minLookaheadSpeed, lookaheadSpeed · speed)` metres further along the trail as its
+//! target speed and steers towards the trail point `max(minLookaheadSteering,
+//! lookaheadSteering · speed)` metres ahead; in `time` mode both points are where the ghost
+//! was `headstartTime` minus the look-ahead (in seconds) ago. The body is esmini's kinematic
+//! vehicle (`kinematic_vehicle`) with 10 m/s² and 100 m/s limits.
+
+use super::kinematic_vehicle::KinematicVehicle;
+use crate::entities::Entity;
+use crate::ghost_trail::TrailPoint;
+use crate::sim::Sim;
+use openscenario::Controller;
+
+/// Acceleration limit and gain of the driver model, m/s².
+const MAX_ACC: f64 = 10.0;
+/// Speed limit of the driver model, m/s.
+const MAX_SPEED: f64 = 100.0;
+/// Longest head start simulated, s.
+const MAX_HEADSTART: f64 = 600.0;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FollowMode {
+    Time,
+    Position,
+}
+
+#[derive(Debug, Clone)]
+pub struct FollowGhostRt {
+    pub active: bool,
+    pub headstart: f64,
+    mode: FollowMode,
+    lookahead_speed: f64,
+    min_lookahead_speed: f64,
+    lookahead_steering: f64,
+    min_lookahead_steering: f64,
+    steering_scale: f64,
+    vehicle: Option<KinematicVehicle>,
+    /// Trail segment where the last search ended (searches go on from there).
+    follow_index: usize,
+    /// Arc length of the trail point nearest to the entity at the last search.
+    closest_s: f64,
+}
+
+impl FollowGhostRt {
+    pub fn new(c: &Controller) -> FollowGhostRt {
+        let num = |n: &str, d: f64| c.properties.get(n).and_then(|v| v.trim().parse::<f64>().ok()).filter(|v| v.is_finite()).unwrap_or(d);
+        let mode = match c.properties.get("followMode").map(str::trim) {
+            Some("position") => FollowMode::Position,
+            _ => FollowMode::Time,
+        };
+        FollowGhostRt {
+            active: false,
+            // Capped: the head start is simulated before time 0 (hostile input).
+            headstart: num("headstartTime", 3.0).clamp(0.0, MAX_HEADSTART),
+            mode,
+            lookahead_speed: num("lookaheadSpeed", 0.1),
+            min_lookahead_speed: num("minLookaheadSpeed", 0.1),
+            lookahead_steering: num("lookaheadSteering", 1.0),
+            min_lookahead_steering: num("minLookaheadSteering", 1.0),
+            steering_scale: num("steeringSpeedInertia", 0.01),
+            vehicle: None,
+            follow_index: 0,
+            closest_s: 0.0,
+        }
+    }
+
+    /// Switched on: the driver model starts from the entity's pose and speed.
+    pub fn activate(&mut self, en: &Entity) {
+        self.active = true;
+        self.vehicle = Some(KinematicVehicle::new(en.x, en.y, en.h, en.speed, en.bbox[3], MAX_SPEED));
+    }
+}
+
+impl<'a> Sim<'a> {
+    /// One step of the follower `e` (after the ghost moved this step).
+    pub(super) fn step_follow_ghost(&mut self, e: usize, f: &mut FollowGhostRt, dt: f64) {
+        let (Some(ghost), Some(mut car)) = (self.ghost.as_ref().filter(|g| g.owner == e), f.vehicle) else { return };
+        // In override mode nothing else moves the entity: its state is the body's.
+        let (x, y, h, speed) = (car.x, car.y, car.h, car.speed);
+        let trail = &ghost.trail;
+        let (speed_point, steer_point): (Option<TrailPoint>, Option<TrailPoint>) = match f.mode {
+            FollowMode::Position => {
+                if let Some((p, i)) = trail.closest(x, y, f.follow_index) {
+                    f.closest_s = p.s;
+                    f.follow_index = i;
+                }
+                let ahead = |d: f64| trail.at_s(f.closest_s + d, f.follow_index).map(|(p, _)| p);
+                (
+                    ahead(f.min_lookahead_speed.max(f.lookahead_speed * speed)),
+                    ahead(f.min_lookahead_steering.max(f.lookahead_steering * speed)),
+                )
+            }
+            FollowMode::Time => {
+                let back = self.time - f.headstart;
+                let at = |d: f64| trail.at_time(back + d, f.follow_index);
+                let sp = at(f.min_lookahead_speed.max(f.lookahead_speed));
+                let st = at(f.min_lookahead_steering.max(f.lookahead_steering));
+                if let Some((_, i)) = st {
+                    f.follow_index = i;
+                }
+                (sp.map(|(p, _)| p), st.map(|(p, _)| p))
+            }
+        };
+        let (target_speed, tx, ty) = match (speed_point, steer_point) {
+            (Some(sp), Some(st)) => (sp.speed, st.x, st.y),
+            _ => (0.0, x, y),
+        };
+        // Heading error to the steering point: asin of the cross product of unit vectors.
+        let (dx, dy) = (tx - x, ty - y);
+        let len = dx.hypot(dy);
+        let (ux, uy) = if len > crate::dynamics::SMALL { (dx / len, dy / len) } else { (0.0, 0.0) };
+        let cross = h.cos() * uy - h.sin() * ux;
+        let heading_error = cross.clamp(-1.0, 1.0).asin();
+        car.drive_to_target(dt, target_speed, heading_error, MAX_ACC, f.steering_scale);
+        if !car.is_finite() {
+            // Absurd gains: stop driving rather than write a non-finite pose.
+            return;
+        }
+        f.vehicle = Some(car);
+        let net = self.net;
+        if let Some(en) = self.entities.get_mut(e) {
+            let z = if net.is_some() { None } else { Some(en.z) };
+            en.set_world(net, car.x, car.y, z, car.h);
+            en.speed = car.speed;
+            en.moved_by_action = true;
+        }
+    }
+}

@@ -1,0 +1,128 @@
+//! FollowReferenceController, as esmini has it: the entity, in override mode on both domains,
+//! tracks a reference entity — `referenceEntity`, or by default a ghost copy of itself that
+//! runs the storyboard's actions (see `ghost`, no head start). Steering is a Stanley
+//! controller: heading gain · heading error (sign of the speed) + atan2(cross-track gain ·
+//! lateral error of the front axle (rear axle when reversing), speed stabiliser + speed) +
+//! curvature gain · atan(curvature · wheelbase), the curvature being the reference's yaw rate
+//! (limited to 0.5 rad/s) over its speed. The speed follows a critically damped spring on the
+//! longitudinal distance to the reference: −k·dx − 2√k·(v − v_ref). The body is esmini's
+//! kinematic vehicle (`kinematic_vehicle`).
+
+use super::kinematic_vehicle::KinematicVehicle;
+use crate::entities::Entity;
+use crate::roads::road_follow::wrap;
+use crate::sim::Sim;
+use openscenario::{Controller, EntityObject};
+
+/// esmini's SMALL_NUMBER.
+const SMALL: f64 = 1e-10;
+/// Yaw rates beyond this do not count for the reference's curvature, rad/s.
+const MAX_YAW_RATE: f64 = 0.5;
+
+#[derive(Debug, Clone)]
+pub struct FollowReferenceRt {
+    pub active: bool,
+    cross_track_gain: f64,
+    speed_stabilizer: f64,
+    heading_gain: f64,
+    curvature_gain: f64,
+    stiffness: f64,
+    /// `referenceEntity`; `None`: follow the ghost.
+    pub reference_name: Option<String>,
+    vehicle: Option<KinematicVehicle>,
+    wheelbase: f64,
+}
+
+impl FollowReferenceRt {
+    pub fn new(c: &Controller) -> FollowReferenceRt {
+        let num = |n: &str| c.properties.get(n).and_then(|v| v.trim().parse::<f64>().ok()).filter(|v| v.is_finite()).unwrap_or(1.0);
+        FollowReferenceRt {
+            active: false,
+            cross_track_gain: num("stanleyCrossTrackErrorGain"),
+            speed_stabilizer: num("stanleySpeedStabilizer"),
+            heading_gain: num("stanleyHeadingGain"),
+            curvature_gain: num("stanleyCurvatureGain"),
+            stiffness: num("speedControlStiffness").max(0.0),
+            reference_name: c.properties.get("referenceEntity").map(str::trim).filter(|s| !s.is_empty()).map(str::to_string),
+            vehicle: None,
+            wheelbase: 0.0,
+        }
+    }
+
+    /// Whether it needs a ghost (no reference entity named).
+    pub fn uses_ghost(&self) -> bool {
+        self.reference_name.is_none()
+    }
+
+    /// Switched on: the body starts from the entity's pose and speed; `wheelbase` is the front
+    /// axle's distance ahead of the reference point.
+    pub fn activate(&mut self, en: &Entity, wheelbase: f64) {
+        self.active = true;
+        self.wheelbase = wheelbase;
+        self.vehicle = Some(KinematicVehicle::new(en.x, en.y, en.h, en.speed, en.bbox[3], en.max_speed));
+    }
+}
+
+/// The front axle's distance ahead of the reference point of scenario entity `e`.
+pub fn wheelbase(scenario: &openscenario::Scenario, e: usize) -> f64 {
+    match scenario.entities.get(e).map(|m| &m.object) {
+        Some(EntityObject::Vehicle(v)) => v.axles.front.map_or(0.0, |a| a.position_x),
+        _ => 0.0,
+    }
+}
+
+impl<'a> Sim<'a> {
+    /// Warn about FollowReference controllers whose `referenceEntity` does not exist (esmini
+    /// quits; here the entity stands still).
+    pub fn check_follow_references(&mut self) {
+        for e in 0..self.controllers.len() {
+            let Some(Some(super::ControllerRt::FollowReference(f))) = self.controllers.get(e) else { continue };
+            let Some(name) = f.reference_name.clone() else { continue };
+            if self.entity_index(&name).is_none() {
+                if let Some(m) = self.scenario.entities.get(e) {
+                    let msg = format!("entity `{}`: FollowReferenceController's reference entity `{name}` does not exist; the entity stands still", m.name);
+                    self.warnings.push(crate::Warning::at(&m.origin, msg));
+                }
+            }
+        }
+    }
+
+    /// One step of the follower `e` (after the reference moved this step).
+    pub(super) fn step_follow_reference(&mut self, e: usize, f: &mut FollowReferenceRt, dt: f64) {
+        let reference = match &f.reference_name {
+            Some(n) => self.entity_index(n),
+            None => self.ghost.as_ref().filter(|g| g.owner == e).map(|g| g.entity),
+        };
+        let (Some(r), Some(mut car)) = (reference.and_then(|r| self.entities.get(r)), f.vehicle) else { return };
+        // In override mode nothing else moves the entity: its state is the body's.
+        let (x, y, h, v) = (car.x, car.y, car.h, car.speed);
+        // Lateral error measured at the front axle when driving forward, positive to the
+        // reference's left.
+        let (mx, my) = if v >= 0.0 { (x + f.wheelbase * h.cos(), y + f.wheelbase * h.sin()) } else { (x, y) };
+        let left = -(mx - r.x) * r.h.sin() + (my - r.y) * r.h.cos();
+        // Longitudinal distance along our own heading, positive when ahead of the reference.
+        let ahead = (x - r.x) * h.cos() + (y - r.y) * h.sin();
+        let dh = wrap(r.h - h);
+        let ref_speed = if r.speed.abs() < SMALL { if r.speed < 0.0 { -SMALL } else { SMALL } } else { r.speed };
+        let curvature = r.yaw_rate.clamp(-MAX_YAW_RATE, MAX_YAW_RATE) / ref_speed;
+        let sign = if v < 0.0 { -1.0 } else { 1.0 };
+        let steer = f.heading_gain * dh * sign
+            + (-f.cross_track_gain * left).atan2(f.speed_stabilizer + v)
+            + f.curvature_gain * (curvature * f.wheelbase).atan();
+        let damping = 2.0 * f.stiffness.sqrt();
+        let acc = -f.stiffness * ahead - damping * (v - r.speed);
+        car.drive_acc_steer(dt, acc, steer);
+        if !car.is_finite() {
+            // Absurd gains: stop driving rather than write a non-finite pose.
+            return;
+        }
+        f.vehicle = Some(car);
+        let net = self.net;
+        if let Some(en) = self.entities.get_mut(e) {
+            let z = if net.is_some() { None } else { Some(en.z) };
+            en.set_world(net, car.x, car.y, z, car.h);
+            en.speed = car.speed;
+            en.moved_by_action = true;
+        }
+    }
+}

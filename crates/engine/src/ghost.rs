@@ -1,0 +1,195 @@
+//! Ghosts, as esmini makes them for FollowGhostController (and FollowReferenceController
+//! without a reference entity): a copy of the controlled entity, named `<name>_ghost`, that
+//! runs the storyboard's motion actions in the entity's place while the entity follows it.
+//!
+//! At setup (first such entity only, as esmini): the ghost gets copies of the entity's Init
+//! actions (all but ActivateController, run after the others); the story's speed, speed
+//! profile, lane change, lane offset, synchronize, trajectory, route and teleport actions on
+//! the entity move to the ghost; in every act's start trigger, and in the start trigger of
+//! each event that now moves the ghost, SimulationTime conditions fire `headstart` seconds
+//! earlier and the entity's collision / reach-position / traveled-distance / speed /
+//! acceleration / end-of-road / off-road / stand-still conditions watch the ghost instead.
+//! (esmini also plans a teleport of the ghost back to the entity for events whose trigger
+//! depends on anything else; its 3.6 traces show no such jump, so none is made here.)
+//!
+//! The run then starts at −headstart: until time 0 only the ghost moves (the default
+//! controller leaves every other entity alone, no controller steps), so at 0 the ghost leads
+//! by the head start. After every step the ghost's trail is sampled (`ghost_trail`) on
+//! esmini's accumulated clock, whose rounding decides which steps are sampled.
+
+use crate::actions::ActionSlot;
+use crate::controllers::ControllerRt;
+use crate::dynamics::SMALL;
+use crate::ghost_trail::Trail;
+use crate::sim::Sim;
+use crate::storyboard::{Kind, Node};
+use openscenario::{ActionKind, ConditionKind, EntityCondition, PrivateAction, ValueCondition};
+
+#[derive(Debug, Clone)]
+pub struct Ghost {
+    /// The ghost entity.
+    pub entity: usize,
+    /// The entity it runs ahead of (the only one that follows it).
+    pub owner: usize,
+    pub headstart: f64,
+    pub trail: Trail,
+    /// esmini's simulation time, accumulated step by step.
+    clock: f64,
+}
+
+/// Actions esmini hands over to the ghost.
+fn moves_to_ghost(p: &PrivateAction) -> bool {
+    matches!(
+        p,
+        PrivateAction::Speed { .. }
+            | PrivateAction::SpeedProfile { .. }
+            | PrivateAction::LaneChange { .. }
+            | PrivateAction::LaneOffset { .. }
+            | PrivateAction::Synchronize { .. }
+            | PrivateAction::FollowTrajectory { .. }
+            | PrivateAction::AssignRoute(_)
+            | PrivateAction::Teleport(_)
+    )
+}
+
+/// Entity conditions that watch the ghost instead of the entity.
+fn watches_ghost(c: &EntityCondition) -> bool {
+    matches!(
+        c,
+        EntityCondition::Collision { .. }
+            | EntityCondition::ReachPosition { .. }
+            | EntityCondition::TraveledDistance { .. }
+            | EntityCondition::Speed { .. }
+            | EntityCondition::Acceleration { .. }
+            | EntityCondition::EndOfRoad { .. }
+            | EntityCondition::Offroad { .. }
+            | EntityCondition::StandStill { .. }
+    )
+}
+
+impl<'a> Sim<'a> {
+    /// Create the ghost of the first entity whose controller needs one (after `build`).
+    pub fn setup_ghost(&mut self) {
+        self.check_follow_references();
+        let found = self.controllers.iter().enumerate().find_map(|(e, c)| match c {
+            Some(ControllerRt::FollowGhost(f)) => Some((e, f.headstart)),
+            Some(ControllerRt::FollowReference(f)) if f.uses_ghost() => Some((e, 0.0)),
+            _ => None,
+        });
+        let Some((owner, headstart)) = found else { return };
+        self.warn_other_followers(owner);
+        let Some(mut copy) = self.entities.get(owner).cloned() else { return };
+        copy.name.push_str("_ghost");
+        copy.controller_active = false;
+        self.entities.push(copy);
+        let ghost = self.entities.len() - 1;
+
+        // Init actions: copies for the ghost, after all others.
+        for k in 0..self.init_actions.len() {
+            let slot = self.init_actions[k];
+            let a = &self.actions[slot];
+            let copy_it = a.actors == [owner]
+                && matches!(&a.model.kind, ActionKind::Private(p) if !matches!(p, PrivateAction::ActivateController { .. }));
+            if !copy_it {
+                continue;
+            }
+            let model = a.model;
+            let name = format!("{}_ghost-copy", self.nodes[a.node].name);
+            let node = self.nodes.len();
+            self.nodes.push(Node::new(Kind::Action, &name, None));
+            self.actions.push(ActionSlot::new(node, model, vec![ghost]));
+            self.nodes[node].action = Some(self.actions.len() - 1);
+            self.init_actions.push(self.actions.len() - 1);
+        }
+
+        // Story actions that move the entity move the ghost; their events' triggers follow.
+        let mut events = Vec::new();
+        for slot in 0..self.actions.len() {
+            if self.init_actions.contains(&slot) {
+                continue;
+            }
+            let a = &mut self.actions[slot];
+            let hands_over = matches!(&a.model.kind, ActionKind::Private(p) if moves_to_ghost(p));
+            if !hands_over || !a.actors.contains(&owner) {
+                continue;
+            }
+            for actor in &mut a.actors {
+                if *actor == owner {
+                    *actor = ghost;
+                }
+            }
+            if let Some(ev) = self.nodes[a.node].parent.filter(|&p| self.nodes[p].kind == Kind::Event) {
+                if !events.contains(&ev) {
+                    events.push(ev);
+                }
+            }
+        }
+        let acts = (0..self.nodes.len()).filter(|&n| self.nodes[n].kind == Kind::Act);
+        let triggers: Vec<usize> = acts.chain(events).filter_map(|n| self.nodes[n].start_trigger).collect();
+        for t in triggers {
+            self.hand_trigger_to_ghost(t, owner, ghost, headstart);
+        }
+        self.ghost = Some(Ghost { entity: ghost, owner, headstart, trail: Trail::default(), clock: 0.0 - headstart });
+    }
+
+    /// esmini gives only the first such entity a ghost; the others' controllers do nothing.
+    fn warn_other_followers(&mut self, owner: usize) {
+        for e in owner + 1..self.controllers.len() {
+            let needs_ghost = match &self.controllers[e] {
+                Some(ControllerRt::FollowGhost(_)) => true,
+                Some(ControllerRt::FollowReference(f)) => f.uses_ghost(),
+                _ => false,
+            };
+            if let (true, Some(m)) = (needs_ghost, self.scenario.entities.get(e)) {
+                let msg = format!("entity `{}`: only the first entity with a ghost-following controller gets a ghost (esmini); its controller leaves it standing", m.name);
+                self.warnings.push(crate::Warning::at(&m.origin, msg));
+            }
+        }
+    }
+
+    fn hand_trigger_to_ghost(&mut self, t: usize, owner: usize, ghost: usize, headstart: f64) {
+        let Some(trig) = self.triggers.get_mut(t) else { return };
+        for c in trig.groups.iter_mut().flatten() {
+            match &c.model.kind {
+                ConditionKind::ByValue(ValueCondition::SimulationTime { .. }) => c.time_shift = headstart,
+                ConditionKind::ByEntity { condition, .. } if watches_ghost(condition) => {
+                    for e in &mut c.triggering {
+                        if *e == owner {
+                            *e = ghost;
+                        }
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+
+    /// When the run starts: −headstart with a ghost, else 0.
+    pub fn time_origin(&self) -> f64 {
+        self.ghost.as_ref().map_or(0.0, |g| -g.headstart)
+    }
+
+    /// Whether the step starting at the current time is part of the ghost's head start.
+    pub fn ghost_restarting(&self) -> bool {
+        self.ghost.as_ref().is_some_and(|g| g.headstart > 0.0) && self.time < -SMALL
+    }
+
+    /// During the head start only the ghost moves.
+    pub fn hold_during_restart(&mut self) {
+        let ghost = self.ghost.as_ref().map(|g| g.entity);
+        for (i, en) in self.entities.iter_mut().enumerate() {
+            if Some(i) != ghost {
+                en.moved_by_action = true;
+            }
+        }
+    }
+
+    /// Sample the ghost's trail after a step of `dt` (0 for the first frame).
+    pub fn record_ghost_trail(&mut self, dt: f64) {
+        let Some(g) = self.ghost.as_mut() else { return };
+        g.clock += dt;
+        if let Some(en) = self.entities.get(g.entity).filter(|en| en.active) {
+            g.trail.sample(g.clock, en.x, en.y, en.speed);
+        }
+    }
+}
