@@ -83,6 +83,11 @@ pub struct ConvertArgs {
     /// Seed for stochastic parameter distributions (default: the file's own).
     #[arg(long)]
     pub seed: Option<u64>,
+    /// Seed of esmini's random generator in the engine (esmini's --seed; 0 as in the reference
+    /// traces). It decides ties esmini leaves to chance, e.g. between two equally turning
+    /// junction arms.
+    #[arg(long, default_value_t = 0, value_name = "N")]
+    pub engine_seed: u32,
     /// Scenarios converted in parallel (default: the number of CPUs).
     #[arg(short = 'j', long = "jobs")]
     pub jobs: Option<usize>,
@@ -138,6 +143,8 @@ fn options(args: &ConvertArgs) -> ConvertOptions {
         seed: args.seed,
         max_variations: args.max_variations,
         map_tolerance: args.map_tolerance,
+        engine_seed: args.engine_seed,
+        deadline: None,
     }
 }
 

@@ -21,6 +21,11 @@ pub struct SimulateArgs {
     /// Override a global parameter (repeatable): --param NAME=VALUE.
     #[arg(long = "param", value_name = "NAME=VALUE")]
     pub params: Vec<String>,
+    /// Seed of esmini's random generator (esmini's --seed; 0 as in the reference traces). It
+    /// decides what esmini leaves to chance, e.g. which of two equally turning junction arms
+    /// an entity takes.
+    #[arg(long, default_value_t = 0, value_name = "N")]
+    pub engine_seed: u32,
     /// Also write the storyboard state transitions (time,element,from,transition,to).
     #[arg(long)]
     pub events: Option<PathBuf>,
@@ -52,7 +57,8 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
         None => (None, Vec::new()),
     };
     let settings = engine::Settings { step: args.step, max_time: args.max_time };
-    let run = engine::simulate(&scenario, roads.as_ref(), &settings).map_err(|e| Failure::input(e.to_string()))?;
+    let control = engine::RunControl { seed: args.engine_seed, deadline: None };
+    let run = engine::simulate_with(&scenario, roads.as_ref(), &settings, &control).map_err(|e| Failure::input(e.to_string()))?;
     write_file(&args.trace, &run.trace.to_csv(&engine::bounding_boxes(&scenario)))?;
     if let Some(ev) = &args.events {
         let mut text = String::from("time,element,from,transition,to\n");

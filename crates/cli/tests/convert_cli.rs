@@ -191,3 +191,14 @@ fn same_bytes_whatever_the_number_of_threads() {
         assert!(x == y, "{} differs between -j 1 and -j 2", f.display());
     }
 }
+
+#[test]
+fn a_scenario_over_its_time_limit_fails_with_a_timeout_and_writes_nothing() {
+    let out = tmp("timeout");
+    let o = osc2cr(&["convert", s(&example()), "-o", s(&out), "--timeout", "0.00001"]);
+    assert_eq!(o.status.code(), Some(1), "{}", String::from_utf8_lossy(&o.stderr));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("timeout stage") && err.contains("--timeout"), "{err}");
+    assert!(!files(&out).iter().any(|f| f.extension().is_some_and(|e| e == "xml")), "{:?}", files(&out));
+    let _ = std::fs::remove_dir_all(&out);
+}

@@ -251,8 +251,9 @@ fn failed_early(f: &Found, message: &str) -> ScenarioReport {
     }
 }
 
-/// Converts in a worker thread so that a scenario over its time limit can be abandoned (the
-/// engine cannot be interrupted; the thread finishes on its own, its result is discarded).
+/// Converts in a worker thread so that a scenario over its time limit can be abandoned: the
+/// engine gets the limit as its deadline and stops itself; loading and map conversion cannot
+/// be interrupted, so a thread stuck there finishes on its own and its result is discarded.
 fn convert_limited(
     job: &Job,
     options: &Arc<ConvertOptions>,
@@ -277,7 +278,7 @@ fn convert_limited(
         job.name.clone(),
         job.variation.as_ref().map_or(1, |v| v.index),
     );
-    let opts = Arc::clone(options);
+    let opts = Arc::new(ConvertOptions { deadline: Some(std::time::Instant::now() + limit), ..ConvertOptions::clone(options) });
     let spawned = std::thread::Builder::new().spawn(move || {
         let request = Request {
             path: &path,

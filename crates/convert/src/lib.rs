@@ -19,6 +19,7 @@ mod discover;
 mod ego;
 mod goal;
 mod header;
+mod light_cycles;
 mod obstacle_type;
 mod obstacles;
 mod options;

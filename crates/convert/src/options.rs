@@ -37,6 +37,12 @@ pub struct ConvertOptions {
     /// Largest distance between a lanelet bound and the exact lane border, m (`None`: the
     /// map converter's default). Coarser means fewer bound points and smaller files.
     pub map_tolerance: Option<f64>,
+    /// Seed of esmini's random generator in the engine (esmini's `--seed`, default 0 as in the
+    /// reference traces): it decides ties esmini leaves to chance, e.g. at junctions.
+    pub engine_seed: u32,
+    /// Wall-clock instant after which the engine stops this conversion (set by a batch's
+    /// per-scenario time limit; `None`: no limit).
+    pub deadline: Option<std::time::Instant>,
 }
 
 impl Default for ConvertOptions {
@@ -57,6 +63,8 @@ impl Default for ConvertOptions {
             seed: None,
             max_variations: 100,
             map_tolerance: None,
+            engine_seed: 0,
+            deadline: None,
         }
     }
 }

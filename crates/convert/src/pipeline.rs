@@ -11,6 +11,7 @@ use openscenario::{Content, LoadOptions, Scenario};
 
 use crate::assemble::assemble;
 use crate::header::{benchmark_id, date_prefix, fallback_date};
+use crate::light_cycles::apply_signal_states;
 use crate::options::ConvertOptions;
 use crate::report::{Failure, Stage, StageWarning, Timings};
 use crate::stages::{run_engine, run_map};
@@ -160,13 +161,13 @@ fn run(
     };
     timings.road_network_ms = ms(t);
     let t = Instant::now();
-    let (lanelets, map_tags): (Option<LaneletNetwork>, _) = match &road {
+    let (mut lanelets, map_tags, light_of_signal): (Option<LaneletNetwork>, _, _) = match &road {
         Some(r) => {
             let m = run_map(r, options);
             warn(warnings, Stage::Map, &m.warnings);
-            (Some(m.network), m.tags)
+            (Some(m.network), m.tags, m.light_of_signal)
         }
-        None => (None, Default::default()),
+        None => (None, Default::default(), Default::default()),
     };
     timings.map_ms = ms(t);
 
@@ -175,7 +176,12 @@ fn run(
     let run = run_engine(&scenario, road.as_ref(), options).map_err(|e| fail(Stage::Engine, e))?;
     warn(warnings, Stage::Engine, &run.warnings);
     timings.engine_ms = ms(t);
-    facts.duration_s = Some(run.trace.duration());
+    facts.duration_s = Some(run.trace.end_time().max(0.0));
+    if let Some(network) = lanelets.as_mut() {
+        let states = &run.trace.signal_states;
+        let w = apply_signal_states(network, &light_of_signal, states, run.trace.end_time(), options.dt);
+        warn(warnings, Stage::Build, &w);
+    }
 
     // 4. obstacles, planning problem, checks
     let t = Instant::now();

@@ -1,9 +1,9 @@
 //! The two stages other crates own, behind one narrow call each: OpenDRIVE → lanelets (`map`)
 //! and the storyboard run (`engine`).
 
-use std::collections::BTreeSet;
+use std::collections::{BTreeMap, BTreeSet};
 
-use commonroad::{LaneletNetwork, Tag};
+use commonroad::{LaneletNetwork, Tag, TrafficLightId};
 use engine::{Settings, Trace};
 
 use crate::options::ConvertOptions;
@@ -13,6 +13,8 @@ pub struct MapOutput {
     pub network: LaneletNetwork,
     /// Tags that follow from the network (road class, lane count, intersection, …).
     pub tags: BTreeSet<Tag>,
+    /// The traffic light made of each OpenDRIVE signal id.
+    pub light_of_signal: BTreeMap<String, TrafficLightId>,
     pub warnings: Vec<String>,
 }
 
@@ -35,6 +37,7 @@ pub fn run_map(road: &opendrive::RoadNetwork, options: &ConvertOptions) -> MapOu
     MapOutput {
         tags: map::derived_tags(&result.network),
         warnings: result.warnings.iter().map(ToString::to_string).collect(),
+        light_of_signal: result.light_of_signal,
         network: result.network,
     }
 }
@@ -49,7 +52,8 @@ pub fn run_engine(
         step: options.step,
         max_time: options.max_time,
     };
-    let run = engine::simulate(scenario, road, &settings).map_err(|e| e.to_string())?;
+    let control = engine::RunControl { seed: options.engine_seed, deadline: options.deadline };
+    let run = engine::simulate_with(scenario, road, &settings, &control).map_err(|e| e.to_string())?;
     Ok(EngineOutput {
         trace: run.trace,
         warnings: run.warnings.iter().map(ToString::to_string).collect(),

@@ -53,6 +53,13 @@ pub fn tracks(trace: &Trace, entities: &[Entity], dt: f64) -> (Vec<Track>, Vec<S
     let mut warnings = Vec::new();
     for et in &trace.entities {
         let Some(entity) = by_name.get(et.name.as_str()) else {
+            if trace.ghosts.iter().any(|g| g == &et.name) {
+                warnings.push(format!(
+                    "entity {:?} is the ghost a FollowGhost/FollowReference controller drives ahead of its entity, not a road user: left out",
+                    et.name
+                ));
+                continue;
+            }
             warnings.push(format!(
                 "entity {:?} of the trace is not declared in the scenario: left out",
                 et.name
@@ -83,7 +90,9 @@ pub fn tracks(trace: &Trace, entities: &[Entity], dt: f64) -> (Vec<Track>, Vec<S
             warnings.push(format!("entity {:?}: no valid shape: left out", et.name));
             continue;
         };
-        let poses = resample(&et.samples, trace.step, dt);
+        // CommonRoad time 0 is the scenario's time 0, after any ghost's head start
+        let from_zero = et.samples.get(trace.zero_index()..).unwrap_or_default();
+        let poses = resample(from_zero, trace.step, dt);
         let state = |n: usize, p: &Pose| {
             let (x, y) = box_center(p.x, p.y, p.h, bb.center.x, bb.center.y);
             State {

@@ -49,13 +49,14 @@ pub fn convert_with_ids(net: &RoadNetwork, opts: &MapOptions, ids: &mut IdAlloca
     let mut built = build::build_lanelets(net, opts.tolerance, ids, &mut warn);
     topology::link(net, &mut built, &mut warn);
     adjacency::adjacent(net, &mut built);
-    let (traffic_signs, traffic_lights) = signals::convert_signals(net, &mut built, opts, ids, &mut warn);
+    let (traffic_signs, traffic_lights, light_of_signal) = signals::convert_signals(net, &mut built, opts, ids, &mut warn);
     let intersections = intersections::intersections(net, &built, ids);
     let lanelet_of = built.index_of.iter().filter_map(|(k, &i)| built.lanelets.get(i).map(|l| (*k, l.id))).collect();
     MapResult {
         network: LaneletNetwork { lanelets: built.lanelets, traffic_signs, traffic_lights, intersections },
         origins: built.origins,
         lanelet_of,
+        light_of_signal,
         warnings: warn.finish(),
     }
 }

@@ -1,6 +1,6 @@
 //! What the caller can tune, and what a conversion returns.
 
-use commonroad::{LaneletId, LaneletNetwork};
+use commonroad::{LaneletId, LaneletNetwork, TrafficLightId};
 use opendrive::{LaneRef, Warning};
 use std::collections::BTreeMap;
 
@@ -40,5 +40,7 @@ pub struct MapResult {
     pub origins: Vec<LaneletOrigin>,
     /// Lanelet of each converted (road, section, lane).
     pub lanelet_of: BTreeMap<LaneRef, LaneletId>,
+    /// The traffic light made of each OpenDRIVE signal id (dropped signals are absent).
+    pub light_of_signal: BTreeMap<String, TrafficLightId>,
     pub warnings: Vec<Warning>,
 }

@@ -31,6 +31,7 @@ pub const NAMES: &[&str] = &[
     "seed",
     "max_variations",
     "map_tolerance",
+    "engine_seed",
 ];
 
 /// Options from keyword arguments; `None` values mean "the default", like an option not given.
@@ -75,6 +76,10 @@ pub fn from_kwargs(kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<(ConvertOptio
             "seed" => o.seed = Some(unsigned(&key, v)?),
             "max_variations" => max_variations = Some(unsigned(&key, v)?),
             "map_tolerance" => o.map_tolerance = Some(float(&key, v)?),
+            "engine_seed" => {
+                let n = unsigned(&key, v)?;
+                o.engine_seed = u32::try_from(n).map_err(|_| PyValueError::new_err(format!("{key} must be below 2**32")))?;
+            }
             _ => return Err(unknown(&key)),
         }
     }

@@ -108,7 +108,9 @@ fn cross_section(net: &RoadNetwork, built: &Built, i: usize, s: f64) -> Option<[
 }
 
 /// Signs, lights and stop lines of the whole network; lanelets get their references.
-pub fn convert_signals(net: &RoadNetwork, built: &mut Built, opts: &MapOptions, ids: &mut IdAllocator, warn: &mut WarningSink) -> (Vec<TrafficSign>, Vec<TrafficLight>) {
+/// Also returns the light made of each OpenDRIVE signal id (the name an OpenSCENARIO
+/// TrafficSignalStateAction uses), so that a run's signal states can become the light's cycle.
+pub fn convert_signals(net: &RoadNetwork, built: &mut Built, opts: &MapOptions, ids: &mut IdAllocator, warn: &mut WarningSink) -> (Vec<TrafficSign>, Vec<TrafficLight>, BTreeMap<String, TrafficLightId>) {
     let default_country = opts.default_country.clone().unwrap_or_else(|| "DE".to_string());
     // (road, signal index) → lanelets it is valid for
     let mut targets: BTreeMap<(usize, usize), Vec<usize>> = BTreeMap::new();
@@ -132,6 +134,7 @@ pub fn convert_signals(net: &RoadNetwork, built: &mut Built, opts: &MapOptions, 
     }
     let mut signs = Vec::new();
     let mut lights = Vec::new();
+    let mut light_of_signal = BTreeMap::new();
     let [red, red_yellow, green, yellow] = opts.light_cycle.map(|d| NonZeroU64::new(d).unwrap_or(NonZeroU64::MIN));
     for ((ri, k), mut lanelets) in targets {
         let Some(road) = net.roads.get(ri) else { continue };
@@ -169,6 +172,7 @@ pub fn convert_signals(net: &RoadNetwork, built: &mut Built, opts: &MapOptions, 
                     CycleElement { duration: yellow, color: TrafficLightColor::Yellow },
                 ];
                 lights.push(TrafficLight { id, cycle, time_offset: 0, position, direction: None, active: Some(true) });
+                light_of_signal.entry(sig.id.clone()).or_insert(id);
                 for &i in &lanelets {
                     if let Some(l) = built.lanelets.get_mut(i) {
                         l.traffic_light_refs.push(id);
@@ -199,5 +203,5 @@ pub fn convert_signals(net: &RoadNetwork, built: &mut Built, opts: &MapOptions, 
             sl.traffic_light_refs = refs;
         }
     }
-    (signs, lights)
+    (signs, lights, light_of_signal)
 }

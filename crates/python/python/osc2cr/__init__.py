@@ -14,7 +14,8 @@ Options (keyword arguments of every function) are ``osc2cr convert``'s long opti
     goal_width (10 m), goal_time_window (10 steps), goal_speed_margin (5 m/s),
     goal_velocity (True; False = the CLI's --no-goal-velocity), goal_orientation_margin
     (none), country ("ZAM"), author, affiliation, source, date ("YYYY-MM-DD" or
-    datetime.date), seed, max_variations (variations(): no cap unless given), map_tolerance.
+    datetime.date), seed, max_variations (variations(): no cap unless given), map_tolerance,
+    engine_seed (0: esmini's --seed for ties it leaves to chance, e.g. at junctions).
 
 The XML is byte for byte what ``osc2cr convert`` writes for the same file and options.
 Failures raise :class:`ConversionError` (with ``file``, ``line``, ``column``); warnings are
@@ -64,6 +65,7 @@ if TYPE_CHECKING:
         seed: int
         max_variations: int
         map_tolerance: float
+        engine_seed: int
 
 
 __all__ = [

@@ -1,0 +1,81 @@
+//! A run's traffic-signal states become the cycle of the CommonRoad light made of that signal.
+//! The road is the engine's straight fixture with one vehicle light (OpenDRIVE signal "7",
+//! type 1000001) added; TrafficSignalStateActions at 1.0 s and 2.5 s (green → yellow → red)
+//! and the stop at 4 s give the cycle by hand: the CommonRoad step is 0.1 s.
+
+use std::path::PathBuf;
+
+use commonroad::TrafficLightColor;
+use convert::{convert_scenario_keeping, ConvertOptions, Request};
+
+const CAR: &str = r#"<Vehicle name="car" vehicleCategory="car"><ParameterDeclarations/>
+<Performance maxSpeed="70" maxAcceleration="200" maxDeceleration="200"/>
+<BoundingBox><Center x="1.5" y="0" z="0.9"/><Dimensions width="2.0" length="4.5" height="1.8"/></BoundingBox>
+<Axles><FrontAxle maxSteering="0.5" wheelDiameter="0.6" trackWidth="1.8" positionX="3.1" positionZ="0.3"/>
+<RearAxle maxSteering="0" wheelDiameter="0.6" trackWidth="1.8" positionX="0" positionZ="0.3"/></Axles>
+<Properties/></Vehicle>"#;
+
+fn set_light(t: f64, state: &str) -> String {
+    format!(
+        r#"<Event name="e{t}" priority="parallel"><Action name="a{t}"><GlobalAction><InfrastructureAction><TrafficSignalAction><TrafficSignalStateAction name="7" state="{state}"/></TrafficSignalAction></InfrastructureAction></GlobalAction></Action>
+<StartTrigger><ConditionGroup><Condition name="t" delay="0" conditionEdge="none"><ByValueCondition><SimulationTimeCondition value="{t}" rule="greaterOrEqual"/></ByValueCondition></Condition></ConditionGroup></StartTrigger></Event>"#
+    )
+}
+
+fn scenario() -> String {
+    format!(
+        r#"<?xml version="1.0" encoding="UTF-8"?>
+<OpenSCENARIO>
+<FileHeader revMajor="1" revMinor="1" date="2024-01-01T00:00:00" description="light" author="osc2cr"/>
+<ParameterDeclarations/>
+<CatalogLocations/>
+<RoadNetwork><LogicFile filepath="light.xodr"/></RoadNetwork>
+<Entities><ScenarioObject name="Ego">{CAR}</ScenarioObject></Entities>
+<Storyboard>
+<Init><Actions>
+<GlobalAction><InfrastructureAction><TrafficSignalAction><TrafficSignalStateAction name="7" state="off;off;on"/></TrafficSignalAction></InfrastructureAction></GlobalAction>
+<Private entityRef="Ego"><PrivateAction><TeleportAction><Position><LanePosition roadId="1" laneId="-1" offset="0" s="10"/></Position></TeleportAction></PrivateAction>
+<PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="step" dynamicsDimension="time" value="0"/><SpeedActionTarget><AbsoluteTargetSpeed value="10"/></SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction></Private>
+</Actions></Init>
+<Story name="S"><Act name="A"><ManeuverGroup maximumExecutionCount="1" name="G"><Actors selectTriggeringEntities="false"><EntityRef entityRef="Ego"/></Actors>
+<Maneuver name="M">{}{}</Maneuver></ManeuverGroup>
+<StartTrigger><ConditionGroup><Condition name="go" delay="0" conditionEdge="none"><ByValueCondition><SimulationTimeCondition value="0" rule="greaterOrEqual"/></ByValueCondition></Condition></ConditionGroup></StartTrigger></Act></Story>
+<StopTrigger><ConditionGroup><Condition name="end" delay="0" conditionEdge="none"><ByValueCondition><SimulationTimeCondition value="4" rule="greaterOrEqual"/></ByValueCondition></Condition></ConditionGroup></StopTrigger>
+</Storyboard>
+</OpenSCENARIO>"#,
+        set_light(1.0, "off;on;off"),
+        set_light(2.5, "on;off;off")
+    )
+}
+
+fn workdir() -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("osc2cr-light-cycles-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let fixture = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../engine/tests/fixtures/straight.xodr");
+    let road = std::fs::read_to_string(fixture).expect("fixture road");
+    let signal = r#"<signals><signal s="100" t="-4" id="7" name="light" dynamic="yes" orientation="+" zOffset="3" type="1000001" country="OpenDRIVE" subtype="-1" height="0.8" width="0.4"/></signals>
+  </road>"#;
+    std::fs::write(dir.join("light.xodr"), road.replacen("</road>", signal, 1)).expect("road written");
+    std::fs::write(dir.join("light.xosc"), scenario()).expect("scenario written");
+    dir
+}
+
+#[test]
+fn the_lights_cycle_is_the_runs_signal_history() {
+    let dir = workdir();
+    let path = dir.join("light.xosc");
+    let request = Request { path: &path, name: "light", config: 1, parameters: &[], source: String::new() };
+    let (conversion, model) = convert_scenario_keeping(&request, &ConvertOptions::default(), true);
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(conversion.result.is_ok(), "{:?}", conversion.result.err());
+    let model = model.expect("model kept");
+    let lights = &model.scenario.network.traffic_lights;
+    assert_eq!(lights.len(), 1, "{lights:#?}");
+    let got: Vec<(u64, TrafficLightColor)> = lights[0].cycle.iter().map(|e| (e.duration.get(), e.color)).collect();
+    // green steps 0–9, yellow 10–24, red from step 25 to the last step of the scenario
+    let duration = conversion.facts.duration_s.expect("duration");
+    let last = (duration / 0.1).round() as u64;
+    assert!((3.9..=4.1).contains(&duration), "{duration}");
+    assert_eq!(got, vec![(10, TrafficLightColor::Green), (15, TrafficLightColor::Yellow), (last + 1 - 25, TrafficLightColor::Red)]);
+    assert_eq!(lights[0].time_offset, 0);
+}
