@@ -115,17 +115,8 @@ impl<'a> Sim<'a> {
         let cross = h.cos() * uy - h.sin() * ux;
         let heading_error = cross.clamp(-1.0, 1.0).asin();
         car.drive_to_target(dt, target_speed, heading_error, MAX_ACC, f.steering_scale);
-        if !car.is_finite() {
-            // Absurd gains: stop driving rather than write a non-finite pose.
-            return;
-        }
-        f.vehicle = Some(car);
-        let net = self.net;
-        if let Some(en) = self.entities.get_mut(e) {
-            let z = if net.is_some() { None } else { Some(en.z) };
-            en.set_world(net, car.x, car.y, z, car.h);
-            en.speed = car.speed;
-            en.moved_by_action = true;
+        if self.place_driven(e, &car) {
+            f.vehicle = Some(car);
         }
     }
 }

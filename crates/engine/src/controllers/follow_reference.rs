@@ -112,17 +112,8 @@ impl<'a> Sim<'a> {
         let damping = 2.0 * f.stiffness.sqrt();
         let acc = -f.stiffness * ahead - damping * (v - r.speed);
         car.drive_acc_steer(dt, acc, steer);
-        if !car.is_finite() {
-            // Absurd gains: stop driving rather than write a non-finite pose.
-            return;
-        }
-        f.vehicle = Some(car);
-        let net = self.net;
-        if let Some(en) = self.entities.get_mut(e) {
-            let z = if net.is_some() { None } else { Some(en.z) };
-            en.set_world(net, car.x, car.y, z, car.h);
-            en.speed = car.speed;
-            en.moved_by_action = true;
+        if self.place_driven(e, &car) {
+            f.vehicle = Some(car);
         }
     }
 }

@@ -3,6 +3,7 @@
 //! reference has already moved when its follower steers: they step after the default
 //! controller, where `step_controllers` only keeps the default controller off the follower.
 
+use super::kinematic_vehicle::KinematicVehicle;
 use super::ControllerRt;
 use crate::sim::Sim;
 
@@ -24,6 +25,22 @@ impl<'a> Sim<'a> {
                 *slot = Some(rt);
             }
         }
+    }
+
+    /// Put follower `e` where its vehicle model drove it; false (nothing changed) when the
+    /// model's state is not finite (absurd gains: stop driving rather than write such a pose).
+    pub(super) fn place_driven(&mut self, e: usize, car: &KinematicVehicle) -> bool {
+        if !car.is_finite() {
+            return false;
+        }
+        let net = self.net;
+        if let Some(en) = self.entities.get_mut(e) {
+            let z = if net.is_some() { None } else { Some(en.z) };
+            en.set_world(net, car.x, car.y, z, car.h);
+            en.speed = car.speed;
+            en.moved_by_action = true;
+        }
+        true
     }
 
     /// Keep the default controller off follower `e` while its controller is `active`.
