@@ -59,6 +59,9 @@ pub struct Entity {
     /// Added (put in place) during this step: the next `after_move` derives no velocity, yaw
     /// rate or odometer from the jump.
     pub appeared: bool,
+    /// (road, lane, section start, section end) where the entity's lane is known to run
+    /// parallel to the reference line: no heading drift to compute while it stays there.
+    pub parallel_lane: Option<(usize, i32, f64, f64)>,
     /// The route assigned by AssignRouteAction / AcquirePositionAction: junction choices follow it.
     pub route: Option<std::sync::Arc<routing::Route>>,
 }
@@ -110,6 +113,7 @@ impl Entity {
             controller_active: false,
             active: true,
             appeared: false,
+            parallel_lane: None,
             route: None,
         }
     }
@@ -122,10 +126,23 @@ impl Entity {
             self.y = p.y;
             self.z = p.z;
             // Along a lane that widens or narrows the path drifts sideways; esmini's heading follows it.
-            let drift = net.roads.get(lp.road).map_or(0.0, |r| crate::roads::lane_slope::drift_angle(r, lp.lane_id, lp.s, p.t, p.curvature));
+            let known_parallel = self.parallel_lane.is_some_and(|(r, l, a, b)| r == lp.road && l == lp.lane_id && lp.s >= a && lp.s < b);
+            let drift = if known_parallel { 0.0 } else { self.drift(net, &lp, p.t, p.curvature) };
             self.h = wrap_2pi(lp.facing_heading(&p) + self.yaw_offset + drift);
             self.on_road = inside_real_lane(net, &lp, &p) || self.lane_contains(net, &lp, p.t);
         }
+    }
+
+    /// The heading drift on lane position `lp` (see `lane_slope`); remembers a section where the
+    /// lane runs parallel, so that the next steps there skip the question.
+    fn drift(&mut self, net: &RoadNetwork, lp: &LanePos, t: f64, curvature: f64) -> f64 {
+        let Some(road) = net.roads.get(lp.road) else { return 0.0 };
+        let section = road.section_index_at(lp.s);
+        if crate::roads::lane_shape::lane_shape(road, section, lp.lane_id).parallel {
+            self.parallel_lane = road.section_range(section).map(|(a, b)| (lp.road, lp.lane_id, a, b));
+            return 0.0;
+        }
+        crate::roads::lane_slope::drift_angle(road, lp.lane_id, lp.s, t, curvature)
     }
 
     /// Place the entity at a world pose; attach it to the nearest lane (`hint`: road preferred).

@@ -38,7 +38,11 @@ pub fn lane_center_slope(road: &Road, section: usize, lane_id: i32, s: f64) -> f
 /// The turn of a lane follower's heading away from the road direction: atan of the centre's
 /// sideways slope over the lane's own length scale (1 − κ·t).
 pub fn drift_angle(road: &Road, lane_id: i32, s: f64, t: f64, curvature: f64) -> f64 {
-    let slope = lane_center_slope(road, road.section_index_at(s), lane_id, s);
+    let section = road.section_index_at(s);
+    if super::lane_shape::lane_shape(road, section, lane_id).parallel {
+        return 0.0;
+    }
+    let slope = lane_center_slope(road, section, lane_id, s);
     if slope == 0.0 {
         return 0.0;
     }

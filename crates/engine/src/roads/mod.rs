@@ -4,6 +4,7 @@
 pub mod banking;
 pub mod lane_geometry;
 pub mod lane_position;
+pub mod lane_shape;
 pub mod lane_slope;
 pub mod locate;
 pub mod offroad;

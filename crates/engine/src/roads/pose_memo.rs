@@ -46,6 +46,7 @@ pub fn reference_pose(road: &Road, s: f64) -> CurvePose {
 pub fn clear() {
     MEMO.with(|m| m.borrow_mut().iter_mut().for_each(|e| *e = None));
     LANES.with(|m| m.borrow_mut().iter_mut().for_each(|e| *e = None));
+    super::lane_shape::clear();
 }
 
 type LaneKey = (usize, i32, u64);

@@ -80,7 +80,7 @@ fn move_along(
             if section_now != section_before && pos.road == road_before {
                 follow_section_change(net, pos, section_before, section_now);
             }
-            super::zero_width::leave_zero_width_lane(net, pos);
+            super::zero_width::leave_zero_width_lane_in(net, pos, section_now);
             return MoveStatus::Ok;
         }
         let (end, overshoot) = if s > road.length { (ContactPoint::End, s - road.length) } else { (ContactPoint::Start, -s) };

@@ -20,12 +20,20 @@ fn drivable(kind: LaneType) -> bool {
 /// has no width at its s. Returns whether it moved.
 pub fn leave_zero_width_lane(net: &RoadNetwork, pos: &mut LanePos) -> bool {
     let Some(road) = net.roads.get(pos.road) else { return false };
+    leave_zero_width_lane_in(net, pos, road.section_index_at(pos.s))
+}
+
+/// [`leave_zero_width_lane`] when the caller knows the lane section at `pos.s` already.
+pub fn leave_zero_width_lane_in(net: &RoadNetwork, pos: &mut LanePos, section: usize) -> bool {
+    let Some(road) = net.roads.get(pos.road) else { return false };
+    if super::lane_shape::lane_shape(road, section, pos.lane_id).never_zero_width {
+        return false;
+    }
     // Memoised: the pose of this step asks for the same borders next.
     let Some((a, b)) = super::pose_memo::lane_borders_at(road, pos.lane_id, pos.s) else { return false };
     if pos.lane_id == 0 || (b - a).abs() >= ZERO_WIDTH {
         return false;
     }
-    let section = road.section_index_at(pos.s);
     let Some(sec) = road.lane_sections.get(section) else { return false };
     let t = 0.5 * (a + b) + pos.offset;
     let mut best: Option<(f64, i32)> = None;
