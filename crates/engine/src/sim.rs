@@ -32,6 +32,9 @@ pub struct Sim<'a> {
     pub warnings: Vec<Warning>,
     /// Each entity's assigned controller (None: the default controller).
     pub controllers: Vec<Option<crate::controllers::ControllerRt>>,
+    /// Some entity has a modelled controller: without one the controller steps of a frame are
+    /// skipped outright (most scenarios have none).
+    pub any_controller: bool,
     /// Who pulls whom (actions/trailer.rs).
     pub trailers: crate::actions::trailer::Trailers,
     /// The ghost of a FollowGhost / FollowReference controller (ghost.rs).
@@ -65,6 +68,7 @@ impl<'a> Sim<'a> {
             state_log: Vec::new(),
             warnings: Vec::new(),
             controllers: vec![None; scenario.entities.len()],
+            any_controller: false,
             trailers: Default::default(),
             ghost: None,
             triggering_actors: Vec::new(),

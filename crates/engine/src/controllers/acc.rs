@@ -97,6 +97,9 @@ impl<'a> Sim<'a> {
 
     /// Step every active ACC (and ALKS) controller by `dt`, after the default controller.
     pub fn step_acc_controllers(&mut self, dt: f64) {
+        if !self.any_controller {
+            return;
+        }
         for e in 0..self.controllers.len() {
             if !matches!(self.controllers.get(e), Some(Some(super::ControllerRt::Acc(_)))) {
                 continue;

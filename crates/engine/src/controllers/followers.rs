@@ -10,6 +10,9 @@ use crate::sim::Sim;
 impl<'a> Sim<'a> {
     /// Step every active follower by `dt` (after the default controller).
     pub fn step_followers(&mut self, dt: f64) {
+        if !self.any_controller {
+            return;
+        }
         for e in 0..self.controllers.len() {
             let is_follower = matches!(self.controllers.get(e), Some(Some(ControllerRt::FollowGhost(_) | ControllerRt::FollowReference(_))));
             if !is_follower || !self.entities.get(e).is_some_and(|en| en.active) {

@@ -66,6 +66,7 @@ impl<'a> Sim<'a> {
             };
             self.warnings.push(Warning::at(&c.origin, format!("controller `{}` ({kind}) {why}; the default controller drives and the storyboard's actions apply", c.name)));
         }
+        self.any_controller |= rt.is_some();
         if let Some(slot) = self.controllers.get_mut(e) {
             *slot = rt;
         }
@@ -95,6 +96,9 @@ impl<'a> Sim<'a> {
 
     /// Step every active controller by `dt` (after the storyboard, before the default controller).
     pub fn step_controllers(&mut self, dt: f64) {
+        if !self.any_controller {
+            return;
+        }
         for e in 0..self.controllers.len() {
             let Some(mut rt) = self.controllers.get_mut(e).and_then(|c| c.take()) else { continue };
             match &mut rt {

@@ -145,6 +145,9 @@ impl<'a> Sim<'a> {
     /// Step every active NaturalDriver by `dt`, after the default controller moved the others
     /// (also at frame 0 with `dt` = 0, as esmini steps its controllers there too).
     pub fn step_natural_drivers(&mut self, dt: f64) {
+        if !self.any_controller {
+            return;
+        }
         for e in 0..self.controllers.len() {
             if !matches!(self.controllers.get(e), Some(Some(ControllerRt::NaturalDriver(_)))) {
                 continue;
