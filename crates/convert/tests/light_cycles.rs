@@ -3,17 +3,12 @@
 //! type 1000001) added; TrafficSignalStateActions at 1.0 s and 2.5 s (green → yellow → red)
 //! and the stop at 4 s give the cycle by hand: the CommonRoad step is 0.1 s.
 
+mod common;
+
 use std::path::PathBuf;
 
 use commonroad::TrafficLightColor;
-use convert::{convert_scenario_keeping, ConvertOptions, Request};
-
-const CAR: &str = r#"<Vehicle name="car" vehicleCategory="car"><ParameterDeclarations/>
-<Performance maxSpeed="70" maxAcceleration="200" maxDeceleration="200"/>
-<BoundingBox><Center x="1.5" y="0" z="0.9"/><Dimensions width="2.0" length="4.5" height="1.8"/></BoundingBox>
-<Axles><FrontAxle maxSteering="0.5" wheelDiameter="0.6" trackWidth="1.8" positionX="3.1" positionZ="0.3"/>
-<RearAxle maxSteering="0" wheelDiameter="0.6" trackWidth="1.8" positionX="0" positionZ="0.3"/></Axles>
-<Properties/></Vehicle>"#;
+use common::{convert_and_clean, fresh_dir, CAR};
 
 fn set_light(t: f64, state: &str) -> String {
     format!(
@@ -49,8 +44,7 @@ fn scenario() -> String {
 }
 
 fn workdir() -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("osc2cr-light-cycles-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
+    let dir = fresh_dir("light-cycles");
     let fixture = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../engine/tests/fixtures/straight.xodr");
     let road = std::fs::read_to_string(fixture).expect("fixture road");
     let signal = r#"<signals><signal s="100" t="-4" id="7" name="light" dynamic="yes" orientation="+" zOffset="3" type="1000001" country="OpenDRIVE" subtype="-1" height="0.8" width="0.4"/></signals>
@@ -62,13 +56,7 @@ fn workdir() -> PathBuf {
 
 #[test]
 fn the_lights_cycle_is_the_runs_signal_history() {
-    let dir = workdir();
-    let path = dir.join("light.xosc");
-    let request = Request { path: &path, name: "light", config: 1, parameters: &[], source: String::new() };
-    let (conversion, model) = convert_scenario_keeping(&request, &ConvertOptions::default(), true);
-    let _ = std::fs::remove_dir_all(&dir);
-    assert!(conversion.result.is_ok(), "{:?}", conversion.result.err());
-    let model = model.expect("model kept");
+    let (conversion, model) = convert_and_clean(&workdir(), "light");
     let lights = &model.scenario.network.traffic_lights;
     assert_eq!(lights.len(), 1, "{lights:#?}");
     let got: Vec<(u64, TrafficLightColor)> = lights[0].cycle.iter().map(|e| (e.duration.get(), e.color)).collect();

@@ -3,16 +3,11 @@
 //! which it exists. The scenario runs on the engine's straight fixture road (along +x; lane -1's
 //! centre at y = -1.75, lane -2's at y = -5.25); times and positions are worked out by hand.
 
+mod common;
+
 use std::path::PathBuf;
 
-use convert::{convert_scenario_keeping, ConvertOptions, Request};
-
-const CAR: &str = r#"<Vehicle name="car" vehicleCategory="car"><ParameterDeclarations/>
-<Performance maxSpeed="70" maxAcceleration="200" maxDeceleration="200"/>
-<BoundingBox><Center x="1.5" y="0" z="0.9"/><Dimensions width="2.0" length="4.5" height="1.8"/></BoundingBox>
-<Axles><FrontAxle maxSteering="0.5" wheelDiameter="0.6" trackWidth="1.8" positionX="3.1" positionZ="0.3"/>
-<RearAxle maxSteering="0" wheelDiameter="0.6" trackWidth="1.8" positionX="0" positionZ="0.3"/></Axles>
-<Properties/></Vehicle>"#;
+use common::{convert_and_clean, fresh_dir, CAR};
 
 fn place(entity: &str, s: f64, lane: i32, speed: f64) -> String {
     format!(
@@ -63,8 +58,7 @@ fn scenario() -> String {
 
 /// A fresh directory holding the scenario and the fixture road.
 fn workdir() -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("osc2cr-part3-entities-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
+    let dir = fresh_dir("part3-entities");
     let road = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../engine/tests/fixtures/straight.xodr");
     std::fs::copy(&road, dir.join("straight.xodr")).expect("fixture road copied");
     std::fs::write(dir.join("delete_add.xosc"), scenario()).expect("scenario written");
@@ -73,13 +67,7 @@ fn workdir() -> PathBuf {
 
 #[test]
 fn an_entity_deleted_and_added_back_is_one_obstacle_per_appearance() {
-    let dir = workdir();
-    let path = dir.join("delete_add.xosc");
-    let request = Request { path: &path, name: "delete_add", config: 1, parameters: &[], source: String::new() };
-    let (conversion, model) = convert_scenario_keeping(&request, &ConvertOptions::default(), true);
-    let _ = std::fs::remove_dir_all(&dir);
-    assert!(conversion.result.is_ok(), "{:?}", conversion.result.err());
-    let model = model.expect("model kept");
+    let (conversion, model) = convert_and_clean(&workdir(), "delete_add");
     // Box centres are 1.5 m ahead of the reference point. Ego starts at x = 101.5; Target's
     // two appearances: from step 0 at x = 21.5 (lane -1), and from step 51 (5.1 s, its first
     // CommonRoad step after the add at 5.01 s) at x = 300 + 10 · 0.09 + 1.5 = 302.4 (lane -2).

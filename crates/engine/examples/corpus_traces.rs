@@ -2,21 +2,8 @@
 //! `cargo run --release -p engine --example corpus_traces -- SHARED_DIR OUT_DIR`
 //! (OUT_DIR/<path under corpus without .xosc>.csv), and print the engine's speed.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::time::Instant;
-
-fn xosc_files(dir: &Path, out: &mut Vec<PathBuf>) {
-    let Ok(rd) = std::fs::read_dir(dir) else { return };
-    let mut entries: Vec<_> = rd.flatten().map(|e| e.path()).collect();
-    entries.sort();
-    for p in entries {
-        if p.is_dir() {
-            xosc_files(&p, out);
-        } else if p.extension().is_some_and(|e| e == "xosc") {
-            out.push(p);
-        }
-    }
-}
 
 /// CPU time this thread has run, in seconds (Linux schedstat; `None` elsewhere): on a loaded
 /// machine wall time overstates the engine's cost.
@@ -32,8 +19,7 @@ fn main() {
     let filter = args.get(3).cloned();
     let corpus = shared.join("corpus");
     let reference = shared.join("reference/esmini-3.6.0");
-    let mut files = Vec::new();
-    xosc_files(&corpus, &mut files);
+    let files = testkit::files_with_ext(&corpus, "xosc");
     let (mut sim_time, mut wall, mut cpu) = (0.0, 0.0, 0.0);
     for f in files {
         let rel = f.strip_prefix(&corpus).unwrap_or(&f).with_extension("");

@@ -23,27 +23,13 @@ fn shared() -> Option<PathBuf> {
     }
 }
 
-fn xosc_files(dir: &Path, out: &mut Vec<PathBuf>) {
-    let Ok(rd) = std::fs::read_dir(dir) else { return };
-    let mut entries: Vec<_> = rd.flatten().map(|e| e.path()).collect();
-    entries.sort();
-    for p in entries {
-        if p.is_dir() {
-            xosc_files(&p, out);
-        } else if p.extension().is_some_and(|e| e == "xosc") {
-            out.push(p);
-        }
-    }
-}
-
 #[test]
 fn corpus_runs_and_conforms() {
     let Some(shared) = shared() else { return };
     let corpus = shared.join("corpus");
     let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join("engine-corpus-traces");
     let _ = std::fs::remove_dir_all(&out);
-    let mut files = Vec::new();
-    xosc_files(&corpus, &mut files);
+    let files = testkit::files_with_ext(&corpus, "xosc");
     let mut ran = 0;
     for f in &files {
         let Ok((scenario, _)) = openscenario::load_scenario(f, &Default::default()) else { continue };

@@ -134,3 +134,31 @@ pub fn trace(len: usize, names: &[&str], f: impl Fn(usize, usize) -> Option<Samp
 pub fn straight(x0: f64, y: f64, v: f64) -> impl Fn(usize) -> Sample {
     move |k| sample(x0 + v * k as f64 * 0.01, y, 0.0, v)
 }
+
+/// A `<Vehicle>` for scenarios written in tests: 4.5 × 2 m, box centre 1.5 m ahead of the rear
+/// axle.
+pub const CAR: &str = r#"<Vehicle name="car" vehicleCategory="car"><ParameterDeclarations/>
+<Performance maxSpeed="70" maxAcceleration="200" maxDeceleration="200"/>
+<BoundingBox><Center x="1.5" y="0" z="0.9"/><Dimensions width="2.0" length="4.5" height="1.8"/></BoundingBox>
+<Axles><FrontAxle maxSteering="0.5" wheelDiameter="0.6" trackWidth="1.8" positionX="3.1" positionZ="0.3"/>
+<RearAxle maxSteering="0" wheelDiameter="0.6" trackWidth="1.8" positionX="0" positionZ="0.3"/></Axles>
+<Properties/></Vehicle>"#;
+
+/// A fresh temporary directory for one test's files.
+pub fn fresh_dir(tag: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("osc2cr-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    dir
+}
+
+/// Converts `dir/<name>.xosc` with the default options, removes `dir`, and returns what the
+/// conversion reports and the model it built (panics, with the failure, if it failed).
+pub fn convert_and_clean(dir: &Path, name: &str) -> (convert::Conversion, convert::Model) {
+    let path = dir.join(format!("{name}.xosc"));
+    let request = convert::Request { path: &path, name, config: 1, parameters: &[], source: String::new() };
+    let (conversion, model) = convert::convert_scenario_keeping(&request, &convert::ConvertOptions::default(), true);
+    let _ = std::fs::remove_dir_all(dir);
+    assert!(conversion.result.is_ok(), "{:?}", conversion.result.err());
+    (conversion, model.expect("model kept"))
+}
