@@ -173,7 +173,11 @@ fn run(
 
     // 3. the run
     let t = Instant::now();
-    let run = run_engine(&scenario, road.as_ref(), options).map_err(|e| fail(Stage::Engine, e))?;
+    let run = run_engine(&scenario, road.as_ref(), options).map_err(|e| match e {
+        // the batch's --timeout reached the engine first: the same failure as the batch's own
+        engine::Error::Deadline(t) => fail(Stage::Timeout, format!("not converted within the time limit (--timeout); the engine stopped at {t:.2} s")),
+        other => fail(Stage::Engine, other.to_string()),
+    })?;
     warn(warnings, Stage::Engine, &run.warnings);
     timings.engine_ms = ms(t);
     facts.duration_s = Some(run.trace.end_time().max(0.0));

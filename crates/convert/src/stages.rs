@@ -47,13 +47,13 @@ pub fn run_engine(
     scenario: &openscenario::Scenario,
     road: Option<&opendrive::RoadNetwork>,
     options: &ConvertOptions,
-) -> Result<EngineOutput, String> {
+) -> Result<EngineOutput, engine::Error> {
     let settings = Settings {
         step: options.step,
         max_time: options.max_time,
     };
     let control = engine::RunControl { seed: options.engine_seed, deadline: options.deadline };
-    let run = engine::simulate_with(scenario, road, &settings, &control).map_err(|e| e.to_string())?;
+    let run = engine::simulate_with(scenario, road, &settings, &control)?;
     Ok(EngineOutput {
         trace: run.trace,
         warnings: run.warnings.iter().map(ToString::to_string).collect(),

@@ -57,8 +57,8 @@ fn scenario() -> String {
 }
 
 /// A fresh directory holding the scenario and the fixture road.
-fn workdir() -> PathBuf {
-    let dir = fresh_dir("part3-entities");
+fn workdir(tag: &str) -> PathBuf {
+    let dir = fresh_dir(tag);
     let road = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../engine/tests/fixtures/straight.xodr");
     std::fs::copy(&road, dir.join("straight.xodr")).expect("fixture road copied");
     std::fs::write(dir.join("delete_add.xosc"), scenario()).expect("scenario written");
@@ -67,7 +67,7 @@ fn workdir() -> PathBuf {
 
 #[test]
 fn an_entity_deleted_and_added_back_is_one_obstacle_per_appearance() {
-    let (conversion, model) = convert_and_clean(&workdir(), "delete_add");
+    let (conversion, model) = convert_and_clean(&workdir("part3-entities-obstacles"), "delete_add");
     // Box centres are 1.5 m ahead of the reference point. Ego starts at x = 101.5; Target's
     // two appearances: from step 0 at x = 21.5 (lane -1), and from step 51 (5.1 s, its first
     // CommonRoad step after the add at 5.01 s) at x = 300 + 10 · 0.09 + 1.5 = 302.4 (lane -2).
@@ -91,4 +91,22 @@ fn an_entity_deleted_and_added_back_is_one_obstacle_per_appearance() {
     let end = b.trajectory.last().expect("states");
     assert!((end.x - (300.0 + 10.0 * (7.0 - 5.01) + 1.5)).abs() < 1e-6, "{end:?}");
     assert!(conversion.warnings.iter().any(|w| w.message.contains("one per appearance")), "{:?}", conversion.warnings);
+}
+
+#[test]
+fn a_passed_deadline_is_a_timeout_failure_not_an_engine_failure() {
+    let dir = workdir("part3-entities-deadline");
+    let path = dir.join("delete_add.xosc");
+    let request = convert::Request { path: &path, name: "delete_add", config: 1, parameters: &[], source: String::new() };
+    // The 7 s run takes 700 steps; the engine looks at the clock at step 256 and stops there.
+    let options = convert::ConvertOptions { deadline: Some(std::time::Instant::now()), ..Default::default() };
+    let conversion = convert::convert_scenario(&request, &options);
+    let _ = std::fs::remove_dir_all(&dir);
+    match conversion.result {
+        Err(f) => {
+            assert_eq!(f.stage, convert::Stage::Timeout, "{}", f.message);
+            assert!(f.message.contains("--timeout") && f.message.contains("2.55 s"), "{}", f.message);
+        }
+        Ok(_) => panic!("expected a timeout"),
+    }
 }
