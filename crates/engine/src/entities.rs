@@ -142,7 +142,7 @@ impl Entity {
             self.parallel_lane = road.section_range(section).map(|(a, b)| (lp.road, lp.lane_id, a, b));
             return 0.0;
         }
-        crate::roads::lane_slope::drift_angle(road, lp.lane_id, lp.s, t, curvature)
+        crate::roads::lane_slope::drift_angle(road, section, lp.lane_id, lp.s, t, curvature)
     }
 
     /// Place the entity at a world pose; attach it to the nearest lane (`hint`: road preferred).

@@ -37,11 +37,7 @@ pub fn lane_center_slope(road: &Road, section: usize, lane_id: i32, s: f64) -> f
 
 /// The turn of a lane follower's heading away from the road direction: atan of the centre's
 /// sideways slope over the lane's own length scale (1 − κ·t).
-pub fn drift_angle(road: &Road, lane_id: i32, s: f64, t: f64, curvature: f64) -> f64 {
-    let section = road.section_index_at(s);
-    if super::lane_shape::lane_shape(road, section, lane_id).parallel {
-        return 0.0;
-    }
+pub fn drift_angle(road: &Road, section: usize, lane_id: i32, s: f64, t: f64, curvature: f64) -> f64 {
     let slope = lane_center_slope(road, section, lane_id, s);
     if slope == 0.0 {
         return 0.0;
@@ -68,7 +64,7 @@ mod tests {
         assert_eq!(lane_center_slope(road, 0, -1, 20.0), 0.0);
         // Lane −2's centre is at −3 − w/2, w' = 0.1: dt/ds = −0.05.
         assert!((lane_center_slope(road, 0, -2, 20.0) + 0.05).abs() < 1e-15);
-        assert!((drift_angle(road, -2, 20.0, -4.0, 0.0) - (-0.05f64).atan()).abs() < 1e-15);
+        assert!((drift_angle(road, 0, -2, 20.0, -4.0, 0.0) - (-0.05f64).atan()).abs() < 1e-15);
         // Past s = 40 the width is constant again.
         assert_eq!(lane_center_slope(road, 0, -2, 60.0), 0.0);
     }
