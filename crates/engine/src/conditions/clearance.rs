@@ -6,7 +6,8 @@
 use crate::entities::Entity;
 use crate::roads::road_distance::road_distance_within;
 use crate::sim::Sim;
-use opendrive::{LaneType, Road, RoadNetwork};
+use crate::roads::lane_kind::is_driving;
+use opendrive::{Road, RoadNetwork};
 
 /// The parameters of one RelativeClearanceCondition.
 pub struct Clearance<'c> {
@@ -53,20 +54,6 @@ fn lane_exists(road: &Road, s: f64, own: i64, c: &Clearance) -> bool {
     })
 }
 
-fn is_driving(k: LaneType) -> bool {
-    matches!(
-        k,
-        LaneType::Driving
-            | LaneType::Entry
-            | LaneType::Exit
-            | LaneType::OnRamp
-            | LaneType::OffRamp
-            | LaneType::ConnectingRamp
-            | LaneType::MwyEntry
-            | LaneType::MwyExit
-            | LaneType::Bidirectional
-    )
-}
 
 /// Road-level difference from `a` to `b`: signed ds (+ ahead of `a`), lane difference (b − a)
 /// and whether `b` is on a lane of the other direction. `None`: not within `max` along the roads.

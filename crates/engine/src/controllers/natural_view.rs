@@ -10,7 +10,8 @@ use crate::roads::road_distance::road_distance_within;
 use crate::roads::road_follow::wrap;
 use crate::roads::{move_along_s, LanePos};
 use crate::sim::Sim;
-use opendrive::{LaneType, RoadNetwork};
+use crate::roads::lane_kind::is_driving;
+use opendrive::RoadNetwork;
 
 /// esmini's SMALL_NUMBER and LARGE_NUMBER.
 pub const SMALL_NUMBER: f64 = 1e-10;
@@ -80,21 +81,6 @@ pub fn desired_gap(p: &NdParams, follow_speed: f64, lead_speed: f64) -> f64 {
     p.desired_distance + (follow_speed * p.thw + follow_speed * (follow_speed - lead_speed) / (2.0 * ab.sqrt())).max(0.0)
 }
 
-/// Lane types esmini counts as driving lanes.
-fn is_driving(kind: LaneType) -> bool {
-    matches!(
-        kind,
-        LaneType::Driving
-            | LaneType::Entry
-            | LaneType::Exit
-            | LaneType::OnRamp
-            | LaneType::OffRamp
-            | LaneType::ConnectingRamp
-            | LaneType::Bidirectional
-            | LaneType::MwyEntry
-            | LaneType::MwyExit
-    )
-}
 
 /// The driving lanes to the left and right of `lp` (0: none), or `None` when its side of the
 /// road has at most one driving lane.

@@ -3,6 +3,7 @@
 
 pub mod banking;
 pub mod lane_geometry;
+pub mod lane_kind;
 pub mod lane_position;
 pub mod lane_shape;
 pub mod lane_slope;
