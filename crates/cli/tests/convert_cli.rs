@@ -1,30 +1,10 @@
 //! `osc2cr convert` as a user runs it: the shipped example, exit codes, parameter variations,
 //! atomic output, and the same bytes whatever `-j`.
 
+mod common;
+use common::*;
+
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn osc2cr(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_osc2cr"))
-        .args(args)
-        .output()
-        .expect("osc2cr runs")
-}
-
-fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("osc2cr-convert-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).expect("temp dir");
-    d
-}
-
-fn example() -> PathBuf {
-    testkit::workspace_root().join("examples/cut_in.xosc")
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().expect("utf-8 path")
-}
 
 /// Every file under `dir`, relative, sorted.
 fn files(dir: &Path) -> Vec<PathBuf> {
@@ -46,7 +26,7 @@ fn files(dir: &Path) -> Vec<PathBuf> {
 
 #[test]
 fn the_example_converts_and_passes_the_oracle() {
-    let out = tmp("example");
+    let out = tmp("convert_cli", "example");
     let report = out.join("report.json");
     let r = osc2cr(&["convert", s(&example()), "-o", s(&out), "--report", s(&report)]);
     assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
@@ -73,7 +53,7 @@ fn the_example_converts_and_passes_the_oracle() {
 
 #[test]
 fn drop_ego_and_options_reach_the_file() {
-    let out = tmp("options");
+    let out = tmp("convert_cli", "options");
     let r = osc2cr(&[
         "convert", s(&example()), "-o", s(&out), "--drop-ego", "--country", "DEU", "--date",
         "2024-02-29", "--author", "A. Author", "--affiliation", "Lab", "--goal-length", "30",
@@ -89,7 +69,7 @@ fn drop_ego_and_options_reach_the_file() {
 
 #[test]
 fn exit_codes() {
-    let out = tmp("exit");
+    let out = tmp("convert_cli", "exit");
     // a path that does not exist: bad usage
     let r = osc2cr(&["convert", "/nonexistent/x.xosc", "-o", s(&out)]);
     assert_eq!(r.status.code(), Some(2));
@@ -136,7 +116,7 @@ fn exit_codes() {
 
 #[test]
 fn parameter_overrides_change_the_result() {
-    let out = tmp("param");
+    let out = tmp("convert_cli", "param");
     let r = osc2cr(&["convert", s(&example()), "-o", s(&out), "--param", "EgoSpeed=10", "--report", s(&out.join("r.json"))]);
     assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
     let text = std::fs::read_to_string(out.join("cut_in.xml")).expect("output");
@@ -149,7 +129,7 @@ fn parameter_overrides_change_the_result() {
 fn distributions_convert_to_capped_variations_in_order() {
     let Some(shared) = testkit::shared_dir() else { return };
     let dist = shared.join("corpus/esmini/xosc/cut-in_parameter_set.xosc");
-    let out = tmp("dist");
+    let out = tmp("convert_cli", "dist");
     let report = out.join("r.json");
     let r = osc2cr(&["convert", s(&dist), "-o", s(&out), "--max-variations", "3", "--report", s(&report), "-j", "2"]);
     assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
@@ -177,11 +157,11 @@ fn distributions_convert_to_capped_variations_in_order() {
 fn same_bytes_whatever_the_number_of_threads() {
     let Some(shared) = testkit::shared_dir() else { return };
     let input = shared.join("corpus/esmini/xosc");
-    let (a, b) = (tmp("j1"), tmp("j2"));
+    let (a, b) = (tmp("convert_cli", "j1"), tmp("convert_cli", "j2"));
     let ra = osc2cr(&["convert", s(&input), "-o", s(&a), "-j", "1", "--max-variations", "4"]);
     let rb = osc2cr(&["convert", s(&input), "-o", s(&b), "-j", "2", "--max-variations", "4"]);
     assert_eq!(ra.status.code(), rb.status.code());
-    let msgs = |r: &Output, dir: &Path| String::from_utf8_lossy(&r.stderr).replace(s(dir), "OUT");
+    let msgs = |r: &std::process::Output, dir: &Path| String::from_utf8_lossy(&r.stderr).replace(s(dir), "OUT");
     assert_eq!(msgs(&ra, &a), msgs(&rb, &b), "same messages");
     let (fa, fb) = (files(&a), files(&b));
     assert_eq!(fa, fb);
@@ -194,7 +174,7 @@ fn same_bytes_whatever_the_number_of_threads() {
 
 #[test]
 fn a_scenario_over_its_time_limit_fails_with_a_timeout_and_writes_nothing() {
-    let out = tmp("timeout");
+    let out = tmp("convert_cli", "timeout");
     let o = osc2cr(&["convert", s(&example()), "-o", s(&out), "--timeout", "0.00001"]);
     assert_eq!(o.status.code(), Some(1), "{}", String::from_utf8_lossy(&o.stderr));
     let err = String::from_utf8_lossy(&o.stderr);

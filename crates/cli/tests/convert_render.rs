@@ -1,33 +1,11 @@
 //! `osc2cr convert --render`: a PNG beside each converted scenario, named like it; a picture
 //! that cannot be written is a warning of the report, never a failed conversion.
 
+mod common;
+use common::*;
+
 use std::collections::BTreeSet;
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn osc2cr(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_osc2cr"))
-        .args(args)
-        .output()
-        .expect("osc2cr runs")
-}
-
-fn tmp(name: &str) -> PathBuf {
-    let d = Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .join("convert_render")
-        .join(name);
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).expect("temp dir");
-    d
-}
-
-fn example() -> PathBuf {
-    testkit::workspace_root().join("examples/cut_in.xosc")
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().expect("utf-8 path")
-}
+use std::path::Path;
 
 fn report(path: &Path) -> serde_json::Value {
     serde_json::from_slice(&std::fs::read(path).expect("report written")).expect("report is JSON")
@@ -35,7 +13,7 @@ fn report(path: &Path) -> serde_json::Value {
 
 #[test]
 fn a_picture_appears_beside_the_scenario() {
-    let out = tmp("beside");
+    let out = tmp("convert_render", "beside");
     let rep = out.join("report.json");
     let r = osc2cr(&[
         "convert",
@@ -94,7 +72,7 @@ fn a_picture_appears_beside_the_scenario() {
 
 #[test]
 fn without_render_no_picture() {
-    let out = tmp("none");
+    let out = tmp("convert_render", "none");
     let r = osc2cr(&["convert", s(&example()), "-o", s(&out)]);
     assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
     assert!(out.join("cut_in.xml").is_file());
@@ -103,7 +81,7 @@ fn without_render_no_picture() {
 
 #[test]
 fn a_picture_that_cannot_be_written_is_a_warning() {
-    let out = tmp("blocked");
+    let out = tmp("convert_render", "blocked");
     // a folder where the picture should go: the atomic rename onto it fails
     std::fs::create_dir_all(out.join("cut_in.png").join("x")).unwrap();
     let rep = out.join("report.json");

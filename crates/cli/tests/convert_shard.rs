@@ -2,27 +2,11 @@
 //! a name collision, a sub-folder) together write exactly the files of one unsharded run —
 //! same names, same bytes — and each conversion is done by exactly one shard.
 
+mod common;
+use common::*;
+
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn osc2cr(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_osc2cr"))
-        .args(args)
-        .output()
-        .expect("osc2cr runs")
-}
-
-fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("osc2cr-shard-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).expect("temp dir");
-    d
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().expect("utf-8 path")
-}
 
 /// Every file under `dir` (relative path → bytes).
 fn files(dir: &Path) -> BTreeMap<PathBuf, Vec<u8>> {
@@ -46,7 +30,7 @@ fn files(dir: &Path) -> BTreeMap<PathBuf, Vec<u8>> {
 /// a scenario whose name collides with the distribution's first variation, and a sub-folder.
 fn library() -> PathBuf {
     let root = testkit::workspace_root().join("examples");
-    let lib = tmp("lib");
+    let lib = tmp("convert_shard", "lib");
     let scenario = std::fs::read_to_string(root.join("cut_in.xosc")).expect("example");
     let road = std::fs::read(root.join("two_lane_curve.xodr")).expect("example road");
     std::fs::create_dir_all(lib.join("sub")).expect("sub folder");
@@ -89,7 +73,7 @@ fn three_shards_write_exactly_the_unsharded_files() {
         assert!(r.status.success(), "{:?}: {}", shard, String::from_utf8_lossy(&r.stderr));
         files(out)
     };
-    let whole = run(&tmp("whole"), None);
+    let whole = run(&tmp("convert_shard", "whole"), None);
 
     // names by the CLI's rule: files in sorted order (cut_in, speeds, speeds_1, sub/cut_in),
     // variations `_k` for k = 1..=7, and `-2` for the second claim on a name
@@ -103,7 +87,7 @@ fn three_shards_write_exactly_the_unsharded_files() {
     let mut union = BTreeMap::new();
     let mut sizes = Vec::new();
     for k in 1..=3 {
-        let part = run(&tmp(&format!("shard{k}")), Some(&format!("{k}/3")));
+        let part = run(&tmp("convert_shard", &format!("shard{k}")), Some(&format!("{k}/3")));
         sizes.push(part.len());
         for (name, bytes) in part {
             assert!(union.insert(name.clone(), bytes).is_none(), "{} written by two shards", name.display());
@@ -120,7 +104,7 @@ fn three_shards_write_exactly_the_unsharded_files() {
 #[test]
 fn more_shards_than_work_is_not_an_error_and_a_bad_shard_is() {
     let example = testkit::workspace_root().join("examples/cut_in.xosc");
-    let out = tmp("empty-shard");
+    let out = tmp("convert_shard", "empty-shard");
     let r = osc2cr(&["convert", s(&example), "-o", s(&out), "--shard", "2/2"]);
     assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
     assert!(files(&out).is_empty(), "the only scenario belongs to shard 1");

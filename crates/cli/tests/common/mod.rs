@@ -1,0 +1,32 @@
+//! What the `osc2cr convert` tests share: running the binary, fresh temporary folders, the
+//! shipped example (tests only).
+#![allow(dead_code)]
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+/// Runs the built `osc2cr` with `args`.
+pub fn osc2cr(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_osc2cr"))
+        .args(args)
+        .output()
+        .expect("osc2cr runs")
+}
+
+/// An empty folder `<target tmp>/<suite>/<name>`, made afresh.
+pub fn tmp(suite: &str, name: &str) -> PathBuf {
+    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join(suite).join(name);
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).expect("temp dir");
+    d
+}
+
+/// The scenario the repository ships.
+pub fn example() -> PathBuf {
+    testkit::workspace_root().join("examples/cut_in.xosc")
+}
+
+/// A path as the `&str` an argument list wants.
+pub fn s(p: &Path) -> &str {
+    p.to_str().expect("utf-8 path")
+}
