@@ -5,7 +5,7 @@ mod common;
 #[test]
 fn all_corpus_maps_load() {
     let Some(files) = common::corpus_xodr() else { return };
-    assert_eq!(files.len(), 35, "expected the 35 corpus maps");
+    assert_eq!(files.len(), 99, "expected the 99 corpus maps");
     let mut failures = Vec::new();
     for f in &files {
         match opendrive::load(f) {

@@ -95,7 +95,17 @@ pub(crate) fn read_maneuver(r: &mut Reader, cx: &Cx, e: &Elem, asg: &[(String, S
     let cx = Cx::new(cx.file.clone(), &scope);
     let mut events = Vec::new();
     for ev in e.children_named("Event") {
-        let actions = ev.children_named("Action").map(|a| read_action(r, &cx, a)).collect::<Result<Vec<_>, _>>()?;
+        // An Action with no child is outside the schema, but esmini reads it as no action at all
+        // (ScenarioReader::parseOSCManeuver adds nothing for it); so do we, and say so.
+        let mut actions = Vec::new();
+        for a in ev.children_named("Action") {
+            if a.children.is_empty() {
+                let name = cx.opt_text(a, "name")?.unwrap_or_default();
+                r.warn(cx.loc(a.pos), format!("Action '{name}' has no PrivateAction, GlobalAction or UserDefinedAction: it does nothing (as in esmini)"));
+                continue;
+            }
+            actions.push(read_action(r, &cx, a)?);
+        }
         events.push(Event {
             name: cx.opt_text(ev, "name")?.unwrap_or_default(),
             priority: cx.opt_enum(ev, "priority")?.unwrap_or(Priority::Override),
