@@ -4,12 +4,15 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-/// Fraction of compared scenarios that must be exact or close (measured 79 of 79; one may
-/// slip before this fails).
-const FLOOR: f64 = 0.98;
-
-/// Fraction of compared scenarios that must be exact (measured 79 of 79; issue #5 asks 60 %).
-const EXACT_FLOOR: f64 = 0.95;
+/// Floors per corpus folder group: (name, folders, exact-or-close floor, exact floor).
+/// The demo and ASAM scenarios were 79 of 79 exact when esmini's unit tests arrived; the unit-test
+/// folder has its own floor, ratcheted to what is measured (never lowered to land).
+const FLOORS: &[(&str, &[&str], f64, f64)] = &[
+    // measured 79 of 79 exact; one may slip before this fails
+    ("demo and ASAM", &["esmini", "osc-examples-1.2", "osc-examples-1.3"], 0.98, 0.95),
+    // measured 37 of 62 exact at the start of issue #12
+    ("esmini unit tests", &["esmini-unittest"], 0.59, 0.59),
+];
 
 fn shared() -> Option<PathBuf> {
     let p = std::env::var_os("OSC2CR_SHARED").map(PathBuf::from).unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared"));
@@ -51,11 +54,9 @@ fn corpus_runs_and_conforms() {
         .arg("--quiet")
         .arg("--json")
         .arg(out.join("conformance.json"))
-        .arg("--fail-under")
-        .arg(FLOOR.to_string())
         .status();
     match status {
-        Ok(s) => assert!(s.success(), "conformance below {FLOOR}"),
+        Ok(s) => assert!(s.success(), "conformance.py failed"),
         Err(e) if std::env::var_os("CI").is_none() => {
             eprintln!("python3 not available ({e}): comparison skipped");
             return;
@@ -64,9 +65,35 @@ fn corpus_runs_and_conforms() {
     }
     let text = std::fs::read_to_string(out.join("conformance.json")).expect("conformance.json written");
     let json: serde_json::Value = serde_json::from_str(&text).expect("conformance.json is JSON");
-    let count = |k: &str| json["counts"][k].as_u64().unwrap_or(0) as f64;
-    let compared = count("exact") + count("close") + count("diverged") + count("missing");
-    assert!(compared >= 70.0, "only {compared} scenarios compared: {}", json["counts"]);
-    let exact = count("exact") / compared;
-    assert!(exact >= EXACT_FLOOR, "exact {:.3} below {EXACT_FLOOR}: {}", exact, json["counts"]);
+    let results = json["results"].as_object().expect("conformance.json has results");
+    let mut failures = Vec::new();
+    for (group, folders, floor, exact_floor) in FLOORS {
+        let (mut exact, mut close, mut compared) = (0.0, 0.0, 0.0);
+        let mut diverged = Vec::new();
+        for (path, r) in results {
+            let folder = path.split('/').next().unwrap_or("");
+            if !folders.contains(&folder) {
+                continue;
+            }
+            match r["verdict"].as_str().unwrap_or("") {
+                "exact" => exact += 1.0,
+                "close" => close += 1.0,
+                "diverged" | "missing" => diverged.push(path.clone()),
+                _ => continue, // skipped by the reference's class, or not a trace
+            }
+            compared += 1.0;
+        }
+        eprintln!("{group}: {exact} exact, {close} close, {} diverged of {compared}", diverged.len());
+        if compared < 10.0 {
+            failures.push(format!("{group}: only {compared} scenarios compared"));
+            continue;
+        }
+        if (exact + close) / compared < *floor {
+            failures.push(format!("{group}: exact-or-close {:.3} below {floor}; diverged: {diverged:?}", (exact + close) / compared));
+        }
+        if exact / compared < *exact_floor {
+            failures.push(format!("{group}: exact {:.3} below {exact_floor}", exact / compared));
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
