@@ -45,11 +45,17 @@ pub fn assemble(
     let (tracks, mut warnings) = tracks(trace, entities, options.dt);
     let ego_index = choose_ego(&tracks, &options.ego)?;
     let ego = &tracks[ego_index];
-    let Placement::Moving(runs) = &ego.placement else {
-        return Err(format!("the ego {:?} does not move", ego.entity));
+    let (first, last) = match &ego.placement {
+        Placement::Moving(runs) => (runs.first().and_then(|r| r.first()).copied(), runs.last().and_then(|r| r.last()).copied()),
+        &Placement::Fixed { x, y, orientation, last_step } => {
+            warnings.push(format!(
+                "no entity of the scenario moves: the planning problem starts at the fixed object {:?}, at rest for the whole run",
+                ego.entity
+            ));
+            let at = |time_step| State { time_step, x, y, orientation, velocity: 0.0, acceleration: 0.0, yaw_rate: 0.0 };
+            (Some(at(0)), Some(at(last_step.max(1))))
+        }
     };
-    let first = runs.first().and_then(|r| r.first()).copied();
-    let last = runs.last().and_then(|r| r.last()).copied();
     let (Some(first), Some(last)) = (first, last) else {
         return Err(format!("the ego {:?} has no state", ego.entity));
     };

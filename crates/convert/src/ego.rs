@@ -42,12 +42,21 @@ pub fn choose_ego(tracks: &[Track], choice: &EgoChoice) -> Result<usize, String>
                 .filter(|(_, t)| dynamic(t) && t.entity.to_ascii_lowercase().contains(&pattern))
                 .min_by(|(_, a), (_, b)| a.entity.cmp(&b.entity))
                 .map(|(i, _)| i);
+            // A scenario of fixed objects only still has a map and obstacles worth converting:
+            // the planning problem then starts at a fixed object (the caller warns).
+            let fixed_by_pattern = || {
+                tracks
+                    .iter()
+                    .enumerate()
+                    .filter(|(_, t)| t.entity.to_ascii_lowercase().contains(&pattern))
+                    .min_by(|(_, a), (_, b)| a.entity.cmp(&b.entity))
+                    .map(|(i, _)| i)
+            };
             by_pattern
                 .or_else(|| tracks.iter().position(dynamic))
-                .ok_or_else(|| {
-                    "the scenario has no moving entity that could be the ego of the planning problem"
-                        .to_string()
-                })
+                .or_else(fixed_by_pattern)
+                .or_else(|| (!tracks.is_empty()).then_some(0))
+                .ok_or_else(|| "the scenario has no entity that could be the ego of the planning problem".to_string())
         }
     }
 }

@@ -29,7 +29,7 @@ pub fn obstacles(tracks: &[Track], skip: Option<&str>, ids: &mut IdAllocator) ->
             continue;
         }
         match &t.placement {
-            Placement::Fixed { x, y, orientation } => {
+            Placement::Fixed { x, y, orientation, .. } => {
                 if let Some(kind) = t.cr_type.static_type() {
                     out.statics.push(StaticObstacle {
                         id: ids.obstacle(),

@@ -192,7 +192,7 @@ fn run(
     let header = header(request, &scenario, options).map_err(|e| fail(Stage::Build, e))?;
     facts.benchmark_id = Some(header.benchmark_id.to_string());
     let built = assemble(header, lanelets, &map_tags, &run.trace, &scenario.entities, options)
-        .map_err(|e| fail(Stage::Build, e))?;
+        .map_err(|e| fail(Stage::Build, format!("{}: {e}", scenario.path.display())))?;
     warn(warnings, Stage::Build, &built.warnings);
     facts.ego = Some(built.ego.clone());
     facts.lanelets = built.lanelets;

@@ -37,7 +37,8 @@ pub struct Track {
 #[derive(Debug, Clone, PartialEq)]
 pub enum Placement {
     /// A miscellaneous object present at every step that never moves (bounding-box centre).
-    Fixed { x: f64, y: f64, orientation: f64 },
+    /// `last_step` is the run's last CommonRoad time step (a planning problem may start at it).
+    Fixed { x: f64, y: f64, orientation: f64, last_step: u64 },
     /// Runs of consecutive time steps during which the entity exists. Each run holds at least
     /// two states (`t0`, `t0+1`, …); an entity that exists for one step is padded with a copy.
     Moving(Vec<Vec<State>>),
@@ -115,6 +116,7 @@ pub fn tracks(trace: &Trace, entities: &[Entity], dt: f64) -> (Vec<Track>, Vec<S
                 x: s.x,
                 y: s.y,
                 orientation: s.orientation,
+                last_step: states.len().saturating_sub(1) as u64,
             },
             None => {
                 let runs = runs(&states);

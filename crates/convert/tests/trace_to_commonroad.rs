@@ -329,10 +329,23 @@ fn without_road_network_a_placeholder_lanelet_lies_under_the_ego() {
 }
 
 #[test]
-fn a_scenario_without_moving_entity_fails_clearly() {
-    let e = vec![misc("Pole", M::Pole, bbox(0.0, 0.0, 0.3, 0.3))];
-    let t = trace(21, &["Pole"], |_, _| Some(sample(0.0, 0.0, 0.0, 0.0)));
-    let err = assemble(header(), None, &BTreeSet::new(), &t, &e, &ConvertOptions::default())
-        .expect_err("no ego");
-    assert!(err.contains("no moving entity"), "{err}");
+fn a_scenario_of_fixed_objects_starts_its_planning_problem_at_one_at_rest() {
+    let e = vec![misc("Pole", M::Pole, bbox(0.0, 0.0, 0.3, 0.3)), misc("Wall", M::Barrier, bbox(0.0, 0.0, 0.3, 0.3))];
+    let t = trace(21, &["Wall", "Pole"], |i, _| Some(sample(10.0 * i as f64, 2.0, 0.0, 0.0)));
+    let a = run(&t, &e, &ConvertOptions::default());
+    // no name matches "ego" and nothing moves: the first entity of the trace
+    assert_eq!(a.ego, "Wall");
+    let p = &a.problems.problems[0];
+    assert!(close(p.initial_state.x, 0.0) && close(p.initial_state.y, 2.0) && close(p.initial_state.velocity, 0.0));
+    assert!(a.warnings.iter().any(|w| w.contains("no entity of the scenario moves") && w.contains("Wall")), "{:?}", a.warnings);
+    // the fixed objects stay static obstacles
+    assert_eq!(a.scenario.static_obstacles.len(), 2);
+    assert!(a.scenario.dynamic_obstacles.is_empty());
+}
+
+#[test]
+fn a_scenario_without_entities_fails_clearly() {
+    let t = trace(21, &[], |_, _| None);
+    let err = assemble(header(), None, &BTreeSet::new(), &t, &[], &ConvertOptions::default()).expect_err("no ego");
+    assert!(err.contains("no entity"), "{err}");
 }
