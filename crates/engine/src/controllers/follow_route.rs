@@ -115,6 +115,12 @@ pub fn route_roads(route: &routing::Route, scenario: &[(LaneSpot, Strategy)]) ->
     out
 }
 
+/// The lane position esmini's controller sees: during its lane change esmini keeps the entity
+/// on the target lane with an offset (the trace's lane_id says so) until the change ends.
+fn route_lane(sim: &Sim, e: usize, f: &FollowRouteRt) -> Option<crate::roads::LanePos> {
+    f.lane_change.as_ref().map(|l| l.internal).or_else(|| sim.entities.get(e).and_then(|en| en.lane))
+}
+
 /// Where an entity is, as a lane spot, and whether it drives along s.
 fn spot_of(lp: &crate::roads::LanePos) -> (LaneSpot, bool) {
     (LaneSpot { road: lp.road, lane: lp.lane_id, s: lp.s }, lp.dir > 0.0)
@@ -219,7 +225,7 @@ impl<'a> Sim<'a> {
             self.deactivate_follow_route(e, f);
             return;
         };
-        let Some(vehicle) = self.entities[e].lane else { return };
+        let Some(vehicle) = route_lane(self, e, f) else { return };
         let speed = self.entities[e].speed;
         let mut created = false;
         if next.road == vehicle.road {
@@ -310,7 +316,7 @@ impl<'a> Sim<'a> {
     /// esmini's `CalculateWaypoints`: plan from where the entity is to the next scenario
     /// waypoint (the one after the entity's road on the route, when that road is on it).
     fn calculate_waypoints(&mut self, net: &RoadNetwork, e: usize, f: &mut FollowRouteRt) {
-        let Some(lp) = self.entities.get(e).and_then(|en| en.lane) else { return };
+        let Some(lp) = route_lane(self, e, f) else { return };
         let (start, forward) = spot_of(&lp);
         let n = f.scenario.len();
         let mut j = 0;
