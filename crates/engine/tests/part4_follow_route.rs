@@ -10,10 +10,14 @@ use common::*;
 use engine::{Run, Settings};
 
 fn run_fixture(name: &str) -> Run {
+    run_fixture_on(name, "two_roads.xodr", 12.0)
+}
+
+fn run_fixture_on(name: &str, roads: &str, max_time: f64) -> Run {
     let loaded = openscenario::load(&fixtures().join(name), &Default::default()).expect("fixture scenario loads");
     let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("two_roads.xodr")).expect("fixture road loads").network;
-    engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 12.0 }).expect("simulate")
+    let net = opendrive::load(fixtures().join(roads)).expect("fixture road loads").network;
+    engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time }).expect("simulate")
 }
 
 #[test]
@@ -54,4 +58,22 @@ fn a_vehicle_within_min_dist_for_collision_in_a_lane_between_holds_the_change_ba
     // at x = 150.273861 with speed 0 at 10 s.
     let e = at(&run, "Ego", 10.0);
     assert!(close(e.speed, 0.0, 1e-12) && close(e.x, 150.273861, 1e-5) && close(e.y, -5.25, 1e-9), "{e:?}");
+}
+
+#[test]
+fn at_a_junction_the_default_controller_takes_the_connecting_road_of_the_planned_path() {
+    // fixtures `fork.xodr`: road 1 (100 m along +x) ends in a junction whose first connection
+    // goes straight on (road 10, to road 2) and whose second turns left (road 11, a 90° arc of
+    // radius 20 m, to road 3 heading +y from (120, 20)). Without a route esmini goes straight;
+    // the route to road 3 makes the path run through road 11, and passing the waypoint on
+    // road 1 narrows the default controller's route to it. Ego drives at 10 m/s from s = 10.
+    let run = run_fixture_on("follow_route_fork.xosc", "fork.xodr", 20.0);
+    assert!(run.warnings.is_empty(), "{:?}", run.warnings);
+    // esmini: on the arc (lane −1's centre has radius 21.75 m) at 11 s.
+    let e = at(&run, "Ego", 11.0);
+    assert!(close(e.x, 117.303578, 1e-5) && close(e.y, 6.822417, 1e-5), "{e:?}");
+    // esmini: past road 3, s = 50 at 17.42 s (y 70.040395), stopped from 17.43 s at y 70.140395.
+    assert!(close(at(&run, "Ego", 17.42).speed, 10.0, 1e-12));
+    let e = at(&run, "Ego", 17.43);
+    assert!(close(e.speed, 0.0, 1e-12) && close(e.x, 121.75, 1e-9) && close(e.y, 70.140395, 1e-5), "{e:?}");
 }

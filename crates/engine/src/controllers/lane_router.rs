@@ -376,3 +376,63 @@ pub fn path_waypoints(net: &RoadNetwork, path: &[Node], start: LaneSpot, target:
     out.push(target);
     out
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn node(weight: f64) -> Node {
+        Node { road: 0, current_lane: -1, from_lane: 0, weight, link: None, previous: None }
+    }
+
+    #[test]
+    fn equal_weights_pop_in_libstdcpp_heap_order() {
+        // std::priority_queue with all keys equal: push_heap never moves an element, so the
+        // vector is [a, b, c, d]; pop_heap moves the hole down to the right child (c) and puts
+        // d back at the end: [c, b, d]; then [b, d]. Pop order a, c, b, d (worked by hand from
+        // libstdc++'s __adjust_heap / __push_heap).
+        let nodes = vec![node(1.0); 4];
+        let mut h = Heap { items: Vec::new() };
+        for i in 0..4 {
+            h.push(&nodes, i);
+        }
+        let order: Vec<usize> = std::iter::from_fn(|| h.pop(&nodes)).collect();
+        assert_eq!(order, vec![0, 2, 1, 3]);
+    }
+
+    #[test]
+    fn lighter_nodes_pop_first() {
+        let nodes: Vec<Node> = [5.0, 1.0, 4.0, 2.0, 3.0].iter().map(|&w| node(w)).collect();
+        let mut h = Heap { items: Vec::new() };
+        for i in 0..nodes.len() {
+            h.push(&nodes, i);
+        }
+        let order: Vec<f64> = std::iter::from_fn(|| h.pop(&nodes)).map(|i| nodes[i].weight).collect();
+        assert_eq!(order, vec![1.0, 2.0, 3.0, 4.0, 5.0]);
+    }
+
+    #[test]
+    fn the_path_to_a_junction_exit_runs_through_its_connecting_road() {
+        // tests/fixtures/fork.xodr: road 1 (100 m) → junction: road 10 (straight, 20 m) to
+        // road 2, road 11 (left arc, 10π m) to road 3.
+        let net = opendrive::load(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/fork.xodr")).expect("fixture").network;
+        let idx = |id: &str| net.road_index(id).expect("road");
+        let start = LaneSpot { road: idx("1"), lane: -1, s: 10.0 };
+        let target = LaneSpot { road: idx("3"), lane: -1, s: 50.0 };
+        let path = calculate_path(&net, start, true, target, Strategy::Shortest);
+        let roads: Vec<usize> = path.iter().map(|n| n.road).collect();
+        assert_eq!(roads, vec![idx("1"), idx("11"), idx("3")]);
+        // Weights: 90 m left on road 1, the whole arc, then 50 m into road 3 (its link to
+        // road 3 has contact point start).
+        assert!((path[2].weight - (90.0 + 10.0 * std::f64::consts::PI + 50.0)).abs() < 1e-9);
+        // Waypoints: on road 1 where Ego is (lane −1 drives to the end of the road, and Ego is
+        // past its start), mid-arc on road 11, then the target.
+        let w = path_waypoints(&net, &path, start, target);
+        assert_eq!(w.len(), 3);
+        assert_eq!((w[0].road, w[0].lane, w[0].s), (idx("1"), -1, 10.0));
+        assert!(w[1].road == idx("11") && w[1].lane == -1 && (w[1].s - 5.0 * std::f64::consts::PI).abs() < 1e-9);
+        assert_eq!(w[2], target);
+        // Same road and lane: no path (esmini logs an error and the controller gives up).
+        assert!(calculate_path(&net, start, true, LaneSpot { s: 90.0, ..start }, Strategy::Shortest).is_empty());
+    }
+}
