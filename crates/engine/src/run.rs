@@ -104,6 +104,7 @@ pub fn simulate_with(scenario: &Scenario, roads: Option<&RoadNetwork>, settings:
         if !restarting {
             sim.step_followers(dt);
             sim.step_acc_controllers(dt);
+            sim.step_route_followers(dt);
         }
         sim.step_natural_drivers(dt);
         sim.pull_trailers();

@@ -21,6 +21,7 @@ impl<'a> Sim<'a> {
                     let msg = format!("route `{}`: {w}", route.name);
                     self.warn_action(slot, msg);
                 }
+                self.tell_route_follower(e, route, &r);
                 if let Some(en) = self.entities.get_mut(e) {
                     en.route = Some(Arc::new(r));
                 }

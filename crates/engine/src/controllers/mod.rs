@@ -12,8 +12,10 @@ pub mod alks;
 pub mod alks_r157;
 pub mod follow_ghost;
 pub mod follow_reference;
+pub mod follow_route;
 pub mod followers;
 pub mod kinematic_vehicle;
+pub mod lane_router;
 pub mod natural_driver;
 pub mod natural_view;
 
@@ -29,6 +31,7 @@ pub enum ControllerRt {
     NaturalDriver(Box<natural_driver::NaturalDriverRt>),
     FollowGhost(Box<follow_ghost::FollowGhostRt>),
     FollowReference(Box<follow_reference::FollowReferenceRt>),
+    FollowRoute(Box<follow_route::FollowRouteRt>),
 }
 
 /// Types that need a driver or a co-simulator outside osc2cr.
@@ -56,6 +59,7 @@ impl<'a> Sim<'a> {
             "NaturalDriver" => Some(ControllerRt::NaturalDriver(Box::new(natural_driver::NaturalDriverRt::new(c)))),
             "FollowGhostController" => Some(ControllerRt::FollowGhost(Box::new(follow_ghost::FollowGhostRt::new(c)))),
             "FollowReferenceController" => Some(ControllerRt::FollowReference(Box::new(follow_reference::FollowReferenceRt::new(c)))),
+            "FollowRouteController" => Some(ControllerRt::FollowRoute(Box::new(follow_route::FollowRouteRt::new(c)))),
             _ => None,
         };
         if rt.is_none() {
@@ -90,6 +94,7 @@ impl<'a> Sim<'a> {
                     f.activate(en, wheelbase);
                 }
             }
+            Some(Some(ControllerRt::FollowRoute(f))) => f.activate(),
             _ => {}
         }
     }
@@ -123,6 +128,9 @@ impl<'a> Sim<'a> {
                 // until then the default controller leaves the entity alone.
                 ControllerRt::FollowGhost(f) => self.hold_follower(e, f.active),
                 ControllerRt::FollowReference(f) => self.hold_follower(e, f.active),
+                // Steps after the default controller (`step_route_followers`); its running lane
+                // change moves the entity instead of the default controller (esmini's override).
+                ControllerRt::FollowRoute(f) => self.hold_follower(e, f.holds_entity()),
             }
             if let Some(slot) = self.controllers.get_mut(e) {
                 *slot = Some(rt);

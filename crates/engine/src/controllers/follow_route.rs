@@ -1,0 +1,438 @@
+//! esmini's FollowRoute controller (`ControllerFollowRoute`): once the entity has a route, a
+//! lane-independent path (`lane_router`) to the next scenario waypoint gives one waypoint per
+//! road; near a waypoint on another lane of its road the entity changes lane by a sinusoidal
+//! LaneChangeAction over `laneChangeTime` (during which the default controller leaves it
+//! alone), unless another vehicle nearer than `minDistForCollision` is in the way. Passing a
+//! waypoint narrows the route the default controller follows at junctions to (here, next
+//! waypoint); missing one plans again. After the last waypoint the controller deactivates and
+//! drops the route; with `testMode` the entity also stops. Always additive: storyboard actions
+//! keep acting on the entity. Stepped after the default controller, as esmini steps its
+//! controllers.
+
+use super::lane_router::{calculate_path, connecting_lane_id, next_roads, path_waypoints, LaneSpot};
+use crate::actions::lane_change::LaneChangeRt;
+use crate::dynamics::{sign, Transition};
+use crate::roads::lane_geometry::{lane_borders, lane_center_t};
+use crate::sim::Sim;
+use opendrive::{ContactPoint, ElementType, RoadNetwork};
+use openscenario::{Controller, DynamicsDimension, DynamicsShape};
+use routing::Strategy;
+use std::sync::Arc;
+
+/// esmini's SMALL_NUMBER.
+const SMALL: f64 = 1e-10;
+
+#[derive(Debug, Clone)]
+pub struct FollowRouteRt {
+    pub active: bool,
+    lane_change_time: f64,
+    min_dist_for_collision: f64,
+    min_lane_width: f64,
+    test_mode: bool,
+    /// The route's scenario waypoints with their strategies (set by AssignRouteAction).
+    scenario: Vec<(LaneSpot, Strategy)>,
+    /// The road of each of esmini's detailed route waypoints: the scenario waypoints and one
+    /// per road in between.
+    route_roads: Vec<usize>,
+    path_calculated: bool,
+    waypoints: Vec<LaneSpot>,
+    current: usize,
+    scenario_index: usize,
+    changing_lane: bool,
+    lane_change: Option<LaneChangeRt>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum WaypointStatus {
+    Passed,
+    Missed,
+    NotReached,
+}
+
+impl FollowRouteRt {
+    pub fn new(c: &Controller) -> Self {
+        // esmini reads the numbers with strtod: text that is no number is 0.
+        let num = |n: &str, default: f64| c.properties.get(n).map_or(default, |v| v.trim().parse::<f64>().unwrap_or(0.0));
+        FollowRouteRt {
+            active: false,
+            lane_change_time: num("laneChangeTime", 5.0),
+            min_dist_for_collision: num("minDistForCollision", 10.0),
+            min_lane_width: 0.5,
+            test_mode: c.properties.get("testMode") == Some("true"),
+            scenario: Vec::new(),
+            route_roads: Vec::new(),
+            path_calculated: false,
+            waypoints: Vec::new(),
+            current: 0,
+            scenario_index: 0,
+            changing_lane: false,
+            lane_change: None,
+        }
+    }
+
+    /// esmini's `Activate`: start over (the path is planned at the next step with a route).
+    pub fn activate(&mut self) {
+        self.active = true;
+        self.current = 0;
+        self.scenario_index = 0;
+        self.path_calculated = false;
+        self.changing_lane = false;
+        self.waypoints.clear();
+        self.lane_change = None;
+    }
+
+    /// A route was assigned: its scenario waypoints and the roads it passes, in order.
+    pub fn set_route(&mut self, scenario: Vec<(LaneSpot, Strategy)>, route_roads: Vec<usize>) {
+        self.scenario = scenario;
+        self.route_roads = route_roads;
+    }
+
+    /// Whether a running lane change holds the entity (esmini's override mode).
+    pub fn holds_entity(&self) -> bool {
+        self.active && self.lane_change.is_some()
+    }
+}
+
+/// esmini's detailed route waypoints' roads for `route` through `scenario` waypoints: each
+/// scenario waypoint's road and, between two, each road the planned route passes.
+pub fn route_roads(route: &routing::Route, scenario: &[(LaneSpot, Strategy)]) -> Vec<usize> {
+    let mut out = Vec::new();
+    for (i, (w, _)) in scenario.iter().enumerate() {
+        if i > 0 {
+            let (from, to) = (route.waypoint_route_s(i - 1), route.waypoint_route_s(i));
+            if let (Some(a), Some(b)) = (from, to) {
+                let mut last = scenario[i - 1].0.road;
+                for leg in route.legs().iter().filter(|l| l.route_s >= a && l.route_s < b) {
+                    if leg.road != last && leg.road != w.road {
+                        out.push(leg.road);
+                    }
+                    last = leg.road;
+                }
+            }
+        }
+        out.push(w.road);
+    }
+    out
+}
+
+/// The lane position esmini's controller sees: during its lane change esmini keeps the entity
+/// on the target lane with an offset (the trace's lane_id says so) until the change ends.
+fn route_lane(sim: &Sim, e: usize, f: &FollowRouteRt) -> Option<crate::roads::LanePos> {
+    f.lane_change.as_ref().map(|l| l.internal).or_else(|| sim.entities.get(e).and_then(|en| en.lane))
+}
+
+/// Where an entity is, as a lane spot, and whether it drives along s.
+fn spot_of(lp: &crate::roads::LanePos) -> (LaneSpot, bool) {
+    (LaneSpot { road: lp.road, lane: lp.lane_id, s: lp.s }, lp.dir > 0.0)
+}
+
+/// esmini's `Road::GetConnectedLaneIdAtS`: the lane `lane` at `s_start` runs into through
+/// the road's lane sections towards `s_target`. esmini steps while the start of the section
+/// it just crossed is short of the target, so it follows the lane one section past the one
+/// holding the target.
+fn connected_lane_at_s(net: &RoadNetwork, road: usize, lane: i32, s_start: f64, s_target: f64) -> i32 {
+    let Some(r) = net.roads.get(road) else { return 0 };
+    let n = r.lane_sections.len();
+    if n == 0 {
+        return 0;
+    }
+    let link = |j: usize, id: i32, succ: bool| -> i32 {
+        match r.lane_sections.get(j).and_then(|sec| sec.lane(id)) {
+            None => 0,
+            Some(l) => {
+                let ids = if succ { &l.successors } else { &l.predecessors };
+                ids.first().copied().unwrap_or(id)
+            }
+        }
+    };
+    let mut id = lane;
+    let mut j = r.section_index_at(s_start);
+    let mut s = s_start;
+    if s_target > s_start - SMALL {
+        while id != 0 && j < n - 1 && s < s_target {
+            id = link(j, id, true);
+            s = r.lane_sections[j].s;
+            j += 1;
+        }
+    } else {
+        while id != 0 && j > 0 && s > s_target {
+            id = link(j, id, false);
+            s = r.lane_sections[j].s;
+            j -= 1;
+        }
+    }
+    id
+}
+
+impl<'a> Sim<'a> {
+    /// A route was assigned to entity `e`: a FollowRoute controller of it keeps the route's
+    /// scenario waypoints (resolved now) and the roads between them.
+    pub(crate) fn tell_route_follower(&mut self, e: usize, route: &openscenario::Route, planned: &routing::Route) {
+        if !matches!(self.controllers.get(e), Some(Some(super::ControllerRt::FollowRoute(_)))) {
+            return;
+        }
+        let Some(net) = self.net else { return };
+        let mut scenario = Vec::with_capacity(route.waypoints.len());
+        for w in &route.waypoints {
+            let Ok(p) = crate::positions::resolve(&w.position, Some(net), &self.entities) else { return };
+            let Some(lp) = p.lane else { return };
+            let strategy = match w.strategy {
+                openscenario::RouteStrategy::Fastest => Strategy::Fastest,
+                openscenario::RouteStrategy::Shortest => Strategy::Shortest,
+                openscenario::RouteStrategy::LeastIntersections => Strategy::LeastIntersections,
+                openscenario::RouteStrategy::Random => Strategy::Random,
+            };
+            scenario.push((LaneSpot { road: lp.road, lane: lp.lane_id, s: lp.s }, strategy));
+        }
+        let roads = route_roads(planned, &scenario);
+        if let Some(Some(super::ControllerRt::FollowRoute(f))) = self.controllers.get_mut(e) {
+            f.set_route(scenario, roads);
+        }
+    }
+
+    /// Step every active FollowRoute controller by `dt`, after the default controller.
+    pub fn step_route_followers(&mut self, dt: f64) {
+        if !self.any_controller {
+            return;
+        }
+        for e in 0..self.controllers.len() {
+            if !matches!(self.controllers.get(e), Some(Some(super::ControllerRt::FollowRoute(_)))) {
+                continue;
+            }
+            let Some(Some(super::ControllerRt::FollowRoute(mut f))) = self.controllers.get_mut(e).map(Option::take) else { continue };
+            if f.active && self.entities.get(e).is_some_and(|en| en.active) {
+                self.step_follow_route(e, &mut f, dt);
+            }
+            if let Some(slot) = self.controllers.get_mut(e) {
+                *slot = Some(super::ControllerRt::FollowRoute(f));
+            }
+        }
+    }
+
+    /// esmini's `ControllerFollowRoute::Step`.
+    fn step_follow_route(&mut self, e: usize, f: &mut FollowRouteRt, _dt: f64) {
+        let Some(net) = self.net else { return };
+        if self.entities[e].route.is_none() || f.scenario.is_empty() {
+            return;
+        }
+        if !f.path_calculated {
+            self.calculate_waypoints(net, e, f);
+            if !f.active {
+                return;
+            }
+        }
+        let Some(next) = f.waypoints.get(f.current).copied() else {
+            self.deactivate_follow_route(e, f);
+            return;
+        };
+        let Some(vehicle) = route_lane(self, e, f) else { return };
+        let speed = self.entities[e].speed;
+        let mut created = false;
+        if next.road == vehicle.road {
+            let connected = connected_lane_at_s(net, vehicle.road, vehicle.lane_id, vehicle.s, next.s);
+            let same_lane = next.lane == vehicle.lane_id || connected == next.lane;
+            let dist_to_change = (f.lane_change_time * speed).max(25.0);
+            let near = (vehicle.s - next.s).abs() < dist_to_change;
+            if !same_lane && near && self.can_change_lane(net, e, f, next.lane) {
+                // esmini starts the action in this step (after the default controller moved the
+                // entity) and steps it from the next one on, instead of the default controller.
+                if let Some(lc) = self.new_route_lane_change(net, e, next.lane, f.lane_change_time) {
+                    f.lane_change = Some(lc);
+                    created = true;
+                }
+                f.changing_lane = true;
+            }
+        }
+        if !created {
+            if let Some(mut lc) = f.lane_change.take() {
+                if self.step_lane_change(e, &mut lc) {
+                    f.changing_lane = false;
+                } else {
+                    f.lane_change = Some(lc);
+                }
+            }
+        }
+        self.update_waypoints(net, e, f, vehicle, next);
+    }
+
+    /// esmini's `CreateLaneChange` + `LatLaneChangeAction::Start`: a sinusoidal change over
+    /// `time` seconds to the centre of lane `lane`.
+    fn new_route_lane_change(&self, net: &RoadNetwork, e: usize, lane: i32, time: f64) -> Option<LaneChangeRt> {
+        let lp = self.entities.get(e)?.lane?;
+        let road = net.roads.get(lp.road)?;
+        let s = lp.s.clamp(0.0, road.length);
+        let (cur_c, tgt_c) = (lane_center_t(road, lp.lane_id, s)?, lane_center_t(road, lane, s)?);
+        let offset_in_target = cur_c + lp.offset - tgt_c;
+        let internal = crate::roads::LanePos { lane_id: lane, offset: offset_in_target, ..lp };
+        let lane_sign = sign(f64::from(lane));
+        let mut t = Transition::new(DynamicsShape::Sinusoidal, DynamicsDimension::Time, time);
+        t.set_start(lane_sign * offset_in_target);
+        t.set_target(0.0);
+        Some(LaneChangeRt { transition: t, internal })
+    }
+
+    /// esmini's `CanChangeLane`: not while changing lane; the lane must exist here, be wide
+    /// enough, and no other vehicle on this side of the road within `minDistForCollision`
+    /// may be in a lane between (a check that is off when that distance is not positive).
+    fn can_change_lane(&self, net: &RoadNetwork, e: usize, f: &FollowRouteRt, lane: i32) -> bool {
+        if f.changing_lane {
+            return false;
+        }
+        let Some(me) = self.entities.get(e) else { return false };
+        let Some(lp) = me.lane else { return false };
+        let Some(road) = net.roads.get(lp.road) else { return false };
+        let section = road.section_index_at(lp.s);
+        if road.lane_sections.get(section).and_then(|sec| sec.lane(lane)).is_none() {
+            return false;
+        }
+        if f.min_dist_for_collision <= 0.0 {
+            return true;
+        }
+        let width = lane_borders(road, section, lane, lp.s).map_or(0.0, |(a, b)| (b - a).abs());
+        if width < f.min_lane_width {
+            return false;
+        }
+        for (i, other) in self.entities.iter().enumerate() {
+            let Some(op) = other.lane else { continue };
+            let same_road = op.road == lp.road;
+            let same_lane = op.lane_id == lp.lane_id;
+            if i == e || !other.active || (same_road && same_lane) {
+                continue;
+            }
+            let close = (me.x - other.x).hypot(me.y - other.y) < f.min_dist_for_collision;
+            let same_side = op.lane_id.signum() == lp.lane_id.signum();
+            if close && same_side && same_road {
+                // esmini lists the lanes from the next one towards the other vehicle up to its
+                // lane, so any such vehicle blocks.
+                let (lo, hi) = (lp.lane_id.min(op.lane_id), lp.lane_id.max(op.lane_id));
+                if op.lane_id != lp.lane_id && (lo..=hi).contains(&op.lane_id) {
+                    return false;
+                }
+            }
+        }
+        true
+    }
+
+    /// esmini's `CalculateWaypoints`: plan from where the entity is to the next scenario
+    /// waypoint (the one after the entity's road on the route, when that road is on it).
+    fn calculate_waypoints(&mut self, net: &RoadNetwork, e: usize, f: &mut FollowRouteRt) {
+        let Some(lp) = route_lane(self, e, f) else { return };
+        let (start, forward) = spot_of(&lp);
+        let n = f.scenario.len();
+        let mut j = 0;
+        for (i, &road) in f.route_roads.iter().enumerate() {
+            if f.scenario.get(j).is_some_and(|(w, _)| w.road == road) {
+                j += 1;
+            }
+            if road == start.road {
+                // The scenario waypoint on this road (the last detailed one) counts only while
+                // it is still ahead.
+                let last_s = if i + 1 == f.route_roads.len() { f.scenario.last().map(|(w, _)| w.s) } else { None };
+                let ahead = match last_s {
+                    None => true,
+                    Some(ws) => (forward && start.s < ws - SMALL) || (!forward && start.s > ws + SMALL),
+                };
+                if ahead {
+                    f.scenario_index = j.min(n - 1);
+                    break;
+                }
+            }
+        }
+        let Some(&(target, strategy)) = f.scenario.get(f.scenario_index) else { return };
+        let path = calculate_path(net, start, forward, target, strategy);
+        if path.is_empty() {
+            self.deactivate_follow_route(e, f);
+            return;
+        }
+        f.waypoints = path_waypoints(net, &path, start, target);
+        if let (Some(a), Some(b)) = (f.waypoints.first().copied(), f.waypoints.get(1).copied()) {
+            self.narrow_route(net, e, a, b, forward);
+        }
+        f.path_calculated = true;
+    }
+
+    /// esmini's `Route::ReplaceMinimalWaypoints`: the route the default controller follows at
+    /// junctions becomes the way from `a` to `b`.
+    fn narrow_route(&mut self, net: &RoadNetwork, e: usize, a: LaneSpot, b: LaneSpot, forward: bool) {
+        let from = routing::Waypoint { road: a.road, lane: a.lane, s: a.s, along_s: Some(forward) };
+        let to = routing::Waypoint { road: b.road, lane: b.lane, s: b.s, along_s: None };
+        if let Ok(r) = routing::Route::plan(net, &[from, to], &[Strategy::Shortest, Strategy::Shortest], false) {
+            if let Some(en) = self.entities.get_mut(e) {
+                en.route = Some(Arc::new(r));
+            }
+        }
+    }
+
+    /// esmini's `UpdateWaypoints`, with the entity where it was before this step's lane change.
+    fn update_waypoints(&mut self, net: &RoadNetwork, e: usize, f: &mut FollowRouteRt, vehicle: crate::roads::LanePos, next: LaneSpot) {
+        match waypoint_status(net, &vehicle, &next) {
+            WaypointStatus::Passed => {
+                f.current += 1;
+                if f.waypoints.last().is_some_and(|w| w.road == next.road) {
+                    if f.scenario_index + 1 < f.scenario.len() {
+                        f.scenario_index += 1;
+                        f.path_calculated = false;
+                        self.calculate_waypoints(net, e, f);
+                        f.current = 0;
+                    }
+                    return;
+                }
+                let (v, forward) = spot_of(&vehicle);
+                if let Some(w) = f.waypoints.get(f.current).copied() {
+                    self.narrow_route(net, e, v, w, forward);
+                }
+            }
+            WaypointStatus::Missed => {
+                if self.entities[e].route.is_some() {
+                    f.path_calculated = false;
+                    self.calculate_waypoints(net, e, f);
+                    f.current = 0;
+                }
+            }
+            WaypointStatus::NotReached => {}
+        }
+    }
+
+    /// esmini's `ControllerFollowRoute::Deactivate`: drop the route; stop in test mode.
+    fn deactivate_follow_route(&mut self, e: usize, f: &mut FollowRouteRt) {
+        if let Some(en) = self.entities.get_mut(e) {
+            if f.test_mode {
+                en.speed = 0.0;
+            }
+            en.route = None;
+            en.controller_active = false;
+        }
+        f.active = false;
+    }
+}
+
+/// esmini's `GetWaypointStatus`: on the waypoint's road, at or past its s: passed when on its
+/// lane, else missed; on the road after it, passed when the entity's lane leads back to the
+/// waypoint's lane, else missed; otherwise not reached.
+fn waypoint_status(net: &RoadNetwork, vehicle: &crate::roads::LanePos, wp: &LaneSpot) -> WaypointStatus {
+    let forward = vehicle.dir > 0.0;
+    let same_lane = wp.lane == vehicle.lane_id;
+    if wp.road == vehicle.road {
+        let past = (forward && vehicle.s > wp.s - SMALL) || (!forward && vehicle.s < wp.s + SMALL);
+        return match (past, same_lane) {
+            (true, true) => WaypointStatus::Passed,
+            (true, false) => WaypointStatus::Missed,
+            (false, _) => WaypointStatus::NotReached,
+        };
+    }
+    // The link behind the entity: where it came from.
+    let behind = if forward { ContactPoint::Start } else { ContactPoint::End };
+    let Some(rl) = net.roads.get(vehicle.road).and_then(|r| r.link_at(behind)) else { return WaypointStatus::NotReached };
+    let before: Vec<usize> = match rl.element_type {
+        ElementType::Road | ElementType::Junction => next_roads(net, (vehicle.road, behind)),
+    };
+    if !before.contains(&wp.road) {
+        return WaypointStatus::NotReached;
+    }
+    let previous_lane = connecting_lane_id(net, (vehicle.road, behind), vehicle.lane_id, wp.road);
+    if previous_lane == wp.lane {
+        WaypointStatus::Passed
+    } else {
+        WaypointStatus::Missed
+    }
+}
