@@ -1,40 +1,44 @@
 //! SpeedAction: the speed follows a transition shape from the current speed to an absolute or
-//! relative target, over time, distance (converted to time from the mean speed) or at a rate;
-//! the peak rate is limited by the vehicle's maximum acceleration / deceleration. A continuous
-//! relative target keeps tracking the reference entity and never ends.
+//! relative target, over time, distance (converted to time from the mean speed) or at a rate.
+//! The shape is stretched once at the start so its peak rate stays within the vehicle's maximum
+//! acceleration / deceleration, and every step is limited to them again. A relative target reads
+//! the reference entity's speed every step (continuous or not); a continuous one never ends.
+//! All of it follows esmini's LongSpeedAction::Start / Step.
 
 use super::ActionRt;
-use crate::dynamics::{sign, Transition, SMALL};
+use crate::dynamics::{sign, Transition};
 use crate::entities::Entity;
 use crate::sim::Sim;
-use openscenario::{DynamicsDimension, SpeedTarget, SpeedTargetValueType, TransitionDynamics};
+use openscenario::{DynamicsDimension, DynamicsShape, SpeedTarget, SpeedTargetValueType, TransitionDynamics};
+
+/// esmini's SMALL_NUMBER (CommonMini.hpp), the tolerance of LongSpeedAction's tests.
+const SMALL_NUMBER: f64 = 1e-6;
 
 #[derive(Debug, Clone)]
 pub enum Target {
     Absolute(f64),
-    Relative { entity: usize, value: f64, factor: bool, continuous: bool, sampled: Option<f64> },
+    Relative { entity: usize, value: f64, factor: bool, continuous: bool },
 }
 
 impl Target {
-    fn value(&mut self, entities: &[Entity]) -> f64 {
-        match self {
-            Target::Absolute(v) => *v,
-            Target::Relative { entity, value, factor, continuous, sampled } => {
-                let ref_speed = match (*continuous, *sampled) {
-                    (false, Some(s)) => s,
-                    _ => {
-                        let s = entities.get(*entity).map_or(0.0, |e| e.speed);
-                        *sampled = Some(s);
-                        s
-                    }
-                };
-                if *factor {
-                    ref_speed * *value
+    /// The target now: a relative target follows the reference entity's current speed, also
+    /// when it is not continuous (esmini's LongSpeedAction::TargetRelative::GetValue).
+    fn value(&self, entities: &[Entity]) -> f64 {
+        match *self {
+            Target::Absolute(v) => v,
+            Target::Relative { entity, value, factor, .. } => {
+                let ref_speed = entities.get(entity).map_or(0.0, |e| e.speed);
+                if factor {
+                    ref_speed * value
                 } else {
-                    ref_speed + *value
+                    ref_speed + value
                 }
             }
         }
+    }
+
+    fn is_relative(&self) -> bool {
+        matches!(self, Target::Relative { .. })
     }
 
     fn continuous(&self) -> bool {
@@ -49,6 +53,7 @@ pub struct SpeedRt {
     pub reached: bool,
 }
 
+/// esmini's ABS_LIMIT: limit the magnitude, keep the sign.
 fn abs_limit(v: f64, limit: f64) -> f64 {
     if v.abs() > limit.abs() {
         sign(v) * limit.abs()
@@ -57,9 +62,30 @@ fn abs_limit(v: f64, limit: f64) -> f64 {
     }
 }
 
+/// The shape's value; an empty span (time or distance under SMALL_NUMBER) is a step
+/// (esmini's TransitionDynamics::Evaluate).
+fn evaluate(t: &Transition) -> f64 {
+    if t.shape == DynamicsShape::Step || (t.dimension != DynamicsDimension::Rate && t.param_target < SMALL_NUMBER) {
+        t.target
+    } else {
+        t.value()
+    }
+}
+
+/// Advance the parameter, kept within [0, span] (esmini's TransitionDynamics::Step).
+fn step_clamped(t: &mut Transition, d: f64) {
+    t.step(d);
+    if t.param > t.param_target {
+        t.param = t.param_target;
+    } else if t.param < 0.0 {
+        t.param = 0.0;
+    }
+}
+
 impl<'a> Sim<'a> {
+    /// esmini's LongSpeedAction::Start.
     pub(super) fn start_speed(&mut self, slot: usize, e: usize, dyn_: &TransitionDynamics, target: &SpeedTarget) -> ActionRt {
-        let mut target = match target {
+        let target = match target {
             SpeedTarget::Absolute { value } => Target::Absolute(*value),
             SpeedTarget::Relative { entity, value, value_type, continuous } => match self.entity_index(entity) {
                 Some(i) => Target::Relative {
@@ -67,7 +93,6 @@ impl<'a> Sim<'a> {
                     value: *value,
                     factor: *value_type == SpeedTargetValueType::Factor,
                     continuous: *continuous,
-                    sampled: None,
                 },
                 None => {
                     self.warn_action(slot, format!("SpeedAction: unknown reference entity `{entity}`"));
@@ -75,16 +100,23 @@ impl<'a> Sim<'a> {
                 }
             },
         };
-        let Some(speed) = self.entities.get(e).map(|x| x.speed) else { return ActionRt::Done };
+        let Some((speed, max_speed, max_acc, max_dec)) = self.entities.get(e).map(|x| (x.speed, x.max_speed, x.max_acc, x.max_dec)) else {
+            return ActionRt::Done;
+        };
         let mut t = Transition::new(dyn_.shape, dyn_.dimension, dyn_.value);
+        if dyn_.dimension != DynamicsDimension::Rate {
+            // esmini keeps the span as given: zero means "at once" (see `evaluate`).
+            t.param_target = dyn_.value;
+        }
         t.set_start(speed);
         let v1 = target.value(&self.entities);
         if dyn_.dimension == DynamicsDimension::Distance {
-            // The shape is applied over time: the time that covers the distance.
-            let (v0, dist) = (speed, t.param_target);
-            let span = if (v1 - v0).abs() < SMALL {
+            // The shape runs over time: the time that covers the distance.
+            let (v0, dist) = (speed, dyn_.value);
+            let span = if (v1 - v0).abs() < SMALL_NUMBER {
                 0.0
-            } else if v0.abs() > SMALL && v1.abs() > SMALL && sign(v0) != sign(v1) {
+            } else if v0.abs() > SMALL_NUMBER && v1.abs() > SMALL_NUMBER && sign(v0) != sign(v1) {
+                // The speed changes sign: two parts, split where it passes zero.
                 let f = (v0 * v0 / (v0 * v0 + v1 * v1)).abs();
                 let d0 = f * dist;
                 2.0 * d0 / v0.abs() + 2.0 * (dist - d0) / v1.abs()
@@ -92,41 +124,52 @@ impl<'a> Sim<'a> {
                 2.0 * dist / (v0 + v1).abs()
             };
             t.dimension = DynamicsDimension::Time;
-            t.set_param_target(span);
+            t.param_target = span;
         }
-        t.set_target(v1);
+        t.set_target(abs_limit(v1, max_speed));
+        // The peak rate is checked once, against the limit of the direction of change.
+        t.set_max_rate(if t.target > t.start { max_acc } else { max_dec });
         if let Some(en) = self.entities.get_mut(e) {
-            en.speed = t.value();
+            en.speed = evaluate(&t);
         }
         ActionRt::Speed(SpeedRt { transition: t, target, reached: false })
     }
 
-    /// One step; true when the action is done.
+    /// One step (esmini's LongSpeedAction::Step); true when the action is done.
     pub(super) fn step_speed(&mut self, e: usize, s: &mut SpeedRt) -> bool {
         let Some(en) = self.entities.get(e) else { return true };
         let (max_speed, max_acc, max_dec, cur) = (en.max_speed, en.max_acc, en.max_dec, en.speed);
+        let dt = self.dt;
         let tv = s.target.value(&self.entities);
-        s.transition.set_target(abs_limit(tv, max_speed));
-        let new_speed = if s.reached {
-            tv
+        let t = &mut s.transition;
+        if s.target.is_relative() {
+            t.set_target(abs_limit(tv, max_speed));
+        }
+        let mut new_speed = if t.param_target > 0.0 && t.param > t.param_target - SMALL_NUMBER {
+            // After the shape: approach the target within the acceleration limits.
+            let acc = if dt > SMALL_NUMBER { (tv - cur) / dt } else { 0.0 };
+            abs_limit(cur + acc.clamp(-max_dec, max_acc) * dt, max_speed)
         } else {
-            let t = &mut s.transition;
-            if t.target > t.start {
-                t.set_max_rate(max_acc);
-            } else {
-                t.set_max_rate(max_dec);
-            }
-            t.step(self.dt);
-            let v = t.value();
-            if t.param > t.param_target - SMALL || (v - t.target).abs() < SMALL || sign(tv - t.start) != sign(tv - cur) {
-                s.reached = true;
-                tv
+            step_clamped(t, dt);
+            let v = evaluate(t);
+            let acc_required = if dt > SMALL_NUMBER { (v - cur) / dt } else { 0.0 };
+            if acc_required > max_acc + SMALL_NUMBER || acc_required < -(max_dec + SMALL_NUMBER) {
+                // Too big a step: take what the limits allow and move the shape back by the
+                // part of the step not taken.
+                let limited = abs_limit(cur + acc_required.clamp(-max_dec, max_acc) * dt, max_speed);
+                let step_approx = (limited - cur) / acc_required;
+                step_clamped(t, -(dt - step_approx));
+                limited
             } else {
                 v
             }
         };
+        if t.param > t.param_target - SMALL_NUMBER && (new_speed - t.target).abs() < SMALL_NUMBER {
+            s.reached = true;
+            new_speed = abs_limit(tv, max_speed);
+        }
         if let Some(en) = self.entities.get_mut(e) {
-            en.speed = abs_limit(new_speed, max_speed);
+            en.speed = new_speed;
         }
         s.reached && !s.target.continuous()
     }

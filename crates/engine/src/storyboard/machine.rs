@@ -142,11 +142,16 @@ impl<'a> Sim<'a> {
         }
     }
 
+    /// Children back to init with fresh triggers, so a condition delay counts again from the
+    /// next execution (esmini's StoryBoardElement::Reset resets each child's triggers).
     fn reset_children(&mut self, id: usize) {
         let children = self.nodes[id].children.clone();
         for c in children {
             self.reset_children(c);
             self.nodes[c].state = State::Init;
+            for t in [self.nodes[c].start_trigger, self.nodes[c].stop_trigger].into_iter().flatten() {
+                self.triggers[t].reset();
+            }
             if let Some(slot) = self.nodes[c].action {
                 self.actions[slot].running = false;
             }
