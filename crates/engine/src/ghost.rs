@@ -9,8 +9,10 @@
 //! each event that now moves the ghost, SimulationTime conditions fire `headstart` seconds
 //! earlier and the entity's collision / reach-position / traveled-distance / speed /
 //! acceleration / end-of-road / off-road / stand-still conditions watch the ghost instead.
-//! (esmini also plans a teleport of the ghost back to the entity for events whose trigger
-//! depends on anything else; its 3.6 traces show no such jump, so none is made here.)
+//! esmini also gives an event whose trigger depends on anything else a teleport of the ghost
+//! back to the entity; when it fires after time 0 esmini restarts the ghost (rewinds time by
+//! the head start, freezes the entity, logs the rewound steps again). That restart is not
+//! modelled: such a trigger is a warning (`warn_ghost_restarts`).
 //!
 //! The run then starts at −headstart: until time 0 only the ghost moves (the default
 //! controller leaves every other entity alone, no controller steps), so at 0 the ghost leads
@@ -124,6 +126,7 @@ impl<'a> Sim<'a> {
                 }
             }
         }
+        self.warn_ghost_restarts(owner, &events);
         let acts = (0..self.nodes.len()).filter(|&n| self.nodes[n].kind == Kind::Act);
         let triggers: Vec<usize> = acts.chain(events).filter_map(|n| self.nodes[n].start_trigger).collect();
         for t in triggers {
@@ -190,6 +193,30 @@ impl<'a> Sim<'a> {
         g.clock += dt;
         if let Some(en) = self.entities.get(g.entity).filter(|en| en.active) {
             g.trail.sample(g.clock, en.x, en.y, en.speed);
+        }
+    }
+
+    /// esmini's `ReplaceObjectInTrigger` gives each ghost event whose start trigger has a
+    /// condition other than a SimulationTime one or a ghost-watched condition on the entity
+    /// itself an `AddedGhostTeleport`, which restarts the ghost when the event starts; osc2cr
+    /// lets the ghost go on instead, and says so at the first such condition of each event.
+    fn warn_ghost_restarts(&mut self, owner: usize, events: &[usize]) {
+        for &ev in events {
+            let Some(t) = self.nodes[ev].start_trigger else { continue };
+            let Some(trig) = self.triggers.get(t) else { continue };
+            let restarts = |c: &&crate::conditions::ConditionRt| match &c.model.kind {
+                ConditionKind::ByValue(ValueCondition::SimulationTime { .. }) => false,
+                ConditionKind::ByValue(_) => true,
+                ConditionKind::ByEntity { condition, .. } if watches_ghost(condition) => c.triggering.iter().any(|&e| e != owner),
+                ConditionKind::ByEntity { .. } => true,
+                ConditionKind::Unsupported { .. } => false,
+            };
+            let Some(c) = trig.groups.iter().flatten().find(restarts) else { continue };
+            let msg = format!(
+                "condition `{}`: when event `{}` starts, esmini restarts the ghost from its entity (time rewinds by the head start and the rewound steps are logged again); osc2cr does not restart it, the ghost goes on from where it is",
+                c.model.name, self.nodes[ev].name
+            );
+            self.warnings.push(crate::Warning::at(&c.model.origin, msg));
         }
     }
 }
