@@ -37,6 +37,9 @@ pub struct Ghost {
     pub trail: Trail,
     /// esmini's simulation time, accumulated step by step.
     clock: f64,
+    /// Events esmini would restart the ghost for: (event node, its executions seen so far,
+    /// the warning to give when it starts after time 0).
+    restart_events: Vec<(usize, u32, crate::Warning)>,
 }
 
 /// Actions esmini hands over to the ghost.
@@ -126,13 +129,13 @@ impl<'a> Sim<'a> {
                 }
             }
         }
-        self.warn_ghost_restarts(owner, &events);
+        let restart_events = self.ghost_restart_events(owner, &events);
         let acts = (0..self.nodes.len()).filter(|&n| self.nodes[n].kind == Kind::Act);
         let triggers: Vec<usize> = acts.chain(events).filter_map(|n| self.nodes[n].start_trigger).collect();
         for t in triggers {
             self.hand_trigger_to_ghost(t, owner, ghost, headstart);
         }
-        self.ghost = Some(Ghost { entity: ghost, owner, headstart, trail: Trail::default(), clock: 0.0 - headstart });
+        self.ghost = Some(Ghost { entity: ghost, owner, headstart, trail: Trail::default(), clock: 0.0 - headstart, restart_events });
     }
 
     /// esmini gives only the first such entity a ghost; the others' controllers do nothing.
@@ -189,6 +192,7 @@ impl<'a> Sim<'a> {
 
     /// Sample the ghost's trail after a step of `dt` (0 for the first frame).
     pub fn record_ghost_trail(&mut self, dt: f64) {
+        self.warn_ghost_restarts();
         let Some(g) = self.ghost.as_mut() else { return };
         g.clock += dt;
         if let Some(en) = self.entities.get(g.entity).filter(|en| en.active) {
@@ -198,9 +202,11 @@ impl<'a> Sim<'a> {
 
     /// esmini's `ReplaceObjectInTrigger` gives each ghost event whose start trigger has a
     /// condition other than a SimulationTime one or a ghost-watched condition on the entity
-    /// itself an `AddedGhostTeleport`, which restarts the ghost when the event starts; osc2cr
-    /// lets the ghost go on instead, and says so at the first such condition of each event.
-    fn warn_ghost_restarts(&mut self, owner: usize, events: &[usize]) {
+    /// itself an `AddedGhostTeleport`; its `TeleportAction::Start` restarts the ghost when the
+    /// event starts after time 0. osc2cr lets the ghost go on instead: these events, each with
+    /// the warning (at its first such condition) given if that happens.
+    fn ghost_restart_events(&self, owner: usize, events: &[usize]) -> Vec<(usize, u32, crate::Warning)> {
+        let mut out = Vec::new();
         for &ev in events {
             let Some(t) = self.nodes[ev].start_trigger else { continue };
             let Some(trig) = self.triggers.get(t) else { continue };
@@ -213,10 +219,30 @@ impl<'a> Sim<'a> {
             };
             let Some(c) = trig.groups.iter().flatten().find(restarts) else { continue };
             let msg = format!(
-                "condition `{}`: when event `{}` starts, esmini restarts the ghost from its entity (time rewinds by the head start and the rewound steps are logged again); osc2cr does not restart it, the ghost goes on from where it is",
+                "condition `{}`: event `{}` started after time 0, where esmini restarts the ghost from its entity (time rewinds by the head start and the rewound steps are logged again); osc2cr does not restart it, the ghost goes on from where it is",
                 c.model.name, self.nodes[ev].name
             );
-            self.warnings.push(crate::Warning::at(&c.model.origin, msg));
+            out.push((ev, self.nodes[ev].executions, crate::Warning::at(&c.model.origin, msg)));
+        }
+        out
+    }
+
+    /// Give the warning of a restart event that started after time 0 (once per event); before
+    /// that, starts are only counted.
+    fn warn_ghost_restarts(&mut self) {
+        let after_zero = self.time > SMALL;
+        let Some(g) = self.ghost.as_mut() else { return };
+        let mut k = 0;
+        while k < g.restart_events.len() {
+            let (ev, seen, _) = &mut g.restart_events[k];
+            let now = self.nodes.get(*ev).map_or(0, |n| n.executions);
+            if now > *seen && after_zero {
+                let (_, _, w) = g.restart_events.remove(k);
+                self.warnings.push(w);
+                continue;
+            }
+            *seen = now;
+            k += 1;
         }
     }
 }

@@ -22,18 +22,34 @@ fn ghost_scenario(trigger_condition: &str) -> String {
 }
 
 fn restart_warnings(run: &engine::Run) -> Vec<String> {
-    run.warnings.iter().map(|w| w.to_string()).filter(|w| w.contains("restarts the ghost")).collect()
+    run.warnings.iter().map(|w| w.to_string()).filter(|w| w.contains("started after time 0, where esmini restarts the ghost")).collect()
 }
 
 #[test]
 fn a_distance_trigger_on_a_ghost_event_is_a_positioned_warning() {
-    let cond = r#"<Condition name="near" delay="0" conditionEdge="none"><ByEntityCondition><TriggeringEntities triggeringEntitiesRule="any"><EntityRef entityRef="Ego"/></TriggeringEntities><EntityCondition><DistanceCondition value="100" freespace="false" rule="lessThan" relativeDistanceType="longitudinal" coordinateSystem="road"><Position><LanePosition roadId="1" laneId="-1" s="300" offset="0"/></Position></DistanceCondition></EntityCondition></ByEntityCondition></Condition>"#;
-    let run = run(&ghost_scenario(cond));
+    // Ego (s = 50, 10 m/s, standing still during the 2 s head start) comes within 240 m of
+    // s = 300 at 1 s: after time 0, where esmini restarts the ghost.
+    let run = run(&ghost_scenario(&near(240.0)));
     let w = restart_warnings(&run);
     assert_eq!(w.len(), 1, "{:?}", run.warnings);
     assert!(w[0].contains("condition `near`") && w[0].contains("event `Drift`"), "{}", w[0]);
     // Positioned at the condition in the scenario text (line:col after the file name).
     assert!(w[0].contains("test.xosc:"), "{}", w[0]);
+}
+
+fn near(metres: f64) -> String {
+    format!(
+        r#"<Condition name="near" delay="0" conditionEdge="none"><ByEntityCondition><TriggeringEntities triggeringEntitiesRule="any"><EntityRef entityRef="Ego"/></TriggeringEntities><EntityCondition><DistanceCondition value="{metres}" freespace="false" rule="lessThan" relativeDistanceType="longitudinal" coordinateSystem="road"><Position><LanePosition roadId="1" laneId="-1" s="300" offset="0"/></Position></DistanceCondition></EntityCondition></ByEntityCondition></Condition>"#
+    )
+}
+
+#[test]
+fn an_event_that_starts_during_the_head_start_restarts_nothing() {
+    // Within 1000 m from the first step (t = −2 s): esmini's teleport does not restart the
+    // ghost before time 0.
+    let run = run(&ghost_scenario(&near(1000.0)));
+    assert!(event_time(&run, "DriftAction", "start").is_some_and(|t| t < 0.0));
+    assert!(restart_warnings(&run).is_empty(), "{:?}", run.warnings);
 }
 
 #[test]
