@@ -9,8 +9,10 @@
 //! each event that now moves the ghost, SimulationTime conditions fire `headstart` seconds
 //! earlier and the entity's collision / reach-position / traveled-distance / speed /
 //! acceleration / end-of-road / off-road / stand-still conditions watch the ghost instead.
-//! (esmini also plans a teleport of the ghost back to the entity for events whose trigger
-//! depends on anything else; its 3.6 traces show no such jump, so none is made here.)
+//! esmini also gives an event whose trigger depends on anything else a teleport of the ghost
+//! back to the entity; when it fires after time 0 esmini restarts the ghost (rewinds time by
+//! the head start, freezes the entity, logs the rewound steps again). That restart is not
+//! modelled: such a trigger is a warning (`warn_ghost_restarts`).
 //!
 //! The run then starts at −headstart: until time 0 only the ghost moves (the default
 //! controller leaves every other entity alone, no controller steps), so at 0 the ghost leads
@@ -35,6 +37,9 @@ pub struct Ghost {
     pub trail: Trail,
     /// esmini's simulation time, accumulated step by step.
     clock: f64,
+    /// Events esmini would restart the ghost for: (event node, its executions seen so far,
+    /// the warning to give when it starts after time 0).
+    restart_events: Vec<(usize, u32, crate::Warning)>,
 }
 
 /// Actions esmini hands over to the ghost.
@@ -124,12 +129,13 @@ impl<'a> Sim<'a> {
                 }
             }
         }
+        let restart_events = self.ghost_restart_events(owner, &events);
         let acts = (0..self.nodes.len()).filter(|&n| self.nodes[n].kind == Kind::Act);
         let triggers: Vec<usize> = acts.chain(events).filter_map(|n| self.nodes[n].start_trigger).collect();
         for t in triggers {
             self.hand_trigger_to_ghost(t, owner, ghost, headstart);
         }
-        self.ghost = Some(Ghost { entity: ghost, owner, headstart, trail: Trail::default(), clock: 0.0 - headstart });
+        self.ghost = Some(Ghost { entity: ghost, owner, headstart, trail: Trail::default(), clock: 0.0 - headstart, restart_events });
     }
 
     /// esmini gives only the first such entity a ghost; the others' controllers do nothing.
@@ -186,10 +192,57 @@ impl<'a> Sim<'a> {
 
     /// Sample the ghost's trail after a step of `dt` (0 for the first frame).
     pub fn record_ghost_trail(&mut self, dt: f64) {
+        self.warn_ghost_restarts();
         let Some(g) = self.ghost.as_mut() else { return };
         g.clock += dt;
         if let Some(en) = self.entities.get(g.entity).filter(|en| en.active) {
             g.trail.sample(g.clock, en.x, en.y, en.speed);
+        }
+    }
+
+    /// esmini's `ReplaceObjectInTrigger` gives each ghost event whose start trigger has a
+    /// condition other than a SimulationTime one or a ghost-watched condition on the entity
+    /// itself an `AddedGhostTeleport`; its `TeleportAction::Start` restarts the ghost when the
+    /// event starts after time 0. osc2cr lets the ghost go on instead: these events, each with
+    /// the warning (at its first such condition) given if that happens.
+    fn ghost_restart_events(&self, owner: usize, events: &[usize]) -> Vec<(usize, u32, crate::Warning)> {
+        let mut out = Vec::new();
+        for &ev in events {
+            let Some(t) = self.nodes[ev].start_trigger else { continue };
+            let Some(trig) = self.triggers.get(t) else { continue };
+            let restarts = |c: &&crate::conditions::ConditionRt| match &c.model.kind {
+                ConditionKind::ByValue(ValueCondition::SimulationTime { .. }) => false,
+                ConditionKind::ByValue(_) => true,
+                ConditionKind::ByEntity { condition, .. } if watches_ghost(condition) => c.triggering.iter().any(|&e| e != owner),
+                ConditionKind::ByEntity { .. } => true,
+                ConditionKind::Unsupported { .. } => false,
+            };
+            let Some(c) = trig.groups.iter().flatten().find(restarts) else { continue };
+            let msg = format!(
+                "condition `{}`: event `{}` started after time 0, where esmini restarts the ghost from its entity (time rewinds by the head start and the rewound steps are logged again); osc2cr does not restart it, the ghost goes on from where it is",
+                c.model.name, self.nodes[ev].name
+            );
+            out.push((ev, self.nodes[ev].executions, crate::Warning::at(&c.model.origin, msg)));
+        }
+        out
+    }
+
+    /// Give the warning of a restart event that started after time 0 (once per event); before
+    /// that, starts are only counted.
+    fn warn_ghost_restarts(&mut self) {
+        let after_zero = self.time > SMALL;
+        let Some(g) = self.ghost.as_mut() else { return };
+        let mut k = 0;
+        while k < g.restart_events.len() {
+            let (ev, seen, _) = &mut g.restart_events[k];
+            let now = self.nodes.get(*ev).map_or(0, |n| n.executions);
+            if now > *seen && after_zero {
+                let (_, _, w) = g.restart_events.remove(k);
+                self.warnings.push(w);
+                continue;
+            }
+            *seen = now;
+            k += 1;
         }
     }
 }

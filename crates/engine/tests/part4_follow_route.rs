@@ -77,3 +77,16 @@ fn at_a_junction_the_default_controller_takes_the_connecting_road_of_the_planned
     let e = at(&run, "Ego", 17.43);
     assert!(close(e.speed, 0.0, 1e-12) && close(e.x, 121.75, 1e-9) && close(e.y, 70.140395, 1e-5), "{e:?}");
 }
+
+#[test]
+fn an_acquire_position_route_is_followed_like_an_assigned_one() {
+    // The same drive with AcquirePositionAction (road 2, lane −2, s = 50) instead of the
+    // route: esmini makes a route (Ego's position, the target) and gives the same trace as
+    // follow_route_lane_change: y −3.463351 at 1.5 s, stopped at x 150.273861 from 7.02 s.
+    let run = run_fixture("follow_route_acquire.xosc");
+    assert!(run.warnings.is_empty(), "{:?}", run.warnings);
+    let e = at(&run, "Ego", 1.5);
+    assert!(close(e.x, 39.939033, 1e-5) && close(e.y, -3.463351, 1e-5), "{e:?}");
+    let e = at(&run, "Ego", 7.02);
+    assert!(close(e.speed, 0.0, 1e-12) && close(e.x, 150.273861, 1e-5) && close(e.y, -5.25, 1e-9), "{e:?}");
+}

@@ -33,8 +33,10 @@ impl<'a> Sim<'a> {
                 let Some(road) = net.roads.get(r.road) else { return ActionRt::Done };
                 let rt = lane_center_t(road, r.lane_id, r.s).unwrap_or(0.0) + r.offset + value * r.dir;
                 let own_c = net.roads.get(lp.road).and_then(|rd| lane_center_t(rd, lp.lane_id, lp.s)).unwrap_or(0.0);
-                // The value is measured like the lane offset of the actor's lane (towards its outside).
-                lane_sign * (rt - own_c)
+                // esmini's LatLaneOffsetAction::Start: the target is the reference's t moved by
+                // the value (leftwards when the reference faces along s), taken as a lane offset
+                // (t from the actor's lane centre), like an absolute value.
+                rt - own_c
             }
         };
         let mut t = Transition::new(shape, DynamicsDimension::Time, 1.0);

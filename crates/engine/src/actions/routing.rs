@@ -45,6 +45,7 @@ impl<'a> Sim<'a> {
         };
         match routing::Route::plan(net, &[from, to], &[routing::Strategy::Shortest, routing::Strategy::Shortest], false) {
             Ok(r) => {
+                self.tell_route_follower_waypoints(e, &[from, to], &r);
                 if let Some(en) = self.entities.get_mut(e) {
                     en.route = Some(Arc::new(r));
                 }

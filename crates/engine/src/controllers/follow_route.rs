@@ -184,6 +184,17 @@ impl<'a> Sim<'a> {
             };
             scenario.push((LaneSpot { road: lp.road, lane: lp.lane_id, s: lp.s }, strategy));
         }
+        self.give_route_follower(e, scenario, planned);
+    }
+
+    /// esmini's AcquirePositionAction makes a route of (where the entity is, the target): a
+    /// FollowRoute controller follows it like an assigned one.
+    pub(crate) fn tell_route_follower_waypoints(&mut self, e: usize, waypoints: &[routing::Waypoint], planned: &routing::Route) {
+        let scenario = waypoints.iter().map(|w| (LaneSpot { road: w.road, lane: w.lane, s: w.s }, Strategy::Shortest)).collect();
+        self.give_route_follower(e, scenario, planned);
+    }
+
+    fn give_route_follower(&mut self, e: usize, scenario: Vec<(LaneSpot, Strategy)>, planned: &routing::Route) {
         let roads = route_roads(planned, &scenario);
         if let Some(Some(super::ControllerRt::FollowRoute(f))) = self.controllers.get_mut(e) {
             f.set_route(scenario, roads);
