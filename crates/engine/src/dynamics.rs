@@ -8,6 +8,9 @@ use std::f64::consts::PI;
 
 pub const SMALL: f64 = 1e-10;
 
+/// esmini's SMALL_NUMBER (CommonMini.hpp): the tolerance of its actions' end tests.
+pub const ESMINI_SMALL_NUMBER: f64 = 1e-6;
+
 pub fn sign(x: f64) -> f64 {
     if x < 0.0 {
         -1.0
@@ -115,8 +118,15 @@ impl Transition {
         self.scale = if peak > max_rate.abs() { peak / avoid_zero(max_rate.abs()) } else { 1.0 };
     }
 
+    /// Advance the parameter, kept within [0, span] so the last step lands on the target
+    /// (esmini's TransitionDynamics::Step).
     pub fn step(&mut self, d: f64) {
         self.param += d / self.scale;
+        if self.param > self.param_target {
+            self.param = self.param_target;
+        } else if self.param < 0.0 {
+            self.param = 0.0;
+        }
     }
 
     pub fn value(&self) -> f64 {
@@ -149,10 +159,11 @@ impl Transition {
         self.derivative() / avoid_zero(self.scale)
     }
 
-    /// Whether the target is reached at `value` (end of span, close enough, or passed).
+    /// Whether the target is reached at `value` (end of span, close enough, or passed), with
+    /// the tolerance of esmini's lane change / lane offset end test (SMALL_NUMBER).
     pub fn done(&self, value: f64) -> bool {
-        self.param > self.param_target - SMALL
-            || (value - self.target).abs() < SMALL
+        self.param > self.param_target - ESMINI_SMALL_NUMBER
+            || (value - self.target).abs() < ESMINI_SMALL_NUMBER
             || (self.param > 0.0 && sign(value - self.target) != sign(self.start - self.target))
     }
 }

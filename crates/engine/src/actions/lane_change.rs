@@ -11,7 +11,7 @@ use crate::roads::lane_geometry::{lane_borders, lane_center_t};
 use crate::roads::{move_along_s, LanePos, MoveStatus};
 use crate::sim::Sim;
 use opendrive::RoadNetwork;
-use openscenario::{DynamicsDimension, LaneChangeTarget, TransitionDynamics};
+use openscenario::{DynamicsDimension, DynamicsShape, LaneChangeTarget, TransitionDynamics};
 
 #[derive(Debug, Clone)]
 pub struct LaneChangeRt {
@@ -72,10 +72,17 @@ impl<'a> Sim<'a> {
         let lane_sign = sign(f64::from(target_lane));
         let mut t = Transition::new(d.shape, d.dimension, d.value);
         if d.dimension == DynamicsDimension::Rate {
-            // A rate is a lateral speed: the span follows from the distance to cover.
+            // A rate is the peak lateral speed: the span is the time in which the shape covers
+            // the distance with that peak (esmini's TransitionDynamics::UpdateRate via
+            // GetTargetParamValByPrimPeak: π·d/2r sinusoidal, 1.5·d/r cubic, d/r linear).
             t.dimension = DynamicsDimension::Time;
             let dist = (target_offset - offset_in_target).abs();
-            t.set_param_target(if d.value.abs() > SMALL { dist / d.value.abs() } else { 0.0 });
+            let span = match d.shape {
+                DynamicsShape::Sinusoidal => std::f64::consts::FRAC_PI_2 * dist,
+                DynamicsShape::Cubic => 1.5 * dist,
+                _ => dist,
+            };
+            t.set_param_target(if d.value.abs() > SMALL { span / d.value.abs() } else { 0.0 });
         }
         t.set_start(lane_sign * offset_in_target);
         t.set_target(lane_sign * target_offset);
@@ -104,8 +111,8 @@ impl<'a> Sim<'a> {
             && dt * rate_before.abs() < (speed * dt).abs() + SMALL;
         if t.dimension == DynamicsDimension::Distance {
             // esmini counts the distance along the road: the step's length projected by the
-            // yaw the entity had relative to its lane.
-            t.step(dt * speed * en.yaw_offset.cos());
+            // slope at the start of the step (LatLaneChangeAction::Step, DISTANCE branch).
+            t.step(dt * speed.abs() / (1.0 + rate_before * rate_before).sqrt());
         } else {
             t.step(dt);
         }
@@ -125,7 +132,13 @@ impl<'a> Sim<'a> {
         } else {
             d_lat.abs()
         };
-        let d_long = sign(speed) * (dist * dist - d_lat_step * d_lat_step).max(0.0).sqrt();
+        let d_long = if t.dimension == DynamicsDimension::Distance && t.shape != openscenario::DynamicsShape::Step {
+            // Over distance the longitudinal part is the step projected by the slope at its
+            // start, also in the last step, where the clamped parameter moves less sideways.
+            dist / (1.0 + rate_before * rate_before).sqrt()
+        } else {
+            sign(speed) * (dist * dist - d_lat_step * d_lat_step).max(0.0).sqrt()
+        };
         let status = move_along_s(net, &mut l.internal, d_long);
         let done = t.done(agnostic);
         let yaw = if done {
@@ -134,7 +147,7 @@ impl<'a> Sim<'a> {
             let angle = if lagged {
                 (sign(speed) * sign(rate_before) * d_lat_step).atan2(d_long.abs())
             } else if t.dimension == DynamicsDimension::Distance {
-                rate.atan()
+                rate_before.atan()
             } else {
                 (rate / crate::dynamics::avoid_zero(speed)).atan()
             };

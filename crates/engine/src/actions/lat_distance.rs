@@ -33,6 +33,8 @@ enum Phase {
 
 #[derive(Debug, Clone)]
 pub struct LatDistanceRt {
+    /// The action's slot, for its warning.
+    slot: usize,
     target: usize,
     /// Signed wanted t of the actor relative to the reference (+ left).
     wanted: f64,
@@ -78,6 +80,7 @@ impl<'a> Sim<'a> {
         let c = spec.constraints;
         let lim = |v: Option<f64>| v.filter(|x| *x > 0.0).unwrap_or(LARGE);
         ActionRt::LatDistance(Box::new(LatDistanceRt {
+            slot,
             target,
             wanted,
             continuous: spec.continuous,
@@ -113,6 +116,14 @@ impl<'a> Sim<'a> {
         let dt = self.dt;
         let Some(net) = self.net else { return true };
         let Some((ta, tb, vel_lat)) = self.lat_state(e, r) else { return true };
+        if self.entities.get(e).and_then(|a| a.lane).map(|l| l.road) != self.entities.get(r.target).and_then(|b| b.lane).map(|l| l.road) {
+            // esmini measures the distance across roads through its road-path delta (lane
+            // mapping and facing of the found path), which is not reproduced.
+            self.warn_action(
+                r.slot,
+                "LateralDistanceAction: the actor and the reference are on different roads; the lateral distance across the link is approximated (t compared when the roads run the same way)".into(),
+            );
+        }
         let Some(en) = self.entities.get_mut(e) else { return true };
         let Some(mut lp) = en.lane else { return true };
         let error = tb + r.wanted - ta;

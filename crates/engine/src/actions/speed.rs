@@ -11,8 +11,7 @@ use crate::entities::Entity;
 use crate::sim::Sim;
 use openscenario::{DynamicsDimension, DynamicsShape, SpeedTarget, SpeedTargetValueType, TransitionDynamics};
 
-/// esmini's SMALL_NUMBER (CommonMini.hpp), the tolerance of LongSpeedAction's tests.
-const SMALL_NUMBER: f64 = 1e-6;
+use crate::dynamics::ESMINI_SMALL_NUMBER as SMALL_NUMBER;
 
 #[derive(Debug, Clone)]
 pub enum Target {
@@ -69,16 +68,6 @@ fn evaluate(t: &Transition) -> f64 {
         t.target
     } else {
         t.value()
-    }
-}
-
-/// Advance the parameter, kept within [0, span] (esmini's TransitionDynamics::Step).
-fn step_clamped(t: &mut Transition, d: f64) {
-    t.step(d);
-    if t.param > t.param_target {
-        t.param = t.param_target;
-    } else if t.param < 0.0 {
-        t.param = 0.0;
     }
 }
 
@@ -150,7 +139,7 @@ impl<'a> Sim<'a> {
             let acc = if dt > SMALL_NUMBER { (tv - cur) / dt } else { 0.0 };
             abs_limit(cur + acc.clamp(-max_dec, max_acc) * dt, max_speed)
         } else {
-            step_clamped(t, dt);
+            t.step(dt);
             let v = evaluate(t);
             let acc_required = if dt > SMALL_NUMBER { (v - cur) / dt } else { 0.0 };
             if acc_required > max_acc + SMALL_NUMBER || acc_required < -(max_dec + SMALL_NUMBER) {
@@ -158,7 +147,7 @@ impl<'a> Sim<'a> {
                 // part of the step not taken.
                 let limited = abs_limit(cur + acc_required.clamp(-max_dec, max_acc) * dt, max_speed);
                 let step_approx = (limited - cur) / acc_required;
-                step_clamped(t, -(dt - step_approx));
+                t.step(-(dt - step_approx));
                 limited
             } else {
                 v

@@ -101,14 +101,7 @@ impl<'a> Sim<'a> {
             },
             None => 0.0,
         };
-        let c = constraints.copied().unwrap_or_default();
-        let lim = Limits {
-            acc: c.max_acceleration.unwrap_or(if en.max_acc < LARGE { en.max_acc } else { LARGE }),
-            dec: c.max_deceleration.unwrap_or(if en.max_dec < LARGE { en.max_dec } else { LARGE }),
-            acc_rate: c.max_acceleration_rate.unwrap_or(LARGE),
-            dec_rate: c.max_deceleration_rate.unwrap_or(LARGE),
-            speed: c.max_speed.unwrap_or(if en.max_speed < LARGE { en.max_speed } else { LARGE }),
-        };
+        let lim = limits(constraints, en.max_speed, en.max_acc, en.max_dec);
         let segments = plan(self.time, en.speed, en.accel, offset, mode == FollowingMode::Follow, lim, entries);
         ActionRt::SpeedProfile(SpeedProfileRt { segments, current: 0, speed: en.speed, entries: entries.len() })
     }
@@ -136,6 +129,28 @@ impl<'a> Sim<'a> {
     }
 }
 
+/// The planner's limits, as esmini's ScenarioReader::parseDynamicConstraints reads them:
+/// without a DynamicConstraints element every limit is unbounded; a missing attribute is the
+/// vehicle's performance, a value above it is cut to it, a value under SMALL_NUMBER becomes
+/// the smaller of esmini's default and the performance.
+fn limits(constraints: Option<&DynamicConstraints>, max_speed: f64, max_acc: f64, max_dec: f64) -> Limits {
+    let Some(c) = constraints else {
+        return Limits { acc: LARGE, dec: LARGE, acc_rate: LARGE, dec_rate: LARGE, speed: LARGE };
+    };
+    let pick = |value: Option<f64>, default: f64, performance: f64| match value {
+        None => performance,
+        Some(v) if v < EPS => default.min(performance),
+        Some(v) => v.min(performance),
+    };
+    Limits {
+        speed: pick(c.max_speed, 250.0 / 3.6, max_speed.min(LARGE)),
+        acc: pick(c.max_acceleration, 5.0, max_acc.min(LARGE)),
+        acc_rate: pick(c.max_acceleration_rate, LARGE, LARGE),
+        dec: pick(c.max_deceleration, 10.0, max_dec.min(LARGE)),
+        dec_rate: pick(c.max_deceleration_rate, LARGE, LARGE),
+    }
+}
+
 /// The speed plan from `now` for an entity at `speed` with acceleration `acc0`.
 fn plan(now: f64, speed: f64, acc0: f64, offset: f64, follow: bool, lim: Limits, entries: &[SpeedProfileEntry]) -> Vec<Segment> {
     let mut vx: Vec<Vertex> = Vec::with_capacity(entries.len() + 1);
@@ -156,24 +171,37 @@ fn plan(now: f64, speed: f64, acc0: f64, offset: f64, follow: bool, lim: Limits,
         let entry = &entries[index];
         let target = entry.speed + offset;
         let Some(back) = vx.last().copied() else { break };
-        match entry.time {
-            None => {
-                if (target - back.v).abs() < EPS {
-                    index += 1;
-                    continue;
-                }
-                let dv = target - back.v;
-                let acc = if dv < 0.0 { (-lim.dec).min(-EPS) } else { lim.acc.max(EPS) };
-                if let Some(b) = vx.last_mut() {
-                    b.t = time;
-                    b.m = b.v - b.k * b.t;
-                }
-                time += dv / acc;
+        // A missing time reads as −1, as esmini stores it (LongSpeedProfileAction::Start).
+        let dt = entry.time.unwrap_or(-1.0);
+        let mut k = (target - back.v) / dt;
+        if dt < -EPS || k < -lim.dec || k > lim.acc {
+            // No time, or a slope beyond the limits: the change takes the time it needs at
+            // the limit, counted from the previous vertex moved to the current time.
+            let dv = target - back.v;
+            if dv.abs() < EPS {
+                index += 1;
+                continue;
             }
-            Some(t) => time += t,
+            k = if dt < -EPS {
+                if dv < 0.0 {
+                    (-lim.dec).min(-EPS)
+                } else {
+                    lim.acc.max(EPS)
+                }
+            } else if k < 0.0 {
+                k.max(-lim.dec)
+            } else {
+                k.min(lim.acc)
+            };
+            if let Some(b) = vx.last_mut() {
+                b.t = time;
+            }
+            time += dv / k;
+        } else {
+            time += dt;
         }
-        let back_t = vx.last().map_or(time, |b| b.t);
-        let dt = time - back_t;
+        // esmini tests the entry's own time here (also −1 for a missing one): a vertex with
+        // no duration, the last excepted, replaces the previous one.
         if index + 1 < n && dt < EPS {
             if let Some(b) = vx.last_mut() {
                 *b = Vertex::new(time, target, 0.0);
@@ -182,7 +210,6 @@ fn plan(now: f64, speed: f64, acc0: f64, offset: f64, follow: bool, lim: Limits,
             continue;
         }
         if let Some(b) = vx.last_mut() {
-            let k = (target - b.v) / dt;
             b.set_k(k);
         }
         let len = vx.len();

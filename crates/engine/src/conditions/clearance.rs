@@ -78,7 +78,46 @@ fn delta(net: &RoadNetwork, a: &Entity, b: &Entity, max: f64, free_space: bool) 
     if ds.abs() > max + 1e-9 {
         return None;
     }
-    let dlane = lb.lane_id as i64 - la.lane_id as i64;
-    let opposite = (la.lane_id as i64).signum() != (lb.lane_id as i64).signum();
+    // esmini's Position::Delta: `a`'s lane carried along the lane links onto `b`'s road, then
+    // the difference; across the reference line the centre lane is not counted.
+    let la_id = if la.road == lb.road { la.lane_id } else { lane_on_linked_road(net, la, lb).unwrap_or(la.lane_id) };
+    let mut dlane = lb.lane_id as i64 - la_id as i64;
+    let opposite = (la_id as i64).signum() != (lb.lane_id as i64).signum();
+    if opposite {
+        dlane = (dlane.abs() - 1) * dlane.signum();
+    }
     Some((ds, dlane, opposite))
+}
+
+/// Steps a lane-link walk may take from one road to the next through its lane sections.
+const MAX_LINK_STEPS: usize = 64;
+
+/// The lane of `la` continued along the lane links onto the road of `lb` (a road directly
+/// linked to `la`'s), at `lb`'s s; `None` when the roads are not directly linked or a lane
+/// ends on the way.
+fn lane_on_linked_road(net: &RoadNetwork, la: crate::roads::LanePos, lb: crate::roads::LanePos) -> Option<i32> {
+    let ra = net.roads.get(la.road)?;
+    let rb = net.roads.get(lb.road)?;
+    for end in [opendrive::ContactPoint::End, opendrive::ContactPoint::Start] {
+        let Some(entry) = net.roads_at(la.road, end).into_iter().find(|e| e.road == lb.road) else { continue };
+        let mut lane = opendrive::LaneRef { road: la.road, section: ra.section_index_at(la.s), lane: la.lane_id };
+        let mut walk = end;
+        let target_section = rb.section_index_at(lb.s);
+        for _ in 0..MAX_LINK_STEPS {
+            if lane.road == lb.road && lane.section == target_section {
+                return Some(lane.lane);
+            }
+            let next = *net.lanes_across(lane, walk).first()?;
+            if next.road != lane.road {
+                // Entered `b`'s road at its `entry` end: walk on into it from there.
+                walk = match entry.contact {
+                    opendrive::ContactPoint::Start => opendrive::ContactPoint::End,
+                    opendrive::ContactPoint::End => opendrive::ContactPoint::Start,
+                };
+            }
+            lane = next;
+        }
+        return None;
+    }
+    None
 }
