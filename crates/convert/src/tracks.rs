@@ -158,14 +158,22 @@ fn side(v: f64) -> f64 {
 }
 
 /// Scenario entities and inline trailer entities by name.
-fn collect<'a>(e: &'a Entity, map: &mut BTreeMap<&'a str, &'a Entity>, depth: usize) {
-    map.entry(e.name.as_str()).or_insert(e);
+fn collect<'a>(e: &'a Entity, map: &mut BTreeMap<String, &'a Entity>, depth: usize) {
+    collect_as(e.name.clone(), e, map, depth);
+}
+
+/// An inline trailer is the run entity `<tow>+` (the engine names it as esmini does, after its
+/// tow vehicle: `Truck+`, then `Truck++` for the trailer of that trailer), not the name written
+/// inside the vehicle model, which a catalog repeats for every truck that uses it.
+fn collect_as<'a>(key: String, e: &'a Entity, map: &mut BTreeMap<String, &'a Entity>, depth: usize) {
+    let trailer_key = format!("{key}+");
+    map.entry(key).or_insert(e);
     if depth >= MAX_TRAILER_DEPTH {
         return;
     }
     if let EntityObject::Vehicle(v) = &e.object {
         if let Some(Trailer::Entity(t)) = &v.trailer {
-            collect(t, map, depth + 1);
+            collect_as(trailer_key, t, map, depth + 1);
         }
     }
 }
