@@ -108,6 +108,13 @@ pub struct ConvertArgs {
     /// Print every warning on stderr.
     #[arg(short, long)]
     pub verbose: bool,
+    /// Read references to what does not exist (an undeclared entity, storyboard element,
+    /// parameter or variable; a road or lane the map does not have; a parameter override the
+    /// scenario does not declare) and distributions that cannot be sampled (negative variance,
+    /// empty range, …) as warnings and convert anyway, as osc2cr did before 0.2. By default
+    /// each is an error naming file:line:col, and the file is not written.
+    #[arg(long)]
+    pub lenient: bool,
 }
 
 fn parse_param(s: &str) -> Result<(String, String), String> {
@@ -145,6 +152,7 @@ fn options(args: &ConvertArgs) -> ConvertOptions {
         map_tolerance: args.map_tolerance,
         engine_seed: args.engine_seed,
         deadline: None,
+        lenient: args.lenient,
     }
 }
 
@@ -224,9 +232,15 @@ pub fn run(args: &ConvertArgs) -> Result<(), Failure> {
         return Err(Failure::input("no scenario to convert among the inputs"));
     }
     if failed > 0 {
-        // one scenario given, and it is malformed: bad input rather than a partial batch
-        let single = report.scenarios.len() == 1 && args.inputs.len() == 1 && args.inputs[0].is_file();
-        let bad_input = single && report.scenarios[0].failure.as_ref().is_some_and(|f| matches!(f.stage, Stage::Load | Stage::RoadNetwork));
+        // One file given, and it is malformed or refers to what does not exist: bad input (2),
+        // also when that file is a distribution whose variations run as a batch. A folder or
+        // several files of which some failed: a partial batch (1).
+        let single = args.inputs.len() == 1 && args.inputs[0].is_file();
+        let bad_input = single
+            && report
+                .scenarios
+                .iter()
+                .any(|r| r.failure.as_ref().is_some_and(|f| matches!(f.stage, Stage::Load | Stage::RoadNetwork)));
         return Err(Failure {
             message: format!("{failed} of {} scenarios failed", report.scenarios.len()),
             status: if bad_input { 2 } else { 1 },

@@ -32,6 +32,24 @@ pub struct SimulateArgs {
     /// Print the warnings on stderr.
     #[arg(short, long)]
     pub verbose: bool,
+    /// Read references to what does not exist (entities, storyboard elements, parameters,
+    /// variables, roads, lanes) as warnings and run anyway; by default each is an error naming
+    /// file:line:col and no trace is written.
+    #[arg(long)]
+    pub lenient: bool,
+}
+
+/// Problems a strict reading rejects: an error listing them all, or warnings with --lenient.
+fn strict<T: ToString>(problems: Vec<T>, lenient: bool, warnings: &mut Vec<String>) -> Result<(), Failure> {
+    if problems.is_empty() {
+        return Ok(());
+    }
+    let list: Vec<String> = problems.iter().map(ToString::to_string).collect();
+    if lenient {
+        warnings.extend(list);
+        return Ok(());
+    }
+    Err(Failure::input(format!("{} reference(s) to what does not exist (--lenient reads them as warnings):\n{}", list.len(), list.join("\n"))))
 }
 
 fn parse_param(p: &str) -> Result<(String, String), Failure> {
@@ -48,7 +66,13 @@ fn write_file(path: &std::path::Path, text: &str) -> Result<(), Failure> {
 pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
     let parameters = args.params.iter().map(|p| parse_param(p)).collect::<Result<Vec<_>, _>>()?;
     let options = openscenario::LoadOptions { parameters, seed: None };
-    let (scenario, load_warnings) = openscenario::load_scenario(&args.file, &options).map_err(|e| Failure::input(e.to_string()))?;
+    let loaded = openscenario::load(&args.file, &options).map_err(|e| Failure::input(e.to_string()))?;
+    let mut load_warnings: Vec<String> = loaded.warnings.iter().map(ToString::to_string).collect();
+    strict(loaded.problems, args.lenient, &mut load_warnings)?;
+    let scenario = match loaded.content {
+        openscenario::Content::Scenario(s) => *s,
+        _ => return Err(Failure::input(format!("{}: not a scenario (a distribution or catalog file)", args.file.display()))),
+    };
     let (roads, road_warnings) = match &scenario.road_network.logic_file {
         Some(p) => {
             let l = opendrive::load(p).map_err(|e| Failure::input(e.to_string()))?;
@@ -56,6 +80,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
         }
         None => (None, Vec::new()),
     };
+    strict(engine::road_references(&scenario, roads.as_ref()), args.lenient, &mut load_warnings)?;
     let settings = engine::Settings { step: args.step, max_time: args.max_time };
     let control = engine::RunControl { seed: args.engine_seed, deadline: None };
     let run = engine::simulate_with(&scenario, roads.as_ref(), &settings, &control).map_err(|e| Failure::input(e.to_string()))?;

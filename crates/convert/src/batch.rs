@@ -156,9 +156,16 @@ fn plan(
                     parameters: options.parameters.clone(),
                     seed: options.seed,
                 };
-                let dist = match openscenario::load(&f.path, &load) {
+                let (dist, problems) = match openscenario::load(&f.path, &load) {
+                    Ok(l) if !l.problems.is_empty() && !options.lenient => {
+                        let list: Vec<String> = l.problems.iter().map(ToString::to_string).collect();
+                        let message = format!("the distribution cannot be sampled (--lenient samples it anyway):\n{}", list.join("\n"));
+                        early.push((pos, failed_early(f, &message)));
+                        pos += 1;
+                        continue;
+                    }
                     Ok(l) => match l.content {
-                        Content::Distribution(d) => d,
+                        Content::Distribution(d) => (d, l.problems),
                         _ => {
                             early.push((pos, failed_early(f, "expected a ParameterValueDistribution")));
                             pos += 1;
@@ -173,7 +180,8 @@ fn plan(
                 };
                 let total = dist.len();
                 let n = total.min(options.max_variations);
-                let mut notes = Vec::new();
+                let mut notes: Vec<StageWarning> =
+                    problems.iter().map(|p| StageWarning { stage: Stage::Load, message: p.to_string() }).collect();
                 if total > n {
                     notes.push(StageWarning {
                         stage: Stage::Load,

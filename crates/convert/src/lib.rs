@@ -12,6 +12,7 @@
 
 mod angle;
 mod assemble;
+mod audit;
 mod batch;
 mod bbox;
 mod country;
@@ -36,6 +37,7 @@ mod tracks;
 
 pub use angle::{lerp_angle, wrap_angle};
 pub use assemble::{assemble, Assembled};
+pub use audit::audit as audit_trace;
 pub use batch::{run_batch, BatchOptions, Progress, Silent};
 pub use bbox::box_center;
 pub use discover::{classify, discover, FileKind, Found};

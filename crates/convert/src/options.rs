@@ -43,6 +43,10 @@ pub struct ConvertOptions {
     /// Wall-clock instant after which the engine stops this conversion (set by a batch's
     /// per-scenario time limit; `None`: no limit).
     pub deadline: Option<std::time::Instant>,
+    /// Read references to what does not exist (entities, storyboard elements, parameters,
+    /// variables, roads, lanes) and distributions that cannot be sampled as warnings, passing
+    /// them over as the engine can; by default (`false`) they stop the file with an error.
+    pub lenient: bool,
 }
 
 impl Default for ConvertOptions {
@@ -65,6 +69,7 @@ impl Default for ConvertOptions {
             map_tolerance: None,
             engine_seed: 0,
             deadline: None,
+            lenient: false,
         }
     }
 }

@@ -109,6 +109,34 @@ fn warn<T: ToString>(out: &mut Vec<StageWarning>, stage: Stage, list: &[T]) {
     }));
 }
 
+/// Problems a strict reading rejects: an error listing every one (file:line:col each) by
+/// default, warnings with `--lenient`.
+fn strict<T: ToString>(
+    problems: &[T],
+    stage: Stage,
+    options: &ConvertOptions,
+    warnings: &mut Vec<StageWarning>,
+) -> Result<(), Failure> {
+    if problems.is_empty() {
+        return Ok(());
+    }
+    if options.lenient {
+        warn(warnings, stage, problems);
+        return Ok(());
+    }
+    let list: Vec<String> = problems.iter().map(ToString::to_string).collect();
+    let n = list.len();
+    Err(fail(
+        stage,
+        format!(
+            "{n} reference{} to what does not exist or value{} that cannot be used (--lenient reads them as warnings):\n{}",
+            if n == 1 { "" } else { "s" },
+            if n == 1 { "" } else { "s" },
+            list.join("\n")
+        ),
+    ))
+}
+
 fn run(
     request: &Request<'_>,
     options: &ConvertOptions,
@@ -129,6 +157,7 @@ fn run(
     let loaded = openscenario::load(request.path, &load_options)
         .map_err(|e| fail(Stage::Load, e.to_string()))?;
     warn(warnings, Stage::Load, &loaded.warnings);
+    strict(&loaded.problems, Stage::Load, options, warnings)?;
     let scenario: Scenario = match loaded.content {
         Content::Scenario(s) => *s,
         Content::Distribution(_) => {
@@ -160,6 +189,7 @@ fn run(
         }
     };
     timings.road_network_ms = ms(t);
+    strict(&engine::road_references(&scenario, road.as_ref()), Stage::RoadNetwork, options, warnings)?;
     let t = Instant::now();
     let (mut lanelets, map_tags, light_of_signal): (Option<LaneletNetwork>, _, _) = match &road {
         Some(r) => {
@@ -179,6 +209,9 @@ fn run(
         other => fail(Stage::Engine, other.to_string()),
     })?;
     warn(warnings, Stage::Engine, &run.warnings);
+    let audit = crate::audit::audit(&run.trace, &scenario, lanelets.as_ref())
+        .map_err(|m| fail(Stage::Engine, format!("{}: {m}", scenario.path.display())))?;
+    warn(warnings, Stage::Engine, &audit);
     timings.engine_ms = ms(t);
     facts.duration_s = Some(run.trace.end_time().max(0.0));
     if let Some(network) = lanelets.as_mut() {

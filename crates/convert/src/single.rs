@@ -63,7 +63,8 @@ pub fn convert_file(path: &Path, options: &ConvertOptions) -> Conversion {
 }
 
 /// Loads the parameter distribution file `path` with the options' global parameters and seed,
-/// as a batch does. `Err` when it cannot be loaded or is not a distribution.
+/// as a batch does. `Err` when it cannot be loaded or is not a distribution, or (unless
+/// `options.lenient`) when it cannot be sampled as written.
 pub fn load_distribution(path: &Path, options: &ConvertOptions) -> Result<Distribution, Failure> {
     let load = LoadOptions {
         parameters: options.parameters.clone(),
@@ -74,6 +75,10 @@ pub fn load_distribution(path: &Path, options: &ConvertOptions) -> Result<Distri
         message,
     };
     match openscenario::load(path, &load) {
+        Ok(l) if !l.problems.is_empty() && !options.lenient => {
+            let list: Vec<String> = l.problems.iter().map(ToString::to_string).collect();
+            Err(fail(format!("the distribution cannot be sampled (lenient reading samples it anyway):\n{}", list.join("\n"))))
+        }
         Ok(l) => match l.content {
             Content::Distribution(d) => Ok(d),
             _ => Err(fail(format!(

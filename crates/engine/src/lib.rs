@@ -24,6 +24,7 @@ mod motion;
 mod position_cache;
 mod positions;
 mod recorded;
+mod road_references;
 mod roads;
 mod route_position;
 mod rules;
@@ -39,6 +40,7 @@ mod warning;
 
 pub use entities::bounding_boxes;
 pub use recorded::{EnvironmentChange, LightChange};
+pub use road_references::road_references;
 pub use run::{simulate, simulate_with, Run};
 pub use settings::{RunControl, Settings};
 pub use trace::{EntityTrace, RoadPos, Sample, SignalState, StoryboardEvent, Trace};

@@ -17,6 +17,7 @@ mod load;
 pub mod model;
 mod params;
 mod read;
+pub mod references;
 mod xml;
 
 pub use attr::XmlEnum;

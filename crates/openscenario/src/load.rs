@@ -30,6 +30,12 @@ pub enum Content {
 pub struct Loaded {
     pub content: Content,
     pub warnings: Vec<Warning>,
+    /// What a strict reading rejects: names that refer to nothing the scenario declares
+    /// (entities, storyboard elements, parameters, variables — see [`crate::references`]),
+    /// parameter overrides the scenario does not declare, distributions that cannot be sampled.
+    /// The file was read as if they were absent; the caller decides whether they stop it
+    /// (osc2cr's default) or are reported as warnings (`--lenient`).
+    pub problems: Vec<Warning>,
 }
 
 /// Loads an OpenSCENARIO file: a scenario (parameters and catalogs resolved), a
@@ -45,11 +51,14 @@ pub fn load_str(path: &Path, text: &str, options: &LoadOptions) -> Result<Loaded
     load_doc(path, doc, options)
 }
 
-/// Loads a file that must be a scenario.
+/// Loads a file that must be a scenario, leniently: its [`Loaded::problems`] are returned among
+/// the warnings (use [`load`] to treat them as errors).
 pub fn load_scenario(path: &Path, options: &LoadOptions) -> Result<(Scenario, Vec<Warning>), Error> {
     let loaded = load(path, options)?;
+    let mut warnings = loaded.warnings;
+    warnings.extend(loaded.problems);
     match loaded.content {
-        Content::Scenario(s) => Ok((*s, loaded.warnings)),
+        Content::Scenario(s) => Ok((*s, warnings)),
         _ => Err(Error::new(
             ErrorKind::Structure,
             Location::file_only(path),
@@ -70,9 +79,11 @@ fn load_doc(path: &Path, doc: Doc, options: &LoadOptions) -> Result<Loaded, Erro
     }
     let mut reader = Reader::new();
     let content = if root.child("Storyboard").is_some() {
-        Content::Scenario(Box::new(read_scenario(&mut reader, &abs, &doc.file, root, &options.parameters)?))
+        let scenario = read_scenario(&mut reader, &abs, &doc.file, root, &options.parameters)?;
+        reader.problems.extend(crate::references::unresolved(&scenario));
+        Content::Scenario(Box::new(scenario))
     } else if let Some(d) = root.child("ParameterValueDistribution") {
-        Content::Distribution(read_distribution(&mut reader.warnings, &abs, &doc.file, root, d, options.seed)?)
+        Content::Distribution(read_distribution(&mut reader.warnings, &mut reader.problems, &abs, &doc.file, root, d, options.seed)?)
     } else if let Some(c) = root.child("Catalog") {
         Content::Catalog(read_catalog_file(&mut reader, &doc.file, c)?)
     } else {
@@ -82,5 +93,5 @@ fn load_doc(path: &Path, doc: Doc, options: &LoadOptions) -> Result<Loaded, Erro
             "expected a Storyboard (scenario), a ParameterValueDistribution or a Catalog in <OpenSCENARIO>",
         ));
     };
-    Ok(Loaded { content, warnings: reader.warnings })
+    Ok(Loaded { content, warnings: reader.warnings, problems: reader.problems })
 }

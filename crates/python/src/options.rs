@@ -32,6 +32,7 @@ pub const NAMES: &[&str] = &[
     "max_variations",
     "map_tolerance",
     "engine_seed",
+    "lenient",
 ];
 
 /// Options from keyword arguments; `None` values mean "the default", like an option not given.
@@ -80,6 +81,7 @@ pub fn from_kwargs(kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<(ConvertOptio
                 let n = unsigned(&key, v)?;
                 o.engine_seed = u32::try_from(n).map_err(|_| PyValueError::new_err(format!("{key} must be below 2**32")))?;
             }
+            "lenient" => o.lenient = boolean(&key, v)?,
             _ => return Err(unknown(&key)),
         }
     }

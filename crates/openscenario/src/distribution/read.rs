@@ -13,6 +13,7 @@ const MAX_RANGE_VALUES: u64 = 1 << 40;
 
 pub(crate) fn read_distribution(
     warnings: &mut Vec<Warning>,
+    problems: &mut Vec<Warning>,
     path: &Path,
     file: &Arc<Path>,
     root: &Elem,
@@ -42,9 +43,12 @@ pub(crate) fn read_distribution(
                         }
                         sets.push(set);
                     }
+                    if sets.is_empty() {
+                        problems.push(Warning { location: cx.loc(vsd.pos), message: "ValueSetDistribution has no ParameterValueSet: the distribution has no run".into() });
+                    }
                     factors.push(Factor::ValueSets(sets));
                 }
-                "DeterministicSingleParameterDistribution" => factors.push(single(warnings, &cx, f)?),
+                "DeterministicSingleParameterDistribution" => factors.push(single(warnings, problems, &cx, f)?),
                 _ => warnings.push(Warning {
                     location: cx.loc(f.pos),
                     message: format!("<{}> in Deterministic is not supported yet; ignored", f.name),
@@ -108,6 +112,9 @@ pub(crate) fn read_distribution(
                     continue;
                 }
             };
+            if let Some(why) = unsampleable(&dist) {
+                problems.push(Warning { location: cx.loc(c.pos), message: format!("<{}> of parameter '{name}' cannot be sampled: {why}", c.name) });
+            }
             parameters.push((name, dist));
         }
         DistributionKind::Stochastic { runs, seed: seed_override.unwrap_or(file_seed), parameters }
@@ -117,14 +124,17 @@ pub(crate) fn read_distribution(
     Ok(Distribution { scenario_file, kind })
 }
 
-fn single(warnings: &mut Vec<Warning>, cx: &Cx, f: &Elem) -> Result<Factor, Error> {
+fn single(warnings: &mut Vec<Warning>, problems: &mut Vec<Warning>, cx: &Cx, f: &Elem) -> Result<Factor, Error> {
     let parameter = cx.name_ref(f, "parameterName")?;
     let c = cx.choice(f, "DistributionSet, DistributionRange or UserDefinedDistribution")?;
     match c.name.as_str() {
-        "DistributionSet" => Ok(Factor::Set {
-            parameter,
-            values: c.children_named("Element").map(|e| cx.text(e, "value")).collect::<Result<_, _>>()?,
-        }),
+        "DistributionSet" => {
+            let values: Vec<String> = c.children_named("Element").map(|e| cx.text(e, "value")).collect::<Result<_, _>>()?;
+            if values.is_empty() {
+                problems.push(Warning { location: cx.loc(c.pos), message: format!("DistributionSet of parameter '{parameter}' has no Element: the distribution has no run") });
+            }
+            Ok(Factor::Set { parameter, values })
+        }
         "DistributionRange" => {
             let step = cx.f64(c, "stepWidth")?;
             let r = cx.child(c, "Range")?;
@@ -136,6 +146,12 @@ fn single(warnings: &mut Vec<Warning>, cx: &Cx, f: &Elem) -> Result<Factor, Erro
             // Inclusive of `upper` up to rounding: (1.5 - 1.1) / 0.2 is 2.0000000000000004.
             let steps = ((upper - lower) / step + 1e-9).floor();
             let count = if steps < 0.0 { 0 } else { steps as u64 + 1 };
+            if upper < lower {
+                problems.push(Warning {
+                    location: cx.loc(r.pos),
+                    message: format!("DistributionRange of parameter '{parameter}': upperLimit {upper} is below lowerLimit {lower}, so the range is empty"),
+                });
+            }
             if count > MAX_RANGE_VALUES {
                 return Err(cx.err(ErrorKind::Limit, c.pos, format!("range gives {count} values, more than {MAX_RANGE_VALUES}")));
             }
@@ -147,6 +163,59 @@ fn single(warnings: &mut Vec<Warning>, cx: &Cx, f: &Elem) -> Result<Factor, Erro
                 message: format!("<{}> is not supported yet; parameter '{parameter}' keeps its scenario value", c.name),
             });
             Ok(Factor::ValueSets(vec![Vec::new()]))
+        }
+    }
+}
+
+/// Why a stochastic distribution cannot be sampled as written, if it cannot: a negative
+/// variance, an inverted or empty range, weights that are negative or (for a
+/// ProbabilityDistributionSet) do not sum to a positive number.
+fn unsampleable(d: &Stochastic) -> Option<String> {
+    let inverted = |r: &Option<(f64, f64)>| match r {
+        Some((lo, hi)) if hi < lo => Some(format!("its Range is inverted (upperLimit {hi} < lowerLimit {lo})")),
+        _ => None,
+    };
+    match d {
+        Stochastic::Normal { variance, range, .. } | Stochastic::LogNormal { variance, range, .. } => {
+            if !(*variance >= 0.0) {
+                return Some(format!("variance {variance} is negative"));
+            }
+            inverted(range)
+        }
+        Stochastic::Uniform { lower, upper } if !(upper > lower) => {
+            Some(format!("its Range is empty or inverted (lowerLimit {lower}, upperLimit {upper})"))
+        }
+        Stochastic::Uniform { .. } => None,
+        Stochastic::Poisson { expected_value, range } => {
+            if !(*expected_value > 0.0) {
+                return Some(format!("expectedValue {expected_value} is not positive"));
+            }
+            inverted(range)
+        }
+        Stochastic::Histogram(bins) => {
+            if bins.is_empty() {
+                return Some("it has no Bin".into());
+            }
+            if let Some((w, lo, hi)) = bins.iter().find(|(w, lo, hi)| !(*w >= 0.0) || !(hi > lo)) {
+                return Some(format!("a Bin has weight {w} and range {lo}..{hi} (weights must not be negative, ranges not empty)"));
+            }
+            None
+        }
+        Stochastic::Set(items) => {
+            if items.is_empty() {
+                return Some("it has no Element".into());
+            }
+            if let Some((v, w)) = items.iter().find(|(_, w)| !(*w >= 0.0)) {
+                return Some(format!("element '{v}' has negative weight {w}"));
+            }
+            // Weights are relative: the ASAM example SlowPrecedingVehicleStochasticParameterSet
+            // weighs its values 5, 10, 20, and samplers normalise by the sum; only a sum that is
+            // not positive leaves nothing to draw from.
+            let sum: f64 = items.iter().map(|(_, w)| w).sum();
+            if !(sum > 0.0 && sum.is_finite()) {
+                return Some(format!("its weights sum to {sum}; they must sum to a positive number"));
+            }
+            None
         }
     }
 }

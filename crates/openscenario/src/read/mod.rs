@@ -23,13 +23,15 @@ const MAX_CATALOG_DEPTH: usize = 16;
 
 pub(crate) struct Reader {
     pub warnings: Vec<Warning>,
+    /// What a strict reading rejects (see `Loaded::problems`).
+    pub problems: Vec<Warning>,
     pub catalogs: CatalogStore,
     catalog_depth: usize,
 }
 
 impl Reader {
     pub fn new() -> Self {
-        Reader { warnings: Vec::new(), catalogs: CatalogStore::default(), catalog_depth: 0 }
+        Reader { warnings: Vec::new(), problems: Vec::new(), catalogs: CatalogStore::default(), catalog_depth: 0 }
     }
 
     pub fn warn(&mut self, location: Location, message: impl Into<String>) {

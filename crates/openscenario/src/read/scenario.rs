@@ -26,9 +26,9 @@ pub(crate) fn read_scenario(
     let parameters = read_declarations(decls, &empty, overrides, file, &mut r.warnings)?;
     for (name, _) in overrides {
         if !parameters.iter().any(|p| &p.name == name) {
-            r.warnings.push(Warning {
+            r.problems.push(Warning {
                 location: crate::error::Location::file_only(path),
-                message: format!("parameter '{name}' given as an override is not declared by the scenario; ignored"),
+                message: format!("parameter '{name}' given as an override (a distribution's run or --param) is not declared by the scenario"),
             });
         }
     }

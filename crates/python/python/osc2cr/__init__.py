@@ -15,7 +15,10 @@ Options (keyword arguments of every function) are ``osc2cr convert``'s long opti
     goal_velocity (True; False = the CLI's --no-goal-velocity), goal_orientation_margin
     (none), country ("ZAM"), author, affiliation, source, date ("YYYY-MM-DD" or
     datetime.date), seed, max_variations (variations(): no cap unless given), map_tolerance,
-    engine_seed (0: esmini's --seed for ties it leaves to chance, e.g. at junctions).
+    engine_seed (0: esmini's --seed for ties it leaves to chance, e.g. at junctions),
+    lenient (False: a reference to what does not exist — entity, storyboard element,
+    parameter, variable, road, lane — or a distribution that cannot be sampled raises
+    ConversionError; True: it is issued as a ConversionWarning and the file converts anyway).
 
 The XML is byte for byte what ``osc2cr convert`` writes for the same file and options.
 Failures raise :class:`ConversionError` (with ``file``, ``line``, ``column``); warnings are
@@ -66,6 +69,7 @@ if TYPE_CHECKING:
         max_variations: int
         map_tolerance: float
         engine_seed: int
+        lenient: bool
 
 
 __all__ = [
