@@ -30,7 +30,19 @@ pub type PositionError = String;
 pub fn resolve(pos: &Position, net: Option<&RoadNetwork>, entities: &[Entity]) -> Result<Placement, PositionError> {
     let find = |name: &str| entities.iter().find(|e| e.name == name).ok_or_else(|| format!("unknown entity `{name}`"));
     match pos {
-        Position::World { x, y, z, h, .. } => Ok(Placement { x: *x, y: *y, z: *z, h: h.unwrap_or(0.0), lane: None }),
+        Position::World { x, y, z, h, .. } => {
+            let h = h.unwrap_or(0.0);
+            // A world position is given in the OpenDRIVE file's own frame: the header offset
+            // moves it with the roads (esmini's ScenarioReader::parseOSCPosition).
+            match net.and_then(|n| n.header.offset) {
+                Some(o) => {
+                    let (x, y, _) = o.apply(*x, *y, 0.0);
+                    let h = (h + o.hdg).rem_euclid(std::f64::consts::TAU);
+                    Ok(Placement { x, y, z: z.map(|z| z + o.z), h, lane: None })
+                }
+                None => Ok(Placement { x: *x, y: *y, z: *z, h, lane: None }),
+            }
+        }
         Position::RelativeWorld { entity, dx, dy, dz, orientation } => {
             let e = find(entity)?;
             let h = orient(e.h, orientation.as_ref());

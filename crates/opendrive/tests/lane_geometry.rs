@@ -6,7 +6,7 @@ use std::path::Path;
 
 const MAP: &str = r#"<?xml version="1.0"?>
 <OpenDRIVE>
-  <header revMajor="1" revMinor="6" name="t"><offset x="100" y="0" z="0" hdg="0"/></header>
+  <header revMajor="1" revMinor="6" name="t"><offset x="0" y="0" z="0" hdg="0"/></header>
   <road id="A" length="100" junction="-1" rule="LHT">
     <link><successor elementType="road" elementId="B" contactPoint="start"/></link>
     <type s="0" type="motorway"><speed max="130" unit="km/h"/></type>
@@ -119,13 +119,25 @@ fn world_to_lane_recovers_road_coordinates() {
 }
 
 #[test]
-fn header_offset_is_kept_not_applied() {
-    let n = net();
+fn header_offset_moves_the_roads_as_esmini_does() {
+    // esmini's OpenDrive::LoadOpenDriveFile: each geometry start is shifted by (x, y), then
+    // rotated by hdg about the origin; the heading turns by hdg; elevations rise by z.
+    let map = r#"<?xml version="1.0"?>
+<OpenDRIVE><header revMajor="1" revMinor="6"><offset x="-1000" y="-500" z="2" hdg="0.5"/></header>
+<road id="1" length="100" junction="-1"><planView><geometry s="0" x="1010" y="520" hdg="0.25" length="100"><line/></geometry></planView>
+<elevationProfile><elevation s="0" a="1" b="0" c="0" d="0"/></elevationProfile>
+<lanes><laneSection s="0"><center><lane id="0" type="none"/></center>
+<right><lane id="-1" type="driving"><width sOffset="0" a="3" b="0" c="0" d="0"/></lane></right></laneSection></lanes></road></OpenDRIVE>"#;
+    let n = parse_str(map, Path::new("offset.xodr")).expect("parses").network;
     let off = n.header.offset.expect("offset");
-    assert_eq!(off.x, 100.0);
+    assert_eq!((off.x, off.y, off.z, off.hdg), (-1000.0, -500.0, 2.0, 0.5));
+    // start: (1010 - 1000, 520 - 500) = (10, 20), rotated by 0.5 rad
+    let (s, c) = 0.5f64.sin_cos();
     let p = n.road_to_world(0, 0.0, 0.0).expect("pose");
-    assert!((p.x - 10.0).abs() < 1e-12, "positions stay in the file frame");
-    assert_eq!(off.apply(1.0, 2.0, 3.0), (101.0, 2.0, 3.0));
+    assert!((p.x - (10.0 * c - 20.0 * s)).abs() < 1e-9 && (p.y - (10.0 * s + 20.0 * c)).abs() < 1e-9, "{p:?}");
+    assert!((p.heading - 0.75).abs() < 1e-12, "heading 0.25 + 0.5: {p:?}");
+    assert!((p.z - 3.0).abs() < 1e-12, "elevation 1 + 2: {p:?}");
+    assert_eq!(off.apply(1.0, 2.0, 3.0).2, 5.0);
 }
 
 #[test]

@@ -2,10 +2,10 @@
 
 /// `<header><offset>`: a shift and rotation of the whole data set.
 ///
-/// World coordinates returned by this crate do NOT include it: esmini (whose traces the
-/// scenarios must land on) ignores the header offset, and so does every position we compute.
-/// Callers that want inertial coordinates of the standard can apply
-/// [`HeaderOffset::apply`] themselves.
+/// The parser applies it to the plan view and the elevation, as esmini 3.6 does
+/// (`OpenDrive::LoadOpenDriveFile`), so world coordinates returned by this crate are in the
+/// offset frame; OpenSCENARIO world positions are mapped into it with [`HeaderOffset::apply`]
+/// (esmini's `ScenarioReader::parseOSCPosition`).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct HeaderOffset {
     pub x: f64,

@@ -85,6 +85,9 @@ pub fn parse_document(text: &str, file: &Path) -> Result<Parsed, Error> {
     if !saw_header {
         ctx.warn(root, "no <header>; revision 1.4 assumed");
     }
+    if let Some(offset) = parsed.header.offset {
+        apply_header_offset(&mut parsed.roads, &offset);
+    }
     if !(parsed.header.rev_major == 1 && (4..=8).contains(&parsed.header.rev_minor)) {
         ctx.warn(root, format!("OpenDRIVE {}.{} is outside 1.4–1.8; read as 1.8", parsed.header.rev_major, parsed.header.rev_minor));
     }
@@ -97,4 +100,21 @@ pub fn parse_document(text: &str, file: &Path) -> Result<Parsed, Error> {
     }
     parsed.warnings = ctx.warnings;
     Ok(parsed)
+}
+
+/// The header `<offset>` moves the whole road network, as esmini's `OpenDrive::LoadOpenDriveFile`
+/// does: every plan-view geometry's start is shifted by (x, y) and then rotated by `hdg` about
+/// the origin, its heading turned by `hdg` (into [0, 2π)), and every elevation raised by `z`.
+fn apply_header_offset(roads: &mut [crate::model::road::Road], offset: &crate::model::header::HeaderOffset) {
+    for road in roads {
+        for g in &mut road.geometries {
+            let (x, y, _) = offset.apply(g.x, g.y, 0.0);
+            g.x = x;
+            g.y = y;
+            g.hdg = (g.hdg + offset.hdg).rem_euclid(std::f64::consts::TAU);
+        }
+        for e in &mut road.elevation {
+            e.a += offset.z;
+        }
+    }
 }
