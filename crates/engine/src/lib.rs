@@ -17,6 +17,7 @@ mod conditions;
 mod controllers;
 mod dynamics;
 mod entities;
+mod init_order;
 pub mod esmini_random;
 mod ghost;
 mod ghost_trail;

@@ -137,19 +137,30 @@ impl<'a> Sim<'a> {
             let slot = self.add_action(a, &name, None, Vec::new());
             self.init_actions.push(slot);
         }
+        // esmini runs Init private actions in an order where relative teleports follow their
+        // reference entity's actions (init_order.rs)
+        let mut items = Vec::new();
+        let mut actions = Vec::new();
         for p in &sb.init.private {
-            let actors = match self.entity_index(&p.entity) {
-                Some(i) => vec![i],
-                None => {
-                    self.warnings.push(Warning::at(&sc.entities.first().map(|e| e.origin.clone()).unwrap_or_else(|| sb_origin(sc)), format!("Init actions for unknown entity `{}` ignored", p.entity)));
-                    continue;
-                }
+            let Some(entity) = self.entity_index(&p.entity) else {
+                self.warnings.push(Warning::at(&sc.entities.first().map(|e| e.origin.clone()).unwrap_or_else(|| sb_origin(sc)), format!("Init actions for unknown entity `{}` ignored", p.entity)));
+                continue;
             };
             for a in &p.actions {
-                let name = format!("Init {} {}", p.entity, a.kind.element_name());
-                let slot = self.add_action(a, &name, None, actors.clone());
-                self.init_actions.push(slot);
+                let relative_to = crate::init_order::teleport_reference(&a.kind).and_then(|r| self.entity_index(r));
+                items.push(crate::init_order::InitItem { entity, relative_to, index: actions.len() });
+                actions.push((entity, p.entity.as_str(), a));
             }
+        }
+        if crate::init_order::reorder(&mut items) {
+            self.warnings.push(Warning::at(&sb_origin(sc), "Init actions: teleports relative to each other in a circle; esmini gives up reordering them after 2n passes, and so does osc2cr"));
+        }
+        let order = items.iter().map(|i| i.index);
+        for k in order {
+            let Some(&(entity, name, a)) = actions.get(k) else { continue };
+            let name = format!("Init {} {}", name, a.kind.element_name());
+            let slot = self.add_action(a, &name, None, vec![entity]);
+            self.init_actions.push(slot);
         }
         for story in &sb.stories {
             let sn = self.push_node(Node::new(Kind::Story, &story.name, Some(root)));
