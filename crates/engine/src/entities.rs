@@ -59,6 +59,9 @@ pub struct Entity {
     /// Added (put in place) during this step: the next `after_move` derives no velocity, yaw
     /// rate or odometer from the jump.
     pub appeared: bool,
+    /// Teleported during this step: the jump is not travel (esmini's `DirtyBit::TELEPORT`
+    /// skips the odometer and takes the velocity from speed and heading).
+    pub teleported: bool,
     /// (road, lane, section start, section end) where the entity's lane is known to run
     /// parallel to the reference line: no heading drift to compute while it stays there.
     pub parallel_lane: Option<(usize, i32, f64, f64)>,
@@ -113,6 +116,7 @@ impl Entity {
             controller_active: false,
             active: true,
             appeared: false,
+            teleported: false,
             parallel_lane: None,
             route: None,
         }

@@ -67,6 +67,14 @@ impl<'a> Sim<'a> {
                 en.vel = (en.speed * en.h.cos(), en.speed * en.h.sin());
                 en.accel = 0.0;
                 en.yaw_rate = 0.0;
+            } else if en.teleported {
+                // ScenarioEngine::prepareStep/step: a teleport is no travel
+                en.teleported = false;
+                en.vel = (en.speed * en.h.cos(), en.speed * en.h.sin());
+                if dt > SMALL {
+                    en.accel = (en.speed - b.speed) / dt;
+                    en.yaw_rate = wrap(en.h - b.h) / dt;
+                }
             } else {
                 en.odometer += (dx * dx + dy * dy).sqrt();
                 if dt > SMALL {

@@ -93,7 +93,10 @@ pub fn resolve(pos: &Position, net: Option<&RoadNetwork>, entities: &[Entity]) -
             // Without an orientation the entity faces the way the reference entity faces (esmini).
             let r = net.roads.get(lp.road).ok_or("reference road missing")?;
             if lane_borders(r, r.section_index_at(s), lane_id, s).is_none() {
-                return Err(format!("road `{}` has no lane {} at s = {:.3}", r.id, lane_id, s));
+                // No such lane: esmini's Position::SetRelativePosition keeps the location it moved
+                // the reference to (its lane and lane offset at the new s), as SetLanePos fails.
+                let along = if orientation.is_some() { drives_along_s(r.rule, lp.lane_id) } else { lp.dir > 0.0 };
+                return place(net, lp.road, lp.lane_id, s, lp.offset, along, orientation.as_ref());
             }
             let along = if orientation.is_some() { drives_along_s(r.rule, lane_id) } else { lp.dir > 0.0 };
             // The offset is to the left of the reference entity's driving direction (esmini).

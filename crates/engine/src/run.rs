@@ -63,7 +63,8 @@ pub fn simulate_with(scenario: &Scenario, roads: Option<&RoadNetwork>, settings:
     // Frame 0: Init actions and the first storyboard evaluation, no time passes.
     sim.time = t0;
     sim.align_trailers();
-    for slot in init_order(&sim) {
+    // sim.rs put the Init actions in esmini's order (init_order.rs)
+    for slot in sim.init_actions.clone() {
         sim.start_action(slot);
     }
     sim.set_state(root, Transition::Start, State::Running);
@@ -115,35 +116,6 @@ pub fn simulate_with(scenario: &Scenario, roads: Option<&RoadNetwork>, settings:
     trace.events = std::mem::take(&mut sim.events);
     trace.signal_states = std::mem::take(&mut sim.signals.log);
     Ok(Run { trace, warnings: sim.warnings, lights: sim.lights, environment: sim.environment })
-}
-
-/// Init actions in document order, except that a teleport relative to an entity that an Init
-/// teleport places later waits for that teleport (esmini places the reference first).
-fn init_order(sim: &Sim) -> Vec<usize> {
-    use openscenario::{ActionKind, PrivateAction};
-    let teleport_ref = |slot: usize| -> (Option<usize>, Option<usize>) {
-        let a = &sim.actions[slot];
-        match &a.model.kind {
-            ActionKind::Private(PrivateAction::Teleport(p)) => {
-                (a.actors.first().copied(), p.reference_entity().and_then(|n| sim.entity_index(n)))
-            }
-            _ => (None, None),
-        }
-    };
-    let mut pending: Vec<usize> = sim.init_actions.clone();
-    let mut order = Vec::with_capacity(pending.len());
-    while !pending.is_empty() {
-        let placed_later = |e: usize, pending: &[usize]| pending.iter().any(|&s| teleport_ref(s).0 == Some(e));
-        let pick = pending
-            .iter()
-            .position(|&s| match teleport_ref(s) {
-                (_, Some(r)) => !placed_later(r, &pending) || teleport_ref(s).0 == Some(r),
-                _ => true,
-            })
-            .unwrap_or(0);
-        order.push(pending.remove(pick));
-    }
-    order
 }
 
 fn storyboard_step(sim: &mut Sim, dt: f64) {

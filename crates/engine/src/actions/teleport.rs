@@ -29,5 +29,6 @@ impl<'a> Sim<'a> {
         }
         // esmini records a teleported entity where it was put: it does not move on this step.
         en.moved_by_action = true;
+        en.teleported = true;
     }
 }
