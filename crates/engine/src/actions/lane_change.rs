@@ -39,6 +39,23 @@ pub fn relane(net: &RoadNetwork, lp: &mut LanePos) {
     }
 }
 
+/// The lateral position (t) esmini gives the centre of a lane that does not exist: width 0 at
+/// the outer border of the last lane before it on its side (LaneSection::GetCenterOffset with
+/// GetWidth 0 for a missing lane). `None` for lane 0 or a road without sections.
+fn phantom_lane_center(road: &opendrive::Road, lane_id: i32, s: f64) -> Option<f64> {
+    if lane_id == 0 {
+        return None;
+    }
+    let section = road.section_index_at(s);
+    let sec = road.lane_sections.get(section)?;
+    let side = if lane_id > 0 { &sec.left } else { &sec.right };
+    let inner = side.iter().filter(|l| l.id.abs() < lane_id.abs()).max_by_key(|l| l.id.abs());
+    match inner {
+        Some(l) => lane_borders(road, section, l.id, s).map(|(_, outer)| outer),
+        None => Some(road.lane_offset_at(s)),
+    }
+}
+
 impl<'a> Sim<'a> {
     pub(super) fn start_lane_change(&mut self, slot: usize, e: usize, d: &TransitionDynamics, target: &LaneChangeTarget, target_offset: f64) -> ActionRt {
         let Some(net) = self.net else {
@@ -63,12 +80,27 @@ impl<'a> Sim<'a> {
         };
         let Some(road) = net.roads.get(lp.road) else { return ActionRt::Done };
         let s = lp.s.clamp(0.0, road.length);
-        let (Some(cur_c), Some(tgt_c)) = (lane_center_t(road, lp.lane_id, s), lane_center_t(road, target_lane, s)) else {
-            self.warn_action(slot, format!("LaneChangeAction: lane {target_lane} does not exist on road `{}` here", road.id));
-            return ActionRt::Done;
+        let Some(cur_c) = lane_center_t(road, lp.lane_id, s) else { return ActionRt::Done };
+        let (tgt_c, internal_lane) = match lane_center_t(road, target_lane, s) {
+            Some(c) => (c, target_lane),
+            None => {
+                // esmini (LatLaneChangeAction::Start, Position::ForceLaneId) measures a missing
+                // lane as one of width 0 beyond the last lane of its side; the failed SetLanePos
+                // then keeps the entity's own lane, so the offset from that phantom centre is
+                // applied in the lane it is in: a jump towards the centre, then a drift back.
+                let Some(c) = phantom_lane_center(road, target_lane, s) else {
+                    self.warn_action(slot, format!("LaneChangeAction: lane {target_lane} does not exist on road `{}` here", road.id));
+                    return ActionRt::Done;
+                };
+                self.warn_action(
+                    slot,
+                    format!("LaneChangeAction: lane {target_lane} does not exist on road `{}` here; as esmini, the entity is moved as if it were a lane of width 0 at the road's edge", road.id),
+                );
+                (c, lp.lane_id)
+            }
         };
         let offset_in_target = cur_c + lp.offset - tgt_c;
-        let internal = LanePos { lane_id: target_lane, offset: offset_in_target, ..lp };
+        let internal = LanePos { lane_id: internal_lane, offset: offset_in_target, ..lp };
         let lane_sign = sign(f64::from(target_lane));
         let mut t = Transition::new(d.shape, d.dimension, d.value);
         if d.dimension == DynamicsDimension::Rate {
