@@ -3,6 +3,7 @@
 //!
 //! Exit status: 0 success, 1 some files of a batch failed, 2 bad usage or bad input.
 
+mod check_cmd;
 mod convert_cmd;
 mod inspect;
 mod map_cmd;
@@ -34,6 +35,9 @@ enum Command {
     Simulate(simulate::SimulateArgs),
     /// Draw a scenario (.xml, or .xosc converted first) as PNG/SVG stills or an animated GIF.
     Render(render_cmd::RenderArgs),
+    /// Report what is wrong with OpenSCENARIO files without converting them: every finding with
+    /// severity and file:line:col (exit 2 when there is an error).
+    Check(check_cmd::CheckArgs),
 }
 
 /// A failed command: the message for the user and the exit status.
@@ -57,6 +61,7 @@ fn main() -> ExitCode {
         Command::Inspect(args) => inspect::run(args),
         Command::Simulate(args) => simulate::run(args),
         Command::Render(args) => render_cmd::run(args),
+        Command::Check(args) => check_cmd::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,0 +1,54 @@
+//! `osc2cr check`: findings with severity and file:line:col, exit 2 on an error, JSON for tools,
+//! and no error on the corpus except the one scenario whose catalogs are not shipped.
+
+mod common;
+use common::*;
+
+#[test]
+fn the_example_has_no_error() {
+    let r = osc2cr(&["check", s(&example())]);
+    assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
+    assert!(String::from_utf8_lossy(&r.stderr).contains("1 file checked: 0 errors"));
+}
+
+#[test]
+fn every_reference_problem_of_a_file_is_listed_with_its_position() {
+    let dir = tmp("check", "broken");
+    let text = std::fs::read_to_string(example()).expect("example")
+        .replace(r#"<Private entityRef="Walker">"#, r#"<Private entityRef="Walkr">"#)
+        .replace(r#"<RelativeObjectPosition entityRef="Ego" dx="0" dy="0"/>"#, r#"<RelativeObjectPosition entityRef="Eg0" dx="0" dy="0"/>"#)
+        .replace(r#"<LanePosition roadId="1" laneId="-1" s="5" offset="0"/>"#, r#"<LanePosition roadId="7" laneId="-1" s="5" offset="0"/>"#);
+    let file = dir.join("broken.xosc");
+    std::fs::write(&file, text).expect("write");
+    std::fs::copy(testkit::workspace_root().join("examples/two_lane_curve.xodr"), dir.join("two_lane_curve.xodr")).expect("road");
+    let r = osc2cr(&["check", s(&file)]);
+    assert_eq!(r.status.code(), Some(2));
+    let out = String::from_utf8_lossy(&r.stdout);
+    // the three problems, each at the element holding it (lines counted in examples/cut_in.xosc)
+    for expected in ["broken.xosc:71:11: error: Init actions for entity `Walkr`", "broken.xosc:134:17: error: position relative to entity `Eg0`", "broken.xosc:60:11: error: LanePosition: road `7`"] {
+        assert!(out.contains(expected), "{expected} missing from:\n{out}");
+    }
+    let r = osc2cr(&["check", s(&file), "--json"]);
+    let json: serde_json::Value = serde_json::from_slice(&r.stdout).expect("json");
+    let errors: Vec<_> = json.as_array().expect("array").iter().filter(|f| f["severity"] == "error").collect();
+    assert_eq!(errors.len(), 3, "{json}");
+    assert!(errors.iter().all(|f| f["line"].as_u64().unwrap_or(0) > 0 && f["column"].as_u64().unwrap_or(0) > 0));
+}
+
+#[test]
+fn the_corpus_has_no_error_but_its_missing_catalogs() {
+    let Some(shared) = testkit::shared_dir() else { return };
+    let r = osc2cr(&["check", s(&shared.join("corpus")), "--json"]);
+    let json: serde_json::Value = serde_json::from_slice(&r.stdout).expect("json");
+    let errors: Vec<String> = json.as_array().expect("array").iter().filter(|f| f["severity"] == "error").map(|f| format!("{}: {}", f["file"], f["message"])).collect();
+    // car_walk names catalogs (openx assets) the corpus does not ship
+    assert_eq!(errors.len(), 1, "{errors:#?}");
+    assert!(errors[0].contains("car_walk.xosc") && errors[0].contains("catalog"), "{errors:?}");
+}
+
+#[test]
+fn help_says_what_check_does() {
+    let r = osc2cr(&["check", "--help"]);
+    let help = String::from_utf8_lossy(&r.stdout);
+    assert!(help.contains("--json") && help.contains("catalog"), "{help}");
+}
