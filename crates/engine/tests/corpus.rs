@@ -10,8 +10,26 @@ use std::process::Command;
 const FLOORS: &[(&str, &[&str], f64, f64)] = &[
     // measured 79 of 79 exact; one may slip before this fails
     ("demo and ASAM", &["esmini", "osc-examples-1.2", "osc-examples-1.3"], 0.98, 0.95),
-    // measured 37 of 62 exact at the start of issue #12, 39 with FollowRoute and esmini's speed steps, 43 with transitions, speed profiles and clearance (0.69)
-    ("esmini unit tests", &["esmini-unittest"], 0.69, 0.69),
+    // measured 37 of 62 exact at the start of issue #12, 39 with FollowRoute and esmini's speed steps, 43 with transitions, speed profiles and clearance, 44 with the header offset (0.70)
+    ("esmini unit tests", &["esmini-unittest"], 0.70, 0.70),
+];
+
+/// Unit-test scenarios that still diverge from esmini without a warning saying why, each with
+/// what is known of the cause (ARCHITECTURE.md, "Not supported yet"); some do warn, but about
+/// something else (a catalog parameter's type). The list only shrinks: a new silent divergence
+/// fails the test, and so does a listed scenario that stops diverging (take it off the list).
+const KNOWN_SILENT: &[(&str, &str)] = &[
+    ("direction_dimension_trig", "conditions with a directional dimension (not yet traced to esmini's rule)"),
+    ("follow_route_collision_risk", "FollowRoute controller: collision-risk hold differs later in the run"),
+    ("follow_route_controller_test_medium", "FollowRoute controller on a large map: path choice differs"),
+    ("follow_route_set_parameters", "FollowRoute controller: esmini ends a storyboard SpeedAction when a controller overrides the longitudinal domain"),
+    ("perform_single_lane_change", "AssignRoute with a route-following controller: lane change on the route differs"),
+    ("follow_trajectory_reverse", "a trajectory driven in reverse"),
+    ("init_actions_reorder", "Init actions of other entities during a FollowGhost head start (esmini moves only the ghost before time 0)"),
+    ("relative_lane_pos_trajectories", "relative lane positions as trajectory vertices"),
+    ("star_position_types", "orientation of relative positions given with a relative Orientation"),
+    ("trail_test", "an entity placed on a ghost's trail at time 0"),
+    ("trajectory-continuity", "continuity between consecutive FollowTrajectoryActions"),
 ];
 
 fn shared() -> Option<PathBuf> {
@@ -34,12 +52,16 @@ fn corpus_runs_and_conforms() {
     let _ = std::fs::remove_dir_all(&out);
     let files = testkit::files_with_ext(&corpus, "xosc");
     let mut ran = 0;
+    // what the load and the run said of each scenario, by trace path: a divergence must not be silent
+    let mut said = std::collections::BTreeMap::<String, Vec<String>>::new();
     for f in &files {
-        let Ok((scenario, _)) = openscenario::load_scenario(f, &Default::default()) else { continue };
+        let Ok((scenario, load_warnings)) = openscenario::load_scenario(f, &Default::default()) else { continue };
         let net = scenario.road_network.logic_file.as_ref().and_then(|p| opendrive::load(p).ok()).map(|l| l.network);
         let run = engine::simulate(&scenario, net.as_ref(), &engine::Settings::default()).expect("default settings are valid");
         ran += 1;
         let rel = f.strip_prefix(&corpus).expect("under corpus").with_extension("csv");
+        let messages = load_warnings.iter().map(ToString::to_string).chain(run.warnings.iter().map(ToString::to_string));
+        said.insert(rel.to_string_lossy().replace('\\', "/"), messages.collect());
         let path = out.join(rel);
         std::fs::create_dir_all(path.parent().expect("parent")).expect("mkdir");
         std::fs::write(&path, run.trace.to_csv(&engine::bounding_boxes(&scenario))).expect("write trace");
@@ -78,7 +100,15 @@ fn corpus_runs_and_conforms() {
             match r["verdict"].as_str().unwrap_or("") {
                 "exact" => exact += 1.0,
                 "close" => close += 1.0,
-                "diverged" | "missing" => diverged.push(path.clone()),
+                "diverged" | "missing" => {
+                    // issue #12: where the engine still cannot do what esmini does, the run says so
+                    let silent = said.get(path).is_none_or(|w| w.is_empty());
+                    let known = KNOWN_SILENT.iter().any(|(name, _)| path.ends_with(&format!("/{name}.csv")));
+                    if silent && !known {
+                        failures.push(format!("{path} diverges from esmini without any warning"));
+                    }
+                    diverged.push(path.clone())
+                }
                 _ => continue, // skipped by the reference's class, or not a trace
             }
             compared += 1.0;
@@ -93,6 +123,12 @@ fn corpus_runs_and_conforms() {
         }
         if exact / compared < *exact_floor {
             failures.push(format!("{group}: exact {:.3} below {exact_floor}", exact / compared));
+        }
+    }
+    for (name, _) in KNOWN_SILENT {
+        let still = results.iter().any(|(path, r)| path.ends_with(&format!("/{name}.csv")) && matches!(r["verdict"].as_str(), Some("diverged" | "missing")));
+        if !still {
+            failures.push(format!("{name} no longer diverges: take it off KNOWN_SILENT"));
         }
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
