@@ -214,7 +214,7 @@ const ERRORS: &str = r#"
 import sys, pickle, itertools, warnings
 import osc2cr
 warnings.simplefilter("ignore", osc2cr.ConversionWarning)
-bad, dist, missing = sys.argv[1], sys.argv[2], sys.argv[3]
+bad, dist, missing, example = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4]
 try:
     osc2cr.convert_to_xml(bad)
     raise SystemExit("no error for a malformed file")
@@ -239,6 +239,15 @@ for v in itertools.islice(osc2cr.variations(dist), 2):
     print("variation", v.index, sorted(v.parameters.items()))
 last = next(osc2cr.variations(dist, start=12))
 print("last", last.index, sorted(last.parameters.items()))
+try:
+    osc2cr.convert_to_xml(example, params={"EgoSpeeed": 10})
+    print("strict: converted")
+except osc2cr.ConversionError as e:
+    print("strict:", "EgoSpeeed" in str(e))
+with warnings.catch_warnings(record=True) as caught:
+    warnings.simplefilter("always", osc2cr.ConversionWarning)
+    xml = osc2cr.convert_to_xml(example, params={"EgoSpeeed": 10}, lenient=True)
+    print("lenient:", xml.startswith("<?xml"), any("EgoSpeeed" in str(w.message) for w in caught))
 "#;
 
 #[test]
@@ -251,7 +260,8 @@ fn errors_carry_file_line_and_column_and_variations_stream() {
         .expect("write");
     let dist = corpus("esmini/xosc/cut-in_parameter_set.xosc");
     let missing = dir.join("missing.xosc");
-    let got = python(&env.python, ERRORS, &[&bad, &dist, &missing]);
+    let example = testkit::workspace_root().join("examples/cut_in.xosc");
+    let got = python(&env.python, ERRORS, &[&bad, &dist, &missing, &example]);
     let lines: Vec<&str> = got.lines().collect();
     // the mismatch is seen at the closing tag on line 4
     assert_eq!(lines[0], "malformed True 4 True load", "{got}");
@@ -270,6 +280,10 @@ fn errors_carry_file_line_and_column_and_variations_stream() {
         lines[8],
         "last 12 [('EgoSpeed', '110.0'), ('TargetSpeedFactor', '1.5'), ('TargetVehicle', 'van_red')]"
     );
+    // strict by default: an override of a parameter the scenario does not declare is an error;
+    // lenient=True converts and says so as a ConversionWarning
+    assert_eq!(lines[9], "strict: True", "{got}");
+    assert_eq!(lines[10], "lenient: True True", "{got}");
 }
 
 #[test]

@@ -116,7 +116,7 @@ pub(crate) fn resolve_raw(
                     None => Err(ResolveError {
                         kind: ErrorKind::Expression,
                         column: e.column + 1,
-                        message: format!("in expression '{raw}' at column {}: {}", e.column + 2, e.message),
+                        message: format!("in expression '{}' at column {}: {}", shorten(raw), e.column + 2, e.message),
                     }),
                 }
             }
@@ -129,7 +129,7 @@ pub(crate) fn resolve_raw(
                 Err(ResolveError {
                     kind,
                     column: e.column + 1,
-                    message: format!("in expression '{raw}' at column {}: {}", e.column + 2, e.message),
+                    message: format!("in expression '{}' at column {}: {}", shorten(raw), e.column + 2, e.message),
                 })
             }
         };
@@ -373,4 +373,15 @@ fn violated_constraints(decl: &Elem, value: &str) -> Option<String> {
         }
     }
     Some(failed.join(", "))
+}
+
+/// An expression quoted in a message: at most 120 characters (a hostile file may hold a
+/// megabyte in one attribute; the column says where the problem is).
+fn shorten(raw: &str) -> String {
+    const MAX: usize = 120;
+    if raw.chars().count() <= MAX {
+        return raw.to_string();
+    }
+    let head: String = raw.chars().take(MAX).collect();
+    format!("{head}… ({} characters)", raw.chars().count())
 }
