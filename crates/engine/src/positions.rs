@@ -78,7 +78,14 @@ pub fn resolve(pos: &Position, net: Option<&RoadNetwork>, entities: &[Entity]) -
             let lp = e.lane.ok_or_else(|| format!("entity `{entity}` is not on a road"))?;
             let road = net.roads.get(lp.road).ok_or("reference road missing")?;
             let t = lane_center_t(road, lp.lane_id, lp.s).unwrap_or(0.0) + lp.offset;
-            road_placement(net, lp.road, lp.s + ds, t + dt, orientation.as_ref())
+            let mut p = road_placement(net, lp.road, lp.s + ds, t + dt, orientation.as_ref())?;
+            // esmini (Position::SetRelativePosition, RELATIVE_ROAD): the heading is relative to
+            // the road's reference direction — along +s without an orientation — whichever
+            // side of the road the entity lands on; only an absolute orientation is kept as is.
+            if !matches!(orientation, Some(Orientation { reference: Some(ReferenceContext::Absolute), h: Some(_), .. })) {
+                turn_from_road_direction(net, &mut p, orientation.and_then(|o| o.h).unwrap_or(0.0));
+            }
+            Ok(p)
         }
         Position::RelativeLane { entity, d_lane, ds, ds_lane, offset, orientation } => {
             let net = net.ok_or("a RelativeLanePosition needs a road network")?;

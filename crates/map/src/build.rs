@@ -43,6 +43,17 @@ pub fn build_lanelets(net: &RoadNetwork, tol: f64, ids: &mut IdAllocator, warn: 
     for (ri, road) in net.roads.iter().enumerate() {
         for (si, sec) in road.lane_sections.iter().enumerate() {
             let stations: Vec<Station> = sample_section(road, si, tol);
+            if stations.len() >= crate::sampling::MAX_STATIONS {
+                warn.at(
+                    &net.file,
+                    sec.pos,
+                    format!(
+                        "road `{}` lane section {si}: its borders need more than {} points to stay within {tol} m; sampled at that cap, they may deviate more",
+                        road.id,
+                        crate::sampling::MAX_STATIONS
+                    ),
+                );
+            }
             if stations.len() < 2 {
                 out.degenerate_sections.insert((ri, si));
                 continue;

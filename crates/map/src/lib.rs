@@ -32,6 +32,7 @@ mod warn;
 pub use map_scenario::{map_scenario, map_scenario_id};
 pub use options::{LaneletOrigin, MapOptions, MapResult};
 pub use opendrive::Warning;
+pub use sampling::MAX_STATIONS;
 pub use tags::derived_tags;
 
 use commonroad::{IdAllocator, LaneletNetwork};

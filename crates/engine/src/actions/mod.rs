@@ -75,6 +75,11 @@ impl<'a> ActionSlot<'a> {
                 // SpeedProfileAction alongside such a trajectory).
                 PrivateAction::FollowTrajectory { time_reference: openscenario::TimeReference::None, .. } => LAT,
                 PrivateAction::FollowTrajectory { .. } => LONG | LAT,
+                // esmini's TeleportAction holds both domains (DOMAIN_MASK_LAT_AND_LONG): starting
+                // one ends a running lane change or speed change of the entity; its
+                // AcquirePositionAction holds the longitudinal one.
+                PrivateAction::Teleport(_) => LONG | LAT,
+                PrivateAction::AcquirePosition(_) => LONG,
                 _ => 0,
             },
             _ => 0,
