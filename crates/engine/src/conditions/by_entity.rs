@@ -79,7 +79,7 @@ impl<'a> Sim<'a> {
         let o = other.and_then(|i| self.entities.get(i));
         let t = self.time;
         match cond {
-            C::Speed { value, rule, .. } => compare(e.speed, *value, *rule),
+            C::Speed { value, rule, direction } => compare(directed_speed(e, *direction), *value, *rule),
             C::RelativeClearance { entities, opposite_lanes, free_space, distance_forward, distance_backward, lane_ranges } => {
                 let (from, to) = lane_ranges.first().copied().unwrap_or((None, None));
                 let c = super::clearance::Clearance {
@@ -93,7 +93,7 @@ impl<'a> Sim<'a> {
                 };
                 self.relative_clearance(idx, &c)
             }
-            C::RelativeSpeed { value, rule, .. } => o.is_some_and(|o| compare(e.speed - o.speed, *value, *rule)),
+            C::RelativeSpeed { value, rule, direction, .. } => o.is_some_and(|o| compare(relative_speed(e, o, *direction), *value, *rule)),
             C::Acceleration { value, rule, .. } => compare(e.accel, *value, *rule),
             C::StandStill { duration } => e.standstill_since.is_some_and(|s| t - s >= duration - SMALL),
             C::TraveledDistance { value } => e.odometer >= *value,
@@ -160,5 +160,37 @@ impl<'a> Sim<'a> {
             }
             C::Angle { .. } | C::RelativeAngle { .. } => false,
         }
+    }
+}
+
+/// (longitudinal, lateral) parts of a velocity in a frame turned by `h` (esmini's RotateVec2D
+/// by −h, as in Position::GetVelLong / GetVelLat).
+fn in_frame((vx, vy): (f64, f64), h: f64) -> (f64, f64) {
+    let (sin, cos) = h.sin_cos();
+    (vx * cos + vy * sin, -vx * sin + vy * cos)
+}
+
+/// A SpeedCondition's speed: the signed speed, or with a direction the velocity along the
+/// entity's own axes (esmini's TrigBySpeed::CheckCondition; vertical is 0 on our flat model).
+fn directed_speed(e: &crate::entities::Entity, direction: Option<openscenario::DirectionalDimension>) -> f64 {
+    use openscenario::DirectionalDimension as D;
+    match direction {
+        None => e.speed,
+        Some(D::Longitudinal) => in_frame(e.vel, e.h).0,
+        Some(D::Lateral) => in_frame(e.vel, e.h).1,
+        Some(D::Vertical) => 0.0,
+    }
+}
+
+/// A RelativeSpeedCondition's value: the speed difference, or with a direction the triggering
+/// entity's velocity in the reference entity's frame less the reference's own
+/// (esmini's TrigByRelativeSpeed::CheckCondition).
+fn relative_speed(e: &crate::entities::Entity, o: &crate::entities::Entity, direction: Option<openscenario::DirectionalDimension>) -> f64 {
+    use openscenario::DirectionalDimension as D;
+    match direction {
+        None => e.speed - o.speed,
+        Some(D::Longitudinal) => in_frame(e.vel, o.h).0 - in_frame(o.vel, o.h).0,
+        Some(D::Lateral) => in_frame(e.vel, o.h).1 - in_frame(o.vel, o.h).1,
+        Some(D::Vertical) => 0.0,
     }
 }
