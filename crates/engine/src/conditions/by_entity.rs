@@ -41,8 +41,13 @@ impl<'a> Sim<'a> {
             }
             _ => None,
         };
-        if let C::Angle { .. } | C::RelativeAngle { .. } = cond {
+        // esmini 3.6 reads no RelativeAngleCondition; its AngleCondition has no trajectory frame here
+        if let C::RelativeAngle { .. } | C::Angle { coordinate_system: Some(CoordinateSystem::Trajectory), .. } = cond {
             return self.warn_once(c, format!("{} is not supported; it never becomes true", cond.element_name()));
+        }
+        if let C::Angle { angle_type: openscenario::AngleType::Pitch | openscenario::AngleType::Roll, .. } = cond {
+            // said once; the condition is still evaluated, with the angle taken as 0
+            let _ = self.warn_once(c, "AngleCondition on pitch or roll: osc2cr's entities do not pitch or roll, the angle is taken as 0".into());
         }
         let mut result = false;
         c.hits.clear();
@@ -80,6 +85,26 @@ impl<'a> Sim<'a> {
         let t = self.time;
         match cond {
             C::Speed { value, rule, direction } => compare(directed_speed(e, *direction), *value, *rule),
+            C::Angle { angle_type, angle, tolerance, coordinate_system } => {
+                // esmini's TrigByAngle::CheckCondition: the angle in the frame (world by
+                // default), wrapped to [−π, π], within the tolerance of the value (SMALL_NUMBER
+                // slack). Pitch and roll are 0 on osc2cr's flat model.
+                let own = match angle_type {
+                    openscenario::AngleType::Heading => e.h,
+                    _ => 0.0,
+                };
+                let frame = match (angle_type, coordinate_system.unwrap_or(CoordinateSystem::World), self.net, e.lane) {
+                    (openscenario::AngleType::Heading, CoordinateSystem::Road, Some(net), Some(lp)) => lp.pose(net).map_or(0.0, |p| p.road_heading),
+                    (openscenario::AngleType::Heading, CoordinateSystem::Lane, Some(net), Some(lp)) => lp.pose(net).map_or(0.0, |p| {
+                        let along = net.roads.get(lp.road).is_none_or(|r| opendrive::drives_along_s(r.rule, lp.lane_id));
+                        p.road_heading + if along { 0.0 } else { std::f64::consts::PI }
+                    }),
+                    (_, CoordinateSystem::Entity, _, _) => own,
+                    _ => 0.0,
+                };
+                let current = crate::roads::road_follow::wrap(own - frame);
+                crate::roads::road_follow::wrap(current - angle).abs() < tolerance + SMALL
+            }
             C::RelativeClearance { entities, opposite_lanes, free_space, distance_forward, distance_backward, lane_ranges } => {
                 let (from, to) = lane_ranges.first().copied().unwrap_or((None, None));
                 let c = super::clearance::Clearance {
@@ -158,7 +183,7 @@ impl<'a> Sim<'a> {
                     }),
                 }
             }
-            C::Angle { .. } | C::RelativeAngle { .. } => false,
+            C::RelativeAngle { .. } => false,
         }
     }
 }
