@@ -1,7 +1,8 @@
 //! The grammar: a scenario is a map, one to three cars placed by Init positions of every kind,
 //! and a story of one to three events, each one action (speed, lane change, lane offset,
 //! teleport) with its dynamics, started by a condition (simulation time, traveled distance,
-//! speed, relative distance) with an edge, a delay and a priority. Every random choice comes
+//! speed, relative distance) with an edge, a delay and a priority; a car may be driven by
+//! esmini's ACC controller (override or additive mode). Every random choice comes
 //! from a ChaCha8 generator seeded with the seed and set to the scenario's index as its stream,
 //! so scenario `i` of a seed is always the same bytes, whatever else is generated.
 
@@ -217,12 +218,28 @@ pub fn generate(seed: u64, index: u64, maps: &[MapChoice]) -> Generated {
     }
     let mut init = String::new();
     let mut placed = Vec::new();
+    let mut controllers = Vec::new();
     for name in &names {
         let position = g.position(&placed);
         let speed = g.num(0.0, 30.0);
+        // a driver model: esmini's ACC controller, in override or additive mode, activated in Init
+        let acc = g.rng.gen_bool(0.2);
+        let (controller, activate) = if acc {
+            let mode = *g.pick(&["override", "additive"]);
+            g.feature(format!("controller:ACCController/{mode}"));
+            let gap = g.num(0.5, 2.0);
+            let set_speed = g.num(10.0, 30.0);
+            (
+                format!(r#"<ObjectController><Controller name="ACC{name}"><Properties><Property name="esminiController" value="ACCController"/><Property name="timeGap" value="{gap}"/><Property name="mode" value="{mode}"/><Property name="setSpeed" value="{set_speed}"/></Properties></Controller></ObjectController>"#),
+                r#"<PrivateAction><ControllerAction><ActivateControllerAction longitudinal="true" lateral="false"/></ControllerAction></PrivateAction>"#.to_string(),
+            )
+        } else {
+            (String::new(), String::new())
+        };
+        controllers.push(controller);
         let _ = write!(
             init,
-            r#"<Private entityRef="{name}"><PrivateAction><TeleportAction><Position>{position}</Position></TeleportAction></PrivateAction><PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="step" value="0" dynamicsDimension="time"/><SpeedActionTarget><AbsoluteTargetSpeed value="{speed}"/></SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction></Private>
+            r#"<Private entityRef="{name}"><PrivateAction><TeleportAction><Position>{position}</Position></TeleportAction></PrivateAction><PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="step" value="0" dynamicsDimension="time"/><SpeedActionTarget><AbsoluteTargetSpeed value="{speed}"/></SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction>{activate}</Private>
 "#
         );
         placed.push(name.clone());
@@ -248,7 +265,7 @@ pub fn generate(seed: u64, index: u64, maps: &[MapChoice]) -> Generated {
         );
     }
     let stop = g.num(6.0, 15.0);
-    let entities: String = names.iter().map(|n| format!(r#"<ScenarioObject name="{n}">{CAR}</ScenarioObject>"#)).collect();
+    let entities: String = names.iter().zip(&controllers).map(|(n, c)| format!(r#"<ScenarioObject name="{n}">{CAR}{c}</ScenarioObject>"#)).collect();
     let name = format!("s{seed}_{index:05}");
     let xosc = format!(
         r#"<?xml version="1.0" encoding="UTF-8"?>

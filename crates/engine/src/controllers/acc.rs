@@ -38,6 +38,12 @@ pub struct AccRt {
 }
 
 impl AccRt {
+    /// Active in override mode: it owns the longitudinal domain (esmini's
+    /// IsControllerModeOnDomains(MODE_OVERRIDE, DOMAIN_MASK_LONG)).
+    pub fn overrides_longitudinal(&self) -> bool {
+        self.active && self.override_mode
+    }
+
     pub fn new(c: &Controller) -> AccRt {
         let num = |n: &str| c.properties.get(n).and_then(|v| v.trim().parse::<f64>().ok());
         AccRt {
