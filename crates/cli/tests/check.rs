@@ -1,5 +1,5 @@
 //! `osc2cr check`: findings with severity and file:line:col, exit 2 on an error, JSON for tools,
-//! and no error on the corpus except the one scenario whose catalogs are not shipped.
+//! and no error on the corpus (the one scenario whose catalogs are not shipped gets a warning).
 
 mod common;
 use common::*;
@@ -36,14 +36,17 @@ fn every_reference_problem_of_a_file_is_listed_with_its_position() {
 }
 
 #[test]
-fn the_corpus_has_no_error_but_its_missing_catalogs() {
+fn the_corpus_has_no_error_and_its_missing_catalogs_are_warned() {
     let Some(shared) = testkit::shared_dir() else { return };
     let r = osc2cr(&["check", s(&shared.join("corpus")), "--json"]);
+    assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
     let json: serde_json::Value = serde_json::from_slice(&r.stdout).expect("json");
-    let errors: Vec<String> = json.as_array().expect("array").iter().filter(|f| f["severity"] == "error").map(|f| format!("{}: {}", f["file"], f["message"])).collect();
-    // car_walk names catalogs (openx assets) the corpus does not ship
-    assert_eq!(errors.len(), 1, "{errors:#?}");
-    assert!(errors[0].contains("car_walk.xosc") && errors[0].contains("catalog"), "{errors:?}");
+    let findings = json.as_array().expect("array");
+    let errors: Vec<String> = findings.iter().filter(|f| f["severity"] == "error").map(|f| format!("{}: {}", f["file"], f["message"])).collect();
+    assert!(errors.is_empty(), "{errors:#?}");
+    // car_walk names catalogs (openx assets) the corpus does not ship: said, not an error
+    let car_walk = findings.iter().find(|f| f["file"].as_str().is_some_and(|p| p.ends_with("car_walk.xosc")) && f["message"].as_str().is_some_and(|m| m.contains("catalog") && m.contains("not found")));
+    assert!(car_walk.is_some_and(|f| f["severity"] == "warning"), "{car_walk:?}");
 }
 
 #[test]

@@ -18,6 +18,7 @@ pub mod model;
 mod params;
 mod read;
 pub mod references;
+pub mod validate;
 mod xml;
 
 pub use attr::XmlEnum;

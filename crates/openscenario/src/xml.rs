@@ -145,6 +145,8 @@ fn convert(node: roxmltree::Node, lc: &mut LineCounter, depth: usize, file: &Arc
     }
     let attrs = node
         .attributes()
+        // `xsi:noNamespaceSchemaLocation` and the like belong to XML tooling, not to the format.
+        .filter(|a| a.namespace().is_none())
         .map(|a| Attr { name: a.name().to_string(), value: a.value().to_string(), pos: lc.pos(a.range_value().start) })
         .collect();
     let mut children = Vec::new();
