@@ -109,10 +109,20 @@ fn warn<T: ToString>(out: &mut Vec<StageWarning>, stage: Stage, list: &[T]) {
     }));
 }
 
+/// Which kind of problems a strict reading rejects, for the error's first line.
+#[derive(Clone, Copy)]
+enum Problems {
+    /// The file against the schema of its declared version (`openscenario::validate`).
+    Schema,
+    /// References to what does not exist, distributions that cannot be sampled.
+    References,
+}
+
 /// Problems a strict reading rejects: an error listing every one (file:line:col each) by
 /// default, warnings with `--lenient`.
 fn strict<T: ToString>(
     problems: &[T],
+    what: Problems,
     stage: Stage,
     options: &ConvertOptions,
     warnings: &mut Vec<StageWarning>,
@@ -126,14 +136,16 @@ fn strict<T: ToString>(
     }
     let list: Vec<String> = problems.iter().map(ToString::to_string).collect();
     let n = list.len();
+    let s = if n == 1 { "" } else { "s" };
+    let header = match what {
+        Problems::Schema => format!("{n} error{s} against the OpenSCENARIO schema"),
+        Problems::References => {
+            format!("{n} reference{s} to what does not exist or value{s} that cannot be used")
+        }
+    };
     Err(fail(
         stage,
-        format!(
-            "{n} reference{} to what does not exist or value{} that cannot be used (--lenient reads them as warnings):\n{}",
-            if n == 1 { "" } else { "s" },
-            if n == 1 { "" } else { "s" },
-            list.join("\n")
-        ),
+        format!("{header} (--lenient reads them as warnings):\n{}", list.join("\n")),
     ))
 }
 
@@ -154,10 +166,18 @@ fn run(
         parameters,
         seed: options.seed,
     };
+    // The schema pass first (the same as `osc2cr check`): what is wrong with the file itself,
+    // all of it. Its warnings (deprecations, version mixtures) are `check`'s to list.
+    let schema_errors: Vec<String> = openscenario::validate::validate_file(request.path, &load_options.parameters)
+        .into_iter()
+        .filter(|f| f.severity == openscenario::validate::Severity::Error)
+        .map(|f| format!("{}: {}", f.location, f.message))
+        .collect();
+    strict(&schema_errors, Problems::Schema, Stage::Load, options, warnings)?;
     let loaded = openscenario::load(request.path, &load_options)
         .map_err(|e| fail(Stage::Load, e.to_string()))?;
     warn(warnings, Stage::Load, &loaded.warnings);
-    strict(&loaded.problems, Stage::Load, options, warnings)?;
+    strict(&loaded.problems, Problems::References, Stage::Load, options, warnings)?;
     let scenario: Scenario = match loaded.content {
         Content::Scenario(s) => *s,
         Content::Distribution(_) => {
@@ -189,7 +209,7 @@ fn run(
         }
     };
     timings.road_network_ms = ms(t);
-    strict(&engine::road_references(&scenario, road.as_ref()), Stage::RoadNetwork, options, warnings)?;
+    strict(&engine::road_references(&scenario, road.as_ref()), Problems::References, Stage::RoadNetwork, options, warnings)?;
     let t = Instant::now();
     let (mut lanelets, map_tags, light_of_signal): (Option<LaneletNetwork>, _, _) = match &road {
         Some(r) => {

@@ -20,26 +20,12 @@ pub struct Position {
 
 /// Splits `path:line:col: detail` (the path may itself contain `:`); else `path: detail` when
 /// the message starts with `fallback` (the file converted); else no file is known from the text
-/// and `fallback` is the file.
+/// and `fallback` is the file. A strict reading's error lists its problems one a line under a
+/// header: the first line that starts with a position gives it.
 pub fn position(message: &str, fallback: &Path) -> Position {
-    // the first ":<digits>:<digits>: " marks the end of the path
-    let bytes = message.as_bytes();
-    let mut i = 0;
-    while let Some(off) = message[i..].find(':') {
-        let start = i + off;
-        if let Some((line, col, rest)) = numbers_after(&message[start + 1..]) {
-            if start > 0 {
-                return Position {
-                    file: message[..start].to_string(),
-                    line: Some(line),
-                    column: Some(col),
-                    detail: rest.to_string(),
-                };
-            }
-        }
-        i = start + 1;
-        if i >= bytes.len() {
-            break;
+    for line_text in message.lines() {
+        if let Some(p) = line_position(line_text) {
+            return p;
         }
     }
     let file = fallback.display().to_string();
@@ -53,6 +39,29 @@ pub fn position(message: &str, fallback: &Path) -> Position {
         column: None,
         detail: detail.to_string(),
     }
+}
+
+/// `path:line:col: detail` at the start of one line; the first `:<digits>:<digits>:` ends the path.
+fn line_position(text: &str) -> Option<Position> {
+    let mut i = 0;
+    while let Some(off) = text[i..].find(':') {
+        let start = i + off;
+        if let Some((line, col, rest)) = numbers_after(&text[start + 1..]) {
+            if start > 0 {
+                return Some(Position {
+                    file: text[..start].to_string(),
+                    line: Some(line),
+                    column: Some(col),
+                    detail: rest.to_string(),
+                });
+            }
+        }
+        i = start + 1;
+        if i >= text.len() {
+            break;
+        }
+    }
+    None
 }
 
 /// `"12:5: rest"` → (12, 5, "rest").
