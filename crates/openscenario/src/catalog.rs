@@ -60,7 +60,7 @@ pub(crate) struct Found {
 
 impl Found {
     pub fn elem(&self) -> Option<&Elem> {
-        self.doc.root.child("Catalog").and_then(|c| c.children.get(self.entry))
+        self.doc.root.child("Catalog").and_then(|c| c.children().get(self.entry))
     }
 }
 
@@ -100,6 +100,11 @@ impl CatalogStore {
             }
         }
         self.dirs.push(Dir { kind, path });
+    }
+
+    /// The catalog files parsed so far, in path order.
+    pub fn documents(&self) -> impl Iterator<Item = &Doc> + '_ {
+        self.files.values().filter_map(|d| d.as_deref())
     }
 
     fn listing(&mut self, dir: &Path) -> Vec<PathBuf> {
@@ -180,7 +185,8 @@ impl CatalogStore {
                 catalog_found.get_or_insert_with(|| f.clone());
                 let cat = doc.root.child("Catalog");
                 let idx = cat.and_then(|c| {
-                    c.children.iter().position(|e| e.attr("name").is_some_and(|a| a.value == entry))
+                    // looking for the entry is not reading the others
+                    c.children_unmarked().iter().position(|e| e.attrs.iter().any(|a| a.name == "name" && a.value == entry))
                 });
                 if let Some(i) = idx {
                     return Ok(Found { doc, entry: i });

@@ -38,7 +38,7 @@ pub(crate) fn read_catalog_file(r: &mut Reader, file: &Arc<Path>, cat: &Elem) ->
     let scope = Scope::default();
     let cx = Cx::new(file.clone(), &scope);
     let mut entries = Vec::new();
-    for e in &cat.children {
+    for e in cat.children() {
         if let Some(entry) = crate::read::read_catalog_entry(r, &cx, e)? {
             entries.push(entry);
         }

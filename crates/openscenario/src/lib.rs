@@ -18,6 +18,7 @@ pub mod model;
 mod params;
 mod read;
 pub mod references;
+mod unread;
 pub mod validate;
 mod xml;
 
@@ -29,3 +30,4 @@ pub use error::{Error, ErrorKind, Location, Warning};
 pub use load::{load, load_scenario, load_str, Content, LoadOptions, Loaded};
 pub use model::*;
 pub use params::{ParameterDeclaration, ParameterType};
+pub use unread::NO_BEARING;

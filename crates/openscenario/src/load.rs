@@ -93,5 +93,10 @@ fn load_doc(path: &Path, doc: Doc, options: &LoadOptions) -> Result<Loaded, Erro
             "expected a Storyboard (scenario), a ParameterValueDistribution or a Catalog in <OpenSCENARIO>",
         ));
     };
+    // What the reader never asked for is ignored: say so (`unread.rs`).
+    reader.warnings.extend(crate::unread::report_document(&doc));
+    for catalog in reader.catalogs.documents() {
+        reader.warnings.extend(crate::unread::report_catalog(catalog));
+    }
     Ok(Loaded { content, warnings: reader.warnings, problems: reader.problems })
 }

@@ -184,7 +184,7 @@ pub(crate) fn read_declarations(
 ) -> Result<Vec<ParameterDeclaration>, Error> {
     let mut raws: Vec<RawDecl> = Vec::new();
     if let Some(el) = el {
-        for d in &el.children {
+        for d in el.children() {
             let (name_attr, type_attr) = match d.name.as_str() {
                 "ParameterDeclaration" => ("name", "parameterType"),
                 "VariableDeclaration" => ("name", "variableType"),

@@ -3,6 +3,7 @@
 //! without borrowing the source text.
 
 use crate::error::{Error, ErrorKind, Location};
+use std::cell::Cell;
 use std::path::Path;
 use std::sync::Arc;
 
@@ -22,14 +23,19 @@ pub(crate) struct Attr {
     pub value: String,
     /// Position of the first character of the value (inside the quotes).
     pub pos: Pos,
+    /// Set when the reader asks for it: what no reader asked for is reported as ignored
+    /// (`unread.rs`).
+    pub read: Cell<bool>,
 }
 
 #[derive(Debug)]
 pub(crate) struct Elem {
     pub name: String,
     pub attrs: Vec<Attr>,
-    pub children: Vec<Elem>,
+    children: Vec<Elem>,
     pub pos: Pos,
+    /// Set when the reader looks into the element (an attribute, a child, its children).
+    pub read: Cell<bool>,
 }
 
 /// A parsed file.
@@ -41,17 +47,48 @@ pub(crate) struct Doc {
 
 impl Elem {
     pub fn attr(&self, name: &str) -> Option<&Attr> {
-        self.attrs.iter().find(|a| a.name == name)
+        self.read.set(true);
+        let a = self.attrs.iter().find(|a| a.name == name)?;
+        a.read.set(true);
+        Some(a)
     }
     pub fn child(&self, name: &str) -> Option<&Elem> {
-        self.children.iter().find(|c| c.name == name)
+        self.read.set(true);
+        let c = self.children.iter().find(|c| c.name == name)?;
+        c.read.set(true);
+        Some(c)
     }
     pub fn children_named<'a>(&'a self, name: &'a str) -> impl Iterator<Item = &'a Elem> + 'a {
-        self.children.iter().filter(move |c| c.name == name)
+        self.read.set(true);
+        self.children.iter().filter(move |c| c.name == name).inspect(|c| c.read.set(true))
     }
     /// The first child element (for XSD choices).
     pub fn first_child(&self) -> Option<&Elem> {
-        self.children.first()
+        self.read.set(true);
+        let c = self.children.first()?;
+        c.read.set(true);
+        Some(c)
+    }
+    /// Every child element; a child counts as read only once the reader looks into it.
+    pub fn children(&self) -> &[Elem] {
+        self.read.set(true);
+        &self.children
+    }
+    /// Marks the element and all it holds as read: for content the reader has already warned
+    /// about as a whole (an unsupported element), so it is not reported twice.
+    pub fn announce(&self) {
+        self.read.set(true);
+        for a in &self.attrs {
+            a.read.set(true);
+        }
+        for c in &self.children {
+            c.announce();
+        }
+    }
+    /// The children without marking anything read (checks that only look, such as the schema
+    /// pass and the report of what was not read).
+    pub fn children_unmarked(&self) -> &[Elem] {
+        &self.children
     }
 }
 
@@ -147,11 +184,16 @@ fn convert(node: roxmltree::Node, lc: &mut LineCounter, depth: usize, file: &Arc
         .attributes()
         // `xsi:noNamespaceSchemaLocation` and the like belong to XML tooling, not to the format.
         .filter(|a| a.namespace().is_none())
-        .map(|a| Attr { name: a.name().to_string(), value: a.value().to_string(), pos: lc.pos(a.range_value().start) })
+        .map(|a| Attr {
+            name: a.name().to_string(),
+            value: a.value().to_string(),
+            pos: lc.pos(a.range_value().start),
+            read: Cell::new(false),
+        })
         .collect();
     let mut children = Vec::new();
     for c in node.children().filter(|c| c.is_element()) {
         children.push(convert(c, lc, depth + 1, file)?);
     }
-    Ok(Elem { name: node.tag_name().name().to_string(), attrs, children, pos })
+    Ok(Elem { name: node.tag_name().name().to_string(), attrs, children, pos, read: Cell::new(false) })
 }

@@ -31,7 +31,7 @@ pub(crate) fn read_distribution(
     let _ = root;
     let kind = if let Some(det) = d.child("Deterministic") {
         let mut factors = Vec::new();
-        for f in &det.children {
+        for f in det.children() {
             match f.name.as_str() {
                 "DeterministicMultiParameterDistribution" => {
                     let vsd = cx.child(f, "ValueSetDistribution")?;

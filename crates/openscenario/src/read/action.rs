@@ -114,8 +114,9 @@ pub(crate) fn read_private_action(r: &mut Reader, cx: &Cx, wrapper: &Elem) -> Re
         "SynchronizeAction" => synchronize(r, cx, e)?,
         "ActivateControllerAction" => activate_controller(cx, e)?,
         "ControllerAction" => {
-            if e.children.len() > 1 {
-                for extra in e.children.iter().skip(1) {
+            if e.children().len() > 1 {
+                for extra in e.children().iter().skip(1) {
+                    extra.announce();
                     r.warn(cx.loc(extra.pos), format!("<{}> after the first ControllerAction child is ignored", extra.name));
                 }
             }
@@ -130,7 +131,7 @@ pub(crate) fn read_private_action(r: &mut Reader, cx: &Cx, wrapper: &Elem) -> Re
                     activate_animation: cx.opt_bool(c, "activateAnimation")?,
                 },
                 "OverrideControllerValueAction" => PrivateAction::OverrideControllerValue(
-                    c.children
+                    c.children()
                         .iter()
                         .map(|v| {
                             let value = match cx.opt_f64(v, "value")? {
@@ -262,7 +263,7 @@ fn activate_controller(cx: &Cx, e: &Elem) -> Result<PrivateAction, Error> {
 
 fn steady_state(cx: &Cx, e: &Elem) -> Result<Option<SteadyState>, Error> {
     // 1.1+ wraps it in <SteadyState>; esmini's earlier extension puts it directly inside.
-    let direct = e.children.iter().find(|c| c.name == "TargetDistanceSteadyState" || c.name == "TargetTimeSteadyState");
+    let direct = e.children().iter().find(|c| c.name == "TargetDistanceSteadyState" || c.name == "TargetTimeSteadyState");
     let Some(s) = e.child("SteadyState").and_then(|s| s.first_child()).or(direct) else { return Ok(None) };
     Ok(match s.name.as_str() {
         "TargetDistanceSteadyState" => Some(SteadyState::Distance(cx.f64(s, "distance")?)),
@@ -303,7 +304,7 @@ fn follow_trajectory(r: &mut Reader, cx: &Cx, c: &Elem) -> Result<PrivateAction,
         // 1.0 form: Trajectory or CatalogReference directly inside the action.
         None => {
             let inner = c
-                .children
+                .children()
                 .iter()
                 .find(|x| x.name == "Trajectory" || x.name == "CatalogReference")
                 .ok_or_else(|| {

@@ -10,7 +10,7 @@ use crate::xml::Elem;
 /// A StartTrigger / StopTrigger element.
 pub(crate) fn read_trigger(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<Trigger, Error> {
     let mut groups = Vec::new();
-    for g in &e.children {
+    for g in e.children() {
         if g.name != "ConditionGroup" {
             r.unsupported(cx, g, &e.name);
             continue;

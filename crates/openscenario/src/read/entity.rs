@@ -12,7 +12,7 @@ const OBJECT_KINDS: &[CatalogKind] = &[CatalogKind::Vehicle, CatalogKind::Pedest
 pub(crate) fn read_entities(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<(Vec<Entity>, Vec<EntitySelection>), Error> {
     let mut entities: Vec<Entity> = Vec::new();
     let mut selections = Vec::new();
-    for c in &e.children {
+    for c in e.children() {
         match c.name.as_str() {
             "ScenarioObject" => {
                 let ent = read_scenario_object(r, cx, c)?;
@@ -33,7 +33,7 @@ pub(crate) fn read_scenario_object(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<
     let name = cx.text(e, "name")?;
     let mut object = None;
     let mut controllers = Vec::new();
-    for c in &e.children {
+    for c in e.children() {
         match c.name.as_str() {
             "ObjectController" => {
                 if let Some(ctrl) = read_object_controller(r, cx, c)? {
@@ -175,7 +175,7 @@ fn read_axle(cx: &Cx, e: &Elem) -> Result<Axle, Error> {
 pub(crate) fn read_properties(cx: &Cx, e: Option<&Elem>) -> Result<Properties, Error> {
     let mut p = Properties::default();
     if let Some(e) = e {
-        for c in &e.children {
+        for c in e.children() {
             match c.name.as_str() {
                 "Property" => p.properties.push((cx.text(c, "name")?, cx.text(c, "value")?)),
                 "File" => p.files.push(cx.text(c, "filepath")?),
@@ -213,7 +213,7 @@ pub(crate) fn read_object_controller(r: &mut Reader, cx: &Cx, e: &Elem) -> Resul
 fn read_selection(cx: &Cx, e: &Elem) -> Result<EntitySelection, Error> {
     let mut members = Vec::new();
     if let Some(m) = e.child("Members") {
-        for c in &m.children {
+        for c in m.children() {
             match c.name.as_str() {
                 "EntityRef" => members.push(SelectionMember::Entity(cx.text(c, "entityRef")?)),
                 "ByType" => members.push(SelectionMember::ByType(cx.enum_(c, "objectType")?)),

@@ -40,6 +40,7 @@ impl Reader {
 
     /// Records an element the model does not represent yet.
     pub fn unsupported(&mut self, cx: &Cx, e: &Elem, parent: &str) {
+        e.announce();
         self.warn(cx.loc(e.pos), format!("<{}> in {parent} is not supported yet; it is kept as a placeholder", e.name));
     }
 

@@ -38,7 +38,7 @@ pub(crate) fn read_scenario(
         read_declarations(root.child("VariableDeclarations"), &scope, &[], file, &mut r.warnings)?;
 
     if let Some(cl) = root.child("CatalogLocations") {
-        for k in &cl.children {
+        for k in cl.children() {
             let Some(kind) = crate::attr::parse_enum::<CatalogKind>(&k.name) else {
                 r.unsupported(&cx, k, "CatalogLocations");
                 continue;
@@ -71,7 +71,7 @@ pub(crate) fn read_scenario(
         None => (Vec::new(), Vec::new()),
     };
     let storyboard = read_storyboard(r, &cx, cx.child(root, "Storyboard")?)?;
-    for c in &root.children {
+    for c in root.children() {
         if !matches!(
             c.name.as_str(),
             "FileHeader" | "ParameterDeclarations" | "VariableDeclarations" | "CatalogLocations" | "RoadNetwork" | "Entities" | "Storyboard"

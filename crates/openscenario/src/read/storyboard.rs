@@ -12,7 +12,7 @@ use crate::xml::Elem;
 pub(crate) fn read_storyboard(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<Storyboard, Error> {
     let mut init = Init::default();
     if let Some(actions) = e.child("Init").and_then(|i| i.child("Actions")) {
-        for a in &actions.children {
+        for a in actions.children() {
             match a.name.as_str() {
                 "GlobalAction" | "UserDefinedAction" => {
                     init.global.push(Action { name: String::new(), kind: read_action_kind(r, cx, a)?, origin: cx.loc(a.pos) })
@@ -20,7 +20,7 @@ pub(crate) fn read_storyboard(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<Story
                 "Private" => {
                     let entity = cx.text(a, "entityRef")?;
                     let mut list = Vec::new();
-                    for p in &a.children {
+                    for p in a.children() {
                         if p.name == "PrivateAction" {
                             list.push(Action { name: String::new(), kind: read_private_action(r, cx, p)?, origin: cx.loc(p.pos) });
                         } else {
@@ -71,7 +71,7 @@ fn read_group(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<ManeuverGroup, Error>
         None => (false, Vec::new()),
     };
     let mut maneuvers = Vec::new();
-    for m in &e.children {
+    for m in e.children() {
         match m.name.as_str() {
             "Maneuver" => maneuvers.push(read_maneuver(r, cx, m, &[])?),
             "CatalogReference" => maneuvers.push(r.catalog_entry(cx, m, &[CatalogKind::Maneuver], read_maneuver)?),
@@ -99,7 +99,7 @@ pub(crate) fn read_maneuver(r: &mut Reader, cx: &Cx, e: &Elem, asg: &[(String, S
         // (ScenarioReader::parseOSCManeuver adds nothing for it); so do we, and say so.
         let mut actions = Vec::new();
         for a in ev.children_named("Action") {
-            if a.children.is_empty() {
+            if a.children().is_empty() {
                 let name = cx.opt_text(a, "name")?.unwrap_or_default();
                 r.warn(cx.loc(a.pos), format!("Action '{name}' has no PrivateAction, GlobalAction or UserDefinedAction: it does nothing (as in esmini)"));
                 continue;

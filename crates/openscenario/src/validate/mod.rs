@@ -158,7 +158,7 @@ impl Walker {
         }
 
         // Content: against the declared version; an element another version accepts is a warning.
-        let names: Vec<&str> = el.children.iter().map(|c| c.name.as_str()).collect();
+        let names: Vec<&str> = el.children_unmarked().iter().map(|c| c.name.as_str()).collect();
         let mut content_schema = schema;
         let problems = match_children(schema, ty, &names);
         if !problems.is_empty() {
@@ -179,7 +179,7 @@ impl Walker {
         }
         let Some(content_ty) = content_schema.complex_type(type_name) else { return };
         let children = content_schema.child_elements(content_ty);
-        for child in &el.children {
+        for child in el.children_unmarked() {
             let Some(decl) = children.iter().find(|d| d.name == child.name) else { continue };
             if decl.deprecated {
                 let since = deprecated_since(|s| {
@@ -199,11 +199,11 @@ impl Walker {
         for p in problems {
             match p {
                 ContentProblem::Unknown { child } => {
-                    let c = &el.children[*child];
+                    let c = &el.children_unmarked()[*child];
                     self.push(Severity::Error, c.pos, format!("unknown element <{}> in <{}>", c.name, el.name));
                 }
                 ContentProblem::NotAllowedHere { child } => {
-                    let c = &el.children[*child];
+                    let c = &el.children_unmarked()[*child];
                     self.push(
                         Severity::Error,
                         el.pos,
