@@ -90,3 +90,18 @@ fn an_acquire_position_route_is_followed_like_an_assigned_one() {
     let e = at(&run, "Ego", 7.02);
     assert!(close(e.speed, 0.0, 1e-12) && close(e.x, 150.273861, 1e-5) && close(e.y, -5.25, 1e-9), "{e:?}");
 }
+
+#[test]
+fn test_mode_stops_for_good_when_the_init_speed_step_has_a_time_span() {
+    // follow_route_lane_change with the Init SpeedAction a step "over 1 s": esmini reads a
+    // step's span as 0 (ScenarioReader::ParseTransitionDynamics), so the action has ended at
+    // time 0 and nothing speeds Ego up again after test mode stops it. esmini: the same trace
+    // as follow_route_lane_change, 0 m/s at x 150.273861 from 7.02 s to the end.
+    let run = run_fixture("follow_route_step_speed.xosc");
+    assert!(run.warnings.is_empty(), "{:?}", run.warnings);
+    assert!(close(at(&run, "Ego", 7.01).speed, 20.0, 1e-12));
+    for t in [7.02, 9.0, 11.0] {
+        let e = at(&run, "Ego", t);
+        assert!(close(e.speed, 0.0, 1e-12) && close(e.x, 150.273861, 1e-5), "{t}: {e:?}");
+    }
+}

@@ -92,16 +92,19 @@ impl<'a> Sim<'a> {
         let Some((speed, max_speed, max_acc, max_dec)) = self.entities.get(e).map(|x| (x.speed, x.max_speed, x.max_acc, x.max_dec)) else {
             return ActionRt::Done;
         };
-        let mut t = Transition::new(dyn_.shape, dyn_.dimension, dyn_.value);
+        // esmini's ScenarioReader::ParseTransitionDynamics reads a step's value as 0 whatever
+        // the file says: a step with a time or distance still ends in its first step.
+        let value = if dyn_.shape == DynamicsShape::Step { 0.0 } else { dyn_.value };
+        let mut t = Transition::new(dyn_.shape, dyn_.dimension, value);
         if dyn_.dimension != DynamicsDimension::Rate {
             // esmini keeps the span as given: zero means "at once" (see `evaluate`).
-            t.param_target = dyn_.value;
+            t.param_target = value;
         }
         t.set_start(speed);
         let v1 = target.value(&self.entities);
         if dyn_.dimension == DynamicsDimension::Distance {
             // The shape runs over time: the time that covers the distance.
-            let (v0, dist) = (speed, dyn_.value);
+            let (v0, dist) = (speed, value);
             let span = if (v1 - v0).abs() < SMALL_NUMBER {
                 0.0
             } else if v0.abs() > SMALL_NUMBER && v1.abs() > SMALL_NUMBER && sign(v0) != sign(v1) {
