@@ -74,6 +74,11 @@ fn evaluate(t: &Transition) -> f64 {
 impl<'a> Sim<'a> {
     /// esmini's LongSpeedAction::Start.
     pub(super) fn start_speed(&mut self, slot: usize, e: usize, dyn_: &TransitionDynamics, target: &SpeedTarget) -> ActionRt {
+        if self.longitudinal_overridden(e) {
+            // esmini's LongSpeedAction::Start: a controller in override mode drives the
+            // entity's speed; the action ends at once and changes nothing.
+            return ActionRt::EndedAtStart;
+        }
         let target = match target {
             SpeedTarget::Absolute { value } => Target::Absolute(*value),
             SpeedTarget::Relative { entity, value, value_type, continuous } => match self.entity_index(entity) {
@@ -129,6 +134,10 @@ impl<'a> Sim<'a> {
 
     /// One step (esmini's LongSpeedAction::Step); true when the action is done.
     pub(super) fn step_speed(&mut self, e: usize, s: &mut SpeedRt) -> bool {
+        if self.longitudinal_overridden(e) {
+            // esmini's LongSpeedAction::Step: ends once a controller overrides the speed.
+            return true;
+        }
         let Some(en) = self.entities.get(e) else { return true };
         let (max_speed, max_acc, max_dec, cur) = (en.max_speed, en.max_acc, en.max_dec, en.speed);
         let dt = self.dt;
