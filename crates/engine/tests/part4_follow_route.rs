@@ -90,3 +90,53 @@ fn an_acquire_position_route_is_followed_like_an_assigned_one() {
     let e = at(&run, "Ego", 7.02);
     assert!(close(e.speed, 0.0, 1e-12) && close(e.x, 150.273861, 1e-5) && close(e.y, -5.25, 1e-9), "{e:?}");
 }
+
+#[test]
+fn test_mode_stops_for_good_when_the_init_speed_step_has_a_time_span() {
+    // follow_route_lane_change with the Init SpeedAction a step "over 1 s": esmini reads a
+    // step's span as 0 (ScenarioReader::ParseTransitionDynamics), so the action has ended at
+    // time 0 and nothing speeds Ego up again after test mode stops it. esmini: the same trace
+    // as follow_route_lane_change, 0 m/s at x 150.273861 from 7.02 s to the end.
+    let run = run_fixture("follow_route_step_speed.xosc");
+    assert!(run.warnings.is_empty(), "{:?}", run.warnings);
+    assert!(close(at(&run, "Ego", 7.01).speed, 20.0, 1e-12));
+    for t in [7.02, 9.0, 11.0] {
+        let e = at(&run, "Ego", t);
+        assert!(close(e.speed, 0.0, 1e-12) && close(e.x, 150.273861, 1e-5), "{t}: {e:?}");
+    }
+}
+
+#[test]
+fn a_speed_action_started_during_the_route_lane_change_ends_at_once() {
+    // follow_route_lane_change with a SpeedAction (linear over 4 s to 28 m/s) at t > 1, while
+    // the 3 s lane change runs: esmini's controller is in override mode during its change, so
+    // LongSpeedAction::Start ends the action at once (esmini's log: FasterAction start and
+    // end at 1.01 s) and Ego keeps 20 m/s: the same trace as without it (x 39.939033 at
+    // 1.5 s, 109.873861 at 5 s, stopped at 150.273861 from 7.02 s).
+    let run = run_fixture("follow_route_speed_during_change.xosc");
+    assert!(run.warnings.is_empty(), "{:?}", run.warnings);
+    let e = at(&run, "Ego", 1.5);
+    assert!(close(e.speed, 20.0, 1e-12) && close(e.x, 39.939033, 1e-5) && close(e.y, -3.463351, 1e-5), "{e:?}");
+    let e = at(&run, "Ego", 5.0);
+    assert!(close(e.speed, 20.0, 1e-12) && close(e.x, 109.873861, 1e-5), "{e:?}");
+    let e = at(&run, "Ego", 7.02);
+    assert!(close(e.speed, 0.0, 1e-12) && close(e.x, 150.273861, 1e-5), "{e:?}");
+}
+
+#[test]
+fn a_running_speed_action_ends_when_the_route_lane_change_starts() {
+    // follow_route_blocked with a SpeedAction for Ego (linear over 4 s to 28 m/s) from 1.51 s:
+    // it speeds Ego up until the controller starts its lane change, then esmini's
+    // LongSpeedAction::Step ends it (esmini's log: LaneChange start and FasterAction end at
+    // 1.93 s) and Ego keeps 20.84 m/s. esmini: x 48.7806 at 1.93 s, 71.051665 (y −2.738346)
+    // at 3 s, 112.63836 at 5 s; test mode stops Ego at x 150.35876.
+    let run = run_fixture("follow_route_speed_ends_at_change.xosc");
+    assert!(run.warnings.is_empty(), "{:?}", run.warnings);
+    let e = at(&run, "Ego", 1.93);
+    assert!(close(e.speed, 20.84, 1e-9) && close(e.x, 48.7806, 1e-6) && close(e.y, -1.75, 1e-12), "{e:?}");
+    let e = at(&run, "Ego", 3.0);
+    assert!(close(e.speed, 20.84, 1e-9) && close(e.x, 71.051665, 1e-5) && close(e.y, -2.738346, 1e-5), "{e:?}");
+    assert!(close(at(&run, "Ego", 5.0).x, 112.63836, 1e-5));
+    let e = at(&run, "Ego", 10.0);
+    assert!(close(e.speed, 0.0, 1e-12) && close(e.x, 150.35876, 1e-5), "{e:?}");
+}

@@ -39,6 +39,9 @@ pub enum ActionRt {
     LatDistance(Box<lat_distance::LatDistanceRt>),
     /// Nothing left to do.
     Done,
+    /// Ended in its start, as esmini's actions that call `OSCAction::End` from `Start`: the
+    /// action is complete before the triggers later in the storyboard are evaluated.
+    EndedAtStart,
 }
 
 #[derive(Debug, Clone)]
@@ -139,6 +142,10 @@ impl<'a> Sim<'a> {
                         ActionRt::Done
                     };
                     self.actions[slot].instances.push(Instance { entity: Some(e), rt });
+                }
+                let instances = &self.actions[slot].instances;
+                if !instances.is_empty() && instances.iter().all(|i| matches!(i.rt, ActionRt::EndedAtStart)) {
+                    self.end_element(node);
                 }
             }
             ActionKind::Global(g) => {
@@ -265,7 +272,7 @@ impl<'a> Sim<'a> {
                 ActionRt::Synchronize(y) => self.step_synchronize(e, y),
                 ActionRt::LongDistance(d) => self.step_long_distance(e, d),
                 ActionRt::LatDistance(d) => self.step_lat_distance(e, d),
-                ActionRt::Done => true,
+                ActionRt::Done | ActionRt::EndedAtStart => true,
             };
             if !done {
                 all_done = false;

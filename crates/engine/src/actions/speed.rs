@@ -74,6 +74,11 @@ fn evaluate(t: &Transition) -> f64 {
 impl<'a> Sim<'a> {
     /// esmini's LongSpeedAction::Start.
     pub(super) fn start_speed(&mut self, slot: usize, e: usize, dyn_: &TransitionDynamics, target: &SpeedTarget) -> ActionRt {
+        if self.longitudinal_overridden(e) {
+            // esmini's LongSpeedAction::Start: a controller in override mode drives the
+            // entity's speed; the action ends at once and changes nothing.
+            return ActionRt::EndedAtStart;
+        }
         let target = match target {
             SpeedTarget::Absolute { value } => Target::Absolute(*value),
             SpeedTarget::Relative { entity, value, value_type, continuous } => match self.entity_index(entity) {
@@ -92,16 +97,19 @@ impl<'a> Sim<'a> {
         let Some((speed, max_speed, max_acc, max_dec)) = self.entities.get(e).map(|x| (x.speed, x.max_speed, x.max_acc, x.max_dec)) else {
             return ActionRt::Done;
         };
-        let mut t = Transition::new(dyn_.shape, dyn_.dimension, dyn_.value);
+        // esmini's ScenarioReader::ParseTransitionDynamics reads a step's value as 0 whatever
+        // the file says: a step with a time or distance still ends in its first step.
+        let value = if dyn_.shape == DynamicsShape::Step { 0.0 } else { dyn_.value };
+        let mut t = Transition::new(dyn_.shape, dyn_.dimension, value);
         if dyn_.dimension != DynamicsDimension::Rate {
             // esmini keeps the span as given: zero means "at once" (see `evaluate`).
-            t.param_target = dyn_.value;
+            t.param_target = value;
         }
         t.set_start(speed);
         let v1 = target.value(&self.entities);
         if dyn_.dimension == DynamicsDimension::Distance {
             // The shape runs over time: the time that covers the distance.
-            let (v0, dist) = (speed, dyn_.value);
+            let (v0, dist) = (speed, value);
             let span = if (v1 - v0).abs() < SMALL_NUMBER {
                 0.0
             } else if v0.abs() > SMALL_NUMBER && v1.abs() > SMALL_NUMBER && sign(v0) != sign(v1) {
@@ -126,6 +134,10 @@ impl<'a> Sim<'a> {
 
     /// One step (esmini's LongSpeedAction::Step); true when the action is done.
     pub(super) fn step_speed(&mut self, e: usize, s: &mut SpeedRt) -> bool {
+        if self.longitudinal_overridden(e) {
+            // esmini's LongSpeedAction::Step: ends once a controller overrides the speed.
+            return true;
+        }
         let Some(en) = self.entities.get(e) else { return true };
         let (max_speed, max_acc, max_dec, cur) = (en.max_speed, en.max_acc, en.max_dec, en.speed);
         let dt = self.dt;

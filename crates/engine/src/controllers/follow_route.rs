@@ -25,6 +25,8 @@ const SMALL: f64 = 1e-10;
 #[derive(Debug, Clone)]
 pub struct FollowRouteRt {
     pub active: bool,
+    /// Activated on the longitudinal domain (ActivateControllerAction's `longitudinal`).
+    longitudinal: bool,
     lane_change_time: f64,
     min_dist_for_collision: f64,
     min_lane_width: f64,
@@ -55,6 +57,7 @@ impl FollowRouteRt {
         let num = |n: &str, default: f64| c.properties.get(n).map_or(default, |v| v.trim().parse::<f64>().unwrap_or(0.0));
         FollowRouteRt {
             active: false,
+            longitudinal: false,
             lane_change_time: num("laneChangeTime", 5.0),
             min_dist_for_collision: num("minDistForCollision", 10.0),
             min_lane_width: 0.5,
@@ -71,8 +74,9 @@ impl FollowRouteRt {
     }
 
     /// esmini's `Activate`: start over (the path is planned at the next step with a route).
-    pub fn activate(&mut self) {
+    pub fn activate(&mut self, longitudinal: bool) {
         self.active = true;
+        self.longitudinal = longitudinal;
         self.current = 0;
         self.scenario_index = 0;
         self.path_calculated = false;
@@ -90,6 +94,14 @@ impl FollowRouteRt {
     /// Whether a running lane change holds the entity (esmini's override mode).
     pub fn holds_entity(&self) -> bool {
         self.active && self.lane_change.is_some()
+    }
+
+    /// Whether it owns the longitudinal domain now: esmini's `ChangeLane` puts the controller
+    /// in override mode from the start of its lane change to the end (additive otherwise), and
+    /// `Object::IsControllerModeOnDomains(MODE_OVERRIDE, DOMAIN_MASK_LONG)` asks for a
+    /// controller active on that domain.
+    pub fn overrides_longitudinal(&self) -> bool {
+        self.holds_entity() && self.longitudinal
     }
 }
 

@@ -94,8 +94,19 @@ impl<'a> Sim<'a> {
                     f.activate(en, wheelbase);
                 }
             }
-            Some(Some(ControllerRt::FollowRoute(f))) => f.activate(),
+            Some(Some(ControllerRt::FollowRoute(f))) => f.activate(longitudinal),
             _ => {}
+        }
+    }
+
+    /// Whether a controller of entity `e` in override mode owns its longitudinal motion now
+    /// (esmini's `Object::IsControllerModeOnDomains(MODE_OVERRIDE, DOMAIN_MASK_LONG)`): an
+    /// active ACC/ALKS in override mode, a FollowRoute controller during its lane change.
+    pub(crate) fn longitudinal_overridden(&self, e: usize) -> bool {
+        match self.controllers.get(e) {
+            Some(Some(ControllerRt::Acc(a))) => a.overrides_longitudinal(),
+            Some(Some(ControllerRt::FollowRoute(f))) => f.overrides_longitudinal(),
+            _ => false,
         }
     }
 
