@@ -88,9 +88,15 @@ fn check_file(path: &Path, params: &[(String, String)]) -> Vec<Finding> {
             finding(severity, &f.location.file, f.location.line, f.location.col, f.message)
         })
         .collect();
-    let schema_error_lines: Vec<(String, u32)> =
-        out.iter().filter(|f| f.severity == "error").map(|f| (f.file.clone(), f.line)).collect();
-    let already = |f: &Finding| f.severity == "error" && schema_error_lines.contains(&(f.file.clone(), f.line));
+    let schema_errors: Vec<(String, u32, u32)> =
+        out.iter().filter(|f| f.severity == "error").map(|f| (f.file.clone(), f.line, f.column)).collect();
+    // The reader's error on a line the schema pass found wrong is the same problem seen again;
+    // so is its warning at the very place of a schema error (an unknown attribute is also unread).
+    let already = |f: &Finding| {
+        schema_errors.iter().any(|(file, line, col)| {
+            *file == f.file && *line == f.line && (f.severity == "error" || *col == f.column)
+        })
+    };
     let reader = reader_findings(path, params);
     out.extend(reader.into_iter().filter(|f| !already(f)));
     out
@@ -98,7 +104,7 @@ fn check_file(path: &Path, params: &[(String, String)]) -> Vec<Finding> {
 
 fn reader_findings(path: &Path, params: &[(String, String)]) -> Vec<Finding> {
     let mut out = Vec::new();
-    let options = openscenario::LoadOptions { parameters: params.to_vec(), ..Default::default() };
+    let options = openscenario::LoadOptions { parameters: params.to_vec(), go_on_without_catalogs: true, ..Default::default() };
     let loaded = match openscenario::load(path, &options) {
         Ok(l) => l,
         Err(e) => {
@@ -132,8 +138,11 @@ fn reader_findings(path: &Path, params: &[(String, String)]) -> Vec<Finding> {
                     }
                     Some(r.network)
                 }
-                Err(e) if !f.exists() => {
-                    out.push(finding("warning", f, 0, 0, format!("{e} (positions are not checked against a road network)")));
+                // the reader has said where the scenario names it; say what follows from it
+                Err(_) if !f.exists() => {
+                    if let Some(w) = out.iter_mut().find(|w| w.message.starts_with("road network ") && w.message.ends_with(" not found")) {
+                        w.message.push_str(" (positions are not checked against a road network)");
+                    }
                     None
                 }
                 Err(e) => {

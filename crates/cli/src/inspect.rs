@@ -40,7 +40,7 @@ pub fn parse_params(params: &[String]) -> Result<Vec<(String, String)>, Failure>
 }
 
 pub fn run(args: &InspectArgs) -> Result<(), Failure> {
-    let options = LoadOptions { parameters: parse_params(&args.params)?, seed: args.seed };
+    let options = LoadOptions { parameters: parse_params(&args.params)?, seed: args.seed, ..Default::default() };
     let loaded = load(&args.file, &options).map_err(|e| Failure::input(e.to_string()))?;
     let out = if args.json { json(args, &loaded.content, &loaded.warnings)? } else { text(args, &loaded.content, &loaded.warnings) };
     print!("{out}");

@@ -65,7 +65,7 @@ fn write_file(path: &std::path::Path, text: &str) -> Result<(), Failure> {
 
 pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
     let parameters = args.params.iter().map(|p| parse_param(p)).collect::<Result<Vec<_>, _>>()?;
-    let options = openscenario::LoadOptions { parameters, seed: None };
+    let options = openscenario::LoadOptions { parameters, seed: None, ..Default::default() };
     let loaded = openscenario::load(&args.file, &options).map_err(|e| Failure::input(e.to_string()))?;
     let mut load_warnings: Vec<String> = loaded.warnings.iter().map(ToString::to_string).collect();
     strict(loaded.problems, args.lenient, &mut load_warnings)?;

@@ -55,3 +55,35 @@ fn help_says_what_check_does() {
     let help = String::from_utf8_lossy(&r.stdout);
     assert!(help.contains("--json") && help.contains("catalog"), "{help}");
 }
+
+#[test]
+fn missing_catalogs_and_map_are_reported_and_the_check_goes_on() {
+    let Some(shared) = testkit::shared_dir() else { return };
+    // esmini's cut-in copied alone: neither its catalogs nor its map come along
+    let dir = tmp("check", "alone");
+    let text = std::fs::read_to_string(shared.join("corpus/esmini/xosc/cut-in.xosc"))
+        .expect("cut-in")
+        .replacen(r#"<Private entityRef="Ego">"#, r#"<Private entityRef="Eg0">"#, 1)
+        .replacen("<SpeedActionDynamics ", r#"<SpeedActionDynamics colour="red" "#, 1);
+    let file = dir.join("cut-in.xosc");
+    std::fs::write(&file, &text).expect("write");
+    let r = osc2cr(&["check", s(&file), "--json"]);
+    assert_eq!(r.status.code(), Some(2));
+    let json: serde_json::Value = serde_json::from_slice(&r.stdout).expect("json");
+    let findings = json.as_array().expect("array");
+    let has = |severity: &str, line: u64, needle: &str| {
+        findings.iter().any(|f| f["severity"] == severity && f["line"] == line && f["message"].as_str().is_some_and(|m| m.contains(needle)))
+    };
+    // the two vehicles' catalog is missing: said at each reference, and the reading goes on …
+    assert!(has("warning", 35, "catalog 'VehicleCatalog' (for entry 'car_white') not found"), "{json:#}");
+    assert!(has("warning", 38, "catalog 'VehicleCatalog' (for entry 'car_red') not found"), "{json:#}");
+    // … to the map, which is missing too …
+    assert!(has("warning", 30, "not checked against a road network"), "{json:#}");
+    // … and to the reference to an entity that does not exist, besides the schema's error
+    let eg0_line = text[..text.find("Eg0").expect("renamed")].matches('\n').count() as u64 + 1;
+    // (said at the Private's first action, the line after the entityRef)
+    assert!(has("error", eg0_line, "Eg0") || has("error", eg0_line + 1, "Eg0"), "{json:#}");
+    assert!(findings.iter().any(|f| f["severity"] == "error" && f["message"].as_str().is_some_and(|m| m.contains("unknown attribute 'colour'"))), "{json:#}");
+    // an unknown attribute is said once (the schema's error), not again as unread
+    assert!(!findings.iter().any(|f| f["message"].as_str().is_some_and(|m| m.contains("'colour'") && m.contains("not read"))), "{json:#}");
+}

@@ -64,6 +64,15 @@ const VALID: &[&str] = &[
     "simpleImportWithParameters/importWithParameters.xosc",
 ];
 
+/// What osc2cr finds wrong in a file the API reads without error, because osc2cr checks what the
+/// file refers to and the API's schema reading does not: in the two ALKS files a LanePosition's
+/// `laneId` (a string in the schema) is the bare name of a parameter, `Ego_InitPosition_LaneId`,
+/// which no OpenDRIVE lane can be (lane ids are integers).
+fn beyond_the_schema(file: &str, message: &str) -> bool {
+    file.starts_with("ALKS_Scenario_4.2_1_FullyBlockingTarget_")
+        && message == "attribute 'laneId' of <LanePosition>: expected an integer, found 'Ego_InitPosition_LaneId'"
+}
+
 struct Expected {
     severity: &'static str,
     line: u64,
@@ -164,6 +173,7 @@ fn files_the_api_reads_without_error_give_no_error() {
         let errors: Vec<String> = check_json(&suite.join(file), &[])
             .iter()
             .filter(|f| f["severity"] == "error")
+            .filter(|f| !beyond_the_schema(file, f["message"].as_str().unwrap_or("")))
             .map(|f| format!("{}:{}: {}", f["file"], f["line"], f["message"]))
             .collect();
         assert!(errors.is_empty(), "{file}:\n{}", errors.join("\n"));

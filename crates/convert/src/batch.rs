@@ -155,6 +155,7 @@ fn plan(
                 let load = LoadOptions {
                     parameters: options.parameters.clone(),
                     seed: options.seed,
+                    ..Default::default()
                 };
                 let (dist, problems) = match openscenario::load(&f.path, &load) {
                     Ok(l) if !l.problems.is_empty() && !options.lenient => {

@@ -165,6 +165,7 @@ fn run(
     let load_options = LoadOptions {
         parameters,
         seed: options.seed,
+        ..Default::default()
     };
     // The schema pass first (the same as `osc2cr check`): what is wrong with the file itself,
     // all of it. Its warnings (deprecations, version mixtures) are `check`'s to list.

@@ -69,6 +69,7 @@ pub fn load_distribution(path: &Path, options: &ConvertOptions) -> Result<Distri
     let load = LoadOptions {
         parameters: options.parameters.clone(),
         seed: options.seed,
+        ..Default::default()
     };
     let fail = |message: String| Failure {
         stage: Stage::Load,

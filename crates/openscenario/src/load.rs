@@ -15,6 +15,11 @@ pub struct LoadOptions {
     pub parameters: Vec<(String, String)>,
     /// Seed for stochastic distributions; None: the file's `randomSeed` (or 0).
     pub seed: Option<u64>,
+    /// Read on past a vehicle, pedestrian, object, controller or maneuver whose catalog or
+    /// catalog entry cannot be found, with a placeholder (an external object, no controller,
+    /// no maneuver), so that a check reports everything else as well: a missing catalog is then
+    /// a warning, a missing entry a problem ([`Loaded::problems`]). Never for a conversion.
+    pub go_on_without_catalogs: bool,
 }
 
 /// What a file turned out to be.
@@ -78,6 +83,7 @@ fn load_doc(path: &Path, doc: Doc, options: &LoadOptions) -> Result<Loaded, Erro
         ));
     }
     let mut reader = Reader::new();
+    reader.go_on_without_catalogs = options.go_on_without_catalogs;
     let content = if root.child("Storyboard").is_some() {
         let scenario = read_scenario(&mut reader, &abs, &doc.file, root, &options.parameters)?;
         reader.problems.extend(crate::references::unresolved(&scenario));

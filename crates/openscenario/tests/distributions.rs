@@ -6,7 +6,7 @@ use openscenario::*;
 use std::path::Path;
 
 fn distribution(path: &Path, seed: Option<u64>) -> Distribution {
-    match load(path, &LoadOptions { parameters: Vec::new(), seed }) {
+    match load(path, &LoadOptions { parameters: Vec::new(), seed, ..Default::default() }) {
         Ok(Loaded { content: Content::Distribution(d), .. }) => d,
         Ok(_) => panic!("{}: not a distribution", path.display()),
         Err(e) => panic!("{e}"),
@@ -54,7 +54,7 @@ fn cut_in_runs_in_odometer_order_and_every_run_loads() {
     assert_eq!(value(&runs[6], "HostVehicle"), None); // the second set leaves it at its default
     assert_eq!(value(&runs[6], "TargetVehicle"), Some("van_red"));
     for (i, run) in runs.iter().enumerate() {
-        let options = LoadOptions { parameters: run.clone(), seed: None };
+        let options = LoadOptions { parameters: run.clone(), seed: None, ..Default::default() };
         let (s, w) = load_scenario(&d.scenario_file, &options).unwrap_or_else(|e| panic!("run {i}: {e}"));
         assert!(w.is_empty(), "run {i}: {w:?}");
         let factor: f64 = value(run, "TargetSpeedFactor").and_then(|v| v.parse().ok()).expect("factor");

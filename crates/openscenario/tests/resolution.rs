@@ -54,7 +54,7 @@ fn declarations_may_refer_forward_and_use_expressions() {
 fn overrides_replace_global_values_and_flow_into_expressions() {
     let params = r#"<ParameterDeclaration name="Speed" parameterType="double" value="10"/>
     <ParameterDeclaration name="X" parameterType="double" value="${$Speed * 2}"/>"#;
-    let options = LoadOptions { parameters: vec![("Speed".into(), "21".into()), ("Unknown".into(), "1".into())], seed: None };
+    let options = LoadOptions { parameters: vec![("Speed".into(), "21".into()), ("Unknown".into(), "1".into())], seed: None, ..Default::default() };
     let (s, w) = ok(&scenario(params, "", &car("Ego"), &teleport("Ego", "$X"), ""), &options);
     assert_eq!(param(&s, "Speed").value, "21");
     assert_eq!(init_x(&s), 42.0);

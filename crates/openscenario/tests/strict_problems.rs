@@ -6,7 +6,7 @@ use openscenario::*;
 use std::path::Path;
 
 fn problems(text: &str, overrides: &[(&str, &str)]) -> Vec<Warning> {
-    let options = LoadOptions { parameters: overrides.iter().map(|(a, b)| (a.to_string(), b.to_string())).collect(), seed: None };
+    let options = LoadOptions { parameters: overrides.iter().map(|(a, b)| (a.to_string(), b.to_string())).collect(), seed: None, ..Default::default() };
     match load_str(Path::new("/virtual/strict.xosc"), text, &options) {
         Ok(l) => l.problems,
         Err(e) => panic!("{e}"),

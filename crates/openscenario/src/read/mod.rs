@@ -27,11 +27,19 @@ pub(crate) struct Reader {
     pub problems: Vec<Warning>,
     pub catalogs: CatalogStore,
     catalog_depth: usize,
+    /// `LoadOptions::go_on_without_catalogs`.
+    pub go_on_without_catalogs: bool,
 }
 
 impl Reader {
     pub fn new() -> Self {
-        Reader { warnings: Vec::new(), problems: Vec::new(), catalogs: CatalogStore::default(), catalog_depth: 0 }
+        Reader {
+            warnings: Vec::new(),
+            problems: Vec::new(),
+            catalogs: CatalogStore::default(),
+            catalog_depth: 0,
+            go_on_without_catalogs: false,
+        }
     }
 
     pub fn warn(&mut self, location: Location, message: impl Into<String>) {
@@ -112,6 +120,37 @@ impl Reader {
         let result = read(self, &entry_cx, elem, &assignments);
         self.catalog_depth -= 1;
         result
+    }
+}
+
+impl Reader {
+    /// [`Reader::catalog_entry`], or — when the catalog or the entry cannot be found and the load
+    /// goes on without catalogs — `placeholder(entry name)`, the gap being reported.
+    pub fn catalog_entry_or<T>(
+        &mut self,
+        cx: &Cx,
+        reference: &Elem,
+        kinds: &[CatalogKind],
+        read: impl FnOnce(&mut Reader, &Cx, &Elem, &[(String, String)]) -> Result<T, Error>,
+        placeholder: impl FnOnce(String) -> T,
+    ) -> Result<T, Error> {
+        match self.catalog_entry(cx, reference, kinds, read) {
+            Err(e) if self.go_on_without_catalogs && matches!(e.kind, ErrorKind::MissingCatalog | ErrorKind::MissingCatalogEntry) => {
+                reference.announce();
+                let gap = Warning { location: e.location.clone(), message: e.message.clone() };
+                if e.kind == ErrorKind::MissingCatalog {
+                    self.warnings.push(Warning {
+                        message: format!("{} (what this file takes from the catalog is not checked)", gap.message),
+                        ..gap
+                    });
+                } else {
+                    self.problems.push(gap);
+                }
+                let entry = reference.attr("entryName").map(|a| a.value.clone()).unwrap_or_default();
+                Ok(placeholder(entry))
+            }
+            other => other,
+        }
     }
 }
 

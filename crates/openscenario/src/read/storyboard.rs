@@ -74,7 +74,13 @@ fn read_group(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<ManeuverGroup, Error>
     for m in e.children() {
         match m.name.as_str() {
             "Maneuver" => maneuvers.push(read_maneuver(r, cx, m, &[])?),
-            "CatalogReference" => maneuvers.push(r.catalog_entry(cx, m, &[CatalogKind::Maneuver], read_maneuver)?),
+            "CatalogReference" => maneuvers.extend(r.catalog_entry_or(
+                cx,
+                m,
+                &[CatalogKind::Maneuver],
+                |r, cx, e, asg| read_maneuver(r, cx, e, asg).map(Some),
+                |_| None,
+            )?),
             "Actors" => {}
             _ => r.unsupported(cx, m, "ManeuverGroup"),
         }
