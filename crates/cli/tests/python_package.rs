@@ -21,6 +21,8 @@ struct Env {
     python: PathBuf,
     /// The package alone (`pip install --target`), to import from another environment.
     package_only: PathBuf,
+    /// The abi3 wheel itself, as `maturin build` or `pip wheel .` makes it.
+    wheel: PathBuf,
 }
 
 static ENV: OnceLock<Result<Env, String>> = OnceLock::new();
@@ -108,7 +110,7 @@ fn setup() -> Result<Env, String> {
         .arg(&package_only)
         .arg(&wheel))?;
     drop(lock);
-    Ok(Env { python, package_only })
+    Ok(Env { python, package_only, wheel })
 }
 
 /// The environment, or `None` (with a notice) when the shared corpus is absent outside CI.
@@ -321,5 +323,71 @@ fn the_dask_example_on_two_workers_writes_the_cli_files() {
     );
     for (x, y) in a.iter().zip(&b) {
         assert!(std::fs::read(x).ok() == std::fs::read(y).ok(), "{} differs", y.display());
+    }
+}
+
+/// The ```python block of the README's "Python" section, as a user would copy it.
+fn readme_python_example() -> String {
+    let readme = std::fs::read_to_string(testkit::workspace_root().join("README.md")).expect("README");
+    let section = readme.split("\n## Python").nth(1).expect("a Python section");
+    let block = section.split("```python\n").nth(1).expect("a python block");
+    block.split("\n```").next().expect("closed").to_string()
+}
+
+#[test]
+fn the_wheel_installs_without_rust_and_runs_the_readme_example() {
+    let Some(env) = env() else { return };
+    let name = env.wheel.file_name().and_then(|n| n.to_str()).unwrap_or_default().to_string();
+    // one wheel for every CPython >= 3.9
+    assert!(name.contains("-abi3-"), "{name} is not an abi3 wheel");
+
+    // a fresh environment, and a PATH that has Python but no Rust toolchain
+    let dir = tmp("wheel");
+    let venv = dir.join("venv");
+    let status = Command::new("python3").args(["-m", "venv"]).arg(&venv).status().expect("venv");
+    assert!(status.success());
+    let bin = venv.join("bin");
+    let path = format!("{}:/usr/local/bin:/usr/bin:/bin", bin.display());
+    let pip = |args: &[&str]| {
+        let out = Command::new(bin.join("python"))
+            .args(["-m", "pip", "install", "--quiet", "--disable-pip-version-check"])
+            .args(args)
+            .env("PATH", &path)
+            .env_remove("CARGO_HOME")
+            .env_remove("RUSTUP_HOME")
+            .output()
+            .expect("pip runs");
+        assert!(out.status.success(), "pip install {args:?}:\n{}", String::from_utf8_lossy(&out.stderr));
+    };
+    let wheel = env.wheel.display().to_string();
+    pip(&[&format!("{wheel}[commonroad]"), "commonroad-io==2024.3"]);
+
+    // the README's example, run as written from a folder holding the repository's examples
+    let work = dir.join("work");
+    std::fs::create_dir_all(work.join("examples")).expect("mkdir");
+    for f in ["cut_in.xosc", "cut_in_speeds.xosc", "two_lane_curve.xodr"] {
+        std::fs::copy(testkit::workspace_root().join("examples").join(f), work.join("examples").join(f)).expect("copy example");
+    }
+    let script = format!(
+        "import shutil\nassert shutil.which('cargo') is None and shutil.which('rustc') is None, 'Rust on PATH'\n{}\nprint('example ran', len(scenario.dynamic_obstacles), len(xml) > 0)\n",
+        readme_python_example()
+    );
+    let out = Command::new(bin.join("python"))
+        .arg("-c")
+        .arg(&script)
+        .current_dir(&work)
+        .env("PATH", &path)
+        .env_remove("CARGO_HOME")
+        .env_remove("RUSTUP_HOME")
+        .output()
+        .expect("python runs");
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "the README example failed:\n{stdout}{}", String::from_utf8_lossy(&out.stderr));
+    assert!(stdout.contains("example ran 3 True"), "{stdout}");
+    // the sweep's six variations were written, as `osc2cr convert` names them
+    for k in 1..=6 {
+        let f = work.join(format!("cut_in_speeds_{k}.xml"));
+        let text = std::fs::read_to_string(&f).unwrap_or_else(|e| panic!("{}: {e}", f.display()));
+        assert!(text.contains("<commonRoad"), "{}", f.display());
     }
 }

@@ -1,4 +1,4 @@
-//! The engine's speed over the corpus (release: `cargo bench -p engine --bench speed`): every
+//! The engine's speed over the corpus (release: `cargo bench -p osc2cr-engine --bench speed`): every
 //! scenario with an esmini reference is loaded once and simulated RUNS times; the median time
 //! of each scenario is summed and compared with the simulated time it covers. A median per
 //! scenario, not one pass, because a single pass on a shared machine swings by ±10 %.

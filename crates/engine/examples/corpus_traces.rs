@@ -1,5 +1,5 @@
 //! Write the engine's trace of every corpus scenario that has a reference trace:
-//! `cargo run --release -p engine --example corpus_traces -- SHARED_DIR OUT_DIR`
+//! `cargo run --release -p osc2cr-engine --example corpus_traces -- SHARED_DIR OUT_DIR`
 //! (OUT_DIR/<path under corpus without .xosc>.csv), and print the engine's speed.
 
 use std::path::PathBuf;

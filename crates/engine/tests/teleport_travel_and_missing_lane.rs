@@ -62,7 +62,7 @@ fn a_teleport_is_no_travel() {
 }
 
 /// Writes both scenarios beside the fixture road, to run esmini on them by hand:
-/// `cargo test -p engine --test teleport_travel_and_missing_lane -- --ignored write_for_esmini`.
+/// `cargo test -p osc2cr-engine --test teleport_travel_and_missing_lane -- --ignored write_for_esmini`.
 #[test]
 #[ignore]
 fn write_for_esmini() {

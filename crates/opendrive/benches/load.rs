@@ -1,5 +1,5 @@
 //! Load time of every corpus map and the cost of 10k world → road queries per map.
-//! Run: cargo bench -p opendrive --bench load [-- SHARED_DIR]
+//! Run: cargo bench -p osc2cr-opendrive --bench load [-- SHARED_DIR]
 
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;

@@ -1,5 +1,5 @@
 //! Loads one OpenDRIVE file N times (for profiling `opendrive::load`).
-//! Run: cargo run --release -p opendrive --example load_repeat -- FILE [N]
+//! Run: cargo run --release -p osc2cr-opendrive --example load_repeat -- FILE [N]
 
 fn main() {
     let mut args = std::env::args().skip(1);

@@ -4,7 +4,7 @@
 //! For each vertex of each xodr lane centreline (with its width there), the vertex is
 //! located on the same OpenDRIVE road with our projection; the two borders xodr implies
 //! (centre ± width/2 across the road) are compared with our exact border t at that s.
-//! Run: cargo run --release -p opendrive --example xodr_precision [SHARED_DIR]
+//! Run: cargo run --release -p osc2cr-opendrive --example xodr_precision [SHARED_DIR]
 
 use std::path::{Path, PathBuf};
 

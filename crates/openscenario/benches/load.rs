@@ -1,5 +1,5 @@
 //! Times load + resolve of every corpus scenario (parsing, parameters, catalogs).
-//! `cargo bench -p openscenario --bench load`; prints per-file mean times, the largest file's
+//! `cargo bench -p osc2cr-openscenario --bench load`; prints per-file mean times, the largest file's
 //! time and the total.
 
 use openscenario::{load, Content, LoadOptions};
