@@ -1,15 +1,17 @@
 //! FollowTrajectoryAction driven backwards (negative speed, no time stamps), and where a timed
 //! path marked closed leaves its entity, on the straight fixture road (lane -1's centre is
-//! y = -1.75). Expected poses are computed by hand from esmini's rules: the entity advances
-//! along the path by |speed|·dt facing backwards; a polyline's heading turns linearly over
-//! 4 m either side of a corner.
+//! y = -1.75). Expected poses are esmini 3.6.0's (checked by running it on these scenarios):
+//! an entity that starts the action reversing faces against the path for the whole action and
+//! advances along it by |speed|·dt while its speed is negative, comes back once it is
+//! positive; a polyline's heading turns linearly over 4 m either side of a corner. Vertices
+//! carry no heading (esmini moves differently along vertices with an explicit one).
 
 mod common;
 use common::*;
 use std::f64::consts::{FRAC_PI_2, PI};
 
 fn world(x: f64, y: f64) -> String {
-    format!(r#"<Position><WorldPosition x="{x}" y="{y}" z="0" h="0"/></Position>"#)
+    format!(r#"<Position><WorldPosition x="{x}" y="{y}" z="0"/></Position>"#)
 }
 
 fn follow(closed: bool, shape: &str, timing: &str) -> String {
@@ -80,4 +82,21 @@ fn a_timed_path_marked_closed_ends_at_its_end_not_at_its_start() {
     // Halted by the speed step: it stays at the end.
     let e = at(&run, "Ego", 5.5);
     assert!(close(e.x, 50.0, 1e-6) && close(e.y, -1.75, 1e-6), "{e:?}");
+}
+
+#[test]
+fn started_reversing_it_comes_back_along_the_path_once_the_speed_turns_positive() {
+    // Path (10, −1.75) → (60, −1.75); speed −5 m/s, then +5 m/s from t = 4 (a step). The
+    // entity faces π throughout (esmini's FollowTrajectoryAction::Move keeps the initial
+    // heading sign): s = 5 t up to t = 4, then back by 5 m/s, so s = 0 at t = 8 where the
+    // action ends; the default controller then drives on in the entity's heading (−x).
+    let shape = format!("<Polyline><Vertex>{}</Vertex><Vertex>{}</Vertex></Polyline>", world(10.0, -1.75), world(60.0, -1.75));
+    let init = format!(r#"{}<Private entityRef="Ego">{}{}</Private>"#, teleport("Ego", 10.0, -1), speed_action("step", "time", 0.0, -5.0), follow(false, &shape, "<None/>"));
+    let stories = story("Ego", &event("Forward", "overwrite", &speed_action("step", "time", 0.0, 5.0), &trigger(&sim_time(4.0, "greaterOrEqual", "none", 0.0))));
+    let run = run(&xosc(&init, &stories, &stop_at(12.0)));
+    for (t, x) in [(4.0, 30.0), (6.0, 20.0), (7.99, 10.05), (8.0, 10.0), (8.02, 9.9), (9.0, 5.0)] {
+        let e = at(&run, "Ego", t);
+        assert!(close(e.x, x, 1e-6) && close(e.y, -1.75, 1e-6), "t = {t}: {e:?}");
+        assert!(dh(e.h, PI).abs() < 1e-9, "t = {t}: {e:?}");
+    }
 }
