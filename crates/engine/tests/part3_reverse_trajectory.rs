@@ -3,7 +3,7 @@
 //! y = -1.75). Expected poses are esmini 3.6.0's (checked by running it on these scenarios):
 //! an entity that starts the action reversing faces against the path for the whole action and
 //! advances along it by |speed|·dt while its speed is negative, comes back once it is
-//! positive; a polyline's heading turns linearly over 4 m either side of a corner. Vertices
+//! positive; a polyline's heading turns linearly over 2 m either side of a corner. Vertices
 //! carry no heading (esmini moves differently along vertices with an explicit one).
 
 mod common;
@@ -45,10 +45,12 @@ fn negative_speed_follows_the_polyline_facing_backwards() {
     let e = at(&run, "Ego", 4.0);
     assert!(close(e.x, 30.0, 1e-6) && close(e.y, -1.75, 1e-6), "{e:?}");
     assert!(dh(e.h, PI).abs() < 1e-9 && close(e.speed, -5.0, 1e-9), "{e:?}");
-    // t = 9.6: s = 48, 2 m before the corner: the path heading has turned (4 − 2) / 8 of the
-    // quarter turn, π/8; the entity faces π/8 + π.
+    // t = 9.6: s = 48, 2 m before the corner: the path heading has not turned yet, the
+    // entity faces π; at t = 9.8, 1 m before it, a quarter of the quarter turn: π/8 + π.
     let e = at(&run, "Ego", 9.6);
     assert!(close(e.x, 58.0, 1e-6) && close(e.y, -1.75, 1e-6), "{e:?}");
+    assert!(dh(e.h, PI).abs() < 1e-9, "{e:?}");
+    let e = at(&run, "Ego", 9.8);
     assert!(dh(e.h, PI / 8.0 + PI).abs() < 1e-9, "{e:?}");
     // t = 14: s = 70, 20 m up the second segment (heading π/2): (60, 18.25), facing 3π/2.
     let e = at(&run, "Ego", 14.0);

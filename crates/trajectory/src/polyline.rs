@@ -1,12 +1,13 @@
 //! Straight segments between vertices. The heading follows each segment and, as esmini
-//! does, turns linearly across a corner over min(4 m, segment length) on each side, half
-//! the turn on either side of the vertex.
+//! does (PolyLineBase::EvaluateSegmentByLocalS, corner interpolation), turns linearly across
+//! a corner over min(2 m, half the segment's length) on each side, half the turn on either
+//! side of the vertex.
 
 use crate::angle;
 use crate::pose::PathPoint;
 
-/// Half-width of esmini's corner blending.
-const CORNER_RADIUS: f64 = 4.0;
+/// Half-width of esmini's corner blending (at most half the segment).
+const CORNER_RADIUS: f64 = 2.0;
 
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct Polyline {
@@ -53,7 +54,7 @@ impl Polyline {
         let local = (s - a[3]).clamp(0.0, len);
         let u = if len > 0.0 { local / len } else { 0.0 };
         let lerp = |k: usize| a[k] + u * (b[k] - a[k]);
-        let r = CORNER_RADIUS.min(len);
+        let r = CORNER_RADIUS.min(len / 2.0);
         let prev = if i > 0 { Some(i - 1) } else if self.closed { Some(nseg - 1) } else { None };
         let next = if i + 1 < nseg { Some(i + 1) } else if self.closed { Some(0) } else { None };
         // Same precedence as esmini: the corner at the start wins when both overlap.
