@@ -43,6 +43,13 @@ impl Polyline {
         i.and_then(|i| self.headings.get(i)).copied()
     }
 
+    /// Heading of the segment that holds `s` (the last one at and past the end).
+    pub(crate) fn segment_heading(&self, s: f64) -> f64 {
+        let nseg = self.headings.len();
+        let i = self.pts.partition_point(|p| p[3] <= s).saturating_sub(1).min(nseg.saturating_sub(1));
+        self.heading(Some(i)).unwrap_or(0.0)
+    }
+
     pub(crate) fn eval(&self, s: f64) -> PathPoint {
         let nseg = self.headings.len();
         let i = self.pts.partition_point(|p| p[3] <= s).saturating_sub(1).min(nseg.saturating_sub(1));

@@ -41,8 +41,8 @@ impl<'a> Sim<'a> {
             }
             _ => None,
         };
-        // esmini 3.6 reads no RelativeAngleCondition; its AngleCondition has no trajectory frame here
-        if let C::RelativeAngle { .. } | C::Angle { coordinate_system: Some(CoordinateSystem::Trajectory), .. } = cond {
+        // esmini 3.6 reads no RelativeAngleCondition
+        if let C::RelativeAngle { .. } = cond {
             return self.warn_once(c, format!("{} is not supported; it never becomes true", cond.element_name()));
         }
         if let C::Angle { angle_type: openscenario::AngleType::Pitch | openscenario::AngleType::Roll, .. } = cond {
@@ -57,6 +57,10 @@ impl<'a> Sim<'a> {
             // esmini skips a triggering entity that does not exist (deleted), and every one
             // while the referenced entity does not exist.
             if !exists(self, idx) || c.other.is_some_and(|o| !exists(self, o)) {
+                continue;
+            }
+            // esmini's TrigByAngle skips an entity without a trajectory in the trajectory frame.
+            if matches!(cond, C::Angle { coordinate_system: Some(CoordinateSystem::Trajectory), .. }) && self.trajectory_heading(idx).is_none() {
                 continue;
             }
             let r = self.check_one(idx, c.other, point, cond);
@@ -74,6 +78,14 @@ impl<'a> Sim<'a> {
             std::mem::swap(&mut c.fired_by, &mut c.hits);
         }
         result
+    }
+
+    /// The direction of the path of the trajectory entity `idx` follows, where it is now.
+    fn trajectory_heading(&self, idx: usize) -> Option<f64> {
+        self.actions.iter().filter(|a| a.running).flat_map(|a| a.instances.iter()).find_map(|inst| match &inst.rt {
+            crate::actions::ActionRt::FollowTrajectory(f) if inst.entity == Some(idx) => Some(f.path.true_heading_at(f.s)),
+            _ => None,
+        })
     }
 
     fn check_one(&self, idx: usize, other: Option<usize>, point: Option<(f64, f64)>, cond: &C) -> bool {
@@ -100,6 +112,10 @@ impl<'a> Sim<'a> {
                         p.road_heading + if along { 0.0 } else { std::f64::consts::PI }
                     }),
                     (_, CoordinateSystem::Entity, _, _) => own,
+                    // the direction of the trajectory's current segment (esmini's GetHTrue);
+                    // pitch and roll have no trajectory frame in esmini (the angle is 0)
+                    (openscenario::AngleType::Heading, CoordinateSystem::Trajectory, _, _) => self.trajectory_heading(idx).unwrap_or(own),
+                    (_, CoordinateSystem::Trajectory, _, _) => own,
                     _ => 0.0,
                 };
                 let current = crate::roads::road_follow::wrap(own - frame);
