@@ -85,6 +85,15 @@ impl Path {
         }
     }
 
+    /// Pitch at `s` from the vertices' heights: a polyline's, blended across corners; 0 for
+    /// the other shapes (their points carry no heights of their own).
+    pub fn pitch_at(&self, s: f64) -> f64 {
+        match &self.curve {
+            Curve::Polyline(p) => p.pitch(self.normalize_s(s)),
+            _ => 0.0,
+        }
+    }
+
     fn eval(&self, s: f64) -> PathPoint {
         let mut p = match &self.curve {
             Curve::Polyline(p) => p.eval(s),

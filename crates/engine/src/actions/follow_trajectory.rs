@@ -29,6 +29,9 @@ pub struct FollowTrajectoryRt {
     /// −1 when the entity faces against the path (it started reversing), else 1; fixed at
     /// the start (esmini's `initialHeadingSign_`).
     pub heading_sign: f64,
+    /// Some vertex gives its height (a z or dz): the entity pitches with the path rather than
+    /// with the road (`attitude.rs`).
+    pub elevated: bool,
 }
 
 impl FollowTrajectoryRt {
@@ -134,7 +137,7 @@ impl<'a> Sim<'a> {
             en.speed = speed_sign * v;
         }
         let accel = if timing.is_some() && mode == FollowingMode::Follow { accel_segments(&path) } else { None };
-        ActionRt::FollowTrajectory(Box::new(FollowTrajectoryRt { path, s, timing, time, accel, heading_sign: speed_sign }))
+        ActionRt::FollowTrajectory(Box::new(FollowTrajectoryRt { path, s, timing, time, accel, heading_sign: speed_sign, elevated: elevated(traj) }))
     }
 
     pub(super) fn step_follow_trajectory(&mut self, e: usize, f: &mut FollowTrajectoryRt) -> bool {
@@ -196,6 +199,19 @@ impl<'a> Sim<'a> {
         en.speed = new_speed;
         en.moved_by_action = true;
         done
+    }
+}
+
+/// Whether a polyline vertex of `traj` gives a height of its own.
+fn elevated(traj: &Trajectory) -> bool {
+    use openscenario::Position as P;
+    match &traj.shape {
+        openscenario::Shape::Polyline(vs) => vs.iter().any(|v| match &v.position {
+            P::World { z, .. } => z.is_some(),
+            P::RelativeWorld { dz, .. } | P::RelativeObject { dz, .. } => dz.is_some(),
+            _ => false,
+        }),
+        _ => false,
     }
 }
 

@@ -45,10 +45,6 @@ impl<'a> Sim<'a> {
         if let C::RelativeAngle { .. } = cond {
             return self.warn_once(c, format!("{} is not supported; it never becomes true", cond.element_name()));
         }
-        if let C::Angle { angle_type: openscenario::AngleType::Pitch | openscenario::AngleType::Roll, .. } = cond {
-            // said once; the condition is still evaluated, with the angle taken as 0
-            let _ = self.warn_once(c, "AngleCondition on pitch or roll: osc2cr's entities do not pitch or roll, the angle is taken as 0".into());
-        }
         let mut result = false;
         c.hits.clear();
         let exists = |s: &Self, i: usize| s.entities.get(i).is_some_and(|e| e.active);
@@ -100,21 +96,41 @@ impl<'a> Sim<'a> {
             C::Angle { angle_type, angle, tolerance, coordinate_system } => {
                 // esmini's TrigByAngle::CheckCondition: the angle in the frame (world by
                 // default), wrapped to [−π, π], within the tolerance of the value (SMALL_NUMBER
-                // slack). Pitch and roll are 0 on osc2cr's flat model.
+                // slack). Pitch and roll as attitude.rs gives them.
+                use openscenario::AngleType as A;
+                let (pitch, roll) = if *angle_type == A::Heading { (0.0, 0.0) } else { self.pitch_roll(idx) };
                 let own = match angle_type {
-                    openscenario::AngleType::Heading => e.h,
-                    _ => 0.0,
+                    A::Heading => e.h,
+                    A::Pitch => pitch,
+                    A::Roll => roll,
+                };
+                let road_pr = |lp: &crate::roads::LanePos, net: &opendrive::RoadNetwork| {
+                    let (p, r) = crate::attitude::road_pitch_roll(net, lp);
+                    if *angle_type == A::Pitch {
+                        p
+                    } else {
+                        r
+                    }
+                };
+                // the lane's driving direction relative to s (esmini's GetDrivingDirectionRelativeRoad)
+                let lane_dir = |lp: &crate::roads::LanePos, net: &opendrive::RoadNetwork| {
+                    if net.roads.get(lp.road).is_none_or(|r| opendrive::drives_along_s(r.rule, lp.lane_id)) {
+                        1.0
+                    } else {
+                        -1.0
+                    }
                 };
                 let frame = match (angle_type, coordinate_system.unwrap_or(CoordinateSystem::World), self.net, e.lane) {
-                    (openscenario::AngleType::Heading, CoordinateSystem::Road, Some(net), Some(lp)) => lp.pose(net).map_or(0.0, |p| p.road_heading),
-                    (openscenario::AngleType::Heading, CoordinateSystem::Lane, Some(net), Some(lp)) => lp.pose(net).map_or(0.0, |p| {
-                        let along = net.roads.get(lp.road).is_none_or(|r| opendrive::drives_along_s(r.rule, lp.lane_id));
-                        p.road_heading + if along { 0.0 } else { std::f64::consts::PI }
+                    (A::Heading, CoordinateSystem::Road, Some(net), Some(lp)) => lp.pose(net).map_or(0.0, |p| p.road_heading),
+                    (A::Heading, CoordinateSystem::Lane, Some(net), Some(lp)) => lp.pose(net).map_or(0.0, |p| {
+                        p.road_heading + if lane_dir(&lp, net) > 0.0 { 0.0 } else { std::f64::consts::PI }
                     }),
+                    (_, CoordinateSystem::Road, Some(net), Some(lp)) => road_pr(&lp, net),
+                    (_, CoordinateSystem::Lane, Some(net), Some(lp)) => road_pr(&lp, net) * lane_dir(&lp, net),
                     (_, CoordinateSystem::Entity, _, _) => own,
                     // the direction of the trajectory's current segment (esmini's GetHTrue);
                     // pitch and roll have no trajectory frame in esmini (the angle is 0)
-                    (openscenario::AngleType::Heading, CoordinateSystem::Trajectory, _, _) => self.trajectory_heading(idx).unwrap_or(own),
+                    (A::Heading, CoordinateSystem::Trajectory, _, _) => self.trajectory_heading(idx).unwrap_or(own),
                     (_, CoordinateSystem::Trajectory, _, _) => own,
                     _ => 0.0,
                 };
