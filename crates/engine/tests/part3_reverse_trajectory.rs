@@ -102,3 +102,17 @@ fn started_reversing_it_comes_back_along_the_path_once_the_speed_turns_positive(
         assert!(dh(e.h, PI).abs() < 1e-9, "t = {t}: {e:?}");
     }
 }
+
+#[test]
+fn reversing_along_vertices_with_explicit_headings_is_a_positioned_warning() {
+    // With h given on the vertices esmini takes the direction of motion from them: started
+    // at −5 m/s on this path it backs off the start and the action ends at once (esmini 3.6.0
+    // run on this scenario). osc2cr does not model that and says so.
+    let v = |x: f64| format!(r#"<Position><WorldPosition x="{x}" y="-1.75" z="0" h="0"/></Position>"#);
+    let shape = format!("<Polyline><Vertex>{}</Vertex><Vertex>{}</Vertex></Polyline>", v(10.0), v(60.0));
+    let init = format!(r#"{}<Private entityRef="Ego">{}{}</Private>"#, teleport("Ego", 10.0, -1), speed_action("step", "time", 0.0, -5.0), follow(false, &shape, "<None/>"));
+    let run = run(&xosc(&init, "", &stop_at(2.0)));
+    let w: Vec<_> = run.warnings.iter().filter(|w| w.message.contains("explicit vertex headings")).collect();
+    assert_eq!(w.len(), 1, "{:?}", run.warnings);
+    assert!(w[0].line > 0 && w[0].col > 0, "{}", w[0]);
+}

@@ -127,6 +127,15 @@ impl<'a> Sim<'a> {
         // way the entity faces (against the path when reversing), and that sign is kept for
         // the whole action.
         let speed_sign = if timing.is_none() && entity_speed < 0.0 { -1.0 } else { 1.0 };
+        if speed_sign < 0.0 && explicit_headings(traj) {
+            // esmini then faces the entity as the vertices say and moves it by sign(speed)
+            // against that (IsHSetExplicitly): along a path whose headings point forward it
+            // backs off the start and the action ends at once.
+            self.warn_action(
+                slot,
+                format!("FollowTrajectoryAction: trajectory `{}` is started reversing and its vertices give headings; esmini's motion along explicit vertex headings is not modelled (the entity faces against the path and advances along it)", traj.name),
+            );
+        }
         let p = path.pose_at(s);
         let heading = p.heading + if speed_sign < 0.0 { std::f64::consts::PI } else { 0.0 };
         let start_speed = timing.map(|_| start_speed(&path, s));
@@ -199,6 +208,24 @@ impl<'a> Sim<'a> {
         en.speed = new_speed;
         en.moved_by_action = true;
         done
+    }
+}
+
+/// Whether a polyline vertex of `traj` gives a heading of its own.
+fn explicit_headings(traj: &Trajectory) -> bool {
+    use openscenario::Position as P;
+    match &traj.shape {
+        openscenario::Shape::Polyline(vs) => vs.iter().any(|v| match &v.position {
+            P::World { h, .. } => h.is_some(),
+            P::RelativeWorld { orientation, .. }
+            | P::RelativeObject { orientation, .. }
+            | P::Road { orientation, .. }
+            | P::RelativeRoad { orientation, .. }
+            | P::Lane { orientation, .. }
+            | P::RelativeLane { orientation, .. } => orientation.is_some_and(|o| o.h.is_some()),
+            _ => false,
+        }),
+        _ => false,
     }
 }
 
