@@ -13,6 +13,7 @@
 //! their controllers) · `dynamics` (transition shapes) · `entities` · `trace` (the output).
 
 mod actions;
+mod attitude;
 mod conditions;
 mod controllers;
 mod dynamics;

@@ -92,22 +92,37 @@ pub fn resolve(pos: &Position, net: Option<&RoadNetwork>, entities: &[Entity]) -
             let e = find(entity)?;
             let lp = e.lane.ok_or_else(|| format!("entity `{entity}` is not on a road"))?;
             let road = net.roads.get(lp.road).ok_or("reference road missing")?;
-            // dLane counts lanes to the left of the reference entity's driving direction.
-            let sign = if lp.dir < 0.0 { -1 } else { 1 };
-            let lane_id = step_lane(lp.lane_id, sign * d_lane);
-            let s = lp.s + ds.unwrap_or(0.0) + ds_lane.unwrap_or(0.0) * lp.dir;
+            // esmini's Position::SetRelativePosition (RELATIVE_LANE). `ds` moves along the road's
+            // s axis and counts dLane and the offset as the lane ids and t do; `dsLane` moves
+            // along the reference lane's driving direction and counts dLane and the offset to the
+            // left of it — unless the reference entity faces along its lane's driving direction
+            // on the rule's side of the road (right-hand traffic: a right lane, facing +s),
+            // when they count as with `ds`.
+            let along_lane = ds_lane.is_some() && ds.is_none();
+            let (lane_id, offset, s) = if along_lane {
+                let lane_dir = if drives_along_s(road.rule, lp.lane_id) { 1.0 } else { -1.0 };
+                let forward = lp.dir > 0.0;
+                let as_road = match road.rule {
+                    opendrive::TrafficRule::RightHand => forward && lp.lane_id < 0,
+                    opendrive::TrafficRule::LeftHand => !forward && lp.lane_id > 0,
+                };
+                let sign = if as_road { 1 } else { -1 };
+                (step_lane(lp.lane_id, sign * d_lane), offset * f64::from(sign), lp.s + ds_lane.unwrap_or(0.0) * lane_dir)
+            } else {
+                (step_lane(lp.lane_id, *d_lane), *offset, lp.s + ds.unwrap_or(0.0))
+            };
             let s = s.clamp(0.0, road.length);
-            // Without an orientation the entity faces the way the reference entity faces (esmini).
-            let r = net.roads.get(lp.road).ok_or("reference road missing")?;
+            // Without an absolute heading the entity faces from the road's s direction, turned by
+            // π with `dsLane` where the new lane drives against s (esmini's SetHeadingRelative).
+            let r = road;
             if lane_borders(r, r.section_index_at(s), lane_id, s).is_none() {
                 // No such lane: esmini's Position::SetRelativePosition keeps the location it moved
                 // the reference to (its lane and lane offset at the new s), as SetLanePos fails.
-                let along = if orientation.is_some() { drives_along_s(r.rule, lp.lane_id) } else { lp.dir > 0.0 };
-                return place(net, lp.road, lp.lane_id, s, lp.offset, along, orientation.as_ref());
+                let along = !along_lane || drives_along_s(r.rule, lp.lane_id);
+                return place(net, lp.road, lp.lane_id, s, lp.offset, along, Some(&relative_heading(orientation.as_ref())));
             }
-            let along = if orientation.is_some() { drives_along_s(r.rule, lane_id) } else { lp.dir > 0.0 };
-            // The offset is to the left of the reference entity's driving direction (esmini).
-            place(net, lp.road, lane_id, s, offset * lp.dir, along, orientation.as_ref())
+            let along = !along_lane || drives_along_s(r.rule, lane_id);
+            place(net, lp.road, lane_id, s, offset, along, Some(&relative_heading(orientation.as_ref())))
         }
         Position::Route { route, orientation, in_route } => {
             crate::route_position::route_placement(route, in_route, orientation.as_ref(), net, entities)
@@ -116,6 +131,16 @@ pub fn resolve(pos: &Position, net: Option<&RoadNetwork>, entities: &[Entity]) -
         Position::Trajectory { trajectory, s, t, orientation } => {
             crate::trajectory_position::trajectory_placement(trajectory, *s, *t, orientation.as_ref(), net, entities)
         }
+    }
+}
+
+/// A relative position's orientation as esmini reads it: none is a relative heading of 0
+/// (ScenarioReader: "if no orientation specified, assume Relative is preferred").
+fn relative_heading(o: Option<&Orientation>) -> Orientation {
+    match o {
+        Some(o) if o.h.is_some() => o.clone(),
+        Some(o) => Orientation { h: Some(0.0), ..o.clone() },
+        None => Orientation { h: Some(0.0), reference: Some(ReferenceContext::Relative), ..Default::default() },
     }
 }
 

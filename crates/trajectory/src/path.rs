@@ -74,6 +74,26 @@ impl Path {
         self.eval(self.length)
     }
 
+    /// The direction of the path itself at `s`, without a polyline's corner blending: the
+    /// heading of the polyline segment that holds `s` (esmini's `h_true` of a trajectory
+    /// vertex), the tangent of the other shapes.
+    pub fn true_heading_at(&self, s: f64) -> f64 {
+        let s = self.normalize_s(s);
+        match &self.curve {
+            Curve::Polyline(p) => p.segment_heading(s),
+            _ => self.eval(s).heading,
+        }
+    }
+
+    /// Pitch at `s` from the vertices' heights: a polyline's, blended across corners; 0 for
+    /// the other shapes (their points carry no heights of their own).
+    pub fn pitch_at(&self, s: f64) -> f64 {
+        match &self.curve {
+            Curve::Polyline(p) => p.pitch(self.normalize_s(s)),
+            _ => 0.0,
+        }
+    }
+
     fn eval(&self, s: f64) -> PathPoint {
         let mut p = match &self.curve {
             Curve::Polyline(p) => p.eval(s),

@@ -1,12 +1,13 @@
 //! Straight segments between vertices. The heading follows each segment and, as esmini
-//! does, turns linearly across a corner over min(4 m, segment length) on each side, half
-//! the turn on either side of the vertex.
+//! does (PolyLineBase::EvaluateSegmentByLocalS, corner interpolation), turns linearly across
+//! a corner over min(2 m, half the segment's length) on each side, half the turn on either
+//! side of the vertex.
 
 use crate::angle;
 use crate::pose::PathPoint;
 
-/// Half-width of esmini's corner blending.
-const CORNER_RADIUS: f64 = 4.0;
+/// Half-width of esmini's corner blending (at most half the segment).
+const CORNER_RADIUS: f64 = 2.0;
 
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct Polyline {
@@ -42,6 +43,44 @@ impl Polyline {
         i.and_then(|i| self.headings.get(i)).copied()
     }
 
+    /// Pitch of segment `i`: −atan2(dz, horizontal length), nose down positive (esmini's
+    /// PolyLineShape::CalculatePolyLine).
+    fn segment_pitch(&self, i: usize) -> Option<f64> {
+        let (a, b) = (self.pts.get(i)?, self.pts.get(i + 1)?);
+        Some(-(b[2] - a[2]).atan2(b[3] - a[3]))
+    }
+
+    /// Pitch at `s`, blended across corners as the heading is (esmini interpolates a
+    /// trajectory's pitch with the same corner weights).
+    pub(crate) fn pitch(&self, s: f64) -> f64 {
+        let nseg = self.headings.len();
+        let i = self.pts.partition_point(|p| p[3] <= s).saturating_sub(1).min(nseg.saturating_sub(1));
+        let (Some(a), Some(b), Some(p)) = (self.pts.get(i), self.pts.get(i + 1), self.segment_pitch(i)) else { return 0.0 };
+        let len = b[3] - a[3];
+        let local = (s - a[3]).clamp(0.0, len);
+        let r = CORNER_RADIUS.min(len / 2.0);
+        let prev = if i > 0 { Some(i - 1) } else if self.closed { Some(nseg - 1) } else { None };
+        let next = if i + 1 < nseg { Some(i + 1) } else if self.closed { Some(0) } else { None };
+        if r > 0.0 && local < r {
+            if let Some(pp) = prev.and_then(|j| self.segment_pitch(j)) {
+                return pp + (r + local) / (2.0 * r) * angle::diff(p, pp);
+            }
+        } else if r > 0.0 && local > len - r {
+            if let Some(pn) = next.and_then(|j| self.segment_pitch(j)) {
+                let w = (r + (len - local)) / (2.0 * r);
+                return p + (1.0 - w) * angle::diff(pn, p);
+            }
+        }
+        p
+    }
+
+    /// Heading of the segment that holds `s` (the last one at and past the end).
+    pub(crate) fn segment_heading(&self, s: f64) -> f64 {
+        let nseg = self.headings.len();
+        let i = self.pts.partition_point(|p| p[3] <= s).saturating_sub(1).min(nseg.saturating_sub(1));
+        self.heading(Some(i)).unwrap_or(0.0)
+    }
+
     pub(crate) fn eval(&self, s: f64) -> PathPoint {
         let nseg = self.headings.len();
         let i = self.pts.partition_point(|p| p[3] <= s).saturating_sub(1).min(nseg.saturating_sub(1));
@@ -53,7 +92,7 @@ impl Polyline {
         let local = (s - a[3]).clamp(0.0, len);
         let u = if len > 0.0 { local / len } else { 0.0 };
         let lerp = |k: usize| a[k] + u * (b[k] - a[k]);
-        let r = CORNER_RADIUS.min(len);
+        let r = CORNER_RADIUS.min(len / 2.0);
         let prev = if i > 0 { Some(i - 1) } else if self.closed { Some(nseg - 1) } else { None };
         let next = if i + 1 < nseg { Some(i + 1) } else if self.closed { Some(0) } else { None };
         // Same precedence as esmini: the corner at the start wins when both overlap.

@@ -26,6 +26,12 @@ pub struct FollowTrajectoryRt {
     /// constant acceleration with the speed continuous, starting at the first segment's
     /// mean speed (esmini's vertex speeds); `position` mode moves at each segment's mean speed.
     pub accel: Option<Vec<(f64, f64, f64, f64)>>,
+    /// −1 when the entity faces against the path (it started reversing), else 1; fixed at
+    /// the start (esmini's `initialHeadingSign_`).
+    pub heading_sign: f64,
+    /// Some vertex gives its height (a z or dz): the entity pitches with the path rather than
+    /// with the road (`attitude.rs`).
+    pub elevated: bool,
 }
 
 impl FollowTrajectoryRt {
@@ -117,7 +123,19 @@ impl<'a> Sim<'a> {
         };
         let s = path.normalize_s(initial_offset.unwrap_or(0.0));
         let time = path.time_at(s).unwrap_or(0.0);
+        // esmini's FollowTrajectoryAction::Start: without time stamps the speed's sign picks the
+        // way the entity faces (against the path when reversing), and that sign is kept for
+        // the whole action.
         let speed_sign = if timing.is_none() && entity_speed < 0.0 { -1.0 } else { 1.0 };
+        if speed_sign < 0.0 && explicit_headings(traj) {
+            // esmini then faces the entity as the vertices say and moves it by sign(speed)
+            // against that (IsHSetExplicitly): along a path whose headings point forward it
+            // backs off the start and the action ends at once.
+            self.warn_action(
+                slot,
+                format!("FollowTrajectoryAction: trajectory `{}` is started reversing and its vertices give headings; esmini's motion along explicit vertex headings is not modelled (the entity faces against the path and advances along it)", traj.name),
+            );
+        }
         let p = path.pose_at(s);
         let heading = p.heading + if speed_sign < 0.0 { std::f64::consts::PI } else { 0.0 };
         let start_speed = timing.map(|_| start_speed(&path, s));
@@ -128,7 +146,7 @@ impl<'a> Sim<'a> {
             en.speed = speed_sign * v;
         }
         let accel = if timing.is_some() && mode == FollowingMode::Follow { accel_segments(&path) } else { None };
-        ActionRt::FollowTrajectory(Box::new(FollowTrajectoryRt { path, s, timing, time, accel }))
+        ActionRt::FollowTrajectory(Box::new(FollowTrajectoryRt { path, s, timing, time, accel, heading_sign: speed_sign, elevated: elevated(traj) }))
     }
 
     pub(super) fn step_follow_trajectory(&mut self, e: usize, f: &mut FollowTrajectoryRt) -> bool {
@@ -139,11 +157,14 @@ impl<'a> Sim<'a> {
         let old_s = f.s;
         let len = f.path.length();
         let mut new_speed = speed;
+        // esmini's FollowTrajectoryAction::Move: without time stamps the entity moves along the
+        // path in the direction sign(speed) × the heading sign fixed at the start (esmini's SIGN:
+        // zero counts as positive). Started reversing, it advances along the path while its
+        // speed stays negative and comes back once the speed turns positive.
+        let direction = if speed < 0.0 { -1.0 } else { 1.0 } * f.heading_sign;
         match f.timing {
             None => {
-                // Reversing (negative speed) still advances along the trajectory, the entity
-                // facing backwards (esmini: trailer_connect's reverse manoeuvre).
-                f.s = move_s(&f.path, f.s, speed.abs() * dt);
+                f.s = move_s(&f.path, f.s, direction * speed.abs() * dt);
             }
             Some(m) => {
                 match m.domain {
@@ -158,7 +179,10 @@ impl<'a> Sim<'a> {
             }
         }
         let done = match f.timing {
-            None => !f.path.is_closed() && dt > 0.0 && speed != 0.0 && f.s > len - SMALL,
+            // esmini's FollowTrajectoryAction::Step: the end ahead, or the start when moving back.
+            None => {
+                !f.path.is_closed() && dt > 0.0 && speed != 0.0 && ((direction > 0.0 && f.s > len - SMALL) || (direction < 0.0 && f.s < SMALL))
+            }
             // Summed steps drift below the last stamp by rounding; esmini's sum reaches it.
             Some(_) => f.path.time_range().is_some_and(|r| f.time >= r.1 - 1e-9),
         };
@@ -166,7 +190,9 @@ impl<'a> Sim<'a> {
         let at_end = done && f.timing.is_some() && f.path.is_closed() && f.s >= len - SMALL;
         let p = if at_end { f.path.end_pose() } else { f.path.pose_at(f.s) };
         let (mut x, mut y) = (p.x, p.y);
-        let heading = if speed < 0.0 && f.timing.is_none() { p.heading + std::f64::consts::PI } else { p.heading };
+        // The entity keeps facing the way it faced at the start (esmini's Move: turned by π
+        // while the initial heading sign is negative), whatever the speed's sign now.
+        let heading = if f.heading_sign < 0.0 { p.heading + std::f64::consts::PI } else { p.heading };
         if done {
             // The rest of the step's distance continues along the final heading.
             let rest = match f.timing {
@@ -182,6 +208,37 @@ impl<'a> Sim<'a> {
         en.speed = new_speed;
         en.moved_by_action = true;
         done
+    }
+}
+
+/// Whether a polyline vertex of `traj` gives a heading of its own.
+fn explicit_headings(traj: &Trajectory) -> bool {
+    use openscenario::Position as P;
+    match &traj.shape {
+        openscenario::Shape::Polyline(vs) => vs.iter().any(|v| match &v.position {
+            P::World { h, .. } => h.is_some(),
+            P::RelativeWorld { orientation, .. }
+            | P::RelativeObject { orientation, .. }
+            | P::Road { orientation, .. }
+            | P::RelativeRoad { orientation, .. }
+            | P::Lane { orientation, .. }
+            | P::RelativeLane { orientation, .. } => orientation.is_some_and(|o| o.h.is_some()),
+            _ => false,
+        }),
+        _ => false,
+    }
+}
+
+/// Whether a polyline vertex of `traj` gives a height of its own.
+fn elevated(traj: &Trajectory) -> bool {
+    use openscenario::Position as P;
+    match &traj.shape {
+        openscenario::Shape::Polyline(vs) => vs.iter().any(|v| match &v.position {
+            P::World { z, .. } => z.is_some(),
+            P::RelativeWorld { dz, .. } | P::RelativeObject { dz, .. } => dz.is_some(),
+            _ => false,
+        }),
+        _ => false,
     }
 }
 

@@ -3,7 +3,8 @@
 //!
 //! As esmini: the first step only records the position (the default controller moves the
 //! entity). Then the distance error is the wanted t (reference t ± distance, ± half the two
-//! widths with freespace) minus the actor's t. Without any limit the actor jumps onto it; with
+//! widths with freespace) minus the actor's t, the reference's t and the side as seen through
+//! the road path between them (`lat_state`, `roads/road_path.rs`). Without any limit the actor jumps onto it; with
 //! only a maximum speed it moves sideways at min(max speed, speed) until the error changes
 //! sign; with a maximum acceleration a critically damped spring (stiffness 0.4 × the limit)
 //! pulls the lateral velocity, its acceleration clipped to the limit and the lateral speed to
@@ -15,6 +16,10 @@
 use super::ActionRt;
 use crate::roads::lane_geometry::lane_center_t;
 use crate::roads::move_along_s;
+use crate::roads::road_follow::wrap;
+use crate::roads::road_path::path_ends;
+use opendrive::ContactPoint;
+use std::f64::consts::FRAC_PI_2;
 use crate::sim::Sim;
 use openscenario::{CoordinateSystem, DynamicConstraints, LateralDisplacement};
 
@@ -94,39 +99,59 @@ impl<'a> Sim<'a> {
         }))
     }
 
-    /// (actor t, reference t, reference lateral velocity); `None` off the roads.
-    fn lat_state(&self, e: usize, r: &LatDistanceRt) -> Option<(f64, f64, f64)> {
+    /// (actor t, reference t as seen from the actor's road, sign of the wanted side, reference
+    /// lateral velocity); `None` off the roads or when no road path joins the two.
+    ///
+    /// esmini's LatDistanceAction::GetDistanceError over Position::Delta, which runs from the
+    /// reference to the actor: the reference's t changes sign where the path turns the lane ids
+    /// around (RoadPath lane mapping). The two count as driving the same way when the
+    /// reference's facing equals the actor's — where the reference's facing is, across roads,
+    /// "forward" exactly when the path leaves the last road before the actor's by its start —
+    /// turned around when the path starts behind the reference (RoadPath::Calculate's
+    /// direction −1). The wanted side keeps its sign when the actor faces forward on its road
+    /// exactly when they drive the same way.
+    fn lat_state(&self, e: usize, r: &LatDistanceRt) -> Option<(f64, f64, f64, f64)> {
         let net = self.net?;
-        let a = self.entities.get(e)?.lane?;
+        let a_en = self.entities.get(e)?;
+        let a = a_en.lane?;
         let b_en = self.entities.get(r.target)?;
         let b = b_en.lane?;
         let t_of = |p: &crate::roads::LanePos| net.roads.get(p.road).and_then(|rd| lane_center_t(rd, p.lane_id, p.s)).map(|c| c + p.offset);
+        // esmini's IsAngleForward of the heading relative to the road.
+        let forward = |h: f64, p: &crate::roads::LanePos| p.pose(net).is_some_and(|q| wrap(h - q.road_heading).abs() <= FRAC_PI_2);
         // esmini's lateral velocity of the reference is taken in its own frame (≈ 0 for a
         // vehicle, even during a lane change: it moves along its heading).
         let vel_lat = -b_en.vel.0 * b_en.h.sin() + b_en.vel.1 * b_en.h.cos();
-        let (ta, mut tb) = (t_of(&a)?, t_of(&b)?);
-        if a.road != b.road {
-            // Different roads: compare across the link only when they run the same way.
-            tb *= a.dir * b.dir;
-        }
-        Some((ta, tb, vel_lat))
+        let (ta, tb) = (t_of(&a)?, t_of(&b)?);
+        let ref_forward = forward(b_en.h, &b);
+        let actor_forward = forward(a_en.h, &a);
+        let (ref_t, same_direction) = if a.road == b.road {
+            (tb, ref_forward == actor_forward)
+        } else {
+            let path = path_ends(net, b.road, b.s, a.road)?;
+            // Position::Delta: lanes of A mapped along the path to B's road.
+            let ref_t = if path.lanes_flip { -tb } else { tb };
+            let a_forward = path.last_exit == ContactPoint::Start;
+            // RoadPath::Calculate's direction: the path starts ahead of A (leaves A's road by
+            // the end A faces) or behind it.
+            let ahead = (path.first_exit == ContactPoint::End) == ref_forward;
+            (ref_t, (a_forward == actor_forward) == ahead)
+        };
+        let side = if actor_forward == same_direction { 1.0 } else { -1.0 };
+        Some((ta, ref_t, side, vel_lat))
     }
 
     pub(super) fn step_lat_distance(&mut self, e: usize, r: &mut LatDistanceRt) -> bool {
         let dt = self.dt;
         let Some(net) = self.net else { return true };
-        let Some((ta, tb, vel_lat)) = self.lat_state(e, r) else { return true };
-        if self.entities.get(e).and_then(|a| a.lane).map(|l| l.road) != self.entities.get(r.target).and_then(|b| b.lane).map(|l| l.road) {
-            // esmini measures the distance across roads through its road-path delta (lane
-            // mapping and facing of the found path), which is not reproduced.
-            self.warn_action(
-                r.slot,
-                "LateralDistanceAction: the actor and the reference are on different roads; the lateral distance across the link is approximated (t compared when the roads run the same way)".into(),
-            );
-        }
+        let Some((ta, tb, side, vel_lat)) = self.lat_state(e, r) else {
+            // esmini's GetDistanceError: no road path between the two ends the action.
+            self.warn_action(r.slot, "LateralDistanceAction: no road path joins the actor and the reference; the action ends".into());
+            return true;
+        };
         let Some(en) = self.entities.get_mut(e) else { return true };
         let Some(mut lp) = en.lane else { return true };
-        let error = tb + r.wanted - ta;
+        let error = tb + side * r.wanted - ta;
         match r.phase {
             Phase::Init => {
                 r.phase = if r.max_speed >= LARGE && r.max_acc >= LARGE { Phase::Rigid } else { Phase::Dynamic };

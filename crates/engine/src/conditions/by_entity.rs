@@ -41,13 +41,9 @@ impl<'a> Sim<'a> {
             }
             _ => None,
         };
-        // esmini 3.6 reads no RelativeAngleCondition; its AngleCondition has no trajectory frame here
-        if let C::RelativeAngle { .. } | C::Angle { coordinate_system: Some(CoordinateSystem::Trajectory), .. } = cond {
+        // esmini 3.6 reads no RelativeAngleCondition
+        if let C::RelativeAngle { .. } = cond {
             return self.warn_once(c, format!("{} is not supported; it never becomes true", cond.element_name()));
-        }
-        if let C::Angle { angle_type: openscenario::AngleType::Pitch | openscenario::AngleType::Roll, .. } = cond {
-            // said once; the condition is still evaluated, with the angle taken as 0
-            let _ = self.warn_once(c, "AngleCondition on pitch or roll: osc2cr's entities do not pitch or roll, the angle is taken as 0".into());
         }
         let mut result = false;
         c.hits.clear();
@@ -57,6 +53,10 @@ impl<'a> Sim<'a> {
             // esmini skips a triggering entity that does not exist (deleted), and every one
             // while the referenced entity does not exist.
             if !exists(self, idx) || c.other.is_some_and(|o| !exists(self, o)) {
+                continue;
+            }
+            // esmini's TrigByAngle skips an entity without a trajectory in the trajectory frame.
+            if matches!(cond, C::Angle { coordinate_system: Some(CoordinateSystem::Trajectory), .. }) && self.trajectory_heading(idx).is_none() {
                 continue;
             }
             let r = self.check_one(idx, c.other, point, cond);
@@ -76,6 +76,14 @@ impl<'a> Sim<'a> {
         result
     }
 
+    /// The direction of the path of the trajectory entity `idx` follows, where it is now.
+    fn trajectory_heading(&self, idx: usize) -> Option<f64> {
+        self.actions.iter().filter(|a| a.running).flat_map(|a| a.instances.iter()).find_map(|inst| match &inst.rt {
+            crate::actions::ActionRt::FollowTrajectory(f) if inst.entity == Some(idx) => Some(f.path.true_heading_at(f.s)),
+            _ => None,
+        })
+    }
+
     fn check_one(&self, idx: usize, other: Option<usize>, point: Option<(f64, f64)>, cond: &C) -> bool {
         let Some(e) = self.entities.get(idx) else { return false };
         if !e.active {
@@ -88,18 +96,42 @@ impl<'a> Sim<'a> {
             C::Angle { angle_type, angle, tolerance, coordinate_system } => {
                 // esmini's TrigByAngle::CheckCondition: the angle in the frame (world by
                 // default), wrapped to [−π, π], within the tolerance of the value (SMALL_NUMBER
-                // slack). Pitch and roll are 0 on osc2cr's flat model.
+                // slack). Pitch and roll as attitude.rs gives them.
+                use openscenario::AngleType as A;
+                let (pitch, roll) = if *angle_type == A::Heading { (0.0, 0.0) } else { self.pitch_roll(idx) };
                 let own = match angle_type {
-                    openscenario::AngleType::Heading => e.h,
-                    _ => 0.0,
+                    A::Heading => e.h,
+                    A::Pitch => pitch,
+                    A::Roll => roll,
+                };
+                let road_pr = |lp: &crate::roads::LanePos, net: &opendrive::RoadNetwork| {
+                    let (p, r) = crate::attitude::road_pitch_roll(net, lp);
+                    if *angle_type == A::Pitch {
+                        p
+                    } else {
+                        r
+                    }
+                };
+                // the lane's driving direction relative to s (esmini's GetDrivingDirectionRelativeRoad)
+                let lane_dir = |lp: &crate::roads::LanePos, net: &opendrive::RoadNetwork| {
+                    if net.roads.get(lp.road).is_none_or(|r| opendrive::drives_along_s(r.rule, lp.lane_id)) {
+                        1.0
+                    } else {
+                        -1.0
+                    }
                 };
                 let frame = match (angle_type, coordinate_system.unwrap_or(CoordinateSystem::World), self.net, e.lane) {
-                    (openscenario::AngleType::Heading, CoordinateSystem::Road, Some(net), Some(lp)) => lp.pose(net).map_or(0.0, |p| p.road_heading),
-                    (openscenario::AngleType::Heading, CoordinateSystem::Lane, Some(net), Some(lp)) => lp.pose(net).map_or(0.0, |p| {
-                        let along = net.roads.get(lp.road).is_none_or(|r| opendrive::drives_along_s(r.rule, lp.lane_id));
-                        p.road_heading + if along { 0.0 } else { std::f64::consts::PI }
+                    (A::Heading, CoordinateSystem::Road, Some(net), Some(lp)) => lp.pose(net).map_or(0.0, |p| p.road_heading),
+                    (A::Heading, CoordinateSystem::Lane, Some(net), Some(lp)) => lp.pose(net).map_or(0.0, |p| {
+                        p.road_heading + if lane_dir(&lp, net) > 0.0 { 0.0 } else { std::f64::consts::PI }
                     }),
+                    (_, CoordinateSystem::Road, Some(net), Some(lp)) => road_pr(&lp, net),
+                    (_, CoordinateSystem::Lane, Some(net), Some(lp)) => road_pr(&lp, net) * lane_dir(&lp, net),
                     (_, CoordinateSystem::Entity, _, _) => own,
+                    // the direction of the trajectory's current segment (esmini's GetHTrue);
+                    // pitch and roll have no trajectory frame in esmini (the angle is 0)
+                    (A::Heading, CoordinateSystem::Trajectory, _, _) => self.trajectory_heading(idx).unwrap_or(own),
+                    (_, CoordinateSystem::Trajectory, _, _) => own,
                     _ => 0.0,
                 };
                 let current = crate::roads::road_follow::wrap(own - frame);

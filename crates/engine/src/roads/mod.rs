@@ -12,6 +12,7 @@ pub mod offroad;
 pub mod pose_memo;
 pub mod road_distance;
 pub mod road_follow;
+pub mod road_path;
 pub mod zero_width;
 
 pub use lane_position::LanePos;

@@ -1,0 +1,67 @@
+//! The shape of the road path between two road positions as esmini's `Position::Delta` uses
+//! it for a lateral distance (RoadPath::Calculate): a shortest chain of linked roads searched
+//! from the first position in both directions, of which only the ends matter — which end of
+//! the first road it leaves by, which end of the last road before the second position's road
+//! it leaves by, and whether a lane id keeps its sign along the chain.
+
+use opendrive::{ContactPoint, RoadNetwork};
+
+/// Most road ends the search settles (hostile input: bounded work per call).
+const MAX_SETTLED: usize = 512;
+
+/// The ends of the path from road `a` to another road (see the module doc).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PathEnds {
+    /// The end of road `a` the path leaves by.
+    pub first_exit: ContactPoint,
+    /// The end of the last road before the target road that the path leaves by.
+    pub last_exit: ContactPoint,
+    /// Lane ids change sign along the path (an odd number of end-to-end or start-to-start
+    /// links: the roads run against each other).
+    pub lanes_flip: bool,
+}
+
+/// One reached road end: distance so far, road, the end it was entered by, and the path's
+/// first exit, last exit and lane flip up to it.
+type Reached = (f64, usize, ContactPoint, ContactPoint, ContactPoint, bool);
+
+/// The path from (road `a`, s `sa`) to road `b` ≠ `a`; `None` when no chain of linked roads
+/// joins them. As esmini's Dijkstra the nearest road end is expanded first, the start of
+/// road `a` before its end on a tie.
+pub fn path_ends(net: &RoadNetwork, a: usize, sa: f64, b: usize) -> Option<PathEnds> {
+    if a == b {
+        return None;
+    }
+    let ra = net.roads.get(a)?;
+    let mut frontier: Vec<Reached> = Vec::new();
+    let mut settled: Vec<(usize, ContactPoint)> = Vec::new();
+    let push = |frontier: &mut Vec<Reached>, road: usize, exit: ContactPoint, d: f64, first: Option<ContactPoint>, flip: bool| {
+        for e in net.roads_at(road, exit) {
+            // Entering by the same kind of end as left by turns the lane numbering around.
+            let f = flip ^ (e.contact == exit);
+            frontier.push((d, e.road, e.contact, first.unwrap_or(exit), exit, f));
+        }
+    };
+    push(&mut frontier, a, ContactPoint::Start, sa.clamp(0.0, ra.length), None, false);
+    push(&mut frontier, a, ContactPoint::End, (ra.length - sa).max(0.0), None, false);
+    while settled.len() < MAX_SETTLED {
+        // The first of the nearest, as esmini's strict minimum over its list in order.
+        let mut k = None;
+        for (i, r) in frontier.iter().enumerate() {
+            if k.map_or(true, |j: usize| r.0 < frontier[j].0) {
+                k = Some(i);
+            }
+        }
+        let (d, road, entry, first, last, flip) = frontier.remove(k?);
+        if settled.contains(&(road, entry)) {
+            continue;
+        }
+        settled.push((road, entry));
+        if road == b {
+            return Some(PathEnds { first_exit: first, last_exit: last, lanes_flip: flip });
+        }
+        let Some(r) = net.roads.get(road) else { continue };
+        push(&mut frontier, road, entry.opposite(), d + r.length, Some(first), flip);
+    }
+    None
+}
