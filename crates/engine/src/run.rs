@@ -87,8 +87,13 @@ pub fn simulate_with(scenario: &Scenario, roads: Option<&RoadNetwork>, settings:
         }
         let restarting = sim.ghost_restarting();
         snapshot(&sim, &mut before);
+        // ScenarioEngine::SwapAndClearDirtyBits clears the "moved" marks of the active
+        // entities only: a deleted entity keeps the mark an action set while it was away, and
+        // is not moved in the step it is added back.
         for e in &mut sim.entities {
-            e.moved_by_action = false;
+            if e.active {
+                e.moved_by_action = false;
+            }
         }
         storyboard_step(&mut sim, dt);
         if sim.nodes[root].state != State::Running {
