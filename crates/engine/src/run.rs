@@ -75,6 +75,7 @@ pub fn simulate_with(scenario: &Scenario, roads: Option<&RoadNetwork>, settings:
     snapshot(&sim, &mut before);
     storyboard_step(&mut sim, 0.0);
     sim.step_natural_drivers(0.0);
+    sim.step_looming_controllers(0.0);
     sim.pull_trailers();
     sim.after_move(&before, 0.0);
     sim.record_ghost_trail(0.0);
@@ -110,6 +111,7 @@ pub fn simulate_with(scenario: &Scenario, roads: Option<&RoadNetwork>, settings:
         if !restarting {
             sim.step_followers(dt);
             sim.step_acc_controllers(dt);
+            sim.step_looming_controllers(dt);
             sim.step_route_followers(dt);
         }
         sim.step_natural_drivers(dt);
