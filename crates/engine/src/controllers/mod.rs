@@ -18,6 +18,7 @@ pub mod followers;
 pub mod kinematic_vehicle;
 pub mod lane_router;
 pub mod looming;
+pub mod looming_view;
 pub mod natural_driver;
 pub mod natural_view;
 
@@ -64,7 +65,9 @@ impl<'a> Sim<'a> {
             "FollowReferenceController" => Some(ControllerRt::FollowReference(Box::new(follow_reference::FollowReferenceRt::new(c)))),
             "FollowRouteController" => Some(ControllerRt::FollowRoute(Box::new(follow_route::FollowRouteRt::new(c)))),
             "LoomingController" => {
-                self.warnings.push(Warning::at(&c.origin, looming::APPROXIMATION.to_string()));
+                if self.net.is_some_and(|n| n.roads.iter().any(|r| r.elevation.iter().chain(&r.superelevation).any(|c| c.b != 0.0 || c.c != 0.0 || c.d != 0.0))) {
+                    self.warnings.push(Warning::at(&c.origin, looming::APPROXIMATION.to_string()));
+                }
                 Some(ControllerRt::Looming(looming::LoomingRt::new(c)))
             }
             _ => None,
@@ -104,7 +107,7 @@ impl<'a> Sim<'a> {
             Some(Some(ControllerRt::FollowRoute(f))) => f.activate(),
             Some(Some(ControllerRt::Looming(l))) => {
                 if let Some(en) = self.entities.get(e) {
-                    l.activate(en.speed, en.max_acc, en.max_dec, longitudinal);
+                    l.activate(en, longitudinal);
                 }
             }
             _ => {}
