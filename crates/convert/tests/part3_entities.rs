@@ -70,7 +70,8 @@ fn an_entity_deleted_and_added_back_is_one_obstacle_per_appearance() {
     let (conversion, model) = convert_and_clean(&workdir("part3-entities-obstacles"), "delete_add");
     // Box centres are 1.5 m ahead of the reference point. Ego starts at x = 101.5; Target's
     // two appearances: from step 0 at x = 21.5 (lane -1), and from step 51 (5.1 s, its first
-    // CommonRoad step after the add at 5.01 s) at x = 300 + 10 · 0.09 + 1.5 = 302.4 (lane -2).
+    // CommonRoad step after the add at 5.01 s) at x = 300 + 10 · 0.10 + 1.5 = 302.5 (lane -2): esmini
+    // drives an added entity on in the step it is added.
     let obstacles = &model.scenario.dynamic_obstacles;
     let first: Vec<_> = obstacles.iter().filter(|o| (o.initial_state.x - 21.5).abs() < 1e-6).collect();
     let second: Vec<_> = obstacles.iter().filter(|o| (o.initial_state.y + 5.25).abs() < 1e-6).collect();
@@ -86,10 +87,10 @@ fn an_entity_deleted_and_added_back_is_one_obstacle_per_appearance() {
     // Second appearance: steps 51 … 70 (the last row is 7.01 s: the stop trigger "> 7" holds at
     // the storyboard time 7.01 s and that frame records nothing).
     assert_eq!(b.initial_state.time_step, 51);
-    assert!((b.initial_state.x - 302.4).abs() < 1e-6, "{:?}", b.initial_state);
+    assert!((b.initial_state.x - 302.5).abs() < 1e-6, "{:?}", b.initial_state);
     assert_eq!(b.trajectory.last().map(|s| s.time_step), Some(70));
     let end = b.trajectory.last().expect("states");
-    assert!((end.x - (300.0 + 10.0 * (7.0 - 5.01) + 1.5)).abs() < 1e-6, "{end:?}");
+    assert!((end.x - (300.0 + 10.0 * (7.0 - 5.0) + 1.5)).abs() < 1e-6, "{end:?}");
     assert!(conversion.warnings.iter().any(|w| w.message.contains("one per appearance")), "{:?}", conversion.warnings);
 }
 

@@ -75,6 +75,7 @@ pub fn simulate_with(scenario: &Scenario, roads: Option<&RoadNetwork>, settings:
     snapshot(&sim, &mut before);
     storyboard_step(&mut sim, 0.0);
     sim.step_natural_drivers(0.0);
+    sim.step_looming_controllers(0.0);
     sim.pull_trailers();
     sim.after_move(&before, 0.0);
     sim.record_ghost_trail(0.0);
@@ -87,8 +88,13 @@ pub fn simulate_with(scenario: &Scenario, roads: Option<&RoadNetwork>, settings:
         }
         let restarting = sim.ghost_restarting();
         snapshot(&sim, &mut before);
+        // ScenarioEngine::SwapAndClearDirtyBits clears the "moved" marks of the active
+        // entities only: a deleted entity keeps the mark an action set while it was away, and
+        // is not moved in the step it is added back.
         for e in &mut sim.entities {
-            e.moved_by_action = false;
+            if e.active {
+                e.moved_by_action = false;
+            }
         }
         storyboard_step(&mut sim, dt);
         if sim.nodes[root].state != State::Running {
@@ -105,6 +111,7 @@ pub fn simulate_with(scenario: &Scenario, roads: Option<&RoadNetwork>, settings:
         if !restarting {
             sim.step_followers(dt);
             sim.step_acc_controllers(dt);
+            sim.step_looming_controllers(dt);
             sim.step_route_followers(dt);
         }
         sim.step_natural_drivers(dt);

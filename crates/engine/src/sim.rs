@@ -79,6 +79,7 @@ impl<'a> Sim<'a> {
         };
         sim.signals = crate::signals::Signals::new(scenario, net, &mut sim.warnings);
         sim.trailers = crate::actions::trailer::Trailers::build(scenario, &mut sim.entities);
+        sim.initial_presence();
         for (i, e) in scenario.entities.iter().enumerate() {
             for c in &e.controllers {
                 sim.assign_controller(i, c);

@@ -127,7 +127,8 @@ fn parameter_set_is_seen_by_parameter_condition() {
 #[test]
 fn visibility_is_recorded() {
     let vis = r#"<PrivateAction><VisibilityAction graphics="false" traffic="false" sensors="false"/></PrivateAction>"#;
-    let init = format!("{}<Private entityRef=\"Ego\">{vis}</Private>", teleport("Ego", 10.0, -1));
+    // Target is placed too: an entity the Init does not name does not exist (esmini).
+    let init = format!("{}{}<Private entityRef=\"Ego\">{vis}</Private>", teleport("Ego", 10.0, -1), teleport("Target", 30.0, -1));
     let run = run(&xosc(&init, "", &trigger_stop(1.0)));
     assert!(!at(&run, "Ego", 0.5).visible);
     assert!(at(&run, "Target", 0.5).visible);

@@ -1,7 +1,9 @@
 //! AddEntityAction / DeleteEntityAction on the straight fixture road (along +x; lane -1's
-//! centre at y = -1.75, lane -2's at y = -5.25). Expected samples are worked out by hand from
-//! the frame order: a trigger true at storyboard time t acts in the frame that records the row
-//! t + 0.01 s; an entity moves by speed · 0.01 s per step.
+//! centre at y = -1.75, lane -2's at y = -5.25). Expected samples follow the frame order: a
+//! trigger true at storyboard time t acts in the frame that records the row t + 0.01 s; an
+//! entity moves by speed · 0.01 s per step. The rules were checked against esmini 3.6.0 on the
+//! same situations on its straight_500m road (an added entity is driven on in the step it is
+//! added; its actions go on while it is away; an Init teleport while away holds it one step).
 
 mod common;
 use common::*;
@@ -63,14 +65,14 @@ fn a_deleted_entity_has_no_rows_until_it_is_added_back_at_the_position() {
     for k in 201..=500 {
         assert!(sample(&r, "Target", k).is_none(), "Target has a row at step {k}");
     }
-    // Back at 5.01 s where the action put it, with the speed it had (10 m/s), without a
-    // velocity or yaw-rate spike from the jump.
+    // Back at 5.01 s: put where the action says and driven on in the same step with the
+    // speed it had (10 m/s): 300.1 m, without a velocity or yaw-rate spike from the jump.
     let back = sample(&r, "Target", 501).expect("Target exists at 5.01 s");
-    assert!(close(back.x, 300.0, 1e-9) && close(back.y, -5.25, 1e-9), "{back:?}");
+    assert!(close(back.x, 300.1, 1e-9) && close(back.y, -5.25, 1e-9), "{back:?}");
     assert!(close(back.speed, 10.0, 1e-12) && back.yaw_rate == 0.0 && back.acceleration == 0.0, "{back:?}");
-    // Then it drives on: 300 + 10 · (6.01 − 5.01) = 310 m.
+    // Then it drives on: 300.1 + 10 · (6.01 − 5.01) = 310.1 m.
     let later = sample(&r, "Target", 601).expect("Target exists at 6.01 s");
-    assert!(close(later.x, 310.0, 1e-9), "{later:?}");
+    assert!(close(later.x, 310.1, 1e-9), "{later:?}");
     // Ego is unaffected: 100 + 10 · 6 = 160 m.
     assert!(close(at(&r, "Ego", 6.0).x, 160.0, 1e-9));
     // The CSV has no Target rows while it is deleted.
@@ -114,21 +116,24 @@ fn adding_an_existing_or_deleting_a_deleted_entity_is_skipped_with_a_warning() {
     let r = run(&xosc(&init(), &story("Ego", &events), &stop(4.0)));
     assert!(warned(&r, "already exists"), "{:?}", r.warnings);
     assert!(warned(&r, "already deleted"), "{:?}", r.warnings);
+    // esmini's Start returns early: the refused actions never start, their events run on
+    // until the storyboard stops them.
+    assert_eq!(event_time(&r, "AddTwiceAction", "start"), None);
+    assert_eq!(event_time(&r, "DeleteTwiceAction", "start"), None);
+    assert!(event_time(&r, "AddTwice", "start").is_some_and(|t| close(t, 1.0, 1e-9)));
+    assert!(event_time(&r, "AddTwice", "end").is_none());
+    assert!(event_time(&r, "AddTwice", "stop").is_some_and(|t| close(t, 4.01, 1e-9)), "{:?}", event_time(&r, "AddTwice", "stop"));
     // Not moved by the skipped add: 20 + 10 · 1.5 = 35 m, still in lane -1.
     let s = at(&r, "Target", 1.5);
     assert!(close(s.x, 35.0, 1e-9) && close(s.y, -1.75, 1e-9), "{s:?}");
     assert!(sample(&r, "Target", 350).is_none());
 }
 
-#[test]
-fn the_actions_of_a_deleted_entity_end_and_new_ones_do_nothing() {
-    // Target accelerates at 1 m/s² from 10 towards 20 m/s from 0 s: 12 m/s when deleted at
-    // 2 s, where its speed action ends. A speed action started at 3 s on the deleted Target
-    // does nothing (warning). Added back at 5 s at s = 300, it keeps 12 m/s: 312 m at 6.01 s.
-    let accelerate = event("Accelerate", "parallel", &speed_action("linear", "rate", 1.0, 20.0), &at_time(0.0));
-    let stop_it = event("Halt", "parallel", &speed_action("step", "time", 0.0, 0.0), &at_time(3.0));
+/// Target's own story: `events` for Target, started at 0 s; Ego's story deletes Target at
+/// 2 s and adds it back at 5 s at s = 300 in lane -2.
+fn target_story_while_away(events: &str) -> Run {
     let target_story = format!(
-        r#"<Story name="T"><Act name="TA"><ManeuverGroup maximumExecutionCount="1" name="TG"><Actors selectTriggeringEntities="false"><EntityRef entityRef="Target"/></Actors><Maneuver name="TM">{accelerate}{stop_it}</Maneuver></ManeuverGroup>{}</Act></Story>"#,
+        r#"<Story name="T"><Act name="TA"><ManeuverGroup maximumExecutionCount="1" name="TG"><Actors selectTriggeringEntities="false"><EntityRef entityRef="Target"/></Actors><Maneuver name="TM">{events}</Maneuver></ManeuverGroup>{}</Act></Story>"#,
         at_time(0.0)
     );
     let globals = story(
@@ -139,23 +144,55 @@ fn the_actions_of_a_deleted_entity_end_and_new_ones_do_nothing() {
             event("Add", "parallel", &add("Target", 300.0, -2), &at_time(5.0))
         ),
     );
-    let r = run(&xosc(&init(), &format!("{target_story}{globals}"), &stop(7.0)));
+    run(&xosc(&init(), &format!("{target_story}{globals}"), &stop(7.0)))
+}
+
+#[test]
+fn the_actions_of_a_deleted_entity_go_on_while_it_is_away() {
+    // Target accelerates at 1 m/s² from 10 towards 20 m/s from 0 s (12 m/s when deleted at
+    // 2 s). The speed action goes on while Target is away (esmini steps it on the pooled
+    // object): 10 + 5.01 = 15.01 m/s at 5.01 s, and Target is driven 0.1501 m in the add step.
+    let r = target_story_while_away(&event("Accelerate", "parallel", &speed_action("linear", "rate", 1.0, 20.0), &at_time(0.0)));
     let before = sample(&r, "Target", 200).expect("exists at 2.00 s");
     assert!(close(before.speed, 12.0, 1e-9), "{before:?}");
-    let ended = r.trace.events.iter().find(|e| e.element == "AccelerateAction" && e.transition == "end").map(|e| e.time);
-    assert!(ended.is_some_and(|t| close(t, 2.0, 1e-9)), "{ended:?}");
-    assert!(warned(&r, "does not exist"), "{:?}", r.warnings);
     let back = sample(&r, "Target", 501).expect("exists at 5.01 s");
-    assert!(close(back.x, 300.0, 1e-9) && close(back.speed, 12.0, 1e-9), "{back:?}");
+    assert!(close(back.speed, 15.01, 1e-9) && close(back.x, 300.1501, 1e-9), "{back:?}");
+    assert!(r.warnings.is_empty(), "{:?}", r.warnings);
+}
+
+#[test]
+fn an_action_started_while_the_entity_is_away_acts_on_it() {
+    // Halted (step to 0 m/s) at 3 s while deleted: back at 5.01 s it stands at s = 300.
+    let r = target_story_while_away(&event("Halt", "parallel", &speed_action("step", "time", 0.0, 0.0), &at_time(3.0)));
+    let back = sample(&r, "Target", 501).expect("exists at 5.01 s");
+    assert!(close(back.x, 300.0, 1e-9) && back.speed == 0.0, "{back:?}");
     let later = sample(&r, "Target", 601).expect("exists at 6.01 s");
-    assert!(close(later.x, 312.0, 1e-9), "{later:?}");
+    assert!(close(later.x, 300.0, 1e-9), "{later:?}");
+    assert!(r.warnings.is_empty(), "{:?}", r.warnings);
+}
+
+#[test]
+fn an_entity_without_an_init_private_exists_only_once_added() {
+    // ScenarioReader::parseInit activates only the entities the Init names: Target, never in
+    // the Init, has no rows until added at 1 s at s = 50 (speed 0: it stays there).
+    let init = format!("{}{}", teleport("Ego", 100.0, -1), init_speed("Ego", "step", "time", 0.0, 10.0));
+    let events = event("Add", "parallel", &add("Target", 50.0, -2), &at_time(1.0));
+    let r = run(&xosc(&init, &story("Ego", &events), &stop(2.0)));
+    for k in 0..=100 {
+        assert!(sample(&r, "Target", k).is_none(), "Target has a row at step {k}");
+    }
+    let s = sample(&r, "Target", 101).expect("exists at 1.01 s");
+    assert!(close(s.x, 50.0, 1e-9) && close(s.y, -5.25, 1e-9) && s.speed == 0.0, "{s:?}");
+    assert_eq!(event_time(&r, "AddAction", "start"), Some(1.0));
 }
 
 #[test]
 fn an_entity_deleted_in_init_first_exists_when_added() {
     // Init deletes Target before anything (global Init actions come first), so it has no row
-    // at 0 s; its Init teleport and speed find no entity (warnings). Added at 1 s in lane -2 at
-    // s = 50, it stands still there (speed 0: it never got its Init speed).
+    // at 0 s; its Init teleport and speed still apply to it while it is away. Added at 1 s in
+    // lane -2 at s = 50 with its Init speed (10 m/s); the teleport's "moved" mark, never
+    // cleared while it was away (ScenarioEngine::SwapAndClearDirtyBits clears active
+    // entities only), keeps it at 50 m in the add step: 50 + 10 · 0.49 = 54.9 m at 1.50 s.
     let init = format!(
         r#"<GlobalAction><EntityAction entityRef="Target"><DeleteEntityAction/></EntityAction></GlobalAction>{}"#,
         init()
@@ -166,8 +203,9 @@ fn an_entity_deleted_in_init_first_exists_when_added() {
         assert!(sample(&r, "Target", k).is_none(), "Target has a row at step {k}");
     }
     let s = sample(&r, "Target", 101).expect("exists at 1.01 s");
-    assert!(close(s.x, 50.0, 1e-9) && close(s.y, -5.25, 1e-9) && s.speed == 0.0, "{s:?}");
+    assert!(close(s.x, 50.0, 1e-9) && close(s.y, -5.25, 1e-9) && close(s.speed, 10.0, 1e-12), "{s:?}");
     let s = sample(&r, "Target", 150).expect("exists at 1.50 s");
-    assert!(close(s.x, 50.0, 1e-9), "{s:?}");
+    assert!(close(s.x, 54.9, 1e-9), "{s:?}");
     assert!(close(at(&r, "Ego", 1.5).x, 115.0, 1e-9));
+    assert!(r.warnings.is_empty(), "{:?}", r.warnings);
 }

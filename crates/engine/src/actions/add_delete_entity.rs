@@ -1,30 +1,63 @@
-//! AddEntityAction and DeleteEntityAction, as esmini runs them: every declared entity exists
-//! from the start; deleting one takes it out of the simulation (no trace rows, no default
-//! controller, no driver model; entity conditions skip it) together with the trailers it
-//! tows; adding it back puts it at the action's position with the speed it had, its trailers
-//! straight behind it. Adding an entity that exists, or deleting one that does not, is skipped
-//! with a warning (esmini logs the same and skips).
-//!
-//! What esmini leaves open we decide: the running actions of a deleted entity end (there is
-//! nothing left for them to move), and a private action started on a deleted entity does
-//! nothing (warning).
+//! AddEntityAction and DeleteEntityAction, as esmini runs them. An entity exists from the
+//! start only if the Init has a Private element for it (esmini's ScenarioReader::parseInit
+//! activates those, with the trailers they tow; every other entity waits in the pool until an
+//! AddEntityAction). Deleting an entity takes it out of the simulation (no trace rows, no
+//! default controller, no driver model; entity conditions skip it) together with its trailers,
+//! but not out of the storyboard: its actions go on acting on it while it is away, and it comes
+//! back as they left it, at the action's position (trailers straight behind it). Adding an
+//! entity that exists, or deleting one that does not, is refused as esmini refuses it: the
+//! action never starts (its event runs on until stopped), with a warning.
 
 use crate::sim::Sim;
-use openscenario::Position;
+use openscenario::{ActionKind, GlobalAction, Position};
 
 /// Longest tow chain followed (hostile input).
 const MAX_CHAIN: usize = 100;
 
 impl<'a> Sim<'a> {
-    pub(super) fn add_entity(&mut self, slot: usize, name: &str, pos: &Position) {
-        let Some(e) = self.entity_index(name) else {
-            self.warn_action(slot, format!("AddEntityAction: unknown entity `{name}`; skipped"));
-            return;
-        };
-        if self.entities[e].active {
-            self.warn_action(slot, format!("AddEntityAction: entity `{name}` already exists; skipped"));
-            return;
+    /// Who exists at the start: the entities the Init has a Private element for, and the
+    /// trailers they tow (ScenarioReader::parseInit calls Entities::activateObject for each
+    /// Private; Entities::addObject left every declared entity inactive).
+    pub(crate) fn initial_presence(&mut self) {
+        let named: Vec<usize> = self.scenario.storyboard.init.private.iter().filter_map(|p| self.entity_index(&p.entity)).collect();
+        let mut active = vec![false; self.entities.len()];
+        for e in named {
+            for t in self.tow_chain(e) {
+                if let Some(a) = active.get_mut(t) {
+                    *a = true;
+                }
+            }
         }
+        for (en, a) in self.entities.iter_mut().zip(active) {
+            en.active = a;
+        }
+    }
+
+    /// An AddEntityAction on an entity that exists, or a DeleteEntityAction on one that does
+    /// not (or an unknown entity): esmini's AddEntityAction::Start / DeleteEntityAction::Start
+    /// return before OSCAction::Start, so the action stays in its init state.
+    pub(crate) fn entity_action_refused(&mut self, slot: usize) -> bool {
+        let model = self.actions[slot].model;
+        let (name, adding) = match &model.kind {
+            ActionKind::Global(GlobalAction::AddEntity { entity, .. }) => (entity, true),
+            ActionKind::Global(GlobalAction::DeleteEntity { entity }) => (entity, false),
+            _ => return false,
+        };
+        let element = if adding { "AddEntityAction" } else { "DeleteEntityAction" };
+        let msg = match self.entity_index(name) {
+            None => format!("{element}: unknown entity `{name}`; the action does not start"),
+            Some(e) if self.entities[e].active == adding => {
+                let state = if adding { "already exists" } else { "does not exist (already deleted)" };
+                format!("{element}: entity `{name}` {state}; the action does not start, as in esmini")
+            }
+            Some(_) => return false,
+        };
+        self.warn_action(slot, msg);
+        true
+    }
+
+    pub(super) fn add_entity(&mut self, slot: usize, name: &str, pos: &Position) {
+        let Some(e) = self.entity_index(name) else { return };
         for t in self.tow_chain(e) {
             if let Some(en) = self.entities.get_mut(t) {
                 en.active = true;
@@ -35,31 +68,25 @@ impl<'a> Sim<'a> {
                 en.offroad_since = None;
             }
         }
+        // AddEntityAction::Start moves the entity's position itself (no TeleportAction): no
+        // "moved" mark, so the default controller drives it on in this very step, unless an
+        // action moved it while it was away (the mark stayed: run.rs).
+        let held = self.entities.get(e).is_some_and(|en| en.moved_by_action);
         self.teleport(slot, e, pos);
-        self.align_chain(e);
-        // The trailers are placed too: their tow vehicle does not pull them this step.
-        for t in self.tow_chain(e) {
-            if let Some(en) = self.entities.get_mut(t) {
-                en.moved_by_action = true;
-            }
+        if let Some(en) = self.entities.get_mut(e) {
+            en.moved_by_action = held;
+            en.teleported = false;
         }
+        self.align_chain(e);
     }
 
-    pub(super) fn delete_entity(&mut self, slot: usize, name: &str) {
-        let Some(e) = self.entity_index(name) else {
-            self.warn_action(slot, format!("DeleteEntityAction: unknown entity `{name}`; skipped"));
-            return;
-        };
-        if !self.entities[e].active {
-            self.warn_action(slot, format!("DeleteEntityAction: entity `{name}` does not exist (already deleted); skipped"));
-            return;
-        }
+    pub(super) fn delete_entity(&mut self, _slot: usize, name: &str) {
+        let Some(e) = self.entity_index(name) else { return };
         for t in self.tow_chain(e) {
             if let Some(en) = self.entities.get_mut(t) {
                 en.active = false;
                 en.appeared = false;
             }
-            self.end_actions_of(t);
         }
     }
 
@@ -77,27 +104,5 @@ impl<'a> Sim<'a> {
             }
         }
         chain
-    }
-
-    /// End the running action instances of entity `e`; an action none of whose instances is
-    /// left running ends.
-    fn end_actions_of(&mut self, e: usize) {
-        let mut to_end = Vec::new();
-        for slot in &mut self.actions {
-            if !slot.running || !slot.instances.iter().any(|i| i.entity == Some(e)) {
-                continue;
-            }
-            for inst in &mut slot.instances {
-                if inst.entity == Some(e) {
-                    inst.rt = super::ActionRt::Done;
-                }
-            }
-            if slot.instances.iter().all(|i| matches!(i.rt, super::ActionRt::Done)) {
-                to_end.push(slot.node);
-            }
-        }
-        for n in to_end {
-            self.end_element(n);
-        }
     }
 }

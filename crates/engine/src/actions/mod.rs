@@ -124,6 +124,9 @@ impl<'a> Sim<'a> {
 
     /// Start action slot `slot`: running state, one instance per actor.
     pub fn start_action(&mut self, slot: usize) {
+        if self.entity_action_refused(slot) {
+            return;
+        }
         let node = self.actions[slot].node;
         self.set_state(node, Transition::Start, State::Running);
         self.actions[slot].running = true;
@@ -133,14 +136,9 @@ impl<'a> Sim<'a> {
             ActionKind::Private(p) => {
                 for k in 0..self.actions[slot].actors.len() {
                     let e = self.actions[slot].actors[k];
-                    let rt = if self.entities.get(e).is_some_and(|en| en.active) {
-                        self.start_private(slot, e, p)
-                    } else {
-                        let name = self.entities.get(e).map_or("", |en| en.name.as_str());
-                        let msg = format!("{}: entity `{name}` does not exist (deleted); nothing to do for it", p.element_name());
-                        self.warn_action(slot, msg);
-                        ActionRt::Done
-                    };
+                    // A deleted entity is still acted on (esmini keeps it in its pool and
+                    // its actions step): it shows again as they left it.
+                    let rt = self.start_private(slot, e, p);
                     self.actions[slot].instances.push(Instance { entity: Some(e), rt });
                 }
                 let instances = &self.actions[slot].instances;

@@ -72,7 +72,7 @@ impl AccRt {
 
 /// Signed distance along the lanes from `a` forward to `b` (within `max`), whether `b` is in the
 /// lane `a`'s lane leads to, and the lateral offset of `b` from there.
-fn lane_delta(net: &RoadNetwork, a: LanePos, b: LanePos, max: f64) -> Option<(f64, bool, f64)> {
+pub(super) fn lane_delta(net: &RoadNetwork, a: LanePos, b: LanePos, max: f64) -> Option<(f64, bool, f64)> {
     let t = |p: &LanePos| net.roads.get(p.road).and_then(|r| lane_center_t(r, p.lane_id, p.s)).map(|c| c + p.offset);
     if a.road == b.road {
         let ds = (b.s - a.s) * a.dir;

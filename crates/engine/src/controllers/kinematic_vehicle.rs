@@ -45,6 +45,11 @@ impl KinematicVehicle {
         self.advance(dt);
     }
 
+    /// Move one step with the speed and wheel angle as they are (vehicle::Vehicle::Update).
+    pub fn roll(&mut self, dt: f64) {
+        self.advance(dt);
+    }
+
     /// Whether the state is a real pose and speed.
     pub fn is_finite(&self) -> bool {
         self.x.is_finite() && self.y.is_finite() && self.h.is_finite() && self.speed.is_finite()

@@ -2,7 +2,8 @@
 //! AssignControllerAction) and switches on with ActivateControllerAction. A controller's type is
 //! its `esminiController` property, else its name (esmini's rule).
 //!
-//! Modelled: ACCController (see `acc`), ALKSController (the same model, see `alks`). Every
+//! Modelled: ACCController (see `acc`), ALKSController (the same model, see `alks`), the
+//! others listed in `assign_controller` (LoomingController without its steering). Every
 //! other type leaves the entity to the default controller and the storyboard, with a warning
 //! naming it; the ones that need a human or an outside process (Interactive, External, SUMO,
 //! HID, UDP driver) say so.
@@ -16,6 +17,8 @@ pub mod follow_route;
 pub mod followers;
 pub mod kinematic_vehicle;
 pub mod lane_router;
+pub mod looming;
+pub mod looming_view;
 pub mod natural_driver;
 pub mod natural_view;
 
@@ -32,6 +35,7 @@ pub enum ControllerRt {
     FollowGhost(Box<follow_ghost::FollowGhostRt>),
     FollowReference(Box<follow_reference::FollowReferenceRt>),
     FollowRoute(Box<follow_route::FollowRouteRt>),
+    Looming(looming::LoomingRt),
 }
 
 /// Types that need a driver or a co-simulator outside osc2cr.
@@ -60,6 +64,12 @@ impl<'a> Sim<'a> {
             "FollowGhostController" => Some(ControllerRt::FollowGhost(Box::new(follow_ghost::FollowGhostRt::new(c)))),
             "FollowReferenceController" => Some(ControllerRt::FollowReference(Box::new(follow_reference::FollowReferenceRt::new(c)))),
             "FollowRouteController" => Some(ControllerRt::FollowRoute(Box::new(follow_route::FollowRouteRt::new(c)))),
+            "LoomingController" => {
+                if self.net.is_some_and(|n| n.roads.iter().any(|r| r.elevation.iter().chain(&r.superelevation).any(|c| c.b != 0.0 || c.c != 0.0 || c.d != 0.0))) {
+                    self.warnings.push(Warning::at(&c.origin, looming::APPROXIMATION.to_string()));
+                }
+                Some(ControllerRt::Looming(looming::LoomingRt::new(c)))
+            }
             _ => None,
         };
         if rt.is_none() {
@@ -95,6 +105,11 @@ impl<'a> Sim<'a> {
                 }
             }
             Some(Some(ControllerRt::FollowRoute(f))) => f.activate(longitudinal),
+            Some(Some(ControllerRt::Looming(l))) => {
+                if let Some(en) = self.entities.get(e) {
+                    l.activate(en, longitudinal);
+                }
+            }
             _ => {}
         }
     }
@@ -142,6 +157,12 @@ impl<'a> Sim<'a> {
                 // Steps after the default controller (`step_route_followers`); its running lane
                 // change moves the entity instead of the default controller (esmini's override).
                 ControllerRt::FollowRoute(f) => self.hold_follower(e, f.holds_entity()),
+                // Steps after the default controller (`step_looming_controllers`).
+                ControllerRt::Looming(l) => {
+                    if l.active && self.entities.get(e).is_some_and(|en| en.active) {
+                        self.hold_for_looming(e, l);
+                    }
+                }
             }
             if let Some(slot) = self.controllers.get_mut(e) {
                 *slot = Some(rt);

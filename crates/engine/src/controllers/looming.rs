@@ -1,0 +1,330 @@
+//! LoomingController, esmini's driver model that steers by the looming of the road and the car
+//! ahead (ControllerLooming::Step), stepped after the default controller, in frame 0 too:
+//! - throttle: the lead vehicle (nearest in the lane within 130 m along the road, lateral
+//!   offset below 5 m, gap between the bounding boxes) gives `distFactor − distFactor·dvSet −
+//!   (1 − distFactor)·dvMin`, without one `setSpeed − speed`, clamped to ±1;
+//! - steering: `(1.8·near + 1.3·near' + 1.5·far') / (π/4)`, clamped to ±1, from the angle to
+//!   the near point (lane centre 10 m ahead) and to the far point: the tangent point of the
+//!   lane's inner edge within 80 m (`looming_view.rs`), else the lead vehicle within 80 m
+//!   (esmini's angle from the lead to the entity), else the lane centre 80 m ahead;
+//! - esmini's vehicle model (vehicle::Vehicle::DrivingControlAnalog) moves the entity: speed
+//!   by max acceleration or deceleration times the throttle, an engine drag of 0.1 % per step
+//!   at zero throttle, a handbrake when braking through zero; the wheel turned by the steering
+//!   and the kinematic bicycle of `kinematic_vehicle.rs`.
+
+use crate::roads::move_along_s;
+use crate::sim::Sim;
+use openscenario::Controller;
+
+/// Minimum gap to the lead vehicle, m (ControllerLooming::Step `minDist`).
+const MIN_DIST: f64 = 3.0;
+/// How far along the road a lead vehicle is looked for, m.
+const LOOKAHEAD: f64 = 130.0;
+/// Largest lateral offset of a lead vehicle, m.
+const MIN_LATERAL_DIST: f64 = 5.0;
+/// vehicle.cpp: ENGINE_BRAKE_FACTOR_DEFAULT, MAX_SPEED_DEFAULT.
+const ENGINE_BRAKE_FACTOR: f64 = 0.001;
+const VEHICLE_MAX_SPEED: f64 = 70.0;
+/// CommonMini's SMALL_NUMBER.
+const SMALL_NUMBER: f64 = 1e-6;
+const LARGE: f64 = 1e10;
+/// ControllerLooming's steering rate; vehicle.cpp's STEERING_RETURN_FACTOR_DEFAULT and
+/// STEERING_MAX_ANGLE.
+const STEERING_RATE: f64 = 4.0;
+const STEERING_RETURN_FACTOR: f64 = 4.0;
+const STEERING_MAX_ANGLE: f64 = std::f64::consts::PI / 3.0;
+/// ControllerLooming::Step: near and far point distances, m; steering gains.
+const NEAR_POINT: f64 = 10.0;
+const FAR_POINT: f64 = 80.0;
+const K0: f64 = 1.8;
+const K1: f64 = 1.3;
+const K2: f64 = 1.5;
+
+/// What the run says about a LoomingController on roads with elevation or superelevation.
+pub const APPROXIMATION: &str = "LoomingController: the OSI points of its far tangent point are esmini's for flat roads; the shorter spacing esmini uses where the road's elevation or superelevation changes is not modelled";
+
+#[derive(Debug, Clone)]
+pub struct LoomingRt {
+    pub active: bool,
+    time_gap: f64,
+    set_speed: f64,
+    set_speed_given: bool,
+    override_mode: bool,
+    /// The speed of esmini's vehicle model (vehicle_.speed_), kept by the controller.
+    speed: f64,
+    handbrake: bool,
+    max_acc: f64,
+    max_dec: f64,
+    /// An action moved the entity this step (seen before the default controller ran).
+    moved_by_action: bool,
+    /// esmini's vehicle model the controller drives (its pose; `speed` above is its speed).
+    vehicle: Option<super::kinematic_vehicle::KinematicVehicle>,
+    prev_near: f64,
+    prev_far: f64,
+    steering: f64,
+    osi: super::looming_view::OsiMemo,
+    /// The last move ended at a road end (seen by the next step).
+    end_of_road: bool,
+}
+
+impl LoomingRt {
+    /// ControllerLooming's constructor: `timeGap` (1.5 s) and `setSpeed` properties; the mode
+    /// is esmini's Controller default, override, unless `mode` says additive.
+    pub fn new(c: &Controller) -> LoomingRt {
+        let num = |n: &str| c.properties.get(n).and_then(|v| v.trim().parse::<f64>().ok());
+        LoomingRt {
+            active: false,
+            time_gap: num("timeGap").unwrap_or(1.5),
+            set_speed: num("setSpeed").unwrap_or(0.0),
+            set_speed_given: num("setSpeed").is_some(),
+            override_mode: c.properties.get("mode") != Some("additive"),
+            speed: 0.0,
+            handbrake: false,
+            max_acc: 0.0,
+            max_dec: 0.0,
+            moved_by_action: false,
+            vehicle: None,
+            prev_near: 0.0,
+            prev_far: 0.0,
+            steering: 0.0,
+            osi: Default::default(),
+            end_of_road: false,
+        }
+    }
+
+    /// ControllerLooming::Activate: the vehicle model starts at the entity's speed; the set
+    /// speed is the entity's speed unless given in override mode. The controller operates on
+    /// the longitudinal domain only.
+    pub fn activate(&mut self, en: &crate::entities::Entity, longitudinal: bool) {
+        let (speed, max_acc, max_dec) = (en.speed, en.max_acc, en.max_dec);
+        if !longitudinal {
+            return;
+        }
+        self.active = true;
+        if !self.override_mode || !self.set_speed_given {
+            self.set_speed = speed;
+        }
+        self.speed = speed;
+        self.handbrake = false;
+        self.max_acc = max_acc;
+        self.max_dec = max_dec;
+        let mut v = super::kinematic_vehicle::KinematicVehicle::new(en.x, en.y, en.h, speed, en.bbox[3], VEHICLE_MAX_SPEED);
+        v.wheel_angle = 0.0;
+        self.vehicle = Some(v);
+    }
+
+    /// vehicle::Vehicle::DrivingControlAnalog: throttle, then steering (the wheel turns at
+    /// 4 rad/s per unit of steering, scaled down with speed, returns at 4/s, at most 60° scaled),
+    /// then vehicle::Vehicle::Update.
+    fn drive(&mut self, dt: f64, throttle: f64, steering: f64) {
+        self.drive_speed(dt, throttle);
+        let speed = self.speed;
+        if let Some(v) = self.vehicle.as_mut() {
+            v.speed = speed;
+            let scale = 1.0 / (1.0 + 0.005 * speed * speed);
+            let mut w = v.wheel_angle + scale * STEERING_RATE * steering * dt;
+            w *= 1.0 - STEERING_RETURN_FACTOR * dt;
+            let limit = scale * STEERING_MAX_ANGLE;
+            v.wheel_angle = w.clamp(-limit, limit);
+            v.roll(dt);
+        }
+    }
+
+    /// DrivingControlAnalog's throttle part.
+    fn drive_speed(&mut self, dt: f64, throttle: f64) {
+        let old = self.speed;
+        if self.handbrake {
+            if throttle.abs() < SMALL_NUMBER || throttle > SMALL_NUMBER {
+                self.handbrake = false;
+            }
+            return;
+        }
+        self.speed += if throttle < 0.0 { self.max_dec } else { self.max_acc } * throttle * dt;
+        if old > 0.0 && self.speed < 0.0 {
+            self.speed = 0.0;
+            self.handbrake = true;
+        } else {
+            if throttle.abs() < SMALL_NUMBER {
+                self.speed *= 1.0 - ENGINE_BRAKE_FACTOR;
+            }
+            self.speed = self.speed.clamp(-VEHICLE_MAX_SPEED, VEHICLE_MAX_SPEED);
+        }
+    }
+}
+
+/// Position::Delta from `a` to `b` within the look-ahead: distance along the roads, whether
+/// `b` is in the lane `a`'s lane leads to, and its lateral offset from there. esmini finds the
+/// path to `b`'s road whichever junction branch it is on: when the junction rule of
+/// `move_along_s` takes another branch, `b` (ahead of `a`) counts in the same lane if it has the
+/// same lane id, offset by its own offset from its lane centre.
+fn lead_delta(net: &opendrive::RoadNetwork, a: crate::roads::LanePos, b: crate::roads::LanePos, (ax, ay, ah): (f64, f64, f64), (bx, by): (f64, f64)) -> Option<(f64, bool, f64)> {
+    if let Some(d) = super::acc::lane_delta(net, a, b, LOOKAHEAD) {
+        return Some(d);
+    }
+    if a.road == b.road || (bx - ax) * ah.cos() + (by - ay) * ah.sin() <= 0.0 {
+        return None;
+    }
+    let d = crate::roads::road_distance::road_distance_within(net, a.road, a.s, b.road, b.s, LOOKAHEAD)?;
+    Some((d, a.lane_id == b.lane_id, b.offset))
+}
+
+impl<'a> Sim<'a> {
+    /// Before the default controller: in override mode keep it from moving the entity.
+    pub(super) fn hold_for_looming(&mut self, e: usize, l: &mut LoomingRt) {
+        let Some(en) = self.entities.get_mut(e) else { return };
+        l.moved_by_action = en.moved_by_action;
+        if l.override_mode {
+            en.moved_by_action = true;
+        }
+    }
+
+    /// Step every active LoomingController by `dt`, after the default controller (esmini steps
+    /// its controllers then, in frame 0 too with dt = 0).
+    pub fn step_looming_controllers(&mut self, dt: f64) {
+        if !self.any_controller {
+            return;
+        }
+        for e in 0..self.controllers.len() {
+            if !matches!(self.controllers.get(e), Some(Some(super::ControllerRt::Looming(_)))) {
+                continue;
+            }
+            let Some(Some(super::ControllerRt::Looming(mut l))) = self.controllers.get_mut(e).map(Option::take) else { continue };
+            if l.active && self.entities.get(e).is_some_and(|en| en.active) {
+                self.step_looming(e, &mut l, dt);
+            }
+            if let Some(slot) = self.controllers.get_mut(e) {
+                *slot = Some(super::ControllerRt::Looming(l));
+            }
+        }
+    }
+
+    /// ControllerLooming::GetProbeInfo(distance, LOOKAHEADMODE_AT_LANE_CENTER).relative_h: the
+    /// angle, from the entity's heading, to the lane centre `distance` ahead along the road
+    /// (and its point).
+    fn looming_probe(&self, e: usize, distance: f64) -> Option<(f64, f64, f64)> {
+        let net = self.net?;
+        let en = self.entities.get(e)?;
+        let mut lp = en.lane?;
+        lp.offset = 0.0;
+        if distance.abs() > SMALL_NUMBER {
+            move_along_s(net, &mut lp, distance);
+        }
+        let p = lp.pose(net)?;
+        let (dx, dy) = (p.x - en.x, p.y - en.y);
+        let (sn, cs) = (-en.h).sin_cos();
+        let rx = dx * cs - dy * sn;
+        let ry = dx * sn + dy * cs;
+        let rel_h = if rx.abs() < SMALL_NUMBER && ry.abs() < SMALL_NUMBER {
+            en.h
+        } else {
+            let dot = rx / (rx * rx + ry * ry).sqrt();
+            (if ry < 0.0 { -1.0 } else { 1.0 }) * dot.clamp(-1.0, 1.0).acos()
+        };
+        Some((rel_h, p.x, p.y))
+    }
+
+    /// ControllerLooming::Step.
+    fn step_looming(&mut self, e: usize, l: &mut LoomingRt, dt: f64) {
+        let Some(me) = self.entities.get(e) else { return };
+        let current = me.speed;
+        let mut far_dist = FAR_POINT;
+        let near = self.looming_probe(e, NEAR_POINT).map_or(0.0, |p| p.0);
+        // The far tangent point on the lane edges.
+        let mut far = None;
+        let mut intersection = false;
+        let mut searched = 0.0;
+        if let (Some(net), Some(lp)) = (self.net, me.lane) {
+            let h_road = lp.pose(net).map_or(me.h, |p| p.road_heading);
+            let forward = lp.dir > 0.0;
+            let t = super::looming_view::far_tangent(net, &mut l.osi, lp, me.x, me.y, h_road, forward, far_dist);
+            far = t.point;
+            intersection = t.intersection;
+            searched = t.dist;
+        }
+        let mut far_angle = far.map_or(0.0, |f| f.2);
+        let mut has_lead_far = false;
+        let Some(me) = self.entities.get(e) else { return };
+        let mut min_gap = LARGE;
+        let mut lead: Option<usize> = None;
+        for (i, p) in self.entities.iter().enumerate() {
+            if i == e || !p.active {
+                continue;
+            }
+            let (Some(net), Some(la), Some(lb)) = (self.net, me.lane, p.lane) else { continue };
+            // Position::Delta, reference point to reference point, then the bounding boxes.
+            let Some((ds, same_lane, dt_lat)) = lead_delta(net, la, lb, (me.x, me.y, me.h), (p.x, p.y)) else { continue };
+            if ds.abs() > LOOKAHEAD {
+                continue;
+            }
+            let dh = crate::roads::road_follow::wrap(me.h - p.h).abs();
+            let front = me.bbox[3] / 2.0 + me.bbox[0];
+            let back = if dh < std::f64::consts::FRAC_PI_2 { p.bbox[3] / 2.0 - p.bbox[0] } else { p.bbox[3] / 2.0 + p.bbox[0] };
+            let gap = ds - front - back;
+            if same_lane && gap > 0.0 && gap < min_gap && dt_lat.abs() < MIN_LATERAL_DIST {
+                min_gap = gap;
+                lead = Some(i);
+                if min_gap <= far_dist {
+                    if intersection && searched < min_gap {
+                        far_dist = 0.0;
+                        break;
+                    }
+                    if far.is_some_and(|f| f.3 < min_gap) {
+                        break;
+                    }
+                    has_lead_far = true;
+                    far_angle = super::looming_view::angle_pi((me.y - p.y).atan2(me.x - p.x) - me.h);
+                }
+            }
+        }
+        if far.is_none() && !has_lead_far {
+            far_angle = self.looming_probe(e, far_dist).map_or(0.0, |p| p.0);
+        }
+        let acc = match lead.and_then(|i| self.entities.get(i)) {
+            Some(_) if min_gap < 1.0 => 0.0,
+            Some(ld) => {
+                let follow = MIN_DIST + l.time_gap * current.max(ld.speed).abs();
+                let dist_factor = ((min_gap - follow) / follow).min(1.0);
+                let dv_min = current - l.set_speed.min(ld.speed);
+                let dv_set = current - l.set_speed;
+                dist_factor - dist_factor * dv_set - (1.0 - dist_factor) * dv_min
+            }
+            None => l.set_speed - current,
+        };
+        if dt > SMALL_NUMBER {
+            let near_dot = (near - l.prev_near) / dt;
+            let far_dot = (far_angle - l.prev_far) / dt;
+            let steer = (K0 * near + K1 * near_dot + K2 * far_dot) / std::f64::consts::FRAC_PI_4;
+            l.steering = steer.clamp(-1.0, 1.0);
+        }
+        l.prev_near = near;
+        l.prev_far = far_angle;
+        l.drive(dt, acc.clamp(-1.0, 1.0), l.steering);
+        let net = self.net;
+        let Some(en) = self.entities.get_mut(e) else { return };
+        if l.override_mode && !l.moved_by_action {
+            if let Some(v) = l.vehicle {
+                // Position::SetInertiaPos with the lane locked
+                let before = en.lane;
+                // Locate it first on the road its lane leads to (esmini keeps the connecting
+                // road it is on where junction roads overlap).
+                if let (Some(net), Some(mut lp)) = (net, en.lane) {
+                    move_along_s(net, &mut lp, l.speed * dt);
+                    en.lane = Some(lp);
+                }
+                en.set_world(net, v.x, v.y, None, v.h);
+                // ScenarioEngine::step reads the position's end-of-road status before it steps
+                // the controllers: what this move finds is seen in the next step.
+                en.at_road_end = l.end_of_road;
+                l.end_of_road = match (net, before, en.lane) {
+                    (Some(net), Some(_), Some(lp)) => net.roads.get(lp.road).is_some_and(|r| {
+                        let end = if lp.dir > 0.0 { lp.s >= r.length - SMALL_NUMBER } else { lp.s <= SMALL_NUMBER };
+                        end && if lp.dir > 0.0 { r.successor.is_none() } else { r.predecessor.is_none() }
+                    }),
+                    _ => false,
+                };
+            }
+            en.moved_by_action = true;
+        }
+        en.speed = l.speed;
+    }
+}
