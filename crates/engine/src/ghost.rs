@@ -15,8 +15,8 @@
 //! modelled: such a trigger is a warning (`warn_ghost_restarts`).
 //!
 //! The run then starts at −headstart: until time 0 only the ghost moves (the default
-//! controller leaves every other entity alone, no controller steps), so at 0 the ghost leads
-//! by the head start. After every step the ghost's trail is sampled (`ghost_trail`) on
+//! controller leaves every other entity alone, no controller steps, and only the ghost's
+//! actions step: others start but wait), so at 0 the ghost leads by the head start. After every step the ghost's trail is sampled (`ghost_trail`) on
 //! esmini's accumulated clock, whose rounding decides which steps are sampled.
 
 use crate::actions::ActionSlot;
@@ -178,6 +178,14 @@ impl<'a> Sim<'a> {
     /// Whether the step starting at the current time is part of the ghost's head start.
     pub fn ghost_restarting(&self) -> bool {
         self.ghost.as_ref().is_some_and(|g| g.headstart > 0.0) && self.time < -SMALL
+    }
+
+    /// Whether an action instance on entity `e` steps while the ghost runs ahead: only the
+    /// ghost's do. esmini's `StoryBoard::Step` skips the Init actions of every other object
+    /// (and all global ones) while its ghost mode is RESTARTING, and `Event::Step` likewise the
+    /// story's; they still start, and a Start that sets a state (a step SpeedAction) sets it.
+    pub fn steps_during_restart(&self, e: usize) -> bool {
+        self.ghost.as_ref().is_some_and(|g| g.entity == e)
     }
 
     /// During the head start only the ghost moves.

@@ -73,8 +73,11 @@ pub fn simulate_with(scenario: &Scenario, roads: Option<&RoadNetwork>, settings:
         sim.start_element(s);
     }
     snapshot(&sim, &mut before);
+    let restarting = sim.ghost_restarting();
     storyboard_step(&mut sim, 0.0);
-    sim.step_natural_drivers(0.0);
+    if !restarting {
+        sim.step_natural_drivers(0.0);
+    }
     sim.pull_trailers();
     sim.after_move(&before, 0.0);
     sim.record_ghost_trail(0.0);
@@ -106,8 +109,8 @@ pub fn simulate_with(scenario: &Scenario, roads: Option<&RoadNetwork>, settings:
             sim.step_followers(dt);
             sim.step_acc_controllers(dt);
             sim.step_route_followers(dt);
+            sim.step_natural_drivers(dt);
         }
-        sim.step_natural_drivers(dt);
         sim.pull_trailers();
         sim.after_move(&before, dt);
         sim.record_ghost_trail(dt);

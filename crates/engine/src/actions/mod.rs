@@ -251,9 +251,15 @@ impl<'a> Sim<'a> {
             return;
         }
         let mut all_done = true;
+        // While the ghost runs ahead only its actions step (ghost.rs, `steps_during_restart`).
+        let held = self.ghost_restarting();
         for k in 0..self.actions[slot].instances.len() {
+            let Some(e) = self.actions[slot].instances[k].entity else { continue };
+            if held && !self.steps_during_restart(e) {
+                all_done = false;
+                continue;
+            }
             let inst = &mut self.actions[slot].instances[k];
-            let Some(e) = inst.entity else { continue };
             // Take the state out so the entity can be borrowed mutably alongside it.
             let mut rt = std::mem::replace(&mut inst.rt, ActionRt::Done);
             let done = match &mut rt {
