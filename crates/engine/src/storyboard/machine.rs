@@ -74,6 +74,7 @@ impl<'a> Sim<'a> {
             self.end_element(id);
             return;
         }
+        self.ghost_event_starts(id);
         for c in children {
             if let Some(slot) = self.nodes[c].action {
                 self.end_conflicting_actions(slot);
