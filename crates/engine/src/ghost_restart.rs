@@ -55,8 +55,9 @@ impl<'a> Sim<'a> {
             if let Some(g) = self.ghost.as_mut() {
                 g.mode = GhostMode::Restart;
                 g.trail = Trail::default();
+                // Without a head start no time rewinds: nothing to note.
                 let (_, note) = g.restart_events[k].clone();
-                if !self.warnings.contains(&note) {
+                if g.headstart > 0.0 && !self.warnings.contains(&note) {
                     self.warnings.push(note);
                 }
             }
