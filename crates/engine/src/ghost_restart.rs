@@ -85,18 +85,34 @@ impl<'a> Sim<'a> {
         }
     }
 
-    /// esmini's `ScenarioEngine::ResetEvents` puts completed events with a ghost teleport back
-    /// to standby on a restart (with execution counts it can drive below zero); not modelled:
-    /// a warning when such an event exists.
+    /// esmini's `ScenarioEngine::ResetEvents` puts the completed events that hold a teleport of
+    /// the ghost (an added one, or a TeleportAction handed over) back to standby on a restart,
+    /// with execution counts it can drive below zero; not modelled: a warning (once per event)
+    /// at the event's first action when such an event exists.
     fn warn_unreset_events(&mut self, ev: usize) {
         let Some(g) = self.ghost.as_ref() else { return };
-        let complete = g.restart_events.iter().find(|(e, _)| *e != ev && self.nodes[*e].state == crate::storyboard::State::Complete);
-        if let Some((e, w)) = complete {
+        let ghost = g.entity;
+        let mut found = Vec::new();
+        for (id, n) in self.nodes.iter().enumerate() {
+            if id == ev || n.kind != crate::storyboard::Kind::Event || n.state != crate::storyboard::State::Complete {
+                continue;
+            }
+            let slots: Vec<usize> = n.children.iter().filter_map(|&c| self.nodes[c].action).collect();
+            let teleports_ghost = slots.iter().any(|&a| {
+                let slot = &self.actions[a];
+                slot.actors.contains(&ghost) && matches!(&slot.model.kind, openscenario::ActionKind::Private(openscenario::PrivateAction::Teleport(_)))
+            });
+            if teleports_ghost || g.restart_events.iter().any(|(e, _)| *e == id) {
+                if let Some(&first) = slots.first() {
+                    found.push((n.name.clone(), self.actions[first].model.origin.clone()));
+                }
+            }
+        }
+        for (name, origin) in found {
             let msg = format!(
-                "event `{}` is complete when the ghost restarts; esmini's ScenarioEngine::ResetEvents would make it ready to start again, osc2cr leaves it complete",
-                self.nodes[*e].name
+                "event `{name}` is complete when the ghost restarts; esmini's ScenarioEngine::ResetEvents would make it ready to start again (its execution count reset, or lowered by one per further action), osc2cr leaves it complete"
             );
-            let w = crate::Warning { message: msg, ..w.clone() };
+            let w = crate::Warning::at(&origin, msg);
             if !self.warnings.contains(&w) {
                 self.warnings.push(w);
             }

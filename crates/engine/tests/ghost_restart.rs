@@ -145,3 +145,23 @@ fn a_simulation_time_trigger_moves_earlier_without_a_restart() {
     assert!(run.trace.replays.is_empty());
     assert!(restart_notes(&run).is_empty(), "{:?}", run.warnings);
 }
+
+#[test]
+fn a_completed_restart_event_at_a_later_restart_is_a_warning() {
+    // `Drift` restarts the ghost at 1.01 s and completes; `Drift2` restarts it again at 3.51 s.
+    // esmini's ResetEvents then puts `Drift` back to standby (its log: "Reset event Drift") and
+    // both events run again in the rewound time; osc2cr leaves `Drift` complete and says so.
+    let drift2 = event(
+        "Drift2",
+        "parallel",
+        r#"<PrivateAction><LateralAction><LaneOffsetAction continuous="false"><LaneOffsetActionDynamics maxLateralAcc="2" dynamicsShape="cubic"/><LaneOffsetTarget><AbsoluteTargetLaneOffset value="-0.5"/></LaneOffsetTarget></LaneOffsetAction></LateralAction></PrivateAction>"#,
+        &format!("<StartTrigger>{}</StartTrigger>", group(&near(215.0).replace("name=\"near\"", "name=\"near2\""))),
+    );
+    let text = ghost_scenario(&group(&near(240.0))).replacen("</Event></Maneuver>", &format!("</Event>{drift2}</Maneuver>"), 1);
+    let run = run(&text);
+    assert_eq!(restart_notes(&run).len(), 2, "{:?}", run.warnings);
+    let reset: Vec<String> = run.warnings.iter().map(|w| w.to_string()).filter(|w| w.contains("ResetEvents")).collect();
+    assert_eq!(reset.len(), 1, "{:?}", run.warnings);
+    assert!(reset[0].contains("event `Drift` is complete") && reset[0].contains("test.xosc:"), "{}", reset[0]);
+    assert_eq!(run.trace.replays.len(), 2);
+}
