@@ -5,12 +5,15 @@
 //! (`TeleportAction::Start` with ghost restart): the ghost takes the entity's position and
 //! speed, its trail starts afresh, and once the step is over the clock goes back by the head
 //! start and runs again to where it was, only the ghost moving (`run.rs` records those steps as
-//! the trace's replays, as esmini's log repeats those times).
+//! the trace's replays, as esmini's log repeats those times). Completed events that teleport
+//! the ghost become ready again (`ScenarioEngine::ResetEvents`), so restarts can chain.
 
 use crate::dynamics::ESMINI_SMALL_NUMBER;
 use crate::ghost::GhostMode;
 use crate::ghost_trail::Trail;
 use crate::sim::Sim;
+use crate::storyboard::{Kind, State};
+use openscenario::{ActionKind, PrivateAction};
 use crate::trace::StoryboardEvent;
 
 /// esmini's name of the added teleport action, as its event log shows it.
@@ -61,7 +64,7 @@ impl<'a> Sim<'a> {
                     self.warnings.push(note);
                 }
             }
-            self.warn_unreset_events(ev);
+            self.reset_ghost_events();
         }
         self.log_added_teleport("running", "end", "complete");
     }
@@ -85,37 +88,60 @@ impl<'a> Sim<'a> {
         }
     }
 
-    /// esmini's `ScenarioEngine::ResetEvents` puts the completed events that hold a teleport of
-    /// the ghost (an added one, or a TeleportAction handed over) back to standby on a restart,
-    /// with execution counts it can drive below zero; not modelled: a warning (once per event)
-    /// at the event's first action when such an event exists.
-    fn warn_unreset_events(&mut self, ev: usize) {
+    /// esmini's `ScenarioEngine::ResetEvents`, on a restart: each completed event with a
+    /// teleport among its private actions (an added one, or a TeleportAction handed to the
+    /// ghost) is looked at action by action, in its order (the added teleport first, then one
+    /// action per actor): an action on the ghost while the event is still complete puts the
+    /// event back to standby with its children and fresh triggers and zero executions; every
+    /// other private action takes one execution off (so the count can fall below zero and
+    /// the event run more often than its maximum, as in esmini).
+    fn reset_ghost_events(&mut self) {
         let Some(g) = self.ghost.as_ref() else { return };
         let ghost = g.entity;
-        let mut found = Vec::new();
-        for (id, n) in self.nodes.iter().enumerate() {
-            if id == ev || n.kind != crate::storyboard::Kind::Event || n.state != crate::storyboard::State::Complete {
+        let restart_events: Vec<usize> = g.restart_events.iter().map(|(e, _)| *e).collect();
+        for id in 0..self.nodes.len() {
+            let n = &self.nodes[id];
+            if n.kind != Kind::Event || n.state != State::Complete {
                 continue;
             }
-            let slots: Vec<usize> = n.children.iter().filter_map(|&c| self.nodes[c].action).collect();
-            let teleports_ghost = slots.iter().any(|&a| {
-                let slot = &self.actions[a];
-                slot.actors.contains(&ghost) && matches!(&slot.model.kind, openscenario::ActionKind::Private(openscenario::PrivateAction::Teleport(_)))
-            });
-            if teleports_ghost || g.restart_events.iter().any(|(e, _)| *e == id) {
-                if let Some(&first) = slots.first() {
-                    found.push((n.name.clone(), self.actions[first].model.origin.clone()));
+            // (on the ghost, a teleport) per private action, in esmini's order.
+            let mut private: Vec<(bool, bool)> = Vec::new();
+            if restart_events.contains(&id) {
+                private.push((true, true));
+            }
+            for &c in &n.children {
+                let Some(slot) = self.nodes[c].action.and_then(|a| self.actions.get(a)) else { continue };
+                let ActionKind::Private(p) = &slot.model.kind else { continue };
+                let teleport = matches!(p, PrivateAction::Teleport(_));
+                private.extend(slot.actors.iter().map(|&a| (a == ghost, teleport)));
+            }
+            if !private.iter().any(|&(_, teleport)| teleport) {
+                continue;
+            }
+            for (on_ghost, _) in private {
+                if on_ghost && self.nodes[id].state == State::Complete {
+                    self.reset_event_to_standby(id);
+                    self.nodes[id].executions = 0;
+                } else {
+                    self.nodes[id].executions -= 1;
                 }
             }
         }
-        for (name, origin) in found {
-            let msg = format!(
-                "event `{name}` is complete when the ghost restarts; esmini's ScenarioEngine::ResetEvents would make it ready to start again (its execution count reset, or lowered by one per further action), osc2cr leaves it complete"
-            );
-            let w = crate::Warning::at(&origin, msg);
-            if !self.warnings.contains(&w) {
-                self.warnings.push(w);
+    }
+
+    /// esmini's `StoryBoardElement::Reset(STANDBY)` of an event: it and its actions to standby
+    /// (no transition logged), its triggers fresh.
+    fn reset_event_to_standby(&mut self, id: usize) {
+        for k in 0..self.nodes[id].children.len() {
+            let c = self.nodes[id].children[k];
+            self.nodes[c].state = State::Standby;
+            if let Some(slot) = self.nodes[c].action {
+                self.actions[slot].running = false;
             }
+        }
+        self.nodes[id].state = State::Standby;
+        for t in [self.nodes[id].start_trigger, self.nodes[id].stop_trigger].into_iter().flatten() {
+            self.triggers[t].reset();
         }
     }
 }

@@ -136,7 +136,6 @@ pub fn simulate_with(scenario: &Scenario, roads: Option<&RoadNetwork>, settings:
 /// One frame from time `t` to `t + dt`; false when the storyboard stopped (nothing moved).
 fn frame(sim: &mut Sim, before: &mut [Before], t: f64, dt: f64) -> bool {
     sim.time = t;
-    let restarting = sim.ghost_restarting();
     snapshot(sim, before);
     for e in &mut sim.entities {
         e.moved_by_action = false;
@@ -145,6 +144,9 @@ fn frame(sim: &mut Sim, before: &mut [Before], t: f64, dt: f64) -> bool {
     if sim.nodes[0].state != State::Running {
         return false;
     }
+    // esmini asks for the ghost mode where it acts, so a restart in this storyboard step
+    // (RESTARTING turned RESTART) lets everything move again from here on.
+    let restarting = sim.ghost_restarting();
     sim.time = t + dt;
     if restarting {
         sim.hold_during_restart();

@@ -116,7 +116,10 @@ fn an_event_after_time_zero_restarts_the_ghost_and_time_runs_again() {
     let csv = run.trace.to_csv(&[]);
     let a = csv.find("1.020,Ego_ghost,60.1000").expect("restart row");
     let b = a + csv[a..].find("-0.970,Ego_ghost,60.2000").expect("replayed row after it");
-    assert!(csv[a..b].lines().count() == 3, "the replay follows the row of 1.02 s (ghost 1.02, Ego and Target −0.97)");
+    assert!(
+        csv[a..b].lines().count() == 3,
+        "the replay follows the row of 1.02 s (ghost 1.02, Ego and Target −0.97)"
+    );
     // And the run says so, at the condition.
     let w = restart_notes(&run);
     assert_eq!(w.len(), 1, "{:?}", run.warnings);
@@ -147,21 +150,36 @@ fn a_simulation_time_trigger_moves_earlier_without_a_restart() {
 }
 
 #[test]
-fn a_completed_restart_event_at_a_later_restart_is_a_warning() {
+fn a_later_restart_makes_completed_restart_events_ready_again() {
     // `Drift` restarts the ghost at 1.01 s and completes; `Drift2` restarts it again at 3.51 s.
-    // esmini's ResetEvents then puts `Drift` back to standby (its log: "Reset event Drift") and
-    // both events run again in the rewound time; osc2cr leaves `Drift` complete and says so.
+    // esmini's ResetEvents then puts `Drift` back to standby ("Reset event Drift"), it fires in
+    // the first rewound step (1.52 s) and restarts the ghost once more, which resets `Drift2`:
+    // time goes back from 1.02 s to -0.97 s, from 3.52 s to 1.53 s and at once from 1.53 s to
+    // -0.46 s, and each event's action runs three times.
     let drift2 = event(
         "Drift2",
         "parallel",
         r#"<PrivateAction><LateralAction><LaneOffsetAction continuous="false"><LaneOffsetActionDynamics maxLateralAcc="2" dynamicsShape="cubic"/><LaneOffsetTarget><AbsoluteTargetLaneOffset value="-0.5"/></LaneOffsetTarget></LaneOffsetAction></LateralAction></PrivateAction>"#,
-        &format!("<StartTrigger>{}</StartTrigger>", group(&near(215.0).replace("name=\"near\"", "name=\"near2\""))),
+        &format!(
+            "<StartTrigger>{}</StartTrigger>",
+            group(&near(215.0).replace("name=\"near\"", "name=\"near2\""))
+        ),
     );
     let text = ghost_scenario(&group(&near(240.0))).replacen("</Event></Maneuver>", &format!("</Event>{drift2}</Maneuver>"), 1);
     let run = run(&text);
-    assert_eq!(restart_notes(&run).len(), 2, "{:?}", run.warnings);
-    let reset: Vec<String> = run.warnings.iter().map(|w| w.to_string()).filter(|w| w.contains("ResetEvents")).collect();
-    assert_eq!(reset.len(), 1, "{:?}", run.warnings);
-    assert!(reset[0].contains("event `Drift` is complete") && reset[0].contains("test.xosc:"), "{}", reset[0]);
-    assert_eq!(run.trace.replays.len(), 2);
+    let replays: Vec<(f64, usize)> = run.trace.replays.iter().map(|r| (r.start, r.rows.len())).collect();
+    assert_eq!(replays.len(), 3, "{replays:?}");
+    for ((start, rows), (s, n)) in replays.iter().zip([(-0.97, 200), (1.53, 1), (-0.46, 399)]) {
+        assert!(close(*start, s, 1e-9) && *rows == n, "{replays:?}");
+    }
+    let starts = |name: &str| run.trace.events.iter().filter(|e| e.element == name && e.transition == "start").count();
+    assert_eq!((starts("DriftAction"), starts("Drift2Action")), (3, 3));
+    // esmini: in the last rewound run the Ego waits at (85.2811, -1.2556) while the ghost
+    // drives (102.4081, -2.25 at 1.27 s); at 5 s the Ego is at (99.9204, -1.5669).
+    let i = run.trace.entities.iter().position(|e| e.name == "Ego_ghost").expect("ghost");
+    let r = &run.trace.replays[2];
+    let at = |t: f64, e: usize| r.rows[((t - r.start) / run.trace.step).round() as usize][e].expect("sample");
+    assert!(near_xy(at(1.27, i), 102.4081, -2.25), "{:?}", xy(at(1.27, i)));
+    assert!(near_xy(at(1.27, 0), 85.2811, -1.2556), "{:?}", xy(at(1.27, 0)));
+    assert!(near_xy(at_t(&run, "Ego", 5.0), 99.9204, -1.5669), "{:?}", xy(at_t(&run, "Ego", 5.0)));
 }
