@@ -13,8 +13,8 @@ use crate::ghost::GhostMode;
 use crate::ghost_trail::Trail;
 use crate::sim::Sim;
 use crate::storyboard::{Kind, State};
-use openscenario::{ActionKind, PrivateAction};
 use crate::trace::StoryboardEvent;
+use openscenario::{ActionKind, PrivateAction};
 
 /// esmini's name of the added teleport action, as its event log shows it.
 const ADDED_TELEPORT: &str = "AddedGhostTeleport";
