@@ -42,6 +42,9 @@ pub struct Ghost {
     /// Events that teleport the ghost back to its entity when they start (esmini's
     /// `AddedGhostTeleport`), each with the condition that made it one.
     pub restart_events: Vec<(usize, crate::Warning)>,
+    /// While the actions of an event start after its added teleport: how much earlier they
+    /// start (esmini's `Event::Start` passes them the time less the head start).
+    pub start_shift: f64,
 }
 
 /// esmini's ghost modes: `Restart` for the rest of the step in which the ghost was sent back to
@@ -150,7 +153,7 @@ impl<'a> Sim<'a> {
         // esmini's ScenarioEngine::parseScenario starts a positive head start in RESTART mode;
         // its first UpdateGhostMode rewinds the clock by it (here: the clock starts there).
         let mode = if headstart > 0.0 { GhostMode::Restarting } else { GhostMode::Normal };
-        self.ghost = Some(Ghost { entity: ghost, owner, headstart, trail: Trail::default(), clock: 0.0 - headstart, true_clock: 0.0, mode, restart_events });
+        self.ghost = Some(Ghost { entity: ghost, owner, headstart, trail: Trail::default(), clock: 0.0 - headstart, true_clock: 0.0, mode, restart_events, start_shift: 0.0 });
     }
 
     /// esmini gives only the first such entity a ghost; the others' controllers do nothing.

@@ -27,6 +27,11 @@ impl<'a> Sim<'a> {
         let Some(k) = g.restart_events.iter().position(|(e, _)| *e == ev) else { return };
         let (ghost, owner) = (g.entity, g.owner);
         self.log_added_teleport("init", "start", "running");
+        // Event::Start: after a teleport of the ghost the event's other actions start at the
+        // time less the head start (`ghost_event_started` ends this).
+        if let Some(g) = self.ghost.as_mut() {
+            g.start_shift = g.headstart;
+        }
         // Event::Start: a starting action ends the running ones of its entity on a shared
         // domain; a teleport holds both.
         self.end_running_actions_of(ghost);
@@ -67,6 +72,28 @@ impl<'a> Sim<'a> {
             self.reset_ghost_events();
         }
         self.log_added_teleport("running", "end", "complete");
+    }
+
+    /// The event's actions have started.
+    pub fn ghost_event_started(&mut self) {
+        if let Some(g) = self.ghost.as_mut() {
+            g.start_shift = 0.0;
+        }
+    }
+
+    /// How much earlier than the clock an action instance on entity `e` starts (`starting`) or
+    /// steps: after an added teleport its event's actions start the head start earlier, and in
+    /// the step of a restart the ghost's story actions step at the rewound time (esmini's
+    /// `Event::Start` adjusted time and `Event::Step` in RESTART mode; Init actions keep it).
+    pub fn ghost_time_shift(&self, slot: usize, e: usize, starting: bool) -> f64 {
+        let Some(g) = self.ghost.as_ref() else { return 0.0 };
+        if starting {
+            g.start_shift
+        } else if g.mode == GhostMode::Restart && e == g.entity && !self.init_actions.contains(&slot) {
+            g.headstart
+        } else {
+            0.0
+        }
     }
 
     fn log_added_teleport(&mut self, from: &str, transition: &str, to: &str) {

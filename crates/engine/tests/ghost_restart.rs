@@ -183,3 +183,20 @@ fn a_later_restart_makes_completed_restart_events_ready_again() {
     assert!(near_xy(at(1.27, 0), 85.2811, -1.2556), "{:?}", xy(at(1.27, 0)));
     assert!(near_xy(at_t(&run, "Ego", 5.0), 99.9204, -1.5669), "{:?}", xy(at_t(&run, "Ego", 5.0)));
 }
+
+#[test]
+fn the_actions_of_a_restarting_event_start_and_run_on_the_rewound_clock() {
+    // A SpeedProfileAction (15 m/s in 2 s, then 5 m/s in 2 s) in the restarting event: esmini
+    // starts it at the time less the head start (Event::Start's adjusted time), so in the
+    // rewound run the ghost speeds up from -0.97 s: 12.475 m/s at 0 s (71.1372 m), 14.975 m/s
+    // at 1 s (84.8748 m); the Ego is at 97.4375 m at 4 s.
+    let profile = r#"<PrivateAction><LongitudinalAction><SpeedProfileAction followingMode="follow"><SpeedProfileEntry speed="15" time="2"/><SpeedProfileEntry speed="5" time="2"/></SpeedProfileAction></LongitudinalAction></PrivateAction>"#;
+    let offset = r#"<PrivateAction><LateralAction><LaneOffsetAction continuous="false"><LaneOffsetActionDynamics maxLateralAcc="2" dynamicsShape="cubic"/><LaneOffsetTarget><AbsoluteTargetLaneOffset value="0.5"/></LaneOffsetTarget></LaneOffsetAction></LateralAction></PrivateAction>"#;
+    let text = ghost_scenario(&group(&near(240.0))).replacen(offset, profile, 1);
+    let run = run(&text);
+    let ghost = replayed(&run, "Ego_ghost", 0.0);
+    assert!(near_xy(ghost, 71.1372, -1.75) && close(ghost.speed, 12.475, 1e-9), "{:?} {}", xy(ghost), ghost.speed);
+    let ghost = replayed(&run, "Ego_ghost", 1.0);
+    assert!(near_xy(ghost, 84.8748, -1.75) && close(ghost.speed, 14.975, 1e-9), "{:?} {}", xy(ghost), ghost.speed);
+    assert!(near_xy(at_t(&run, "Ego", 4.0), 97.4375, -1.75), "{:?}", xy(at_t(&run, "Ego", 4.0)));
+}

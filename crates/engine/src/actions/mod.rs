@@ -131,7 +131,11 @@ impl<'a> Sim<'a> {
                 for k in 0..self.actions[slot].actors.len() {
                     let e = self.actions[slot].actors[k];
                     let rt = if self.entities.get(e).is_some_and(|en| en.active) {
-                        self.start_private(slot, e, p)
+                        let (saved, shift) = (self.time, self.ghost_time_shift(slot, e, true));
+                        self.time = saved - shift;
+                        let rt = self.start_private(slot, e, p);
+                        self.time = saved;
+                        rt
                     } else {
                         let name = self.entities.get(e).map_or("", |en| en.name.as_str());
                         let msg = format!("{}: entity `{name}` does not exist (deleted); nothing to do for it", p.element_name());
@@ -262,6 +266,8 @@ impl<'a> Sim<'a> {
             let inst = &mut self.actions[slot].instances[k];
             // Take the state out so the entity can be borrowed mutably alongside it.
             let mut rt = std::mem::replace(&mut inst.rt, ActionRt::Done);
+            let (saved, shift) = (self.time, self.ghost_time_shift(slot, e, false));
+            self.time = saved - shift;
             let done = match &mut rt {
                 ActionRt::Speed(s) => self.step_speed(e, s),
                 ActionRt::LaneChange(l) => self.step_lane_change(e, l),
@@ -273,6 +279,7 @@ impl<'a> Sim<'a> {
                 ActionRt::LatDistance(d) => self.step_lat_distance(e, d),
                 ActionRt::Done => true,
             };
+            self.time = saved;
             if !done {
                 all_done = false;
                 self.actions[slot].instances[k].rt = rt;

@@ -81,6 +81,7 @@ impl<'a> Sim<'a> {
                 self.start_action(slot);
             }
         }
+        self.ghost_event_started();
     }
 
     /// End element `id`: complete, or standby again while it has executions left.
