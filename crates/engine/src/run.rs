@@ -34,6 +34,8 @@ pub fn simulate(scenario: &Scenario, roads: Option<&RoadNetwork>, settings: &Set
 
 /// Steps between two looks at the clock when a deadline is set.
 const DEADLINE_CHECK_STEPS: usize = 256;
+/// Rewound frames of ghost restarts a run may run, per step of the run.
+const MAX_REPLAY_FACTOR: usize = 10;
 
 /// [`simulate`] with a random seed (esmini's `--seed`) and an optional wall-clock deadline.
 pub fn simulate_with(scenario: &Scenario, roads: Option<&RoadNetwork>, settings: &Settings, control: &RunControl) -> Result<Run, Error> {
@@ -84,6 +86,10 @@ pub fn simulate_with(scenario: &Scenario, roads: Option<&RoadNetwork>, settings:
     sim.record_ghost_trail(0.0);
     record(&sim, &mut trace);
     sim.update_ghost_mode();
+    // Ghost restarts that keep re-arming each other would rewind time without end (esmini
+    // too): the rewound frames of a run are capped.
+    let max_replayed = steps.saturating_mul(MAX_REPLAY_FACTOR);
+    let mut replayed = 0usize;
 
     'run: for k in 1..=steps {
         if k % DEADLINE_CHECK_STEPS == 0 && control.deadline.is_some_and(|d| std::time::Instant::now() >= d) {
@@ -106,6 +112,15 @@ pub fn simulate_with(scenario: &Scenario, roads: Option<&RoadNetwork>, settings:
             // esmini's step() begins with UpdateGhostMode too: with no head start to make up
             // the rewound run ends before it begins.
             while !sim.update_ghost_mode() && sim.ghost_restarting() {
+                replayed += 1;
+                if replayed % DEADLINE_CHECK_STEPS == 0 && control.deadline.is_some_and(|d| std::time::Instant::now() >= d) {
+                    return Err(Error::Deadline(now));
+                }
+                if replayed > max_replayed {
+                    sim.warn_endless_restarts(t);
+                    stopped = true;
+                    break;
+                }
                 if !frame(&mut sim, &mut before, now, dt) {
                     stopped = true;
                     break;

@@ -200,3 +200,27 @@ fn the_actions_of_a_restarting_event_start_and_run_on_the_rewound_clock() {
     assert!(near_xy(ghost, 84.8748, -1.75) && close(ghost.speed, 14.975, 1e-9), "{:?} {}", xy(ghost), ghost.speed);
     assert!(near_xy(at_t(&run, "Ego", 4.0), 97.4375, -1.75), "{:?}", xy(at_t(&run, "Ego", 4.0)));
 }
+
+#[test]
+fn restarts_that_never_stop_rewinding_end_the_run_with_a_warning() {
+    // As above, but both events may run 100000 times: each restart re-arms the other event,
+    // which restarts the ghost again before the rewound time catches up. esmini runs on
+    // forever (killed after a million frames still at -0.5 s); osc2cr caps the rewound frames
+    // at ten per step of the run and ends it, saying so.
+    let drift2 = event(
+        "Drift2",
+        "parallel",
+        r#"<PrivateAction><LateralAction><LaneOffsetAction continuous="false"><LaneOffsetActionDynamics maxLateralAcc="2" dynamicsShape="cubic"/><LaneOffsetTarget><AbsoluteTargetLaneOffset value="-0.5"/></LaneOffsetTarget></LaneOffsetAction></LateralAction></PrivateAction>"#,
+        &format!("<StartTrigger>{}</StartTrigger>", group(&near(215.0).replace("name=\"near\"", "name=\"near2\""))),
+    );
+    let text = ghost_scenario(&group(&near(240.0)))
+        .replacen("</Event></Maneuver>", &format!("</Event>{drift2}</Maneuver>"), 1)
+        .replace(r#"<Event name="Drift" priority="overwrite">"#, r#"<Event name="Drift" priority="overwrite" maximumExecutionCount="100000">"#)
+        .replace(r#"<Event name="Drift2" priority="parallel">"#, r#"<Event name="Drift2" priority="parallel" maximumExecutionCount="100000">"#);
+    let run = run(&text);
+    let rewound: usize = run.trace.replays.iter().map(|r| r.rows.len()).sum();
+    assert!(rewound <= 10 * 2200, "{rewound}");
+    let ended: Vec<String> = run.warnings.iter().map(|w| w.to_string()).filter(|w| w.contains("kept rewinding time")).collect();
+    assert_eq!(ended.len(), 1, "{:?}", run.warnings);
+    assert!(ended[0].contains("test.xosc:"), "{}", ended[0]);
+}
