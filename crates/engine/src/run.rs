@@ -34,8 +34,10 @@ pub fn simulate(scenario: &Scenario, roads: Option<&RoadNetwork>, settings: &Set
 
 /// Steps between two looks at the clock when a deadline is set.
 const DEADLINE_CHECK_STEPS: usize = 256;
-/// Rewound frames of ghost restarts a run may run, per step of the run.
+/// Rewound frames of ghost restarts a run may run, per step of the run, and at most (each
+/// is a row of the trace kept in memory).
 const MAX_REPLAY_FACTOR: usize = 10;
+const MAX_REPLAYED: usize = 1_000_000;
 
 /// [`simulate`] with a random seed (esmini's `--seed`) and an optional wall-clock deadline.
 pub fn simulate_with(scenario: &Scenario, roads: Option<&RoadNetwork>, settings: &Settings, control: &RunControl) -> Result<Run, Error> {
@@ -88,7 +90,7 @@ pub fn simulate_with(scenario: &Scenario, roads: Option<&RoadNetwork>, settings:
     sim.update_ghost_mode();
     // Ghost restarts that keep re-arming each other would rewind time without end (esmini
     // too): the rewound frames of a run are capped.
-    let max_replayed = steps.saturating_mul(MAX_REPLAY_FACTOR);
+    let max_replayed = steps.saturating_mul(MAX_REPLAY_FACTOR).min(MAX_REPLAYED);
     let mut replayed = 0usize;
 
     'run: for k in 1..=steps {
