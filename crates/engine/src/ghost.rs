@@ -11,17 +11,15 @@
 //! acceleration / end-of-road / off-road / stand-still conditions watch the ghost instead.
 //! esmini also gives an event whose trigger depends on anything else a teleport of the ghost
 //! back to the entity; when it fires after time 0 esmini restarts the ghost (rewinds time by
-//! the head start, freezes the entity, logs the rewound steps again). That restart is not
-//! modelled: such a trigger is a warning (`warn_ghost_restarts`).
+//! the head start, freezes the entity, logs the rewound steps again): `ghost_restart.rs`.
 //!
 //! The run then starts at −headstart: until time 0 only the ghost moves (the default
-//! controller leaves every other entity alone, no controller steps), so at 0 the ghost leads
-//! by the head start. After every step the ghost's trail is sampled (`ghost_trail`) on
+//! controller leaves every other entity alone, no controller steps, and only the ghost's
+//! actions step: others start but wait), so at 0 the ghost leads by the head start. After every step the ghost's trail is sampled (`ghost_trail`) on
 //! esmini's accumulated clock, whose rounding decides which steps are sampled.
 
 use crate::actions::ActionSlot;
 use crate::controllers::ControllerRt;
-use crate::dynamics::SMALL;
 use crate::ghost_trail::Trail;
 use crate::sim::Sim;
 use crate::storyboard::{Kind, Node};
@@ -36,10 +34,27 @@ pub struct Ghost {
     pub headstart: f64,
     pub trail: Trail,
     /// esmini's simulation time, accumulated step by step.
-    clock: f64,
-    /// Events esmini would restart the ghost for: (event node, its executions seen so far,
-    /// the warning to give when it starts after time 0).
-    restart_events: Vec<(usize, u32, crate::Warning)>,
+    pub clock: f64,
+    /// The latest `clock` reached (esmini's `trueTime_`): a rewound run catches up to it.
+    pub true_clock: f64,
+    /// esmini's ghost mode (`SE_Env::GetGhostMode`).
+    pub mode: GhostMode,
+    /// Events that teleport the ghost back to its entity when they start (esmini's
+    /// `AddedGhostTeleport`), each with the condition that made it one.
+    pub restart_events: Vec<(usize, crate::Warning)>,
+    /// While the actions of an event start after its added teleport: how much earlier they
+    /// start (esmini's `Event::Start` passes them the time less the head start).
+    pub start_shift: f64,
+}
+
+/// esmini's ghost modes: `Restart` for the rest of the step in which the ghost was sent back to
+/// its entity, then `Restarting` while the rewound time catches up (the head start before time
+/// 0 is run the same way), else `Normal`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum GhostMode {
+    Normal,
+    Restart,
+    Restarting,
 }
 
 /// Actions esmini hands over to the ghost.
@@ -135,7 +150,10 @@ impl<'a> Sim<'a> {
         for t in triggers {
             self.hand_trigger_to_ghost(t, owner, ghost, headstart);
         }
-        self.ghost = Some(Ghost { entity: ghost, owner, headstart, trail: Trail::default(), clock: 0.0 - headstart, restart_events });
+        // esmini's ScenarioEngine::parseScenario starts a positive head start in RESTART mode;
+        // its first UpdateGhostMode rewinds the clock by it (here: the clock starts there).
+        let mode = if headstart > 0.0 { GhostMode::Restarting } else { GhostMode::Normal };
+        self.ghost = Some(Ghost { entity: ghost, owner, headstart, trail: Trail::default(), clock: 0.0 - headstart, true_clock: 0.0, mode, restart_events, start_shift: 0.0 });
     }
 
     /// esmini gives only the first such entity a ghost; the others' controllers do nothing.
@@ -175,9 +193,18 @@ impl<'a> Sim<'a> {
         self.ghost.as_ref().map_or(0.0, |g| -g.headstart)
     }
 
-    /// Whether the step starting at the current time is part of the ghost's head start.
+    /// Whether the step starting at the current time is part of the ghost's head start or of
+    /// a rewound run after a restart (esmini's RESTARTING mode).
     pub fn ghost_restarting(&self) -> bool {
-        self.ghost.as_ref().is_some_and(|g| g.headstart > 0.0) && self.time < -SMALL
+        self.ghost.as_ref().is_some_and(|g| g.mode == GhostMode::Restarting)
+    }
+
+    /// Whether an action instance on entity `e` steps while the ghost runs ahead: only the
+    /// ghost's do. esmini's `StoryBoard::Step` skips the Init actions of every other object
+    /// (and all global ones) while its ghost mode is RESTARTING, and `Event::Step` likewise the
+    /// story's; they still start, and a Start that sets a state (a step SpeedAction) sets it.
+    pub fn steps_during_restart(&self, e: usize) -> bool {
+        self.ghost.as_ref().is_some_and(|g| g.entity == e)
     }
 
     /// During the head start only the ghost moves.
@@ -190,59 +217,67 @@ impl<'a> Sim<'a> {
         }
     }
 
-    /// Sample the ghost's trail after a step of `dt` (0 for the first frame).
+    /// Sample the ghost's trail after a step of `dt` (0 for the first frame); not in the step
+    /// of a restart (esmini's `prepareGroundTruth` skips the ghost in RESTART mode).
     pub fn record_ghost_trail(&mut self, dt: f64) {
-        self.warn_ghost_restarts();
         let Some(g) = self.ghost.as_mut() else { return };
         g.clock += dt;
+        if g.clock > g.true_clock {
+            g.true_clock = g.clock;
+        }
+        if g.mode == GhostMode::Restart {
+            return;
+        }
         if let Some(en) = self.entities.get(g.entity).filter(|en| en.active) {
             g.trail.sample(g.clock, en.x, en.y, en.speed);
         }
     }
 
-    /// esmini's `ReplaceObjectInTrigger` gives each ghost event whose start trigger has a
-    /// condition other than a SimulationTime one or a ghost-watched condition on the entity
-    /// itself an `AddedGhostTeleport`; its `TeleportAction::Start` restarts the ghost when the
-    /// event starts after time 0. osc2cr lets the ghost go on instead: these events, each with
-    /// the warning (at its first such condition) given if that happens.
-    fn ghost_restart_events(&self, owner: usize, events: &[usize]) -> Vec<(usize, u32, crate::Warning)> {
+    /// esmini's `ScenarioEngine::UpdateGhostMode`, at the end of a frame: a restart rewinds the
+    /// clock by the head start (true: a rewound run begins); a rewound run ends when the clock
+    /// is back at the latest time reached.
+    pub fn update_ghost_mode(&mut self) -> bool {
+        let Some(g) = self.ghost.as_mut() else { return false };
+        match g.mode {
+            GhostMode::Restart => {
+                g.clock -= g.headstart;
+                g.mode = GhostMode::Restarting;
+                true
+            }
+            GhostMode::Restarting if g.clock > g.true_clock - crate::dynamics::ESMINI_SMALL_NUMBER => {
+                g.mode = GhostMode::Normal;
+                false
+            }
+            _ => false,
+        }
+    }
+
+    /// esmini's `ReplaceObjectInTrigger` gives each ghost event whose start trigger has an
+    /// entity condition other than a ghost-watched one on the entity itself, or one of its
+    /// by-value conditions other than SimulationTime (Parameter, Variable, TrafficSignal; a
+    /// StoryboardElementState condition is a kind of its own there) an `AddedGhostTeleport`
+    /// (`ghost_restart.rs`): these events, each with the note (at its first such condition)
+    /// given when it restarts the ghost.
+    fn ghost_restart_events(&self, owner: usize, events: &[usize]) -> Vec<(usize, crate::Warning)> {
         let mut out = Vec::new();
         for &ev in events {
             let Some(t) = self.nodes[ev].start_trigger else { continue };
             let Some(trig) = self.triggers.get(t) else { continue };
             let restarts = |c: &&crate::conditions::ConditionRt| match &c.model.kind {
-                ConditionKind::ByValue(ValueCondition::SimulationTime { .. }) => false,
-                ConditionKind::ByValue(_) => true,
+                ConditionKind::ByValue(v) => {
+                    matches!(v, ValueCondition::Parameter { .. } | ValueCondition::Variable { .. } | ValueCondition::TrafficSignal { .. })
+                }
                 ConditionKind::ByEntity { condition, .. } if watches_ghost(condition) => c.triggering.iter().any(|&e| e != owner),
                 ConditionKind::ByEntity { .. } => true,
                 ConditionKind::Unsupported { .. } => false,
             };
             let Some(c) = trig.groups.iter().flatten().find(restarts) else { continue };
             let msg = format!(
-                "condition `{}`: event `{}` started after time 0, where esmini restarts the ghost from its entity (time rewinds by the head start and the rewound steps are logged again); osc2cr does not restart it, the ghost goes on from where it is",
+                "condition `{}`: event `{}` started after time 0, where esmini restarts the ghost from its entity: time rewinds by the head start and the rewound steps are logged again (the trace CSV repeats those times, as esmini's log does; the CommonRoad conversion keeps the first pass)",
                 c.model.name, self.nodes[ev].name
             );
-            out.push((ev, self.nodes[ev].executions, crate::Warning::at(&c.model.origin, msg)));
+            out.push((ev, crate::Warning::at(&c.model.origin, msg)));
         }
         out
-    }
-
-    /// Give the warning of a restart event that started after time 0 (once per event); before
-    /// that, starts are only counted.
-    fn warn_ghost_restarts(&mut self) {
-        let after_zero = self.time > SMALL;
-        let Some(g) = self.ghost.as_mut() else { return };
-        let mut k = 0;
-        while k < g.restart_events.len() {
-            let (ev, seen, _) = &mut g.restart_events[k];
-            let now = self.nodes.get(*ev).map_or(0, |n| n.executions);
-            if now > *seen && after_zero {
-                let (_, _, w) = g.restart_events.remove(k);
-                self.warnings.push(w);
-                continue;
-            }
-            *seen = now;
-            k += 1;
-        }
     }
 }

@@ -7,8 +7,12 @@
 
 /// Time between trail samples, s.
 const SAMPLE_TIME: f64 = 0.2;
-/// Speeds below this are standing still (esmini's SMALL_NUMBER).
+/// Shortest segment length, m.
 const SMALL: f64 = 1e-10;
+/// esmini's SMALL_NUMBER (1e-6, CommonMini.hpp) in `prepareGroundTruth`'s sampling rule: speeds
+/// at or below it stand still, and a sample is due once `ghost_trail_dt - SMALL_NUMBER`
+/// passed, so a step whose accumulated clock falls a hair short of 0.2 s still samples.
+const TOLERANCE: f64 = crate::dynamics::ESMINI_SMALL_NUMBER;
 /// A trail never holds more vertices than this (hostile input: hours of simulation).
 const MAX_VERTICES: usize = 1 << 20;
 
@@ -37,10 +41,10 @@ impl Trail {
             self.push(x, y, time, speed);
             return;
         };
-        if time - last.time <= SAMPLE_TIME || (last.speed.abs() <= SMALL && speed.abs() <= SMALL) {
+        if time - last.time <= SAMPLE_TIME - TOLERANCE || (last.speed.abs() <= TOLERANCE && speed.abs() <= TOLERANCE) {
             return;
         }
-        if time - last.time > 2.0 * SAMPLE_TIME {
+        if time - last.time > 2.0 * SAMPLE_TIME - TOLERANCE {
             self.vertices.push(TrailPoint { time: time - SAMPLE_TIME, ..last });
         }
         self.push(x, y, time, speed);
@@ -152,6 +156,21 @@ mod tests {
         assert_eq!(t.vertices.len(), 5);
         assert_eq!(t.vertices[1].time, 0.25);
         assert!((t.vertices[4].s - 10.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn an_accumulated_clock_a_hair_short_of_the_interval_still_samples() {
+        // esmini's clock adds 0.01 s a step from −3 s: some intervals come out at
+        // 0.19999999999999x s, and esmini samples them (its tolerance is 1e-6 s).
+        let mut t = Trail::default();
+        let mut clock = -3.0_f64;
+        for _ in 0..1000 {
+            t.sample(clock, clock * 10.0, 0.0, 10.0);
+            clock += 0.01;
+        }
+        for w in t.vertices.windows(2) {
+            assert!((w[1].time - w[0].time - 0.2).abs() < 1e-9, "{} → {}", w[0].time, w[1].time);
+        }
     }
 
     #[test]

@@ -21,6 +21,7 @@ mod entities;
 mod init_order;
 pub mod esmini_random;
 mod ghost;
+mod ghost_restart;
 mod ghost_trail;
 mod motion;
 mod position_cache;

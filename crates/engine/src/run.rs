@@ -9,7 +9,7 @@
 use crate::motion::Before;
 use crate::sim::Sim;
 use crate::storyboard::{State, Transition};
-use crate::trace::{EntityTrace, RoadPos, Sample, Trace};
+use crate::trace::{EntityTrace, Replay, RoadPos, Sample, Trace};
 use crate::{Error, RunControl, Settings, Warning};
 use opendrive::RoadNetwork;
 use openscenario::Scenario;
@@ -34,6 +34,10 @@ pub fn simulate(scenario: &Scenario, roads: Option<&RoadNetwork>, settings: &Set
 
 /// Steps between two looks at the clock when a deadline is set.
 const DEADLINE_CHECK_STEPS: usize = 256;
+/// Rewound frames of ghost restarts a run may run, per step of the run, and at most (each
+/// is a row of the trace kept in memory).
+const MAX_REPLAY_FACTOR: usize = 10;
+const MAX_REPLAYED: usize = 1_000_000;
 
 /// [`simulate`] with a random seed (esmini's `--seed`) and an optional wall-clock deadline.
 pub fn simulate_with(scenario: &Scenario, roads: Option<&RoadNetwork>, settings: &Settings, control: &RunControl) -> Result<Run, Error> {
@@ -56,6 +60,7 @@ pub fn simulate_with(scenario: &Scenario, roads: Option<&RoadNetwork>, settings:
         events: Vec::new(),
         signal_states: Vec::new(),
         ghosts: sim.ghost.iter().filter_map(|g| sim.entities.get(g.entity)).map(|e| e.name.clone()).collect(),
+        replays: Vec::new(),
     };
     let mut before = vec![Before::default(); sim.entities.len()];
     let root = 0;
@@ -73,56 +78,117 @@ pub fn simulate_with(scenario: &Scenario, roads: Option<&RoadNetwork>, settings:
         sim.start_element(s);
     }
     snapshot(&sim, &mut before);
+    let restarting = sim.ghost_restarting();
     storyboard_step(&mut sim, 0.0);
-    sim.step_natural_drivers(0.0);
-    sim.step_looming_controllers(0.0);
+    if !restarting {
+        sim.step_natural_drivers(0.0);
+        sim.step_looming_controllers(0.0);
+    }
     sim.pull_trailers();
     sim.after_move(&before, 0.0);
     sim.record_ghost_trail(0.0);
     record(&sim, &mut trace);
+    sim.update_ghost_mode();
+    // Ghost restarts that keep re-arming each other would rewind time without end (esmini
+    // too): the rewound frames of a run are capped.
+    let max_replayed = steps.saturating_mul(MAX_REPLAY_FACTOR).min(MAX_REPLAYED);
+    let mut replayed = 0usize;
 
-    for k in 1..=steps {
-        sim.time = t0 + (k - 1) as f64 * dt;
+    'run: for k in 1..=steps {
         if k % DEADLINE_CHECK_STEPS == 0 && control.deadline.is_some_and(|d| std::time::Instant::now() >= d) {
-            return Err(Error::Deadline(sim.time));
+            return Err(Error::Deadline(t0 + (k - 1) as f64 * dt));
         }
-        let restarting = sim.ghost_restarting();
-        snapshot(&sim, &mut before);
-        // ScenarioEngine::SwapAndClearDirtyBits clears the "moved" marks of the active
-        // entities only: a deleted entity keeps the mark an action set while it was away, and
-        // is not moved in the step it is added back.
-        for e in &mut sim.entities {
-            if e.active {
-                e.moved_by_action = false;
-            }
-        }
-        storyboard_step(&mut sim, dt);
-        if sim.nodes[root].state != State::Running {
+        let t = t0 + k as f64 * dt;
+        if !frame(&mut sim, &mut before, t - dt, dt) {
             break;
         }
-        sim.time = t0 + k as f64 * dt;
-        if restarting {
-            sim.hold_during_restart();
-        } else {
-            sim.step_controllers(dt);
-        }
-        sim.hold_trailers();
-        sim.default_controller(dt);
-        if !restarting {
-            sim.step_followers(dt);
-            sim.step_acc_controllers(dt);
-            sim.step_looming_controllers(dt);
-            sim.step_route_followers(dt);
-        }
-        sim.step_natural_drivers(dt);
-        sim.pull_trailers();
-        sim.after_move(&before, dt);
-        sim.record_ghost_trail(dt);
         record(&sim, &mut trace);
+        if sim.update_ghost_mode() {
+            // A ghost restart (ghost_restart.rs): the clock goes back by the head start and
+            // runs up to `t` again, only the ghost moving (esmini's ScenarioPlayer::Frame runs
+            // these frames before the next one).
+            let headstart = sim.ghost.as_ref().map_or(0.0, |g| g.headstart);
+            let after = trace.len - 1;
+            let mut now = t - headstart;
+            let mut replay = Replay { after, start: now + dt, rows: Vec::new() };
+            let mut stopped = false;
+            // esmini's step() begins with UpdateGhostMode too: with no head start to make up
+            // the rewound run ends before it begins.
+            while !sim.update_ghost_mode() && sim.ghost_restarting() {
+                replayed += 1;
+                if replayed % DEADLINE_CHECK_STEPS == 0 && control.deadline.is_some_and(|d| std::time::Instant::now() >= d) {
+                    return Err(Error::Deadline(now));
+                }
+                if replayed > max_replayed {
+                    sim.warn_endless_restarts(t);
+                    stopped = true;
+                    break;
+                }
+                if !frame(&mut sim, &mut before, now, dt) {
+                    stopped = true;
+                    break;
+                }
+                now += dt;
+                replay.rows.push(sim.entities.iter().map(sample_of).collect());
+                if sim.update_ghost_mode() {
+                    // Restarted again while rewound: the clock goes back once more.
+                    now -= headstart;
+                    let next = Replay { after, start: now + dt, rows: Vec::new() };
+                    trace.replays.push(std::mem::replace(&mut replay, next));
+                }
+            }
+            if !replay.rows.is_empty() {
+                trace.replays.push(replay);
+            }
+            if stopped {
+                break 'run;
+            }
+            sim.time = t;
+        }
     }
     trace.events = std::mem::take(&mut sim.events);
     trace.signal_states = std::mem::take(&mut sim.signals.log);
     Ok(Run { trace, warnings: sim.warnings, lights: sim.lights, environment: sim.environment })
+}
+
+/// One frame from time `t` to `t + dt`; false when the storyboard stopped (nothing moved).
+fn frame(sim: &mut Sim, before: &mut [Before], t: f64, dt: f64) -> bool {
+    sim.time = t;
+    snapshot(sim, before);
+    // ScenarioEngine::SwapAndClearDirtyBits clears the "moved" marks of the active entities
+    // only: a deleted entity keeps the mark an action set while it was away, and is not moved
+    // in the step it is added back.
+    for e in &mut sim.entities {
+        if e.active {
+            e.moved_by_action = false;
+        }
+    }
+    storyboard_step(sim, dt);
+    if sim.nodes[0].state != State::Running {
+        return false;
+    }
+    // esmini asks for the ghost mode where it acts, so a restart in this storyboard step
+    // (RESTARTING turned RESTART) lets everything move again from here on.
+    let restarting = sim.ghost_restarting();
+    sim.time = t + dt;
+    if restarting {
+        sim.hold_during_restart();
+    } else {
+        sim.step_controllers(dt);
+    }
+    sim.hold_trailers();
+    sim.default_controller(dt);
+    if !restarting {
+        sim.step_followers(dt);
+        sim.step_acc_controllers(dt);
+        sim.step_looming_controllers(dt);
+        sim.step_route_followers(dt);
+        sim.step_natural_drivers(dt);
+    }
+    sim.pull_trailers();
+    sim.after_move(before, dt);
+    sim.record_ghost_trail(dt);
+    true
 }
 
 fn storyboard_step(sim: &mut Sim, dt: f64) {
@@ -145,18 +211,21 @@ fn snapshot(sim: &Sim, before: &mut [Before]) {
 
 fn record(sim: &Sim, trace: &mut Trace) {
     for (et, e) in trace.entities.iter_mut().zip(&sim.entities) {
-        let sample = e.active.then(|| Sample {
-            x: e.x,
-            y: e.y,
-            z: e.z,
-            h: e.h,
-            speed: e.speed,
-            acceleration: e.accel,
-            yaw_rate: e.yaw_rate,
-            road: e.lane.map(|l| RoadPos { road: l.road as u32, lane_id: l.lane_id, lane_offset: l.offset, s: l.s }),
-            visible: e.visible,
-        });
-        et.samples.push(sample);
+        et.samples.push(sample_of(e));
     }
     trace.len += 1;
+}
+
+fn sample_of(e: &crate::entities::Entity) -> Option<Sample> {
+    e.active.then(|| Sample {
+        x: e.x,
+        y: e.y,
+        z: e.z,
+        h: e.h,
+        speed: e.speed,
+        acceleration: e.accel,
+        yaw_rate: e.yaw_rate,
+        road: e.lane.map(|l| RoadPos { road: l.road as u32, lane_id: l.lane_id, lane_offset: l.offset, s: l.s }),
+        visible: e.visible,
+    })
 }

@@ -81,6 +81,21 @@ pub struct Trace {
     /// Entities that are ghosts (FollowGhost/FollowReference run them ahead of their entity):
     /// part of the run, not road users.
     pub ghosts: Vec<String>,
+    /// Steps run again after a ghost restart (`ghost_restart.rs`): time went back by the head
+    /// start and only the ghost moved. Not part of `entities` (whose samples keep each time
+    /// once, the first pass); the CSV lists them where esmini's log has them.
+    pub replays: Vec<Replay>,
+}
+
+/// Steps a ghost restart ran again, logged after row `after`.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Replay {
+    /// Index of the row these steps follow.
+    pub after: usize,
+    /// Time of the first replayed step, s; the others follow at `Trace::step`.
+    pub start: f64,
+    /// One row per replayed step: each entity's sample, in `Trace::entities` order.
+    pub rows: Vec<Vec<Option<Sample>>>,
 }
 
 impl Trace {
@@ -118,23 +133,33 @@ impl Trace {
         );
         for k in 0..self.len {
             let t = self.time(k);
-            for (i, e) in self.entities.iter().enumerate() {
-                let Some(Some(s)) = e.samples.get(k) else { continue };
-                let b = boxes.get(i).copied().unwrap_or([0.0; 6]);
-                let _ = write!(
-                    out,
-                    "{:.3},{},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},",
-                    t, csv_field(&e.name), s.x, s.y, s.z, s.h, s.speed, b[0], b[1], b[2], b[3], b[4], b[5]
-                );
-                match s.road {
-                    Some(r) => {
-                        let _ = writeln!(out, "{},{:.4},{:.4}", r.lane_id, r.lane_offset, r.s);
-                    }
-                    None => out.push_str(",,\n"),
+            let row = self.entities.iter().map(|e| e.samples.get(k).copied().flatten());
+            self.csv_row(&mut out, t, row, boxes);
+            for r in self.replays.iter().filter(|r| r.after == k) {
+                for (j, row) in r.rows.iter().enumerate() {
+                    self.csv_row(&mut out, r.start + j as f64 * self.step, row.iter().copied(), boxes);
                 }
             }
         }
         out
+    }
+
+    fn csv_row(&self, out: &mut String, t: f64, row: impl Iterator<Item = Option<Sample>>, boxes: &[[f64; 6]]) {
+        for (i, (e, s)) in self.entities.iter().zip(row).enumerate() {
+            let Some(s) = s else { continue };
+            let b = boxes.get(i).copied().unwrap_or([0.0; 6]);
+            let _ = write!(
+                out,
+                "{:.3},{},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},",
+                t, csv_field(&e.name), s.x, s.y, s.z, s.h, s.speed, b[0], b[1], b[2], b[3], b[4], b[5]
+            );
+            match s.road {
+                Some(r) => {
+                    let _ = writeln!(out, "{},{:.4},{:.4}", r.lane_id, r.lane_offset, r.s);
+                }
+                None => out.push_str(",,\n"),
+            }
+        }
     }
 }
 

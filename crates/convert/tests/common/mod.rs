@@ -127,6 +127,7 @@ pub fn trace(len: usize, names: &[&str], f: impl Fn(usize, usize) -> Option<Samp
         ghosts: Vec::new(),
         events: Vec::new(),
         signal_states: Vec::new(),
+        replays: Vec::new(),
     }
 }
 

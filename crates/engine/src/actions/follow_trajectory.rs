@@ -152,6 +152,7 @@ impl<'a> Sim<'a> {
     pub(super) fn step_follow_trajectory(&mut self, e: usize, f: &mut FollowTrajectoryRt) -> bool {
         let dt = self.dt;
         let sim_time = self.time;
+        let ghost_offset = self.ghost.as_ref().filter(|g| g.entity == e).map_or(0.0, |g| g.headstart);
         let Some(en) = self.entities.get(e) else { return true };
         let speed = en.speed;
         let old_s = f.s;
@@ -169,7 +170,9 @@ impl<'a> Sim<'a> {
             Some(m) => {
                 match m.domain {
                     TimeDomain::Relative => f.time += m.scale * dt,
-                    TimeDomain::Absolute => f.time = (sim_time + dt) * m.scale,
+                    // esmini's FollowTrajectoryAction::Move: a ghost reads absolute time stamps
+                    // its head start later (timeOffset), so it is where its entity will be.
+                    TimeDomain::Absolute => f.time = (sim_time + dt) * m.scale + ghost_offset,
                 }
                 f.s = f.s_at_time(f.time + m.offset).unwrap_or(f.s);
                 let end = f.path.time_range().map_or(0.0, |r| r.1);

@@ -137,8 +137,12 @@ impl<'a> Sim<'a> {
                 for k in 0..self.actions[slot].actors.len() {
                     let e = self.actions[slot].actors[k];
                     // A deleted entity is still acted on (esmini keeps it in its pool and
-                    // its actions step): it shows again as they left it.
+                    // its actions step): it shows again as they left it. An action of a ghost's
+                    // restarting event starts on the rewound clock (ghost_time_shift).
+                    let (saved, shift) = (self.time, self.ghost_time_shift(slot, e, true));
+                    self.time = saved - shift;
                     let rt = self.start_private(slot, e, p);
+                    self.time = saved;
                     self.actions[slot].instances.push(Instance { entity: Some(e), rt });
                 }
                 let instances = &self.actions[slot].instances;
@@ -256,11 +260,19 @@ impl<'a> Sim<'a> {
             return;
         }
         let mut all_done = true;
+        // While the ghost runs ahead only its actions step (ghost.rs, `steps_during_restart`).
+        let held = self.ghost_restarting();
         for k in 0..self.actions[slot].instances.len() {
+            let Some(e) = self.actions[slot].instances[k].entity else { continue };
+            if held && !self.steps_during_restart(e) {
+                all_done = false;
+                continue;
+            }
             let inst = &mut self.actions[slot].instances[k];
-            let Some(e) = inst.entity else { continue };
             // Take the state out so the entity can be borrowed mutably alongside it.
             let mut rt = std::mem::replace(&mut inst.rt, ActionRt::Done);
+            let (saved, shift) = (self.time, self.ghost_time_shift(slot, e, false));
+            self.time = saved - shift;
             let done = match &mut rt {
                 ActionRt::Speed(s) => self.step_speed(e, s),
                 ActionRt::LaneChange(l) => self.step_lane_change(e, l),
@@ -272,6 +284,7 @@ impl<'a> Sim<'a> {
                 ActionRt::LatDistance(d) => self.step_lat_distance(e, d),
                 ActionRt::Done | ActionRt::EndedAtStart => true,
             };
+            self.time = saved;
             if !done {
                 all_done = false;
                 self.actions[slot].instances[k].rt = rt;

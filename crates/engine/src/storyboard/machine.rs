@@ -15,7 +15,7 @@ impl<'a> Sim<'a> {
         let (state, has_trigger, kind) = (n.state, n.start_trigger.is_some(), n.kind);
         if state == State::Init && has_trigger {
             self.set_state(id, Transition::InitToStandby, State::Standby);
-        } else if state == State::Init || state == State::Standby || self.nodes[id].executions > 0 {
+        } else if state == State::Init || state == State::Standby || self.nodes[id].executions != 0 {
             self.set_state(id, Transition::Start, State::Running);
             self.nodes[id].executions += 1;
             if kind == Kind::ManeuverGroup && !self.triggering_actors.is_empty() {
@@ -74,12 +74,14 @@ impl<'a> Sim<'a> {
             self.end_element(id);
             return;
         }
+        self.ghost_event_starts(id);
         for c in children {
             if let Some(slot) = self.nodes[c].action {
                 self.end_conflicting_actions(slot);
                 self.start_action(slot);
             }
         }
+        self.ghost_event_started();
     }
 
     /// End element `id`: complete, or standby again while it has executions left.
@@ -100,7 +102,7 @@ impl<'a> Sim<'a> {
         }
         if n.state == State::Running || n.state == State::Standby {
             let repeatable = matches!(n.kind, Kind::ManeuverGroup | Kind::Event);
-            if repeatable && n.executions < n.max_executions {
+            if repeatable && n.executions < i64::from(n.max_executions) {
                 if let Some(t) = n.start_trigger {
                     self.triggers[t].reset();
                 }
