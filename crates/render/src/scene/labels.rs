@@ -1,0 +1,72 @@
+//! Labels of road users: `name (id)` (or `id N` without a name), the ego's marked, each put
+//! beside its box where it covers the fewest other labels and boxes, inside the map area.
+
+use super::prim::Prim;
+use crate::font;
+use crate::layout::{Label, PxRect};
+use crate::style;
+
+/// The text of a label.
+pub fn text(id: u64, name: Option<&str>, ego: bool) -> String {
+    let base = match name {
+        Some(n) if !n.trim().is_empty() => format!("{} ({id})", n.trim()),
+        _ => format!("id {id}"),
+    };
+    let says_ego = name.is_some_and(|n| n.to_ascii_lowercase().contains("ego"));
+    if ego && !says_ego {
+        format!("{base} ego")
+    } else {
+        base
+    }
+}
+
+/// Gap between a box and its label, pixels.
+const GAP: f64 = 3.0;
+
+/// Where each label goes: `boxes` are the road users' boxes, `texts` their labels (same
+/// order); the labels stay inside `area`.
+pub fn place(boxes: &[PxRect], texts: &[String], size: f64, area: &PxRect) -> Vec<PxRect> {
+    let mut placed: Vec<PxRect> = Vec::new();
+    for (b, t) in boxes.iter().zip(texts) {
+        let (w, h) = font::text_box(t, size);
+        let (cx, cy) = b.center();
+        let candidates = [
+            (cx - 0.5 * w, b.y0 - GAP - h),
+            (cx - 0.5 * w, b.y1 + GAP),
+            (b.x1 + GAP, cy - 0.5 * h),
+            (b.x0 - GAP - w, cy - 0.5 * h),
+            (b.x1 + GAP, b.y0 - GAP - h),
+            (b.x0 - GAP - w, b.y0 - GAP - h),
+            (b.x1 + GAP, b.y1 + GAP),
+            (b.x0 - GAP - w, b.y1 + GAP),
+        ];
+        let mut best: Option<(f64, PxRect)> = None;
+        for (x, y) in candidates {
+            let r = PxRect::new(x, y, w, h).pushed_into(area);
+            let cost: f64 = placed.iter().chain(boxes).map(|o| o.overlap(&r)).sum::<f64>()
+                // a label pushed away from its box reads as someone else's
+                + 0.05 * (r.x0 - x).abs().max((r.y0 - y).abs()) * h;
+            if best.is_none_or(|(c, _)| cost < c) {
+                best = Some((cost, r));
+            }
+        }
+        if let Some((_, r)) = best {
+            placed.push(r);
+        }
+    }
+    placed
+}
+
+/// The label prims.
+pub fn prims(labels: &[(Label, bool)], size: f64, out: &mut Vec<Prim>) {
+    for (l, ego) in labels {
+        out.push(Prim::Text {
+            x: l.rect.x0,
+            y: l.rect.y0,
+            size,
+            color: style::TEXT,
+            background: Some(if *ego { style::EGO_LABEL_BACKGROUND } else { style::LABEL_BACKGROUND }),
+            text: l.text.clone(),
+        });
+    }
+}
