@@ -1,5 +1,6 @@
-//! The header strip: the time, and the storyboard events that have happened by then — the
-//! newest on the right, highlighted for [`style::MARK_HIGHLIGHT_S`] after it happens.
+//! The header strip: the time, and the storyboard events that have happened by then — those of
+//! one time step together, with their time unless it is the header's, the newest on the right (cut short if it alone is too long),
+//! highlighted for [`style::MARK_HIGHLIGHT_S`] after it happens.
 
 use super::prim::{Prim, Rgba, Stroke};
 use super::time_label;
@@ -61,20 +62,39 @@ pub fn header(width: u32, step: u64, dt: f64, marks: &[Mark], out: &mut Vec<Prim
     out.push(text(pad, pad, size, style::TEXT, None, stamp));
 
     let now = step as f64 * dt;
-    let happened: Vec<&Mark> = marks.iter().filter(|m| step_of(m.time, dt) <= step).collect();
+    // the marks so far, those of one step together: (step, "A, B")
+    let mut groups: Vec<(u64, String)> = Vec::new();
+    for m in marks.iter().filter(|m| step_of(m.time, dt) <= step) {
+        let k = step_of(m.time, dt);
+        match groups.iter_mut().find(|(g, _)| *g == k) {
+            Some((_, text)) => {
+                text.push_str(", ");
+                text.push_str(&m.text);
+            }
+            None => groups.push((k, m.text.clone())),
+        }
+    }
+    groups.sort_by_key(|(k, _)| *k);
     let x_first = pad + stamp_w + 2.0 * pad;
     let room = f64::from(width) - pad - x_first;
-    // the newest that fit, kept in time order
+    let dot = style::text_dot(width);
+    // the newest that fit, kept in time order; the newest cut short if it alone is too long
     let mut shown: Vec<(String, bool, f64)> = Vec::new();
     let mut used = 0.0;
-    for m in happened.iter().rev() {
-        let s = mark_text(m, dt);
-        let w = font::text_box(&s, size).0;
+    for (i, (k, text)) in groups.iter().rev().enumerate() {
+        // at its own step the time is the header's already
+        let mut s = if *k == step { text.clone() } else { mark_text(&Mark { time: *k as f64 * dt, text: text.clone() }, dt) };
+        let mut w = font::text_box(&s, size).0;
+        if i == 0 && w > room {
+            let chars = ((room - 3.0 * dot) / (font::ADVANCE as f64 * dot)).floor().max(0.0) as usize;
+            s = font::truncate(&s, chars);
+            w = font::text_box(&s, size).0;
+        }
         if used + w > room {
             break;
         }
         used += w + pad;
-        let fresh = now - step_of(m.time, dt) as f64 * dt < style::MARK_HIGHLIGHT_S - 1e-9;
+        let fresh = now - *k as f64 * dt < style::MARK_HIGHLIGHT_S - 1e-9;
         shown.push((s, fresh, w));
     }
     let mut x = x_first;
