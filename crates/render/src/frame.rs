@@ -33,9 +33,9 @@ pub const FOLLOW_ASPECT: f64 = 0.5;
 pub enum ViewPlan {
     Fixed(View),
     Follow { view: View, id: ObstacleId },
-    /// A camera that keeps the road users of each step in the middle, at one scale that
-    /// holds them at every step: (step, centre) for each step someone is on the road.
-    Pan { view: View, centres: BTreeMap<u64, (f64, f64)> },
+    /// A camera that keeps the road users of each step in the middle, zoomed to hold them:
+    /// (step, (centre x, centre y, pixels per metre)) for each step someone is on the road.
+    Pan { view: View, cameras: BTreeMap<u64, (f64, f64, f64)> },
 }
 
 impl ViewPlan {
@@ -43,10 +43,10 @@ impl ViewPlan {
     pub fn at(&self, scenario: &Scenario, step: u64) -> View {
         match self {
             ViewPlan::Fixed(v) => *v,
-            ViewPlan::Pan { view, centres } => {
-                let c = centres.range(..=step).next_back().or_else(|| centres.range(step..).next());
+            ViewPlan::Pan { view, cameras } => {
+                let c = cameras.range(..=step).next_back().or_else(|| cameras.range(step..).next());
                 match c {
-                    Some((_, &(x, y))) => view.centred_on(x, y),
+                    Some((_, &(x, y, scale))) => View { scale, ..*view }.centred_on(x, y),
                     None => *view,
                 }
             }
@@ -101,8 +101,8 @@ pub fn road_users(scenario: &Scenario, still: Option<(u64, u64)>) -> Bounds {
 
 /// Height / width of a panning camera's view.
 pub const PAN_ASPECT: f64 = 0.6;
-/// An animation pans when that shows the road users at least this many times larger than one
-/// view of the whole run.
+/// An animation pans and zooms with the road users when that shows them on average at least
+/// this many times larger than one view of the whole run.
 pub const PAN_GAIN: f64 = 1.5;
 
 /// The boxes of the road users at `step`.
@@ -116,26 +116,61 @@ fn users_at(scenario: &Scenario, step: u64) -> Bounds {
     b
 }
 
-/// The panning camera of an animation, if it shows the road users [`PAN_GAIN`] times larger
-/// than `fixed` does.
+/// How far ahead and behind a camera looks to zoom smoothly, s.
+pub const ZOOM_WINDOW_S: f64 = 2.0;
+
+/// The smallest of `v[k - w ..= k + w]` at each k.
+fn min_filter(v: &[f64], w: usize) -> Vec<f64> {
+    (0..v.len())
+        .map(|k| v[k.saturating_sub(w)..=(k + w).min(v.len() - 1)].iter().copied().fold(f64::INFINITY, f64::min))
+        .collect()
+}
+
+/// The mean of `v[k - w ..= k + w]` at each k.
+fn mean_filter(v: &[f64], w: usize) -> Vec<f64> {
+    (0..v.len())
+        .map(|k| {
+            let part = &v[k.saturating_sub(w)..=(k + w).min(v.len() - 1)];
+            part.iter().sum::<f64>() / part.len() as f64
+        })
+        .collect()
+}
+
+/// The camera of an animation that follows the road users: at each step centred on them and
+/// zoomed to hold them — the scale the smallest within [`ZOOM_WINDOW_S`] either side, then
+/// averaged over the same window, so the zoom is smooth and never cuts anyone off. `None` when
+/// it would not show them on average [`PAN_GAIN`] times larger than `fixed`.
 fn pan(scenario: &Scenario, fixed: &View, width: u32, y0: f64) -> Result<Option<ViewPlan>, RenderError> {
     let fit = Fit { aspect: (PAN_ASPECT, PAN_ASPECT), ..Fit::ACTION };
-    let mut centres = BTreeMap::new();
-    let mut smallest: Option<View> = None;
+    let mut steps = Vec::new();
+    let mut centres = Vec::new();
+    let mut scales = Vec::new();
+    let mut any: Option<View> = None;
     for step in first_step(scenario)..=last_step(scenario) {
         let b = users_at(scenario, step);
         if !b.is_valid() {
             continue;
         }
         let v = View::fit(b, width, &fit, y0)?;
-        centres.insert(step, (0.5 * (b.min_x + b.max_x), 0.5 * (b.min_y + b.max_y)));
-        if smallest.is_none_or(|s| v.scale < s.scale) {
-            smallest = Some(v);
-        }
+        steps.push(step);
+        centres.push((0.5 * (b.min_x + b.max_x), 0.5 * (b.min_y + b.max_y)));
+        scales.push(v.scale);
+        any.get_or_insert(v);
     }
-    Ok(smallest
-        .filter(|v| v.scale >= PAN_GAIN * fixed.scale)
-        .map(|view| ViewPlan::Pan { view, centres }))
+    let Some(view) = any else { return Ok(None) };
+    let w = step_of(ZOOM_WINDOW_S, scenario.header.time_step_size) as usize;
+    let smooth = mean_filter(&min_filter(&scales, w), w);
+    let mean = smooth.iter().sum::<f64>() / smooth.len() as f64;
+    if mean < PAN_GAIN * fixed.scale {
+        return Ok(None);
+    }
+    let cameras = steps
+        .into_iter()
+        .zip(centres)
+        .zip(smooth)
+        .map(|((k, (x, y)), scale)| (k, (x, y, scale)))
+        .collect();
+    Ok(Some(ViewPlan::Pan { view, cameras }))
 }
 
 /// The view plan of `frame` for `purpose`, the map area `width` pixels wide from row `y0`;

@@ -105,7 +105,7 @@ fn follow_keeps_the_road_user_in_the_middle() {
 }
 
 #[test]
-fn an_animation_pans_with_a_road_user_that_goes_far() {
+fn an_animation_pans_and_zooms_with_road_users_that_go_far() {
     // the car alone, 500 m along: one view of it all would make it 10 px long
     let (mut s, p) = straight(500);
     s.dynamic_obstacles.truncate(1);
@@ -116,6 +116,18 @@ fn an_animation_pans_with_a_road_user_that_goes_far() {
         let o = &l.obstacles[0];
         assert!(o.length_px >= 30.0, "{}", o.length_px);
         legible(&l, 30.0);
+    }
+    // the car drives away from the pedestrian: the camera zooms out in time, nobody is cut off
+    let (s, p) = straight(500);
+    let prepared = Prepared::new(&s, Some(&p), &RenderOptions::default(), Purpose::Animation, None, true).unwrap();
+    assert!(matches!(prepared.plan, ViewPlan::Pan { .. }));
+    let scale = |k| prepared.layout(k).scale;
+    assert!(scale(0) > 3.0 * scale(500), "{} {}", scale(0), scale(500));
+    for step in (0..=500).step_by(10) {
+        let l = prepared.layout(step);
+        for o in &l.obstacles {
+            assert!(o.bbox.inside(&l.map), "step {step}: {:?} outside {:?}", o.bbox, l.map);
+        }
     }
     // the short run of `straight(50)` fits one view
     let (s, p) = straight(50);
