@@ -11,7 +11,8 @@ use crate::Failure;
 pub struct RenderArgs {
     /// The scenario: CommonRoad XML (.xml) or OpenSCENARIO (.xosc, converted with defaults).
     pub file: PathBuf,
-    /// The picture: .png or .svg (a still) or .gif (an animation of the whole scenario).
+    /// The picture: .png or .svg (a still) or .gif (an animation of the whole scenario, each
+    /// storyboard Event highlighted from the frame it starts in).
     #[arg(short, long)]
     pub output: PathBuf,
     /// Time of a still, s (repeatable: several stills are written as OUT_t<T>.png).
@@ -25,8 +26,9 @@ pub struct RenderArgs {
     #[arg(long)]
     pub ego: Option<u64>,
     /// Keep this road user in the centre (a window 100 m wide): its OpenSCENARIO name or its
-    /// CommonRoad obstacle id. By default a picture shows where the road users are — at the
-    /// still's time, or over the whole run for an animation.
+    /// CommonRoad obstacle id. By default a still shows where the road users are at its time,
+    /// and an animation where they are over the run, or a camera that pans and zooms with them
+    /// when that shows them larger.
     #[arg(long, value_name = "NAME", conflicts_with_all = ["region", "whole_map"])]
     pub follow: Option<String>,
     /// Show this world rectangle (metres, the map's coordinates), widened to an aspect
