@@ -173,3 +173,28 @@ fn the_font_has_every_printable_ascii_character() {
         }
     }
 }
+
+#[test]
+fn a_time_bar_shows_when_the_events_happen() {
+    let (s, p) = straight(50);
+    let plain = render_layout(&s, Some(&p), &at(0.5)).unwrap();
+    let marks = vec![Mark { time: 1.0, text: "Start".into() }, Mark { time: 3.0, text: "Cross".into() }];
+    let o = RenderOptions { marks, ..at(0.5) };
+    let with = render_layout(&s, Some(&p), &o).unwrap();
+    // a strip under the map, the map itself the same
+    assert!(with.height > plain.height);
+    assert_eq!(with.map, plain.map);
+    // before either event the header names none, but the bar's ticks show both
+    let pm = decode_png(&render_png(&s, Some(&p), &o).unwrap());
+    let c = rgb(render::style::MARK_NEW);
+    let below: usize = (with.map.y1 as u32..pm.height())
+        .flat_map(|y| (0..pm.width()).map(move |x| (x, y)))
+        .filter(|&xy| pixel(&pm, xy) == c)
+        .count();
+    assert!(below > 20, "{below} tick pixels");
+    let above: usize = (0..with.map.y0 as u32)
+        .flat_map(|y| (0..pm.width()).map(move |x| (x, y)))
+        .filter(|&xy| pixel(&pm, xy) == c)
+        .count();
+    assert_eq!(above, 0, "no event highlighted in the header yet");
+}

@@ -9,6 +9,7 @@ mod labels;
 mod network;
 mod obstacles;
 pub mod prim;
+mod timebar;
 mod trails;
 
 use std::borrow::Cow;
@@ -22,7 +23,7 @@ use crate::frame::{plan, Purpose, ViewPlan};
 use crate::layout::{DrawnObstacle, Label, Layout, PxRect};
 use crate::options::{Mark, RenderOptions};
 use crate::style;
-use crate::timeline::step_of;
+use crate::timeline::{first_step, last_step, step_of};
 use crate::view::View;
 use prim::{Prim, Scene};
 
@@ -37,6 +38,8 @@ pub struct Prepared<'a> {
     pub height: u32,
     /// Whether the picture has a header (time, events): not for a bare map.
     timed: bool,
+    /// Whether a time bar runs under the map (a timed picture with marks).
+    time_bar: bool,
     legend: Vec<footer::Entry>,
     /// The map layer of a fixed view.
     still: Option<Vec<Prim>>,
@@ -63,8 +66,10 @@ impl<'a> Prepared<'a> {
         let plan = plan(scenario, problems, &options.frame, purpose, options.width, header_h, aspect)?;
         let legend = if legend { footer::entries(scenario, problems, ego) } else { Vec::new() };
         let view = plan.any();
+        let time_bar = timed && !options.marks.is_empty();
+        let bar_h = if time_bar { timebar::height(options.width) } else { 0.0 };
         let footer_h = footer::height(options.width, &legend, true);
-        let height = (header_h + f64::from(view.height) + footer_h).round() as u32;
+        let height = (header_h + f64::from(view.height) + bar_h + footer_h).round() as u32;
         let dt = scenario.header.time_step_size;
         let mut p = Self {
             scenario,
@@ -74,6 +79,7 @@ impl<'a> Prepared<'a> {
             width: options.width,
             height,
             timed,
+            time_bar,
             legend,
             still: None,
             names: options.names.clone(),
@@ -179,7 +185,14 @@ impl<'a> Prepared<'a> {
         if self.timed {
             header::header(self.width, step, self.scenario.header.time_step_size, &self.marks, &mut out);
         }
-        footer::footer(Some(&view), self.width, view.y0 + f64::from(view.height), &self.legend, &mut out);
+        let mut y = view.y0 + f64::from(view.height);
+        if self.time_bar {
+            let (first, last) = (first_step(self.scenario), last_step(self.scenario));
+            let dt = self.scenario.header.time_step_size;
+            timebar::bar(self.width, y, first, last, step, dt, &self.marks, &mut out);
+            y += timebar::height(self.width);
+        }
+        footer::footer(Some(&view), self.width, y, &self.legend, &mut out);
         (out, drawn)
     }
 
