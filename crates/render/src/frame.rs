@@ -173,7 +173,7 @@ fn pan(scenario: &Scenario, fixed: &View, width: u32, y0: f64) -> Result<Option<
     Ok(Some(ViewPlan::Pan { view, cameras }))
 }
 
-/// The view plan of `frame` for `purpose`, the map area `width` pixels wide from row `y0`;
+/// The view plan of `frame` for `purpose`, the map area `width` pixels wide from row `top_px`;
 /// `aspect` (height / width) fixes the map area's shape when given (panels of a sheet).
 pub fn plan(
     scenario: &Scenario,
@@ -181,19 +181,19 @@ pub fn plan(
     frame: &Frame,
     purpose: Purpose,
     width: u32,
-    y0: f64,
+    top_px: f64,
     aspect: Option<f64>,
 ) -> Result<ViewPlan, RenderError> {
     let with_aspect = |fit: Fit| match aspect {
         Some(a) => Fit { aspect: (a, a), ..fit },
         None => fit,
     };
-    let whole = || View::fit(content_bounds(scenario, problems), width, &with_aspect(Fit::WHOLE), y0);
+    let whole = || View::fit(content_bounds(scenario, problems), width, &with_aspect(Fit::WHOLE), top_px);
     match frame {
         Frame::WholeMap => whole().map(ViewPlan::Fixed),
-        Frame::Region([x0, y0_, x1, y1]) => {
-            let b = Bounds { min_x: *x0, min_y: *y0_, max_x: *x1, max_y: *y1 };
-            View::fit(b, width, &with_aspect(Fit::EXACT), y0).map(ViewPlan::Fixed)
+        Frame::Region([x0, y0, x1, y1]) => {
+            let b = Bounds { min_x: *x0, min_y: *y0, max_x: *x1, max_y: *y1 };
+            View::fit(b, width, &with_aspect(Fit::EXACT), top_px).map(ViewPlan::Fixed)
         }
         Frame::Action => {
             let framed_trail = step_of(FRAMED_TRAIL_S, scenario.header.time_step_size);
@@ -209,9 +209,9 @@ pub fn plan(
             if !b.is_valid() {
                 return whole().map(ViewPlan::Fixed);
             }
-            let fixed = View::fit(b, width, &with_aspect(Fit::ACTION), y0)?;
+            let fixed = View::fit(b, width, &with_aspect(Fit::ACTION), top_px)?;
             if purpose == Purpose::Animation && aspect.is_none() {
-                if let Some(p) = pan(scenario, &fixed, width, y0)? {
+                if let Some(p) = pan(scenario, &fixed, width, top_px)? {
                     return Ok(p);
                 }
             }
@@ -226,7 +226,7 @@ pub fn plan(
             let a = aspect.unwrap_or(FOLLOW_ASPECT);
             let half = 0.5 * FOLLOW_SPAN_M;
             let b = Bounds { min_x: -half, max_x: half, min_y: -half * a, max_y: half * a };
-            let view = View::fit(b, width, &Fit { aspect: (a, a), ..Fit::EXACT }, y0)?;
+            let view = View::fit(b, width, &Fit { aspect: (a, a), ..Fit::EXACT }, top_px)?;
             Ok(ViewPlan::Follow { view, id: o.id })
         }
     }

@@ -1,7 +1,7 @@
 //! Labels of road users: `name (id)` (or `id N` without a name), the ego's marked, each put
 //! beside its box where it covers the fewest other labels and boxes, inside the map area.
 
-use super::prim::Prim;
+use super::prim::{Prim, Stroke};
 use crate::font;
 use crate::layout::{Label, PxRect};
 use crate::style;
@@ -57,9 +57,27 @@ pub fn place(boxes: &[PxRect], texts: &[String], size: f64, area: &PxRect) -> Ve
     placed
 }
 
-/// The label prims.
-pub fn prims(labels: &[(Label, bool)], size: f64, out: &mut Vec<Prim>) {
-    for (l, ego) in labels {
+/// The point of `r` nearest to (x, y).
+fn nearest(r: &PxRect, (x, y): (f64, f64)) -> (f64, f64) {
+    (x.clamp(r.x0, r.x1), y.clamp(r.y0, r.y1))
+}
+
+/// The label prims: each label, and a thin line to its road user's box when it had to sit
+/// away from it.
+pub fn prims(labels: &[(Label, bool, PxRect)], size: f64, out: &mut Vec<Prim>) {
+    for (l, _, b) in labels {
+        let from = nearest(&l.rect, b.center());
+        let to = nearest(b, from);
+        if (from.0 - to.0).hypot(from.1 - to.1) > 2.0 * GAP {
+            out.push(Prim::Path {
+                points: vec![from, to],
+                closed: false,
+                fill: None,
+                stroke: Some(Stroke::solid(style::MUTED, 1.0)),
+            });
+        }
+    }
+    for (l, ego, _) in labels {
         out.push(Prim::Text {
             x: l.rect.x0,
             y: l.rect.y0,

@@ -169,7 +169,7 @@ impl<'a> Prepared<'a> {
         let mut label_prims = Vec::new();
         for (((s, n), t), r) in shown.iter().zip(names).zip(texts).zip(rects) {
             let label = Label { text: t, rect: r };
-            label_prims.push((label.clone(), s.ego));
+            label_prims.push((label.clone(), s.ego, s.bbox));
             drawn.push(DrawnObstacle {
                 id: s.id.get(),
                 name: n.map(str::to_string),
