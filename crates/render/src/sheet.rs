@@ -8,6 +8,7 @@ use crate::error::RenderError;
 use crate::frame::Purpose;
 use crate::options::RenderOptions;
 use crate::raster::{canvas, paint_prims};
+use crate::scene::prim::Prim;
 use crate::scene::{footer, Prepared};
 use crate::style;
 use crate::timeline::{first_step, last_step, step_of};
@@ -19,9 +20,8 @@ const PANEL_ASPECT: f64 = 0.6;
 /// Space between panels, pixels.
 const GAP: u32 = 6;
 
-/// The time steps of the panels: the first step, each step a mark happens at (in time order,
-/// within the scenario), the last step; at most [`MAX_PANELS`].
-pub fn sheet_times(scenario: &Scenario, marks: &[crate::options::Mark]) -> Vec<u64> {
+/// The distinct steps of the marks strictly between the first and the last step.
+fn mark_steps(scenario: &Scenario, marks: &[crate::options::Mark]) -> Vec<u64> {
     let dt = scenario.header.time_step_size;
     let (first, last) = (first_step(scenario), last_step(scenario));
     let mut steps: Vec<u64> = marks
@@ -32,6 +32,14 @@ pub fn sheet_times(scenario: &Scenario, marks: &[crate::options::Mark]) -> Vec<u
     steps.sort_unstable();
     steps.dedup();
     steps.retain(|&s| s != first && s != last);
+    steps
+}
+
+/// The time steps of the panels: the first step, each step a mark happens at (in time order,
+/// within the scenario), the last step; at most [`MAX_PANELS`].
+pub fn sheet_times(scenario: &Scenario, marks: &[crate::options::Mark]) -> Vec<u64> {
+    let (first, last) = (first_step(scenario), last_step(scenario));
+    let mut steps = mark_steps(scenario, marks);
     steps.truncate(MAX_PANELS - 2);
     let mut out = vec![first];
     out.extend(steps);
@@ -82,6 +90,22 @@ pub fn render_sheet_png(
     }
     let mut legend_prims = Vec::new();
     footer::footer(None, width, f64::from(height - legend_h), &legend, &mut legend_prims);
+    let left_out = mark_steps(scenario, &options.marks).len().saturating_sub(MAX_PANELS - 2);
+    if left_out > 0 {
+        // say so at the right end of the legend strip
+        let size = style::text_size(width);
+        let text = format!("+{left_out} later event times not shown");
+        let (w, _) = crate::font::text_box(&text, size);
+        let pad = 3.0 * style::text_dot(width);
+        legend_prims.push(Prim::Text {
+            x: f64::from(width) - w - pad,
+            y: f64::from(height - legend_h) + pad,
+            size,
+            color: style::MUTED,
+            background: None,
+            text,
+        });
+    }
     paint_prims(&mut sheet, &legend_prims);
     sheet.encode_png().map_err(|e| RenderError::Encode { format: "PNG", message: e.to_string() })
 }

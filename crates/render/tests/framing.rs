@@ -153,6 +153,14 @@ fn the_sheet_has_a_panel_per_event_time_and_is_deterministic() {
     assert_eq!(png, render_sheet_png(&s, Some(&p), &o).unwrap());
     // no marks: the start and the end
     assert_eq!(sheet_times(&s, &[]), vec![0, 50]);
+    // more event times than panels: the first ones, the end; the sheet says so
+    let many: Vec<Mark> = (1..=20).map(|k| Mark { time: 0.2 * k as f64, text: format!("E{k}") }).collect();
+    let times = sheet_times(&s, &many);
+    assert_eq!(times.len(), render::MAX_PANELS);
+    assert_eq!((times[1], times[10], times[11]), (2, 20, 50));
+    let o = RenderOptions { marks: many, ..Default::default() };
+    let svgless = render_sheet_png(&s, Some(&p), &o).unwrap();
+    assert!(decode_png(&svgless).height() > 1000);
 }
 
 #[test]
