@@ -22,6 +22,9 @@ pub fn text(id: u64, name: Option<&str>, ego: bool) -> String {
 
 /// Gap between a box and its label, pixels.
 const GAP: f64 = 3.0;
+/// How many rings of places further out a label may take when the places beside its box are
+/// taken.
+const RINGS: usize = 3;
 
 /// Where each label goes: `boxes` are the road users' boxes, `texts` their labels (same
 /// order); the labels stay inside `area`.
@@ -30,7 +33,8 @@ pub fn place(boxes: &[PxRect], texts: &[String], size: f64, area: &PxRect) -> Ve
     for (b, t) in boxes.iter().zip(texts) {
         let (w, h) = font::text_box(t, size);
         let (cx, cy) = b.center();
-        let candidates = [
+        // beside the box first, then further out (a line then leads to the box)
+        let mut candidates = vec![
             (cx - 0.5 * w, b.y0 - GAP - h),
             (cx - 0.5 * w, b.y1 + GAP),
             (b.x1 + GAP, cy - 0.5 * h),
@@ -40,12 +44,24 @@ pub fn place(boxes: &[PxRect], texts: &[String], size: f64, area: &PxRect) -> Ve
             (b.x1 + GAP, b.y1 + GAP),
             (b.x0 - GAP - w, b.y1 + GAP),
         ];
+        for ring in 1..=RINGS {
+            let dy = ring as f64 * (h + GAP);
+            let dx = ring as f64 * 0.5 * w;
+            candidates.extend([
+                (cx - 0.5 * w, b.y0 - GAP - h - dy),
+                (cx - 0.5 * w, b.y1 + GAP + dy),
+                (b.x1 + GAP + dx, cy - 0.5 * h),
+                (b.x0 - GAP - w - dx, cy - 0.5 * h),
+            ]);
+        }
         let mut best: Option<(f64, PxRect)> = None;
-        for (x, y) in candidates {
+        for (k, (x, y)) in candidates.into_iter().enumerate() {
             let r = PxRect::new(x, y, w, h).pushed_into(area);
             let cost: f64 = placed.iter().chain(boxes).map(|o| o.overlap(&r)).sum::<f64>()
                 // a label pushed away from its box reads as someone else's
-                + 0.05 * (r.x0 - x).abs().max((r.y0 - y).abs()) * h;
+                + 0.05 * (r.x0 - x).abs().max((r.y0 - y).abs()) * h
+                // nearer places first when both are free
+                + 0.01 * (k / 4) as f64;
             if best.is_none_or(|(c, _)| cost < c) {
                 best = Some((cost, r));
             }
