@@ -1,6 +1,7 @@
 //! The header strip: the time, and the storyboard events that have happened by then — those of
-//! one time step together, with their time unless it is the header's, the newest on the right (cut short if it alone is too long),
-//! highlighted for [`style::MARK_HIGHLIGHT_S`] after it happens.
+//! one time step together, with their time unless it is the header's, the newest on the right
+//! (cut short if it alone is too long), highlighted for [`style::MARK_HIGHLIGHT_S`] after it
+//! happens.
 
 use super::prim::{Prim, Rgba, Stroke};
 use super::time_label;
@@ -25,7 +26,8 @@ pub fn mark_text(m: &Mark, dt: f64) -> String {
     format!("{} {}", t.trim_start_matches("t = "), m.text)
 }
 
-/// A strip across the top of a picture (its top at row `y`), `width` wide.
+/// A plain strip across a picture `width` wide, its top at row `y`, `h` high (the header, the
+/// time bar and the footer stand on one).
 pub fn strip(y: f64, width: u32, h: f64, out: &mut Vec<Prim>) {
     let w = f64::from(width);
     out.push(Prim::Path {
