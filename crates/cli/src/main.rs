@@ -33,7 +33,8 @@ enum Command {
     Inspect(inspect::InspectArgs),
     /// Run a scenario with the engine and write its trace as CSV (the format of conformance.py).
     Simulate(simulate::SimulateArgs),
-    /// Draw a scenario (.xml, or .xosc converted first) as PNG/SVG stills or an animated GIF.
+    /// Draw a scenario (.xml, or .xosc converted first) as PNG/SVG stills, an animated GIF or a
+    /// sheet of stills at the storyboard events: road users labelled, the events marked.
     Render(render_cmd::RenderArgs),
     /// Report what is wrong with OpenSCENARIO files without converting them: every finding with
     /// severity and file:line:col (exit 2 when there is an error).

@@ -27,6 +27,8 @@ pub struct Assembled {
     pub ego: String,
     /// Dynamic, static and environment obstacles.
     pub obstacles: usize,
+    /// The entity each obstacle was made of: (obstacle id, entity name).
+    pub names: Vec<(u64, String)>,
     /// Lanelets of the road network (0 when a placeholder stands in for a missing network).
     pub lanelets: usize,
     pub warnings: Vec<String>,
@@ -86,6 +88,7 @@ pub fn assemble(
     scenario.dynamic_obstacles = built.dynamic;
     scenario.static_obstacles = built.statics;
     scenario.environment_obstacles = built.environment;
+    let names = built.names;
 
     let problem = planning_problem(ids.planning_problem(), &first, &last, &options.goal)
         .map_err(|e| format!("planning problem of the ego {:?}: {e}", ego.entity))?;
@@ -106,6 +109,7 @@ pub fn assemble(
         problems,
         ego: ego.entity.clone(),
         obstacles: n_obstacles,
+        names,
         lanelets,
         warnings,
     })

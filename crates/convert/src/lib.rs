@@ -29,6 +29,7 @@ mod pipeline;
 mod report;
 mod resample;
 mod shard;
+mod story_marks;
 mod single;
 mod stages;
 mod summary;
@@ -55,6 +56,7 @@ pub use report::{
 };
 pub use resample::{cr_step_count, resample, whole_multiple, Pose};
 pub use shard::Shard;
+pub use story_marks::event_marks;
 pub use single::{
     batch_name, batch_source, convert_file, convert_variation, load_distribution, output_file_name,
 };

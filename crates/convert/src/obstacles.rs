@@ -17,6 +17,8 @@ pub struct Obstacles {
     pub dynamic: Vec<DynamicObstacle>,
     pub statics: Vec<commonroad::StaticObstacle>,
     pub environment: Vec<EnvironmentObstacle>,
+    /// The entity each obstacle was made of, by obstacle id.
+    pub names: Vec<(u64, String)>,
     pub warnings: Vec<String>,
 }
 
@@ -31,8 +33,10 @@ pub fn obstacles(tracks: &[Track], skip: Option<&str>, ids: &mut IdAllocator) ->
         match &t.placement {
             Placement::Fixed { x, y, orientation, .. } => {
                 if let Some(kind) = t.cr_type.static_type() {
+                    let id = ids.obstacle();
+                    out.names.push((id.get(), t.entity.clone()));
                     out.statics.push(StaticObstacle {
-                        id: ids.obstacle(),
+                        id,
                         obstacle_type: kind,
                         shape: t.shape.clone(),
                         x: *x,
@@ -44,8 +48,10 @@ pub fn obstacles(tracks: &[Track], skip: Option<&str>, ids: &mut IdAllocator) ->
                         out.warnings.push(format!("entity {:?}: no valid box: left out", t.entity));
                         continue;
                     };
+                    let id = ids.obstacle();
+                    out.names.push((id.get(), t.entity.clone()));
                     out.environment.push(EnvironmentObstacle {
-                        id: ids.obstacle(),
+                        id,
                         obstacle_type: kind,
                         shape: AbsoluteShape::Rectangle(PlacedRectangle {
                             rectangle,
@@ -76,8 +82,10 @@ pub fn obstacles(tracks: &[Track], skip: Option<&str>, ids: &mut IdAllocator) ->
                     let Some((first, rest)) = run.split_first() else {
                         continue;
                     };
+                    let id = ids.obstacle();
+                    out.names.push((id.get(), t.entity.clone()));
                     out.dynamic.push(DynamicObstacle {
-                        id: ids.obstacle(),
+                        id,
                         obstacle_type: kind,
                         shape: t.shape.clone(),
                         initial_state: *first,

@@ -61,6 +61,10 @@ fn ms(t: Instant) -> f64 {
 pub struct Model {
     pub scenario: commonroad::Scenario,
     pub problems: commonroad::PlanningProblemSet,
+    /// The OpenSCENARIO entity of each obstacle: (obstacle id, entity name).
+    pub names: Vec<(u64, String)>,
+    /// When each storyboard Event started: (time s, event name), in time order.
+    pub events: Vec<(f64, String)>,
 }
 
 /// Converts one scenario file into CommonRoad XML bytes (nothing is written).
@@ -262,6 +266,8 @@ fn run(
     let model = Model {
         scenario: built.scenario,
         problems: built.problems,
+        names: built.names,
+        events: crate::story_marks::event_marks(&scenario, &run.trace.events),
     };
     Ok((bytes, model))
 }

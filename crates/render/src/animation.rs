@@ -1,5 +1,6 @@
-//! The animated GIF: every k-th time step over the whole scenario, the map painted once, each
-//! frame stored as the rectangle that changed, delays matching the scenario's time.
+//! The animated GIF: every k-th time step over the whole scenario, the map painted once (per
+//! frame when the view follows a road user), each frame stored as the rectangle that changed,
+//! delays matching the scenario's time.
 
 use std::borrow::Cow;
 
@@ -41,12 +42,16 @@ fn changed_rect(a: &[u8], b: &[u8], width: usize) -> Option<(usize, usize, usize
 
 struct Frames<'p, 'a> {
     prepared: &'p Prepared<'a>,
+    /// The map painted once when the view does not move.
     base: Pixmap,
 }
 
 impl Frames<'_, '_> {
     fn at(&self, step: u64) -> Pixmap {
         let mut pm = self.base.clone();
+        if !self.prepared.is_fixed() {
+            paint_prims(&mut pm, &self.prepared.base(step));
+        }
         paint_prims(&mut pm, &self.prepared.moving(step));
         pm
     }
@@ -107,8 +112,10 @@ pub fn animate(prepared: &Prepared, max_frames: usize, max_bytes: usize) -> Resu
     let dt = scenario.header.time_step_size;
     let (first, last) = (first_step(scenario), last_step(scenario));
     let span = last - first;
-    let mut base = canvas(prepared.view.width, prepared.view.height, style::BACKGROUND)?;
-    paint_prims(&mut base, prepared.still());
+    let mut base = canvas(prepared.width, prepared.height, style::BACKGROUND)?;
+    if prepared.is_fixed() {
+        paint_prims(&mut base, &prepared.base(first));
+    }
     let frames = Frames { prepared, base };
     let samples: Vec<Pixmap> = [first, first + span / 2, last].iter().map(|&s| frames.at(s)).collect();
     let sample_data: Vec<&[u8]> = samples.iter().map(|p| p.data()).collect();

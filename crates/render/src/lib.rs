@@ -1,8 +1,14 @@
 //! `render` — pictures of a CommonRoad scenario: the lanelet network (road surface, borders,
 //! line markings, stop lines), traffic signs and lights, static, environment and dynamic
 //! obstacles in their shapes and type colours, the ego highlighted with its path, the planning
-//! problems' goal regions, and a time stamp. Outputs: PNG stills, SVG stills, animated GIFs.
+//! problems' goal regions; each road user labelled (`name (id)`) with a trail of its last
+//! seconds; a header with the time and the storyboard events so far, a footer with a scale
+//! bar and a legend. By default a picture shows where the road users are ([`Frame`]).
+//! Outputs: PNG stills, SVG stills, animated GIFs, a sheet of stills at the events' times.
 //! CPU only (tiny-skia), no display, no system fonts (a built-in 5×7 bitmap font).
+//!
+//! Names and events are plain data ([`RenderOptions::names`], [`RenderOptions::marks`]): the
+//! crate knows nothing of where they come from.
 //!
 //! It draws the `commonroad` model and knows nothing of OpenSCENARIO or OpenDRIVE. One display
 //! list ([`scene`]) feeds every output format, so a PNG and an SVG show the same picture.
@@ -18,10 +24,13 @@ mod animation;
 mod ego;
 mod error;
 pub mod font;
+pub mod frame;
+pub mod layout;
 mod options;
 mod palette;
 mod raster;
 pub mod scene;
+mod sheet;
 pub mod style;
 mod svg;
 pub mod timeline;
@@ -31,7 +40,9 @@ use commonroad::{PlanningProblemSet, Scenario};
 
 pub use ego::{find_ego, SAME_POSITION_M};
 pub use error::RenderError;
-pub use options::{RenderOptions, MAX_WIDTH, MIN_WIDTH};
+pub use layout::{DrawnObstacle, Label, Layout, PxRect};
+pub use options::{Frame, Mark, RenderOptions, FOLLOW_SPAN_M, MAX_WIDTH, MIN_WIDTH};
+pub use sheet::{render_sheet_png, sheet_times, MAX_PANELS};
 pub use scene::{time_label, Prepared};
 
 /// A still at `options.time` as PNG bytes.
@@ -40,19 +51,23 @@ pub fn render_png(
     problems: Option<&PlanningProblemSet>,
     options: &RenderOptions,
 ) -> Result<Vec<u8>, RenderError> {
-    let prepared = Prepared::new(scenario, problems, options)?;
-    png_at(&prepared, options.time)
+    let step = checked_step(scenario, options.time)?;
+    let prepared = Prepared::still_at(scenario, problems, options, step)?;
+    encode_png(&pixmap_at(&prepared, step)?)
 }
 
-/// Stills at several times (seconds), sharing one view: PNG bytes in the order of `times`.
+/// Stills at several times (seconds), each framed as [`render_png`] frames it: PNG bytes in
+/// the order of `times`.
 pub fn render_pngs(
     scenario: &Scenario,
     problems: Option<&PlanningProblemSet>,
     options: &RenderOptions,
     times: &[f64],
 ) -> Result<Vec<Vec<u8>>, RenderError> {
-    let prepared = Prepared::new(scenario, problems, options)?;
-    times.iter().map(|&t| png_at(&prepared, t)).collect()
+    times
+        .iter()
+        .map(|&time| render_png(scenario, problems, &RenderOptions { time, ..options.clone() }))
+        .collect()
 }
 
 /// A still at `options.time` as RGBA pixels (straight alpha, row-major), with its size.
@@ -61,9 +76,21 @@ pub fn render_rgba(
     problems: Option<&PlanningProblemSet>,
     options: &RenderOptions,
 ) -> Result<(u32, u32, Vec<u8>), RenderError> {
-    let prepared = Prepared::new(scenario, problems, options)?;
-    let pm = pixmap_at(&prepared, options.time)?;
+    let step = checked_step(scenario, options.time)?;
+    let prepared = Prepared::still_at(scenario, problems, options, step)?;
+    let pm = pixmap_at(&prepared, step)?;
     Ok((pm.width(), pm.height(), pm.data().to_vec()))
+}
+
+/// Where the road users and their labels are on the still [`render_png`] draws at
+/// `options.time`, in pixels.
+pub fn render_layout(
+    scenario: &Scenario,
+    problems: Option<&PlanningProblemSet>,
+    options: &RenderOptions,
+) -> Result<Layout, RenderError> {
+    let step = checked_step(scenario, options.time)?;
+    Ok(Prepared::still_at(scenario, problems, options, step)?.layout(step))
 }
 
 /// A still at `options.time` as an SVG document.
@@ -72,18 +99,19 @@ pub fn render_svg(
     problems: Option<&PlanningProblemSet>,
     options: &RenderOptions,
 ) -> Result<String, RenderError> {
-    let prepared = Prepared::new(scenario, problems, options)?;
-    let step = checked_step(&prepared, options.time)?;
+    let step = checked_step(scenario, options.time)?;
+    let prepared = Prepared::still_at(scenario, problems, options, step)?;
     Ok(svg::to_svg(&prepared.scene(step)))
 }
 
-/// An animated GIF over the whole scenario (`options.time` is not used).
+/// An animated GIF over the whole scenario (`options.time` is not used), framed over the
+/// whole run (or following `Frame::Follow`'s obstacle).
 pub fn render_gif(
     scenario: &Scenario,
     problems: Option<&PlanningProblemSet>,
     options: &RenderOptions,
 ) -> Result<Vec<u8>, RenderError> {
-    let prepared = Prepared::new(scenario, problems, options)?;
+    let prepared = Prepared::new(scenario, problems, options, frame::Purpose::Animation, None, true)?;
     animation::animate(&prepared, options.gif_max_frames, options.gif_max_bytes)
 }
 
@@ -105,28 +133,25 @@ pub fn decode_png(bytes: &[u8]) -> Result<(u32, u32, Vec<u8>), RenderError> {
     Ok((pm.width(), pm.height(), rgba))
 }
 
-fn checked_step(prepared: &Prepared, time: f64) -> Result<u64, RenderError> {
+fn checked_step(scenario: &Scenario, time: f64) -> Result<u64, RenderError> {
     if !(time.is_finite() && time >= 0.0) {
         return Err(RenderError::Option(format!(
             "--time must be a finite number of seconds >= 0, got {time}"
         )));
     }
-    Ok(timeline::step_of(time, prepared.scenario.header.time_step_size))
+    Ok(timeline::step_of(time, scenario.header.time_step_size))
 }
 
-fn pixmap_at(prepared: &Prepared, time: f64) -> Result<tiny_skia::Pixmap, RenderError> {
-    let step = checked_step(prepared, time)?;
-    let mut pm = raster::canvas(prepared.view.width, prepared.view.height, style::BACKGROUND)?;
-    raster::paint_prims(&mut pm, prepared.still());
+fn pixmap_at(prepared: &Prepared, step: u64) -> Result<tiny_skia::Pixmap, RenderError> {
+    let mut pm = raster::canvas(prepared.width, prepared.height, style::BACKGROUND)?;
+    raster::paint_prims(&mut pm, &prepared.base(step));
     raster::paint_prims(&mut pm, &prepared.moving(step));
     Ok(pm)
 }
 
-fn png_at(prepared: &Prepared, time: f64) -> Result<Vec<u8>, RenderError> {
-    pixmap_at(prepared, time)?
-        .encode_png()
-        .map_err(|e| RenderError::Encode {
-            format: "PNG",
-            message: e.to_string(),
-        })
+fn encode_png(pm: &tiny_skia::Pixmap) -> Result<Vec<u8>, RenderError> {
+    pm.encode_png().map_err(|e| RenderError::Encode {
+        format: "PNG",
+        message: e.to_string(),
+    })
 }

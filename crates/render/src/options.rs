@@ -1,6 +1,34 @@
 //! What a picture shows and how big it is.
 
+use std::collections::BTreeMap;
+
 use crate::error::RenderError;
+
+/// Which part of the world a picture shows.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub enum Frame {
+    /// The region the road users (dynamic obstacles) occupy, with a margin: at the still's
+    /// time (and its trails), or over the whole run for an animation. A scenario without road
+    /// users shows the whole map.
+    #[default]
+    Action,
+    /// Every lanelet, obstacle and goal region.
+    WholeMap,
+    /// A world rectangle (min x, min y, max x, max y), metres.
+    Region([f64; 4]),
+    /// A window of [`FOLLOW_SPAN_M`] metres centred on this dynamic obstacle at every time.
+    Follow(u64),
+}
+
+/// Width of the window a followed obstacle is centred in, m.
+pub const FOLLOW_SPAN_M: f64 = 100.0;
+
+/// A storyboard event to mark: when it happened (s) and what to call it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Mark {
+    pub time: f64,
+    pub text: String,
+}
 
 /// Options of one picture (or animation).
 #[derive(Debug, Clone, PartialEq)]
@@ -17,6 +45,14 @@ pub struct RenderOptions {
     pub gif_max_bytes: usize,
     /// Animations: most frames (default 300); every k-th time step is drawn.
     pub gif_max_frames: usize,
+    /// Which part of the world is shown (default: where the road users are).
+    pub frame: Frame,
+    /// Names of obstacles by id, shown in their labels as `name (id)`.
+    pub names: BTreeMap<u64, String>,
+    /// Storyboard events, shown in the header from the time they happen.
+    pub marks: Vec<Mark>,
+    /// Length of the trail of past positions behind each road user, s (default 3; 0: none).
+    pub trail: f64,
 }
 
 impl Default for RenderOptions {
@@ -27,6 +63,10 @@ impl Default for RenderOptions {
             ego: None,
             gif_max_bytes: 10_000_000,
             gif_max_frames: 300,
+            frame: Frame::Action,
+            names: BTreeMap::new(),
+            marks: Vec::new(),
+            trail: 3.0,
         }
     }
 }
@@ -54,6 +94,20 @@ impl RenderOptions {
             return Err(RenderError::Option(
                 "an animation needs at least 2 frames".to_string(),
             ));
+        }
+        if !(self.trail.is_finite() && self.trail >= 0.0) {
+            return Err(RenderError::Option(format!(
+                "--trail must be a finite number of seconds >= 0, got {}",
+                self.trail
+            )));
+        }
+        if let Frame::Region([x0, y0, x1, y1]) = self.frame {
+            let finite = [x0, y0, x1, y1].iter().all(|v| v.is_finite());
+            if !(finite && x1 > x0 && y1 > y0) {
+                return Err(RenderError::Option(format!(
+                    "--region must be X0,Y0,X1,Y1 with X0 < X1 and Y0 < Y1 (metres), got {x0},{y0},{x1},{y1}"
+                )));
+            }
         }
         Ok(())
     }

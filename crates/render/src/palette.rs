@@ -24,6 +24,11 @@ fn style_colors() -> Vec<[u8; 3]> {
         style::GOAL,
         style::SIGN,
         style::TEXT,
+        style::STRIP,
+        style::STRIP_LINE,
+        style::MARK_NEW,
+        style::MUTED,
+        style::EGO_LABEL_BACKGROUND,
     ];
     v.extend(D::ALL.iter().map(|t| style::dynamic_color(*t)));
     v.extend(S::ALL.iter().map(|t| style::static_color(*t)));

@@ -65,8 +65,7 @@ fn text(pm: &mut Pixmap, x: f64, y: f64, size: f64, color: Rgba, background: Opt
         p
     };
     if let Some(bg) = background {
-        let w = font::width_dots(s) as f64 * dot + 2.0 * pad;
-        let h = font::GLYPH_H as f64 * dot + 2.0 * pad;
+        let (w, h) = font::text_box(s, size);
         if let Some(r) = Rect::from_xywh(x as f32, y as f32, w as f32, h as f32) {
             pm.fill_rect(r, &flat(bg), Transform::identity(), None);
         }

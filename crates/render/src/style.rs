@@ -74,3 +74,33 @@ pub fn light_color(c: TrafficLightColor) -> Rgba {
         TrafficLightColor::Inactive => Rgba::rgb(90, 90, 90),
     }
 }
+
+/// The header and footer strips.
+pub const STRIP: Rgba = Rgba::rgb(255, 255, 255);
+pub const STRIP_LINE: Rgba = Rgba::rgb(190, 190, 190);
+/// A storyboard event that has just happened; older ones are in `MUTED` text.
+pub const MARK_NEW: Rgba = Rgba::rgb(255, 214, 0);
+pub const MUTED: Rgba = Rgba::rgb(90, 90, 90);
+/// Labels of road users; the ego's label stands out in a light ego colour.
+pub const LABEL_BACKGROUND: Rgba = Rgba::rgb(255, 255, 255).with_alpha(225);
+pub const EGO_LABEL_BACKGROUND: Rgba = Rgba::rgb(255, 214, 186);
+
+/// How long an event stays highlighted after it happens, s.
+pub const MARK_HIGHLIGHT_S: f64 = 2.0;
+
+/// Pixels per font dot of the text of a picture `width` pixels wide: 2 (capitals 14 px high)
+/// from 320 px, 3 from 1800 px, so text stays legible at every size.
+pub fn text_dot(width: u32) -> f64 {
+    if width >= 1800 {
+        3.0
+    } else if width >= 320 {
+        2.0
+    } else {
+        1.0
+    }
+}
+
+/// The text `size` of a picture `width` pixels wide (see [`text_dot`]).
+pub fn text_size(width: u32) -> f64 {
+    text_dot(width) * crate::font::GLYPH_H as f64
+}

@@ -103,14 +103,14 @@ fn prim(out: &mut String, p: &Prim) {
             let pad = (1.5 * dot).round();
             let size = font::GLYPH_H as f64 * dot;
             if let Some(bg) = background {
-                let w = font::width_dots(text) as f64 * dot + 2.0 * pad;
+                let (w, h) = font::text_box(text, size);
                 let _ = writeln!(
                     out,
                     "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"{}/>",
                     n(*x),
                     n(*y),
                     n(w),
-                    n(size + 2.0 * pad),
+                    n(h),
                     paint_attrs(Some(*bg), None)
                 );
             }

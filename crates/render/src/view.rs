@@ -1,5 +1,6 @@
-//! The view: a world rectangle that holds every lanelet, obstacle state and goal region with a
-//! margin, mapped onto a picture `width` pixels wide (y up in the world, down in the picture).
+//! The view: a world rectangle (the whole map, where the road users are, or one the user
+//! chose) mapped onto the map area of a picture `width` pixels wide (y up in the world, down
+//! in the picture), below the picture's header strip.
 
 use commonroad::{
     AbsoluteShape, GoalPosition, PlanningProblemSet, Point, Scenario, Shape,
@@ -22,7 +23,7 @@ pub struct Bounds {
 }
 
 impl Bounds {
-    fn empty() -> Self {
+    pub fn empty() -> Self {
         Self {
             min_x: f64::INFINITY,
             min_y: f64::INFINITY,
@@ -31,7 +32,7 @@ impl Bounds {
         }
     }
     /// Grows the box to hold a disc of radius `r` at (x, y); non-finite values are ignored.
-    fn add(&mut self, x: f64, y: f64, r: f64) {
+    pub fn add(&mut self, x: f64, y: f64, r: f64) {
         if !(x.is_finite() && y.is_finite() && r.is_finite()) {
             return;
         }
@@ -43,13 +44,17 @@ impl Bounds {
     fn add_point(&mut self, p: &Point) {
         self.add(p.x, p.y, 0.0);
     }
-    fn is_valid(&self) -> bool {
+    pub fn is_valid(&self) -> bool {
         self.min_x <= self.max_x && self.min_y <= self.max_y
+    }
+    /// Whether the two boxes overlap (touching counts).
+    pub fn intersects(&self, o: &Bounds) -> bool {
+        self.min_x <= o.max_x && o.min_x <= self.max_x && self.min_y <= o.max_y && o.min_y <= self.max_y
     }
 }
 
 /// Half the largest extent of an obstacle shape: a disc around its centre that covers it.
-fn shape_radius(s: &Shape) -> f64 {
+pub fn shape_radius(s: &Shape) -> f64 {
     match s {
         Shape::Rectangle(r) => 0.5 * r.length().hypot(r.width()),
         Shape::Circle(c) => c.radius(),
@@ -117,21 +122,48 @@ pub fn content_bounds(scenario: &Scenario, problems: Option<&PlanningProblemSet>
     b
 }
 
-/// World → pixel mapping of one picture.
+/// How a world box becomes a view: the margin added around it, the smallest extent shown and
+/// the range of the map area's height / width.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Fit {
+    /// Margin on each side: `margin_m` + `margin_share` × the larger extent, m.
+    pub margin_m: f64,
+    pub margin_share: f64,
+    /// The wider side of the view is at least this long, m.
+    pub min_extent_m: f64,
+    /// Height / width of the map area is kept within (low, high); the world box is widened to
+    /// match, keeping its centre.
+    pub aspect: (f64, f64),
+}
+
+impl Fit {
+    /// The whole map: 2 m + 5 % around it, aspect between 1/4 and 2.
+    pub const WHOLE: Fit = Fit { margin_m: 2.0, margin_share: 0.05, min_extent_m: 0.0, aspect: (MIN_ASPECT, MAX_ASPECT) };
+    /// Where the road users are: room for labels around them, at least 40 m shown, landscape.
+    pub const ACTION: Fit = Fit { margin_m: 6.0, margin_share: 0.1, min_extent_m: 40.0, aspect: (0.4, 1.0) };
+    /// A rectangle chosen by hand: exactly it (widened to an aspect between 1/4 and 2).
+    pub const EXACT: Fit = Fit { margin_m: 0.0, margin_share: 0.0, min_extent_m: 0.0, aspect: (MIN_ASPECT, MAX_ASPECT) };
+}
+
+/// World → pixel mapping of one picture's map area.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct View {
+    /// Width of the picture and of its map area, pixels.
     pub width: u32,
+    /// Height of the map area, pixels.
     pub height: u32,
     /// Pixels per metre.
     pub scale: f64,
-    /// World coordinates of the picture's left and top edges.
+    /// World coordinates of the map area's left and top edges.
     pub left: f64,
     pub top: f64,
+    /// Picture row where the map area starts (below the header strip).
+    pub y0: f64,
 }
 
 impl View {
-    /// Fits `b` (plus a margin of 5 % and at least 2 m on each side) into `width` pixels.
-    pub fn fit(b: Bounds, width: u32) -> Result<View, RenderError> {
+    /// Fits `b` with `fit`'s margin into a map area `width` pixels wide starting at row `y0`.
+    pub fn fit(b: Bounds, width: u32, fit: &Fit, y0: f64) -> Result<View, RenderError> {
         if !b.is_valid() {
             return Err(RenderError::View(
                 "the scenario has no lanelet, obstacle or goal region".to_string(),
@@ -139,10 +171,14 @@ impl View {
         }
         let mut w = b.max_x - b.min_x;
         let mut h = b.max_y - b.min_y;
-        let margin = 2.0 + 0.05 * w.max(h);
+        let margin = fit.margin_m + fit.margin_share * w.max(h);
         w += 2.0 * margin;
         h += 2.0 * margin;
-        let aspect = (h / w).clamp(MIN_ASPECT, MAX_ASPECT);
+        if w.max(h) < fit.min_extent_m {
+            w = w.max(fit.min_extent_m);
+        }
+        let (lo, hi) = fit.aspect;
+        let aspect = (h / w).clamp(lo, hi);
         // widen whichever side is too short, keeping the content centred
         let (w, h) = if h / w < aspect { (w, w * aspect) } else { (h / aspect, h) };
         let scale = f64::from(width) / w;
@@ -160,11 +196,36 @@ impl View {
             scale,
             left: cx - 0.5 * w,
             top: cy + 0.5 * f64::from(height) / scale,
+            y0,
         })
+    }
+
+    /// The same scale and size, centred on (x, y).
+    pub fn centred_on(&self, x: f64, y: f64) -> View {
+        View {
+            left: x - 0.5 * f64::from(self.width) / self.scale,
+            top: y + 0.5 * f64::from(self.height) / self.scale,
+            ..*self
+        }
     }
 
     /// Pixel coordinates of a world point.
     pub fn px(&self, x: f64, y: f64) -> (f64, f64) {
-        ((x - self.left) * self.scale, (self.top - y) * self.scale)
+        ((x - self.left) * self.scale, self.y0 + (self.top - y) * self.scale)
+    }
+
+    /// The world rectangle the map area shows.
+    pub fn world(&self) -> Bounds {
+        Bounds {
+            min_x: self.left,
+            max_x: self.left + f64::from(self.width) / self.scale,
+            min_y: self.top - f64::from(self.height) / self.scale,
+            max_y: self.top,
+        }
+    }
+
+    /// The map area in pixels: (x0, y0, x1, y1).
+    pub fn area(&self) -> (f64, f64, f64, f64) {
+        (0.0, self.y0, f64::from(self.width), self.y0 + f64::from(self.height))
     }
 }

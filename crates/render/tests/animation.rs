@@ -3,7 +3,7 @@
 mod common;
 
 use common::*;
-use render::{render_gif, RenderOptions};
+use render::{render_gif, render_layout, RenderOptions};
 
 /// (frame count, delays in centiseconds, width, height).
 fn frames(bytes: &[u8]) -> (usize, Vec<u16>, u16, u16) {
@@ -21,8 +21,9 @@ fn frames(bytes: &[u8]) -> (usize, Vec<u16>, u16, u16) {
 #[test]
 fn every_step_is_a_frame_lasting_one_step() {
     let (s, p) = straight(50); // steps 0..=50, dt 0.1 s
-    let (n, delays, w, h) = frames(&render_gif(&s, Some(&p), &RenderOptions::default()).unwrap());
-    assert_eq!((w, h), (1200, 300));
+    let (n, delays, w, h) = frames(&render_gif(&s, Some(&p), &whole(0.0)).unwrap());
+    let still = render_layout(&s, Some(&p), &whole(0.0)).unwrap();
+    assert_eq!((u32::from(w), u32::from(h)), (still.width, still.height));
     assert_eq!(n, 51);
     assert!(delays.iter().all(|&d| d == 10), "{delays:?}");
 }

@@ -3,20 +3,31 @@
 mod common;
 
 use common::*;
-use render::{render_png, render_pngs, render_svg, style, RenderError, RenderOptions};
+use render::{render_layout, render_png, render_pngs, render_svg, style, RenderError, RenderOptions};
 
 fn opts(time: f64) -> RenderOptions {
-    RenderOptions { time, ..Default::default() }
+    whole(time)
+}
+
+/// Where world (x, y) is in the whole-map still at `time`.
+fn at(s: &commonroad::Scenario, p: Option<&commonroad::PlanningProblemSet>, time: f64, x: f64, y: f64) -> (u32, u32) {
+    px_of(&render_layout(s, p, &opts(time)).unwrap(), x, y)
 }
 
 #[test]
 fn png_has_width_and_the_clamped_aspect() {
     let (s, p) = straight(50);
     let pm = decode_png(&render_png(&s, Some(&p), &opts(0.0)).unwrap());
-    assert_eq!((pm.width(), pm.height()), (1200, 300));
+    let l = render_layout(&s, Some(&p), &opts(0.0)).unwrap();
+    assert_eq!((pm.width(), pm.height()), (l.width, l.height));
+    // the map area has the clamped aspect 1/4, between the header and the footer
+    assert_eq!((l.map.width(), l.map.height()), (1200.0, 300.0));
+    assert!(l.map.y0 > 20.0 && f64::from(l.height) - l.map.y1 > 20.0, "{l:?}");
+    // the view's own arithmetic, by hand
+    assert_eq!(at(&s, Some(&p), 0.0, 20.0, 2.0), straight_px(20.0, 2.0, l.map.y0));
     let narrow = RenderOptions { width: 400, ..opts(0.0) };
-    let pm = decode_png(&render_png(&s, Some(&p), &narrow).unwrap());
-    assert_eq!((pm.width(), pm.height()), (400, 100));
+    let l = render_layout(&s, Some(&p), &narrow).unwrap();
+    assert_eq!((l.map.width(), l.map.height()), (400.0, 100.0));
 }
 
 #[test]
@@ -25,15 +36,15 @@ fn ego_found_from_the_planning_problem_is_drawn_in_ego_colour_where_it_is() {
     // t = 0: the car at x = 20; t = 1.0 s: 10 steps of 1 m later, x = 30
     for (t, x) in [(0.0, 20.0), (1.0, 30.0), (5.0, 70.0)] {
         let pm = decode_png(&render_png(&s, Some(&p), &opts(t)).unwrap());
-        assert_eq!(pixel(&pm, straight_px(x, 2.0)), rgb(style::EGO), "t = {t}");
+        assert_eq!(pixel(&pm, at(&s, Some(&p), t, x, 2.0)), rgb(style::EGO), "t = {t}");
     }
     // the pedestrian (not the ego) in its type colour at x = 60, y = 0.5 + 0.01 * 10
     let pm = decode_png(&render_png(&s, Some(&p), &opts(1.0)).unwrap());
     let ped = rgb(style::dynamic_color(commonroad::DynamicObstacleType::Pedestrian));
-    assert_eq!(pixel(&pm, straight_px(60.0, 0.6)), ped);
-    // the road surface between them; the background far above the road
-    assert_eq!(pixel(&pm, straight_px(45.0, 1.0)), rgb(style::ROAD));
-    assert_eq!(pixel(&pm, straight_px(45.0, 10.0)), rgb(style::BACKGROUND));
+    assert_eq!(pixel(&pm, at(&s, Some(&p), 1.0, 60.0, 0.6)), ped);
+    // the road surface between them (behind the ego's trail); the background above the road
+    assert_eq!(pixel(&pm, at(&s, Some(&p), 1.0, 45.0, 1.0)), rgb(style::ROAD));
+    assert_eq!(pixel(&pm, at(&s, Some(&p), 1.0, 45.0, 10.0)), rgb(style::BACKGROUND));
 }
 
 #[test]
@@ -41,10 +52,10 @@ fn without_planning_problem_nothing_is_ego_unless_chosen() {
     let (s, _) = straight(50);
     let car = rgb(style::dynamic_color(commonroad::DynamicObstacleType::Car));
     let pm = decode_png(&render_png(&s, None, &opts(0.0)).unwrap());
-    assert_eq!(pixel(&pm, straight_px(20.0, 2.0)), car);
+    assert_eq!(pixel(&pm, at(&s, None, 0.0, 20.0, 2.0)), car);
     let chosen = RenderOptions { ego: Some(s.dynamic_obstacles[0].id.get()), ..opts(0.0) };
     let pm = decode_png(&render_png(&s, None, &chosen).unwrap());
-    assert_eq!(pixel(&pm, straight_px(20.0, 2.0)), rgb(style::EGO));
+    assert_eq!(pixel(&pm, at(&s, None, 0.0, 20.0, 2.0)), rgb(style::EGO));
 }
 
 #[test]
@@ -52,11 +63,11 @@ fn obstacles_vanish_after_their_trajectory() {
     let (s, p) = straight(10);
     // after step 10 the car is gone: its last position shows road again
     let pm = decode_png(&render_png(&s, Some(&p), &opts(2.0)).unwrap());
-    assert_eq!(pixel(&pm, straight_px(30.0, 1.2)), rgb(style::ROAD));
+    assert_eq!(pixel(&pm, at(&s, Some(&p), 2.0, 30.0, 1.2)), rgb(style::ROAD));
 }
 
 #[test]
-fn several_stills_share_one_view_and_differ() {
+fn several_stills_of_the_whole_map_share_one_view_and_differ() {
     let (s, p) = straight(50);
     let pngs = render_pngs(&s, Some(&p), &opts(0.0), &[0.0, 2.5]).unwrap();
     assert_eq!(pngs.len(), 2);
@@ -70,18 +81,21 @@ fn several_stills_share_one_view_and_differ() {
 #[test]
 fn svg_parses_and_has_the_time_stamp() {
     let (s, p) = straight(60);
-    let text = render_svg(&s, Some(&p), &opts(5.5)).unwrap();
+    let no_trail = RenderOptions { trail: 0.0, ..opts(5.5) };
+    let text = render_svg(&s, Some(&p), &no_trail).unwrap();
     let doc = roxmltree::Document::parse(&text).unwrap();
     let root = doc.root_element();
     assert_eq!(root.tag_name().name(), "svg");
+    let l = render_layout(&s, Some(&p), &opts(5.5)).unwrap();
     assert_eq!(root.attribute("width"), Some("1200"));
-    assert_eq!(root.attribute("height"), Some("300"));
+    assert_eq!(root.attribute("height"), Some(l.height.to_string().as_str()));
     let texts: Vec<&str> = doc.descendants().filter(|n| n.has_tag_name("text")).filter_map(|n| n.text()).collect();
-    assert_eq!(texts, vec!["t = 5.5 s"]);
-    // the ego's fill colour appears exactly once (one ego box)
+    // labels, the time, the scale and the legend
+    assert_eq!(texts, vec!["id 3", "id 2 ego", "t = 5.5 s", "5 m", "ego", "pedestrian", "goal"]);
+    // the ego's fill colour appears twice without trails: the ego's box, its legend swatch
     let ego = style::EGO.hex();
     let n = doc.descendants().filter(|n| n.attribute("fill") == Some(ego.as_str())).count();
-    assert_eq!(n, 1);
+    assert_eq!(n, 2);
 }
 
 #[test]

@@ -8,10 +8,23 @@ use super::geometry::{offset_polyline, to_px};
 use super::prim::{Prim, Rgba, Stroke};
 use crate::style;
 use crate::timeline::light_color;
-use crate::view::View;
+use crate::view::{Bounds, View};
 
 fn pts(points: &[Point]) -> Vec<(f64, f64)> {
     points.iter().map(|p| (p.x, p.y)).collect()
+}
+
+/// Whether any of the lanelet lies in the view (with 10 m to spare): the map is clipped to
+/// the view, so a picture of a few cars on a large map does not carry the whole map.
+fn visible(l: &commonroad::Lanelet, view: &View) -> bool {
+    let mut b = Bounds::empty();
+    l.bounds.left().iter().chain(l.bounds.right()).for_each(|p| b.add(p.x, p.y, 0.0));
+    let mut w = view.world();
+    w.min_x -= 10.0;
+    w.min_y -= 10.0;
+    w.max_x += 10.0;
+    w.max_y += 10.0;
+    b.is_valid() && b.intersects(&w)
 }
 
 fn path(points: Vec<(f64, f64)>, stroke: Stroke) -> Prim {
@@ -26,7 +39,7 @@ fn path(points: Vec<(f64, f64)>, stroke: Stroke) -> Prim {
 /// Road surface of every lanelet. The fill is also stroked in the road colour so that
 /// anti-aliased seams between neighbouring lanelets do not show the background.
 pub fn surfaces(net: &LaneletNetwork, view: &View, out: &mut Vec<Prim>) {
-    for l in &net.lanelets {
+    for l in net.lanelets.iter().filter(|l| visible(l, view)) {
         let mut outline = pts(l.bounds.left());
         outline.extend(pts(l.bounds.right()).into_iter().rev());
         out.push(Prim::Path {
@@ -75,11 +88,12 @@ fn marking_lines(line: &[(f64, f64)], m: LineMarking, view: &View, out: &mut Vec
 /// Thin borders of every lanelet first, then the markings on top (neighbours share bounds).
 pub fn borders_and_markings(net: &LaneletNetwork, view: &View, out: &mut Vec<Prim>) {
     let border = Stroke::solid(style::BORDER, style::BORDER_WIDTH);
-    for l in &net.lanelets {
+    let shown: Vec<&commonroad::Lanelet> = net.lanelets.iter().filter(|l| visible(l, view)).collect();
+    for l in &shown {
         out.push(path(to_px(view, &pts(l.bounds.left())), border));
         out.push(path(to_px(view, &pts(l.bounds.right())), border));
     }
-    for l in &net.lanelets {
+    for l in &shown {
         for (points, marking) in [
             (l.bounds.left(), l.left_marking),
             (l.bounds.right(), l.right_marking),

@@ -3,6 +3,8 @@
 
 use commonroad::{DynamicObstacle, ObstacleId, Scenario, Shape};
 
+use crate::layout::PxRect;
+
 use super::geometry::{local_to_world, place, place_absolute, to_px, Placed};
 use super::prim::{Prim, Rgba, Stroke};
 use crate::style;
@@ -113,15 +115,36 @@ fn heading_wedge(o: &DynamicObstacle, x: f64, y: f64, h: f64, view: &View) -> Op
     })
 }
 
+/// A road user as drawn (before its label is placed).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Shown {
+    pub id: ObstacleId,
+    pub ego: bool,
+    pub obstacle_type: &'static str,
+    pub length_px: f64,
+    pub bbox: PxRect,
+    pub center: (f64, f64),
+}
+
+/// The length of an obstacle shape (a box's length, a circle's diameter), m.
+fn length(shape: &Shape) -> f64 {
+    match shape {
+        Shape::Rectangle(r) => r.length(),
+        Shape::Circle(c) => 2.0 * c.radius(),
+        Shape::Polygon(p) => p.points().iter().map(|q| 2.0 * q.x.hypot(q.y)).fold(0.0, f64::max),
+    }
+}
+
 /// Dynamic obstacles at `step` (those that exist then); the ego last, on top, with a thick
-/// outline.
+/// outline. Returns where each was drawn.
 pub fn dynamic_at(
     scenario: &Scenario,
     ego: Option<ObstacleId>,
     step: u64,
     view: &View,
     out: &mut Vec<Prim>,
-) {
+) -> Vec<Shown> {
+    let mut shown = Vec::new();
     let others = scenario.dynamic_obstacles.iter().filter(|o| Some(o.id) != ego);
     let ego_obstacle = scenario.dynamic_obstacles.iter().filter(|o| Some(o.id) == ego);
     for o in others.chain(ego_obstacle) {
@@ -134,8 +157,26 @@ pub fn dynamic_at(
         };
         // a small obstacle would be all outline: keep most of it its fill colour
         let stroke = Stroke::solid(style::OUTLINE, width.min(0.15 * minor_extent(&o.shape) * view.scale));
-        out.push(placed_prim(view, &place(&o.shape, s.x, s.y, s.orientation), fill, stroke));
+        let placed = place(&o.shape, s.x, s.y, s.orientation);
+        let bbox = match &placed {
+            Placed::Polygon(p) => PxRect::around(&to_px(view, p)),
+            Placed::Circle((x, y), r) => {
+                let (cx, cy) = view.px(*x, *y);
+                let rp = r * view.scale;
+                PxRect { x0: cx - rp, y0: cy - rp, x1: cx + rp, y1: cy + rp }
+            }
+        };
+        out.push(placed_prim(view, &placed, fill, stroke));
         out.extend(heading_wedge(o, s.x, s.y, s.orientation, view));
         marker_if_tiny(view, &o.shape, s.x, s.y, fill, out);
+        shown.push(Shown {
+            id: o.id,
+            ego: is_ego,
+            obstacle_type: o.obstacle_type.as_str(),
+            length_px: length(&o.shape) * view.scale,
+            bbox,
+            center: view.px(s.x, s.y),
+        });
     }
+    shown
 }

@@ -77,14 +77,27 @@ pub fn straight(steps: u64) -> (Scenario, PlanningProblemSet) {
     (s, problems)
 }
 
-/// Where world (x, y) lands in the 1200-px picture of [`straight`], by hand: the content spans
-/// x 0..100 (margin 2 + 5 % of 100 = 7 m → 114 m wide, 1200/114 px/m) and is far flatter than
-/// the minimal aspect 1/4, so the picture is 300 px high, centred on y = 2.
-pub fn straight_px(x: f64, y: f64) -> (u32, u32) {
+/// Options showing the whole map of [`straight`] at `time`.
+pub fn whole(time: f64) -> render::RenderOptions {
+    render::RenderOptions { time, frame: render::Frame::WholeMap, ..Default::default() }
+}
+
+/// Where world (x, y) lands in the picture `layout` describes.
+pub fn px_of(layout: &render::Layout, x: f64, y: f64) -> (u32, u32) {
+    let px = (x - layout.world.min_x) * layout.scale;
+    let py = layout.map.y0 + (layout.world.max_y - y) * layout.scale;
+    (px as u32, py as u32)
+}
+
+/// Where world (x, y) lands in the 1200-px whole-map picture of [`straight`], by hand: the
+/// content spans x 0..100 (margin 2 + 5 % of 100 = 7 m → 114 m wide, 1200/114 px/m) and is
+/// far flatter than the minimal aspect 1/4, so the map area is 300 px high, centred on y = 2,
+/// below the header strip of `header` pixels.
+pub fn straight_px(x: f64, y: f64, header: f64) -> (u32, u32) {
     let scale = 1200.0 / 114.0;
     let left = 50.0 - 57.0;
     let top = 2.0 + 150.0 / scale;
-    (((x - left) * scale) as u32, ((top - y) * scale) as u32)
+    (((x - left) * scale) as u32, (header + (top - y) * scale) as u32)
 }
 
 pub fn decode_png(bytes: &[u8]) -> tiny_skia::Pixmap {
