@@ -51,8 +51,10 @@ fn main() {
         rows.push((m, rel.display().to_string(), duration));
     }
     rows.sort_by_key(|r| std::cmp::Reverse(r.0));
+    // OSC2CR_BENCH_ALL=1 lists every scenario (to compare two builds scenario by scenario)
+    let shown = if std::env::var_os("OSC2CR_BENCH_ALL").is_some() { rows.len() } else { 8 };
     println!("slowest scenarios (median of {RUNS}):");
-    for (m, name, d) in rows.iter().take(8) {
+    for (m, name, d) in rows.iter().take(shown) {
         println!("  {:>8.2} ms  {:>6.2} s  {:>8.0}x  {name}", m.as_secs_f64() * 1e3, d, d / m.as_secs_f64());
     }
     println!(
