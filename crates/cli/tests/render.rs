@@ -1,49 +1,17 @@
 //! `osc2cr render` end to end: CommonRoad files, converted OpenSCENARIO files and corpus maps
 //! drawn as PNG, SVG and GIF; the files decode, have plausible sizes and real content.
 
-use std::collections::BTreeSet;
+mod common;
+
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+
+use common::png::Png;
+use common::{assert_ok as ok, osc2cr, s, tmp};
 
 use render::style;
 
-fn osc2cr(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_osc2cr")).args(args).output().expect("runs")
-}
-
 fn out_dir(name: &str) -> PathBuf {
-    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join("render").join(name);
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().unwrap()
-}
-
-fn ok(o: &Output) {
-    assert!(o.status.success(), "status {:?}: {}", o.status, String::from_utf8_lossy(&o.stderr));
-}
-
-struct Png {
-    width: u32,
-    height: u32,
-    rgba: Vec<u8>,
-}
-
-impl Png {
-    fn read(path: &Path) -> Png {
-        let bytes = std::fs::read(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-        let (width, height, rgba) = render::decode_png(&bytes).unwrap();
-        Png { width, height, rgba }
-    }
-    fn colors(&self) -> BTreeSet<[u8; 3]> {
-        self.rgba.chunks_exact(4).map(|p| [p[0], p[1], p[2]]).collect()
-    }
-    fn count(&self, c: render::scene::prim::Rgba) -> usize {
-        self.rgba.chunks_exact(4).filter(|p| p[..3] == [c.r, c.g, c.b]).count()
-    }
+    tmp("render", name)
 }
 
 /// A real picture: the asked width, a height within the aspect limits (the map area's, plus

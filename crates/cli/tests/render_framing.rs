@@ -7,42 +7,10 @@ mod common;
 
 use std::path::{Path, PathBuf};
 
-use common::{example, osc2cr, s, tmp};
+use common::png::Png;
+use common::{assert_ok as ok, example, osc2cr, s, tmp};
 use render::style;
 use serde_json::Value;
-
-fn ok(o: &std::process::Output) {
-    assert!(o.status.success(), "status {:?}: {}", o.status, String::from_utf8_lossy(&o.stderr));
-}
-
-struct Png {
-    width: u32,
-    height: u32,
-    rgba: Vec<u8>,
-}
-
-impl Png {
-    fn read(path: &Path) -> Png {
-        let (width, height, rgba) = render::decode_png(&std::fs::read(path).unwrap()).unwrap();
-        Png { width, height, rgba }
-    }
-    fn at(&self, x: f64, y: f64) -> [u8; 3] {
-        let i = 4 * (y as usize * self.width as usize + x as usize);
-        [self.rgba[i], self.rgba[i + 1], self.rgba[i + 2]]
-    }
-    /// How many pixels of colour `c` lie in the rectangle [x0, y0, x1, y1].
-    fn count_in(&self, r: &[f64], c: render::scene::prim::Rgba) -> usize {
-        let mut n = 0;
-        for y in r[1].max(0.0) as u32..(r[3].min(f64::from(self.height))) as u32 {
-            for x in r[0].max(0.0) as u32..(r[2].min(f64::from(self.width))) as u32 {
-                if self.at(f64::from(x), f64::from(y)) == [c.r, c.g, c.b] {
-                    n += 1;
-                }
-            }
-        }
-        n
-    }
-}
 
 fn rect(v: &Value) -> Vec<f64> {
     v.as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect()

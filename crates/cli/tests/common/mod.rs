@@ -2,6 +2,8 @@
 //! shipped example (tests only).
 #![allow(dead_code)]
 
+pub mod png;
+
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
@@ -29,4 +31,9 @@ pub fn example() -> PathBuf {
 /// A path as the `&str` an argument list wants.
 pub fn s(p: &Path) -> &str {
     p.to_str().expect("utf-8 path")
+}
+
+/// Asserts that a run of the binary succeeded, showing what it said if not.
+pub fn assert_ok(o: &Output) {
+    assert!(o.status.success(), "status {:?}: {}", o.status, String::from_utf8_lossy(&o.stderr));
 }
