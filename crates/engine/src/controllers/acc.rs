@@ -103,21 +103,13 @@ impl<'a> Sim<'a> {
 
     /// Step every active ACC (and ALKS) controller by `dt`, after the default controller.
     pub fn step_acc_controllers(&mut self, dt: f64) {
-        if !self.any_controller {
-            return;
-        }
-        for e in 0..self.controllers.len() {
-            if !matches!(self.controllers.get(e), Some(Some(super::ControllerRt::Acc(_)))) {
-                continue;
+        self.for_each_controller(|sim, e, c| {
+            if let super::ControllerRt::Acc(a) = c {
+                if a.active {
+                    sim.step_acc(e, a, dt);
+                }
             }
-            let Some(Some(super::ControllerRt::Acc(mut a))) = self.controllers.get_mut(e).map(Option::take) else { continue };
-            if a.active && self.entities.get(e).is_some_and(|en| en.active) {
-                self.step_acc(e, &mut a, dt);
-            }
-            if let Some(slot) = self.controllers.get_mut(e) {
-                *slot = Some(super::ControllerRt::Acc(a));
-            }
-        }
+        });
     }
 
     fn step_acc(&mut self, e: usize, a: &mut AccRt, dt: f64) {

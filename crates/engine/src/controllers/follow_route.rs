@@ -215,21 +215,13 @@ impl<'a> Sim<'a> {
 
     /// Step every active FollowRoute controller by `dt`, after the default controller.
     pub fn step_route_followers(&mut self, dt: f64) {
-        if !self.any_controller {
-            return;
-        }
-        for e in 0..self.controllers.len() {
-            if !matches!(self.controllers.get(e), Some(Some(super::ControllerRt::FollowRoute(_)))) {
-                continue;
+        self.for_each_controller(|sim, e, c| {
+            if let super::ControllerRt::FollowRoute(f) = c {
+                if f.active {
+                    sim.step_follow_route(e, f, dt);
+                }
             }
-            let Some(Some(super::ControllerRt::FollowRoute(mut f))) = self.controllers.get_mut(e).map(Option::take) else { continue };
-            if f.active && self.entities.get(e).is_some_and(|en| en.active) {
-                self.step_follow_route(e, &mut f, dt);
-            }
-            if let Some(slot) = self.controllers.get_mut(e) {
-                *slot = Some(super::ControllerRt::FollowRoute(f));
-            }
-        }
+        });
     }
 
     /// esmini's `ControllerFollowRoute::Step`.

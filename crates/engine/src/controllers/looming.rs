@@ -181,21 +181,13 @@ impl<'a> Sim<'a> {
     /// Step every active LoomingController by `dt`, after the default controller (esmini steps
     /// its controllers then, in frame 0 too with dt = 0).
     pub fn step_looming_controllers(&mut self, dt: f64) {
-        if !self.any_controller {
-            return;
-        }
-        for e in 0..self.controllers.len() {
-            if !matches!(self.controllers.get(e), Some(Some(super::ControllerRt::Looming(_)))) {
-                continue;
+        self.for_each_controller(|sim, e, c| {
+            if let super::ControllerRt::Looming(l) = c {
+                if l.active {
+                    sim.step_looming(e, l, dt);
+                }
             }
-            let Some(Some(super::ControllerRt::Looming(mut l))) = self.controllers.get_mut(e).map(Option::take) else { continue };
-            if l.active && self.entities.get(e).is_some_and(|en| en.active) {
-                self.step_looming(e, &mut l, dt);
-            }
-            if let Some(slot) = self.controllers.get_mut(e) {
-                *slot = Some(super::ControllerRt::Looming(l));
-            }
-        }
+        });
     }
 
     /// ControllerLooming::GetProbeInfo(distance, LOOKAHEADMODE_AT_LANE_CENTER).relative_h: the

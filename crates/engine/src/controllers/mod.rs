@@ -47,6 +47,25 @@ pub fn controller_type(c: &Controller) -> &str {
 }
 
 impl<'a> Sim<'a> {
+    /// Runs `step` on each entity's controller, the entity being in the run: the controller is
+    /// taken out of its slot meanwhile (so that `step` may use the whole simulation) and put
+    /// back after. Each kind's stepping picks its own variant.
+    pub(crate) fn for_each_controller(&mut self, mut step: impl FnMut(&mut Self, usize, &mut ControllerRt)) {
+        if !self.any_controller {
+            return;
+        }
+        for e in 0..self.controllers.len() {
+            if !self.entities.get(e).is_some_and(|en| en.active) {
+                continue;
+            }
+            let Some(mut c) = self.controllers.get_mut(e).and_then(Option::take) else { continue };
+            step(self, e, &mut c);
+            if let Some(slot) = self.controllers.get_mut(e) {
+                *slot = Some(c);
+            }
+        }
+    }
+
     /// Assign controller `c` to entity `e`; warns when its type is not modelled.
     pub fn assign_controller(&mut self, e: usize, c: &Controller) {
         let kind = controller_type(c);

@@ -145,21 +145,13 @@ impl<'a> Sim<'a> {
     /// Step every active NaturalDriver by `dt`, after the default controller moved the others
     /// (also at frame 0 with `dt` = 0, as esmini steps its controllers there too).
     pub fn step_natural_drivers(&mut self, dt: f64) {
-        if !self.any_controller {
-            return;
-        }
-        for e in 0..self.controllers.len() {
-            if !matches!(self.controllers.get(e), Some(Some(ControllerRt::NaturalDriver(_)))) {
-                continue;
+        self.for_each_controller(|sim, e, c| {
+            if let ControllerRt::NaturalDriver(nd) = c {
+                if nd.active {
+                    sim.step_natural_driver(e, nd, dt);
+                }
             }
-            let Some(Some(ControllerRt::NaturalDriver(mut nd))) = self.controllers.get_mut(e).map(Option::take) else { continue };
-            if nd.active && self.entities.get(e).is_some_and(|en| en.active) {
-                self.step_natural_driver(e, &mut nd, dt);
-            }
-            if let Some(slot) = self.controllers.get_mut(e) {
-                *slot = Some(ControllerRt::NaturalDriver(nd));
-            }
-        }
+        });
     }
 
     /// Before the default controller: start or step the injected lane change and keep the
