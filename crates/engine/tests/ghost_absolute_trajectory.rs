@@ -8,25 +8,13 @@ use common::*;
 /// Ego at s = 50 (10 m/s, FollowGhost with a 2 s head start); at 1 s (−1 s for the ghost) it
 /// follows a polyline stamped 1 s at x = 60, 4 s at x = 90 (y −3), 7 s at x = 120.
 fn scenario() -> String {
-    let activate = r#"<Private entityRef="Ego"><PrivateAction><ActivateControllerAction longitudinal="true" lateral="true"/></PrivateAction></Private>"#;
-    let init = format!(
-        "{}{}{}{activate}",
-        teleport("Ego", 50.0, -1),
-        init_speed("Ego", "step", "time", 0.0, 10.0),
-        teleport("Target", 300.0, -1)
-    );
+    let init = ghost_ego_init(&teleport("Target", 300.0, -1));
     let traj = r#"<PrivateAction><RoutingAction><FollowTrajectoryAction><TrajectoryRef><Trajectory name="T" closed="false"><Shape><Polyline><Vertex time="1"><Position><WorldPosition x="60" y="-1.75" h="0"/></Position></Vertex><Vertex time="4"><Position><WorldPosition x="90" y="-3"/></Position></Vertex><Vertex time="7"><Position><WorldPosition x="120" y="-3"/></Position></Vertex></Polyline></Shape></Trajectory></TrajectoryRef><TimeReference><Timing domainAbsoluteRelative="absolute" scale="1" offset="0"/></TimeReference><TrajectoryFollowingMode followingMode="position"/></FollowTrajectoryAction></RoutingAction></PrivateAction>"#;
     let stories = story("Ego", &event("Follow", "overwrite", traj, &trigger(&sim_time(1.0, "greaterThan", "none", 0.0))));
     let stop = format!("<ConditionGroup>{}</ConditionGroup>", sim_time(5.0, "greaterThan", "none", 0.0));
-    let c = r#"<ObjectController><Controller name="driver"><Properties><Property name="esminiController" value="FollowGhostController"/><Property name="headstartTime" value="2"/></Properties></Controller></ObjectController></ScenarioObject>"#;
-    xosc(&init, &stories, &stop).replacen("</ScenarioObject>", c, 1)
+    with_follow_ghost(&xosc(&init, &stories, &stop), 2.0)
 }
 
-fn at_t(run: &engine::Run, entity: &str, t: f64) -> engine::Sample {
-    let e = run.trace.entities.iter().find(|e| e.name == entity).expect("entity in trace");
-    let k = ((t - run.trace.start) / run.trace.step).round() as usize;
-    e.samples.get(k).copied().flatten().expect("sample exists")
-}
 
 #[test]
 fn the_ghost_reads_absolute_time_stamps_a_head_start_later() {
@@ -39,7 +27,7 @@ fn the_ghost_reads_absolute_time_stamps_a_head_start_later() {
         ("Ego_ghost", 3.0, 100.0, -3.0),
         ("Ego", 3.0, 80.0025, -2.5738),
     ] {
-        let s = at_t(&run, who, t);
+        let s = at(&run, who, t);
         assert!(close(s.x, x, 1e-4) && close(s.y, y, 1e-4), "{who} at {t}: ({}, {})", s.x, s.y);
     }
 }

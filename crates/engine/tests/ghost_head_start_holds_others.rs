@@ -8,26 +8,12 @@ mod common;
 use common::*;
 
 fn scenario() -> String {
-    let activate = r#"<Private entityRef="Ego"><PrivateAction><ActivateControllerAction longitudinal="true" lateral="true"/></PrivateAction></Private>"#;
-    let init = format!(
-        "{}{}{}{}{activate}",
-        teleport("Ego", 50.0, -1),
-        init_speed("Ego", "step", "time", 0.0, 10.0),
-        teleport("Target", 100.0, -2),
-        // Target accelerates at 2 m/s² from standstill: not before time 0.
-        init_speed("Target", "linear", "rate", 2.0, 10.0)
-    );
+    // Target accelerates at 2 m/s² from standstill: not before time 0.
+    let init = ghost_ego_init(&format!("{}{}", teleport("Target", 100.0, -2), init_speed("Target", "linear", "rate", 2.0, 10.0)));
     let stop = format!("<ConditionGroup>{}</ConditionGroup>", sim_time(4.0, "greaterThan", "none", 0.0));
-    let c = r#"<ObjectController><Controller name="driver"><Properties><Property name="esminiController" value="FollowGhostController"/><Property name="headstartTime" value="2"/></Properties></Controller></ObjectController></ScenarioObject>"#;
-    xosc(&init, "", &stop).replacen("</ScenarioObject>", c, 1)
+    with_follow_ghost(&xosc(&init, "", &stop), 2.0)
 }
 
-/// Sample of `entity` at time `t` (the trace starts at −head start).
-fn at_t(run: &engine::Run, entity: &str, t: f64) -> engine::Sample {
-    let e = run.trace.entities.iter().find(|e| e.name == entity).expect("entity in trace");
-    let k = ((t - run.trace.start) / run.trace.step).round() as usize;
-    e.samples.get(k).copied().flatten().expect("sample exists")
-}
 
 #[test]
 fn another_entitys_init_speed_action_steps_from_time_zero() {
@@ -35,12 +21,12 @@ fn another_entitys_init_speed_action_steps_from_time_zero() {
     assert!(close(run.trace.start, -2.0, 1e-12), "{}", run.trace.start);
     // esmini: Target stands at x = 100 with speed 0 from −2 s to 0 s ...
     for t in [-2.0, -1.0, 0.0] {
-        let s = at_t(&run, "Target", t);
+        let s = at(&run, "Target", t);
         assert!(close(s.x, 100.0, 1e-9) && close(s.speed, 0.0, 1e-9), "t = {t}: x {} speed {}", s.x, s.speed);
     }
     // ... then speeds up by 0.02 m/s a step: x 100.0002 / 101.0100 / 104.0200 at 0.01 / 1 / 2 s.
     for (t, x, v) in [(0.01, 100.0002, 0.02), (1.0, 101.01, 2.0), (2.0, 104.02, 4.0)] {
-        let s = at_t(&run, "Target", t);
+        let s = at(&run, "Target", t);
         assert!(close(s.x, x, 1e-4) && close(s.speed, v, 1e-9), "t = {t}: x {} speed {}", s.x, s.speed);
     }
 }
@@ -49,8 +35,8 @@ fn another_entitys_init_speed_action_steps_from_time_zero() {
 fn the_ghost_alone_moves_during_the_head_start() {
     let run = run(&scenario());
     // esmini: the ghost 60 m at −1 s, 70 m at 0 s; the Ego waits at 50 m until time 0.
-    assert!(close(at_t(&run, "Ego_ghost", -1.0).x, 60.0, 1e-9));
-    assert!(close(at_t(&run, "Ego_ghost", 0.0).x, 70.0, 1e-9));
-    assert!(close(at_t(&run, "Ego", 0.0).x, 50.0, 1e-9));
-    assert!(close(at_t(&run, "Ego", 1.0).x, 60.0, 1e-4));
+    assert!(close(at(&run, "Ego_ghost", -1.0).x, 60.0, 1e-9));
+    assert!(close(at(&run, "Ego_ghost", 0.0).x, 70.0, 1e-9));
+    assert!(close(at(&run, "Ego", 0.0).x, 50.0, 1e-9));
+    assert!(close(at(&run, "Ego", 1.0).x, 60.0, 1e-4));
 }

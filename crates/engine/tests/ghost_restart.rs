@@ -17,18 +17,10 @@ fn stop(t: f64) -> String {
 /// Ego at s = 50 (10 m/s, head start 2 s), Target standing at s = 300; the story's event
 /// `Drift` moves the ghost 0.5 m left when its start trigger (`groups`) fires.
 fn ghost_scenario(groups: &str) -> String {
-    let activate = r#"<Private entityRef="Ego"><PrivateAction><ActivateControllerAction longitudinal="true" lateral="true"/></PrivateAction></Private>"#;
-    let init = format!(
-        "{}{}{}{activate}",
-        teleport("Ego", 50.0, -1),
-        init_speed("Ego", "step", "time", 0.0, 10.0),
-        teleport("Target", 300.0, -1)
-    );
+    let init = ghost_ego_init(&teleport("Target", 300.0, -1));
     let offset = r#"<PrivateAction><LateralAction><LaneOffsetAction continuous="false"><LaneOffsetActionDynamics maxLateralAcc="2" dynamicsShape="cubic"/><LaneOffsetTarget><AbsoluteTargetLaneOffset value="0.5"/></LaneOffsetTarget></LaneOffsetAction></LateralAction></PrivateAction>"#;
     let stories = story("Ego", &event("Drift", "overwrite", offset, &format!("<StartTrigger>{groups}</StartTrigger>")));
-    let text = xosc(&init, &stories, &stop(5.0));
-    let c = r#"<ObjectController><Controller name="driver"><Properties><Property name="esminiController" value="FollowGhostController"/><Property name="headstartTime" value="2"/></Properties></Controller></ObjectController></ScenarioObject>"#;
-    text.replacen("</ScenarioObject>", c, 1)
+    with_follow_ghost(&xosc(&init, &stories, &stop(5.0)), 2.0)
 }
 
 fn group(condition: &str) -> String {
@@ -56,12 +48,6 @@ fn restart_notes(run: &engine::Run) -> Vec<String> {
         .collect()
 }
 
-/// Sample of `entity` at time `t` on the first pass (the trace starts at −head start).
-fn at_t(run: &engine::Run, entity: &str, t: f64) -> engine::Sample {
-    let i = run.trace.entities.iter().position(|e| e.name == entity).expect("entity in trace");
-    let k = ((t - run.trace.start) / run.trace.step).round() as usize;
-    run.trace.entities[i].samples.get(k).copied().flatten().expect("sample exists")
-}
 
 /// Sample of `entity` at time `t` of the (only) replay.
 fn replayed(run: &engine::Run, entity: &str, t: f64) -> engine::Sample {
@@ -85,8 +71,8 @@ fn an_event_after_time_zero_restarts_the_ghost_and_time_runs_again() {
     let run = run(&ghost_scenario(&group(&near(240.0))));
     // The ghost takes the Ego's place of 1.01 s (60.1 m) and does not move in that step; the
     // Ego, following an empty trail, slows to 9.9 m/s.
-    assert!(near_xy(at_t(&run, "Ego_ghost", 1.02), 60.1, -1.75), "{:?}", xy(at_t(&run, "Ego_ghost", 1.02)));
-    assert!(near_xy(at_t(&run, "Ego", 1.02), 60.199, -1.75), "{:?}", xy(at_t(&run, "Ego", 1.02)));
+    assert!(near_xy(at(&run, "Ego_ghost", 1.02), 60.1, -1.75), "{:?}", xy(at(&run, "Ego_ghost", 1.02)));
+    assert!(near_xy(at(&run, "Ego", 1.02), 60.199, -1.75), "{:?}", xy(at(&run, "Ego", 1.02)));
     // Then time goes back 2 s: steps -0.97 .. 1.02 run again, logged after the row of 1.02.
     assert_eq!(run.trace.replays.len(), 1);
     let r = &run.trace.replays[0];
@@ -110,8 +96,8 @@ fn an_event_after_time_zero_restarts_the_ghost_and_time_runs_again() {
         assert!(near_xy(e, 60.199, -1.75) && close(e.speed, 9.9, 1e-9), "t = {t}: {:?}", xy(e));
     }
     // Afterwards the Ego follows the new trail: esmini has (79.9842, -1.2931) at 3 s.
-    assert!(near_xy(at_t(&run, "Ego", 3.0), 79.9842, -1.2931), "{:?}", xy(at_t(&run, "Ego", 3.0)));
-    assert!(near_xy(at_t(&run, "Ego_ghost", 3.0), 99.9, -1.25), "{:?}", xy(at_t(&run, "Ego_ghost", 3.0)));
+    assert!(near_xy(at(&run, "Ego", 3.0), 79.9842, -1.2931), "{:?}", xy(at(&run, "Ego", 3.0)));
+    assert!(near_xy(at(&run, "Ego_ghost", 3.0), 99.9, -1.25), "{:?}", xy(at(&run, "Ego_ghost", 3.0)));
     // The CSV lists the replayed rows where esmini's log has them.
     let csv = run.trace.to_csv(&[]);
     let a = csv.find("1.020,Ego_ghost,60.1000").expect("restart row");
@@ -135,9 +121,9 @@ fn an_added_teleport_during_the_head_start_puts_the_ghost_back_on_its_entity() {
     // The ghost reaches s = 59 at −1.10 s; the event starts (its other group, `near`, gives it
     // the added teleport) and esmini puts the ghost back at the Ego (50 m): no restart.
     let run = run(&ghost_scenario(&format!("{}{}", group(&reach()), group(&near(1.0)))));
-    assert!(near_xy(at_t(&run, "Ego_ghost", -1.10), 59.0, -1.75), "{:?}", xy(at_t(&run, "Ego_ghost", -1.10)));
-    assert!(near_xy(at_t(&run, "Ego_ghost", -1.09), 50.0, -1.75), "{:?}", xy(at_t(&run, "Ego_ghost", -1.09)));
-    assert!(near_xy(at_t(&run, "Ego_ghost", -1.0), 50.9, -1.7423), "{:?}", xy(at_t(&run, "Ego_ghost", -1.0)));
+    assert!(near_xy(at(&run, "Ego_ghost", -1.10), 59.0, -1.75), "{:?}", xy(at(&run, "Ego_ghost", -1.10)));
+    assert!(near_xy(at(&run, "Ego_ghost", -1.09), 50.0, -1.75), "{:?}", xy(at(&run, "Ego_ghost", -1.09)));
+    assert!(near_xy(at(&run, "Ego_ghost", -1.0), 50.9, -1.7423), "{:?}", xy(at(&run, "Ego_ghost", -1.0)));
     assert!(run.trace.replays.is_empty());
     assert!(restart_notes(&run).is_empty(), "{:?}", run.warnings);
 }
@@ -178,10 +164,10 @@ fn a_later_restart_makes_completed_restart_events_ready_again() {
     // drives (102.4081, -2.25 at 1.27 s); at 5 s the Ego is at (99.9204, -1.5669).
     let i = run.trace.entities.iter().position(|e| e.name == "Ego_ghost").expect("ghost");
     let r = &run.trace.replays[2];
-    let at = |t: f64, e: usize| r.rows[((t - r.start) / run.trace.step).round() as usize][e].expect("sample");
-    assert!(near_xy(at(1.27, i), 102.4081, -2.25), "{:?}", xy(at(1.27, i)));
-    assert!(near_xy(at(1.27, 0), 85.2811, -1.2556), "{:?}", xy(at(1.27, 0)));
-    assert!(near_xy(at_t(&run, "Ego", 5.0), 99.9204, -1.5669), "{:?}", xy(at_t(&run, "Ego", 5.0)));
+    let replayed = |t: f64, e: usize| r.rows[((t - r.start) / run.trace.step).round() as usize][e].expect("sample");
+    assert!(near_xy(replayed(1.27, i), 102.4081, -2.25), "{:?}", xy(replayed(1.27, i)));
+    assert!(near_xy(replayed(1.27, 0), 85.2811, -1.2556), "{:?}", xy(replayed(1.27, 0)));
+    assert!(near_xy(at(&run, "Ego", 5.0), 99.9204, -1.5669), "{:?}", xy(at(&run, "Ego", 5.0)));
 }
 
 #[test]
@@ -198,7 +184,7 @@ fn the_actions_of_a_restarting_event_start_and_run_on_the_rewound_clock() {
     assert!(near_xy(ghost, 71.1372, -1.75) && close(ghost.speed, 12.475, 1e-9), "{:?} {}", xy(ghost), ghost.speed);
     let ghost = replayed(&run, "Ego_ghost", 1.0);
     assert!(near_xy(ghost, 84.8748, -1.75) && close(ghost.speed, 14.975, 1e-9), "{:?} {}", xy(ghost), ghost.speed);
-    assert!(near_xy(at_t(&run, "Ego", 4.0), 97.4375, -1.75), "{:?}", xy(at_t(&run, "Ego", 4.0)));
+    assert!(near_xy(at(&run, "Ego", 4.0), 97.4375, -1.75), "{:?}", xy(at(&run, "Ego", 4.0)));
 }
 
 #[test]

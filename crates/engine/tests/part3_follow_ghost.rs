@@ -35,12 +35,6 @@ fn ghost_scenario(speed: f64, events: &str, end: f64) -> String {
     with_controller(xosc(&init, &stories, &stop(end)), &follow_ghost_props())
 }
 
-/// Sample of `entity` at time `t` (the trace may start before 0).
-fn at_t(run: &engine::Run, entity: &str, t: f64) -> engine::Sample {
-    let e = run.trace.entities.iter().find(|e| e.name == entity).expect("entity in trace");
-    let k = ((t - run.trace.start) / run.trace.step).round() as usize;
-    e.samples.get(k).copied().flatten().expect("sample exists")
-}
 
 fn settings(max: f64) -> engine::Settings {
     engine::Settings { step: 0.01, max_time: max }
@@ -53,13 +47,13 @@ fn the_ghost_starts_headstart_early_and_leads_by_headstart_times_speed() {
     assert!(run.trace.entities.iter().any(|e| e.name == "Ego_ghost"), "the trace names the ghost as esmini does");
     assert!(!run.warnings.iter().any(|w| w.to_string().contains("not modelled")), "{:?}", run.warnings);
     // During the head start only the ghost moves: 10 m/s for 2 s.
-    let (e0, g0) = (at_t(&run, "Ego", 0.0), at_t(&run, "Ego_ghost", 0.0));
+    let (e0, g0) = (at(&run, "Ego", 0.0), at(&run, "Ego_ghost", 0.0));
     assert!(close(e0.x, 50.0, 1e-9), "{}", e0.x);
     assert!(close(g0.x, 50.0 + HEADSTART * 10.0, 1e-6), "{}", g0.x);
     // Then the Ego drives the ghost's trail at the ghost's speed: it stays headstart·speed behind,
     // in its lane, straight.
     for t in [1.0, 4.0, 8.0] {
-        let (e, g) = (at_t(&run, "Ego", t), at_t(&run, "Ego_ghost", t));
+        let (e, g) = (at(&run, "Ego", t), at(&run, "Ego_ghost", t));
         assert!(close(g.x - e.x, HEADSTART * 10.0, 1e-6), "t={t}: gap {}", g.x - e.x);
         assert!(close(e.x, 50.0 + 10.0 * t, 1e-6), "t={t}: {}", e.x);
         assert!(close(e.y, -1.75, 1e-9) && close(e.speed, 10.0, 1e-9), "t={t}: {} {}", e.y, e.speed);
@@ -77,10 +71,10 @@ fn simulation_time_triggers_fire_headstart_early_for_the_ghost() {
     assert!(close(started, -0.99, 1e-9), "{started}");
     // The lane change took the ghost, not the Ego: at 0 the Ego has not moved, the ghost is
     // half way (sinusoidal, 2 s, started at −0.99).
-    let g = at_t(&run, "Ego_ghost", 0.0);
+    let g = at(&run, "Ego_ghost", 0.0);
     let half = -1.75 - 3.5 * (1.0 - (std::f64::consts::PI * 0.99 / 2.0).cos()) / 2.0;
     assert!(close(g.y, half, 0.02), "{} vs {half}", g.y);
-    assert!(close(at_t(&run, "Ego", 0.0).y, -1.75, 1e-9));
+    assert!(close(at(&run, "Ego", 0.0).y, -1.75, 1e-9));
 }
 
 #[test]
@@ -92,10 +86,10 @@ fn a_lane_change_of_the_ghost_is_followed_smoothly_into_the_target_lane() {
     // It moves from lane -1 to lane -2 without leaving the band between the two lane centres by
     // more than 0.2 m (it aims at the trail 7 m ahead, so it cuts in and overshoots a little),
     // turning gently, and ends on lane -2's centre.
-    let mut prev_h = at_t(&run, "Ego", 0.0).h;
+    let mut prev_h = at(&run, "Ego", 0.0).h;
     let mut t = 0.01;
     while t < 14.0 {
-        let e = at_t(&run, "Ego", t);
+        let e = at(&run, "Ego", t);
         assert!(e.y <= -1.75 + 0.02 && e.y >= -5.25 - 0.2, "t={t}: y {}", e.y);
         let dh = (e.h - prev_h + std::f64::consts::PI).rem_euclid(2.0 * std::f64::consts::PI) - std::f64::consts::PI;
         // A lane change of 3.5 m in 2 s at 10 m/s turns by at most ~0.27 rad/s.
@@ -103,7 +97,7 @@ fn a_lane_change_of_the_ghost_is_followed_smoothly_into_the_target_lane() {
         prev_h = e.h;
         t += 0.01;
     }
-    let end = at_t(&run, "Ego", 14.0);
+    let end = at(&run, "Ego", 14.0);
     assert!(close(end.y, -5.25, 0.02), "{}", end.y);
     assert_eq!(end.road.map(|r| r.lane_id), Some(-2));
     // The Ego passes where the ghost was: at every one of its positions before and well after the
@@ -117,7 +111,7 @@ fn a_lane_change_of_the_ghost_is_followed_smoothly_into_the_target_lane() {
         w.into_iter().next().expect("the ghost passed x")
     };
     for t in [0.5, 2.0, 8.0, 10.0, 13.0] {
-        let e = at_t(&run, "Ego", t);
+        let e = at(&run, "Ego", t);
         assert!(close(e.y, ghost_y_at(e.x), 0.02), "t={t}: {} vs {}", e.y, ghost_y_at(e.x));
     }
 }
@@ -140,7 +134,7 @@ fn follow_reference_tracks_its_ghost_with_a_critically_damped_spring() {
     let run = run_with(&follow_reference_scenario(10.0, "", 8.0), &settings(20.0));
     assert!(close(run.trace.start, 0.0, 0.0));
     for t in [1.0, 3.0, 8.0] {
-        let (e, g) = (at_t(&run, "Ego", t), at_t(&run, "Ego_ghost", t));
+        let (e, g) = (at(&run, "Ego", t), at(&run, "Ego_ghost", t));
         let want = 0.1 - 0.1 * (1.0 + t) * (-t).exp();
         assert!(close(e.x - g.x, want, 2e-3), "t={t}: {} vs {want}", e.x - g.x);
         // v − v_ghost = d(dx)/dt = 0.1·t·e^(−t).
@@ -157,14 +151,14 @@ fn follow_reference_catches_up_like_a_critically_damped_spring() {
     let lc = r#"<PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="step" value="0" dynamicsDimension="time"/><SpeedActionTarget><AbsoluteTargetSpeed value="10"/></SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction>"#;
     let ev = event("Go", "overwrite", lc, &trigger(&sim_time(0.0, "greaterOrEqual", "none", 0.0)));
     let run = run_with(&follow_reference_scenario(0.0, &ev, 10.0), &settings(20.0));
-    let gap = |t: f64| at_t(&run, "Ego", t).x - at_t(&run, "Ego_ghost", t).x;
+    let gap = |t: f64| at(&run, "Ego", t).x - at(&run, "Ego_ghost", t).x;
     let expected = |t: f64| -10.0 * t * (-t).exp();
     for t in [0.5, 1.0, 2.0, 4.0] {
         assert!(close(gap(t), expected(t), 0.15), "t={t}: {} vs {}", gap(t), expected(t));
     }
     assert!(close(gap(10.0), 0.1, 0.01), "{}", gap(10.0));
     // Speed error −de/dt = 10·(1 − t)·e^(−t): 0.004 m/s at 10 s.
-    assert!(close(at_t(&run, "Ego", 10.0).speed, 10.0 + 10.0 * 9.0 * (-10.0_f64).exp(), 2e-3));
+    assert!(close(at(&run, "Ego", 10.0).speed, 10.0 + 10.0 * 9.0 * (-10.0_f64).exp(), 2e-3));
 }
 
 #[test]
@@ -172,11 +166,11 @@ fn follow_reference_follows_a_lane_change_of_its_ghost() {
     let lc = r#"<PrivateAction><LateralAction><LaneChangeAction><LaneChangeActionDynamics dynamicsShape="sinusoidal" value="3" dynamicsDimension="time"/><LaneChangeTarget><AbsoluteTargetLane value="-2"/></LaneChangeTarget></LaneChangeAction></LateralAction></PrivateAction>"#;
     let ev = event("Change", "overwrite", lc, &trigger(&sim_time(1.0, "greaterThan", "rising", 0.0)));
     let run = run_with(&follow_reference_scenario(10.0, &ev, 10.0), &settings(20.0));
-    let end = at_t(&run, "Ego", 10.0);
+    let end = at(&run, "Ego", 10.0);
     assert!(close(end.y, -5.25, 0.01), "{}", end.y);
     assert_eq!(end.road.map(|r| r.lane_id), Some(-2));
     for k in 0..1000 {
-        let e = at_t(&run, "Ego", k as f64 * 0.01);
+        let e = at(&run, "Ego", k as f64 * 0.01);
         assert!(e.y <= -1.75 + 0.05 && e.y >= -5.25 - 0.1, "t={}: {}", k as f64 * 0.01, e.y);
     }
 }
@@ -190,7 +184,7 @@ fn time_mode_follows_the_ghost_headstart_seconds_behind() {
     let init = format!("{}{}{}{}", teleport("Ego", 50.0, -1), init_speed("Ego", "step", "time", 0.0, 10.0), teleport("Target", 900.0, 1), activate());
     let run = run_with(&with_controller(xosc(&init, "", &stop(6.0)), &props), &settings(20.0));
     for t in [1.0, 6.0] {
-        let (e, g) = (at_t(&run, "Ego", t), at_t(&run, "Ego_ghost", t));
+        let (e, g) = (at(&run, "Ego", t), at(&run, "Ego_ghost", t));
         assert!(close(g.x - e.x, HEADSTART * 10.0, 1e-6), "t={t}: gap {}", g.x - e.x);
         assert!(close(e.y, -1.75, 1e-9) && close(e.speed, 10.0, 1e-9));
     }

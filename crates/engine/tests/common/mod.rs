@@ -96,10 +96,10 @@ pub fn run(text: &str) -> Run {
     run_with(text, &Settings { step: 0.01, max_time: 20.0 })
 }
 
-/// Sample of `entity` at time `t`.
+/// Sample of `entity` at time `t` (a run with a ghost's head start begins before 0).
 pub fn at(run: &Run, entity: &str, t: f64) -> engine::Sample {
     let e = run.trace.entities.iter().find(|e| e.name == entity).expect("entity in trace");
-    let k = (t / run.trace.step).round() as usize;
+    let k = ((t - run.trace.start) / run.trace.step).round() as usize;
     e.samples.get(k).copied().flatten().expect("sample exists")
 }
 
@@ -110,4 +110,19 @@ pub fn event_time(run: &Run, element: &str, transition: &str) -> Option<f64> {
 
 pub fn close(a: f64, b: f64, tol: f64) -> bool {
     (a - b).abs() <= tol
+}
+
+/// Init of an Ego at s = 50 on lane −1 driving 10 m/s whose controllers are activated (the
+/// FollowGhost tests), followed by `others`.
+pub fn ghost_ego_init(others: &str) -> String {
+    let activate = r#"<Private entityRef="Ego"><PrivateAction><ActivateControllerAction longitudinal="true" lateral="true"/></PrivateAction></Private>"#;
+    format!("{}{}{others}{activate}", teleport("Ego", 50.0, -1), init_speed("Ego", "step", "time", 0.0, 10.0))
+}
+
+/// `text` with a FollowGhostController of head start `headstart` s on its first entity (Ego).
+pub fn with_follow_ghost(text: &str, headstart: f64) -> String {
+    let c = format!(
+        r#"<ObjectController><Controller name="driver"><Properties><Property name="esminiController" value="FollowGhostController"/><Property name="headstartTime" value="{headstart}"/></Properties></Controller></ObjectController></ScenarioObject>"#
+    );
+    text.replacen("</ScenarioObject>", &c, 1)
 }
