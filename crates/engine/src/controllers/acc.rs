@@ -8,7 +8,7 @@
 //! esmini steps its controllers after the default controller has moved every entity: so the
 //! controller sees the others where they are at the end of the step, and in additive mode the
 //! entity moves by the speed the controller set one step earlier. `Sim::step_acc_controllers`
-//! runs after the default controller; before it, `hold_for_acc` keeps the default controller off
+//! runs after the default controller; before it, `hold_for_override` keeps the default controller off
 //! an entity the controller moves itself (override mode).
 
 use crate::conditions::distance::between;
@@ -32,9 +32,9 @@ pub struct AccRt {
     set_speed_given: bool,
     lateral_dist: f64,
     current_speed: f64,
-    override_mode: bool,
+    pub(super) override_mode: bool,
     /// An action moved the entity this step (seen before the default controller ran).
-    moved_by_action: bool,
+    pub(super) moved_by_action: bool,
 }
 
 impl AccRt {
@@ -91,16 +91,6 @@ pub(super) fn lane_delta(net: &RoadNetwork, a: LanePos, b: LanePos, max: f64) ->
 }
 
 impl<'a> Sim<'a> {
-    /// Before the default controller: remember whether an action moved entity `e`, and in
-    /// override mode keep the default controller from moving it (the controller does).
-    pub(super) fn hold_for_acc(&mut self, e: usize, a: &mut AccRt) {
-        let Some(en) = self.entities.get_mut(e) else { return };
-        a.moved_by_action = en.moved_by_action;
-        if a.override_mode {
-            en.moved_by_action = true;
-        }
-    }
-
     /// Step every active ACC (and ALKS) controller by `dt`, after the default controller.
     pub fn step_acc_controllers(&mut self, dt: f64) {
         self.for_each_controller(|sim, e, c| {

@@ -46,6 +46,17 @@ impl<'a> Sim<'a> {
         true
     }
 
+    /// Before the default controller, for a controller that may override it (ACC, looming):
+    /// remember in `moved_by_action` whether an action moved entity `e`, and in override mode
+    /// keep the default controller from moving it (the controller does).
+    pub(super) fn hold_for_override(&mut self, e: usize, moved_by_action: &mut bool, override_mode: bool) {
+        let Some(en) = self.entities.get_mut(e) else { return };
+        *moved_by_action = en.moved_by_action;
+        if override_mode {
+            en.moved_by_action = true;
+        }
+    }
+
     /// Keep the default controller off follower `e` while its controller is `active`.
     pub(super) fn hold_follower(&mut self, e: usize, active: bool) {
         if let Some(en) = self.entities.get_mut(e).filter(|_| active) {

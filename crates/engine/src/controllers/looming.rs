@@ -49,14 +49,14 @@ pub struct LoomingRt {
     time_gap: f64,
     set_speed: f64,
     set_speed_given: bool,
-    override_mode: bool,
+    pub(super) override_mode: bool,
     /// The speed of esmini's vehicle model (vehicle_.speed_), kept by the controller.
     speed: f64,
     handbrake: bool,
     max_acc: f64,
     max_dec: f64,
     /// An action moved the entity this step (seen before the default controller ran).
-    moved_by_action: bool,
+    pub(super) moved_by_action: bool,
     /// esmini's vehicle model the controller drives (its pose; `speed` above is its speed).
     vehicle: Option<super::kinematic_vehicle::KinematicVehicle>,
     prev_near: f64,
@@ -169,15 +169,6 @@ fn lead_delta(net: &opendrive::RoadNetwork, a: crate::roads::LanePos, b: crate::
 }
 
 impl<'a> Sim<'a> {
-    /// Before the default controller: in override mode keep it from moving the entity.
-    pub(super) fn hold_for_looming(&mut self, e: usize, l: &mut LoomingRt) {
-        let Some(en) = self.entities.get_mut(e) else { return };
-        l.moved_by_action = en.moved_by_action;
-        if l.override_mode {
-            en.moved_by_action = true;
-        }
-    }
-
     /// Step every active LoomingController by `dt`, after the default controller (esmini steps
     /// its controllers then, in frame 0 too with dt = 0).
     pub fn step_looming_controllers(&mut self, dt: f64) {

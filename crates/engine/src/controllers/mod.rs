@@ -155,7 +155,7 @@ impl<'a> Sim<'a> {
                 ControllerRt::Acc(a) => {
                     // Stepped after the default controller (`step_acc_controllers`).
                     if a.active && self.entities.get(e).is_some_and(|en| en.active) {
-                        self.hold_for_acc(e, a);
+                        self.hold_for_override(e, &mut a.moved_by_action, a.override_mode);
                     }
                 }
                 ControllerRt::AlksR157(a) => {
@@ -179,7 +179,7 @@ impl<'a> Sim<'a> {
                 // Steps after the default controller (`step_looming_controllers`).
                 ControllerRt::Looming(l) => {
                     if l.active && self.entities.get(e).is_some_and(|en| en.active) {
-                        self.hold_for_looming(e, l);
+                        self.hold_for_override(e, &mut l.moved_by_action, l.override_mode);
                     }
                 }
             }
