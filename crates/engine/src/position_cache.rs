@@ -2,7 +2,7 @@
 //! condition on a RoutePosition would otherwise plan the route again every step. Only
 //! shapes whose positions refer to no entity are cached (others change as entities move);
 //! entries are keyed by the model's address, valid while the scenario is borrowed by the
-//! run, and `clear` runs when a run starts.
+//! run, and each run keeps its own entries (`run_memos.rs`).
 
 use openscenario::{Position, Route, Shape, Trajectory};
 use std::cell::RefCell;
@@ -19,9 +19,23 @@ thread_local! {
 /// Most entries kept (hostile input: many distinct positions).
 const MAX_ENTRIES: usize = 256;
 
-pub fn clear() {
-    ROUTES.with(|c| c.borrow_mut().clear());
-    PATHS.with(|c| c.borrow_mut().clear());
+/// One run's entries (`crate::run_memos`).
+pub struct Store {
+    routes: Vec<RouteEntry>,
+    paths: Vec<PathEntry>,
+}
+
+impl Store {
+    /// No entries.
+    pub fn new() -> Store {
+        Store { routes: Vec::new(), paths: Vec::new() }
+    }
+
+    /// Exchange these entries with the thread's.
+    pub fn swap_with_thread(&mut self) {
+        ROUTES.with(|c| std::mem::swap(&mut *c.borrow_mut(), &mut self.routes));
+        PATHS.with(|c| std::mem::swap(&mut *c.borrow_mut(), &mut self.paths));
+    }
 }
 
 fn is_static(p: &Position) -> bool {

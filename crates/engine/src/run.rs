@@ -9,7 +9,8 @@
 use crate::motion::Before;
 use crate::sim::Sim;
 use crate::storyboard::{State, Transition};
-use crate::trace::{EntityTrace, Replay, RoadPos, Sample, Trace};
+use crate::run_memos::RunMemos;
+use crate::trace::{EntityTrace, Replay, RoadPos, Sample, StoryboardEvent, Trace};
 use crate::{Error, RunControl, Settings, Warning};
 use opendrive::RoadNetwork;
 use openscenario::Scenario;
@@ -41,68 +42,141 @@ const MAX_REPLAYED: usize = 1_000_000;
 
 /// [`simulate`] with a random seed (esmini's `--seed`) and an optional wall-clock deadline.
 pub fn simulate_with(scenario: &Scenario, roads: Option<&RoadNetwork>, settings: &Settings, control: &RunControl) -> Result<Run, Error> {
-    let seed = control.seed;
-    settings.check()?;
-    crate::position_cache::clear();
-    crate::roads::pose_memo::clear();
-    crate::roads::locate::clear();
-    let dt = settings.step;
-    let mut sim = Sim::new(scenario, roads, dt);
-    sim.random = crate::esmini_random::EsminiRandom::new(seed);
-    // A ghost's head start runs before time 0 (ghost.rs); otherwise t0 = 0.
-    let t0 = sim.time_origin();
-    let steps = ((settings.max_time - t0) / dt + 1e-9).floor() as usize;
-    let mut trace = Trace {
-        start: t0,
-        step: dt,
-        len: 0,
-        entities: sim.entities.iter().map(|e| EntityTrace { name: e.name.clone(), samples: Vec::with_capacity(steps + 1) }).collect(),
-        events: Vec::new(),
-        signal_states: Vec::new(),
-        ghosts: sim.ghost.iter().filter_map(|g| sim.entities.get(g.entity)).map(|e| e.name.clone()).collect(),
-        replays: Vec::new(),
-    };
-    let mut before = vec![Before::default(); sim.entities.len()];
-    let root = 0;
+    let mut run = Simulation::new(scenario, roads, settings, control)?;
+    while run.step()? {}
+    Ok(run.finish())
+}
 
-    // Frame 0: Init actions and the first storyboard evaluation, no time passes.
-    sim.time = t0;
-    sim.align_trailers();
-    // sim.rs put the Init actions in esmini's order (init_order.rs)
-    for slot in sim.init_actions.clone() {
-        sim.start_action(slot);
-    }
-    sim.set_state(root, Transition::Start, State::Running);
-    let stories = sim.nodes[root].children.clone();
-    for s in stories {
-        sim.start_element(s);
-    }
-    snapshot(&sim, &mut before);
-    let restarting = sim.ghost_restarting();
-    storyboard_step(&mut sim, 0.0);
-    if !restarting {
-        sim.step_natural_drivers(0.0);
-        sim.step_looming_controllers(0.0);
-    }
-    sim.pull_trailers();
-    sim.after_move(&before, 0.0);
-    sim.record_ghost_trail(0.0);
-    record(&sim, &mut trace);
-    sim.update_ghost_mode();
-    // Ghost restarts that keep re-arming each other would rewind time without end (esmini
-    // too): the rewound frames of a run are capped.
-    let max_replayed = steps.saturating_mul(MAX_REPLAY_FACTOR).min(MAX_REPLAYED);
-    let mut replayed = 0usize;
+/// A run one frame at a time: [`Simulation::new`] runs frame 0 (Init actions, the first
+/// storyboard evaluation), each [`Simulation::step`] the next frame, until the storyboard's
+/// stop trigger fires or the time cap is reached; [`Simulation::finish`] hands over the
+/// [`Run`]. Stepping to the end gives exactly what [`simulate_with`] gives.
+pub struct Simulation<'a> {
+    sim: Sim<'a>,
+    trace: Trace,
+    before: Vec<Before>,
+    memos: RunMemos,
+    control: RunControl,
+    t0: f64,
+    dt: f64,
+    /// Frames after frame 0 the time cap allows, and how many have run.
+    steps: usize,
+    k: usize,
+    /// Rewound frames of ghost restarts run so far, and at most.
+    replayed: usize,
+    max_replayed: usize,
+    over: bool,
+}
 
-    'run: for k in 1..=steps {
-        if k % DEADLINE_CHECK_STEPS == 0 && control.deadline.is_some_and(|d| std::time::Instant::now() >= d) {
+impl<'a> Simulation<'a> {
+    /// Builds the run state of `scenario` on `roads` and runs frame 0.
+    pub fn new(scenario: &'a Scenario, roads: Option<&'a RoadNetwork>, settings: &Settings, control: &RunControl) -> Result<Simulation<'a>, Error> {
+        settings.check()?;
+        let mut memos = RunMemos::new();
+        let entered = memos.enter();
+        let dt = settings.step;
+        let mut sim = Sim::new(scenario, roads, dt);
+        sim.random = crate::esmini_random::EsminiRandom::new(control.seed);
+        // A ghost's head start runs before time 0 (ghost.rs); otherwise t0 = 0.
+        let t0 = sim.time_origin();
+        let steps = ((settings.max_time - t0) / dt + 1e-9).floor() as usize;
+        let trace = Trace {
+            start: t0,
+            step: dt,
+            len: 0,
+            entities: sim.entities.iter().map(|e| EntityTrace { name: e.name.clone(), samples: Vec::with_capacity(steps + 1) }).collect(),
+            events: Vec::new(),
+            signal_states: Vec::new(),
+            ghosts: sim.ghost.iter().filter_map(|g| sim.entities.get(g.entity)).map(|e| e.name.clone()).collect(),
+            replays: Vec::new(),
+        };
+        let before = vec![Before::default(); sim.entities.len()];
+        // Ghost restarts that keep re-arming each other would rewind time without end (esmini
+        // too): the rewound frames of a run are capped.
+        let max_replayed = steps.saturating_mul(MAX_REPLAY_FACTOR).min(MAX_REPLAYED);
+        drop(entered);
+        let mut run = Simulation { sim, trace, before, memos, control: *control, t0, dt, steps, k: 0, replayed: 0, max_replayed, over: false };
+        run.first_frame();
+        Ok(run)
+    }
+
+    /// Frame 0: Init actions and the first storyboard evaluation, no time passes.
+    fn first_frame(&mut self) {
+        let _entered = self.memos.enter();
+        let (sim, before) = (&mut self.sim, &mut self.before);
+        let root = 0;
+        sim.time = self.t0;
+        sim.align_trailers();
+        // sim.rs put the Init actions in esmini's order (init_order.rs)
+        for slot in sim.init_actions.clone() {
+            sim.start_action(slot);
+        }
+        sim.set_state(root, Transition::Start, State::Running);
+        let stories = sim.nodes[root].children.clone();
+        for s in stories {
+            sim.start_element(s);
+        }
+        snapshot(sim, before);
+        let restarting = sim.ghost_restarting();
+        storyboard_step(sim, 0.0);
+        if !restarting {
+            sim.step_natural_drivers(0.0);
+            sim.step_looming_controllers(0.0);
+        }
+        sim.pull_trailers();
+        sim.after_move(before, 0.0);
+        sim.record_ghost_trail(0.0);
+        record(sim, &mut self.trace);
+        sim.update_ghost_mode();
+        self.over = self.steps == 0;
+    }
+
+    /// Time of the newest row of the trace, s.
+    pub fn time(&self) -> f64 {
+        self.t0 + self.k as f64 * self.dt
+    }
+
+    /// The storyboard stopped or the time cap was reached: [`Simulation::step`] does nothing more.
+    pub fn is_over(&self) -> bool {
+        self.over
+    }
+
+    /// The rows so far (storyboard events and signal states are handed over by `finish`).
+    pub fn trace(&self) -> &Trace {
+        &self.trace
+    }
+
+    /// Storyboard state transitions so far.
+    pub fn events(&self) -> &[StoryboardEvent] {
+        &self.sim.events
+    }
+
+    /// Warnings so far.
+    pub fn warnings(&self) -> &[Warning] {
+        &self.sim.warnings
+    }
+
+    /// Runs the next frame and records its row; `Ok(false)` when the run is over (the stop
+    /// trigger fired in this frame — no row is recorded then — or the time cap was reached
+    /// before it).
+    pub fn step(&mut self) -> Result<bool, Error> {
+        if self.over {
+            return Ok(false);
+        }
+        let _entered = self.memos.enter();
+        let (sim, before, trace) = (&mut self.sim, &mut self.before, &mut self.trace);
+        let (t0, dt) = (self.t0, self.dt);
+        let k = self.k + 1;
+        if k % DEADLINE_CHECK_STEPS == 0 && self.control.deadline.is_some_and(|d| std::time::Instant::now() >= d) {
             return Err(Error::Deadline(t0 + (k - 1) as f64 * dt));
         }
         let t = t0 + k as f64 * dt;
-        if !frame(&mut sim, &mut before, t - dt, dt) {
-            break;
+        if !frame(sim, before, t - dt, dt) {
+            self.over = true;
+            return Ok(false);
         }
-        record(&sim, &mut trace);
+        self.k = k;
+        record(sim, trace);
         if sim.update_ghost_mode() {
             // A ghost restart (ghost_restart.rs): the clock goes back by the head start and
             // runs up to `t` again, only the ghost moving (esmini's ScenarioPlayer::Frame runs
@@ -115,16 +189,16 @@ pub fn simulate_with(scenario: &Scenario, roads: Option<&RoadNetwork>, settings:
             // esmini's step() begins with UpdateGhostMode too: with no head start to make up
             // the rewound run ends before it begins.
             while !sim.update_ghost_mode() && sim.ghost_restarting() {
-                replayed += 1;
-                if replayed % DEADLINE_CHECK_STEPS == 0 && control.deadline.is_some_and(|d| std::time::Instant::now() >= d) {
+                self.replayed += 1;
+                if self.replayed % DEADLINE_CHECK_STEPS == 0 && self.control.deadline.is_some_and(|d| std::time::Instant::now() >= d) {
                     return Err(Error::Deadline(now));
                 }
-                if replayed > max_replayed {
+                if self.replayed > self.max_replayed {
                     sim.warn_endless_restarts(t);
                     stopped = true;
                     break;
                 }
-                if !frame(&mut sim, &mut before, now, dt) {
+                if !frame(sim, before, now, dt) {
                     stopped = true;
                     break;
                 }
@@ -141,14 +215,23 @@ pub fn simulate_with(scenario: &Scenario, roads: Option<&RoadNetwork>, settings:
                 trace.replays.push(replay);
             }
             if stopped {
-                break 'run;
+                self.over = true;
+                return Ok(false);
             }
             sim.time = t;
         }
+        self.over = self.k >= self.steps;
+        Ok(!self.over)
     }
-    trace.events = std::mem::take(&mut sim.events);
-    trace.signal_states = std::mem::take(&mut sim.signals.log);
-    Ok(Run { trace, warnings: sim.warnings, lights: sim.lights, environment: sim.environment })
+
+    /// The run so far: its trace (storyboard events and signal states included), warnings,
+    /// light states and environments.
+    pub fn finish(self) -> Run {
+        let Simulation { sim, mut trace, .. } = self;
+        trace.events = sim.events;
+        trace.signal_states = sim.signals.log;
+        Run { trace, warnings: sim.warnings, lights: sim.lights, environment: sim.environment }
+    }
 }
 
 /// One frame from time `t` to `t + dt`; false when the storyboard stopped (nothing moved).

@@ -3,7 +3,7 @@
 //! inside it) never drifts sideways (`lane_slope`), and a lane of constant positive width never
 //! narrows to nothing (`zero_width`). Most corpus lanes are such lanes, and asking once per
 //! (road, section, lane) instead of evaluating slopes and borders every step keeps the engine's
-//! per-step cost low. Memoised per thread like `pose_memo`, cleared when a run starts.
+//! per-step cost low. Memoised like `pose_memo`, one set of entries per run.
 
 use opendrive::model::poly::CubicRecord;
 use opendrive::Road;
@@ -71,9 +71,19 @@ fn compute(road: &Road, section: usize, lane_id: i32) -> LaneShape {
     nothing
 }
 
-/// Forget every entry (a run starts; networks of earlier runs may be gone).
-pub fn clear() {
-    MEMO.with(|m| m.borrow_mut().iter_mut().for_each(|e| *e = None));
+/// One run's entries (`crate::run_memos`).
+pub struct Store(Vec<Option<(Key, LaneShape)>>);
+
+impl Store {
+    /// No entries.
+    pub fn new() -> Store {
+        Store(vec![None; SLOTS])
+    }
+
+    /// Exchange these entries with the thread's.
+    pub fn swap_with_thread(&mut self) {
+        MEMO.with(|m| std::mem::swap(&mut *m.borrow_mut(), &mut self.0));
+    }
 }
 
 #[cfg(test)]
@@ -96,7 +106,7 @@ mod tests {
 
     #[test]
     fn facts_per_lane() {
-        clear();
+        Store::new().swap_with_thread();
         let r = road();
         let s = |id| lane_shape(&r, 0, id);
         assert_eq!(s(-1), LaneShape { parallel: true, never_zero_width: true });

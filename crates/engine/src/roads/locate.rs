@@ -54,9 +54,19 @@ pub fn world_to_lane_memo(net: &RoadNetwork, x: f64, y: f64, hint: Option<(usize
     r
 }
 
-/// Forget the memo (a run starts).
-pub fn clear() {
-    MEMO.with(|m| m.borrow_mut().clear());
+/// One run's entries (`crate::run_memos`).
+pub struct Store(Vec<(Key, Option<LanePosition>)>);
+
+impl Store {
+    /// No entries.
+    pub fn new() -> Store {
+        Store(Vec::new())
+    }
+
+    /// Exchange these entries with the thread's.
+    pub fn swap_with_thread(&mut self) {
+        MEMO.with(|m| std::mem::swap(&mut *m.borrow_mut(), &mut self.0));
+    }
 }
 
 #[cfg(test)]

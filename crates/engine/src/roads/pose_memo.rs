@@ -2,7 +2,7 @@
 //! than once per step (an entity placed at s one step is moved from s the next), and a pose
 //! on a paramPoly3 costs an arc-length inversion. The memo is a pure function cache keyed by
 //! the road's identity and the exact bits of s, so results are bit-identical to the direct
-//! call (the borders of an entity's lane likewise); `clear` runs when a run starts (addresses are only stable while a network is borrowed).
+//! call (the borders of an entity's lane likewise); each run keeps its own entries (`run_memos.rs`: addresses are only stable while a network is borrowed).
 
 use opendrive::{CurvePose, Road};
 use std::cell::RefCell;
@@ -42,11 +42,29 @@ pub fn reference_pose(road: &Road, s: f64) -> CurvePose {
     p
 }
 
-/// Forget every entry (a run starts; networks of earlier runs may be gone).
+/// One run's entries of both memos (`crate::run_memos`).
+pub struct Store {
+    poses: Vec<Option<(Key, CurvePose)>>,
+    lanes: Vec<LaneEntry>,
+}
+
+impl Store {
+    /// No entries.
+    pub fn new() -> Store {
+        Store { poses: vec![None; SLOTS], lanes: vec![None; SLOTS] }
+    }
+
+    /// Exchange these entries with the thread's.
+    pub fn swap_with_thread(&mut self) {
+        MEMO.with(|m| std::mem::swap(&mut *m.borrow_mut(), &mut self.poses));
+        LANES.with(|m| std::mem::swap(&mut *m.borrow_mut(), &mut self.lanes));
+    }
+}
+
+/// Forget the thread's entries (tests).
+#[cfg(test)]
 pub fn clear() {
-    MEMO.with(|m| m.borrow_mut().iter_mut().for_each(|e| *e = None));
-    LANES.with(|m| m.borrow_mut().iter_mut().for_each(|e| *e = None));
-    super::lane_shape::clear();
+    Store::new().swap_with_thread();
 }
 
 type LaneKey = (usize, i32, u64);
