@@ -39,6 +39,8 @@ impl<'a> Sim<'a> {
         if let Some(p) = on_path {
             pitch = p;
         }
-        (pitch, roll)
+        // what the outside gave (external/)
+        let (p, r) = self.external_attitude(idx);
+        (p.unwrap_or(pitch), r.unwrap_or(roll))
     }
 }

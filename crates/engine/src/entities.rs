@@ -54,6 +54,9 @@ pub struct Entity {
     pub standstill_since: Option<f64>,
     /// A controller was activated on it (recorded; behaviour is part 2).
     pub controller_active: bool,
+    /// Driven from outside now under esmini's override rule (external/): the default
+    /// controller and the storyboard's motion actions leave it to the outside.
+    pub outside: bool,
     /// The entity exists (AddEntityAction / DeleteEntityAction toggle this; `actions/add_delete_entity.rs`).
     pub active: bool,
     /// Added (put in place) during this step: the next `after_move` derives no velocity, yaw
@@ -114,6 +117,7 @@ impl Entity {
             offroad_since: None,
             standstill_since: None,
             controller_active: false,
+            outside: false,
             active: true,
             appeared: false,
             teleported: false,

@@ -26,7 +26,7 @@ impl<'a> Sim<'a> {
         let net = self.net;
         let random = &mut self.random;
         for en in &mut self.entities {
-            if !en.active || en.moved_by_action || en.speed.abs() <= SMALL {
+            if !en.active || en.outside || en.moved_by_action || en.speed.abs() <= SMALL {
                 continue;
             }
             match (net, en.lane) {

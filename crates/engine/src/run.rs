@@ -9,6 +9,7 @@
 use crate::motion::Before;
 use crate::sim::Sim;
 use crate::storyboard::{State, Transition};
+use crate::external::{External, ExternalEntity, Input, ScriptedMotion};
 use crate::run_memos::RunMemos;
 use crate::trace::{EntityTrace, Replay, RoadPos, Sample, StoryboardEvent, Trace};
 use crate::{Error, RunControl, Settings, Warning};
@@ -42,7 +43,7 @@ const MAX_REPLAYED: usize = 1_000_000;
 
 /// [`simulate`] with a random seed (esmini's `--seed`) and an optional wall-clock deadline.
 pub fn simulate_with(scenario: &Scenario, roads: Option<&RoadNetwork>, settings: &Settings, control: &RunControl) -> Result<Run, Error> {
-    let mut run = Simulation::new(scenario, roads, settings, control)?;
+    let mut run = Simulation::new(scenario, roads, settings, control, &External::none())?;
     while run.step()? {}
     Ok(run.finish())
 }
@@ -51,6 +52,10 @@ pub fn simulate_with(scenario: &Scenario, roads: Option<&RoadNetwork>, settings:
 /// storyboard evaluation), each [`Simulation::step`] the next frame, until the storyboard's
 /// stop trigger fires or the time cap is reached; [`Simulation::finish`] hands over the
 /// [`Run`]. Stepping to the end gives exactly what [`simulate_with`] gives.
+///
+/// Closed loop: the entities `external` chooses are driven by the caller, who gives each of
+/// them an [`Input`] for every frame ([`Simulation::step_with`]); the storyboard and the
+/// driver models react to where they are (`external/`).
 pub struct Simulation<'a> {
     sim: Sim<'a>,
     trace: Trace,
@@ -70,12 +75,12 @@ pub struct Simulation<'a> {
 
 impl<'a> Simulation<'a> {
     /// Builds the run state of `scenario` on `roads` and runs frame 0.
-    pub fn new(scenario: &'a Scenario, roads: Option<&'a RoadNetwork>, settings: &Settings, control: &RunControl) -> Result<Simulation<'a>, Error> {
+    pub fn new(scenario: &'a Scenario, roads: Option<&'a RoadNetwork>, settings: &Settings, control: &RunControl, external: &External) -> Result<Simulation<'a>, Error> {
         settings.check()?;
         let mut memos = RunMemos::new();
         let entered = memos.enter();
         let dt = settings.step;
-        let mut sim = Sim::new(scenario, roads, dt);
+        let mut sim = Sim::new(scenario, roads, dt, external).map_err(Error::Input)?;
         sim.random = crate::esmini_random::EsminiRandom::new(control.seed);
         // A ghost's head start runs before time 0 (ghost.rs); otherwise t0 = 0.
         let t0 = sim.time_origin();
@@ -128,7 +133,18 @@ impl<'a> Simulation<'a> {
         sim.record_ghost_trail(0.0);
         record(sim, &mut self.trace);
         sim.update_ghost_mode();
+        sim.start_named_external();
         self.over = self.steps == 0;
+    }
+
+    /// The entities driven from outside, or waiting for their controller to be activated.
+    pub fn external(&self) -> Vec<ExternalEntity> {
+        self.sim.external_entities()
+    }
+
+    /// Entity `index`'s state now (`None`: it does not exist now, or there is no such entity).
+    pub fn state(&self, index: usize) -> Option<Sample> {
+        self.sim.entities.get(index).and_then(sample_of)
     }
 
     /// Time of the newest row of the trace, s.
@@ -160,9 +176,18 @@ impl<'a> Simulation<'a> {
     /// trigger fired in this frame — no row is recorded then — or the time cap was reached
     /// before it).
     pub fn step(&mut self) -> Result<bool, Error> {
+        self.step_with(&[])
+    }
+
+    /// [`Simulation::step`] with the inputs of the entities driven from outside: one for each
+    /// that is driven now (by index in the trace's entities). `Err(Error::Input)` names what is
+    /// wrong (an input for an entity that is not external, a value that is not finite, …),
+    /// and the frame is not run.
+    pub fn step_with(&mut self, inputs: &[(usize, Input)]) -> Result<bool, Error> {
         if self.over {
             return Ok(false);
         }
+        self.sim.give_inputs(inputs).map_err(Error::Input)?;
         let _entered = self.memos.enter();
         let (sim, before, trace) = (&mut self.sim, &mut self.before, &mut self.trace);
         let (t0, dt) = (self.t0, self.dt);
@@ -262,14 +287,17 @@ fn frame(sim: &mut Sim, before: &mut [Before], t: f64, dt: f64) -> bool {
     sim.hold_trailers();
     sim.default_controller(dt);
     if !restarting {
+        sim.apply_external(dt, ScriptedMotion::Overridden);
         sim.step_followers(dt);
         sim.step_acc_controllers(dt);
         sim.step_looming_controllers(dt);
         sim.step_route_followers(dt);
         sim.step_natural_drivers(dt);
+        sim.apply_external(dt, ScriptedMotion::Replaced);
     }
     sim.pull_trailers();
     sim.after_move(before, dt);
+    sim.external_rates();
     sim.record_ghost_trail(dt);
     true
 }

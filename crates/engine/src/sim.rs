@@ -48,10 +48,14 @@ pub struct Sim<'a> {
     pub signals: crate::signals::Signals<'a>,
     /// esmini's global random generator (esmini_random.rs), seeded by `simulate_seeded`.
     pub random: crate::esmini_random::EsminiRandom,
+    /// Which entities the caller drives (external/), and each one's state.
+    pub external_choice: crate::external::External,
+    pub external: Vec<Option<crate::external::driven::Driven>>,
 }
 
 impl<'a> Sim<'a> {
-    pub fn new(scenario: &'a Scenario, net: Option<&'a RoadNetwork>, dt: f64) -> Sim<'a> {
+    /// The run state; `Err` when `external` names an entity the scenario does not have.
+    pub fn new(scenario: &'a Scenario, net: Option<&'a RoadNetwork>, dt: f64, external: &crate::external::External) -> Result<Sim<'a>, String> {
         let mut sim = Sim {
             scenario,
             net,
@@ -76,6 +80,8 @@ impl<'a> Sim<'a> {
             environment: Vec::new(),
             signals: Default::default(),
             random: Default::default(),
+            external_choice: external.clone(),
+            external: vec![None; scenario.entities.len()],
         };
         sim.signals = crate::signals::Signals::new(scenario, net, &mut sim.warnings);
         sim.trailers = crate::actions::trailer::Trailers::build(scenario, &mut sim.entities);
@@ -85,9 +91,10 @@ impl<'a> Sim<'a> {
                 sim.assign_controller(i, c);
             }
         }
+        sim.name_external(external)?;
         sim.build();
         sim.setup_ghost();
-        sim
+        Ok(sim)
     }
 
     pub fn entity_index(&self, name: &str) -> Option<usize> {

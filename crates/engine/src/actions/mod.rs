@@ -18,6 +18,7 @@ pub mod teleport;
 pub mod traffic_signal;
 pub mod trailer;
 
+use crate::external::overridden::{overridden, Overridden};
 use crate::sim::Sim;
 use crate::storyboard::{State, Transition};
 use crate::Warning;
@@ -39,6 +40,9 @@ pub enum ActionRt {
     LatDistance(Box<lat_distance::LatDistanceRt>),
     /// Nothing left to do.
     Done,
+    /// Started on an entity driven from outside: runs without effect and never ends
+    /// (external/overridden.rs).
+    Overridden,
     /// Ended in its start, as esmini's actions that call `OSCAction::End` from `Start`: the
     /// action is complete before the triggers later in the storyboard are evaluated.
     EndedAtStart,
@@ -122,6 +126,19 @@ impl<'a> Sim<'a> {
         }
     }
 
+    /// The fate of private action `p` of slot `slot` on entity `e` (external/overridden.rs;
+    /// `Runs` unless `e` is driven from outside), warned once per slot.
+    fn overridden_on(&mut self, slot: usize, e: usize, p: &PrivateAction) -> Overridden {
+        if !self.outside(e) {
+            return Overridden::Runs;
+        }
+        let fate = overridden(p);
+        if let Some(note) = crate::external::overridden::note(fate, p.element_name(), self.entities.get(e).map_or("", |en| en.name.as_str())) {
+            self.warn_action(slot, note);
+        }
+        fate
+    }
+
     /// Start action slot `slot`: running state, one instance per actor.
     pub fn start_action(&mut self, slot: usize) {
         if self.entity_action_refused(slot) {
@@ -164,6 +181,11 @@ impl<'a> Sim<'a> {
     }
 
     fn start_private(&mut self, slot: usize, e: usize, p: &'a PrivateAction) -> ActionRt {
+        match self.overridden_on(slot, e, p) {
+            Overridden::Idles => return ActionRt::Overridden,
+            Overridden::Ignored => return ActionRt::Done,
+            Overridden::Ends | Overridden::Runs => {}
+        }
         match p {
             PrivateAction::Speed { dynamics, target } => self.start_speed(slot, e, dynamics, target),
             PrivateAction::LongitudinalDistance { entity, distance, time_gap, freespace, continuous, coordinate_system, displacement, constraints } => {
@@ -218,15 +240,20 @@ impl<'a> Sim<'a> {
             }
             PrivateAction::ActivateController { lateral, longitudinal, .. } => {
                 let on = lateral.unwrap_or(true) || longitudinal.unwrap_or(true);
+                self.activate_outside_driver(slot, e, lateral.unwrap_or(true), longitudinal.unwrap_or(true));
                 if let Some(en) = self.entities.get_mut(e) {
                     en.controller_active = on;
                 }
                 self.activate_controller(e, longitudinal.unwrap_or(true));
                 ActionRt::Done
             }
-            PrivateAction::AssignController { controller, activate_longitudinal, .. } => {
+            PrivateAction::AssignController { controller, activate_longitudinal, activate_lateral, .. } => {
                 if let Some(c) = controller {
                     self.assign_controller(e, c);
+                    let (lat, long) = (*activate_lateral == Some(true), *activate_longitudinal == Some(true));
+                    if lat || long {
+                        self.activate_outside_driver(slot, e, lat, long);
+                    }
                     if *activate_longitudinal == Some(true) {
                         self.activate_controller(e, true);
                     }
@@ -268,6 +295,13 @@ impl<'a> Sim<'a> {
                 all_done = false;
                 continue;
             }
+            // An entity that became external while its action ran (external/overridden.rs).
+            if let ActionKind::Private(p) = &self.actions[slot].model.kind {
+                if self.overridden_on(slot, e, p) == Overridden::Idles {
+                    all_done = false;
+                    continue;
+                }
+            }
             let inst = &mut self.actions[slot].instances[k];
             // Take the state out so the entity can be borrowed mutably alongside it.
             let mut rt = std::mem::replace(&mut inst.rt, ActionRt::Done);
@@ -282,6 +316,7 @@ impl<'a> Sim<'a> {
                 ActionRt::Synchronize(y) => self.step_synchronize(e, y),
                 ActionRt::LongDistance(d) => self.step_long_distance(e, d),
                 ActionRt::LatDistance(d) => self.step_lat_distance(e, d),
+                ActionRt::Overridden => false,
                 ActionRt::Done | ActionRt::EndedAtStart => true,
             };
             self.time = saved;

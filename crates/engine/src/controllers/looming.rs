@@ -12,7 +12,9 @@
 //!   at zero throttle, a handbrake when braking through zero; the wheel turned by the steering
 //!   and the kinematic bicycle of `kinematic_vehicle.rs`.
 
+use super::analog_vehicle::AnalogVehicle;
 use crate::roads::move_along_s;
+use crate::roads::road_follow::at_dead_end;
 use crate::sim::Sim;
 use openscenario::Controller;
 
@@ -22,17 +24,13 @@ const MIN_DIST: f64 = 3.0;
 const LOOKAHEAD: f64 = 130.0;
 /// Largest lateral offset of a lead vehicle, m.
 const MIN_LATERAL_DIST: f64 = 5.0;
-/// vehicle.cpp: ENGINE_BRAKE_FACTOR_DEFAULT, MAX_SPEED_DEFAULT.
-const ENGINE_BRAKE_FACTOR: f64 = 0.001;
+/// vehicle.cpp: MAX_SPEED_DEFAULT.
 const VEHICLE_MAX_SPEED: f64 = 70.0;
 /// CommonMini's SMALL_NUMBER.
 const SMALL_NUMBER: f64 = 1e-6;
 const LARGE: f64 = 1e10;
-/// ControllerLooming's steering rate; vehicle.cpp's STEERING_RETURN_FACTOR_DEFAULT and
-/// STEERING_MAX_ANGLE.
+/// ControllerLooming's steering rate.
 const STEERING_RATE: f64 = 4.0;
-const STEERING_RETURN_FACTOR: f64 = 4.0;
-const STEERING_MAX_ANGLE: f64 = std::f64::consts::PI / 3.0;
 /// ControllerLooming::Step: near and far point distances, m; steering gains.
 const NEAR_POINT: f64 = 10.0;
 const FAR_POINT: f64 = 80.0;
@@ -50,15 +48,10 @@ pub struct LoomingRt {
     set_speed: f64,
     set_speed_given: bool,
     pub(super) override_mode: bool,
-    /// The speed of esmini's vehicle model (vehicle_.speed_), kept by the controller.
-    speed: f64,
-    handbrake: bool,
-    max_acc: f64,
-    max_dec: f64,
     /// An action moved the entity this step (seen before the default controller ran).
     pub(super) moved_by_action: bool,
-    /// esmini's vehicle model the controller drives (its pose; `speed` above is its speed).
-    vehicle: Option<super::kinematic_vehicle::KinematicVehicle>,
+    /// esmini's vehicle model the controller drives (set up when it is activated).
+    vehicle: Option<AnalogVehicle>,
     prev_near: f64,
     prev_far: f64,
     steering: f64,
@@ -78,10 +71,6 @@ impl LoomingRt {
             set_speed: num("setSpeed").unwrap_or(0.0),
             set_speed_given: num("setSpeed").is_some(),
             override_mode: c.properties.get("mode") != Some("additive"),
-            speed: 0.0,
-            handbrake: false,
-            max_acc: 0.0,
-            max_dec: 0.0,
             moved_by_action: false,
             vehicle: None,
             prev_near: 0.0,
@@ -104,51 +93,13 @@ impl LoomingRt {
         if !self.override_mode || !self.set_speed_given {
             self.set_speed = speed;
         }
-        self.speed = speed;
-        self.handbrake = false;
-        self.max_acc = max_acc;
-        self.max_dec = max_dec;
-        let mut v = super::kinematic_vehicle::KinematicVehicle::new(en.x, en.y, en.h, speed, en.bbox[3], VEHICLE_MAX_SPEED);
-        v.wheel_angle = 0.0;
-        self.vehicle = Some(v);
+        let car = super::kinematic_vehicle::KinematicVehicle::new(en.x, en.y, en.h, speed, en.bbox[3], VEHICLE_MAX_SPEED);
+        self.vehicle = Some(AnalogVehicle::new(car, max_acc, max_dec, STEERING_RATE));
     }
 
-    /// vehicle::Vehicle::DrivingControlAnalog: throttle, then steering (the wheel turns at
-    /// 4 rad/s per unit of steering, scaled down with speed, returns at 4/s, at most 60° scaled),
-    /// then vehicle::Vehicle::Update.
-    fn drive(&mut self, dt: f64, throttle: f64, steering: f64) {
-        self.drive_speed(dt, throttle);
-        let speed = self.speed;
-        if let Some(v) = self.vehicle.as_mut() {
-            v.speed = speed;
-            let scale = 1.0 / (1.0 + 0.005 * speed * speed);
-            let mut w = v.wheel_angle + scale * STEERING_RATE * steering * dt;
-            w *= 1.0 - STEERING_RETURN_FACTOR * dt;
-            let limit = scale * STEERING_MAX_ANGLE;
-            v.wheel_angle = w.clamp(-limit, limit);
-            v.roll(dt);
-        }
-    }
-
-    /// DrivingControlAnalog's throttle part.
-    fn drive_speed(&mut self, dt: f64, throttle: f64) {
-        let old = self.speed;
-        if self.handbrake {
-            if throttle.abs() < SMALL_NUMBER || throttle > SMALL_NUMBER {
-                self.handbrake = false;
-            }
-            return;
-        }
-        self.speed += if throttle < 0.0 { self.max_dec } else { self.max_acc } * throttle * dt;
-        if old > 0.0 && self.speed < 0.0 {
-            self.speed = 0.0;
-            self.handbrake = true;
-        } else {
-            if throttle.abs() < SMALL_NUMBER {
-                self.speed *= 1.0 - ENGINE_BRAKE_FACTOR;
-            }
-            self.speed = self.speed.clamp(-VEHICLE_MAX_SPEED, VEHICLE_MAX_SPEED);
-        }
+    /// The speed of its vehicle model (0 before it is activated).
+    fn speed(&self) -> f64 {
+        self.vehicle.map_or(0.0, |v| v.car.speed)
     }
 }
 
@@ -281,17 +232,19 @@ impl<'a> Sim<'a> {
         }
         l.prev_near = near;
         l.prev_far = far_angle;
-        l.drive(dt, acc.clamp(-1.0, 1.0), l.steering);
+        if let Some(v) = l.vehicle.as_mut() {
+            v.drive(dt, acc.clamp(-1.0, 1.0), l.steering);
+        }
         let net = self.net;
         let Some(en) = self.entities.get_mut(e) else { return };
         if l.override_mode && !l.moved_by_action {
-            if let Some(v) = l.vehicle {
+            if let Some(v) = l.vehicle.map(|v| v.car) {
                 // Position::SetInertiaPos with the lane locked
                 let before = en.lane;
                 // Locate it first on the road its lane leads to (esmini keeps the connecting
                 // road it is on where junction roads overlap).
                 if let (Some(net), Some(mut lp)) = (net, en.lane) {
-                    move_along_s(net, &mut lp, l.speed * dt);
+                    move_along_s(net, &mut lp, l.speed() * dt);
                     en.lane = Some(lp);
                 }
                 en.set_world(net, v.x, v.y, None, v.h);
@@ -299,15 +252,12 @@ impl<'a> Sim<'a> {
                 // the controllers: what this move finds is seen in the next step.
                 en.at_road_end = l.end_of_road;
                 l.end_of_road = match (net, before, en.lane) {
-                    (Some(net), Some(_), Some(lp)) => net.roads.get(lp.road).is_some_and(|r| {
-                        let end = if lp.dir > 0.0 { lp.s >= r.length - SMALL_NUMBER } else { lp.s <= SMALL_NUMBER };
-                        end && if lp.dir > 0.0 { r.successor.is_none() } else { r.predecessor.is_none() }
-                    }),
+                    (Some(net), Some(_), Some(lp)) => at_dead_end(net, &lp),
                     _ => false,
                 };
             }
             en.moved_by_action = true;
         }
-        en.speed = l.speed;
+        en.speed = l.speed();
     }
 }

@@ -9,6 +9,7 @@
 //! HID, UDP driver) say so.
 
 pub mod acc;
+pub mod analog_vehicle;
 pub mod alks;
 pub mod alks_r157;
 pub mod follow_ghost;
@@ -68,6 +69,11 @@ impl<'a> Sim<'a> {
 
     /// Assign controller `c` to entity `e`; warns when its type is not modelled.
     pub fn assign_controller(&mut self, e: usize, c: &Controller) {
+        if self.named_external(e) {
+            let name = self.entities.get(e).map_or("", |en| en.name.as_str());
+            self.warnings.push(Warning::at(&c.origin, format!("controller `{}` of `{name}` is not stepped: the entity is driven from outside", c.name)));
+            return;
+        }
         let kind = controller_type(c);
         let rt = match kind {
             "ACCController" => Some(ControllerRt::Acc(acc::AccRt::new(c))),
@@ -91,7 +97,9 @@ impl<'a> Sim<'a> {
             }
             _ => None,
         };
-        if rt.is_none() {
+        if rt.is_none() && self.waits_for_outside_driver(kind) {
+            self.await_outside_driver(e, c);
+        } else if rt.is_none() {
             let why = if OUTSIDE_INPUT.contains(&kind) {
                 "needs a driver or a process outside osc2cr"
             } else {
@@ -137,6 +145,9 @@ impl<'a> Sim<'a> {
     /// (esmini's `Object::IsControllerModeOnDomains(MODE_OVERRIDE, DOMAIN_MASK_LONG)`): an
     /// active ACC/ALKS in override mode, a FollowRoute controller during its lane change.
     pub(crate) fn longitudinal_overridden(&self, e: usize) -> bool {
+        if self.outside(e) {
+            return true;
+        }
         match self.controllers.get(e) {
             Some(Some(ControllerRt::Acc(a))) => a.overrides_longitudinal(),
             Some(Some(ControllerRt::FollowRoute(f))) => f.overrides_longitudinal(),

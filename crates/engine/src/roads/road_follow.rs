@@ -24,6 +24,16 @@ pub enum MoveStatus {
     EndOfRoad,
 }
 
+/// Whether `lp` is at the end of its road in the direction it faces, with no road beyond
+/// (esmini's POS_STATUS_END_OF_ROAD after Position::SetInertiaPos).
+pub fn at_dead_end(net: &RoadNetwork, lp: &LanePos) -> bool {
+    const SMALL_NUMBER: f64 = 1e-6;
+    net.roads.get(lp.road).is_some_and(|r| {
+        let end = if lp.dir > 0.0 { lp.s >= r.length - SMALL_NUMBER } else { lp.s <= SMALL_NUMBER };
+        end && if lp.dir > 0.0 { r.successor.is_none() } else { r.predecessor.is_none() }
+    })
+}
+
 /// Most road changes one move may cross (guards against zero-length road loops).
 const MAX_HOPS: usize = 16;
 

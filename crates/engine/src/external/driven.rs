@@ -1,0 +1,54 @@
+//! The run state of one entity driven from outside: why it is external, whether it is now,
+//! the input of the step in progress, the vehicle model its driver input moves, and what
+//! the last state given said (for dead reckoning and the rates it fixes).
+
+use super::choice::Source;
+use crate::controllers::analog_vehicle::AnalogVehicle;
+use super::input::Input;
+
+#[derive(Debug, Clone)]
+pub struct Driven {
+    pub source: Source,
+    /// Driven from outside now.
+    pub active: bool,
+    /// Input for the step in progress (`None`: none given).
+    pub input: Option<Input>,
+    /// esmini's vehicle model its driver input drives (`driver_vehicle`).
+    pub vehicle: AnalogVehicle,
+    /// Speed and heading of the last state given, and whether it gave a height.
+    pub last_state: Option<LastState>,
+    /// Yaw rate the input of this step fixes (else derived).
+    pub yaw_rate: Option<f64>,
+    /// Pitch and roll the last state fixed (else the road's).
+    pub pitch: Option<f64>,
+    pub roll: Option<f64>,
+    /// Its last placement ended at a dead end (the next step's end-of-road status).
+    pub end_of_road: bool,
+    /// The run said so once.
+    pub told_end_of_road: bool,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LastState {
+    pub speed: f64,
+    pub h: f64,
+    /// The height was given (kept while dead reckoning) rather than taken from the road.
+    pub z_given: bool,
+}
+
+impl Driven {
+    pub fn new(source: Source, active: bool) -> Driven {
+        Driven {
+            source,
+            active,
+            input: None,
+            vehicle: super::driver_vehicle::udp_driver_vehicle(0.0, 0.0, 0.0, 0.0, 5.0),
+            last_state: None,
+            yaw_rate: None,
+            pitch: None,
+            roll: None,
+            end_of_road: false,
+            told_end_of_road: false,
+        }
+    }
+}
