@@ -15,6 +15,7 @@ mod assemble;
 mod audit;
 mod batch;
 mod bbox;
+mod closed_loop;
 mod country;
 mod discover;
 mod ego;
@@ -41,6 +42,7 @@ pub use assemble::{assemble, Assembled};
 pub use audit::audit as audit_trace;
 pub use batch::{run_batch, BatchOptions, Progress, Silent};
 pub use bbox::box_center;
+pub use closed_loop::ClosedLoop;
 pub use discover::{classify, discover, FileKind, Found};
 pub use ego::{choose_ego, EgoChoice};
 pub use goal::{planning_problem, GoalOptions};
@@ -49,7 +51,7 @@ pub use obstacle_type::{cr_type, CrType};
 pub use obstacles::{obstacles, Obstacles};
 pub use options::ConvertOptions;
 pub use picture::{picture_path, write_picture};
-pub use pipeline::{convert_scenario, convert_scenario_keeping, Conversion, Facts, Model, Request};
+pub use pipeline::{convert_scenario, convert_scenario_keeping, Conversion, Facts, Model, Prepared, Request};
 pub use report::{
     BatchReport, Failure, FolderSummary, ScenarioReport, Skipped, Stage, StageWarning, Status,
     Timings, Variation,

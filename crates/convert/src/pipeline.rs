@@ -160,6 +160,41 @@ fn run(
     timings: &mut Timings,
     facts: &mut Facts,
 ) -> Result<(Vec<u8>, Model), Failure> {
+    let mut prepared = prepare(request, options, warnings, timings)?;
+
+    // 3. the run
+    let t = Instant::now();
+    let run = run_engine(&prepared.scenario, prepared.road.as_ref(), options).map_err(|e| match e {
+        // the batch's --timeout reached the engine first: the same failure as the batch's own
+        engine::Error::Deadline(t) => fail(Stage::Timeout, format!("not converted within the time limit (--timeout); the engine stopped at {t:.2} s")),
+        other => fail(Stage::Engine, other.to_string()),
+    })?;
+    warn(warnings, Stage::Engine, &run.warnings);
+    let lanelets = prepared.lanelets.take();
+    finish(&prepared, lanelets, request, options, &run.trace, t, warnings, timings, facts)
+}
+
+/// A scenario loaded and checked, with its road network and lanelets: what a run needs and
+/// what its conversion adds the run to. `prepare` makes it; the batch pipeline runs the engine
+/// on it, a closed-loop session steps it (`closed_loop.rs`); `finish` turns a run into
+/// CommonRoad.
+#[derive(Debug)]
+pub struct Prepared {
+    pub scenario: Scenario,
+    pub road: Option<opendrive::RoadNetwork>,
+    pub lanelets: Option<LaneletNetwork>,
+    map_tags: std::collections::BTreeSet<commonroad::Tag>,
+    light_of_signal: std::collections::BTreeMap<String, commonroad::TrafficLightId>,
+}
+
+/// Stages 1 and 2: the scenario (schema pass, load, references) and its road network and
+/// lanelets, each with its warnings and time.
+pub(crate) fn prepare(
+    request: &Request<'_>,
+    options: &ConvertOptions,
+    warnings: &mut Vec<StageWarning>,
+    timings: &mut Timings,
+) -> Result<Prepared, Failure> {
     options.check().map_err(|m| fail(Stage::Load, m))?;
 
     // 1. the scenario
@@ -216,7 +251,7 @@ fn run(
     timings.road_network_ms = ms(t);
     strict(&engine::road_references(&scenario, road.as_ref()), Problems::References, Stage::RoadNetwork, options, warnings)?;
     let t = Instant::now();
-    let (mut lanelets, map_tags, light_of_signal): (Option<LaneletNetwork>, _, _) = match &road {
+    let (lanelets, map_tags, light_of_signal) = match &road {
         Some(r) => {
             let m = run_map(r, options);
             warn(warnings, Stage::Map, &m.warnings);
@@ -225,31 +260,41 @@ fn run(
         None => (None, Default::default(), Default::default()),
     };
     timings.map_ms = ms(t);
+    Ok(Prepared { scenario, road, lanelets, map_tags, light_of_signal })
+}
 
-    // 3. the run
-    let t = Instant::now();
-    let run = run_engine(&scenario, road.as_ref(), options).map_err(|e| match e {
-        // the batch's --timeout reached the engine first: the same failure as the batch's own
-        engine::Error::Deadline(t) => fail(Stage::Timeout, format!("not converted within the time limit (--timeout); the engine stopped at {t:.2} s")),
-        other => fail(Stage::Engine, other.to_string()),
-    })?;
-    warn(warnings, Stage::Engine, &run.warnings);
-    let audit = crate::audit::audit(&run.trace, &scenario, lanelets.as_ref())
+/// Stages 3 (the audit of the run's trace; `engine_start`: when the run began, for its time)
+/// to 5: traffic-light cycles, obstacles and planning problem, checks, bytes. `lanelets` are
+/// `prepared`'s, taken (or copied) because the light cycles are written into them.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn finish(
+    prepared: &Prepared,
+    mut lanelets: Option<LaneletNetwork>,
+    request: &Request<'_>,
+    options: &ConvertOptions,
+    trace: &engine::Trace,
+    engine_start: Instant,
+    warnings: &mut Vec<StageWarning>,
+    timings: &mut Timings,
+    facts: &mut Facts,
+) -> Result<(Vec<u8>, Model), Failure> {
+    let scenario = &prepared.scenario;
+    let audit = crate::audit::audit(trace, scenario, lanelets.as_ref())
         .map_err(|m| fail(Stage::Engine, format!("{}: {m}", scenario.path.display())))?;
     warn(warnings, Stage::Engine, &audit);
-    timings.engine_ms = ms(t);
-    facts.duration_s = Some(run.trace.end_time().max(0.0));
+    timings.engine_ms = ms(engine_start);
+    facts.duration_s = Some(trace.end_time().max(0.0));
     if let Some(network) = lanelets.as_mut() {
-        let states = &run.trace.signal_states;
-        let w = apply_signal_states(network, &light_of_signal, states, run.trace.end_time(), options.dt);
+        let states = &trace.signal_states;
+        let w = apply_signal_states(network, &prepared.light_of_signal, states, trace.end_time(), options.dt);
         warn(warnings, Stage::Build, &w);
     }
 
     // 4. obstacles, planning problem, checks
     let t = Instant::now();
-    let header = header(request, &scenario, options).map_err(|e| fail(Stage::Build, e))?;
+    let header = header(request, scenario, options).map_err(|e| fail(Stage::Build, e))?;
     facts.benchmark_id = Some(header.benchmark_id.to_string());
-    let built = assemble(header, lanelets, &map_tags, &run.trace, &scenario.entities, options)
+    let built = assemble(header, lanelets, &prepared.map_tags, trace, &scenario.entities, options)
         .map_err(|e| fail(Stage::Build, format!("{}: {e}", scenario.path.display())))?;
     warn(warnings, Stage::Build, &built.warnings);
     facts.ego = Some(built.ego.clone());
@@ -267,7 +312,7 @@ fn run(
         scenario: built.scenario,
         problems: built.problems,
         names: built.names,
-        events: crate::story_marks::event_marks(&scenario, &run.trace.events),
+        events: crate::story_marks::event_marks(scenario, &trace.events),
     };
     Ok((bytes, model))
 }

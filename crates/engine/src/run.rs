@@ -249,6 +249,15 @@ impl<'a> Simulation<'a> {
         Ok(!self.over)
     }
 
+    /// A copy of the run so far, as [`Simulation::finish`] would hand it over now.
+    pub fn run_so_far(&self) -> Run {
+        let sim = &self.sim;
+        let mut trace = self.trace.clone();
+        trace.events = sim.events.clone();
+        trace.signal_states = sim.signals.log.clone();
+        Run { trace, warnings: sim.warnings.clone(), lights: sim.lights.clone(), environment: sim.environment.clone() }
+    }
+
     /// The run so far: its trace (storyboard events and signal states included), warnings,
     /// light states and environments.
     pub fn finish(self) -> Run {

@@ -8,7 +8,7 @@
 //! open-loop run, and the outside's state replaces the result at the end of the step's moves.
 
 use super::choice::{Chosen, External, ExternalEntity, ScriptedMotion, Source, OUTSIDE_DRIVERS};
-use super::driven::{Driven, LastState};
+use super::driven::{Driven, LastState, Pose};
 use super::input::Input;
 use crate::dynamics::SMALL;
 use crate::entities::Entity;
@@ -110,8 +110,11 @@ impl<'a> Sim<'a> {
     /// entity that is not external (an entity waiting for its controller may have one: it is
     /// used if the controller is activated in this frame).
     pub(crate) fn give_inputs(&mut self, inputs: &[(usize, Input)]) -> Result<(), String> {
-        for d in self.external.iter_mut().flatten() {
-            d.input = None;
+        for (en, d) in self.entities.iter().zip(self.external.iter_mut()) {
+            if let Some(d) = d {
+                d.input = None;
+                d.start = Some(Pose::of(en));
+            }
         }
         for (e, input) in inputs {
             let name = self.entities.get(*e).map(|en| en.name.clone()).ok_or_else(|| format!("no entity with index {e}"))?;
@@ -170,12 +173,26 @@ impl<'a> Sim<'a> {
                 }
                 // ControllerUDPDriver::Step: on at the last message's speed and heading, the
                 // heading that of the vehicle model
-                Input::DeadReckon => d.last_state.filter(|_| dt > SMALL).map(|l| {
-                    let (x, y) = (en.x + l.speed * dt * l.h.cos(), en.y + l.speed * dt * l.h.sin());
-                    let z = if l.z_given { Some(en.z) } else { road_z(None, en.z) };
-                    (x, y, z, d.vehicle.car.h, en.speed)
-                }),
-                Input::Hold => None,
+                Input::DeadReckon => match (d.last_state.filter(|_| dt > SMALL), d.start) {
+                    (Some(l), Some(from)) => {
+                        from.put(en);
+                        let (x, y) = (en.x + l.speed * dt * l.h.cos(), en.y + l.speed * dt * l.h.sin());
+                        let z = if l.z_given { Some(en.z) } else { road_z(None, en.z) };
+                        Some((x, y, z, d.vehicle.car.h, en.speed))
+                    }
+                    (None, Some(from)) => {
+                        from.put(en);
+                        None
+                    }
+                    _ => None,
+                },
+                Input::Hold => {
+                    // where the step began (the scripted motion may have moved it meanwhile)
+                    if let Some(from) = d.start {
+                        from.put(en);
+                    }
+                    None
+                }
             };
             if let Some((x, y, z, h, speed)) = target {
                 place(en, net, (x, y, z, h), &mut d.end_of_road, replaced);

@@ -26,6 +26,32 @@ pub struct Driven {
     pub end_of_road: bool,
     /// The run said so once.
     pub told_end_of_road: bool,
+    /// Where it was when the step in progress began (hold and dead reckoning start there,
+    /// whatever the scripted motion did meanwhile).
+    pub start: Option<Pose>,
+}
+
+/// An entity's pose and speed, with where that is on the road.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pose {
+    pub x: f64,
+    pub y: f64,
+    pub z: f64,
+    pub h: f64,
+    pub speed: f64,
+    pub lane: Option<crate::roads::lane_position::LanePos>,
+    pub on_road: bool,
+    pub yaw_offset: f64,
+}
+
+impl Pose {
+    pub fn of(en: &crate::entities::Entity) -> Pose {
+        Pose { x: en.x, y: en.y, z: en.z, h: en.h, speed: en.speed, lane: en.lane, on_road: en.on_road, yaw_offset: en.yaw_offset }
+    }
+
+    pub fn put(&self, en: &mut crate::entities::Entity) {
+        (en.x, en.y, en.z, en.h, en.speed, en.lane, en.on_road, en.yaw_offset) = (self.x, self.y, self.z, self.h, self.speed, self.lane, self.on_road, self.yaw_offset);
+    }
 }
 
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -49,6 +75,7 @@ impl Driven {
             roll: None,
             end_of_road: false,
             told_end_of_road: false,
+            start: None,
         }
     }
 }

@@ -1,0 +1,122 @@
+//! A closed-loop conversion: the scenario loaded and its map converted as `convert` does, then
+//! run one step at a time while the caller drives the external entities (`engine::External`),
+//! and at any point the run so far turned into CommonRoad with the same stages, names and
+//! checks as a conversion of the file (`finish`), the ego's trajectory being the one driven.
+//! The session owns the scenario and road network its run borrows (self_cell), so a Python
+//! object or a server can hold it.
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use engine::{External, ExternalEntity, Input, RunControl, Sample, Settings, Simulation, StoryboardEvent};
+
+use crate::options::ConvertOptions;
+use crate::pipeline::{finish, prepare, Conversion, Facts, Model, Prepared, Request};
+use crate::report::{Failure, Stage, StageWarning, Timings};
+use crate::single::{batch_name, batch_source};
+
+self_cell::self_cell!(
+    struct Session {
+        owner: Prepared,
+        #[not_covariant]
+        dependent: Simulation,
+    }
+);
+
+/// A scenario running in closed loop.
+pub struct ClosedLoop {
+    session: Session,
+    path: PathBuf,
+    options: ConvertOptions,
+    /// What loading and map conversion said, and how long they took.
+    warnings: Vec<StageWarning>,
+    timings: Timings,
+    started: Instant,
+}
+
+fn engine_failure(e: engine::Error) -> Failure {
+    Failure { stage: Stage::Engine, message: e.to_string() }
+}
+
+impl ClosedLoop {
+    /// Loads the scenario file `path` (strictly, as `convert` does), converts its map and runs
+    /// frame 0 with `external` driven from outside.
+    pub fn start(path: &Path, options: &ConvertOptions, external: &External) -> Result<ClosedLoop, Failure> {
+        let mut warnings = Vec::new();
+        let mut timings = Timings::default();
+        let name = batch_name(path);
+        let request = Request { path, name: &name, config: 1, parameters: &[], source: batch_source(path, None) };
+        let prepared = prepare(&request, options, &mut warnings, &mut timings)?;
+        let started = Instant::now();
+        let settings = Settings { step: options.step, max_time: options.max_time };
+        let control = RunControl { seed: options.engine_seed, deadline: None };
+        let session = Session::try_new(prepared, |p| Simulation::new(&p.scenario, p.road.as_ref(), &settings, &control, external)).map_err(engine_failure)?;
+        Ok(ClosedLoop { session, path: path.to_path_buf(), options: options.clone(), warnings, timings, started })
+    }
+
+    /// Runs the next step with the external entities' inputs; `Ok(false)` once the run is over.
+    /// A wrong input is an `Engine` failure naming it, and the step is not run.
+    pub fn step_with(&mut self, inputs: &[(usize, Input)]) -> Result<bool, Failure> {
+        self.session.with_dependent_mut(|_, sim| sim.step_with(inputs)).map_err(engine_failure)
+    }
+
+    /// Simulated time of the newest state, s.
+    pub fn time(&self) -> f64 {
+        self.session.with_dependent(|_, sim| sim.time())
+    }
+
+    /// The storyboard stopped or the time cap was reached.
+    pub fn is_over(&self) -> bool {
+        self.session.with_dependent(|_, sim| sim.is_over())
+    }
+
+    /// The entities driven from outside, or waiting for their controller.
+    pub fn external(&self) -> Vec<ExternalEntity> {
+        self.session.with_dependent(|_, sim| sim.external())
+    }
+
+    /// The entities' names, in the order of their indices.
+    pub fn entity_names(&self) -> Vec<String> {
+        self.session.with_dependent(|_, sim| sim.trace().entities.iter().map(|e| e.name.clone()).collect())
+    }
+
+    /// Entity `index`'s state now (`None` while it does not exist).
+    pub fn state(&self, index: usize) -> Option<Sample> {
+        self.session.with_dependent(|_, sim| sim.state(index))
+    }
+
+    /// Storyboard state transitions so far.
+    pub fn events(&self) -> Vec<StoryboardEvent> {
+        self.session.with_dependent(|_, sim| sim.events().to_vec())
+    }
+
+    /// The scenario as loaded.
+    pub fn scenario(&self) -> &openscenario::Scenario {
+        &self.session.borrow_owner().scenario
+    }
+
+    /// The lanelet network of the scenario's map (`None` without a road network).
+    pub fn lanelets(&self) -> Option<&commonroad::LaneletNetwork> {
+        self.session.borrow_owner().lanelets.as_ref()
+    }
+
+    /// The run so far as a conversion of the file: the bytes `osc2cr convert` would write had
+    /// the run gone this way, and the model they serialise.
+    pub fn finish(&self) -> (Conversion, Option<Model>) {
+        let mut warnings = self.warnings.clone();
+        let mut timings = self.timings.clone();
+        let mut facts = Facts::default();
+        let run = self.session.with_dependent(|_, sim| sim.run_so_far());
+        warnings.extend(run.warnings.iter().map(|w| StageWarning { stage: Stage::Engine, message: w.to_string() }));
+        let prepared = self.session.borrow_owner();
+        let name = batch_name(&self.path);
+        let request = Request { path: &self.path, name: &name, config: 1, parameters: &[], source: batch_source(&self.path, None) };
+        let built = finish(prepared, prepared.lanelets.clone(), &request, &self.options, &run.trace, self.started, &mut warnings, &mut timings, &mut facts);
+        let mut model = None;
+        let result = built.map(|(bytes, m)| {
+            model = Some(m);
+            bytes
+        });
+        (Conversion { result, warnings, timings, facts }, model)
+    }
+}

@@ -1,0 +1,191 @@
+//! What a closed-loop step does with each kind of input, on the straight fixture road: a
+//! state puts the entity there, driver input drives esmini's vehicle model, dead reckoning
+//! goes on at the last state's speed, hold keeps it; wrong inputs are refused with a message
+//! naming them; the storyboard's motion actions on an external entity yield as esmini's do;
+//! an outside driver's controller makes its entity external from its activation on; the same
+//! inputs give the same run.
+
+mod common;
+use common::*;
+use engine::{DriverInput, External, ExternalState, Input, RunControl, ScriptedMotion, Settings, Simulation};
+
+fn load(text: &str) -> (openscenario::Scenario, opendrive::RoadNetwork) {
+    let loaded = openscenario::load_str(&fixtures().join("test.xosc"), text, &Default::default()).expect("test scenario loads");
+    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
+    let net = opendrive::load(fixtures().join("straight.xodr")).expect("fixture road loads").network;
+    (*scenario, net)
+}
+
+/// Ego at s = 50 on lane −1 at 10 m/s, Target at s = 200 on lane −1 at 5 m/s; `stories`; 10 s.
+fn scenario(stories: &str) -> String {
+    let init = format!("{}{}{}{}", teleport("Ego", 50.0, -1), init_speed("Ego", "step", "time", 0.0, 10.0), teleport("Target", 200.0, -1), init_speed("Target", "step", "time", 0.0, 5.0));
+    xosc(&init, stories, &format!("<ConditionGroup>{}</ConditionGroup>", sim_time(10.0, "greaterThan", "none", 0.0)))
+}
+
+const EGO: usize = 0;
+const TARGET: usize = 1;
+
+fn settings() -> Settings {
+    Settings { step: 0.01, max_time: 10.0 }
+}
+
+/// Runs `text` with Ego external, its input each step from `input(time of the step's end)`.
+fn drive(text: &str, external: &External, mut input: impl FnMut(f64, &Simulation) -> Vec<(usize, Input)>) -> engine::Run {
+    let (scenario, net) = load(text);
+    let mut sim = Simulation::new(&scenario, Some(&net), &settings(), &RunControl::default(), external).expect("starts");
+    while !sim.is_over() {
+        let inputs = input(sim.time() + 0.01, &sim);
+        sim.step_with(&inputs).expect("steps");
+    }
+    sim.finish()
+}
+
+#[test]
+fn a_state_puts_the_entity_where_it_says() {
+    let run = drive(&scenario(""), &External::named(["Ego"]), |t, _| {
+        let state = ExternalState { yaw_rate: Some(0.25), ..ExternalState::new(50.0 + 4.0 * t, -1.75 - 0.1 * t, 0.05, 4.0) };
+        vec![(EGO, Input::State(state))]
+    });
+    let s = at(&run, "Ego", 2.0);
+    assert!(close(s.x, 58.0, 1e-9) && close(s.y, -1.95, 1e-9) && close(s.h, 0.05, 1e-12) && s.speed == 4.0, "{s:?}");
+    assert_eq!(s.yaw_rate, 0.25);
+    // on the road: its lane and s follow from the pose
+    let road = s.road.expect("on the road");
+    assert_eq!(road.lane_id, -1);
+    assert!(close(road.s, 58.0, 1e-9), "{road:?}");
+    // the others go on as scripted
+    assert!(close(at(&run, "Target", 2.0).x, 210.0, 1e-9));
+}
+
+#[test]
+fn driver_input_drives_esminis_vehicle_model() {
+    // full throttle: 20 m/s² from 10 m/s, esmini's UDP driver's limit of 30 m/s after 1 s
+    let run = drive(&scenario(""), &External::named(["Ego"]), |_, _| vec![(EGO, Input::Driver(DriverInput { throttle: 1.0, brake: 0.0, steering: 0.0 }))]);
+    assert!(close(at(&run, "Ego", 0.5).speed, 20.0, 1e-9), "{:?}", at(&run, "Ego", 0.5));
+    assert!(close(at(&run, "Ego", 2.0).speed, 30.0, 1e-9));
+    // 0.5 s at 10 + 20 t (each step moves at the new speed), then straight on in its lane
+    let s = at(&run, "Ego", 0.5);
+    let expected = 50.0 + (1..=50).map(|k| 0.01 * (10.0 + 0.2 * k as f64)).sum::<f64>();
+    assert!(close(s.x, expected, 1e-9) && close(s.y, -1.75, 1e-12), "{s:?} vs x = {expected}");
+    // braking to a stop holds the car there
+    let run = drive(&scenario(""), &External::named(["Ego"]), |_, _| vec![(EGO, Input::Driver(DriverInput { throttle: 0.0, brake: 1.0, steering: 0.0 }))]);
+    assert_eq!(at(&run, "Ego", 1.0).speed, 0.0);
+    assert_eq!(at(&run, "Ego", 1.0).x, at(&run, "Ego", 5.0).x);
+    // steering left turns it left
+    let run = drive(&scenario(""), &External::named(["Ego"]), |_, _| vec![(EGO, Input::Driver(DriverInput { throttle: 0.0, brake: 0.0, steering: 0.3 }))]);
+    let s = at(&run, "Ego", 1.0);
+    assert!(s.y > -1.75 + 0.1 && s.h > 0.01 && s.h < 1.0, "{s:?}");
+}
+
+#[test]
+fn dead_reckoning_goes_on_and_hold_stays() {
+    let run = drive(&scenario(""), &External::named(["Ego"]), |t, _| {
+        let input = if t < 1.0 + 1e-9 { Input::State(ExternalState::new(60.0, -1.75, 0.0, 8.0)) } else { Input::DeadReckon };
+        vec![(EGO, input)]
+    });
+    assert!(close(at(&run, "Ego", 1.0).x, 60.0, 1e-12));
+    assert!(close(at(&run, "Ego", 2.0).x, 68.0, 1e-9), "{:?}", at(&run, "Ego", 2.0));
+    let run = drive(&scenario(""), &External::named(["Ego"]), |_, _| vec![(EGO, Input::Hold)]);
+    // where Init put it, with the speed Init gave it
+    let s = at(&run, "Ego", 3.0);
+    assert!(close(s.x, 50.0, 1e-12) && s.speed == 10.0, "{s:?}");
+}
+
+#[test]
+fn wrong_inputs_are_refused_by_name_and_the_step_is_not_run() {
+    let (scenario, net) = load(&scenario(""));
+    assert!(matches!(Simulation::new(&scenario, Some(&net), &settings(), &RunControl::default(), &External::named(["Nobody"])), Err(engine::Error::Input(m)) if m.contains("no entity named `Nobody`") && m.contains("Ego, Target")));
+    let mut sim = Simulation::new(&scenario, Some(&net), &settings(), &RunControl::default(), &External::named(["Ego"])).expect("starts");
+    let message = |r: Result<bool, engine::Error>| match r {
+        Err(engine::Error::Input(m)) => m,
+        other => panic!("expected an input error, got {other:?}"),
+    };
+    assert!(message(sim.step_with(&[])).contains("no input for `Ego`"));
+    assert!(message(sim.step_with(&[(TARGET, Input::Hold)])).contains("`Target` is not driven from outside (Ego is)"));
+    assert!(message(sim.step_with(&[(EGO, Input::State(ExternalState::new(f64::NAN, 0.0, 0.0, 0.0)))])).contains("input for `Ego`: x is NaN"));
+    assert!(message(sim.step_with(&[(EGO, Input::Hold), (EGO, Input::Hold)])).contains("two inputs for `Ego`"));
+    assert!(message(sim.step_with(&[(7, Input::Hold)])).contains("no entity with index 7"));
+    // nothing ran
+    assert_eq!(sim.time(), 0.0);
+    assert!(sim.step_with(&[(EGO, Input::Hold)]).expect("a right input steps"));
+    assert!(close(sim.time(), 0.01, 1e-12));
+}
+
+/// A story for Ego: at 1 s a speed change to 20 m/s over 2 s and a lane change to lane −2 over 2 s.
+fn ego_story() -> String {
+    let speed = event("Faster", "parallel", &speed_action("linear", "time", 2.0, 20.0), &trigger(&sim_time(1.0, "greaterOrEqual", "none", 0.0)));
+    let lane = event(
+        "Over",
+        "parallel",
+        r#"<PrivateAction><LateralAction><LaneChangeAction><LaneChangeActionDynamics dynamicsShape="sinusoidal" value="2" dynamicsDimension="time"/><LaneChangeTarget><AbsoluteTargetLane value="-2"/></LaneChangeTarget></LaneChangeAction></LateralAction></PrivateAction>"#,
+        &trigger(&sim_time(1.0, "greaterOrEqual", "none", 0.0)),
+    );
+    story("Ego", &format!("{speed}{lane}"))
+}
+
+#[test]
+fn the_storyboards_motion_actions_yield_to_the_outside_as_esminis_do() {
+    let hold = |_: f64, _: &Simulation| vec![(EGO, Input::Hold)];
+    let run = drive(&scenario(&ego_story()), &External::named(["Ego"]), hold);
+    // the speed change ends at once, the lane change runs on without end; neither moves Ego
+    assert_eq!(event_time(&run, "FasterAction", "end"), Some(1.0));
+    assert_eq!(event_time(&run, "OverAction", "end"), None);
+    assert!(close(at(&run, "Ego", 5.0).x, 50.0, 1e-12) && close(at(&run, "Ego", 5.0).y, -1.75, 1e-12));
+    for element in ["SpeedAction", "LaneChangeAction"] {
+        assert!(run.warnings.iter().any(|w| w.message.starts_with(&format!("{element} on `Ego`: the entity is driven from outside"))), "{element}: {:?}", run.warnings);
+    }
+    // replaced instead: the actions run their course, and the outside's state is what
+    // everyone sees. The lane change keeps the storyboard's timing; the speed change, which
+    // approaches its target from the entity's speed, never gets there while the outside
+    // holds the speed at 10 m/s.
+    let replaced = External { motion: ScriptedMotion::Replaced, ..External::named(["Ego"]) };
+    let run = drive(&scenario(&ego_story()), &replaced, hold);
+    let open = run_with(&scenario(&ego_story()), &settings());
+    let end = event_time(&open, "OverAction", "end");
+    assert!(end.is_some_and(|t| t > 2.9), "the lane change ends at {end:?} in the open-loop run");
+    assert_eq!(event_time(&run, "OverAction", "end"), end);
+    assert_eq!(event_time(&run, "FasterAction", "end"), None);
+    assert!(close(at(&run, "Ego", 5.0).x, 50.0, 1e-12) && close(at(&run, "Ego", 5.0).y, -1.75, 1e-12));
+}
+
+/// `text` with an ExternalController on Ego, activated at 1 s.
+fn with_outside_driver(text: &str) -> String {
+    let c = r#"<ObjectController><Controller name="outside"><Properties><Property name="esminiController" value="ExternalController"/></Properties></Controller></ObjectController></ScenarioObject>"#;
+    text.replacen("</ScenarioObject>", c, 1)
+}
+
+#[test]
+fn an_outside_drivers_controller_makes_its_entity_external_once_activated() {
+    let activate = event("Activate", "parallel", r#"<PrivateAction><ControllerAction><ActivateControllerAction longitudinal="true" lateral="true"/></ControllerAction></PrivateAction>"#, &trigger(&sim_time(1.0, "greaterOrEqual", "none", 0.0)));
+    let text = with_outside_driver(&scenario(&story("Ego", &activate)));
+    let (scenario, net) = load(&text);
+    let mut sim = Simulation::new(&scenario, Some(&net), &settings(), &RunControl::default(), &External::controllers()).expect("starts");
+    let ext = sim.external();
+    assert_eq!(ext.len(), 1);
+    assert!(ext[0].name == "Ego" && !ext[0].active && matches!(&ext[0].source, engine::Source::Controller(c) if c.name == "outside"));
+    // until 1 s the storyboard and the default controller drive it, and no input is asked for
+    while sim.time() < 1.0 - 1e-9 {
+        sim.step_with(&[]).expect("no input needed yet");
+    }
+    assert!(close(sim.state(EGO).expect("Ego").x, 60.0, 1e-9));
+    // activated in the frame starting at 1 s: from the next on, an input is needed
+    sim.step_with(&[]).expect("the activation frame holds it");
+    assert!(sim.external()[0].active);
+    assert!(matches!(sim.step_with(&[]), Err(engine::Error::Input(m)) if m.contains("no input for `Ego`")));
+    sim.step_with(&[(EGO, Input::State(ExternalState::new(100.0, -1.75, 0.0, 3.0)))]).expect("steps");
+    assert!(close(sim.state(EGO).expect("Ego").x, 100.0, 1e-12));
+    // without the choice, the default controller drives it, with the warning of before
+    let run = engine::simulate(&scenario, Some(&net), &settings()).expect("runs");
+    assert!(close(at(&run, "Ego", 2.0).x, 70.0, 1e-9));
+    assert!(run.warnings.iter().any(|w| w.message.contains("needs a driver or a process outside osc2cr")));
+}
+
+#[test]
+fn the_same_inputs_give_the_same_run() {
+    let input = |t: f64, _: &Simulation| vec![(EGO, Input::Driver(DriverInput { throttle: (t * 0.3).sin().abs(), brake: 0.0, steering: (t * 1.7).sin() * 0.2 }))];
+    let a = drive(&scenario(&ego_story()), &External::named(["Ego"]), input);
+    let b = drive(&scenario(&ego_story()), &External::named(["Ego"]), input);
+    let boxes = vec![[1.5, 0.0, 0.9, 4.5, 2.0, 1.8]; 2];
+    assert_eq!(a.trace.to_csv(&boxes), b.trace.to_csv(&boxes));
+    assert_eq!(a.trace.events, b.trace.events);
+}
