@@ -1,7 +1,8 @@
 //! A closed-loop conversion: the scenario loaded and its map converted as `convert` does, then
 //! run one step at a time while the caller drives the external entities (`engine::External`),
 //! and at any point the run so far turned into CommonRoad with the same stages, names and
-//! checks as a conversion of the file (`finish`), the ego's trajectory being the one driven.
+//! checks as a conversion of the file (`finish`), the ego's trajectory being the one driven
+//! (the ego is the first external entity when it moves, unless the options name another).
 //! The session owns the scenario and road network its run borrows (self_cell), so a Python
 //! object or a server can hold it.
 
@@ -10,6 +11,7 @@ use std::time::Instant;
 
 use engine::{External, ExternalEntity, Input, RunControl, Sample, Settings, Simulation, StoryboardEvent};
 
+use crate::ego::EgoChoice;
 use crate::options::ConvertOptions;
 use crate::pipeline::{finish, prepare, Conversion, Facts, Model, Prepared, Request};
 use crate::report::{Failure, Stage, StageWarning, Timings};
@@ -51,7 +53,14 @@ impl ClosedLoop {
         let settings = Settings { step: options.step, max_time: options.max_time };
         let control = RunControl { seed: options.engine_seed, deadline: None };
         let session = Session::try_new(prepared, |p| Simulation::new(&p.scenario, p.road.as_ref(), &settings, &control, external)).map_err(engine_failure)?;
-        Ok(ClosedLoop { session, path: path.to_path_buf(), options: options.clone(), warnings, timings, started })
+        let mut options = options.clone();
+        // the ego of the CommonRoad output is the entity driven, unless the caller chose one
+        if let EgoChoice::Pattern(pattern) = &options.ego {
+            if let Some(first) = session.with_dependent(|_, sim| sim.external()).into_iter().next() {
+                options.ego = EgoChoice::Preferred { name: first.name, pattern: pattern.clone() };
+            }
+        }
+        Ok(ClosedLoop { session, path: path.to_path_buf(), options, warnings, timings, started })
     }
 
     /// Runs the next step with the external entities' inputs; `Ok(false)` once the run is over.

@@ -1,6 +1,6 @@
-//! Which entity is the ego: the one named by the user, else the first (by name) whose name
-//! contains the pattern (case-insensitive; default "ego"), else the first moving entity of the
-//! trace. The ego must be a dynamic track: its first and last states make the planning problem.
+//! Which entity is the ego: the one named by the user, else (in closed loop) the moving entity
+//! driven from outside, else the first (by name) whose name contains the pattern
+//! (case-insensitive; default "ego"), else the first moving entity of the trace. The ego must be a dynamic track: its first and last states make the planning problem.
 
 use crate::tracks::{Placement, Track};
 
@@ -12,6 +12,9 @@ pub enum EgoChoice {
     Pattern(String),
     /// Exactly this entity (`--ego NAME`); an error when it does not exist or is not dynamic.
     Name(String),
+    /// This entity when it moves (the one a closed-loop run drove from outside), else as
+    /// `Pattern` with this text.
+    Preferred { name: String, pattern: String },
 }
 
 impl Default for EgoChoice {
@@ -33,6 +36,10 @@ pub fn choose_ego(tracks: &[Track], choice: &EgoChoice) -> Result<usize, String>
                 "no entity named {name:?} (--ego); the scenario has: {}",
                 names(tracks)
             )),
+        },
+        EgoChoice::Preferred { name, pattern } => match tracks.iter().position(|t| &t.entity == name) {
+            Some(i) if dynamic(&tracks[i]) => Ok(i),
+            _ => choose_ego(tracks, &EgoChoice::Pattern(pattern.clone())),
         },
         EgoChoice::Pattern(pattern) => {
             let pattern = pattern.to_ascii_lowercase();
