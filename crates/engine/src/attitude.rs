@@ -7,7 +7,7 @@
 //! (R0R12EulerAngles) and adds a pitch offset on banked roads; those second-order terms are
 //! not reproduced.
 
-use crate::actions::ActionRt;
+use crate::actions::state::ActionRt;
 use crate::roads::banking::roll_at;
 use crate::roads::road_follow::wrap;
 use crate::roads::LanePos;

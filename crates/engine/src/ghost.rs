@@ -18,44 +18,15 @@
 //! actions step: others start but wait), so at 0 the ghost leads by the head start. After every step the ghost's trail is sampled (`ghost_trail`) on
 //! esmini's accumulated clock, whose rounding decides which steps are sampled.
 
-use crate::actions::ActionSlot;
-use crate::controllers::ControllerRt;
+pub mod state;
+
+use self::state::{Ghost, GhostMode};
+use crate::actions::state::ActionSlot;
+use crate::controllers::state::ControllerRt;
 use crate::ghost_trail::Trail;
 use crate::sim::Sim;
 use crate::storyboard::{Kind, Node};
 use openscenario::{ActionKind, ConditionKind, EntityCondition, PrivateAction, ValueCondition};
-
-#[derive(Debug, Clone)]
-pub struct Ghost {
-    /// The ghost entity.
-    pub entity: usize,
-    /// The entity it runs ahead of (the only one that follows it).
-    pub owner: usize,
-    pub headstart: f64,
-    pub trail: Trail,
-    /// esmini's simulation time, accumulated step by step.
-    pub clock: f64,
-    /// The latest `clock` reached (esmini's `trueTime_`): a rewound run catches up to it.
-    pub true_clock: f64,
-    /// esmini's ghost mode (`SE_Env::GetGhostMode`).
-    pub mode: GhostMode,
-    /// Events that teleport the ghost back to its entity when they start (esmini's
-    /// `AddedGhostTeleport`), each with the condition that made it one.
-    pub restart_events: Vec<(usize, crate::Warning)>,
-    /// While the actions of an event start after its added teleport: how much earlier they
-    /// start (esmini's `Event::Start` passes them the time less the head start).
-    pub start_shift: f64,
-}
-
-/// esmini's ghost modes: `Restart` for the rest of the step in which the ghost was sent back to
-/// its entity, then `Restarting` while the rewound time catches up (the head start before time
-/// 0 is run the same way), else `Normal`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum GhostMode {
-    Normal,
-    Restart,
-    Restarting,
-}
 
 /// Actions esmini hands over to the ghost.
 fn moves_to_ghost(p: &PrivateAction) -> bool {
@@ -263,7 +234,7 @@ impl<'a> Sim<'a> {
         for &ev in events {
             let Some(t) = self.nodes[ev].start_trigger else { continue };
             let Some(trig) = self.triggers.get(t) else { continue };
-            let restarts = |c: &&crate::conditions::ConditionRt| match &c.model.kind {
+            let restarts = |c: &&crate::conditions::state::ConditionRt| match &c.model.kind {
                 ConditionKind::ByValue(v) => {
                     matches!(v, ValueCondition::Parameter { .. } | ValueCondition::Variable { .. } | ValueCondition::TrafficSignal { .. })
                 }

@@ -9,7 +9,7 @@
 //! the ghost become ready again (`ScenarioEngine::ResetEvents`), so restarts can chain.
 
 use crate::dynamics::ESMINI_SMALL_NUMBER;
-use crate::ghost::GhostMode;
+use crate::ghost::state::GhostMode;
 use crate::ghost_trail::Trail;
 use crate::sim::Sim;
 use crate::storyboard::{Kind, State};

@@ -6,11 +6,15 @@
 //! Behaviour follows the ASAM standard and, where the standard leaves room, esmini 3.6 (the
 //! reference traces): see `run` for the order of one frame.
 //!
-//! Module map: `run` (the loop) · `sim` (run state) · `storyboard` (element states and
-//! transitions) · `conditions` (triggers, edges, delays, each condition) · `actions` (speed,
-//! lane change, lane offset, teleport, parameters) · `motion` (default controller) · `roads`
-//! (lane geometry, following lanes through junctions) · `positions` · `signals` (traffic signals and
-//! their controllers) · `dynamics` (transition shapes) · `entities` · `trace` (the output).
+//! Module map, top-down: `run` (the loop: a frame at a time, `Simulation`) · `setup` (the run
+//! state built from a scenario) · the behaviours that change the state: `storyboard` (element
+//! states and transitions), `conditions` (triggers, edges, delays, each condition), `actions`
+//! (one file per action), `controllers` (the driver models), `motion` (default controller),
+//! `external` (entities driven from outside: closed loop), `ghost*` · `sim` (the run state,
+//! data only; each behaviour keeps what it remembers in its own `state` module, which names no
+//! behaviour: `tests/layering.rs`) · below them `roads` (lane geometry, following lanes through
+//! junctions), `positions`, `signals` (traffic signals and their controllers), `dynamics`
+//! (transition shapes), `entities`, `trace` (the output).
 
 mod actions;
 mod attitude;
@@ -35,6 +39,7 @@ mod rules;
 mod run;
 mod run_memos;
 mod settings;
+mod setup;
 mod signals;
 mod sim;
 mod storyboard;

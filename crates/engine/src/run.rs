@@ -1,16 +1,21 @@
-//! The main loop. One frame, as esmini orders it: the storyboard is evaluated and its actions
-//! stepped at the current time t (triggers first, then Init actions, then story actions in
-//! document order); if it is still running, time advances to t + dt, the default controller
-//! moves every entity no action moved, and the state at t + dt is recorded. Frame 0 runs the
-//! Init actions and the first evaluation with dt = 0 and records the state at t = 0. The run
-//! ends when the storyboard's stop trigger fires (no row is recorded for that frame) or after
-//! the row at the maximum time.
+//! The main loop, a frame at a time (`Simulation`). One frame, as esmini orders it (`frame`):
+//! the storyboard is evaluated and its actions stepped at the current time t (triggers first,
+//! then Init actions, then story actions in document order); if it is still running, time
+//! advances to t + dt, the driver models that act before it step, the default controller
+//! moves every entity no action moved, the entities driven from outside are put where their
+//! inputs say, the driver models esmini steps after the default controller step, and the state
+//! at t + dt is recorded. Frame 0 runs the Init actions and the first evaluation with dt = 0
+//! and records the state at t = 0. The run ends when the storyboard's stop trigger fires (no
+//! row is recorded for that frame) or after the row at the maximum time.
+//!
+//! Everything a frame changes is in `Sim` (`sim.rs`, data only); each call below is one
+//! behaviour's step over it.
 
+use crate::external::{External, ExternalEntity, Input, ScriptedMotion};
 use crate::motion::Before;
+use crate::run_memos::RunMemos;
 use crate::sim::Sim;
 use crate::storyboard::{State, Transition};
-use crate::external::{External, ExternalEntity, Input, ScriptedMotion};
-use crate::run_memos::RunMemos;
 use crate::trace::{EntityTrace, Replay, RoadPos, Sample, StoryboardEvent, Trace};
 use crate::{Error, RunControl, Settings, Warning};
 use opendrive::RoadNetwork;

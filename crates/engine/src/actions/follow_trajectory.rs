@@ -6,33 +6,16 @@
 //! timing) or at the last time stamp, moving on along the final heading by whatever distance
 //! the step had left.
 
-use super::ActionRt;
+pub mod state;
+
+use state::{FollowTrajectoryRt};
+
+use super::state::ActionRt;
 use crate::dynamics::SMALL;
 use crate::positions::resolve;
 use crate::sim::Sim;
 use openscenario::{FollowingMode, ReferenceContext, TimeReference, Trajectory};
 use trajectory::{Path, Pose, TimeDomain, TimeMapping};
-
-#[derive(Debug, Clone)]
-pub struct FollowTrajectoryRt {
-    pub path: Path,
-    /// Arc length of the entity along the path.
-    pub s: f64,
-    /// Timing, None when the trajectory's time stamps are ignored.
-    pub timing: Option<TimeMapping>,
-    /// esmini's running trajectory time (before the offset is added).
-    pub time: f64,
-    /// Following mode `follow` with time stamps: per segment between stamps (s, t, v, a),
-    /// constant acceleration with the speed continuous, starting at the first segment's
-    /// mean speed (esmini's vertex speeds); `position` mode moves at each segment's mean speed.
-    pub accel: Option<Vec<(f64, f64, f64, f64)>>,
-    /// −1 when the entity faces against the path (it started reversing), else 1; fixed at
-    /// the start (esmini's `initialHeadingSign_`).
-    pub heading_sign: f64,
-    /// Some vertex gives its height (a z or dz): the entity pitches with the path rather than
-    /// with the road (`attitude.rs`).
-    pub elevated: bool,
-}
 
 impl FollowTrajectoryRt {
     fn s_at_time(&self, t: f64) -> Option<f64> {

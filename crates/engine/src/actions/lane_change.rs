@@ -4,7 +4,11 @@
 //! step moves the entity by speed·dt split into its lateral and longitudinal parts, turns it
 //! by the slope of the path, and re-attaches it to the lane it is actually in.
 
-use super::ActionRt;
+pub mod state;
+
+use state::{LaneChangeRt};
+
+use super::state::ActionRt;
 use crate::dynamics::{sign, Transition, SMALL};
 use crate::positions::step_lane;
 use crate::roads::lane_geometry::{lane_borders, lane_center_t};
@@ -12,13 +16,6 @@ use crate::roads::{move_along_s, LanePos, MoveStatus};
 use crate::sim::Sim;
 use opendrive::RoadNetwork;
 use openscenario::{DynamicsDimension, DynamicsShape, LaneChangeTarget, TransitionDynamics};
-
-#[derive(Debug, Clone)]
-pub struct LaneChangeRt {
-    pub transition: Transition,
-    /// The entity's position expressed in the target lane.
-    pub internal: LanePos,
-}
 
 /// Re-express `lp` in the lane of its road that contains its lateral position.
 pub fn relane(net: &RoadNetwork, lp: &mut LanePos) {

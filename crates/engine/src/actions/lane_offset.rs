@@ -2,7 +2,11 @@
 //! absolute target or to an offset relative to another entity; the span follows from the
 //! maximum lateral acceleration. The longitudinal motion stays with the default controller.
 
-use super::ActionRt;
+pub mod state;
+
+use state::{LaneOffsetRt};
+
+use super::state::ActionRt;
 use crate::dynamics::{avoid_zero, sign, Transition};
 use crate::roads::lane_geometry::lane_center_t;
 use crate::sim::Sim;
@@ -10,11 +14,6 @@ use openscenario::{DynamicsDimension, DynamicsShape, LaneOffsetTarget};
 
 /// Lateral acceleration assumed when the action gives none, m/s².
 const DEFAULT_MAX_LAT_ACC: f64 = 0.5;
-
-#[derive(Debug, Clone)]
-pub struct LaneOffsetRt {
-    pub transition: Transition,
-}
 
 impl<'a> Sim<'a> {
     pub(super) fn start_lane_offset(&mut self, slot: usize, e: usize, shape: DynamicsShape, max_acc: Option<f64>, target: &LaneOffsetTarget) -> ActionRt {

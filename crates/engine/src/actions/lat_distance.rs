@@ -13,7 +13,11 @@
 //! action ends when the error is below 0.01 m. The entity coordinate system is not supported
 //! (warning; the action ends).
 
-use super::ActionRt;
+pub mod state;
+
+use state::{Phase, LatDistanceRt};
+
+use super::state::ActionRt;
 use crate::roads::lane_geometry::lane_center_t;
 use crate::roads::move_along_s;
 use crate::roads::road_follow::wrap;
@@ -28,30 +32,6 @@ const SMALL: f64 = 1e-10;
 const SPRING: f64 = 0.4;
 /// Distance error below which a non-continuous action is done, m.
 const THRESHOLD: f64 = 0.01;
-
-#[derive(Debug, Clone, Copy, PartialEq)]
-enum Phase {
-    Init,
-    Rigid,
-    Dynamic,
-}
-
-#[derive(Debug, Clone)]
-pub struct LatDistanceRt {
-    /// The action's slot, for its warning.
-    slot: usize,
-    target: usize,
-    /// Signed wanted t of the actor relative to the reference (+ left).
-    wanted: f64,
-    continuous: bool,
-    max_acc: f64,
-    max_acc_rate: f64,
-    max_speed: f64,
-    phase: Phase,
-    lat_vel: f64,
-    acceleration: f64,
-    old: (f64, f64),
-}
 
 /// The lateral action's parameters as the model gives them.
 pub struct LatDistanceSpec<'s> {

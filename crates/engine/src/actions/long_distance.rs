@@ -8,7 +8,11 @@
 //! maximum speed. "any" displacement keeps the side the actor is on when the action starts. A
 //! non-continuous action ends when the distance is within 0.1 m.
 
-use super::ActionRt;
+pub mod state;
+
+use state::{LongDistanceRt};
+
+use super::state::ActionRt;
 use crate::conditions::distance::between;
 use crate::roads::move_along_s;
 use crate::sim::Sim;
@@ -18,25 +22,6 @@ const LARGE: f64 = 1e10;
 const SPRING: f64 = 0.4;
 /// Distance error below which a non-continuous action is done, m.
 const THRESHOLD: f64 = 0.1;
-
-#[derive(Debug, Clone)]
-pub struct LongDistanceRt {
-    target: usize,
-    /// Distance in m, or time gap in s when `time_gap`.
-    value: f64,
-    time_gap: bool,
-    freespace: bool,
-    continuous: bool,
-    cs: CoordinateSystem,
-    /// +1 trailing (reference ahead), -1 leading.
-    side: f64,
-    max_acc: f64,
-    max_dec: f64,
-    max_acc_rate: f64,
-    max_dec_rate: f64,
-    max_speed: f64,
-    acceleration: f64,
-}
 
 /// The longitudinal action's parameters as the model gives them.
 pub struct LongDistanceSpec<'s> {

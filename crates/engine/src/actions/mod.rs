@@ -13,86 +13,18 @@ pub mod routing;
 pub mod long_distance;
 pub mod speed;
 pub mod speed_profile;
+pub mod state;
 pub mod synchronize;
 pub mod teleport;
 pub mod traffic_signal;
 pub mod trailer;
 
+use self::state::{ActionRt, Instance};
 use crate::external::overridden::{overridden, Overridden};
 use crate::sim::Sim;
 use crate::storyboard::{State, Transition};
 use crate::Warning;
-use openscenario::{Action, ActionKind, PrivateAction};
-
-pub const LONG: u8 = 1;
-pub const LAT: u8 = 2;
-
-/// What an action instance is doing.
-#[derive(Debug, Clone)]
-pub enum ActionRt {
-    Speed(speed::SpeedRt),
-    LaneChange(lane_change::LaneChangeRt),
-    LaneOffset(lane_offset::LaneOffsetRt),
-    FollowTrajectory(Box<follow_trajectory::FollowTrajectoryRt>),
-    SpeedProfile(speed_profile::SpeedProfileRt),
-    Synchronize(Box<synchronize::SynchronizeRt>),
-    LongDistance(Box<long_distance::LongDistanceRt>),
-    LatDistance(Box<lat_distance::LatDistanceRt>),
-    /// Nothing left to do.
-    Done,
-    /// Started on an entity driven from outside: runs without effect and never ends
-    /// (external/overridden.rs).
-    Overridden,
-    /// Ended in its start, as esmini's actions that call `OSCAction::End` from `Start`: the
-    /// action is complete before the triggers later in the storyboard are evaluated.
-    EndedAtStart,
-}
-
-#[derive(Debug, Clone)]
-pub struct Instance {
-    pub entity: Option<usize>,
-    pub rt: ActionRt,
-}
-
-#[derive(Debug, Clone)]
-pub struct ActionSlot<'a> {
-    pub node: usize,
-    pub model: &'a Action,
-    pub actors: Vec<usize>,
-    pub instances: Vec<Instance>,
-    pub running: bool,
-    pub warned: bool,
-}
-
-impl<'a> ActionSlot<'a> {
-    pub fn new(node: usize, model: &'a Action, actors: Vec<usize>) -> Self {
-        ActionSlot { node, model, actors, instances: Vec::new(), running: false, warned: false }
-    }
-
-    /// Control domains the action takes over.
-    pub fn domains(&self) -> u8 {
-        match &self.model.kind {
-            ActionKind::Private(p) => match p {
-                PrivateAction::Speed { .. }
-                | PrivateAction::SpeedProfile { .. }
-                | PrivateAction::LongitudinalDistance { .. }
-                | PrivateAction::Synchronize { .. } => LONG,
-                PrivateAction::LaneChange { .. } | PrivateAction::LaneOffset { .. } | PrivateAction::LateralDistance { .. } => LAT,
-                // Without timing the speed stays with the longitudinal actions (esmini runs a
-                // SpeedProfileAction alongside such a trajectory).
-                PrivateAction::FollowTrajectory { time_reference: openscenario::TimeReference::None, .. } => LAT,
-                PrivateAction::FollowTrajectory { .. } => LONG | LAT,
-                // esmini's TeleportAction holds both domains (DOMAIN_MASK_LAT_AND_LONG): starting
-                // one ends a running lane change or speed change of the entity; its
-                // AcquirePositionAction holds the longitudinal one.
-                PrivateAction::Teleport(_) => LONG | LAT,
-                PrivateAction::AcquirePosition(_) => LONG,
-                _ => 0,
-            },
-            _ => 0,
-        }
-    }
-}
+use openscenario::{ActionKind, PrivateAction};
 
 impl<'a> Sim<'a> {
     /// Warn once about action slot `slot`.

@@ -5,52 +5,16 @@
 //! the reference entity's speed every step (continuous or not); a continuous one never ends.
 //! All of it follows esmini's LongSpeedAction::Start / Step.
 
-use super::ActionRt;
+pub mod state;
+
+use state::{Target, SpeedRt};
+
+use super::state::ActionRt;
 use crate::dynamics::{sign, Transition};
-use crate::entities::Entity;
 use crate::sim::Sim;
 use openscenario::{DynamicsDimension, DynamicsShape, SpeedTarget, SpeedTargetValueType, TransitionDynamics};
 
 use crate::dynamics::ESMINI_SMALL_NUMBER as SMALL_NUMBER;
-
-#[derive(Debug, Clone)]
-pub enum Target {
-    Absolute(f64),
-    Relative { entity: usize, value: f64, factor: bool, continuous: bool },
-}
-
-impl Target {
-    /// The target now: a relative target follows the reference entity's current speed, also
-    /// when it is not continuous (esmini's LongSpeedAction::TargetRelative::GetValue).
-    fn value(&self, entities: &[Entity]) -> f64 {
-        match *self {
-            Target::Absolute(v) => v,
-            Target::Relative { entity, value, factor, .. } => {
-                let ref_speed = entities.get(entity).map_or(0.0, |e| e.speed);
-                if factor {
-                    ref_speed * value
-                } else {
-                    ref_speed + value
-                }
-            }
-        }
-    }
-
-    fn is_relative(&self) -> bool {
-        matches!(self, Target::Relative { .. })
-    }
-
-    fn continuous(&self) -> bool {
-        matches!(self, Target::Relative { continuous: true, .. })
-    }
-}
-
-#[derive(Debug, Clone)]
-pub struct SpeedRt {
-    pub transition: Transition,
-    pub target: Target,
-    pub reached: bool,
-}
 
 /// esmini's ABS_LIMIT: limit the magnitude, keep the sign.
 fn abs_limit(v: f64, limit: f64) -> f64 {

@@ -5,7 +5,11 @@
 //! (maximum acceleration / deceleration rates), so corners are rounded and vertices reached
 //! late or early. The plan is a list of segments v(t) = v + k·(t − t0) + j·(t − t0)²/2.
 
-use super::ActionRt;
+pub mod state;
+
+use state::{Segment, SpeedProfileRt};
+
+use super::state::ActionRt;
 use crate::sim::Sim;
 use openscenario::{DynamicConstraints, FollowingMode, SpeedProfileEntry};
 
@@ -13,14 +17,6 @@ use openscenario::{DynamicConstraints, FollowingMode, SpeedProfileEntry};
 const EPS: f64 = 1e-6;
 /// Constraint default when neither the action nor the vehicle gives one.
 const LARGE: f64 = 1e10;
-
-#[derive(Debug, Clone, Copy)]
-struct Segment {
-    t: f64,
-    v: f64,
-    k: f64,
-    j: f64,
-}
 
 #[derive(Debug, Clone, Copy)]
 struct Vertex {
@@ -39,14 +35,6 @@ impl Vertex {
         self.k = k;
         self.m = self.v - k * self.t;
     }
-}
-
-#[derive(Debug, Clone)]
-pub struct SpeedProfileRt {
-    segments: Vec<Segment>,
-    current: usize,
-    speed: f64,
-    entries: usize,
 }
 
 #[derive(Debug, Clone, Copy)]

@@ -12,7 +12,11 @@
 //! master is within its tolerance, when either distance starts to grow (a target was passed),
 //! or when the master arrives within the next step; then the actor takes the final speed.
 
-use super::ActionRt;
+pub mod state;
+
+use state::{Mode, Submode, Final, SynchronizeRt};
+
+use super::state::ActionRt;
 use crate::positions::{resolve, Placement};
 use crate::roads::road_distance::road_distance;
 use crate::sim::Sim;
@@ -22,46 +26,6 @@ const SMALL: f64 = 1e-10;
 const LARGE: f64 = 1e10;
 /// The deceleration esmini uses to stop at once, m/s².
 const STOP_DECELERATION: f64 = -8.0;
-
-#[derive(Debug, Clone, Copy, PartialEq)]
-enum Mode {
-    None,
-    NonLinear,
-    Linear,
-    Stopped,
-    StopImmediately,
-    Waiting,
-    SteadyState,
-}
-
-#[derive(Debug, Clone, Copy, PartialEq)]
-enum Submode {
-    None,
-    Concave,
-    Convex,
-}
-
-#[derive(Debug, Clone, Copy)]
-enum Final {
-    Absolute(f64),
-    Relative { value: f64, factor: bool },
-}
-
-#[derive(Debug, Clone)]
-pub struct SynchronizeRt {
-    master: usize,
-    target_master: Placement,
-    target: Placement,
-    final_speed: Option<Final>,
-    steady_dist: Option<f64>,
-    steady_time: Option<f64>,
-    tolerance: f64,
-    tolerance_master: f64,
-    mode: Mode,
-    submode: Submode,
-    last_dist: f64,
-    last_master_dist: f64,
-}
 
 impl<'a> Sim<'a> {
     pub(super) fn start_synchronize(

@@ -9,7 +9,7 @@ impl<'a> Sim<'a> {
     pub(super) fn teleport(&mut self, slot: usize, e: usize, pos: &Position) {
         // esmini's TeleportAction::Start does nothing while a controller in override mode owns
         // the entity's lateral or longitudinal motion (here: an active ACC/ALKS in override mode)
-        if let Some(Some(crate::controllers::ControllerRt::Acc(a))) = self.controllers.get(e) {
+        if let Some(Some(crate::controllers::state::ControllerRt::Acc(a))) = self.controllers.get(e) {
             if a.overrides_longitudinal() {
                 self.warn_action(slot, "TeleportAction: ignored, as esmini does, while the entity's ACC controller in override mode drives it".into());
                 return;

@@ -4,22 +4,16 @@
 //! and the trailer turns to point from where its reference point was towards the hitch — a
 //! discrete tractrix, which is what a rigid trailer on a non-slipping axle does.
 
+pub mod state;
+
+use state::{Trailers};
+
 use crate::entities::Entity;
 use crate::sim::Sim;
 use openscenario::{EntityObject, Scenario, Trailer};
 
 /// Longest chain of trailers followed (guards against reference cycles in hostile input).
 const MAX_CHAIN: usize = 100;
-
-/// Who tows whom, and each entity's hitch and coupler positions (m ahead of its reference
-/// point), indexed like the run's entities (scenario entities, then inline trailers).
-#[derive(Debug, Clone, Default)]
-pub struct Trailers {
-    /// `links[tow] = Some(trailer)`.
-    pub links: Vec<Option<usize>>,
-    pub hitch: Vec<Option<f64>>,
-    pub coupler: Vec<Option<f64>>,
-}
 
 impl Trailers {
     /// The initial tow links of `scenario`. Inline trailer entities (a vehicle model's

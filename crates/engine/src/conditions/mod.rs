@@ -7,41 +7,14 @@ pub mod by_entity;
 pub mod by_value;
 pub mod clearance;
 pub mod distance;
+pub mod state;
 pub mod triggering;
 pub mod traffic_signal;
 
+use self::state::{ConditionRt, TriggerRt};
 use crate::sim::Sim;
-use crate::storyboard::{Kind, Node, State, Transition};
+use crate::storyboard::{Kind, Node};
 use openscenario::{Condition, ConditionEdge, ConditionKind, EntityCondition, StoryboardElementType, Trigger, ValueCondition};
-
-/// One condition with its evaluation memory.
-#[derive(Debug, Clone)]
-pub struct ConditionRt<'a> {
-    pub model: &'a Condition,
-    last_result: bool,
-    /// Evaluated since the trigger last fired (edges need a previous value).
-    evaluated: bool,
-    value: bool,
-    /// (time, edge-filtered value) at each change, for delays.
-    history: Vec<(f64, bool)>,
-    pub triggering: Vec<usize>,
-    /// Seconds a SimulationTime condition fires early (a ghost's head start, `ghost.rs`).
-    pub time_shift: f64,
-    /// The triggering entities for which the condition held when it was last true (read by
-    /// `selectTriggeringEntities`), and the scratch list of the evaluation in progress.
-    pub fired_by: Vec<usize>,
-    hits: Vec<usize>,
-    pub other: Option<usize>,
-    pub element: Option<usize>,
-    pub cursor: usize,
-    pub latest: Option<(State, Transition)>,
-    pub warned: bool,
-}
-
-#[derive(Debug, Clone, Default)]
-pub struct TriggerRt<'a> {
-    pub groups: Vec<Vec<ConditionRt<'a>>>,
-}
 
 impl<'a> TriggerRt<'a> {
     pub fn new(t: &'a Trigger, sim: &Sim) -> TriggerRt<'a> {

@@ -11,6 +11,10 @@
 //! runs after the default controller; before it, `hold_for_override` keeps the default controller off
 //! an entity the controller moves itself (override mode).
 
+pub mod state;
+
+use state::{AccRt};
+
 use crate::conditions::distance::between;
 use crate::roads::lane_geometry::lane_center_t;
 use crate::roads::road_distance::road_distance_within;
@@ -23,19 +27,6 @@ const LARGE: f64 = 1e10;
 /// Minimum gap to the lead vehicle, m.
 const MIN_DIST: f64 = 3.0;
 const ACCELERATION_FACTOR: f64 = 0.7;
-
-#[derive(Debug, Clone)]
-pub struct AccRt {
-    pub active: bool,
-    time_gap: f64,
-    set_speed: f64,
-    set_speed_given: bool,
-    lateral_dist: f64,
-    current_speed: f64,
-    pub(super) override_mode: bool,
-    /// An action moved the entity this step (seen before the default controller ran).
-    pub(super) moved_by_action: bool,
-}
 
 impl AccRt {
     /// Active in override mode: it owns the longitudinal domain (esmini's
@@ -94,7 +85,7 @@ impl<'a> Sim<'a> {
     /// Step every active ACC (and ALKS) controller by `dt`, after the default controller.
     pub fn step_acc_controllers(&mut self, dt: f64) {
         self.for_each_controller(|sim, e, c| {
-            if let super::ControllerRt::Acc(a) = c {
+            if let super::state::ControllerRt::Acc(a) = c {
                 if a.active {
                     sim.step_acc(e, a, dt);
                 }

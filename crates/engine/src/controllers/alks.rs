@@ -6,7 +6,7 @@
 //! defaults (`timeGap` 1.5 s, `setSpeed`, `lateralDist` 5 m, `mode` additive unless given) and
 //! the same interplay with storyboard speed actions — all of it in `acc`.
 
-use super::acc::AccRt;
+use super::acc::state::AccRt;
 use openscenario::Controller;
 
 /// The run-time state of an ALKSController: an ACC controller's.

@@ -11,6 +11,10 @@
 //! wandering threshold 0.375 m or `lateralTrigDistance`). RSS and FSM fall back to
 //! ReferenceDriver with a warning. Distances are free space in road coordinates (s, t).
 
+pub mod state;
+
+use state::{Model, Mode, Scen, Phase, Info, Trigger, AlksR157Rt};
+
 use crate::entities::EntityKind;
 use crate::roads::move_along_s;
 use crate::roads::road_follow::wrap;
@@ -21,63 +25,10 @@ const SMALL: f64 = 1e-10;
 const LARGE: f64 = 1e10;
 const G: f64 = 9.8;
 
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Model {
-    Regulation,
-    ReferenceDriver,
-}
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Mode {
-    Critical,
-    TargetInSight,
-    NoTarget,
-}
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Scen {
-    None,
-    CutIn,
-    CutOut,
-    Deceleration,
-}
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Phase {
-    Inactive,
-    Perceive,
-    React,
-    BrakeRef,
-}
-
-#[derive(Debug, Clone, Copy)]
-struct Info {
-    obj: Option<usize>,
-    dist_long: f64,
-    dist_lat: f64,
-    dv_s: f64,
-    dv_t: f64,
-    ttc: f64,
-    thw: f64,
-    dlane: i32,
-    action: Scen,
-}
-
 impl Info {
     fn empty() -> Info {
         Info { obj: None, dist_long: LARGE, dist_lat: LARGE, dv_s: 0.0, dv_t: 0.0, ttc: LARGE, thw: LARGE, dlane: 0, action: Scen::None }
     }
-}
-
-#[derive(Debug, Clone)]
-struct Trigger {
-    /// Wandering trigger (threshold adapted to the target's lane offset) or fixed lateral distance.
-    wandering: bool,
-    base: f64,
-    threshold: f64,
-    active: bool,
-    obj: Option<usize>,
-    t0: f64,
 }
 
 /// Road-frame state of one entity for the model.
@@ -94,39 +45,6 @@ struct Frame {
     v_t: f64,
     acc_s: f64,
     lane_width: f64,
-}
-
-#[derive(Debug, Clone)]
-pub struct AlksR157Rt {
-    pub active: bool,
-    override_mode: bool,
-    pub model: Model,
-    rt: f64,
-    max_dec: f64,
-    max_range: f64,
-    set_speed: f64,
-    acc: f64,
-    cruise: bool,
-    full_stop: bool,
-    always_trig: bool,
-    mode: Mode,
-    scen: Scen,
-    focus: Info,
-    tmp: Info,
-    // ReferenceDriver
-    phase: Phase,
-    timer: f64,
-    time_mode: bool,
-    perception_t: f64,
-    perception_dist: f64,
-    perception_time: f64,
-    ped_eval_time: f64,
-    aeb_ttc: f64,
-    aeb_active: bool,
-    overlap_tol: f64,
-    trigger: Trigger,
-    /// Ego speed at the start of the current step.
-    speed_now: f64,
 }
 
 impl AlksR157Rt {

@@ -8,6 +8,10 @@
 //! was `headstartTime` minus the look-ahead (in seconds) ago. The body is esmini's kinematic
 //! vehicle (`kinematic_vehicle`) with 10 m/s² and 100 m/s limits.
 
+pub mod state;
+
+use state::{FollowMode, FollowGhostRt};
+
 use super::kinematic_vehicle::KinematicVehicle;
 use crate::entities::Entity;
 use crate::ghost_trail::TrailPoint;
@@ -20,29 +24,6 @@ const MAX_ACC: f64 = 10.0;
 const MAX_SPEED: f64 = 100.0;
 /// Longest head start simulated, s.
 const MAX_HEADSTART: f64 = 600.0;
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum FollowMode {
-    Time,
-    Position,
-}
-
-#[derive(Debug, Clone)]
-pub struct FollowGhostRt {
-    pub active: bool,
-    pub headstart: f64,
-    mode: FollowMode,
-    lookahead_speed: f64,
-    min_lookahead_speed: f64,
-    lookahead_steering: f64,
-    min_lookahead_steering: f64,
-    steering_scale: f64,
-    vehicle: Option<KinematicVehicle>,
-    /// Trail segment where the last search ended (searches go on from there).
-    follow_index: usize,
-    /// Arc length of the trail point nearest to the entity at the last search.
-    closest_s: f64,
-}
 
 impl FollowGhostRt {
     pub fn new(c: &Controller) -> FollowGhostRt {

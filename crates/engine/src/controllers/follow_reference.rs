@@ -8,6 +8,10 @@
 //! longitudinal distance to the reference: −k·dx − 2√k·(v − v_ref). The body is esmini's
 //! kinematic vehicle (`kinematic_vehicle`).
 
+pub mod state;
+
+use state::{FollowReferenceRt};
+
 use super::kinematic_vehicle::KinematicVehicle;
 use crate::entities::Entity;
 use crate::roads::road_follow::wrap;
@@ -18,20 +22,6 @@ use openscenario::{Controller, EntityObject};
 const SMALL: f64 = 1e-10;
 /// Yaw rates beyond this do not count for the reference's curvature, rad/s.
 const MAX_YAW_RATE: f64 = 0.5;
-
-#[derive(Debug, Clone)]
-pub struct FollowReferenceRt {
-    pub active: bool,
-    cross_track_gain: f64,
-    speed_stabilizer: f64,
-    heading_gain: f64,
-    curvature_gain: f64,
-    stiffness: f64,
-    /// `referenceEntity`; `None`: follow the ghost.
-    pub reference_name: Option<String>,
-    vehicle: Option<KinematicVehicle>,
-    wheelbase: f64,
-}
 
 impl FollowReferenceRt {
     pub fn new(c: &Controller) -> FollowReferenceRt {
@@ -76,7 +66,7 @@ impl<'a> Sim<'a> {
     /// quits; here the entity stands still).
     pub fn check_follow_references(&mut self) {
         for e in 0..self.controllers.len() {
-            let Some(Some(super::ControllerRt::FollowReference(f))) = self.controllers.get(e) else { continue };
+            let Some(Some(super::state::ControllerRt::FollowReference(f))) = self.controllers.get(e) else { continue };
             let Some(name) = f.reference_name.clone() else { continue };
             if self.entity_index(&name).is_none() {
                 if let Some(m) = self.scenario.entities.get(e) {

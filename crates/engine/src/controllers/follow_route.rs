@@ -9,8 +9,12 @@
 //! keep acting on the entity. Stepped after the default controller, as esmini steps its
 //! controllers.
 
+pub mod state;
+
+use state::{FollowRouteRt};
+
 use super::lane_router::{calculate_path, connecting_lane_id, next_roads, path_waypoints, LaneSpot};
-use crate::actions::lane_change::LaneChangeRt;
+use crate::actions::lane_change::state::LaneChangeRt;
 use crate::dynamics::{sign, Transition};
 use crate::roads::lane_geometry::{lane_borders, lane_center_t};
 use crate::sim::Sim;
@@ -21,28 +25,6 @@ use std::sync::Arc;
 
 /// esmini's SMALL_NUMBER.
 const SMALL: f64 = 1e-10;
-
-#[derive(Debug, Clone)]
-pub struct FollowRouteRt {
-    pub active: bool,
-    /// Activated on the longitudinal domain (ActivateControllerAction's `longitudinal`).
-    longitudinal: bool,
-    lane_change_time: f64,
-    min_dist_for_collision: f64,
-    min_lane_width: f64,
-    test_mode: bool,
-    /// The route's scenario waypoints with their strategies (set by AssignRouteAction).
-    scenario: Vec<(LaneSpot, Strategy)>,
-    /// The road of each of esmini's detailed route waypoints: the scenario waypoints and one
-    /// per road in between.
-    route_roads: Vec<usize>,
-    path_calculated: bool,
-    waypoints: Vec<LaneSpot>,
-    current: usize,
-    scenario_index: usize,
-    changing_lane: bool,
-    lane_change: Option<LaneChangeRt>,
-}
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum WaypointStatus {
@@ -180,7 +162,7 @@ impl<'a> Sim<'a> {
     /// A route was assigned to entity `e`: a FollowRoute controller of it keeps the route's
     /// scenario waypoints (resolved now) and the roads between them.
     pub(crate) fn tell_route_follower(&mut self, e: usize, route: &openscenario::Route, planned: &routing::Route) {
-        if !matches!(self.controllers.get(e), Some(Some(super::ControllerRt::FollowRoute(_)))) {
+        if !matches!(self.controllers.get(e), Some(Some(super::state::ControllerRt::FollowRoute(_)))) {
             return;
         }
         let Some(net) = self.net else { return };
@@ -208,7 +190,7 @@ impl<'a> Sim<'a> {
 
     fn give_route_follower(&mut self, e: usize, scenario: Vec<(LaneSpot, Strategy)>, planned: &routing::Route) {
         let roads = route_roads(planned, &scenario);
-        if let Some(Some(super::ControllerRt::FollowRoute(f))) = self.controllers.get_mut(e) {
+        if let Some(Some(super::state::ControllerRt::FollowRoute(f))) = self.controllers.get_mut(e) {
             f.set_route(scenario, roads);
         }
     }
@@ -216,7 +198,7 @@ impl<'a> Sim<'a> {
     /// Step every active FollowRoute controller by `dt`, after the default controller.
     pub fn step_route_followers(&mut self, dt: f64) {
         self.for_each_controller(|sim, e, c| {
-            if let super::ControllerRt::FollowRoute(f) = c {
+            if let super::state::ControllerRt::FollowRoute(f) = c {
                 if f.active {
                     sim.step_follow_route(e, f, dt);
                 }

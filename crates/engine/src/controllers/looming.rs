@@ -12,6 +12,10 @@
 //!   at zero throttle, a handbrake when braking through zero; the wheel turned by the steering
 //!   and the kinematic bicycle of `kinematic_vehicle.rs`.
 
+pub mod state;
+
+use state::{LoomingRt};
+
 use super::analog_vehicle::AnalogVehicle;
 use crate::roads::move_along_s;
 use crate::roads::road_follow::at_dead_end;
@@ -40,25 +44,6 @@ const K2: f64 = 1.5;
 
 /// What the run says about a LoomingController on roads with elevation or superelevation.
 pub const APPROXIMATION: &str = "LoomingController: the OSI points of its far tangent point are esmini's for flat roads; the shorter spacing esmini uses where the road's elevation or superelevation changes is not modelled";
-
-#[derive(Debug, Clone)]
-pub struct LoomingRt {
-    pub active: bool,
-    time_gap: f64,
-    set_speed: f64,
-    set_speed_given: bool,
-    pub(super) override_mode: bool,
-    /// An action moved the entity this step (seen before the default controller ran).
-    pub(super) moved_by_action: bool,
-    /// esmini's vehicle model the controller drives (set up when it is activated).
-    vehicle: Option<AnalogVehicle>,
-    prev_near: f64,
-    prev_far: f64,
-    steering: f64,
-    osi: super::looming_view::OsiMemo,
-    /// The last move ended at a road end (seen by the next step).
-    end_of_road: bool,
-}
 
 impl LoomingRt {
     /// ControllerLooming's constructor: `timeGap` (1.5 s) and `setSpeed` properties; the mode
@@ -124,7 +109,7 @@ impl<'a> Sim<'a> {
     /// its controllers then, in frame 0 too with dt = 0).
     pub fn step_looming_controllers(&mut self, dt: f64) {
         self.for_each_controller(|sim, e, c| {
-            if let super::ControllerRt::Looming(l) = c {
+            if let super::state::ControllerRt::Looming(l) = c {
                 if l.active {
                     sim.step_looming(e, l, dt);
                 }

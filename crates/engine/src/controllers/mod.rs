@@ -22,22 +22,12 @@ pub mod looming;
 pub mod looming_view;
 pub mod natural_driver;
 pub mod natural_view;
+pub mod state;
 
+use self::state::ControllerRt;
 use crate::sim::Sim;
 use crate::Warning;
 use openscenario::Controller;
-
-/// A controller's state during a run.
-#[derive(Debug, Clone)]
-pub enum ControllerRt {
-    Acc(acc::AccRt),
-    AlksR157(Box<alks_r157::AlksR157Rt>),
-    NaturalDriver(Box<natural_driver::NaturalDriverRt>),
-    FollowGhost(Box<follow_ghost::FollowGhostRt>),
-    FollowReference(Box<follow_reference::FollowReferenceRt>),
-    FollowRoute(Box<follow_route::FollowRouteRt>),
-    Looming(looming::LoomingRt),
-}
 
 /// Types that need a driver or a co-simulator outside osc2cr.
 const OUTSIDE_INPUT: [&str; 6] = ["InteractiveController", "ExternalController", "SumoController", "HIDController", "UDPDriverController", "ExternalDriverModel"];
@@ -76,24 +66,24 @@ impl<'a> Sim<'a> {
         }
         let kind = controller_type(c);
         let rt = match kind {
-            "ACCController" => Some(ControllerRt::Acc(acc::AccRt::new(c))),
+            "ACCController" => Some(ControllerRt::Acc(acc::state::AccRt::new(c))),
             "ALKSController" => Some(ControllerRt::Acc(alks::new(c))),
             "ALKS_R157SM_Controller" => {
-                let (rt, note) = alks_r157::AlksR157Rt::new(c);
+                let (rt, note) = alks_r157::state::AlksR157Rt::new(c);
                 if let Some(n) = note {
                     self.warnings.push(Warning::at(&c.origin, n));
                 }
                 Some(ControllerRt::AlksR157(Box::new(rt)))
             }
-            "NaturalDriver" => Some(ControllerRt::NaturalDriver(Box::new(natural_driver::NaturalDriverRt::new(c)))),
-            "FollowGhostController" => Some(ControllerRt::FollowGhost(Box::new(follow_ghost::FollowGhostRt::new(c)))),
-            "FollowReferenceController" => Some(ControllerRt::FollowReference(Box::new(follow_reference::FollowReferenceRt::new(c)))),
-            "FollowRouteController" => Some(ControllerRt::FollowRoute(Box::new(follow_route::FollowRouteRt::new(c)))),
+            "NaturalDriver" => Some(ControllerRt::NaturalDriver(Box::new(natural_driver::state::NaturalDriverRt::new(c)))),
+            "FollowGhostController" => Some(ControllerRt::FollowGhost(Box::new(follow_ghost::state::FollowGhostRt::new(c)))),
+            "FollowReferenceController" => Some(ControllerRt::FollowReference(Box::new(follow_reference::state::FollowReferenceRt::new(c)))),
+            "FollowRouteController" => Some(ControllerRt::FollowRoute(Box::new(follow_route::state::FollowRouteRt::new(c)))),
             "LoomingController" => {
                 if self.net.is_some_and(|n| n.roads.iter().any(|r| r.elevation.iter().chain(&r.superelevation).any(|c| c.b != 0.0 || c.c != 0.0 || c.d != 0.0))) {
                     self.warnings.push(Warning::at(&c.origin, looming::APPROXIMATION.to_string()));
                 }
-                Some(ControllerRt::Looming(looming::LoomingRt::new(c)))
+                Some(ControllerRt::Looming(looming::state::LoomingRt::new(c)))
             }
             _ => None,
         };

@@ -22,34 +22,19 @@
 //! standing still, and the additive `mode` is driven like `override` (the driver always moves
 //! the entity itself).
 
+pub mod state;
+
+use state::{NdParams, Mode, NaturalDriverRt};
+
 use super::natural_view::{adjacent_lanes, desired_gap, freespace, Vois, FOLLOWING, LEAD, LEFT_FOLLOW, LEFT_LEAD, RIGHT_FOLLOW, RIGHT_LEAD, SMALL_NUMBER};
-use super::ControllerRt;
-use crate::actions::lane_change::LaneChangeRt;
+use super::state::ControllerRt;
+use crate::actions::lane_change::state::LaneChangeRt;
 use crate::dynamics::{sign, Transition};
 use crate::roads::lane_geometry::lane_center_t;
 use crate::roads::{move_along_route, LanePos, MoveStatus};
 use crate::sim::Sim;
 use crate::trace::StoryboardEvent;
 use openscenario::{Controller, DynamicsDimension, DynamicsShape};
-
-/// The driver's parameters (esmini's defaults when a property is missing).
-#[derive(Debug, Clone)]
-pub struct NdParams {
-    pub desired_distance: f64,
-    pub desired_speed: f64,
-    pub lane_change_duration: f64,
-    pub lookahead: f64,
-    /// Comfortable deceleration, negative.
-    pub max_dec: f64,
-    pub max_acc: f64,
-    pub lane_change_delay: f64,
-    pub thw: f64,
-    pub max_imposed_braking: f64,
-    pub politeness: f64,
-    pub lane_change_acc_gain: f64,
-    /// The lane id the driver wants to be in.
-    pub route: i32,
-}
 
 impl NdParams {
     fn from_properties(c: &Controller) -> NdParams {
@@ -84,33 +69,6 @@ fn strtoi(text: &str) -> i32 {
     let t = text.trim_start();
     let end = t.char_indices().find(|&(i, ch)| !(ch.is_ascii_digit() || (i == 0 && (ch == '-' || ch == '+')))).map_or(t.len(), |(i, _)| i);
     t[..end].parse::<i64>().map_or(0, |v| v.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32)
-}
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Mode {
-    Drive,
-    ChangeLane,
-}
-
-/// A NaturalDriver's state during a run.
-#[derive(Debug, Clone)]
-pub struct NaturalDriverRt {
-    pub active: bool,
-    pub p: NdParams,
-    current_speed: f64,
-    mode: Mode,
-    /// A lane change was injected and its cool-down runs.
-    pub lane_change_injected: bool,
-    cooldown: f64,
-    pub target_lane: i32,
-    /// Injected lane change waiting for the next frame to start (target lane, action name).
-    pending: Option<(i32, String)>,
-    /// The injected lane change in progress and its name.
-    lane_change: Option<(LaneChangeRt, String)>,
-    /// Injections so far (esmini numbers injected actions across the run).
-    pub injections: u32,
-    /// Yaw off the lane the lane change gave the entity this frame (kept by the driver's move).
-    action_yaw: f64,
 }
 
 impl NaturalDriverRt {

@@ -6,17 +6,6 @@
 use super::Kind;
 use crate::sim::Sim;
 
-/// A maneuver group whose actors are chosen when it starts.
-#[derive(Debug, Clone)]
-pub struct TriggeringActors {
-    /// The maneuver group's node.
-    pub group: usize,
-    /// The actors its Actors element lists.
-    pub listed: Vec<usize>,
-    /// Its private action slots.
-    pub slots: Vec<usize>,
-}
-
 impl Sim<'_> {
     /// Set the actors of maneuver group `mg` (just started) if it selects triggering entities.
     pub fn select_triggering_actors(&mut self, mg: usize) {

@@ -91,3 +91,14 @@ impl Node {
         }
     }
 }
+
+/// A maneuver group whose actors are chosen when it starts.
+#[derive(Debug, Clone)]
+pub struct TriggeringActors {
+    /// The maneuver group's node.
+    pub group: usize,
+    /// The actors its Actors element lists.
+    pub listed: Vec<usize>,
+    /// Its private action slots.
+    pub slots: Vec<usize>,
+}

@@ -1,0 +1,22 @@
+//! What a running LongitudinalDistanceAction remembers.
+
+use openscenario::CoordinateSystem;
+
+#[derive(Debug, Clone)]
+pub struct LongDistanceRt {
+    pub(super) target: usize,
+    /// Distance in m, or time gap in s when `time_gap`.
+    pub(super) value: f64,
+    pub(super) time_gap: bool,
+    pub(super) freespace: bool,
+    pub(super) continuous: bool,
+    pub(super) cs: CoordinateSystem,
+    /// +1 trailing (reference ahead), -1 leading.
+    pub(super) side: f64,
+    pub(super) max_acc: f64,
+    pub(super) max_dec: f64,
+    pub(super) max_acc_rate: f64,
+    pub(super) max_dec_rate: f64,
+    pub(super) max_speed: f64,
+    pub(super) acceleration: f64,
+}

@@ -1,0 +1,43 @@
+//! What a running SpeedAction remembers: its transition and target.
+
+use crate::dynamics::Transition;
+use crate::entities::Entity;
+
+#[derive(Debug, Clone)]
+pub enum Target {
+    Absolute(f64),
+    Relative { entity: usize, value: f64, factor: bool, continuous: bool },
+}
+
+impl Target {
+    /// The target now: a relative target follows the reference entity's current speed, also
+    /// when it is not continuous (esmini's LongSpeedAction::TargetRelative::GetValue).
+    pub(super) fn value(&self, entities: &[Entity]) -> f64 {
+        match *self {
+            Target::Absolute(v) => v,
+            Target::Relative { entity, value, factor, .. } => {
+                let ref_speed = entities.get(entity).map_or(0.0, |e| e.speed);
+                if factor {
+                    ref_speed * value
+                } else {
+                    ref_speed + value
+                }
+            }
+        }
+    }
+
+    pub(super) fn is_relative(&self) -> bool {
+        matches!(self, Target::Relative { .. })
+    }
+
+    pub(super) fn continuous(&self) -> bool {
+        matches!(self, Target::Relative { continuous: true, .. })
+    }
+}
+
+#[derive(Debug, Clone)]
+pub struct SpeedRt {
+    pub transition: Transition,
+    pub target: Target,
+    pub reached: bool,
+}

@@ -1,0 +1,44 @@
+//! What a running SynchronizeAction remembers: the master, both targets, the final speed and
+//! the phase of esmini's speed profile.
+
+use crate::positions::Placement;
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) enum Mode {
+    None,
+    NonLinear,
+    Linear,
+    Stopped,
+    StopImmediately,
+    Waiting,
+    SteadyState,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) enum Submode {
+    None,
+    Concave,
+    Convex,
+}
+
+#[derive(Debug, Clone, Copy)]
+pub(super) enum Final {
+    Absolute(f64),
+    Relative { value: f64, factor: bool },
+}
+
+#[derive(Debug, Clone)]
+pub struct SynchronizeRt {
+    pub(super) master: usize,
+    pub(super) target_master: Placement,
+    pub(super) target: Placement,
+    pub(super) final_speed: Option<Final>,
+    pub(super) steady_dist: Option<f64>,
+    pub(super) steady_time: Option<f64>,
+    pub(super) tolerance: f64,
+    pub(super) tolerance_master: f64,
+    pub(super) mode: Mode,
+    pub(super) submode: Submode,
+    pub(super) last_dist: f64,
+    pub(super) last_master_dist: f64,
+}

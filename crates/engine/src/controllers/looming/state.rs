@@ -1,0 +1,24 @@
+//! What a LoomingController remembers: its set speed and time gap, its vehicle model, the
+//! previous steering angles, the OSI points it has looked at.
+
+use crate::controllers::analog_vehicle::AnalogVehicle;
+use crate::controllers::looming_view::OsiMemo;
+
+#[derive(Debug, Clone)]
+pub struct LoomingRt {
+    pub active: bool,
+    pub(super) time_gap: f64,
+    pub(super) set_speed: f64,
+    pub(super) set_speed_given: bool,
+    pub(in crate::controllers) override_mode: bool,
+    /// An action moved the entity this step (seen before the default controller ran).
+    pub(in crate::controllers) moved_by_action: bool,
+    /// esmini's vehicle model the controller drives (set up when it is activated).
+    pub(super) vehicle: Option<AnalogVehicle>,
+    pub(super) prev_near: f64,
+    pub(super) prev_far: f64,
+    pub(super) steering: f64,
+    pub(super) osi: OsiMemo,
+    /// The last move ended at a road end (seen by the next step).
+    pub(super) end_of_road: bool,
+}

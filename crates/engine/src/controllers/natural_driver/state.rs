@@ -1,0 +1,49 @@
+//! What a NaturalDriver remembers: its IDM and MOBIL parameters, its mode and its lane changes.
+
+use crate::actions::lane_change::state::LaneChangeRt;
+
+/// The driver's parameters (esmini's defaults when a property is missing).
+#[derive(Debug, Clone)]
+pub struct NdParams {
+    pub desired_distance: f64,
+    pub desired_speed: f64,
+    pub lane_change_duration: f64,
+    pub lookahead: f64,
+    /// Comfortable deceleration, negative.
+    pub max_dec: f64,
+    pub max_acc: f64,
+    pub lane_change_delay: f64,
+    pub thw: f64,
+    pub max_imposed_braking: f64,
+    pub politeness: f64,
+    pub lane_change_acc_gain: f64,
+    /// The lane id the driver wants to be in.
+    pub route: i32,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Mode {
+    Drive,
+    ChangeLane,
+}
+
+/// A NaturalDriver's state during a run.
+#[derive(Debug, Clone)]
+pub struct NaturalDriverRt {
+    pub active: bool,
+    pub p: NdParams,
+    pub(super) current_speed: f64,
+    pub(super) mode: Mode,
+    /// A lane change was injected and its cool-down runs.
+    pub lane_change_injected: bool,
+    pub(super) cooldown: f64,
+    pub target_lane: i32,
+    /// Injected lane change waiting for the next frame to start (target lane, action name).
+    pub(super) pending: Option<(i32, String)>,
+    /// The injected lane change in progress and its name.
+    pub(super) lane_change: Option<(LaneChangeRt, String)>,
+    /// Injections so far (esmini numbers injected actions across the run).
+    pub injections: u32,
+    /// Yaw off the lane the lane change gave the entity this frame (kept by the driver's move).
+    pub(super) action_yaw: f64,
+}
