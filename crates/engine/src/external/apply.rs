@@ -187,10 +187,13 @@ impl<'a> Sim<'a> {
                     _ => None,
                 },
                 Input::Hold => {
-                    // where the step began (the scripted motion may have moved it meanwhile)
+                    // where the step began (the scripted motion may have moved it meanwhile),
+                    // standing: esmini derives the speed of an entity nobody set it for from
+                    // its displacement
                     if let Some(from) = d.start {
                         from.put(en);
                     }
+                    en.speed = 0.0;
                     None
                 }
             };

@@ -49,7 +49,7 @@ pub enum Input {
     /// Move on at the speed and heading of the last state given (esmini's UDP driver dead
     /// reckoning); stay like `Hold` when no state was given yet.
     DeadReckon,
-    /// Stay where it is, with the speed it has.
+    /// Stay where it is, standing (speed 0, as esmini derives it for an entity nobody moves).
     Hold,
 }
 
