@@ -227,4 +227,9 @@ fn esmini_overrides_the_actions_of_an_entity_driven_from_outside() {
         assert!(s.x == 50.0 && s.y == -1.75 && s.speed == 0.0, "at {t} s: {s:?}");
     }
     assert!(close(at(&run, "Target", 5.0).x, 225.0, 1e-9));
+    // the Init's teleport and speed, done before the activation, are not said to be overridden
+    let told = |element: &str| run.warnings.iter().any(|w| w.message.starts_with(&format!("{element} on `Ego`")));
+    assert!(told("SpeedAction") && told("LaneChangeAction") && told("TeleportAction"), "{:?}", run.warnings);
+    let init = |w: &&engine::Warning| w.message.contains("driven from outside") && w.line == 21;
+    assert_eq!(run.warnings.iter().filter(init).count(), 0, "{:?}", run.warnings);
 }

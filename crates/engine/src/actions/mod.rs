@@ -59,13 +59,13 @@ impl<'a> Sim<'a> {
     }
 
     /// The fate of private action `p` of slot `slot` on entity `e` (external/overridden.rs;
-    /// `Runs` unless `e` is driven from outside), warned once per slot.
-    fn overridden_on(&mut self, slot: usize, e: usize, p: &PrivateAction) -> Overridden {
+    /// `Runs` unless `e` is driven from outside), warned once per slot when `tell`.
+    fn overridden_on(&mut self, slot: usize, e: usize, p: &PrivateAction, tell: bool) -> Overridden {
         if !self.outside(e) {
             return Overridden::Runs;
         }
         let fate = overridden(p);
-        if let Some(note) = crate::external::overridden::note(fate, p.element_name(), self.entities.get(e).map_or("", |en| en.name.as_str())) {
+        if let Some(note) = crate::external::overridden::note(fate, p.element_name(), self.entities.get(e).map_or("", |en| en.name.as_str())).filter(|_| tell) {
             self.warn_action(slot, note);
         }
         fate
@@ -113,7 +113,7 @@ impl<'a> Sim<'a> {
     }
 
     fn start_private(&mut self, slot: usize, e: usize, p: &'a PrivateAction) -> ActionRt {
-        match self.overridden_on(slot, e, p) {
+        match self.overridden_on(slot, e, p, true) {
             Overridden::Idles => return ActionRt::Overridden,
             Overridden::Ignored => return ActionRt::Done,
             Overridden::Ends | Overridden::Runs => {}
@@ -227,9 +227,14 @@ impl<'a> Sim<'a> {
                 all_done = false;
                 continue;
             }
-            // An entity that became external while its action ran (external/overridden.rs).
-            if let ActionKind::Private(p) = &self.actions[slot].model.kind {
-                if self.overridden_on(slot, e, p) == Overridden::Idles {
+            // An entity that became external while its action ran (external/overridden.rs). An
+            // instance already done did what it did before, and a speed change whose
+            // transition is over loses nothing by ending: only the others are told.
+            let rt = &self.actions[slot].instances[k].rt;
+            let finished = matches!(rt, ActionRt::Done | ActionRt::EndedAtStart);
+            let cut_short = !finished && !matches!(rt, ActionRt::Speed(s) if s.transition.param >= s.transition.param_target);
+            if let (ActionKind::Private(p), false) = (&self.actions[slot].model.kind, finished) {
+                if self.overridden_on(slot, e, p, cut_short) == Overridden::Idles {
                     all_done = false;
                     continue;
                 }
