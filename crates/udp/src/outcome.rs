@@ -32,7 +32,8 @@ pub struct EntityReport {
     pub rejected: usize,
     /// Steps it was driven from outside without a new message.
     pub steps_without_message: usize,
-    /// Its state after each frame, from the Init frame on: (time s, state).
+    /// Its state after each frame from the one that activated its controller on (the Init
+    /// frame, or a step): (time s, state).
     #[serde(skip)]
     pub states: Vec<(f64, Sample)>,
 }

@@ -55,6 +55,7 @@ impl fmt::Display for Reason {
             }
             Reason::ObjectId { got, expected } => write!(f, "objectId {got}, expected {expected}"),
             Reason::NotFinite { field, value } => write!(f, "{field} is {value}, not a finite number"),
+            Reason::OutOfRange { field, value, min, max } if *max == std::f64::consts::FRAC_PI_2 && *min == -max => write!(f, "{field} is {value}, outside -pi/2..=pi/2"),
             Reason::OutOfRange { field, value, min, max } => write!(f, "{field} is {value}, outside {min}..={max}"),
             Reason::OutOfOrder { frame, newest } => write!(f, "frameNumber {frame} is older than frame {newest}, already accepted: out of order"),
             Reason::Receive { error } => write!(f, "the socket failed: {error}"),

@@ -168,12 +168,12 @@ pub fn serve(path: &Path, options: &ServeOptions, observer: &mut dyn Observer) -
                 }
             }
         }
+        server.follow_activations(&session, false)?;
         for (&index, link) in server.links.iter_mut() {
             if let (Some(s), true) = (session.state(index), link.endpoint.is_some()) {
                 link.report.states.push((session.time(), s));
             }
         }
-        server.follow_activations(&session, false)?;
         server.observer.stepped(session.time());
     }
 

@@ -100,6 +100,8 @@ pub struct Lockstep {
     scripts: BTreeMap<String, Vec<Vec<Vec<u8>>>>,
     cursor: BTreeMap<String, (u16, usize)>,
     pub listening: Vec<Listening>,
+    /// Frames run (the Init frame included) when each port opened.
+    pub opened_after: Vec<usize>,
     pub rejections: Vec<Rejection>,
     pub steps: usize,
 }
@@ -112,6 +114,7 @@ impl Lockstep {
             scripts: scripts.into_iter().map(|(n, s)| (n.to_string(), s)).collect(),
             cursor: BTreeMap::new(),
             listening: Vec::new(),
+            opened_after: Vec::new(),
             rejections: Vec::new(),
             steps: 0,
         }
@@ -120,6 +123,11 @@ impl Lockstep {
     /// One datagram per frame for `entity`.
     pub fn one_each(entity: &str, frames: Vec<Vec<u8>>) -> Lockstep {
         Lockstep::new(vec![(entity, frames.into_iter().map(|d| vec![d]).collect())])
+    }
+
+    /// The frames scripted for `entity`.
+    pub fn script(&self, entity: &str) -> Vec<Vec<Vec<u8>>> {
+        self.scripts.get(entity).cloned().unwrap_or_default()
     }
 
     fn send_next(&mut self, entity: &str) {
@@ -136,6 +144,7 @@ impl Lockstep {
 impl Observer for Lockstep {
     fn listening(&mut self, l: &Listening) {
         self.listening.push(l.clone());
+        self.opened_after.push(self.steps);
         self.cursor.insert(l.entity.clone(), (l.address.port(), 0));
         if l.at_init {
             self.send_next(&l.entity.clone());
