@@ -232,8 +232,8 @@ impl Server<'_> {
                 }
                 continue;
             }
-            let mut props_notes = Vec::new();
-            let props = read_properties(c, &mut props_notes).map_err(ServeError::Setup)?;
+            // (its notes were taken when the base port was read from every UDP driver)
+            let props = read_properties(c, &mut Vec::new()).map_err(ServeError::Setup)?;
             let object_id = object_id(&self.ids, &ext.name).ok_or_else(|| ServeError::Setup(format!("`{}` has no esmini object id", ext.name)))?;
             let link = self.links.entry(ext.index).or_insert_with(|| Link {
                 controller: c.clone(),
@@ -274,7 +274,6 @@ impl Server<'_> {
             let listening = Listening { entity: ext.name.clone(), object_id, address: endpoint.address, exec: props.exec, at_init };
             link.report.address = Some(endpoint.address.to_string());
             link.endpoint = Some(endpoint);
-            self.notes.extend(props_notes);
             self.observer.listening(&listening);
         }
         Ok(())

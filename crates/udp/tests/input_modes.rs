@@ -100,7 +100,7 @@ fn asynchronous_ports_take_the_newest_datagram_of_each_step() {
     let frames = (0..60).map(|k| vec![xyh(EGO, 2 * k, 500.0, -1.75, 0.0, 0.0, 0), xyh(EGO, 2 * k + 1, 90.0, -5.25, 0.1, 0.0, 0)]).collect();
     let mut script = Lockstep::new(vec![("Ego", frames)]);
     let outcome = run("asynchronous", 0.5, &mut script);
-    let last = outcome.entity("Ego").and_then(|e| e.states.last()).map(|(_, s)| s.clone()).expect("states");
+    let last = outcome.entity("Ego").and_then(|e| e.states.last()).map(|(_, s)| *s).expect("states");
     assert!(close(last.x, 90.0, 1e-9) && close(last.y, -5.25, 1e-9) && close(last.h, 0.1, 1e-12), "{last:?}");
     assert_eq!(last.road.map(|r| r.lane_id), Some(-2));
     let ego = outcome.entity("Ego").expect("served");
@@ -110,7 +110,7 @@ fn asynchronous_ports_take_the_newest_datagram_of_each_step() {
 
 #[test]
 fn asynchronous_ports_serve_every_input_mode_in_real_time() {
-    let last = |o: &Outcome| o.entity("Ego").and_then(|e| e.states.last()).map(|(_, s)| s.clone()).expect("states");
+    let last = |o: &Outcome| o.entity("Ego").and_then(|e| e.states.last()).map(|(_, s)| *s).expect("states");
     let async_run = |frame: Vec<u8>, pace: Pace| {
         let port = free_port();
         let mut o = options(&[("Port", port.to_string()), ("ExecMode", "asynchronous".into())], 0.3);

@@ -94,3 +94,50 @@ fn a_port_in_use_or_a_property_esmini_refuses_stops_the_run_before_it_starts() {
     let o = options(&[("Port", "70000".into())], 1.0);
     assert!(matches!(serve(&fixture("one_car.xosc"), &o, &mut udp::Silent), Err(ServeError::Setup(m)) if m.contains(r#"port "70000" is outside 0..=65535"#)));
 }
+
+#[test]
+fn esminis_controller_catalog_entry_is_served_with_its_port_and_base_port_parameters() {
+    let Some(shared) = testkit::shared_dir() else { return };
+    let catalogs = shared.join("corpus/esmini/xosc/Catalogs");
+    // esmini's two_cars_in_open_space.xosc, on the straight road: Car1's assignment sets the
+    // base port (the catalog passes BasePort as the `basePort` property)
+    let base = free_port_pair();
+    let car = std::fs::read_to_string(fixture("two_cars.xosc")).expect("fixture");
+    let vehicle = &car[car.find("<Vehicle ").expect("a vehicle")..car.find("</Vehicle>").expect("its end") + "</Vehicle>".len()];
+    let controller = |assignments: &str| format!(r#"<ObjectController><CatalogReference catalogName="ControllerCatalog" entryName="UDPDriverController"><ParameterAssignments>{assignments}</ParameterAssignments></CatalogReference></ObjectController>"#);
+    let init = |name: &str, lane: i32| format!(r#"<Private entityRef="{name}"><PrivateAction><TeleportAction><Position><LanePosition roadId="1" laneId="{lane}" offset="0" s="50"/></Position></TeleportAction></PrivateAction><PrivateAction><ControllerAction><ActivateControllerAction longitudinal="true" lateral="true"/></ControllerAction></PrivateAction></Private>"#);
+    let text = format!(
+        r#"<?xml version="1.0" encoding="UTF-8"?>
+<OpenSCENARIO><FileHeader revMajor="1" revMinor="3" date="2024-01-01T00:00:00" description="esmini's UDP driver catalog entry" author="osc2cr"/>
+<ParameterDeclarations/>
+<CatalogLocations><ControllerCatalog><Directory path="{}"/></ControllerCatalog></CatalogLocations>
+<RoadNetwork><LogicFile filepath="{}"/></RoadNetwork>
+<Entities>
+<ScenarioObject name="Car0">{vehicle}{}</ScenarioObject>
+<ScenarioObject name="Car1">{vehicle}{}</ScenarioObject>
+</Entities>
+<Storyboard><Init><Actions>{}{}</Actions></Init><StopTrigger/></Storyboard>
+</OpenSCENARIO>"#,
+        catalogs.join("Controllers").display(),
+        fixture("straight.xodr").display(),
+        controller(r#"<ParameterAssignment parameterRef="Port" value="0"/><ParameterAssignment parameterRef="ExecMode" value="synchronous"/>"#),
+        controller(&format!(r#"<ParameterAssignment parameterRef="Port" value="0"/><ParameterAssignment parameterRef="BasePort" value="{base}"/><ParameterAssignment parameterRef="ExecMode" value="synchronous"/>"#)),
+        init("Car0", -1),
+        init("Car1", -2),
+    );
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("udp-catalog");
+    std::fs::create_dir_all(&dir).expect("dir");
+    let path = dir.join("two_cars_catalog.xosc");
+    std::fs::write(&path, text).expect("written");
+    let mut client = Lockstep::new(vec![
+        ("Car0", (0..=10u32).map(|k| vec![xyh(0, k, 70.0, -1.75, 0.0, 0.0, 0)]).collect()),
+        ("Car1", (0..=10u32).map(|k| vec![xyh(1, k, 80.0, -5.25, 0.0, 0.0, 0)]).collect()),
+    ]);
+    let mut o = options(&[], 0.1);
+    o.convert.parameters.clear();
+    let outcome = serve(&path, &o, &mut client).expect("serves");
+    assert_eq!((port_of(&client, "Car0"), port_of(&client, "Car1")), (base, base + 1));
+    assert!(client.listening.iter().all(|l| l.exec == udp::ExecMode::Synchronous));
+    assert!(client.rejections.is_empty(), "{:?}", client.rejections);
+    assert!(close(last_x(&outcome, "Car0"), 70.0, 1e-9) && close(last_x(&outcome, "Car1"), 80.0, 1e-9));
+}

@@ -23,8 +23,8 @@ pub fn fixture(name: &str) -> PathBuf {
 pub fn options(params: &[(&str, String)], duration: f64) -> ServeOptions {
     let mut o = ServeOptions { pace: Some(Pace::AsFastAsPossible), ..ServeOptions::default() };
     o.convert.max_time = duration;
-    o.convert.parameters.push(("Duration".into(), "1000".into()));
     o.convert.parameters = params.iter().map(|(n, v)| (n.to_string(), v.clone())).collect();
+    o.convert.parameters.push(("Duration".into(), "1000".into()));
     o
 }
 
@@ -165,7 +165,7 @@ impl Observer for Lockstep {
 /// The state of `entity` at time `t` in a served run.
 pub fn at(outcome: &udp::Outcome, entity: &str, t: f64) -> engine::Sample {
     let e = outcome.entity(entity).unwrap_or_else(|| panic!("{entity} was not served"));
-    e.states.iter().find(|(time, _)| (time - t).abs() < 1e-9).map(|(_, s)| s.clone()).unwrap_or_else(|| panic!("no state of {entity} at {t}"))
+    e.states.iter().find(|(time, _)| (time - t).abs() < 1e-9).map(|(_, s)| *s).unwrap_or_else(|| panic!("no state of {entity} at {t}"))
 }
 
 pub fn close(a: f64, b: f64, tol: f64) -> bool {
