@@ -8,6 +8,7 @@ mod convert_cmd;
 mod inspect;
 mod map_cmd;
 mod render_cmd;
+mod serve_cmd;
 mod simulate;
 
 use clap::{Parser, Subcommand};
@@ -39,6 +40,10 @@ enum Command {
     /// Report what is wrong with OpenSCENARIO files without converting them: every finding with
     /// severity and file:line:col (exit 2 when there is an error).
     Check(check_cmd::CheckArgs),
+    /// Run a scenario whose UDPDriverController entities are driven over UDP by esmini clients
+    /// (--udp), then write the run as CommonRoad.
+    #[command(long_about = serve_cmd::ABOUT)]
+    Serve(Box<serve_cmd::ServeArgs>),
 }
 
 /// A failed command: the message for the user and the exit status.
@@ -63,6 +68,7 @@ fn main() -> ExitCode {
         Command::Simulate(args) => simulate::run(args),
         Command::Render(args) => render_cmd::run(args),
         Command::Check(args) => check_cmd::run(args),
+        Command::Serve(args) => serve_cmd::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -85,6 +85,14 @@ fn dead_reckoning_goes_on_and_hold_stays() {
     });
     assert!(close(at(&run, "Ego", 1.0).x, 60.0, 1e-12));
     assert!(close(at(&run, "Ego", 2.0).x, 68.0, 1e-9), "{:?}", at(&run, "Ego", 2.0));
+    // backwards: esmini derives a dead-reckoned entity's speed from its displacement
+    let run = drive(&scenario(""), &External::named(["Ego"]), |t, _| {
+        let input = if t < 1.0 + 1e-9 { Input::State(ExternalState::new(60.0, -1.75, 0.0, -8.0)) } else { Input::DeadReckon };
+        vec![(EGO, input)]
+    });
+    assert_eq!(at(&run, "Ego", 1.0).speed, -8.0);
+    let s = at(&run, "Ego", 2.0);
+    assert!(close(s.x, 52.0, 1e-9) && s.speed == 8.0, "{s:?}");
     let run = drive(&scenario(""), &External::named(["Ego"]), |_, _| vec![(EGO, Input::Hold)]);
     // where Init put it, standing
     let s = at(&run, "Ego", 3.0);

@@ -172,13 +172,14 @@ impl<'a> Sim<'a> {
                     Some((car.x, car.y, road_z(None, en.z), car.h, car.speed))
                 }
                 // ControllerUDPDriver::Step: on at the last message's speed and heading, the
-                // heading that of the vehicle model
+                // heading that of the vehicle model. Nothing gives the entity a speed there, so
+                // esmini derives it from the displacement (prepareGroundTruth): never negative.
                 Input::DeadReckon => match (d.last_state.filter(|_| dt > SMALL), d.start) {
                     (Some(l), Some(from)) => {
                         from.put(en);
                         let (x, y) = (en.x + l.speed * dt * l.h.cos(), en.y + l.speed * dt * l.h.sin());
                         let z = if l.z_given { Some(en.z) } else { road_z(None, en.z) };
-                        Some((x, y, z, d.vehicle.car.h, en.speed))
+                        Some((x, y, z, d.vehicle.car.h, l.speed.abs()))
                     }
                     (None, Some(from)) => {
                         from.put(en);
