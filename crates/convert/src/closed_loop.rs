@@ -185,7 +185,7 @@ impl ClosedLoop {
     /// the run gone this way, and the model they serialise.
     pub fn finish(&self) -> (Conversion, Option<Model>) {
         let mut warnings = self.warnings.clone();
-        let mut timings = self.timings.clone();
+        let mut timings = self.timings;
         let mut facts = Facts::default();
         let run = self.session.with_dependent(|_, sim| sim.run_so_far());
         warnings.extend(run.warnings.iter().map(|w| StageWarning { stage: Stage::Engine, message: w.to_string() }));

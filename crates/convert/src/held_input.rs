@@ -16,7 +16,9 @@ use crate::angle::wrap_angle;
 /// steps' duration, s. Step `n` gets `input` itself.
 pub(crate) fn substep(input: &Input, from: Option<&Sample>, j: usize, n: usize, span: f64) -> Input {
     let (Input::State(to), Some(from)) = (input, from) else { return *input };
-    if j >= n {
+    // the last step, and a wrong state (the engine's check names the wrong number, which
+    // the poses in between would spread to the others)
+    if j >= n || input.check().is_err() {
         return *input;
     }
     let t = j as f64 / n as f64;
@@ -61,6 +63,9 @@ mod tests {
         let from = sample(0.0, 0.0, 0.0, 30.0);
         assert_eq!(substep(&to, Some(&from), 10, 10, 0.1), to);
         assert_eq!(substep(&to, None, 3, 10, 0.1), to, "nowhere to start from: the state itself");
+        let wrong = Input::State(ExternalState::new(3.0, 0.0, f64::NAN, 30.0));
+        // (NaN is not equal to itself: compare the printed values)
+        assert_eq!(format!("{:?}", substep(&wrong, Some(&from), 3, 10, 0.1)), format!("{wrong:?}"), "as given, for the engine to refuse");
         for held in [Input::Hold, Input::DeadReckon, Input::Driver(engine::DriverInput { throttle: 0.5, brake: 0.0, steering: 0.1 })] {
             assert_eq!(substep(&held, Some(&from), 4, 10, 0.1), held);
         }
