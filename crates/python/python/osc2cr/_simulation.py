@@ -312,7 +312,8 @@ class Simulation:
 
     def step(self, inputs: Mapping[str, InputLike] | None = None) -> Observation | None:
         """Advances one CommonRoad time step with an input for every entity driven from
-        outside now (by name; see the module docstring for the forms). Returns the observation
+        outside now (by name; see the module docstring for the forms); the last step of a run
+        ends early if the storyboard's stop trigger fires within it. Returns the observation
         after it when one is due (every ``observe_every``-th time step, and when the run ends),
         else None. A wrong input raises ``ValueError``/``TypeError`` naming it, and the step
         is not run; stepping a run that is over raises ``RuntimeError``."""
@@ -343,8 +344,9 @@ class Simulation:
 
     @property
     def time_step(self) -> int:
-        """CommonRoad time step of the current time."""
-        return round(self._session.time / self._session.dt)
+        """The CommonRoad time step of the current time (the last one at or before it: the
+        run's last step ends where the stop trigger fires, which may be between two)."""
+        return math.floor(self._session.time / self._session.dt + 1e-6)
 
     @property
     def dt(self) -> float:

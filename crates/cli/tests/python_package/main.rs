@@ -2,7 +2,9 @@
 //! and installs it into a fresh virtual environment with commonroad-io 2024.3; converted
 //! corpus scenarios come back as commonroad-io objects (and through the 2026.1 reader too),
 //! errors as `osc2cr.ConversionError` with file, line and column, variations as a stream; and
-//! the Dask example on two workers writes the very files `osc2cr convert` writes.
+//! the Dask example on two workers writes the very files `osc2cr convert` writes. Closed loop
+//! (`osc2cr.Simulation`, `osc2cr.gym`): `closed_loop.rs`; the example a planner author copies,
+//! with CommonRoad's tools: `closed_loop_example.rs`.
 //!
 //! The environment (`target/py/osc2cr-test`) is kept between runs and remade when its
 //! requirements change; the wheel is rebuilt every run in this run's own target directory
@@ -13,8 +15,11 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 use std::sync::OnceLock;
 
+mod closed_loop;
+mod closed_loop_example;
+
 /// What the test environment holds besides the package (a change remakes the environment).
-const REQUIREMENTS: &str = "maturin>=1.7,<2\ncommonroad-io==2024.3\ndask==2026.8.0\ndistributed==2026.8.0\n";
+const REQUIREMENTS: &str = "maturin>=1.7,<2\ncommonroad-io==2024.3\ndask==2026.8.0\ndistributed==2026.8.0\ngymnasium==1.4.0\n";
 
 struct Env {
     /// Interpreter of the fresh environment (commonroad-io 2024.3, dask, osc2cr).
