@@ -4,7 +4,7 @@
 //! `osc2cr.ConversionError` with file, line and column on failure. Conversions run with the
 //! GIL released, so Python threads (a Dask worker's, for one) convert in parallel.
 //! `closed_loop`: a scenario stepped from Python (`osc2cr.Simulation`), its inputs
-//! (`inputs`), pictures of the run with `render`; `benchmark`: the batch engine's speed for
+//! (`inputs`), pictures of the run with `render`; `benchmark`: the engine's speed in Rust for
 //! the closed-loop benchmark to compare with.
 //!
 //! It owns only the mapping between Python values and the API of `convert` (and `render`):
@@ -96,7 +96,7 @@ fn _osc2cr(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(option_names, m)?)?;
     m.add_class::<Variations>()?;
     m.add_class::<Session>()?;
-    m.add_function(wrap_pyfunction!(benchmark::batch_engine_timing, m)?)?;
+    m.add_function(wrap_pyfunction!(benchmark::engine_timing, m)?)?;
     m.add("STATE_COLUMNS", closed_loop::STATE_COLUMNS)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())

@@ -73,6 +73,6 @@ class Session:
         self, time: float | None = None, width: int = 640, follow: str | None = None
     ) -> tuple[int, int, bytes]: ...
 
-def batch_engine_timing(
-    path: str | PathLike[str], runs: int = 5, **options: Any
+def engine_timing(
+    path: str | PathLike[str], runs: int = 5, replay: bool = False, **options: Any
 ) -> tuple[int, list[float]]: ...

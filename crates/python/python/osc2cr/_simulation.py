@@ -339,8 +339,8 @@ class Simulation:
 
     @property
     def time(self) -> float:
-        """Simulated time, s."""
-        return self._session.time
+        """Simulated time, s (to the nanosecond: the engine's sum of steps)."""
+        return round(self._session.time, 9)
 
     @property
     def time_step(self) -> int:
@@ -391,7 +391,7 @@ class Simulation:
     @property
     def events(self) -> list[Event]:
         """The storyboard's state transitions so far."""
-        self._events.extend(Event(*e) for e in self._session.events(len(self._events)))
+        self._events.extend(Event(round(t, 9), *rest) for t, *rest in self._session.events(len(self._events)))
         return list(self._events)
 
     def event_start(self, element: str) -> float | None:
@@ -473,7 +473,7 @@ class Simulation:
                 oid, kind, shape = template
                 obstacles.append(DynamicObstacle(oid, kind, shape, state))
         return Observation(
-            time=session.time,
+            time=self.time,
             time_step=k,
             ego=ego,
             obstacles=obstacles,
