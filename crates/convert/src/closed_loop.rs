@@ -81,6 +81,9 @@ impl ClosedLoop {
     /// run. `Ok(false)` once the run is over (it may end before the last of the steps).
     pub fn step_held(&mut self, inputs: &[(usize, Input)], steps: usize) -> Result<bool, Failure> {
         let n = steps.max(1);
+        if n == 1 {
+            return self.step_with(inputs);
+        }
         let span = n as f64 * self.options.step;
         let from: Vec<Option<Sample>> = inputs.iter().map(|(e, _)| self.state(*e)).collect();
         let mut now = Vec::with_capacity(inputs.len());
@@ -134,11 +137,6 @@ impl ClosedLoop {
     /// What loading the scenario and converting its map said.
     pub fn warnings(&self) -> &[StageWarning] {
         &self.warnings
-    }
-
-    /// Warnings of the run so far.
-    pub fn engine_warnings(&self) -> Vec<String> {
-        self.session.with_dependent(|_, sim| sim.warnings().iter().map(ToString::to_string).collect())
     }
 
     /// Simulated time of the newest state, s.

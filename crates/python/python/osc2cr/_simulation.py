@@ -530,7 +530,7 @@ class Simulation:
         return self._session.rgba(time, width, follow)
 
     def close(self) -> None:
-        """Releases the run (a closed simulation cannot be stepped or reset)."""
+        """Releases the run: until :meth:`reset` starts it again, nothing else can be asked."""
         self._native = None
 
     def __enter__(self) -> Simulation:
