@@ -333,7 +333,7 @@ fn observations_come_every_n_steps_and_at_the_end() {
     let at: Vec<u64> = seen.iter().map(|s| s[1].as_u64().expect("step count")).collect();
     // every fifth step, and the last (the stop trigger ends cut-in within its 218th step)
     let mut expected: Vec<u64> = (5..=steps).step_by(5).collect();
-    if steps % 5 != 0 {
+    if !steps.is_multiple_of(5) {
         expected.push(steps);
     }
     assert_eq!(at, expected, "{got}");
