@@ -9,6 +9,13 @@ pub fn box_center(x: f64, y: f64, h: f64, cx: f64, cy: f64) -> (f64, f64) {
     (x + c * cx - s * cy, y + s * cx + c * cy)
 }
 
+/// The inverse of [`box_center`]: the reference point of an entity whose box centre is at
+/// `(x, y)` with heading `h` (a CommonRoad position back to an OpenSCENARIO one).
+pub fn reference_point(x: f64, y: f64, h: f64, cx: f64, cy: f64) -> (f64, f64) {
+    let (s, c) = h.sin_cos();
+    (x - (c * cx - s * cy), y - (s * cx + c * cy))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -26,5 +33,14 @@ mod tests {
         // heading 45°: the offset (1, 0) moves by (√½, √½)
         let (x, y) = box_center(0.0, 0.0, FRAC_PI_2 / 2.0, 1.0, 0.0);
         assert!((x - 0.5f64.sqrt()).abs() < 1e-12 && (y - 0.5f64.sqrt()).abs() < 1e-12);
+    }
+
+    #[test]
+    fn reference_point_undoes_box_center() {
+        for (h, cx, cy) in [(0.3, 1.4, 0.0), (-2.9, 2.1, -0.4), (FRAC_PI_2, 0.0, 0.7)] {
+            let (x, y) = box_center(12.5, -3.0, h, cx, cy);
+            let (rx, ry) = reference_point(x, y, h, cx, cy);
+            assert!((rx - 12.5).abs() < 1e-12 && (ry + 3.0).abs() < 1e-12, "{h} {cx} {cy}: {rx} {ry}");
+        }
     }
 }

@@ -4,7 +4,9 @@
 //! checks as a conversion of the file (`finish`), the ego's trajectory being the one driven
 //! (the ego is the first external entity when it moves, unless the options name another).
 //! The session owns the scenario and road network its run borrows (self_cell), so a Python
-//! object or a server can hold it.
+//! object or a server can hold it. `step_held` holds one input over several engine steps (a
+//! CommonRoad time step, `held_input.rs`); `open_loop` converts the same scenario as the batch
+//! does, for what a closed-loop client compares with (its planning problem, its obstacle ids).
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -12,8 +14,10 @@ use std::time::Instant;
 use engine::{External, ExternalEntity, Input, RunControl, Sample, Settings, Simulation, StoryboardEvent};
 
 use crate::ego::EgoChoice;
+use crate::held_input::substep;
 use crate::options::ConvertOptions;
 use crate::pipeline::{finish, prepare, Conversion, Facts, Model, Prepared, Request};
+use crate::stages::run_engine;
 use crate::report::{Failure, Stage, StageWarning, Timings};
 use crate::single::{batch_name, batch_source};
 
@@ -69,6 +73,72 @@ impl ClosedLoop {
         self.session.with_dependent_mut(|_, sim| sim.step_with(inputs)).map_err(engine_failure)
     }
 
+    /// Runs `steps` engine steps with each input held over them (`held_input.rs`): driver
+    /// input, hold and dead reckoning at every step, a state reached at the last one through
+    /// interpolated poses. An entity whose controller makes it external during these steps
+    /// dead-reckons (holds, without a state given) until the caller's next call. Inputs are
+    /// checked at the first step: a wrong one is an `Engine` failure naming it and no step is
+    /// run. `Ok(false)` once the run is over (it may end before the last of the steps).
+    pub fn step_held(&mut self, inputs: &[(usize, Input)], steps: usize) -> Result<bool, Failure> {
+        let n = steps.max(1);
+        if n == 1 {
+            return self.step_with(inputs);
+        }
+        let span = n as f64 * self.options.step;
+        let from: Vec<Option<Sample>> = inputs.iter().map(|(e, _)| self.state(*e)).collect();
+        let mut now = Vec::with_capacity(inputs.len());
+        for j in 1..=n {
+            now.clear();
+            now.extend(inputs.iter().zip(&from).map(|((e, input), s)| (*e, substep(input, s.as_ref(), j, n, span))));
+            let stepped = match self.step_with(&now) {
+                Err(_) if j > 1 => {
+                    // an entity became external after the first step: it dead-reckons
+                    for x in self.external() {
+                        if x.active && !now.iter().any(|(e, _)| *e == x.index) {
+                            now.push((x.index, Input::DeadReckon));
+                        }
+                    }
+                    self.step_with(&now)?
+                }
+                other => other?,
+            };
+            if !stepped {
+                return Ok(false);
+            }
+        }
+        Ok(!self.is_over())
+    }
+
+    /// The batch conversion of the same scenario with the same options (the ego the entity
+    /// this session's conversion makes the ego), run on the scenario and map already loaded:
+    /// what the run would have been with nobody driving from outside.
+    pub fn open_loop(&self) -> (Conversion, Option<Model>) {
+        let mut warnings = self.warnings.clone();
+        let mut timings = self.timings;
+        let mut facts = Facts::default();
+        let prepared = self.session.borrow_owner();
+        let started = Instant::now();
+        let built = run_engine(&prepared.scenario, prepared.road.as_ref(), &self.options)
+            .map_err(engine_failure)
+            .and_then(|run| {
+                warnings.extend(run.warnings.iter().map(|w| StageWarning { stage: Stage::Engine, message: w.clone() }));
+                let name = batch_name(&self.path);
+                let request = Request { path: &self.path, name: &name, config: 1, parameters: &[], source: batch_source(&self.path, None) };
+                finish(prepared, prepared.lanelets.clone(), &request, &self.options, &run.trace, started, &mut warnings, &mut timings, &mut facts)
+            });
+        let mut model = None;
+        let result = built.map(|(bytes, m)| {
+            model = Some(m);
+            bytes
+        });
+        (Conversion { result, warnings, timings, facts }, model)
+    }
+
+    /// What loading the scenario and converting its map said.
+    pub fn warnings(&self) -> &[StageWarning] {
+        &self.warnings
+    }
+
     /// Simulated time of the newest state, s.
     pub fn time(&self) -> f64 {
         self.session.with_dependent(|_, sim| sim.time())
@@ -113,7 +183,7 @@ impl ClosedLoop {
     /// the run gone this way, and the model they serialise.
     pub fn finish(&self) -> (Conversion, Option<Model>) {
         let mut warnings = self.warnings.clone();
-        let mut timings = self.timings.clone();
+        let mut timings = self.timings;
         let mut facts = Facts::default();
         let run = self.session.with_dependent(|_, sim| sim.run_so_far());
         warnings.extend(run.warnings.iter().map(|w| StageWarning { stage: Stage::Engine, message: w.to_string() }));

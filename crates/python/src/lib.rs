@@ -3,11 +3,18 @@
 //! text, parameter dicts, warnings as (stage, message) pairs — and raises
 //! `osc2cr.ConversionError` with file, line and column on failure. Conversions run with the
 //! GIL released, so Python threads (a Dask worker's, for one) convert in parallel.
+//! `closed_loop`: a scenario stepped from Python (`osc2cr.Simulation`), its inputs
+//! (`inputs`), pictures of the run with `render`; `benchmark`: the engine's speed in Rust for
+//! the closed-loop benchmark to compare with.
 //!
-//! It owns only the mapping between Python values and `convert`'s API: it knows nothing of
-//! commonroad-io (the Python side reads the XML with it) and does no conversion itself.
+//! It owns only the mapping between Python values and the API of `convert` (and `render`):
+//! it knows nothing of commonroad-io (the Python side reads the XML and builds observations
+//! with it) and does no conversion or simulation itself.
 
+mod benchmark;
+mod closed_loop;
 mod errors;
+mod inputs;
 mod options;
 mod variations;
 
@@ -16,6 +23,7 @@ use std::path::PathBuf;
 use convert::{Conversion, FileKind};
 use pyo3::prelude::*;
 
+pub use closed_loop::Session;
 pub use variations::Variations;
 
 /// (XML text, [(stage, warning message)]) of a successful conversion.
@@ -87,6 +95,9 @@ fn _osc2cr(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(variations::variations, m)?)?;
     m.add_function(wrap_pyfunction!(option_names, m)?)?;
     m.add_class::<Variations>()?;
+    m.add_class::<Session>()?;
+    m.add_function(wrap_pyfunction!(benchmark::engine_timing, m)?)?;
+    m.add("STATE_COLUMNS", closed_loop::STATE_COLUMNS)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

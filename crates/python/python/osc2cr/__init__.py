@@ -6,6 +6,15 @@
     for v in osc2cr.variations("cut-in_parameter_set.xosc"):    # lazy: one at a time
         print(v.index, v.parameters, len(v.xml))
 
+    sim = osc2cr.Simulation("cut-in.xosc", external=["Ego"])   # closed loop
+    obs = sim.reset()                                           # commonroad-io objects
+    while not sim.done:
+        obs = sim.step({"Ego": my_planner(obs)})                # a state or DriverInput
+    scenario, problems = sim.to_commonroad()                    # the run as driven
+
+:class:`Simulation` (closed loop) is described in its docstring and in ``osc2cr._simulation``;
+``osc2cr.gym`` wraps it as a Gymnasium environment (``pip install osc2cr[gym]``).
+
 Options (keyword arguments of every function) are ``osc2cr convert``'s long options with
 ``_`` for ``-``; an option left out (or None) keeps the CLI's default:
 
@@ -36,6 +45,7 @@ from typing import TYPE_CHECKING, NamedTuple, Union
 
 from . import _osc2cr
 from ._errors import ConversionError, ConversionWarning
+from ._simulation import STATE_COLUMNS, DriverInput, EntityState, Event, Observation, Simulation
 
 if TYPE_CHECKING:
     import datetime
@@ -73,8 +83,14 @@ if TYPE_CHECKING:
 
 
 __all__ = [
+    "STATE_COLUMNS",
     "ConversionError",
     "ConversionWarning",
+    "DriverInput",
+    "EntityState",
+    "Event",
+    "Observation",
+    "Simulation",
     "Variation",
     "convert",
     "convert_to_xml",
@@ -172,9 +188,11 @@ def output_name(path: PathLike, index: int | None = None) -> str:
     return f"{stem}.xml" if index is None else f"{stem}_{index}.xml"
 
 
-def read_xml(xml: str) -> tuple[Scenario, PlanningProblemSet]:
+def read_xml(xml: str, lanelet_assignment: bool = False) -> tuple[Scenario, PlanningProblemSet]:
     """Reads CommonRoad XML text with the installed commonroad-io, whichever reader API it
-    has (2024.x: ``CommonRoadFileReader(path)``; 2026.x: ``CommonRoadFileReader(filename_2020a=path)``)."""
+    has (2024.x: ``CommonRoadFileReader(path)``; 2026.x: ``CommonRoadFileReader(filename_2020a=path)``).
+    ``lanelet_assignment``: commonroad-io assigns every obstacle state to its lanelets (what
+    e.g. commonroad-crime's measures need)."""
     try:
         from commonroad.common.file_reader import CommonRoadFileReader
     except ImportError as e:  # pragma: no cover - depends on the environment
@@ -190,6 +208,6 @@ def read_xml(xml: str) -> tuple[Scenario, PlanningProblemSet]:
             reader = CommonRoadFileReader(filename_2020a=tmp)
         else:
             reader = CommonRoadFileReader(tmp)
-        return reader.open()
+        return reader.open(lanelet_assignment=lanelet_assignment)
     finally:
         os.unlink(tmp)

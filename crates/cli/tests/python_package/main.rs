@@ -2,7 +2,9 @@
 //! and installs it into a fresh virtual environment with commonroad-io 2024.3; converted
 //! corpus scenarios come back as commonroad-io objects (and through the 2026.1 reader too),
 //! errors as `osc2cr.ConversionError` with file, line and column, variations as a stream; and
-//! the Dask example on two workers writes the very files `osc2cr convert` writes.
+//! the Dask example on two workers writes the very files `osc2cr convert` writes. Closed loop
+//! (`osc2cr.Simulation`, `osc2cr.gym`): `closed_loop.rs`; the example a planner author copies,
+//! with CommonRoad's tools: `closed_loop_example.rs`.
 //!
 //! The environment (`target/py/osc2cr-test`) is kept between runs and remade when its
 //! requirements change; the wheel is rebuilt every run in this run's own target directory
@@ -13,8 +15,11 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 use std::sync::OnceLock;
 
+mod closed_loop;
+mod closed_loop_example;
+
 /// What the test environment holds besides the package (a change remakes the environment).
-const REQUIREMENTS: &str = "maturin>=1.7,<2\ncommonroad-io==2024.3\ndask==2026.8.0\ndistributed==2026.8.0\n";
+const REQUIREMENTS: &str = "maturin>=1.7,<2\ncommonroad-io==2024.3\ndask==2026.8.0\ndistributed==2026.8.0\ngymnasium==1.4.0\n";
 
 struct Env {
     /// Interpreter of the fresh environment (commonroad-io 2024.3, dask, osc2cr).
@@ -326,10 +331,10 @@ fn the_dask_example_on_two_workers_writes_the_cli_files() {
     }
 }
 
-/// The ```python block of the README's "Python" section, as a user would copy it.
-fn readme_python_example() -> String {
+/// The first ```python block of the README's section `heading`, as a user would copy it.
+fn readme_example(heading: &str) -> String {
     let readme = std::fs::read_to_string(testkit::workspace_root().join("README.md")).expect("README");
-    let section = readme.split("\n## Python").nth(1).expect("a Python section");
+    let section = readme.split(&format!("\n## {heading}\n")).nth(1).unwrap_or_else(|| panic!("a section {heading}"));
     let block = section.split("```python\n").nth(1).expect("a python block");
     block.split("\n```").next().expect("closed").to_string()
 }
@@ -370,7 +375,7 @@ fn the_wheel_installs_without_rust_and_runs_the_readme_example() {
     }
     let script = format!(
         "import shutil\nassert shutil.which('cargo') is None and shutil.which('rustc') is None, 'Rust on PATH'\n{}\nprint('example ran', len(scenario.dynamic_obstacles), len(xml) > 0)\n",
-        readme_python_example()
+        readme_example("Python")
     );
     let out = Command::new(bin.join("python"))
         .arg("-c")
@@ -390,4 +395,24 @@ fn the_wheel_installs_without_rust_and_runs_the_readme_example() {
         let text = std::fs::read_to_string(&f).unwrap_or_else(|e| panic!("{}: {e}", f.display()));
         assert!(text.contains("<commonRoad"), "{}", f.display());
     }
+}
+
+#[test]
+fn the_readme_closed_loop_example_runs() {
+    let Some(env) = env() else { return };
+    let work = tmp("readme-closed-loop");
+    std::fs::create_dir_all(work.join("examples")).expect("mkdir");
+    for f in ["cut_in.xosc", "two_lane_curve.xodr"] {
+        std::fs::copy(testkit::workspace_root().join("examples").join(f), work.join("examples").join(f)).expect("copy example");
+    }
+    let script = format!("import warnings, osc2cr\nwarnings.simplefilter('ignore', osc2cr.ConversionWarning)\n{}\n", readme_example("Closed loop from Python"));
+    let out = Command::new(&env.python).arg("-c").arg(&script).current_dir(&work).output().expect("python runs");
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "the README's closed-loop example failed:\n{stdout}{}", String::from_utf8_lossy(&out.stderr));
+    // the CutIn event started, and the three road users are in the output
+    let printed: Vec<&str> = stdout.split_whitespace().collect();
+    assert!(printed.first().and_then(|t| t.parse::<f64>().ok()).is_some_and(|t| t > 0.0), "{stdout}");
+    assert_eq!(printed.get(1), Some(&"3"), "{stdout}");
+    let gif = std::fs::read(work.join("run.gif")).expect("run.gif written");
+    assert!(gif.starts_with(b"GIF89a"), "not a GIF");
 }
