@@ -78,6 +78,7 @@ mod intersection;
 mod lanelet;
 mod obstacle;
 mod planning;
+pub mod protobuf;
 mod scenario;
 mod sign_ids;
 mod str_enum;
@@ -90,7 +91,7 @@ pub use error::ModelError;
 pub use geometry::{
     AbsoluteShape, Circle, PlacedCircle, PlacedRectangle, Point, Polygon, Rectangle, Shape,
 };
-pub use header::{BenchmarkId, Date, GeoTransformation, Header, Location};
+pub use header::{BenchmarkId, BenchmarkIdParts, Date, GeoTransformation, Header, Location};
 pub use ids::{
     IdAllocator, IncomingId, IntersectionId, LaneletId, ObstacleId, PlanningProblemId,
     TrafficLightId, TrafficSignId,
