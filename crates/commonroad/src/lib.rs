@@ -1,6 +1,7 @@
 //! `commonroad` — a model of a CommonRoad 2020a scenario (header, location, tags, lanelet
 //! network, traffic signs and lights, intersections, static/dynamic/environment obstacles,
-//! planning problems) and its XML writer.
+//! planning problems), its XML writer, and the writer of the CommonRoad 2024 format
+//! ([`protobuf`]: map, scenario and dynamic files, the map named by its content).
 //!
 //! It owns the output format and its traps (see `../shared/COMMONROAD.md`): the types make
 //! invalid files hard to build (equal bound point counts, per-element obstacle types, one
