@@ -21,9 +21,9 @@ pub struct ConvertArgs {
     #[arg(short, long, value_name = "OUT_DIR")]
     pub output: PathBuf,
     /// CommonRoad format: 2020a (one XML file per scenario, what most tools read) or 2024
-    /// (protobuf, commonroad-io 2024.x and later: per scenario NAME-SC.pb with the planning
-    /// problems and NAME.pb with the obstacles, and one map file per distinct lanelet network,
-    /// OUT_DIR/<map id>.pb, written once and shared — for parameter sweeps).
+    /// (protobuf, read by commonroad-io 2026's three-file reader: per scenario NAME-SC.pb with
+    /// the planning problems and NAME.pb with the obstacles, and one map file per distinct
+    /// lanelet network, OUT_DIR/<map id>.pb, written once and shared — for parameter sweeps).
     #[arg(long, default_value = "2020a", value_name = "2020a|2024")]
     pub format: OutputFormat,
     /// CommonRoad time step, s.
@@ -81,7 +81,8 @@ pub struct ConvertArgs {
     /// today, so the same input gives the same bytes).
     #[arg(long, value_parser = convert::parse_date)]
     pub date: Option<commonroad::Date>,
-    /// Most variations converted per parameter distribution file.
+    /// Most variations converted per parameter distribution file (for a whole sweep, its
+    /// number of variations or more).
     #[arg(long, default_value_t = 100)]
     pub max_variations: u64,
     /// Largest distance between a lanelet bound and the exact lane border, m (default: the
