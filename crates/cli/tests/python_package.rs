@@ -340,37 +340,44 @@ fn errors_carry_file_line_and_column_and_variations_stream() {
 fn the_dask_example_on_two_workers_writes_the_cli_files() {
     let Some(env) = env() else { return };
     let dist = corpus("esmini/xosc/cut-in_parameter_set.xosc");
-    let (cli, dask) = (tmp("dask-cli"), tmp("dask-out"));
-    osc2cr_convert(&[&dist], &cli);
-    let example = testkit::workspace_root().join("examples/dask_variations.py");
-    let out = Command::new(&env.python)
-        .arg(&example)
-        .arg(&dist)
-        .arg("-o")
-        .arg(&dask)
-        .args(["--workers", "2"])
-        .output()
-        .expect("python runs");
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    let report = String::from_utf8_lossy(&out.stdout);
-    assert!(report.contains(r#""variations": 12"#) && report.contains(r#""workers": 2"#), "{report}");
-    let names = |d: &Path| {
-        let mut v: Vec<PathBuf> = std::fs::read_dir(d)
-            .expect("dir")
-            .flatten()
-            .map(|e| e.path())
-            .collect();
-        v.sort();
-        v
-    };
-    let (a, b) = (names(&cli), names(&dask));
-    assert_eq!(a.len(), 12);
-    assert_eq!(
-        a.iter().map(|p| p.file_name()).collect::<Vec<_>>(),
-        b.iter().map(|p| p.file_name()).collect::<Vec<_>>()
-    );
-    for (x, y) in a.iter().zip(&b) {
-        assert!(std::fs::read(x).ok() == std::fs::read(y).ok(), "{} differs", y.display());
+    for format in ["2020a", "2024"] {
+        let (cli, dask) = (tmp(&format!("dask-cli-{format}")), tmp(&format!("dask-out-{format}")));
+        let r = Command::new(env!("CARGO_BIN_EXE_osc2cr"))
+            .args(["convert", s(&dist), "-o", s(&cli), "--format", format])
+            .output()
+            .expect("osc2cr runs");
+        assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
+        let example = testkit::workspace_root().join("examples/dask_variations.py");
+        let out = Command::new(&env.python)
+            .arg(&example)
+            .arg(&dist)
+            .arg("-o")
+            .arg(&dask)
+            .args(["--workers", "2", "--format", format])
+            .output()
+            .expect("python runs");
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        let report = String::from_utf8_lossy(&out.stdout);
+        assert!(report.contains(r#""variations": 12"#) && report.contains(r#""workers": 2"#), "{report}");
+        let names = |d: &Path| {
+            let mut v: Vec<PathBuf> = std::fs::read_dir(d)
+                .expect("dir")
+                .flatten()
+                .map(|e| e.path())
+                .collect();
+            v.sort();
+            v
+        };
+        let (a, b) = (names(&cli), names(&dask));
+        // 12 XML files, or 12 scenario and 12 dynamic files and their one map
+        assert_eq!(a.len(), if format == "2020a" { 12 } else { 25 }, "{a:?}");
+        assert_eq!(
+            a.iter().map(|p| p.file_name()).collect::<Vec<_>>(),
+            b.iter().map(|p| p.file_name()).collect::<Vec<_>>()
+        );
+        for (x, y) in a.iter().zip(&b) {
+            assert!(std::fs::read(x).ok() == std::fs::read(y).ok(), "{} differs", y.display());
+        }
     }
 }
 

@@ -47,11 +47,31 @@ impl Comparison2024 {
     }
 }
 
-/// Compares every case (one Python process for all of them).
+/// Python processes a comparison runs at most (each reads its share of the cases).
+const PROCESSES: usize = 2;
+
+/// Compares every case (the cases split over at most two Python processes, results in the
+/// order of `cases`).
 ///
 /// Test support: panics with a clear message when the tools cannot run.
 pub fn compare_2024(cases: &[Case2024], work_dir: &Path) -> Vec<Comparison2024> {
     let envs = python_envs().unwrap_or_else(|e| panic!("compare_2024: Python environments unavailable: {e}"));
+    std::fs::create_dir_all(work_dir).unwrap_or_else(|e| panic!("cannot create {}: {e}", work_dir.display()));
+    let per = cases.len().div_ceil(PROCESSES).max(1);
+    std::thread::scope(|scope| {
+        let parts: Vec<_> = cases
+            .chunks(per)
+            .enumerate()
+            .map(|(i, chunk)| {
+                let python = envs.cr.clone();
+                scope.spawn(move || run_part(&python, chunk, &work_dir.join(format!("cases-2024-{i}.json"))))
+            })
+            .collect();
+        parts.into_iter().flat_map(|p| p.join().unwrap_or_else(|_| panic!("compare_2024: a part panicked"))).collect()
+    })
+}
+
+fn run_part(python: &Path, cases: &[Case2024], cases_file: &Path) -> Vec<Comparison2024> {
     let list: Vec<Value> = cases
         .iter()
         .map(|c| {
@@ -60,16 +80,14 @@ pub fn compare_2024(cases: &[Case2024], work_dir: &Path) -> Vec<Comparison2024> 
             })
         })
         .collect();
-    std::fs::create_dir_all(work_dir).unwrap_or_else(|e| panic!("cannot create {}: {e}", work_dir.display()));
-    let cases_file = work_dir.join("cases-2024.json");
-    std::fs::write(&cases_file, serde_json::to_vec(&list).expect("json"))
+    std::fs::write(cases_file, serde_json::to_vec(&list).expect("json"))
         .unwrap_or_else(|e| panic!("cannot write {}: {e}", cases_file.display()));
     let script = workspace_root().join("crates/testkit/py/compare_2024.py");
-    let out = Command::new(&envs.cr)
+    let out = Command::new(python)
         .arg(&script)
-        .arg(&cases_file)
+        .arg(cases_file)
         .output()
-        .unwrap_or_else(|e| panic!("cannot run {} {}: {e}", envs.cr.display(), script.display()));
+        .unwrap_or_else(|e| panic!("cannot run {} {}: {e}", python.display(), script.display()));
     let stdout = String::from_utf8_lossy(&out.stdout);
     if !matches!(out.status.code(), Some(0 | 1)) {
         panic!("compare_2024.py failed ({}):\n{stdout}\n{}", out.status, String::from_utf8_lossy(&out.stderr));
