@@ -8,6 +8,8 @@ distribution's variations into chunks of consecutive indices, and has each worke
 its chunks with ``osc2cr.variations(path, start=..., stop=...)`` — every variation is
 computed from its index alone, so no worker needs another's work — and write
 ``OUT/<stem>_<index>.xml``: the names and bytes ``osc2cr convert DIST.xosc -o OUT`` writes.
+With ``--format 2024`` each variation is ``OUT/<stem>_<index>-SC.pb`` and ``OUT/<stem>_<index>.pb``
+and the map they share ``OUT/<map id>.pb``, as ``osc2cr convert --format 2024`` writes them.
 Prints the throughput (variations per second) on stdout as JSON.
 
 Point ``--scheduler`` at a running ``dask scheduler`` to use a real cluster instead (every
@@ -33,6 +35,10 @@ def convert_chunk(path: str, start: int, stop: int, out_dir: str, options: dict)
     warnings.simplefilter("ignore", osc2cr.ConversionWarning)
     done = []
     for v in osc2cr.variations(path, start=start, stop=stop, **options):
+        if v.protobuf is not None:
+            v.protobuf.write(out_dir, osc2cr.output_name(path, v.index, format="2024")[: -len("-SC.pb")])
+            done.append(v.index)
+            continue
         target = os.path.join(out_dir, osc2cr.output_name(path, v.index))
         fd, tmp = tempfile.mkstemp(dir=out_dir, prefix=".osc2cr-", suffix=".tmp")
         with os.fdopen(fd, "w", encoding="utf-8", newline="") as f:
@@ -52,6 +58,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--max-variations", type=int, default=100, help="as the CLI's (default 100)")
     ap.add_argument("--dt", type=float, help="CommonRoad time step, s (the CLI's default if omitted)")
     ap.add_argument("--seed", type=int, help="seed of stochastic distributions")
+    ap.add_argument("--format", choices=["2020a", "2024"], help="CommonRoad format (default 2020a)")
     args = ap.parse_args(argv)
 
     from dask.distributed import Client, LocalCluster
@@ -59,7 +66,7 @@ def main(argv: list[str] | None = None) -> int:
     path = os.path.abspath(args.distribution)
     out_dir = os.path.abspath(args.output)
     os.makedirs(out_dir, exist_ok=True)
-    options = {"max_variations": args.max_variations, "dt": args.dt, "seed": args.seed}
+    options = {"max_variations": args.max_variations, "dt": args.dt, "seed": args.seed, "format": args.format}
     options = {k: v for k, v in options.items() if v is not None}
     n = osc2cr.count_variations(path, **options)
 

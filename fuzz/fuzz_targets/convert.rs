@@ -41,4 +41,7 @@ fuzz_target!(|data: &[u8]| {
     let _ = convert::convert_scenario(&request, &options);
     let options = convert::ConvertOptions { lenient: true, ..options };
     let _ = convert::convert_scenario(&request, &options);
+    // the same in the 2024 format: the protobuf writer sees whatever the model can hold
+    let options = convert::ConvertOptions { format: convert::OutputFormat::Protobuf2024, ..options };
+    let _ = convert::convert_scenario(&request, &options);
 });

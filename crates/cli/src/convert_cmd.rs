@@ -1,12 +1,14 @@
-//! `osc2cr convert`: OpenSCENARIO files and folders in, one CommonRoad file per scenario (and
-//! per parameter variation) out, with a summary table, an optional JSON report and a progress
-//! bar on a terminal. All the work is `convert::run_batch`; this maps options and results.
+//! `osc2cr convert`: OpenSCENARIO files and folders in, one CommonRoad scenario per scenario
+//! (and per parameter variation) out — a 2020a XML file, or the 2024 format's scenario and
+//! dynamic files with one map per lanelet network — with a summary table, an optional JSON
+//! report and TSV table written as the batch goes, and a progress bar on a terminal. All the
+//! work is `convert::run_batch_streaming`; this maps options and results.
 
 use std::io::IsTerminal;
 use std::path::PathBuf;
 use std::time::Duration;
 
-use convert::{BatchOptions, ConvertOptions, EgoChoice, GoalOptions, ScenarioReport, Stage, Status};
+use convert::{BatchOptions, ConvertOptions, EgoChoice, GoalOptions, JsonReport, OutputFormat, ScenarioReport, Stage, Table};
 
 use crate::Failure;
 
@@ -18,6 +20,12 @@ pub struct ConvertArgs {
     /// Output folder (created if missing); folders given as input keep their layout inside it.
     #[arg(short, long, value_name = "OUT_DIR")]
     pub output: PathBuf,
+    /// CommonRoad format: 2020a (one XML file per scenario, what most tools read) or 2024
+    /// (protobuf, read by commonroad-io 2026's three-file reader: per scenario NAME-SC.pb with
+    /// the planning problems and NAME.pb with the obstacles, and one map file per distinct
+    /// lanelet network, OUT_DIR/<map id>.pb, written once and shared — for parameter sweeps).
+    #[arg(long, default_value = "2020a", value_name = "2020a|2024")]
+    pub format: OutputFormat,
     /// CommonRoad time step, s.
     #[arg(long, default_value_t = 0.1)]
     pub dt: f64,
@@ -73,7 +81,8 @@ pub struct ConvertArgs {
     /// today, so the same input gives the same bytes).
     #[arg(long, value_parser = convert::parse_date)]
     pub date: Option<commonroad::Date>,
-    /// Most variations converted per parameter distribution file.
+    /// Most variations converted per parameter distribution file (for a whole sweep, its
+    /// number of variations or more).
     #[arg(long, default_value_t = 100)]
     pub max_variations: u64,
     /// Largest distance between a lanelet bound and the exact lane border, m (default: the
@@ -102,9 +111,20 @@ pub struct ConvertArgs {
     /// roads, the obstacles at the first time step, the ego and its goal region.
     #[arg(long)]
     pub render: bool,
-    /// Write a JSON report (per scenario: status, failure, warnings, timings, counts, …).
+    /// Write a JSON report (per scenario: status, failure, warnings, timings, counts, …),
+    /// streamed to disk as the batch goes and put in place when it ends.
     #[arg(long, value_name = "FILE")]
     pub report: Option<PathBuf>,
+    /// Write a table, one tab-separated line per conversion in batch order (status, stage,
+    /// files, lanelets, obstacles, duration, time, warnings, failure, parameters), line by line
+    /// as the batch goes: the compact report of a large sweep.
+    #[arg(long, value_name = "FILE")]
+    pub table: Option<PathBuf>,
+    /// Continue an interrupted run of the same command: a conversion whose output files are all
+    /// there is not converted again (reported "complete"); temporary files the interrupted run
+    /// left are removed. The result is the files of an uninterrupted run.
+    #[arg(long)]
+    pub resume: bool,
     /// Print every warning on stderr.
     #[arg(short, long)]
     pub verbose: bool,
@@ -153,10 +173,12 @@ fn options(args: &ConvertArgs) -> ConvertOptions {
         engine_seed: args.engine_seed,
         deadline: None,
         lenient: args.lenient,
+        format: args.format,
     }
 }
 
-/// A progress bar on stderr when it is a terminal; nothing otherwise.
+/// A progress bar on stderr when it is a terminal (conversions per second and the time left);
+/// nothing otherwise.
 struct Bar(indicatif::ProgressBar);
 
 impl convert::Progress for Bar {
@@ -174,10 +196,19 @@ fn bar() -> Bar {
         return Bar(indicatif::ProgressBar::hidden());
     }
     let b = indicatif::ProgressBar::new(0);
-    if let Ok(style) = indicatif::ProgressStyle::with_template("{bar:30} {pos}/{len} {elapsed} {wide_msg}") {
+    if let Ok(style) =
+        indicatif::ProgressStyle::with_template("{bar:30} {pos}/{len} {per_sec} {elapsed}, {eta} left {wide_msg}")
+    {
         b.set_style(style);
     }
     Bar(b)
+}
+
+fn describe(r: &ScenarioReport) -> String {
+    match &r.variation {
+        Some(v) => format!("{} (variation {})", r.input.display(), v.index),
+        None => r.input.display().to_string(),
+    }
 }
 
 pub fn run(args: &ConvertArgs) -> Result<(), Failure> {
@@ -190,63 +221,76 @@ pub fn run(args: &ConvertArgs) -> Result<(), Failure> {
         .jobs
         .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
         .max(1);
-    let batch = BatchOptions { out_dir: args.output.clone(), jobs, timeout: Some(Duration::from_secs_f64(args.timeout)), shard: args.shard, render: args.render };
+    let batch = BatchOptions {
+        out_dir: args.output.clone(),
+        jobs,
+        timeout: Some(Duration::from_secs_f64(args.timeout)),
+        shard: args.shard,
+        render: args.render,
+        resume: args.resume,
+    };
+    let mut json = args.report.as_deref().map(JsonReport::create).transpose().map_err(Failure::input)?;
+    let mut table = args.table.as_deref().map(Table::create).transpose().map_err(Failure::input)?;
+    let mut report_error: Option<String> = None;
     let bar = bar();
-    let report = convert::run_batch(&args.inputs, &options, &batch, &bar).map_err(Failure::input)?;
-    bar.0.finish_and_clear();
-
-    for s in &report.skipped {
-        eprintln!("skipped {}: {}", s.path.display(), s.reason);
-    }
-    for r in &report.scenarios {
-        let what = match &r.variation {
-            Some(v) => format!("{} (variation {})", r.input.display(), v.index),
-            None => r.input.display().to_string(),
-        };
+    let mut sink = |position: usize, r: ScenarioReport| {
         if let Some(f) = &r.failure {
-            eprintln!("failed {what}: {} stage: {}", stage_name(f.stage), f.message);
+            bar.0.suspend(|| eprintln!("failed {}: {} stage: {}", describe(&r), stage_name(f.stage), f.message));
         }
         if args.verbose {
             for w in &r.warnings {
-                eprintln!("warning {what}: {}: {}", stage_name(w.stage), w.message);
+                bar.0.suspend(|| eprintln!("warning {}: {}: {}", describe(&r), stage_name(w.stage), w.message));
             }
         }
+        let written = json
+            .as_mut()
+            .map_or(Ok(()), |j| j.add(&r))
+            .and_then(|()| table.as_mut().map_or(Ok(()), |t| t.add(position, &r)));
+        if let Err(e) = written {
+            report_error.get_or_insert(e);
+        }
+    };
+    let totals =
+        convert::run_batch_streaming(&args.inputs, &options, &batch, &bar, &mut sink).map_err(Failure::input)?;
+    bar.0.finish_and_clear();
+    if let Some(e) = report_error {
+        return Err(Failure::input(e));
     }
-    if let Some(path) = &args.report {
-        let json = serde_json::to_vec_pretty(&report).map_err(|e| Failure::input(format!("report: {e}")))?;
-        commonroad::xml::write_atomic(path, &json).map_err(|e| Failure::input(e.to_string()))?;
+    if let Some(j) = json {
+        j.finish(&totals.skipped, &totals.summary, totals.planned).map_err(Failure::input)?;
     }
-    print!("{}", convert::render_summary(&report.summary));
-    let failed = report.failed();
-    let warnings: usize = report.scenarios.iter().map(|r| r.warnings.len()).sum();
+
+    for s in &totals.skipped {
+        eprintln!("skipped {}: {}", s.path.display(), s.reason);
+    }
+    if !totals.removed_temporaries.is_empty() {
+        eprintln!("removed {} temporary file(s) an interrupted run left", totals.removed_temporaries.len());
+    }
+    print!("{}", convert::render_summary(&totals.summary));
+    let complete = if totals.complete > 0 { format!(", {} already complete (--resume)", totals.complete) } else { String::new() };
     eprintln!(
-        "{} converted, {} failed, {} skipped, {} warnings{} -> {}",
-        report.scenarios.len() - failed,
-        failed,
-        report.skipped.len(),
-        warnings,
-        if args.verbose || warnings == 0 { "" } else { " (-v lists them)" },
+        "{} converted{complete}, {} failed, {} skipped, {} warnings{} -> {}",
+        totals.converted,
+        totals.failed,
+        totals.skipped.len(),
+        totals.warnings,
+        if args.verbose || totals.warnings == 0 { "" } else { " (-v lists them)" },
         args.output.display()
     );
-    if report.planned == 0 {
+    if totals.planned == 0 {
         return Err(Failure::input("no scenario to convert among the inputs"));
     }
-    if failed > 0 {
+    if totals.failed > 0 {
         // One file given, and it is malformed or refers to what does not exist: bad input (2),
         // also when that file is a distribution whose variations run as a batch. A folder or
         // several files of which some failed: a partial batch (1).
         let single = args.inputs.len() == 1 && args.inputs[0].is_file();
-        let bad_input = single
-            && report
-                .scenarios
-                .iter()
-                .any(|r| r.failure.as_ref().is_some_and(|f| matches!(f.stage, Stage::Load | Stage::RoadNetwork)));
+        let conversions = totals.converted + totals.failed + totals.complete;
         return Err(Failure {
-            message: format!("{failed} of {} scenarios failed", report.scenarios.len()),
-            status: if bad_input { 2 } else { 1 },
+            message: format!("{} of {conversions} scenarios failed", totals.failed),
+            status: if single && totals.input_failed { 2 } else { 1 },
         });
     }
-    debug_assert!(report.scenarios.iter().all(|r| r.status == Status::Converted));
     Ok(())
 }
 

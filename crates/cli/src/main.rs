@@ -25,7 +25,9 @@ struct Cli {
 #[derive(Subcommand)]
 enum Command {
     /// Convert OpenSCENARIO scenarios (files, folders, parameter distributions) into
-    /// CommonRoad scenarios: lanelet network, obstacles, the ego's planning problem.
+    /// CommonRoad scenarios: lanelet network, obstacles, the ego's planning problem. 2020a XML by
+    /// default; --format 2024 for parameter sweeps (one shared map file per lanelet network).
+    /// Large batches stream in flat memory; --resume continues an interrupted one.
     Convert(Box<convert_cmd::ConvertArgs>),
     /// Convert an OpenDRIVE road network (.xodr) into a CommonRoad lanelet network (.xml).
     Map(map_cmd::MapArgs),

@@ -26,11 +26,11 @@ fn files(dir: &Path) -> BTreeMap<PathBuf, Vec<u8>> {
     out
 }
 
-/// A library folder: the shipped example, a 3 × 3 distribution over it (converted up to 7),
+/// A library folder (made afresh as `<tmp>/convert_shard/<name>`): the shipped example, a 3 × 3 distribution over it (converted up to 7),
 /// a scenario whose name collides with the distribution's first variation, and a sub-folder.
-fn library() -> PathBuf {
+fn library(name: &str) -> PathBuf {
     let root = testkit::workspace_root().join("examples");
-    let lib = tmp("convert_shard", "lib");
+    let lib = tmp("convert_shard", name);
     let scenario = std::fs::read_to_string(root.join("cut_in.xosc")).expect("example");
     let road = std::fs::read(root.join("two_lane_curve.xodr")).expect("example road");
     std::fs::create_dir_all(lib.join("sub")).expect("sub folder");
@@ -61,7 +61,7 @@ fn library() -> PathBuf {
 
 #[test]
 fn three_shards_write_exactly_the_unsharded_files() {
-    let lib = library();
+    let lib = library("lib");
     let common = ["--max-variations", "7", "-j", "2"];
     let run = |out: &Path, shard: Option<&str>| {
         let mut args = vec!["convert", s(&lib), "-o", s(out)];
@@ -99,6 +99,48 @@ fn three_shards_write_exactly_the_unsharded_files() {
     for (name, bytes) in &whole {
         assert!(union[name] == *bytes, "{} differs between the shard and the whole run", name.display());
     }
+}
+
+#[test]
+fn three_shards_write_exactly_the_unsharded_files_in_the_2024_format() {
+    let lib = library("lib-2024");
+    let common = ["--max-variations", "7", "-j", "2", "--format", "2024"];
+    let run = |out: &Path, shard: Option<&str>| {
+        let mut args = vec!["convert", s(&lib), "-o", s(out)];
+        args.extend(common);
+        if let Some(k) = shard {
+            args.extend(["--shard", k]);
+        }
+        let r = osc2cr(&args);
+        assert!(r.status.success(), "{:?}: {}", shard, String::from_utf8_lossy(&r.stderr));
+        files(out)
+    };
+    let whole = run(&tmp("convert_shard", "whole-2024"), None);
+    // the same names as in 2020a, as a scenario and a dynamic file each, and one map for the
+    // one lanelet network of the library (shared by all ten)
+    let maps: Vec<&PathBuf> = whole.keys().filter(|p| p.to_string_lossy().starts_with("ZAM_")).collect();
+    assert_eq!(maps.len(), 1, "{:?}", whole.keys());
+    let mut stems: Vec<String> = vec!["cut_in".into(), "speeds_1-2".into(), "sub/cut_in".into()];
+    stems.extend((1..=7).map(|k| format!("speeds_{k}")));
+    for stem in &stems {
+        for name in [format!("{stem}-SC.pb"), format!("{stem}.pb")] {
+            assert!(whole.contains_key(Path::new(&name)), "{name}: {:?}", whole.keys());
+        }
+    }
+    assert_eq!(whole.len(), 2 * stems.len() + 1);
+
+    // every shard writes the map its scenarios refer to; the rest is written by one shard
+    let mut union = BTreeMap::new();
+    for k in 1..=3 {
+        let part = run(&tmp("convert_shard", &format!("shard{k}-2024")), Some(&format!("{k}/3")));
+        for (name, bytes) in part {
+            let is_map = name.to_string_lossy().starts_with("ZAM_");
+            if let Some(earlier) = union.insert(name.clone(), bytes.clone()) {
+                assert!(is_map && earlier == bytes, "{} written by two shards", name.display());
+            }
+        }
+    }
+    assert_eq!(union, whole);
 }
 
 #[test]

@@ -46,6 +46,42 @@ impl BenchmarkId {
     pub fn as_str(&self) -> &str {
         &self.0
     }
+
+    /// The id's parts, as the readers split it (the id was checked when it was made).
+    pub fn parts(&self) -> BenchmarkIdParts<'_> {
+        let (cooperative, s) = match self.0.strip_prefix("C-") {
+            Some(rest) => (true, rest),
+            None => (false, self.0.as_str()),
+        };
+        let country = &s[..3];
+        let s = &s[4..];
+        let name_len = s.bytes().take_while(u8::is_ascii_alphanumeric).count();
+        let map_name = &s[..name_len];
+        // after the map name: -MapId[_ConfigId[_X-PredId(-PredId)*]]
+        let mut fields = s[name_len + 1..].split('_');
+        let number = |t: Option<&str>| t.and_then(|t| t.parse::<u64>().ok());
+        let map_id = number(fields.next()).unwrap_or(1);
+        let configuration_id = number(fields.next());
+        let prediction = fields.next().map(|p| {
+            let mut parts = p.split('-');
+            let behaviour = parts.next().and_then(|b| b.chars().next()).unwrap_or('T');
+            (behaviour, parts.filter_map(|n| n.parse::<u64>().ok()).collect())
+        });
+        BenchmarkIdParts { cooperative, country, map_name, map_id, configuration_id, prediction }
+    }
+}
+
+/// A benchmark id taken apart: `(C-)?CCC_MapName-MapId[_ConfigId[_X-PredId(-PredId)*]]`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct BenchmarkIdParts<'a> {
+    /// The `C-` prefix of a cooperative scenario.
+    pub cooperative: bool,
+    pub country: &'a str,
+    pub map_name: &'a str,
+    pub map_id: u64,
+    pub configuration_id: Option<u64>,
+    /// The obstacle behaviour letter (`S`, `T`, `P`, `I`) and the prediction ids.
+    pub prediction: Option<(char, Vec<u64>)>,
 }
 
 impl fmt::Display for BenchmarkId {
@@ -134,6 +170,15 @@ impl Date {
             return Err(ModelError::InvalidDate { year, month, day });
         }
         Ok(Self { year, month, day })
+    }
+    pub fn year(&self) -> u16 {
+        self.year
+    }
+    pub fn month(&self) -> u8 {
+        self.month
+    }
+    pub fn day(&self) -> u8 {
+        self.day
     }
 }
 

@@ -1,6 +1,7 @@
 //! `commonroad` — a model of a CommonRoad 2020a scenario (header, location, tags, lanelet
 //! network, traffic signs and lights, intersections, static/dynamic/environment obstacles,
-//! planning problems) and its XML writer.
+//! planning problems), its XML writer, and the writer of the CommonRoad 2024 format
+//! ([`protobuf`]: map, scenario and dynamic files, the map named by its content).
 //!
 //! It owns the output format and its traps (see `../shared/COMMONROAD.md`): the types make
 //! invalid files hard to build (equal bound point counts, per-element obstacle types, one
@@ -78,6 +79,7 @@ mod intersection;
 mod lanelet;
 mod obstacle;
 mod planning;
+pub mod protobuf;
 mod scenario;
 mod sign_ids;
 mod str_enum;
@@ -90,7 +92,7 @@ pub use error::ModelError;
 pub use geometry::{
     AbsoluteShape, Circle, PlacedCircle, PlacedRectangle, Point, Polygon, Rectangle, Shape,
 };
-pub use header::{BenchmarkId, Date, GeoTransformation, Header, Location};
+pub use header::{BenchmarkId, BenchmarkIdParts, Date, GeoTransformation, Header, Location};
 pub use ids::{
     IdAllocator, IncomingId, IntersectionId, LaneletId, ObstacleId, PlanningProblemId,
     TrafficLightId, TrafficSignId,

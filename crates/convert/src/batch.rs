@@ -1,27 +1,35 @@
-//! A batch: every scenario (and every parameter variation) of the inputs, converted in
-//! parallel on `jobs` threads, each within a time limit, each output written whole or not at
-//! all. Results come back in input order whatever the number of threads, and a failing
-//! scenario never stops the others. With a shard, every output is still named on the whole
-//! batch, and only the shard's part is converted.
+//! A batch: every scenario (and every parameter variation) of the inputs, converted on `jobs`
+//! worker threads, each within a time limit, each output written whole or not at all. A
+//! failing scenario never stops the others.
+//!
+//! It streams: the work is handed out one conversion at a time ([`crate::plan`]), at most a
+//! bounded number of reports wait for a slower one before them, and each report goes to the
+//! caller's sink in batch order as soon as it can — so a sweep of 100,000 variations runs in
+//! flat memory, whatever the number of threads, and its reports come out in the same order.
+//! The conversions share one [`Caches`] (each OpenDRIVE file read and converted once, each 2024
+//! map encoded and written once). With a shard, every output is still named on the whole batch,
+//! and only the shard's part is converted; with `resume`, a conversion whose files an earlier
+//! run wrote is not converted again, and the temporary files of killed writers are removed.
 
-use std::collections::BTreeSet;
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
-use std::sync::{mpsc, Arc};
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::{mpsc, Arc, Mutex};
 use std::time::Duration;
 
-use openscenario::{Content, LoadOptions};
-use rayon::prelude::*;
-
-use crate::discover::{discover, FileKind, Found};
+use crate::cache::Caches;
+use crate::discover::discover;
 use crate::options::ConvertOptions;
+use crate::outputs::{complete, write_output, MapFiles, OutputPaths, Written};
 use crate::picture::write_picture;
-use crate::pipeline::{convert_scenario_keeping, Conversion, Model, Request};
+use crate::pipeline::{convert_scenario_with, Conversion, Model, Request};
+use crate::plan::{Job, Plan, Work};
 use crate::report::{
-    BatchReport, Failure, ScenarioReport, Skipped, Stage, StageWarning, Status, Timings, Variation,
+    BatchReport, Failure, FolderSummary, ScenarioReport, Skipped, Stage, StageWarning, Status, Timings, Variation,
 };
 use crate::shard::Shard;
-use crate::single::{batch_name, batch_source};
-use crate::summary::summarise;
+use crate::single::batch_source;
+use crate::summary::Summary;
 
 /// How a batch runs.
 #[derive(Debug, Clone, PartialEq)]
@@ -35,9 +43,12 @@ pub struct BatchOptions {
     pub shard: Option<Shard>,
     /// Also write a PNG picture beside every converted scenario (`--render`).
     pub render: bool,
+    /// Leave out a conversion whose output files are all there from an earlier run of the same
+    /// batch (it is reported `complete`), and remove the temporary files a killed run left.
+    pub resume: bool,
 }
 
-/// Told about the batch's progress (e.g. a progress bar); called from worker threads.
+/// Told about the batch's progress (e.g. a progress bar).
 pub trait Progress: Sync {
     /// The number of conversions the batch will run.
     fn start(&self, _total: usize) {}
@@ -49,205 +60,207 @@ pub trait Progress: Sync {
 pub struct Silent;
 impl Progress for Silent {}
 
-/// One conversion to run.
-#[derive(Debug, Clone)]
-struct Job {
-    input: PathBuf,
-    folder: String,
-    scenario: PathBuf,
-    name: String,
-    output: PathBuf,
-    variation: Option<Variation>,
-    /// Warnings known before the run (e.g. a capped distribution).
-    notes: Vec<StageWarning>,
+/// What a batch did besides the reports it handed to its sink.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BatchSummary {
+    pub skipped: Vec<Skipped>,
+    /// The summary table's rows.
+    pub summary: Vec<FolderSummary>,
+    /// Conversions of the whole batch, all shards together.
+    pub planned: usize,
+    pub converted: usize,
+    pub failed: usize,
+    /// Found complete from an earlier run (`resume`).
+    pub complete: usize,
+    /// Warnings of all reports.
+    pub warnings: usize,
+    /// Some conversion failed while reading its input (load or road network stage).
+    pub input_failed: bool,
+    /// Temporary files of killed writers removed before the batch (`resume`).
+    pub removed_temporaries: Vec<PathBuf>,
 }
 
-/// Finds, converts and writes everything `inputs` name. `Err` only for a bad argument (a path
+/// Reports waiting for an earlier, slower conversion, per worker, before workers pause.
+const WAITING_PER_WORKER: usize = 256;
+
+/// Finds, converts and writes everything `inputs` name, and hands each conversion's report to
+/// `sink` with its position in the batch, in batch order. `Err` only for a bad argument (a path
 /// that does not exist, an invalid option, an output folder that cannot be created).
+pub fn run_batch_streaming(
+    inputs: &[PathBuf],
+    options: &ConvertOptions,
+    batch: &BatchOptions,
+    progress: &dyn Progress,
+    sink: &mut dyn FnMut(usize, ScenarioReport),
+) -> Result<BatchSummary, String> {
+    options.check()?;
+    std::fs::create_dir_all(&batch.out_dir)
+        .map_err(|e| format!("cannot create output folder {}: {e}", batch.out_dir.display()))?;
+    let removed_temporaries =
+        if batch.resume { commonroad::xml::remove_stale_temporaries(&batch.out_dir) } else { Vec::new() };
+    let plan = Plan::new(discover(inputs)?, options);
+    let planned = plan.planned;
+    let mut skipped = plan.skipped.clone();
+    // skipped files are reported once, by the first shard, so that the shards' reports together
+    // list what one unsharded report lists
+    if batch.shard.is_some_and(|s| s.index() != 1) {
+        skipped.clear();
+    }
+    progress.start(plan.in_shard(batch.shard));
+
+    let jobs = batch.jobs.max(1);
+    let shared = Shared {
+        options: Arc::new(options.clone()),
+        caches: Arc::new(Caches::with_capacity((2 * jobs).max(4))),
+        maps: MapFiles::new(&batch.out_dir),
+        batch: batch.clone(),
+    };
+    let work = Mutex::new(plan.work(&batch.out_dir, options.format, batch.shard).enumerate());
+    let emitted = AtomicUsize::new(0);
+    let issued = AtomicUsize::new(0);
+    let window = WAITING_PER_WORKER * jobs;
+    let mut summary = Summary::default();
+    let mut totals = BatchSummary {
+        skipped,
+        summary: Vec::new(),
+        planned,
+        converted: 0,
+        failed: 0,
+        complete: 0,
+        warnings: 0,
+        input_failed: false,
+        removed_temporaries,
+    };
+    std::thread::scope(|scope| -> Result<(), String> {
+        let (tx, rx) = mpsc::sync_channel::<(usize, usize, ScenarioReport)>(2 * jobs);
+        for _ in 0..jobs {
+            let tx = tx.clone();
+            let (work, shared, emitted, issued) = (&work, &shared, &emitted, &issued);
+            std::thread::Builder::new()
+                .spawn_scoped(scope, move || loop {
+                    // pause while too many reports wait for a slower conversion before them
+                    while issued.load(Ordering::Acquire) >= emitted.load(Ordering::Acquire) + window {
+                        std::thread::sleep(Duration::from_millis(2));
+                    }
+                    let next = match work.lock() {
+                        Ok(mut w) => w.next(),
+                        Err(poisoned) => poisoned.into_inner().next(),
+                    };
+                    let Some((seq, (position, work))) = next else { break };
+                    issued.fetch_add(1, Ordering::AcqRel);
+                    let report = match work {
+                        Work::Convert(job) => run_job(&job, shared),
+                        Work::Failed(report) => *report,
+                    };
+                    if tx.send((seq, position, report)).is_err() {
+                        break;
+                    }
+                })
+                .map_err(|e| format!("cannot start {jobs} worker threads: {e}"))?;
+        }
+        drop(tx);
+        let mut waiting: BTreeMap<usize, (usize, ScenarioReport)> = BTreeMap::new();
+        let mut next = 0usize;
+        for (seq, position, report) in rx {
+            progress.done(&report);
+            waiting.insert(seq, (position, report));
+            while let Some((position, report)) = waiting.remove(&next) {
+                summary.add(&report);
+                totals.warnings += report.warnings.len();
+                match report.status {
+                    Status::Converted => totals.converted += 1,
+                    Status::Complete => totals.complete += 1,
+                    Status::Failed => {
+                        totals.failed += 1;
+                        totals.input_failed |=
+                            report.failure.as_ref().is_some_and(|f| matches!(f.stage, Stage::Load | Stage::RoadNetwork));
+                    }
+                }
+                sink(position, report);
+                next += 1;
+                emitted.store(next, Ordering::Release);
+            }
+        }
+        Ok(())
+    })?;
+    totals.summary = summary.rows();
+    Ok(totals)
+}
+
+/// Like [`run_batch_streaming`], collecting every report (for batches small enough to list).
 pub fn run_batch(
     inputs: &[PathBuf],
     options: &ConvertOptions,
     batch: &BatchOptions,
     progress: &dyn Progress,
 ) -> Result<BatchReport, String> {
-    options.check()?;
-    std::fs::create_dir_all(&batch.out_dir)
-        .map_err(|e| format!("cannot create output folder {}: {e}", batch.out_dir.display()))?;
-    let found = discover(inputs)?;
-    let mut skipped = Vec::new();
-    let mut early = Vec::new(); // (position, report) of distributions that failed to load
-    let mut jobs = plan(&found, options, &batch.out_dir, &mut skipped, &mut early);
-    let planned = jobs.len() + early.len();
-    if let Some(shard) = batch.shard {
-        jobs.retain(|(pos, _)| shard.contains(*pos));
-        early.retain(|(pos, _)| shard.contains(*pos));
-        // skipped files are reported once, by the first shard, so that the shards' reports
-        // together list what one unsharded report lists
-        if shard.index() != 1 {
-            skipped.clear();
-        }
-    }
-    progress.start(jobs.len() + early.len());
-    for (_, r) in &early {
-        progress.done(r);
-    }
+    let mut scenarios = Vec::new();
+    let totals = run_batch_streaming(inputs, options, batch, progress, &mut |_, r| scenarios.push(r))?;
+    Ok(BatchReport { scenarios, skipped: totals.skipped, summary: totals.summary, planned: totals.planned })
+}
 
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(batch.jobs.max(1))
-        .build()
-        .map_err(|e| format!("cannot start {} worker threads: {e}", batch.jobs))?;
-    let options = Arc::new(options.clone());
-    let run: Vec<(usize, ScenarioReport)> = pool.install(|| {
-        jobs.par_iter()
-            .map(|(pos, job)| {
-                let report = run_job(job, &options, batch.timeout, batch.render);
-                progress.done(&report);
-                (*pos, report)
-            })
-            .collect()
+/// What every worker reads.
+struct Shared {
+    options: Arc<ConvertOptions>,
+    caches: Arc<Caches>,
+    maps: MapFiles,
+    batch: BatchOptions,
+}
+
+/// Converts in a worker thread so that a scenario over its time limit can be abandoned: the
+/// engine gets the limit as its deadline and stops itself; loading and map conversion cannot
+/// be interrupted, so a thread stuck there finishes on its own and its result is discarded.
+fn convert_limited(
+    job: &Job,
+    parameters: Vec<(String, String)>,
+    shared: &Shared,
+    keep: bool,
+) -> (Conversion, Option<Model>) {
+    let config = job.variation.as_ref().map_or(1, |(k, _)| *k);
+    let source = batch_source(&job.input, job.variation.as_ref().map(|(k, _)| *k));
+    let Some(limit) = shared.batch.timeout else {
+        let request = Request { path: &job.scenario, name: &job.name, config, parameters: &parameters, source };
+        return convert_scenario_with(&request, &shared.options, keep, &shared.caches);
+    };
+    let (tx, rx) = mpsc::channel();
+    let (path, name) = (job.scenario.clone(), job.name.clone());
+    let opts = Arc::new(ConvertOptions {
+        deadline: Some(std::time::Instant::now() + limit),
+        ..ConvertOptions::clone(&shared.options)
     });
-    let mut all: Vec<(usize, ScenarioReport)> = early.into_iter().chain(run).collect();
-    all.sort_by_key(|(pos, _)| *pos);
-    let scenarios: Vec<ScenarioReport> = all.into_iter().map(|(_, r)| r).collect();
-    let summary = summarise(&scenarios);
-    Ok(BatchReport {
-        scenarios,
-        skipped,
-        summary,
-        planned,
-    })
-}
-
-/// Expands distributions into variations and names every output (unique, in input order).
-fn plan(
-    found: &[Found],
-    options: &ConvertOptions,
-    out_dir: &Path,
-    skipped: &mut Vec<Skipped>,
-    early: &mut Vec<(usize, ScenarioReport)>,
-) -> Vec<(usize, Job)> {
-    let mut used = BTreeSet::new();
-    let mut jobs = Vec::new();
-    let mut pos = 0usize;
-    for f in found {
-        match &f.kind {
-            FileKind::Skip(reason) => skipped.push(Skipped {
-                path: f.path.clone(),
-                reason: reason.clone(),
-            }),
-            FileKind::Scenario => {
-                let output = unique(out_dir, &f.output_stem, &mut used);
-                jobs.push((
-                    pos,
-                    Job {
-                        input: f.path.clone(),
-                        folder: f.folder.clone(),
-                        scenario: f.path.clone(),
-                        name: batch_name(&f.path),
-                        output,
-                        variation: None,
-                        notes: Vec::new(),
-                    },
-                ));
-                pos += 1;
-            }
-            FileKind::Distribution => {
-                let load = LoadOptions {
-                    parameters: options.parameters.clone(),
-                    seed: options.seed,
-                    ..Default::default()
-                };
-                let (dist, problems) = match openscenario::load(&f.path, &load) {
-                    Ok(l) if !l.problems.is_empty() && !options.lenient => {
-                        let list: Vec<String> = l.problems.iter().map(ToString::to_string).collect();
-                        let message = format!("the distribution cannot be sampled (--lenient samples it anyway):\n{}", list.join("\n"));
-                        early.push((pos, failed_early(f, &message)));
-                        pos += 1;
-                        continue;
-                    }
-                    Ok(l) => match l.content {
-                        Content::Distribution(d) => (d, l.problems),
-                        _ => {
-                            early.push((pos, failed_early(f, "expected a ParameterValueDistribution")));
-                            pos += 1;
-                            continue;
-                        }
-                    },
-                    Err(e) => {
-                        early.push((pos, failed_early(f, &e.to_string())));
-                        pos += 1;
-                        continue;
-                    }
-                };
-                let total = dist.len();
-                let n = total.min(options.max_variations);
-                let mut notes: Vec<StageWarning> =
-                    problems.iter().map(|p| StageWarning { stage: Stage::Load, message: p.to_string() }).collect();
-                if total > n {
-                    notes.push(StageWarning {
-                        stage: Stage::Load,
-                        message: format!(
-                            "the distribution has {total} parameter sets; the first {n} are converted (--max-variations)"
-                        ),
-                    });
-                }
-                for (i, parameters) in dist.iter().take(usize::try_from(n).unwrap_or(usize::MAX)).enumerate() {
-                    let k = i as u64 + 1;
-                    let mut stem = f.output_stem.clone().into_os_string();
-                    stem.push(format!("_{k}"));
-                    let output = unique(out_dir, Path::new(&stem), &mut used);
-                    jobs.push((
-                        pos,
-                        Job {
-                            input: f.path.clone(),
-                            folder: f.folder.clone(),
-                            scenario: dist.scenario_file.clone(),
-                            name: batch_name(&f.path),
-                            output,
-                            variation: Some(Variation {
-                                index: k,
-                                scenario_file: dist.scenario_file.clone(),
-                                parameters,
-                            }),
-                            notes: notes.clone(),
-                        },
-                    ));
-                    pos += 1;
-                }
-            }
-        }
+    let caches = shared.caches.clone();
+    let spawned = std::thread::Builder::new().spawn(move || {
+        let request = Request { path: &path, name: &name, config, parameters: &parameters, source };
+        let _ = tx.send(convert_scenario_with(&request, &opts, keep, &caches));
+    });
+    let timed_out = |msg: String| Conversion {
+        result: Err(Failure { stage: Stage::Timeout, message: msg }),
+        warnings: Vec::new(),
+        timings: Timings { total_ms: limit.as_secs_f64() * 1e3, ..Timings::default() },
+        facts: Default::default(),
+    };
+    if let Err(e) = spawned {
+        return (timed_out(format!("cannot start a worker thread: {e}")), None);
     }
-    jobs
-}
-
-/// `out_dir/stem.xml`, or `stem-2.xml`, `stem-3.xml`, … when taken.
-fn unique(out_dir: &Path, stem: &Path, used: &mut BTreeSet<PathBuf>) -> PathBuf {
-    let mut n = 1u64;
-    loop {
-        let mut name = stem.as_os_str().to_owned();
-        if n > 1 {
-            name.push(format!("-{n}"));
+    match rx.recv_timeout(limit) {
+        Ok(c) => c,
+        Err(_) => {
+            let message = format!("not converted within the time limit of {} s (--timeout)", limit.as_secs_f64());
+            (timed_out(message), None)
         }
-        name.push(".xml");
-        let p = out_dir.join(name);
-        if used.insert(p.clone()) {
-            return p;
-        }
-        n += 1;
     }
 }
 
-fn failed_early(f: &Found, message: &str) -> ScenarioReport {
+fn report(job: &Job, variation: Option<Variation>, status: Status) -> ScenarioReport {
     ScenarioReport {
-        input: f.path.clone(),
-        folder: f.folder.clone(),
+        input: job.input.clone(),
+        folder: job.folder.clone(),
         output: None,
-        variation: None,
-        status: Status::Failed,
-        failure: Some(Failure {
-            stage: Stage::Load,
-            message: message.to_string(),
-        }),
+        dynamic: None,
+        map: None,
+        variation,
+        status,
+        failure: None,
         warnings: Vec::new(),
         timings: Timings::default(),
         benchmark_id: None,
@@ -260,138 +273,67 @@ fn failed_early(f: &Found, message: &str) -> ScenarioReport {
     }
 }
 
-/// Converts in a worker thread so that a scenario over its time limit can be abandoned: the
-/// engine gets the limit as its deadline and stops itself; loading and map conversion cannot
-/// be interrupted, so a thread stuck there finishes on its own and its result is discarded.
-fn convert_limited(
-    job: &Job,
-    options: &Arc<ConvertOptions>,
-    timeout: Option<Duration>,
-    keep: bool,
-) -> (Conversion, Option<Model>) {
-    let source = batch_source(&job.input, job.variation.as_ref().map(|v| v.index));
-    let params = job.variation.as_ref().map(|v| v.parameters.clone()).unwrap_or_default();
-    let Some(limit) = timeout else {
-        let request = Request {
-            path: &job.scenario,
-            name: &job.name,
-            config: job.variation.as_ref().map_or(1, |v| v.index),
-            parameters: &params,
-            source,
-        };
-        return convert_scenario_keeping(&request, options, keep);
+fn run_job(job: &Job, shared: &Shared) -> ScenarioReport {
+    let batch = &shared.batch;
+    let parameters = match &job.variation {
+        Some((k, dist)) => k.checked_sub(1).and_then(|i| dist.get(i)).unwrap_or_default(),
+        None => Vec::new(),
     };
-    let (tx, rx) = mpsc::channel();
-    let (path, name, config) = (
-        job.scenario.clone(),
-        job.name.clone(),
-        job.variation.as_ref().map_or(1, |v| v.index),
-    );
-    let opts = Arc::new(ConvertOptions { deadline: Some(std::time::Instant::now() + limit), ..ConvertOptions::clone(options) });
-    let spawned = std::thread::Builder::new().spawn(move || {
-        let request = Request {
-            path: &path,
-            name: &name,
-            config,
-            parameters: &params,
-            source,
-        };
-        let _ = tx.send(convert_scenario_keeping(&request, &opts, keep));
+    let variation = job.variation.as_ref().map(|(k, dist)| Variation {
+        index: *k,
+        scenario_file: dist.scenario_file.clone(),
+        parameters: parameters.clone(),
     });
-    let timed_out = |msg: String| Conversion {
-        result: Err(Failure {
-            stage: Stage::Timeout,
-            message: msg,
-        }),
-        warnings: Vec::new(),
-        timings: Timings {
-            total_ms: limit.as_secs_f64() * 1e3,
-            ..Timings::default()
-        },
-        facts: Default::default(),
-    };
-    if let Err(e) = spawned {
-        return (timed_out(format!("cannot start a worker thread: {e}")), None);
-    }
-    match rx.recv_timeout(limit) {
-        Ok(c) => c,
-        Err(_) => {
-            let message = format!(
-                "not converted within the time limit of {} s (--timeout)",
-                limit.as_secs_f64()
-            );
-            (timed_out(message), None)
+    let paths = OutputPaths::of(&job.stem, shared.options.format, batch.render);
+    if batch.resume {
+        if let Some(written) = complete(&paths, &batch.out_dir) {
+            let mut r = report(job, variation, Status::Complete);
+            (r.output, r.dynamic, r.map) = (written.main, written.dynamic, written.map);
+            r.picture = paths.picture;
+            return r;
         }
     }
-}
-
-fn run_job(
-    job: &Job,
-    options: &Arc<ConvertOptions>,
-    timeout: Option<Duration>,
-    render: bool,
-) -> ScenarioReport {
-    let (mut c, model) = convert_limited(job, options, timeout, render);
-    let mut warnings = job.notes.clone();
+    let (mut c, model) = convert_limited(job, parameters, shared, batch.render);
+    let mut warnings = job.notes.to_vec();
     warnings.append(&mut c.warnings);
-    let mut output = None;
-    let failure = match c.result {
-        Ok(bytes) => {
+    let mut written = Written::default();
+    let failure = match &c.result {
+        Ok(output) => {
             let t = std::time::Instant::now();
-            let written = match job.output.parent() {
-                Some(dir) => std::fs::create_dir_all(dir)
-                    .map_err(|e| format!("cannot create folder {}: {e}", dir.display())),
-                None => Ok(()),
-            }
-            .and_then(|()| {
-                commonroad::xml::write_atomic(&job.output, &bytes).map_err(|e| e.to_string())
-            });
+            let result = write_output(&paths, output, &shared.maps);
             let dt = t.elapsed().as_secs_f64() * 1e3;
             c.timings.write_ms += dt;
             c.timings.total_ms += dt;
-            match written {
-                Ok(()) => {
-                    output = Some(job.output.clone());
+            match result {
+                Ok(w) => {
+                    written = w;
                     None
                 }
-                Err(message) => Some(Failure {
-                    stage: Stage::Write,
-                    message,
-                }),
+                Err(message) => Some(Failure { stage: Stage::Write, message }),
             }
         }
-        Err(f) => Some(f),
+        Err(f) => Some(f.clone()),
     };
     // a picture that cannot be drawn or written is a warning: the scenario itself is fine
     let mut picture = None;
-    if let (Some(out), Some(model)) = (&output, &model) {
-        match write_picture(out, model) {
+    if let (Some(_), Some(model)) = (&written.main, &model) {
+        let beside: &Path = written.dynamic.as_deref().unwrap_or(&paths.main);
+        match write_picture(beside, model) {
             Ok(p) => picture = Some(p),
-            Err(message) => warnings.push(StageWarning {
-                stage: Stage::Render,
-                message,
-            }),
+            Err(message) => warnings.push(StageWarning { stage: Stage::Render, message }),
         }
     }
-    ScenarioReport {
-        input: job.input.clone(),
-        folder: job.folder.clone(),
-        output,
-        variation: job.variation.clone(),
-        status: if failure.is_none() {
-            Status::Converted
-        } else {
-            Status::Failed
-        },
-        failure,
-        warnings,
-        timings: c.timings,
-        benchmark_id: c.facts.benchmark_id,
-        ego: c.facts.ego,
-        lanelets: c.facts.lanelets,
-        obstacles: c.facts.obstacles,
-        duration_s: c.facts.duration_s,
-        tags: c.facts.tags,
-        picture,
-    }
+    let mut r = report(job, variation, if failure.is_none() { Status::Converted } else { Status::Failed });
+    (r.output, r.dynamic, r.map) = (written.main, written.dynamic, written.map);
+    r.failure = failure;
+    r.warnings = warnings;
+    r.timings = c.timings;
+    r.benchmark_id = c.facts.benchmark_id;
+    r.ego = c.facts.ego;
+    r.lanelets = c.facts.lanelets;
+    r.obstacles = c.facts.obstacles;
+    r.duration_s = c.facts.duration_s;
+    r.tags = c.facts.tags;
+    r.picture = picture;
+    r
 }

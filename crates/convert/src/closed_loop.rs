@@ -13,6 +13,7 @@ use std::time::Instant;
 
 use engine::{External, ExternalEntity, Input, RunControl, Sample, Settings, Simulation, StoryboardEvent};
 
+use crate::cache::Caches;
 use crate::ego::EgoChoice;
 use crate::held_input::substep;
 use crate::options::ConvertOptions;
@@ -52,11 +53,11 @@ impl ClosedLoop {
         let mut timings = Timings::default();
         let name = batch_name(path);
         let request = Request { path, name: &name, config: 1, parameters: &[], source: batch_source(path, None) };
-        let prepared = prepare(&request, options, &mut warnings, &mut timings)?;
+        let prepared = prepare(&request, options, &Caches::with_capacity(1), &mut warnings, &mut timings)?;
         let started = Instant::now();
         let settings = Settings { step: options.step, max_time: options.max_time };
         let control = RunControl { seed: options.engine_seed, deadline: None };
-        let session = Session::try_new(prepared, |p| Simulation::new(&p.scenario, p.road.as_ref(), &settings, &control, external)).map_err(engine_failure)?;
+        let session = Session::try_new(prepared, |p| Simulation::new(&p.scenario, p.road(), &settings, &control, external)).map_err(engine_failure)?;
         let mut options = options.clone();
         // the ego of the CommonRoad output is the entity driven, unless the caller chose one
         if let EgoChoice::Pattern(pattern) = &options.ego {
@@ -118,7 +119,7 @@ impl ClosedLoop {
         let mut facts = Facts::default();
         let prepared = self.session.borrow_owner();
         let started = Instant::now();
-        let built = run_engine(&prepared.scenario, prepared.road.as_ref(), &self.options)
+        let built = run_engine(&prepared.scenario, prepared.road(), &self.options)
             .map_err(engine_failure)
             .and_then(|run| {
                 warnings.extend(run.warnings.iter().map(|w| StageWarning { stage: Stage::Engine, message: w.clone() }));

@@ -2,8 +2,11 @@
 //! scenario and its OpenDRIVE road network, has `map` convert the roads to lanelets and
 //! `engine` run the storyboard, turns the trace into CommonRoad obstacles (Table I types,
 //! bounding-box centres, headings wrapped and resampled to the CommonRoad step) and the ego's
-//! planning problem, checks and serialises the result; and it runs batches of scenario files
-//! and parameter variations in parallel with a report per scenario, whole or as one shard.
+//! planning problem, checks and serialises the result (CommonRoad 2020a XML, or the 2024
+//! format's map, scenario and dynamic files); and it runs batches of scenario files and
+//! parameter variations in parallel — streaming, so a sweep of 100,000 variations runs in flat
+//! memory, each OpenDRIVE map read once — with a report per scenario, whole, as one shard, or
+//! resumed after an interruption.
 //!
 //! It glues the other crates together and owns the OpenSCENARIO → CommonRoad mapping; it does
 //! not parse files itself, simulate, convert roads, draw (`render` draws the pictures of
@@ -15,6 +18,7 @@ mod assemble;
 mod audit;
 mod batch;
 mod bbox;
+mod cache;
 mod closed_loop;
 mod country;
 mod discover;
@@ -23,12 +27,16 @@ mod goal;
 mod header;
 mod held_input;
 mod light_cycles;
+mod naming;
 mod obstacle_type;
 mod obstacles;
 mod options;
+mod outputs;
 mod picture;
 mod pipeline;
+mod plan;
 mod report;
+mod report_files;
 mod resample;
 mod shard;
 mod story_marks;
@@ -41,8 +49,9 @@ mod tracks;
 pub use angle::{lerp_angle, wrap_angle};
 pub use assemble::{assemble, Assembled};
 pub use audit::audit as audit_trace;
-pub use batch::{run_batch, BatchOptions, Progress, Silent};
+pub use batch::{run_batch, run_batch_streaming, BatchOptions, BatchSummary, Progress, Silent};
 pub use bbox::{box_center, reference_point};
+pub use cache::{Caches, Road};
 pub use closed_loop::ClosedLoop;
 pub use discover::{classify, discover, FileKind, Found};
 pub use ego::{choose_ego, EgoChoice};
@@ -50,9 +59,13 @@ pub use goal::{planning_problem, GoalOptions};
 pub use header::{benchmark_id, check_country, date_prefix, fallback_date, parse_date};
 pub use obstacle_type::{cr_type, CrType};
 pub use obstacles::{obstacles, Obstacles};
-pub use options::ConvertOptions;
+pub use options::{ConvertOptions, OutputFormat};
+pub use outputs::OutputPaths;
 pub use picture::{picture_path, write_picture};
-pub use pipeline::{convert_scenario, convert_scenario_keeping, Conversion, Facts, Model, Prepared, Request};
+pub use pipeline::{
+    convert_scenario, convert_scenario_keeping, convert_scenario_with, Conversion, Facts, Model, Output, Prepared,
+    Protobuf2024, Request,
+};
 pub use report::{
     BatchReport, Failure, FolderSummary, ScenarioReport, Skipped, Stage, StageWarning, Status,
     Timings, Variation,
@@ -61,8 +74,10 @@ pub use resample::{cr_step_count, resample, whole_multiple, Pose};
 pub use shard::Shard;
 pub use story_marks::event_marks;
 pub use single::{
-    batch_name, batch_source, convert_file, convert_variation, load_distribution, output_file_name,
+    batch_name, batch_source, convert_file, convert_file_with, convert_variation, convert_variation_with,
+    load_distribution, output_file_name, output_name,
 };
-pub use summary::{render as render_summary, summarise};
+pub use report_files::{JsonReport, Table, TABLE_COLUMNS};
+pub use summary::{render as render_summary, summarise, Summary};
 pub use tags::scenario_tags;
 pub use tracks::{tracks, Placement, Track, MIN_BOX_SIDE};

@@ -1,5 +1,8 @@
 //! Everything a conversion can be told, with the paper's defaults.
 
+use std::fmt;
+use std::str::FromStr;
+
 use commonroad::Date;
 
 use crate::ego::EgoChoice;
@@ -47,6 +50,39 @@ pub struct ConvertOptions {
     /// variables, roads, lanes) and distributions that cannot be sampled as warnings, passing
     /// them over as the engine can; by default (`false`) they stop the file with an error.
     pub lenient: bool,
+    /// The CommonRoad format written (default 2020a XML).
+    pub format: OutputFormat,
+}
+
+/// Which CommonRoad format a conversion writes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum OutputFormat {
+    /// One XML file per scenario (`commonRoadVersion="2020a"`), the format most tools read.
+    #[default]
+    Xml2020a,
+    /// Three protobuf files: a map (shared by every scenario on the same lanelet network), a
+    /// scenario file and a dynamic file (commonroad-io 2024.x and later).
+    Protobuf2024,
+}
+
+impl FromStr for OutputFormat {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        match s.trim() {
+            "2020a" => Ok(OutputFormat::Xml2020a),
+            "2024" => Ok(OutputFormat::Protobuf2024),
+            other => Err(format!("the CommonRoad format is 2020a or 2024, got {other:?}")),
+        }
+    }
+}
+
+impl fmt::Display for OutputFormat {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            OutputFormat::Xml2020a => "2020a",
+            OutputFormat::Protobuf2024 => "2024",
+        })
+    }
 }
 
 impl Default for ConvertOptions {
@@ -70,6 +106,7 @@ impl Default for ConvertOptions {
             engine_seed: 0,
             deadline: None,
             lenient: false,
+            format: OutputFormat::Xml2020a,
         }
     }
 }

@@ -1,20 +1,25 @@
 //! One scenario end to end (the paper's algorithm): load the OpenSCENARIO file, load its
 //! OpenDRIVE file and convert it to lanelets, run the storyboard, build obstacles and the
-//! planning problem, check, and serialise. Every stage's warnings are kept as data, every
-//! stage is timed, and a failure names its stage.
+//! planning problem, check, and serialise (2020a XML, or the three files of the 2024 format).
+//! Every stage's warnings are kept as data, every stage is timed, and a failure names its
+//! stage. The road network and its lanelets come from a [`Caches`], so the conversions of one
+//! batch that name the same OpenDRIVE file read and convert it once.
 
 use std::path::Path;
+use std::sync::Arc;
 use std::time::Instant;
 
+use commonroad::protobuf::MapFile;
 use commonroad::{Header, LaneletNetwork};
 use openscenario::{Content, LoadOptions, Scenario};
 
 use crate::assemble::assemble;
+use crate::cache::Caches;
 use crate::header::{benchmark_id, date_prefix, fallback_date};
 use crate::light_cycles::apply_signal_states;
-use crate::options::ConvertOptions;
+use crate::options::{ConvertOptions, OutputFormat};
 use crate::report::{Failure, Stage, StageWarning, Timings};
-use crate::stages::{run_engine, run_map};
+use crate::stages::run_engine;
 
 /// Facts about a converted scenario, for the report.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -28,10 +33,45 @@ pub struct Facts {
     pub tags: Vec<String>,
 }
 
+/// What a conversion serialised, in the format of its options.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Output {
+    /// A CommonRoad 2020a XML file.
+    Xml(Vec<u8>),
+    /// The three files of the CommonRoad 2024 format.
+    Protobuf(Protobuf2024),
+}
+
+impl Output {
+    /// The XML bytes of a 2020a conversion.
+    pub fn xml(&self) -> Option<&[u8]> {
+        match self {
+            Output::Xml(b) => Some(b),
+            Output::Protobuf(_) => None,
+        }
+    }
+    /// The files of a 2024 conversion.
+    pub fn protobuf(&self) -> Option<&Protobuf2024> {
+        match self {
+            Output::Xml(_) => None,
+            Output::Protobuf(p) => Some(p),
+        }
+    }
+}
+
+/// A scenario in the 2024 format: its map (named by its content, shared with every scenario of
+/// the batch on the same lanelet network), its scenario file and its dynamic file.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Protobuf2024 {
+    pub map: Arc<MapFile>,
+    pub scenario: Vec<u8>,
+    pub dynamic: Vec<u8>,
+}
+
 /// The result of converting one scenario: the file's bytes or why not, and what happened.
 #[derive(Debug, Clone)]
 pub struct Conversion {
-    pub result: Result<Vec<u8>, Failure>,
+    pub result: Result<Output, Failure>,
     pub warnings: Vec<StageWarning>,
     pub timings: Timings,
     pub facts: Facts,
@@ -67,7 +107,8 @@ pub struct Model {
     pub events: Vec<(f64, String)>,
 }
 
-/// Converts one scenario file into CommonRoad XML bytes (nothing is written).
+/// Converts one scenario file into CommonRoad bytes in the options' format (nothing is
+/// written).
 pub fn convert_scenario(request: &Request<'_>, options: &ConvertOptions) -> Conversion {
     convert_scenario_keeping(request, options, false).0
 }
@@ -78,6 +119,17 @@ pub fn convert_scenario_keeping(
     request: &Request<'_>,
     options: &ConvertOptions,
     keep: bool,
+) -> (Conversion, Option<Model>) {
+    convert_scenario_with(request, options, keep, &Caches::with_capacity(1))
+}
+
+/// Like [`convert_scenario_keeping`], reading road networks through `caches` (a batch passes
+/// the one its conversions share).
+pub fn convert_scenario_with(
+    request: &Request<'_>,
+    options: &ConvertOptions,
+    keep: bool,
+    caches: &Caches,
 ) -> (Conversion, Option<Model>) {
     let start = Instant::now();
     let mut c = Conversion {
@@ -90,10 +142,10 @@ pub fn convert_scenario_keeping(
         facts: Facts::default(),
     };
     let mut model = None;
-    c.result = run(request, options, &mut c.warnings, &mut c.timings, &mut c.facts)
-        .map(|(bytes, m)| {
+    c.result = run(request, options, caches, &mut c.warnings, &mut c.timings, &mut c.facts)
+        .map(|(output, m)| {
             model = keep.then_some(m);
-            bytes
+            output
         });
     c.timings.total_ms = ms(start);
     (c, model)
@@ -156,15 +208,16 @@ fn strict<T: ToString>(
 fn run(
     request: &Request<'_>,
     options: &ConvertOptions,
+    caches: &Caches,
     warnings: &mut Vec<StageWarning>,
     timings: &mut Timings,
     facts: &mut Facts,
-) -> Result<(Vec<u8>, Model), Failure> {
-    let mut prepared = prepare(request, options, warnings, timings)?;
+) -> Result<(Output, Model), Failure> {
+    let mut prepared = prepare(request, options, caches, warnings, timings)?;
 
     // 3. the run
     let t = Instant::now();
-    let run = run_engine(&prepared.scenario, prepared.road.as_ref(), options).map_err(|e| match e {
+    let run = run_engine(&prepared.scenario, prepared.road(), options).map_err(|e| match e {
         // the batch's --timeout reached the engine first: the same failure as the batch's own
         engine::Error::Deadline(t) => fail(Stage::Timeout, format!("not converted within the time limit (--timeout); the engine stopped at {t:.2} s")),
         other => fail(Stage::Engine, other.to_string()),
@@ -178,20 +231,30 @@ fn run(
 /// what its conversion adds the run to. `prepare` makes it; the batch pipeline runs the engine
 /// on it, a closed-loop session steps it (`closed_loop.rs`); `finish` turns a run into
 /// CommonRoad.
-#[derive(Debug)]
 pub struct Prepared {
     pub scenario: Scenario,
-    pub road: Option<opendrive::RoadNetwork>,
+    /// The road network and its converted map, shared through the batch's caches.
+    cached: Option<Arc<crate::cache::Road>>,
+    /// This scenario's copy of the lanelets (the light cycles are written into it).
     pub lanelets: Option<LaneletNetwork>,
     map_tags: std::collections::BTreeSet<commonroad::Tag>,
     light_of_signal: std::collections::BTreeMap<String, commonroad::TrafficLightId>,
 }
 
+impl Prepared {
+    /// The road network (`None`: the scenario names none).
+    pub fn road(&self) -> Option<&opendrive::RoadNetwork> {
+        self.cached.as_deref().map(|r| &r.network)
+    }
+}
+
 /// Stages 1 and 2: the scenario (schema pass, load, references) and its road network and
-/// lanelets, each with its warnings and time.
+/// lanelets (read and converted once per batch through `caches`), each with its warnings and
+/// time.
 pub(crate) fn prepare(
     request: &Request<'_>,
     options: &ConvertOptions,
+    caches: &Caches,
     warnings: &mut Vec<StageWarning>,
     timings: &mut Timings,
 ) -> Result<Prepared, Failure> {
@@ -232,40 +295,46 @@ pub(crate) fn prepare(
     };
     timings.load_ms = ms(t);
 
-    // 2. the road network and its lanelets
+    // 2. the road network and its lanelets (read and converted once per batch)
     let t = Instant::now();
-    let road = match &scenario.road_network.logic_file {
+    let cached = match &scenario.road_network.logic_file {
         Some(path) => {
-            let loaded = opendrive::load(path).map_err(|e| fail(Stage::RoadNetwork, e.to_string()))?;
-            warn(warnings, Stage::RoadNetwork, &loaded.warnings);
-            Some(loaded.network)
+            let (road, fresh) = caches.road(path, options);
+            let road = road.map_err(|e| fail(Stage::RoadNetwork, e))?;
+            warn(warnings, Stage::RoadNetwork, &road.warnings);
+            if fresh {
+                timings.road_network_ms = road.load_ms;
+                timings.map_ms = road.map_ms;
+            } else {
+                timings.road_network_ms = ms(t);
+            }
+            Some(road)
         }
         None => {
             warnings.push(StageWarning {
                 stage: Stage::RoadNetwork,
                 message: "the scenario names no road network (RoadNetwork/LogicFile)".into(),
             });
+            timings.road_network_ms = ms(t);
             None
         }
     };
-    timings.road_network_ms = ms(t);
-    strict(&engine::road_references(&scenario, road.as_ref()), Problems::References, Stage::RoadNetwork, options, warnings)?;
-    let t = Instant::now();
-    let (lanelets, map_tags, light_of_signal) = match &road {
+    let road = cached.as_deref().map(|r| &r.network);
+    strict(&engine::road_references(&scenario, road), Problems::References, Stage::RoadNetwork, options, warnings)?;
+    let (lanelets, map_tags, light_of_signal): (Option<LaneletNetwork>, _, _) = match &cached {
         Some(r) => {
-            let m = run_map(r, options);
-            warn(warnings, Stage::Map, &m.warnings);
-            (Some(m.network), m.tags, m.light_of_signal)
+            warn(warnings, Stage::Map, &r.map.warnings);
+            (Some(r.map.network.clone()), r.map.tags.clone(), r.map.light_of_signal.clone())
         }
         None => (None, Default::default(), Default::default()),
     };
-    timings.map_ms = ms(t);
-    Ok(Prepared { scenario, road, lanelets, map_tags, light_of_signal })
+    Ok(Prepared { scenario, cached, lanelets, map_tags, light_of_signal })
 }
 
 /// Stages 3 (the audit of the run's trace; `engine_start`: when the run began, for its time)
-/// to 5: traffic-light cycles, obstacles and planning problem, checks, bytes. `lanelets` are
-/// `prepared`'s, taken (or copied) because the light cycles are written into them.
+/// to 5: traffic-light cycles, obstacles and planning problem, checks, the output in the
+/// options' format. `lanelets` are `prepared`'s, taken (or copied) because the light cycles
+/// are written into them.
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn finish(
     prepared: &Prepared,
@@ -277,7 +346,7 @@ pub(crate) fn finish(
     warnings: &mut Vec<StageWarning>,
     timings: &mut Timings,
     facts: &mut Facts,
-) -> Result<(Vec<u8>, Model), Failure> {
+) -> Result<(Output, Model), Failure> {
     let scenario = &prepared.scenario;
     let audit = crate::audit::audit(trace, scenario, lanelets.as_ref())
         .map_err(|m| fail(Stage::Engine, format!("{}: {m}", scenario.path.display())))?;
@@ -303,10 +372,27 @@ pub(crate) fn finish(
     facts.tags = built.scenario.tags.iter().map(|t| t.as_str().to_string()).collect();
     timings.build_ms = ms(t);
 
-    // 5. bytes
+    // 5. the output
     let t = Instant::now();
-    let bytes = commonroad::xml::write_scenario(&built.scenario, &built.problems)
-        .map_err(|e| fail(Stage::Write, e.to_string()))?;
+    let output = match options.format {
+        OutputFormat::Xml2020a => Output::Xml(
+            commonroad::xml::write_scenario(&built.scenario, &built.problems)
+                .map_err(|e| fail(Stage::Write, e.to_string()))?,
+        ),
+        OutputFormat::Protobuf2024 => {
+            let write_error = |e: commonroad::protobuf::WriteError| fail(Stage::Write, e.to_string());
+            // the map of a cached road is encoded once for all its scenarios
+            let map = match &prepared.cached {
+                Some(road) => road.map_file(&built.scenario).map_err(write_error)?,
+                None => Arc::new(commonroad::protobuf::encode_map(&built.scenario).map_err(write_error)?),
+            };
+            let files = commonroad::protobuf::encode_scenario(&built.scenario, &built.problems, &map.id)
+                .map_err(write_error)?;
+            warn(warnings, Stage::Write, &map.warnings);
+            warn(warnings, Stage::Write, &files.warnings);
+            Output::Protobuf(Protobuf2024 { map, scenario: files.scenario, dynamic: files.dynamic })
+        }
+    };
     timings.write_ms = ms(t);
     let model = Model {
         scenario: built.scenario,
@@ -314,7 +400,7 @@ pub(crate) fn finish(
         names: built.names,
         events: crate::story_marks::event_marks(scenario, &trace.events),
     };
-    Ok((bytes, model))
+    Ok((output, model))
 }
 
 fn header(request: &Request<'_>, scenario: &Scenario, options: &ConvertOptions) -> Result<Header, String> {

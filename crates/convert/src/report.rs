@@ -26,6 +26,22 @@ pub enum Stage {
     Render,
 }
 
+impl Stage {
+    /// The stage's name as the report writes it (`road_network`, …).
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Stage::Load => "load",
+            Stage::RoadNetwork => "road_network",
+            Stage::Map => "map",
+            Stage::Engine => "engine",
+            Stage::Build => "build",
+            Stage::Write => "write",
+            Stage::Timeout => "timeout",
+            Stage::Render => "render",
+        }
+    }
+}
+
 /// A warning of one stage.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct StageWarning {
@@ -67,6 +83,20 @@ pub struct Variation {
 pub enum Status {
     Converted,
     Failed,
+    /// Its output files were all there from an earlier run, so it was not converted again
+    /// (`--resume`).
+    Complete,
+}
+
+impl Status {
+    /// The word the report and the table use.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Status::Converted => "converted",
+            Status::Failed => "failed",
+            Status::Complete => "complete",
+        }
+    }
 }
 
 /// One scenario (or one variation) of a batch.
@@ -76,7 +106,15 @@ pub struct ScenarioReport {
     pub input: PathBuf,
     /// Group of the summary table (the input's folder).
     pub folder: String,
+    /// The output file: the XML file (2020a), or the scenario file `<name>-SC.pb` (2024).
     pub output: Option<PathBuf>,
+    /// The dynamic file `<name>.pb` (2024 only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub dynamic: Option<PathBuf>,
+    /// The map file the scenario file refers to, shared with every scenario of the batch on the
+    /// same lanelet network (2024 only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub map: Option<PathBuf>,
     pub variation: Option<Variation>,
     pub status: Status,
     pub failure: Option<Failure>,

@@ -6,8 +6,9 @@ use std::path::{Path, PathBuf};
 
 use openscenario::{Content, Distribution, LoadOptions};
 
+use crate::cache::Caches;
 use crate::options::ConvertOptions;
-use crate::pipeline::{convert_scenario, Conversion, Request};
+use crate::pipeline::{convert_scenario_with, Conversion, Request};
 use crate::report::{Failure, Stage};
 
 /// Header source of a batch conversion: `input` is the file given (scenario or distribution),
@@ -33,13 +34,19 @@ pub fn batch_name(input: &Path) -> String {
 /// The output file name of a file given directly: `<stem>.xml`, or `<stem>_<k>.xml` for
 /// variation `k` (a batch adds `-2`, `-3`, … only when two inputs would share a name).
 pub fn output_file_name(input: &Path, variation: Option<u64>) -> PathBuf {
+    PathBuf::from(format!("{}.xml", output_name(input, variation)))
+}
+
+/// The output name (no extension) of a file given directly: `<stem>` or `<stem>_<k>`. The
+/// 2020a file is `<name>.xml`; the 2024 files are `<name>-SC.pb` and `<name>.pb`.
+pub fn output_name(input: &Path, variation: Option<u64>) -> String {
     let stem = input
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())
         .unwrap_or_else(|| "scenario".into());
     match variation {
-        Some(k) => PathBuf::from(format!("{stem}_{k}.xml")),
-        None => PathBuf::from(format!("{stem}.xml")),
+        Some(k) => format!("{stem}_{k}"),
+        None => stem,
     }
 }
 
@@ -51,6 +58,11 @@ fn file_name(p: &Path) -> String {
 
 /// Converts the scenario file `path` as `osc2cr convert path` does (no file is written).
 pub fn convert_file(path: &Path, options: &ConvertOptions) -> Conversion {
+    convert_file_with(path, options, &Caches::with_capacity(1))
+}
+
+/// Like [`convert_file`], reading the road network through `caches`.
+pub fn convert_file_with(path: &Path, options: &ConvertOptions, caches: &Caches) -> Conversion {
     let name = batch_name(path);
     let request = Request {
         path,
@@ -59,7 +71,7 @@ pub fn convert_file(path: &Path, options: &ConvertOptions) -> Conversion {
         parameters: &[],
         source: batch_source(path, None),
     };
-    convert_scenario(&request, options)
+    convert_scenario_with(&request, options, false, caches).0
 }
 
 /// Loads the parameter distribution file `path` with the options' global parameters and seed,
@@ -99,6 +111,18 @@ pub fn convert_variation(
     index: u64,
     options: &ConvertOptions,
 ) -> Conversion {
+    convert_variation_with(path, dist, index, options, &Caches::with_capacity(1))
+}
+
+/// Like [`convert_variation`], reading the road network through `caches` (a stream of
+/// variations on one map reads and converts it once).
+pub fn convert_variation_with(
+    path: &Path,
+    dist: &Distribution,
+    index: u64,
+    options: &ConvertOptions,
+    caches: &Caches,
+) -> Conversion {
     let Some(parameters) = index.checked_sub(1).and_then(|i| dist.get(i)) else {
         return Conversion {
             result: Err(Failure {
@@ -122,5 +146,5 @@ pub fn convert_variation(
         parameters: &parameters,
         source: batch_source(path, Some(index)),
     };
-    convert_scenario(&request, options)
+    convert_scenario_with(&request, options, false, caches).0
 }

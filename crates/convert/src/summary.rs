@@ -8,35 +8,75 @@ use crate::report::{FolderSummary, ScenarioReport, Status};
 
 /// One row per folder, folders sorted by name, plus a last row "all" when there are several.
 pub fn summarise(reports: &[ScenarioReport]) -> Vec<FolderSummary> {
-    let mut groups: BTreeMap<&str, Vec<&ScenarioReport>> = BTreeMap::new();
+    let mut s = Summary::default();
     for r in reports {
-        groups.entry(r.folder.as_str()).or_default().push(r);
+        s.add(r);
     }
-    let mut rows: Vec<FolderSummary> = groups
-        .into_iter()
-        .map(|(folder, rs)| row(folder, &rs))
-        .collect();
-    if rows.len() > 1 {
-        let all: Vec<&ScenarioReport> = reports.iter().collect();
-        rows.push(row("all", &all));
-    }
-    rows
+    s.rows()
 }
 
-fn row(folder: &str, rs: &[&ScenarioReport]) -> FolderSummary {
-    let ok: Vec<&&ScenarioReport> = rs.iter().filter(|r| r.status == Status::Converted).collect();
-    let mean = |v: Vec<f64>| (!v.is_empty()).then(|| v.iter().sum::<f64>() / v.len() as f64);
-    FolderSummary {
-        folder: folder.to_string(),
-        scenarios: rs.len(),
-        converted: ok.len(),
-        success_rate: if rs.is_empty() {
-            0.0
-        } else {
-            ok.len() as f64 / rs.len() as f64
-        },
-        mean_conversion_ms: mean(ok.iter().map(|r| r.timings.total_ms).collect()),
-        mean_duration_s: mean(ok.iter().filter_map(|r| r.duration_s).collect()),
+/// The summary table built as reports come in (a batch of 100,000 variations keeps no list of
+/// them): per folder, counts and the sums the means need. A conversion found complete from an
+/// earlier run (`--resume`) counts as converted but has no time or duration to average.
+#[derive(Debug, Clone, Default)]
+pub struct Summary {
+    folders: BTreeMap<String, Sums>,
+    all: Sums,
+}
+
+#[derive(Debug, Clone, Default)]
+struct Sums {
+    scenarios: usize,
+    converted: usize,
+    time_ms: (f64, usize),
+    duration_s: (f64, usize),
+}
+
+impl Sums {
+    fn add(&mut self, r: &ScenarioReport) {
+        self.scenarios += 1;
+        match r.status {
+            Status::Converted => {
+                self.converted += 1;
+                self.time_ms.0 += r.timings.total_ms;
+                self.time_ms.1 += 1;
+                if let Some(d) = r.duration_s {
+                    self.duration_s.0 += d;
+                    self.duration_s.1 += 1;
+                }
+            }
+            Status::Complete => self.converted += 1,
+            Status::Failed => {}
+        }
+    }
+
+    fn row(&self, folder: &str) -> FolderSummary {
+        let mean = |(sum, n): (f64, usize)| (n > 0).then(|| sum / n as f64);
+        FolderSummary {
+            folder: folder.to_string(),
+            scenarios: self.scenarios,
+            converted: self.converted,
+            success_rate: if self.scenarios == 0 { 0.0 } else { self.converted as f64 / self.scenarios as f64 },
+            mean_conversion_ms: mean(self.time_ms),
+            mean_duration_s: mean(self.duration_s),
+        }
+    }
+}
+
+impl Summary {
+    /// Counts one report (in batch order, so that the sums are those of a list).
+    pub fn add(&mut self, r: &ScenarioReport) {
+        self.folders.entry(r.folder.clone()).or_default().add(r);
+        self.all.add(r);
+    }
+
+    /// One row per folder, sorted by name, and a row "all" when there are several.
+    pub fn rows(&self) -> Vec<FolderSummary> {
+        let mut rows: Vec<FolderSummary> = self.folders.iter().map(|(f, s)| s.row(f)).collect();
+        if rows.len() > 1 {
+            rows.push(self.all.row("all"));
+        }
+        rows
     }
 }
 

@@ -160,7 +160,7 @@ fn drive_cut_in(mut step: impl FnMut(&mut ClosedLoop, usize) -> bool) -> Vec<u8>
     let mut session = ClosedLoop::start(&path, &ConvertOptions::default(), &External::named(["Ego"])).expect("starts");
     let ego = session.entity_names().iter().position(|n| n == "Ego").expect("Ego");
     while step(&mut session, ego) {}
-    session.finish().0.result.expect("converts")
+    session.finish().0.result.expect("converts").xml().expect("2020a XML").to_vec()
 }
 
 #[test]

@@ -37,6 +37,8 @@ fn report(folder: &str, ok: bool, ms: f64, dur: f64) -> ScenarioReport {
         input: PathBuf::from("x.xosc"),
         folder: folder.into(),
         output: None,
+        dynamic: None,
+        map: None,
         variation: None,
         status: if ok { Status::Converted } else { Status::Failed },
         failure: None,
@@ -71,4 +73,14 @@ fn summary_per_folder() {
     assert_eq!((all.folder.as_str(), all.scenarios, all.converted), ("all", 4, 3));
     let text = render_summary(&rows);
     assert!(text.contains("66.7 %") && text.contains("15.0 ms"), "{text}");
+}
+
+#[test]
+fn a_conversion_complete_from_an_earlier_run_counts_as_converted_without_a_time() {
+    let mut complete = report("a", true, 500.0, 500.0);
+    complete.status = Status::Complete;
+    let rows = summarise(&[report("a", true, 10.0, 20.0), complete, report("a", false, 1.0, 1.0)]);
+    assert_eq!((rows[0].scenarios, rows[0].converted), (3, 2));
+    assert_eq!(rows[0].mean_conversion_ms, Some(10.0), "only this run's conversions are timed");
+    assert_eq!(rows[0].mean_duration_s, Some(20.0));
 }

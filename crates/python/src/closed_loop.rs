@@ -150,11 +150,19 @@ impl Session {
     fn converted(&self, py: Python<'_>) -> PyResult<(Vec<u8>, Warnings, Model)> {
         let (conversion, model) = py.detach(|| self.view().finish());
         let warnings = warnings_of(&conversion.warnings);
-        match (conversion.result, model) {
+        match (conversion.result.and_then(xml_bytes), model) {
             (Ok(bytes), Some(model)) => Ok((bytes, warnings, model)),
             (Err(f), _) => Err(conversion_error(py, &f, &self.path, None)),
             (Ok(_), None) => Err(conversion_error(py, &Failure { stage: Stage::Build, message: "the conversion kept no model".into() }, &self.path, None)),
         }
+    }
+}
+
+/// The XML of a session's conversion (`Session::new` keeps the format 2020a).
+fn xml_bytes(output: convert::Output) -> Result<Vec<u8>, Failure> {
+    match output {
+        convert::Output::Xml(bytes) => Ok(bytes),
+        convert::Output::Protobuf(_) => Err(Failure { stage: Stage::Write, message: "a closed-loop session writes CommonRoad 2020a XML".into() }),
     }
 }
 
@@ -197,6 +205,9 @@ impl Session {
         options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<Session> {
         let (opts, _) = from_kwargs(options)?;
+        if opts.format != convert::OutputFormat::Xml2020a {
+            return Err(PyValueError::new_err("a closed-loop session gives its run as CommonRoad 2020a XML (to_xml, to_commonroad); format=\"2024\" is for osc2cr.convert"));
+        }
         let motion = self::motion(motion)?;
         let substeps = convert::whole_multiple(opts.step, opts.dt).ok_or_else(|| {
             PyValueError::new_err(format!("dt ({} s) must be a whole multiple of step ({} s) in a closed-loop run", opts.dt, opts.step))
@@ -363,7 +374,7 @@ impl Session {
     fn open_loop(&self, py: Python<'_>) -> PyResult<OpenLoop> {
         let (conversion, model) = py.detach(|| self.view().open_loop());
         let warnings = warnings_of(&conversion.warnings);
-        let bytes = conversion.result.map_err(|f| conversion_error(py, &f, &self.path, None))?;
+        let bytes = conversion.result.and_then(xml_bytes).map_err(|f| conversion_error(py, &f, &self.path, None))?;
         let names = model.map(|m| m.names).unwrap_or_default();
         Ok((String::from_utf8_lossy(&bytes).into_owned(), warnings, names, conversion.facts.ego.unwrap_or_default()))
     }

@@ -8,8 +8,10 @@
 //! the closed-loop benchmark to compare with.
 //!
 //! It owns only the mapping between Python values and the API of `convert` (and `render`):
-//! it knows nothing of commonroad-io (the Python side reads the XML and builds observations
-//! with it) and does no conversion or simulation itself.
+//! it knows nothing of commonroad-io (the Python side reads the XML, or the 2024 files, and
+//! builds observations with it) and does no conversion or simulation itself. A conversion
+//! returns the 2020a XML text or the 2024 format's three files as `bytes`, by the `format`
+//! option.
 
 mod benchmark;
 mod closed_loop;
@@ -20,36 +22,54 @@ mod variations;
 
 use std::path::PathBuf;
 
-use convert::{Conversion, FileKind};
+use convert::{Conversion, FileKind, Output};
 use pyo3::prelude::*;
+use pyo3::types::PyBytes;
 
 pub use closed_loop::Session;
 pub use variations::Variations;
 
-/// (XML text, [(stage, warning message)]) of a successful conversion.
-type Converted = (String, Vec<(&'static str, String)>);
+/// The files of a 2024 conversion: (map id, map, scenario file, dynamic file).
+type Files2024<'py> = (String, Bound<'py, PyBytes>, Bound<'py, PyBytes>, Bound<'py, PyBytes>);
 
-fn finish(py: Python<'_>, c: Conversion, file: &std::path::Path, variation: Option<u64>) -> PyResult<Converted> {
+/// What a conversion made, by format: the XML text (2020a) or the 2024 files.
+type Payload<'py> = (Option<String>, Option<Files2024<'py>>);
+
+/// (XML text or 2024 files, [(stage, warning message)]) of a successful conversion.
+type Converted<'py> = (Payload<'py>, Vec<(&'static str, String)>);
+
+fn payload(py: Python<'_>, output: Output) -> Payload<'_> {
+    match output {
+        Output::Xml(bytes) => (Some(String::from_utf8_lossy(&bytes).into_owned()), None),
+        Output::Protobuf(p) => {
+            let files = (p.map.id.clone(), PyBytes::new(py, &p.map.bytes), PyBytes::new(py, &p.scenario), PyBytes::new(py, &p.dynamic));
+            (None, Some(files))
+        }
+    }
+}
+
+fn finish<'py>(py: Python<'py>, c: Conversion, file: &std::path::Path, variation: Option<u64>) -> PyResult<Converted<'py>> {
     let warnings = c
         .warnings
         .iter()
         .map(|w| (errors::stage_name(w.stage), w.message.clone()))
         .collect();
     match c.result {
-        Ok(bytes) => Ok((String::from_utf8_lossy(&bytes).into_owned(), warnings)),
+        Ok(output) => Ok((payload(py, output), warnings)),
         Err(f) => Err(errors::conversion_error(py, &f, file, variation)),
     }
 }
 
-/// Converts the scenario file `path`; returns (xml, warnings). The bytes are those
+/// Converts the scenario file `path`; returns ((xml, files), warnings) — `xml` for the 2020a
+/// format, `files` (map id, map, scenario, dynamic bytes) for 2024. The bytes are those
 /// `osc2cr convert path` writes.
 #[pyfunction]
 #[pyo3(signature = (path, **options))]
-fn convert_file(
-    py: Python<'_>,
+fn convert_file<'py>(
+    py: Python<'py>,
     path: PathBuf,
-    options: Option<&Bound<'_, pyo3::types::PyDict>>,
-) -> PyResult<Converted> {
+    options: Option<&Bound<'py, pyo3::types::PyDict>>,
+) -> PyResult<Converted<'py>> {
     let (opts, _) = options::from_kwargs(options)?;
     let c = py.detach(|| convert::convert_file(&path, &opts));
     if c.result.is_err() && convert::classify(&path) == FileKind::Distribution {
@@ -65,15 +85,16 @@ fn convert_file(
     finish(py, c, &path, None)
 }
 
-/// Converts variation `index` (1-based) of the distribution file `path`; returns (xml, warnings).
+/// Converts variation `index` (1-based) of the distribution file `path`; returns what
+/// [`convert_file`] returns.
 #[pyfunction]
 #[pyo3(signature = (path, index, **options))]
-fn convert_variation(
-    py: Python<'_>,
+fn convert_variation<'py>(
+    py: Python<'py>,
     path: PathBuf,
     index: u64,
-    options: Option<&Bound<'_, pyo3::types::PyDict>>,
-) -> PyResult<Converted> {
+    options: Option<&Bound<'py, pyo3::types::PyDict>>,
+) -> PyResult<Converted<'py>> {
     let (opts, _) = options::from_kwargs(options)?;
     let dist = convert::load_distribution(&path, &opts)
         .map_err(|f| errors::conversion_error(py, &f, &path, None))?;

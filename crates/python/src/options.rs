@@ -33,6 +33,7 @@ pub const NAMES: &[&str] = &[
     "map_tolerance",
     "engine_seed",
     "lenient",
+    "format",
 ];
 
 /// Options from keyword arguments; `None` values mean "the default", like an option not given.
@@ -82,6 +83,9 @@ pub fn from_kwargs(kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<(ConvertOptio
                 o.engine_seed = u32::try_from(n).map_err(|_| PyValueError::new_err(format!("{key} must be below 2**32")))?;
             }
             "lenient" => o.lenient = boolean(&key, v)?,
+            "format" => {
+                o.format = string(&key, v)?.parse().map_err(|e: String| PyValueError::new_err(format!("format: {e}")))?
+            }
             _ => return Err(unknown(&key)),
         }
     }

@@ -5,7 +5,7 @@
 
 use std::path::PathBuf;
 
-use convert::ConvertOptions;
+use convert::{Caches, ConvertOptions};
 use openscenario::Distribution;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -14,13 +14,16 @@ use pyo3::types::PyDict;
 use crate::errors::conversion_error;
 use crate::options::from_kwargs;
 
-/// Lazy iterator over (index, parameters, xml, warnings) of the variations `start <= index <
-/// stop` of a distribution file (indices from 1, as in the output names `<stem>_<index>.xml`).
+/// Lazy iterator over (index, parameters, (xml, files), warnings) of the variations `start <=
+/// index < stop` of a distribution file (indices from 1, as in the output names
+/// `<stem>_<index>.xml`); the road network is read and converted once for the whole stream.
 #[pyclass(module = "osc2cr._osc2cr")]
 pub struct Variations {
     path: PathBuf,
     dist: Distribution,
     options: ConvertOptions,
+    /// The road network of the variations, read and converted once for the whole stream.
+    caches: Caches,
     next: u64,
     /// Exclusive.
     stop: u64,
@@ -54,12 +57,13 @@ pub fn variations(
         path,
         dist,
         options: opts,
+        caches: Caches::with_capacity(2),
         next: start,
         stop: end.max(start),
     })
 }
 
-type Item = (u64, Vec<(String, String)>, String, Vec<(&'static str, String)>);
+type Item<'py> = (u64, Vec<(String, String)>, crate::Payload<'py>, Vec<(&'static str, String)>);
 
 #[pymethods]
 impl Variations {
@@ -67,7 +71,7 @@ impl Variations {
         slf
     }
 
-    fn __next__(mut slf: PyRefMut<'_, Self>, py: Python<'_>) -> PyResult<Option<Item>> {
+    fn __next__<'py>(mut slf: PyRefMut<'py, Self>, py: Python<'py>) -> PyResult<Option<Item<'py>>> {
         if slf.next >= slf.stop {
             return Ok(None);
         }
@@ -75,14 +79,14 @@ impl Variations {
         slf.next += 1;
         let this = &*slf;
         let parameters = this.dist.get(k - 1).unwrap_or_default();
-        let c = py.detach(|| convert::convert_variation(&this.path, &this.dist, k, &this.options));
+        let c = py.detach(|| convert::convert_variation_with(&this.path, &this.dist, k, &this.options, &this.caches));
         let warnings = c
             .warnings
             .iter()
             .map(|w| (crate::errors::stage_name(w.stage), w.message.clone()))
             .collect();
         match c.result {
-            Ok(bytes) => Ok(Some((k, parameters, String::from_utf8_lossy(&bytes).into_owned(), warnings))),
+            Ok(output) => Ok(Some((k, parameters, crate::payload(py, output), warnings))),
             Err(f) => Err(conversion_error(py, &f, &this.path, Some(k))),
         }
     }

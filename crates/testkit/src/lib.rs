@@ -1,14 +1,17 @@
 //! `testkit` — support for the tests of the other crates (never used by the product):
 //! locates the read-only `../shared` directory and its corpus, prepares the two Python
 //! environments of the CommonRoad checking tools once per process, and runs `cr_check.py` on
-//! batches of files, returning its JSON findings as data.
+//! batches of files, returning its JSON findings as data, and compares the CommonRoad 2020a and
+//! 2024 renderings of a conversion with commonroad-io (`py/compare_2024.py`).
 //!
 //! It knows the layout of `../shared/tools` and nothing of the converter's crates.
 
+mod compare_2024;
 mod cr_check;
 mod python;
 mod shared;
 
+pub use compare_2024::{compare_2024, Case2024, Comparison2024};
 pub use cr_check::{cr_check, CrCheckResult, Finding};
 pub use python::{python_envs, PyEnvs};
 pub use shared::{corpus_files, files_with_ext, shared_dir, workspace_root};

@@ -67,7 +67,7 @@ pub struct Outcome {
 impl Outcome {
     /// The CommonRoad bytes, when the conversion succeeded.
     pub fn bytes(&self) -> Option<&[u8]> {
-        self.conversion.result.as_ref().ok().map(Vec::as_slice)
+        self.conversion.result.as_ref().ok().and_then(convert::Output::xml)
     }
 
     /// The report of entity `name`.

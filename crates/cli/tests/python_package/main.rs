@@ -217,6 +217,31 @@ fn a_fresh_environment_reads_a_converted_corpus_scenario_as_commonroad_objects()
     assert!(got26.starts_with(&expected), "2026.1 reader:\n{got26}");
 }
 
+const FORMAT_2024: &str = r#"
+import sys, os, warnings, tempfile
+import osc2cr
+warnings.simplefilter("ignore", osc2cr.ConversionWarning)
+path, dist, cli_dir = sys.argv[1], sys.argv[2], sys.argv[3]
+files = osc2cr.convert_to_protobuf(path)
+cli = lambda name: open(os.path.join(cli_dir, name), "rb").read()
+stem = osc2cr.output_name(path, format="2024")[: -len("-SC.pb")]
+print("bytes", files.scenario == cli(stem + "-SC.pb"), files.dynamic == cli(stem + ".pb"), files.map == cli(files.map_id + ".pb"))
+scenario, problems = osc2cr.convert(path, format="2024")
+s20, p20 = osc2cr.convert(path)
+print("objects", len(scenario.dynamic_obstacles) == len(s20.dynamic_obstacles), len(scenario.lanelet_network.lanelets) == len(s20.lanelet_network.lanelets),
+      list(problems.planning_problem_dict) == list(p20.planning_problem_dict), str(scenario.scenario_id) == str(s20.scenario_id))
+out = tempfile.mkdtemp()
+written = files.write(out, stem)
+s2, _ = osc2cr.read_protobuf_files(written[0])
+print("written", [os.path.basename(p) for p in written] == [stem + "-SC.pb", stem + ".pb", files.map_id + ".pb"], len(s2.dynamic_obstacles) == len(s20.dynamic_obstacles))
+vs = list(osc2cr.variations(dist, stop=3, format="2024"))
+print("variations", len(vs), vs[0].xml is None, vs[0].protobuf.map_id == vs[1].protobuf.map_id, vs[0].protobuf.dynamic != vs[1].protobuf.dynamic)
+try:
+    osc2cr.convert_to_xml(path, format="2024")
+except ValueError:
+    print("xml refuses 2024")
+"#;
+
 const ERRORS: &str = r#"
 import sys, pickle, itertools, warnings
 import osc2cr
@@ -258,6 +283,29 @@ with warnings.catch_warnings(record=True) as caught:
 "#;
 
 #[test]
+fn the_2024_format_comes_as_the_cli_files_and_reads_with_commonroad_io_2026() {
+    let Some(env) = env() else { return };
+    let file = corpus("esmini/xosc/cut-in.xosc");
+    let dist = corpus("esmini/xosc/cut-in_parameter_set.xosc");
+    let out = tmp("format-2024");
+    let r = Command::new(env!("CARGO_BIN_EXE_osc2cr"))
+        .args(["convert", s(&file), "-o", s(&out), "--format", "2024"])
+        .output()
+        .expect("osc2cr runs");
+    assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
+    // the three-file reader is commonroad-io 2026's
+    let cr = testkit::python_envs().expect("python envs").cr;
+    let script = format!("import sys; sys.path.insert(0, {:?})\n{FORMAT_2024}", env.package_only.display().to_string());
+    let got = python(&cr, &script, &[&file, &dist, &out]);
+    let lines: Vec<&str> = got.lines().collect();
+    assert_eq!(lines, ["bytes True True True", "objects True True True True", "written True True", "variations 2 True True True", "xml refuses 2024"], "{got}");
+}
+
+fn s(p: &Path) -> &str {
+    p.to_str().expect("utf-8 path")
+}
+
+#[test]
 fn errors_carry_file_line_and_column_and_variations_stream() {
     let Some(env) = env() else { return };
     let dir = tmp("errors");
@@ -297,37 +345,44 @@ fn errors_carry_file_line_and_column_and_variations_stream() {
 fn the_dask_example_on_two_workers_writes_the_cli_files() {
     let Some(env) = env() else { return };
     let dist = corpus("esmini/xosc/cut-in_parameter_set.xosc");
-    let (cli, dask) = (tmp("dask-cli"), tmp("dask-out"));
-    osc2cr_convert(&[&dist], &cli);
-    let example = testkit::workspace_root().join("examples/dask_variations.py");
-    let out = Command::new(&env.python)
-        .arg(&example)
-        .arg(&dist)
-        .arg("-o")
-        .arg(&dask)
-        .args(["--workers", "2"])
-        .output()
-        .expect("python runs");
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    let report = String::from_utf8_lossy(&out.stdout);
-    assert!(report.contains(r#""variations": 12"#) && report.contains(r#""workers": 2"#), "{report}");
-    let names = |d: &Path| {
-        let mut v: Vec<PathBuf> = std::fs::read_dir(d)
-            .expect("dir")
-            .flatten()
-            .map(|e| e.path())
-            .collect();
-        v.sort();
-        v
-    };
-    let (a, b) = (names(&cli), names(&dask));
-    assert_eq!(a.len(), 12);
-    assert_eq!(
-        a.iter().map(|p| p.file_name()).collect::<Vec<_>>(),
-        b.iter().map(|p| p.file_name()).collect::<Vec<_>>()
-    );
-    for (x, y) in a.iter().zip(&b) {
-        assert!(std::fs::read(x).ok() == std::fs::read(y).ok(), "{} differs", y.display());
+    for format in ["2020a", "2024"] {
+        let (cli, dask) = (tmp(&format!("dask-cli-{format}")), tmp(&format!("dask-out-{format}")));
+        let r = Command::new(env!("CARGO_BIN_EXE_osc2cr"))
+            .args(["convert", s(&dist), "-o", s(&cli), "--format", format])
+            .output()
+            .expect("osc2cr runs");
+        assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
+        let example = testkit::workspace_root().join("examples/dask_variations.py");
+        let out = Command::new(&env.python)
+            .arg(&example)
+            .arg(&dist)
+            .arg("-o")
+            .arg(&dask)
+            .args(["--workers", "2", "--format", format])
+            .output()
+            .expect("python runs");
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        let report = String::from_utf8_lossy(&out.stdout);
+        assert!(report.contains(r#""variations": 12"#) && report.contains(r#""workers": 2"#), "{report}");
+        let names = |d: &Path| {
+            let mut v: Vec<PathBuf> = std::fs::read_dir(d)
+                .expect("dir")
+                .flatten()
+                .map(|e| e.path())
+                .collect();
+            v.sort();
+            v
+        };
+        let (a, b) = (names(&cli), names(&dask));
+        // 12 XML files, or 12 scenario and 12 dynamic files and their one map
+        assert_eq!(a.len(), if format == "2020a" { 12 } else { 25 }, "{a:?}");
+        assert_eq!(
+            a.iter().map(|p| p.file_name()).collect::<Vec<_>>(),
+            b.iter().map(|p| p.file_name()).collect::<Vec<_>>()
+        );
+        for (x, y) in a.iter().zip(&b) {
+            assert!(std::fs::read(x).ok() == std::fs::read(y).ok(), "{} differs", y.display());
+        }
     }
 }
 

@@ -9,6 +9,9 @@
 //! it cost 8 ms per file at best and up to 0.75 s on a busy disk — most of a conversion's time.
 //! Our outputs are derived data that a rerun regenerates; a caller that must survive power
 //! loss can sync the file (and its directory) itself.
+//!
+//! A process killed between the two steps leaves its temporary file (`.<name>.<pid>.<n>.tmp`),
+//! never a final name; [`remove_stale_temporaries`] clears those of processes that are gone.
 
 use std::fs::{self, File, OpenOptions};
 use std::io::Write;
@@ -56,4 +59,65 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
         let _ = fs::remove_file(&tmp);
     }
     result
+}
+
+/// The writer's process id if `name` is a temporary file name of [`write_atomic`]
+/// (`.<name>.<pid>.<anything>.tmp`).
+fn temporary_owner(name: &str) -> Option<u32> {
+    let inner = name.strip_prefix('.')?.strip_suffix(".tmp")?;
+    let mut parts = inner.rsplitn(3, '.');
+    let _counter = parts.next()?;
+    let pid = parts.next()?.parse::<u32>().ok()?;
+    let target = parts.next()?;
+    (!target.is_empty()).then_some(pid)
+}
+
+/// Whether process `pid` runs on this machine; `None` when that cannot be told (no `/proc`).
+fn process_runs(pid: u32) -> Option<bool> {
+    let proc_dir = Path::new("/proc");
+    if !proc_dir.join("self").exists() {
+        return None;
+    }
+    Some(proc_dir.join(pid.to_string()).exists())
+}
+
+/// Removes, below `dir` (recursively, not following links), the temporary files of
+/// [`write_atomic`] whose writer process is no longer running — what a killed batch leaves. A
+/// temporary file of a running process (another shard writing into the same folder) is left
+/// alone, and so is every file when it cannot be told whether its writer runs (no `/proc`).
+/// Returns the files removed.
+pub fn remove_stale_temporaries(dir: &Path) -> Vec<PathBuf> {
+    let mut removed = Vec::new();
+    let mut stack = vec![(dir.to_path_buf(), 0usize)];
+    while let Some((d, depth)) = stack.pop() {
+        let Ok(entries) = fs::read_dir(&d) else { continue };
+        for e in entries.flatten() {
+            let Ok(kind) = e.file_type() else { continue };
+            let path = e.path();
+            if kind.is_dir() && depth < 64 {
+                stack.push((path, depth + 1));
+                continue;
+            }
+            let Some(pid) = e.file_name().to_str().and_then(temporary_owner) else { continue };
+            if pid != std::process::id() && process_runs(pid) == Some(false) && fs::remove_file(&path).is_ok() {
+                removed.push(path);
+            }
+        }
+    }
+    removed.sort();
+    removed
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn temporary_names_are_recognised() {
+        assert_eq!(temporary_owner(".cut_in.xml.4242.7.tmp"), Some(4242));
+        assert_eq!(temporary_owner(".ZAM_0a-1.pb.17.stream.tmp"), Some(17));
+        assert_eq!(temporary_owner("cut_in.xml"), None);
+        assert_eq!(temporary_owner(".cut_in.xml.x.7.tmp"), None);
+        assert_eq!(temporary_owner("..1.2.tmp"), None);
+    }
 }

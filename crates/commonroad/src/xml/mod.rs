@@ -9,7 +9,7 @@ mod number;
 mod read;
 mod write;
 
-pub use atomic::write_atomic;
+pub use atomic::{remove_stale_temporaries, write_atomic};
 pub use error::WriteError;
 pub use escape::escape;
 pub use read::{read_scenario_file, read_scenario_str, ReadError, ReadScenario, ReadWarning, MAX_FILE_BYTES};

@@ -1,0 +1,162 @@
+//! The parameter-sweep benchmark: `examples/sweep/motorway_sweep.xosc` (a cut-in on a 10 km
+//! motorway, 100,000 variations) converted by `osc2cr convert -j 2`, in the 2024 format and in
+//! 2020a. For each run: wall time, variations per second, the converting process's peak memory
+//! (its maximum resident set, from `wait4`) and the disk its outputs take (allocated blocks and
+//! bytes). Figures, not assertions: it prints them and checks only that everything converted.
+//!
+//!     cargo bench -p osc2cr --bench sweep
+//!
+//! Environment: `OSC2CR_SWEEP_SIZES` (2024 runs, default `1000,10000,100000`),
+//! `OSC2CR_SWEEP_2020A_SIZES` (default `1000`: each 2020a file repeats the map, 0.8 MB, so the
+//! whole sweep would need ~80 GB; its disk and time are extrapolated from this subset, and said
+//! so), `OSC2CR_SWEEP_JOBS` (default 2), `OSC2CR_SWEEP_OUT` (default `target/sweep-bench`;
+//! outputs are removed after each run unless `OSC2CR_SWEEP_KEEP=1`).
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::Instant;
+
+fn sizes(var: &str, default: &str) -> Vec<u64> {
+    std::env::var(var)
+        .unwrap_or_else(|_| default.to_string())
+        .split(',')
+        .filter_map(|s| s.trim().parse().ok())
+        .collect()
+}
+
+/// Files, bytes and allocated bytes below `dir`.
+fn disk_use(dir: &Path) -> (u64, u64, u64) {
+    use std::os::unix::fs::MetadataExt;
+    let (mut files, mut bytes, mut allocated) = (0, 0, 0);
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        let Ok(entries) = std::fs::read_dir(&d) else { continue };
+        for e in entries.flatten() {
+            let Ok(m) = e.metadata() else { continue };
+            if m.is_dir() {
+                stack.push(e.path());
+            } else {
+                files += 1;
+                bytes += m.len();
+                allocated += m.blocks() * 512;
+            }
+        }
+    }
+    (files, bytes, allocated)
+}
+
+struct Run {
+    format: &'static str,
+    variations: u64,
+    wall_s: f64,
+    peak_rss_mb: f64,
+    files: u64,
+    bytes: u64,
+    allocated: u64,
+    maps: usize,
+}
+
+/// Runs the conversion as a child process and waits for it with `wait4`, which reports the
+/// child's own peak resident set.
+fn run(format: &'static str, variations: u64, jobs: &str, out: &Path) -> Run {
+    let _ = std::fs::remove_dir_all(out);
+    let sweep = testkit::workspace_root().join("examples/sweep/motorway_sweep.xosc");
+    let table = out.with_extension("tsv");
+    let n = variations.to_string();
+    let start = Instant::now();
+    let child = Command::new(env!("CARGO_BIN_EXE_osc2cr"))
+        .arg("convert")
+        .arg(&sweep)
+        .arg("-o")
+        .arg(out)
+        .args(["--format", format, "-j", jobs, "--max-variations", &n, "--table"])
+        .arg(&table)
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("osc2cr starts");
+    let pid = child.id() as libc::pid_t;
+    let mut status = 0;
+    // SAFETY: an all-zero rusage is a valid value for wait4 to fill
+    let mut usage: libc::rusage = unsafe { std::mem::zeroed() };
+    // SAFETY: pid is our child, the pointers are valid for the call
+    let waited = unsafe { libc::wait4(pid, &mut status, 0, &mut usage) };
+    let wall_s = start.elapsed().as_secs_f64();
+    assert_eq!(waited, pid, "wait4: {}", std::io::Error::last_os_error());
+    assert!(libc::WIFEXITED(status) && libc::WEXITSTATUS(status) == 0, "osc2cr {format} {variations} failed ({status})");
+    let rows = std::fs::read_to_string(&table).expect("table");
+    let converted = rows.lines().skip(1).filter(|l| l.split('\t').nth(3) == Some("converted")).count() as u64;
+    assert_eq!(converted, variations, "every variation converted");
+    let (files, bytes, allocated) = disk_use(out);
+    let maps = std::fs::read_dir(out)
+        .map(|rd| rd.flatten().filter(|e| e.file_name().to_string_lossy().starts_with("ZAM_")).count())
+        .unwrap_or(0);
+    Run { format, variations, wall_s, peak_rss_mb: usage.ru_maxrss as f64 / 1024.0, files, bytes, allocated, maps }
+}
+
+fn gb(b: u64) -> f64 {
+    b as f64 / 1e9
+}
+
+fn main() {
+    // `cargo bench` passes --bench; nothing else is read from the command line
+    let jobs = std::env::var("OSC2CR_SWEEP_JOBS").unwrap_or_else(|_| "2".into());
+    let root: PathBuf = std::env::var_os("OSC2CR_SWEEP_OUT")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| testkit::workspace_root().join("target/sweep-bench"));
+    let keep = std::env::var_os("OSC2CR_SWEEP_KEEP").is_some();
+    std::fs::create_dir_all(&root).expect("output folder");
+    let mut runs = Vec::new();
+    let plan: Vec<(&'static str, u64)> = sizes("OSC2CR_SWEEP_SIZES", "1000,10000,100000")
+        .into_iter()
+        .map(|n| ("2024", n))
+        .chain(sizes("OSC2CR_SWEEP_2020A_SIZES", "1000").into_iter().map(|n| ("2020a", n)))
+        .collect();
+    for (format, n) in plan {
+        let out = root.join(format!("{format}-{n}"));
+        eprintln!("converting {n} variations in {format} with -j {jobs} into {} ...", out.display());
+        let r = run(format, n, &jobs, &out);
+        eprintln!(
+            "  {:.1} s, {:.0} variations/s, peak {:.1} MB, {} files, {:.2} GB on disk ({:.2} GB of bytes), {} map(s)",
+            r.wall_s,
+            r.variations as f64 / r.wall_s,
+            r.peak_rss_mb,
+            r.files,
+            gb(r.allocated),
+            gb(r.bytes),
+            r.maps
+        );
+        if !keep {
+            let _ = std::fs::remove_dir_all(&out);
+        }
+        runs.push(r);
+    }
+    println!("\nsweep: examples/sweep/motorway_sweep.xosc, -j {jobs}, {} CPUs", std::thread::available_parallelism().map_or(1, |n| n.get()));
+    println!("format  variations   wall s  variations/s  peak RSS MB  files   disk GB  bytes GB  per variation KB  maps");
+    for r in &runs {
+        println!(
+            "{:<6}  {:>10}  {:>7.1}  {:>12.1}  {:>11.1}  {:>6}  {:>8.3}  {:>8.3}  {:>16.1}  {:>4}",
+            r.format,
+            r.variations,
+            r.wall_s,
+            r.variations as f64 / r.wall_s,
+            r.peak_rss_mb,
+            r.files,
+            gb(r.allocated),
+            gb(r.bytes),
+            r.allocated as f64 / r.variations as f64 / 1e3,
+            r.maps
+        );
+    }
+    // the whole sweep in 2020a, extrapolated from the largest 2020a run (per-variation cost)
+    if let Some(r) = runs.iter().filter(|r| r.format == "2020a").max_by_key(|r| r.variations) {
+        let total = 100_000.0;
+        let scale = total / r.variations as f64;
+        println!(
+            "2020a extrapolated to 100000 variations from {}: {:.0} s, {:.1} GB on disk (not run: it would not fit)",
+            r.variations,
+            r.wall_s * scale,
+            gb((r.allocated as f64 * scale) as u64)
+        );
+    }
+}
