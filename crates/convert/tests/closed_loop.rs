@@ -6,25 +6,8 @@
 //! state is reached at the end (fed its states every 0.1 s, cut-in's ego drives as in the
 //! batch), an entity taken over in between dead-reckons; `open_loop` is the batch conversion.
 
-use std::path::{Path, PathBuf};
-
 use convert::{batch_name, batch_source, convert_scenario_keeping, ClosedLoop, ConvertOptions, Model, Request};
 use engine::{External, ExternalState, Input, ScriptedMotion};
-
-/// The scenarios the reference compares (class core or controller-model).
-fn compared(shared: &Path) -> Vec<PathBuf> {
-    let corpus = shared.join("corpus");
-    let reference = shared.join("reference/esmini-3.6.0");
-    testkit::files_with_ext(&corpus, "xosc")
-        .into_iter()
-        .filter(|f| {
-            let rel = f.strip_prefix(&corpus).expect("under corpus").with_extension("json");
-            let Ok(text) = std::fs::read_to_string(reference.join(rel)) else { return false };
-            let json: serde_json::Value = serde_json::from_str(&text).expect("reference json");
-            matches!(json["class"].as_str(), Some("core" | "controller-model"))
-        })
-        .collect()
-}
 
 /// The largest difference between two models' obstacle states (infinite when their
 /// obstacles or trajectories differ in number or time steps).
@@ -63,7 +46,7 @@ fn a_session_converts_as_the_batch_and_a_replayed_ego_changes_nothing() {
     let Some(shared) = testkit::shared_dir() else { return };
     let options = ConvertOptions::default();
     let mut failures = Vec::new();
-    let files = compared(&shared);
+    let files = testkit::compared_scenarios(&shared);
     assert!(files.len() > 100);
     for path in &files {
         let name = batch_name(path);

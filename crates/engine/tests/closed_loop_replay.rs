@@ -7,22 +7,7 @@
 //! the run says so, naming the ego as driven from outside.
 
 use engine::{External, ExternalState, Input, RunControl, ScriptedMotion, Settings, Simulation};
-use std::path::{Path, PathBuf};
-
-/// The scenarios the reference compares (class core or controller-model).
-fn compared(shared: &Path) -> Vec<PathBuf> {
-    let corpus = shared.join("corpus");
-    let reference = shared.join("reference/esmini-3.6.0");
-    testkit::files_with_ext(&corpus, "xosc")
-        .into_iter()
-        .filter(|f| {
-            let rel = f.strip_prefix(&corpus).expect("under corpus").with_extension("json");
-            let Ok(text) = std::fs::read_to_string(reference.join(rel)) else { return false };
-            let json: serde_json::Value = serde_json::from_str(&text).expect("reference json");
-            matches!(json["class"].as_str(), Some("core" | "controller-model"))
-        })
-        .collect()
-}
+use std::path::PathBuf;
 
 /// The largest difference between the two runs' rows (x, y, z, h, speed, acceleration, yaw
 /// rate of every entity at every step), and where; infinite when their shapes differ.
@@ -57,7 +42,7 @@ struct Replayed {
 
 fn replay_corpus(motion: ScriptedMotion) -> Vec<Replayed> {
     let Some(shared) = testkit::shared_dir() else { return Vec::new() };
-    let files = compared(&shared);
+    let files = testkit::compared_scenarios(&shared);
     assert!(files.len() > 100, "only {} compared scenarios", files.len());
     let mut out = Vec::new();
     for f in &files {

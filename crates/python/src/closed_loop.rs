@@ -15,7 +15,7 @@ use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyByteArray, PyBytes, PyDict};
 
-use crate::errors::{conversion_error, stage_name};
+use crate::errors::conversion_error;
 use crate::inputs::{from_parts, from_row, DRIVER_WIDTH, STATE_WIDTHS};
 use crate::options::from_kwargs;
 
@@ -70,7 +70,7 @@ fn step_error(f: Failure) -> PyErr {
 }
 
 fn warnings_of(list: &[convert::StageWarning]) -> Warnings {
-    list.iter().map(|w| (stage_name(w.stage), w.message.clone())).collect()
+    list.iter().map(|w| (w.stage.as_str(), w.message.clone())).collect()
 }
 
 impl Session {

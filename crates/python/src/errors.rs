@@ -80,19 +80,6 @@ fn digits(s: &str) -> Option<u32> {
     s.parse().ok()
 }
 
-pub fn stage_name(s: Stage) -> &'static str {
-    match s {
-        Stage::Load => "load",
-        Stage::RoadNetwork => "road_network",
-        Stage::Map => "map",
-        Stage::Engine => "engine",
-        Stage::Build => "build",
-        Stage::Write => "write",
-        Stage::Timeout => "timeout",
-        Stage::Render => "render",
-    }
-}
-
 /// The Python exception for `failure` of converting `file` (variation `variation`, if any).
 pub fn conversion_error(py: Python<'_>, failure: &Failure, file: &Path, variation: Option<u64>) -> PyErr {
     let p = position(&failure.message, file);
@@ -103,7 +90,7 @@ pub fn conversion_error(py: Python<'_>, failure: &Failure, file: &Path, variatio
             p.file,
             p.line,
             p.column,
-            stage_name(failure.stage),
+            failure.stage.as_str(),
             variation,
         ))?;
         Ok(PyErr::from_value(value))

@@ -52,7 +52,7 @@ fn finish<'py>(py: Python<'py>, c: Conversion, file: &std::path::Path, variation
     let warnings = c
         .warnings
         .iter()
-        .map(|w| (errors::stage_name(w.stage), w.message.clone()))
+        .map(|w| (w.stage.as_str(), w.message.clone()))
         .collect();
     match c.result {
         Ok(output) => Ok((payload(py, output), warnings)),

@@ -83,7 +83,7 @@ impl Variations {
         let warnings = c
             .warnings
             .iter()
-            .map(|w| (crate::errors::stage_name(w.stage), w.message.clone()))
+            .map(|w| (w.stage.as_str(), w.message.clone()))
             .collect();
         match c.result {
             Ok(output) => Ok(Some((k, parameters, crate::payload(py, output), warnings))),

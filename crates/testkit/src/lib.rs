@@ -14,4 +14,4 @@ mod shared;
 pub use compare_2024::{compare_2024, Case2024, Comparison2024};
 pub use cr_check::{cr_check, CrCheckResult, Finding};
 pub use python::{python_envs, PyEnvs};
-pub use shared::{corpus_files, files_with_ext, shared_dir, workspace_root};
+pub use shared::{compared_scenarios, corpus_files, files_with_ext, shared_dir, workspace_root};

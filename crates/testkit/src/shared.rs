@@ -66,3 +66,19 @@ pub fn files_with_ext(dir: &Path, ext: &str) -> Vec<PathBuf> {
     out.sort();
     out
 }
+
+/// The corpus scenarios the reference compares (its JSON beside the trace gives the class
+/// `core` or `controller-model`), under `shared`'s corpus, sorted.
+pub fn compared_scenarios(shared: &Path) -> Vec<PathBuf> {
+    let corpus = shared.join("corpus");
+    let reference = shared.join("reference/esmini-3.6.0");
+    files_with_ext(&corpus, "xosc")
+        .into_iter()
+        .filter(|f| {
+            let Ok(rel) = f.strip_prefix(&corpus) else { return false };
+            let Ok(text) = std::fs::read_to_string(reference.join(rel.with_extension("json"))) else { return false };
+            let Ok(json) = serde_json::from_str::<serde_json::Value>(&text) else { return false };
+            matches!(json["class"].as_str(), Some("core" | "controller-model"))
+        })
+        .collect()
+}
