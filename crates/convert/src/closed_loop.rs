@@ -114,25 +114,15 @@ impl ClosedLoop {
     /// this session's conversion makes the ego), run on the scenario and map already loaded:
     /// what the run would have been with nobody driving from outside.
     pub fn open_loop(&self) -> (Conversion, Option<Model>) {
-        let mut warnings = self.warnings.clone();
-        let mut timings = self.timings;
-        let mut facts = Facts::default();
         let prepared = self.session.borrow_owner();
         let started = Instant::now();
-        let built = run_engine(&prepared.scenario, prepared.road(), &self.options)
-            .map_err(engine_failure)
-            .and_then(|run| {
-                warnings.extend(run.warnings.iter().map(|w| StageWarning { stage: Stage::Engine, message: w.clone() }));
-                let name = batch_name(&self.path);
-                let request = Request { path: &self.path, name: &name, config: 1, parameters: &[], source: batch_source(&self.path, None) };
-                finish(prepared, prepared.lanelets.clone(), &request, &self.options, &run.trace, started, &mut warnings, &mut timings, &mut facts)
-            });
-        let mut model = None;
-        let result = built.map(|(bytes, m)| {
-            model = Some(m);
-            bytes
-        });
-        (Conversion { result, warnings, timings, facts }, model)
+        match run_engine(&prepared.scenario, prepared.road(), &self.options) {
+            Ok(run) => self.convert_run(&run.trace, run.warnings, started),
+            Err(e) => {
+                let conversion = Conversion { result: Err(engine_failure(e)), warnings: self.warnings.clone(), timings: self.timings, facts: Facts::default() };
+                (conversion, None)
+            }
+        }
     }
 
     /// What loading the scenario and converting its map said.
@@ -183,19 +173,26 @@ impl ClosedLoop {
     /// The run so far as a conversion of the file: the bytes `osc2cr convert` would write had
     /// the run gone this way, and the model they serialise.
     pub fn finish(&self) -> (Conversion, Option<Model>) {
+        let run = self.session.with_dependent(|_, sim| sim.run_so_far());
+        let warnings = run.warnings.iter().map(ToString::to_string).collect();
+        self.convert_run(&run.trace, warnings, self.started)
+    }
+
+    /// `trace` (with the engine's `engine_warnings`; begun at `started`) converted as
+    /// `convert` converts a run of this file.
+    fn convert_run(&self, trace: &engine::Trace, engine_warnings: Vec<String>, started: Instant) -> (Conversion, Option<Model>) {
         let mut warnings = self.warnings.clone();
         let mut timings = self.timings;
         let mut facts = Facts::default();
-        let run = self.session.with_dependent(|_, sim| sim.run_so_far());
-        warnings.extend(run.warnings.iter().map(|w| StageWarning { stage: Stage::Engine, message: w.to_string() }));
+        warnings.extend(engine_warnings.into_iter().map(|message| StageWarning { stage: Stage::Engine, message }));
         let prepared = self.session.borrow_owner();
         let name = batch_name(&self.path);
         let request = Request { path: &self.path, name: &name, config: 1, parameters: &[], source: batch_source(&self.path, None) };
-        let built = finish(prepared, prepared.lanelets.clone(), &request, &self.options, &run.trace, self.started, &mut warnings, &mut timings, &mut facts);
+        let built = finish(prepared, prepared.lanelets.clone(), &request, &self.options, trace, started, &mut warnings, &mut timings, &mut facts);
         let mut model = None;
-        let result = built.map(|(bytes, m)| {
+        let result = built.map(|(output, m)| {
             model = Some(m);
-            bytes
+            output
         });
         (Conversion { result, warnings, timings, facts }, model)
     }
