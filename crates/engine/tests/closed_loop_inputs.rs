@@ -241,3 +241,44 @@ fn esmini_overrides_the_actions_of_an_entity_driven_from_outside() {
     let init = |w: &&engine::Warning| w.message.contains("driven from outside") && w.line == 21;
     assert_eq!(run.warnings.iter().filter(init).count(), 0, "{:?}", run.warnings);
 }
+
+/// Target, with an ACC (set speed 20 m/s, time gap 1 s) activated in the Init, follows Ego in
+/// lane −1; Ego, driven from outside, drives at 15 m/s and stops hard at 3 s.
+fn acc_behind_ego() -> String {
+    let ego = format!(r#"<Private entityRef="Ego"><PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction>{}</Private>"#, lane_pos(100.0, -1), speed_action("step", "time", 0.0, 15.0));
+    let target = format!(
+        r#"<Private entityRef="Target"><PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction>{}<PrivateAction><ControllerAction><ActivateControllerAction longitudinal="true" lateral="false"/></ControllerAction></PrivateAction></Private>"#,
+        lane_pos(60.0, -1),
+        speed_action("step", "time", 0.0, 15.0)
+    );
+    let text = xosc(&format!("{ego}{target}"), "", &format!("<ConditionGroup>{}</ConditionGroup>", sim_time(10.0, "greaterThan", "none", 0.0)));
+    let acc = r#"<ObjectController><Controller name="ACC"><Properties><Property name="esminiController" value="ACCController"/><Property name="timeGap" value="1"/><Property name="mode" value="override"/><Property name="setSpeed" value="20"/></Properties></Controller></ObjectController></ScenarioObject>"#;
+    // the controller goes into Target's ScenarioObject (the second one)
+    let at = text.match_indices("</ScenarioObject>").nth(1).map_or(text.len(), |(i, _)| i);
+    format!("{}{acc}{}", &text[..at], &text[at + "</ScenarioObject>".len()..])
+}
+
+#[test]
+fn an_acc_follows_the_entity_where_the_outside_puts_it() {
+    // Ego's position from the outside: 15 m/s until 3 s, then braking at 8 m/s² to a stop
+    let ego_at = |t: f64| {
+        let (v0, a, t0) = (15.0, 8.0, 3.0);
+        let stop = t0 + v0 / a;
+        let (x, v) = if t <= t0 {
+            (100.0 + v0 * t, v0)
+        } else {
+            let tt = t.min(stop) - t0;
+            (100.0 + v0 * t0 + v0 * tt - 0.5 * a * tt * tt, (v0 - a * tt).max(0.0))
+        };
+        Input::State(ExternalState::new(x, -1.75, 0.0, v))
+    };
+    let run = drive(&acc_behind_ego(), &External::named(["Ego"]), |t, _| vec![(EGO, ego_at(t))]);
+    // before the braking the ACC keeps its distance; after it, it has slowed and stopped behind Ego
+    let (ego, target) = (at(&run, "Ego", 9.0), at(&run, "Target", 9.0));
+    assert!(close(ego.x, 100.0 + 45.0 + 15.0 * 15.0 / 16.0, 1e-9), "{ego:?}");
+    assert!(target.speed < 0.5, "the ACC car still drives at {} m/s", target.speed);
+    assert!(target.x < ego.x - 4.5, "the ACC car at {} ran into Ego at {}", target.x, ego.x);
+    // and it reacted to the outside's Ego: with Ego gone on at 15 m/s it would not have braked
+    let cruising = drive(&acc_behind_ego(), &External::named(["Ego"]), |t, _| vec![(EGO, Input::State(ExternalState::new(100.0 + 15.0 * t, -1.75, 0.0, 15.0)))]);
+    assert!(at(&cruising, "Target", 9.0).speed > 14.0, "{:?}", at(&cruising, "Target", 9.0));
+}
