@@ -24,23 +24,6 @@ fn convert(input: &Path, out: &Path, extra: &[&str]) -> serde_json::Value {
     serde_json::from_slice(&std::fs::read(&report).expect("report")).expect("json")
 }
 
-/// Every file below `dir`, relative, sorted.
-fn files(dir: &Path) -> Vec<PathBuf> {
-    let mut out = Vec::new();
-    let mut stack = vec![dir.to_path_buf()];
-    while let Some(d) = stack.pop() {
-        for e in std::fs::read_dir(&d).expect("read dir").flatten() {
-            let p = e.path();
-            if p.is_dir() {
-                stack.push(p);
-            } else {
-                out.push(p.strip_prefix(dir).expect("under dir").to_path_buf());
-            }
-        }
-    }
-    out.sort();
-    out
-}
 
 fn path(v: &serde_json::Value) -> PathBuf {
     PathBuf::from(v.as_str().unwrap_or_else(|| panic!("a path, got {v}")))

@@ -6,7 +6,6 @@
 mod common;
 use common::*;
 
-use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
@@ -15,22 +14,6 @@ fn sweep() -> PathBuf {
     testkit::workspace_root().join("examples/sweep/motorway_sweep.xosc")
 }
 
-/// Every file under `dir` (relative path → bytes).
-fn files(dir: &Path) -> BTreeMap<PathBuf, Vec<u8>> {
-    let mut out = BTreeMap::new();
-    let mut stack = vec![dir.to_path_buf()];
-    while let Some(d) = stack.pop() {
-        for e in std::fs::read_dir(&d).expect("read dir").flatten() {
-            let p = e.path();
-            if p.is_dir() {
-                stack.push(p);
-            } else {
-                out.insert(p.strip_prefix(dir).expect("under dir").to_path_buf(), std::fs::read(&p).expect("read"));
-            }
-        }
-    }
-    out
-}
 
 /// The batch: the first `variations` of the sweep example, on two threads.
 fn args(out: &Path, format: &str, variations: usize) -> Vec<String> {
@@ -59,7 +42,7 @@ fn killed_and_resumed_run_writes_the_files_of_one_run(format: &str, variations: 
     let (whole, resumed) = (root.join("whole"), root.join("resumed"));
     let r = run(&args(&whole, format, variations));
     assert_ok(&r);
-    let expected = files(&whole);
+    let expected = contents(&whole);
 
     // start the same batch and kill it once some outputs exist
     let mut child = Command::new(env!("CARGO_BIN_EXE_osc2cr"))
@@ -88,7 +71,7 @@ fn killed_and_resumed_run_writes_the_files_of_one_run(format: &str, variations: 
     let stderr = String::from_utf8_lossy(&r.stderr);
     assert!(stderr.contains("already complete (--resume)"), "{stderr}");
 
-    let got = files(&resumed);
+    let got = contents(&resumed);
     assert!(!got.keys().any(|p| p.to_string_lossy().ends_with(".tmp")), "a temporary file is left");
     assert_eq!(got.keys().collect::<Vec<_>>(), expected.keys().collect::<Vec<_>>(), "the same files");
     for (name, bytes) in &expected {
@@ -136,7 +119,7 @@ fn resuming_a_complete_batch_converts_nothing() {
     let example = testkit::workspace_root().join("examples/cut_in_speeds.xosc");
     let r = osc2cr(&["convert", s(&example), "-o", s(&out), "--format", "2024"]);
     assert_ok(&r);
-    let before = files(&out);
+    let before = contents(&out);
     // a temporary file of a writer that is gone (pid 1 never writes here; a dead pid does)
     let stale = out.join(format!(".cut_in_speeds_2.pb.{}.0.tmp", u32::MAX - 1));
     std::fs::write(&stale, b"partial").expect("write");
@@ -145,5 +128,5 @@ fn resuming_a_complete_batch_converts_nothing() {
     let stderr = String::from_utf8_lossy(&r.stderr);
     assert!(stderr.contains("0 converted, 6 already complete"), "{stderr}");
     assert!(stderr.contains("removed 1 temporary file"), "{stderr}");
-    assert_eq!(files(&out), before);
+    assert_eq!(contents(&out), before);
 }

@@ -8,23 +8,6 @@ use common::*;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
-/// Every file under `dir` (relative path → bytes).
-fn files(dir: &Path) -> BTreeMap<PathBuf, Vec<u8>> {
-    let mut out = BTreeMap::new();
-    let mut stack = vec![dir.to_path_buf()];
-    while let Some(d) = stack.pop() {
-        for e in std::fs::read_dir(&d).expect("read dir").flatten() {
-            let p = e.path();
-            if p.is_dir() {
-                stack.push(p);
-            } else {
-                let rel = p.strip_prefix(dir).expect("under dir").to_path_buf();
-                out.insert(rel, std::fs::read(&p).expect("read output"));
-            }
-        }
-    }
-    out
-}
 
 /// A library folder (made afresh as `<tmp>/convert_shard/<name>`): the shipped example, a 3 × 3 distribution over it (converted up to 7),
 /// a scenario whose name collides with the distribution's first variation, and a sub-folder.
@@ -71,7 +54,7 @@ fn three_shards_write_exactly_the_unsharded_files() {
         }
         let r = osc2cr(&args);
         assert!(r.status.success(), "{:?}: {}", shard, String::from_utf8_lossy(&r.stderr));
-        files(out)
+        contents(out)
     };
     let whole = run(&tmp("convert_shard", "whole"), None);
 
@@ -113,7 +96,7 @@ fn three_shards_write_exactly_the_unsharded_files_in_the_2024_format() {
         }
         let r = osc2cr(&args);
         assert!(r.status.success(), "{:?}: {}", shard, String::from_utf8_lossy(&r.stderr));
-        files(out)
+        contents(out)
     };
     let whole = run(&tmp("convert_shard", "whole-2024"), None);
     // the same names as in 2020a, as a scenario and a dynamic file each, and one map for the
@@ -149,7 +132,7 @@ fn more_shards_than_work_is_not_an_error_and_a_bad_shard_is() {
     let out = tmp("convert_shard", "empty-shard");
     let r = osc2cr(&["convert", s(&example), "-o", s(&out), "--shard", "2/2"]);
     assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
-    assert!(files(&out).is_empty(), "the only scenario belongs to shard 1");
+    assert!(contents(&out).is_empty(), "the only scenario belongs to shard 1");
     for bad in ["0/2", "3/2", "1/0", "half"] {
         let r = osc2cr(&["convert", s(&example), "-o", s(&out), "--shard", bad]);
         assert_eq!(r.status.code(), Some(2), "--shard {bad}");

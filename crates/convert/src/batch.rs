@@ -252,25 +252,7 @@ fn convert_limited(
 }
 
 fn report(job: &Job, variation: Option<Variation>, status: Status) -> ScenarioReport {
-    ScenarioReport {
-        input: job.input.clone(),
-        folder: job.folder.clone(),
-        output: None,
-        dynamic: None,
-        map: None,
-        variation,
-        status,
-        failure: None,
-        warnings: Vec::new(),
-        timings: Timings::default(),
-        benchmark_id: None,
-        ego: None,
-        lanelets: 0,
-        obstacles: 0,
-        duration_s: None,
-        tags: Vec::new(),
-        picture: None,
-    }
+    ScenarioReport::new(job.input.clone(), job.folder.clone(), variation, status)
 }
 
 fn run_job(job: &Job, shared: &Shared) -> ScenarioReport {

@@ -14,7 +14,7 @@ use openscenario::{Content, Distribution, LoadOptions};
 use crate::discover::{FileKind, Found};
 use crate::naming::Namer;
 use crate::options::{ConvertOptions, OutputFormat};
-use crate::report::{Failure, ScenarioReport, Skipped, Stage, StageWarning, Status, Timings};
+use crate::report::{Failure, ScenarioReport, Skipped, Stage, StageWarning, Status};
 use crate::shard::Shard;
 use crate::single::batch_name;
 
@@ -141,25 +141,8 @@ fn distribution(f: Found, options: &ConvertOptions) -> Unit {
 }
 
 fn failed_early(f: &Found, message: &str) -> ScenarioReport {
-    ScenarioReport {
-        input: f.path.clone(),
-        folder: f.folder.clone(),
-        output: None,
-        dynamic: None,
-        map: None,
-        variation: None,
-        status: Status::Failed,
-        failure: Some(Failure { stage: Stage::Load, message: message.to_string() }),
-        warnings: Vec::new(),
-        timings: Timings::default(),
-        benchmark_id: None,
-        ego: None,
-        lanelets: 0,
-        obstacles: 0,
-        duration_s: None,
-        tags: Vec::new(),
-        picture: None,
-    }
+    let failure = Failure { stage: Stage::Load, message: message.to_string() };
+    ScenarioReport { failure: Some(failure), ..ScenarioReport::new(f.path.clone(), f.folder.clone(), None, Status::Failed) }
 }
 
 struct WorkIter {

@@ -131,6 +131,32 @@ pub struct ScenarioReport {
     pub picture: Option<PathBuf>,
 }
 
+impl ScenarioReport {
+    /// The report of `input` (in summary group `folder`) before anything is known of its
+    /// conversion: no output, no counts, no warnings.
+    pub fn new(input: PathBuf, folder: String, variation: Option<Variation>, status: Status) -> ScenarioReport {
+        ScenarioReport {
+            input,
+            folder,
+            output: None,
+            dynamic: None,
+            map: None,
+            variation,
+            status,
+            failure: None,
+            warnings: Vec::new(),
+            timings: Timings::default(),
+            benchmark_id: None,
+            ego: None,
+            lanelets: 0,
+            obstacles: 0,
+            duration_s: None,
+            tags: Vec::new(),
+            picture: None,
+        }
+    }
+}
+
 /// A file of a batch that is not a scenario.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Skipped {
