@@ -93,6 +93,10 @@ fn dead_reckoning_goes_on_and_hold_stays() {
     assert_eq!(at(&run, "Ego", 1.0).speed, -8.0);
     let s = at(&run, "Ego", 2.0);
     assert!(close(s.x, 52.0, 1e-9) && s.speed == 8.0, "{s:?}");
+    // no state given yet: dead reckoning holds it
+    let run = drive(&scenario(""), &External::named(["Ego"]), |_, _| vec![(EGO, Input::DeadReckon)]);
+    let s = at(&run, "Ego", 3.0);
+    assert!(close(s.x, 50.0, 1e-12) && s.speed == 0.0, "{s:?}");
     let run = drive(&scenario(""), &External::named(["Ego"]), |_, _| vec![(EGO, Input::Hold)]);
     // where Init put it, standing
     let s = at(&run, "Ego", 3.0);

@@ -181,22 +181,10 @@ impl<'a> Sim<'a> {
                         let z = if l.z_given { Some(en.z) } else { road_z(None, en.z) };
                         Some((x, y, z, d.vehicle.car.h, l.speed.abs()))
                     }
-                    (None, Some(from)) => {
-                        from.put(en);
-                        None
-                    }
-                    _ => None,
+                    // no state given yet: as held
+                    _ => hold(en, d.start),
                 },
-                Input::Hold => {
-                    // where the step began (the scripted motion may have moved it meanwhile),
-                    // standing: esmini derives the speed of an entity nobody set it for from
-                    // its displacement
-                    if let Some(from) = d.start {
-                        from.put(en);
-                    }
-                    en.speed = 0.0;
-                    None
-                }
+                Input::Hold => hold(en, d.start),
             };
             if let Some((x, y, z, h, speed)) = target {
                 place(en, net, (x, y, z, h), &mut d.end_of_road, replaced);
@@ -236,6 +224,17 @@ impl<'a> Sim<'a> {
             _ => (None, None),
         }
     }
+}
+
+/// A held entity stays where the step began (the scripted motion may have moved it meanwhile),
+/// standing: esmini derives the speed of an entity nobody set it for from its displacement.
+/// Nothing to place afterwards.
+fn hold(en: &mut Entity, start: Option<Pose>) -> Option<(f64, f64, Option<f64>, f64, f64)> {
+    if let Some(from) = start {
+        from.put(en);
+    }
+    en.speed = 0.0;
+    None
 }
 
 /// Put `en` at a world pose the outside gave. It is first moved along its lane by the distance
