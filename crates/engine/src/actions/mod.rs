@@ -231,12 +231,13 @@ impl<'a> Sim<'a> {
             // instance already done did what it did before, and a speed change whose
             // transition is over loses nothing by ending: only the others are told.
             let rt = &self.actions[slot].instances[k].rt;
-            let finished = matches!(rt, ActionRt::Done | ActionRt::EndedAtStart);
-            let cut_short = !finished && !matches!(rt, ActionRt::Speed(s) if s.transition.param >= s.transition.param_target);
-            if let (ActionKind::Private(p), false) = (&self.actions[slot].model.kind, finished) {
-                if self.overridden_on(slot, e, p, cut_short) == Overridden::Idles {
-                    all_done = false;
-                    continue;
+            if let (true, ActionKind::Private(p)) = (self.outside(e), &self.actions[slot].model.kind) {
+                if !matches!(rt, ActionRt::Done | ActionRt::EndedAtStart) {
+                    let cut_short = !matches!(rt, ActionRt::Speed(s) if s.transition.param >= s.transition.param_target);
+                    if self.overridden_on(slot, e, p, cut_short) == Overridden::Idles {
+                        all_done = false;
+                        continue;
+                    }
                 }
             }
             let inst = &mut self.actions[slot].instances[k];
