@@ -32,11 +32,8 @@ fuzz_target!(|data: &[u8]| {
     if std::fs::write(&path, text.as_bytes()).is_err() {
         return;
     }
-    let options = convert::ConvertOptions {
-        max_time: 10.0,
-        deadline: Some(std::time::Instant::now() + std::time::Duration::from_secs(2)),
-        ..Default::default()
-    };
+    let options =
+        convert::ConvertOptions { max_time: 10.0, deadline: Some(std::time::Instant::now() + std::time::Duration::from_secs(2)), ..Default::default() };
     let request = convert::Request { path: &path, name: "fuzz", config: 1, parameters: &[], source: String::new() };
     let _ = convert::convert_scenario(&request, &options);
     let options = convert::ConvertOptions { lenient: true, ..options };

@@ -17,11 +17,7 @@ use std::process::{Command, Stdio};
 use std::time::Instant;
 
 fn sizes(var: &str, default: &str) -> Vec<u64> {
-    std::env::var(var)
-        .unwrap_or_else(|_| default.to_string())
-        .split(',')
-        .filter_map(|s| s.trim().parse().ok())
-        .collect()
+    std::env::var(var).unwrap_or_else(|_| default.to_string()).split(',').filter_map(|s| s.trim().parse().ok()).collect()
 }
 
 /// Files, bytes and allocated bytes below `dir`.
@@ -88,9 +84,7 @@ fn run(format: &'static str, variations: u64, jobs: &str, out: &Path) -> Run {
     let converted = rows.lines().skip(1).filter(|l| l.split('\t').nth(3) == Some("converted")).count() as u64;
     assert_eq!(converted, variations, "every variation converted");
     let (files, bytes, allocated) = disk_use(out);
-    let maps = std::fs::read_dir(out)
-        .map(|rd| rd.flatten().filter(|e| e.file_name().to_string_lossy().starts_with("ZAM_")).count())
-        .unwrap_or(0);
+    let maps = std::fs::read_dir(out).map(|rd| rd.flatten().filter(|e| e.file_name().to_string_lossy().starts_with("ZAM_")).count()).unwrap_or(0);
     Run { format, variations, wall_s, peak_rss_mb: usage.ru_maxrss as f64 / 1024.0, files, bytes, allocated, maps }
 }
 
@@ -101,9 +95,7 @@ fn gb(b: u64) -> f64 {
 fn main() {
     // `cargo bench` passes --bench; nothing else is read from the command line
     let jobs = std::env::var("OSC2CR_SWEEP_JOBS").unwrap_or_else(|_| "2".into());
-    let root: PathBuf = std::env::var_os("OSC2CR_SWEEP_OUT")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| testkit::workspace_root().join("target/sweep-bench"));
+    let root: PathBuf = std::env::var_os("OSC2CR_SWEEP_OUT").map(PathBuf::from).unwrap_or_else(|| testkit::workspace_root().join("target/sweep-bench"));
     let keep = std::env::var_os("OSC2CR_SWEEP_KEEP").is_some();
     std::fs::create_dir_all(&root).expect("output folder");
     let mut runs = Vec::new();

@@ -88,15 +88,10 @@ fn check_file(path: &Path, params: &[(String, String)]) -> Vec<Finding> {
             finding(severity, &f.location.file, f.location.line, f.location.col, f.message)
         })
         .collect();
-    let schema_errors: Vec<(String, u32, u32)> =
-        out.iter().filter(|f| f.severity == "error").map(|f| (f.file.clone(), f.line, f.column)).collect();
+    let schema_errors: Vec<(String, u32, u32)> = out.iter().filter(|f| f.severity == "error").map(|f| (f.file.clone(), f.line, f.column)).collect();
     // The reader's error on a line the schema pass found wrong is the same problem seen again;
     // so is its warning at the very place of a schema error (an unknown attribute is also unread).
-    let already = |f: &Finding| {
-        schema_errors.iter().any(|(file, line, col)| {
-            *file == f.file && *line == f.line && (f.severity == "error" || *col == f.column)
-        })
-    };
+    let already = |f: &Finding| schema_errors.iter().any(|(file, line, col)| *file == f.file && *line == f.line && (f.severity == "error" || *col == f.column));
     let reader = reader_findings(path, params);
     out.extend(reader.into_iter().filter(|f| !already(f)));
     out
@@ -112,11 +107,8 @@ fn reader_findings(path: &Path, params: &[(String, String)]) -> Vec<Finding> {
             // A catalog that is not there is a gap in what was given, not a fault of this file:
             // the file's own problems are all reported by the schema pass above.
             let severity = if e.kind == openscenario::ErrorKind::MissingCatalog { "warning" } else { "error" };
-            let message = if severity == "warning" {
-                format!("{} (what this file takes from the catalog is not checked)", e.message)
-            } else {
-                e.message.clone()
-            };
+            let message =
+                if severity == "warning" { format!("{} (what this file takes from the catalog is not checked)", e.message) } else { e.message.clone() };
             out.push(finding(severity, &l.file, l.line, l.col, message));
             return out;
         }

@@ -196,9 +196,7 @@ fn bar() -> Bar {
         return Bar(indicatif::ProgressBar::hidden());
     }
     let b = indicatif::ProgressBar::new(0);
-    if let Ok(style) =
-        indicatif::ProgressStyle::with_template("{bar:30} {pos}/{len} {per_sec} {elapsed}, {eta} left {wide_msg}")
-    {
+    if let Ok(style) = indicatif::ProgressStyle::with_template("{bar:30} {pos}/{len} {per_sec} {elapsed}, {eta} left {wide_msg}") {
         b.set_style(style);
     }
     Bar(b)
@@ -217,10 +215,7 @@ pub fn run(args: &ConvertArgs) -> Result<(), Failure> {
     if !(args.timeout.is_finite() && args.timeout > 0.0) {
         return Err(Failure::input(format!("--timeout must be a positive number of seconds, got {}", args.timeout)));
     }
-    let jobs = args
-        .jobs
-        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
-        .max(1);
+    let jobs = args.jobs.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get())).max(1);
     let batch = BatchOptions {
         out_dir: args.output.clone(),
         jobs,
@@ -242,16 +237,12 @@ pub fn run(args: &ConvertArgs) -> Result<(), Failure> {
                 bar.0.suspend(|| eprintln!("warning {}: {}: {}", describe(&r), stage_name(w.stage), w.message));
             }
         }
-        let written = json
-            .as_mut()
-            .map_or(Ok(()), |j| j.add(&r))
-            .and_then(|()| table.as_mut().map_or(Ok(()), |t| t.add(position, &r)));
+        let written = json.as_mut().map_or(Ok(()), |j| j.add(&r)).and_then(|()| table.as_mut().map_or(Ok(()), |t| t.add(position, &r)));
         if let Err(e) = written {
             report_error.get_or_insert(e);
         }
     };
-    let totals =
-        convert::run_batch_streaming(&args.inputs, &options, &batch, &bar, &mut sink).map_err(Failure::input)?;
+    let totals = convert::run_batch_streaming(&args.inputs, &options, &batch, &bar, &mut sink).map_err(Failure::input)?;
     bar.0.finish_and_clear();
     if let Some(e) = report_error {
         return Err(Failure::input(e));

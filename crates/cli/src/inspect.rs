@@ -4,8 +4,7 @@
 
 use crate::Failure;
 use openscenario::{
-    load, Action, CatalogEntry, CatalogFile, Condition, ConditionKind, Content, Distribution, Entity, EntityObject,
-    LoadOptions, Scenario, Trigger, Warning,
+    load, Action, CatalogEntry, CatalogFile, Condition, ConditionKind, Content, Distribution, Entity, EntityObject, LoadOptions, Scenario, Trigger, Warning,
 };
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -165,11 +164,8 @@ fn entity_text(o: &mut String, e: &Entity) {
     };
     let _ = writeln!(o, "  {}: {desc}", e.name);
     if let Some(b) = e.object.bounding_box() {
-        let _ = writeln!(
-            o,
-            "    bounding box: centre ({}, {}, {}), length {} width {} height {}",
-            b.center.x, b.center.y, b.center.z, b.length, b.width, b.height
-        );
+        let _ =
+            writeln!(o, "    bounding box: centre ({}, {}, {}), length {} width {} height {}", b.center.x, b.center.y, b.center.z, b.length, b.width, b.height);
     }
     let props = match &e.object {
         EntityObject::Vehicle(v) => Some(&v.properties),

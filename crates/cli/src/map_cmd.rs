@@ -55,6 +55,13 @@ pub fn run(args: &MapArgs) -> Result<(), Failure> {
     }
     let bytes = commonroad::xml::write_map(&scenario).map_err(|e| Failure { message: format!("{}: {e}", args.output.display()), status: 1 })?;
     commonroad::xml::write_atomic(&args.output, &bytes).map_err(|e| Failure { message: format!("{}: {e}", args.output.display()), status: 1 })?;
-    eprintln!("{}: {} lanelets, {} warnings{} -> {}", args.file.display(), n_lanelets, n_warn, if args.verbose || n_warn == 0 { "" } else { " (-v lists them)" }, args.output.display());
+    eprintln!(
+        "{}: {} lanelets, {} warnings{} -> {}",
+        args.file.display(),
+        n_lanelets,
+        n_warn,
+        if args.verbose || n_warn == 0 { "" } else { " (-v lists them)" },
+        args.output.display()
+    );
     Ok(())
 }

@@ -97,22 +97,14 @@ fn load(path: &Path, verbose: bool) -> Result<Input, Failure> {
     let is_xosc = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("xosc"));
     if is_xosc {
         let name = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
-        let request = convert::Request {
-            path,
-            name: &name,
-            config: 1,
-            parameters: &[],
-            source: String::new(),
-        };
+        let request = convert::Request { path, name: &name, config: 1, parameters: &[], source: String::new() };
         let (conversion, model) = convert::convert_scenario_keeping(&request, &convert::ConvertOptions::default(), true);
         if verbose {
             for w in &conversion.warnings {
                 eprintln!("{}: warning: {}", path.display(), w.message);
             }
         }
-        conversion
-            .result
-            .map_err(|f| Failure::input(format!("{}: conversion failed: {}", path.display(), f.message)))?;
+        conversion.result.map_err(|f| Failure::input(format!("{}: conversion failed: {}", path.display(), f.message)))?;
         let model = model.ok_or_else(|| Failure { message: format!("{}: the conversion kept no model", path.display()), status: 1 })?;
         return Ok(Input {
             scenario: model.scenario,
@@ -192,9 +184,7 @@ fn layout_json(l: &render::Layout) -> serde_json::Value {
 }
 
 pub fn run(args: &RenderArgs) -> Result<(), Failure> {
-    let format = format_of(&args.output).ok_or_else(|| {
-        Failure::input(format!("{}: the output must end in .png, .svg or .gif", args.output.display()))
-    })?;
+    let format = format_of(&args.output).ok_or_else(|| Failure::input(format!("{}: the output must end in .png, .svg or .gif", args.output.display())))?;
     if format == Format::Gif && !args.times.is_empty() {
         return Err(Failure::input("--time selects stills; a .gif shows the whole scenario"));
     }
@@ -242,8 +232,7 @@ pub fn run(args: &RenderArgs) -> Result<(), Failure> {
                 written.push(path);
                 if let Some(l) = &args.layout {
                     let layout = render::render_layout(scenario, problems, &o).map_err(fail)?;
-                    let text = serde_json::to_string_pretty(&layout_json(&layout))
-                        .map_err(|e| Failure { message: e.to_string(), status: 1 })?;
+                    let text = serde_json::to_string_pretty(&layout_json(&layout)).map_err(|e| Failure { message: e.to_string(), status: 1 })?;
                     write(l, text.as_bytes())?;
                     written.push(l.clone());
                 }

@@ -14,7 +14,8 @@ fn the_example_has_no_error() {
 #[test]
 fn every_reference_problem_of_a_file_is_listed_with_its_position() {
     let dir = tmp("check", "broken");
-    let text = std::fs::read_to_string(example()).expect("example")
+    let text = std::fs::read_to_string(example())
+        .expect("example")
         .replace(r#"<Private entityRef="Walker">"#, r#"<Private entityRef="Walkr">"#)
         .replace(r#"<RelativeObjectPosition entityRef="Ego" dx="0" dy="0"/>"#, r#"<RelativeObjectPosition entityRef="Eg0" dx="0" dy="0"/>"#)
         .replace(r#"<LanePosition roadId="1" laneId="-1" s="5" offset="0"/>"#, r#"<LanePosition roadId="7" laneId="-1" s="5" offset="0"/>"#);
@@ -25,7 +26,11 @@ fn every_reference_problem_of_a_file_is_listed_with_its_position() {
     assert_eq!(r.status.code(), Some(2));
     let out = String::from_utf8_lossy(&r.stdout);
     // the three problems, each at the element holding it (lines counted in examples/cut_in.xosc)
-    for expected in ["broken.xosc:71:11: error: Init actions for entity `Walkr`", "broken.xosc:134:17: error: position relative to entity `Eg0`", "broken.xosc:60:11: error: LanePosition: road `7`"] {
+    for expected in [
+        "broken.xosc:71:11: error: Init actions for entity `Walkr`",
+        "broken.xosc:134:17: error: position relative to entity `Eg0`",
+        "broken.xosc:60:11: error: LanePosition: road `7`",
+    ] {
         assert!(out.contains(expected), "{expected} missing from:\n{out}");
     }
     let r = osc2cr(&["check", s(&file), "--json"]);
@@ -45,7 +50,10 @@ fn the_corpus_has_no_error_and_its_missing_catalogs_are_warned() {
     let errors: Vec<String> = findings.iter().filter(|f| f["severity"] == "error").map(|f| format!("{}: {}", f["file"], f["message"])).collect();
     assert!(errors.is_empty(), "{errors:#?}");
     // car_walk names catalogs (openx assets) the corpus does not ship: said, not an error
-    let car_walk = findings.iter().find(|f| f["file"].as_str().is_some_and(|p| p.ends_with("car_walk.xosc")) && f["message"].as_str().is_some_and(|m| m.contains("catalog") && m.contains("not found")));
+    let car_walk = findings.iter().find(|f| {
+        f["file"].as_str().is_some_and(|p| p.ends_with("car_walk.xosc"))
+            && f["message"].as_str().is_some_and(|m| m.contains("catalog") && m.contains("not found"))
+    });
     assert!(car_walk.is_some_and(|f| f["severity"] == "warning"), "{car_walk:?}");
 }
 

@@ -80,11 +80,7 @@ struct Expected {
 }
 
 fn newest_api_version(tests: &str) -> u32 {
-    tests
-        .split(',')
-        .filter_map(|t| t.split("V1_").nth(1).and_then(|v| v.chars().next()).and_then(|c| c.to_digit(10)))
-        .max()
-        .unwrap_or(0)
+    tests.split(',').filter_map(|t| t.split("V1_").nth(1).and_then(|v| v.chars().next()).and_then(|c| c.to_digit(10))).max().unwrap_or(0)
 }
 
 fn expectations() -> BTreeMap<String, Vec<Expected>> {
@@ -121,7 +117,8 @@ fn check_json(file: &Path, params: &[&str]) -> Vec<serde_json::Value> {
     }
     let args: Vec<&str> = args.iter().map(String::as_str).collect();
     let r = osc2cr(&args);
-    let json: serde_json::Value = serde_json::from_slice(&r.stdout).unwrap_or_else(|e| panic!("{}: {e}: {}", file.display(), String::from_utf8_lossy(&r.stderr)));
+    let json: serde_json::Value =
+        serde_json::from_slice(&r.stdout).unwrap_or_else(|e| panic!("{}: {e}: {}", file.display(), String::from_utf8_lossy(&r.stderr)));
     json.as_array().cloned().unwrap_or_default()
 }
 

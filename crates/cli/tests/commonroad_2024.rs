@@ -24,7 +24,6 @@ fn convert(input: &Path, out: &Path, extra: &[&str]) -> serde_json::Value {
     serde_json::from_slice(&std::fs::read(&report).expect("report")).expect("json")
 }
 
-
 fn path(v: &serde_json::Value) -> PathBuf {
     PathBuf::from(v.as_str().unwrap_or_else(|| panic!("a path, got {v}")))
 }
@@ -58,12 +57,8 @@ fn commonroad_io_reads_every_2024_output_of_the_corpus_as_its_2020a_output() {
     assert!(cases.len() >= 190, "{} conversions", cases.len());
     // one map per distinct lanelet network: the corpus has far fewer maps than scenarios, and
     // every map file written is some scenario's
-    let written: BTreeSet<PathBuf> = std::fs::read_dir(&pb_dir)
-        .expect("out")
-        .flatten()
-        .map(|e| e.path())
-        .filter(|p| p.extension().is_some_and(|e| e == "pb"))
-        .collect();
+    let written: BTreeSet<PathBuf> =
+        std::fs::read_dir(&pb_dir).expect("out").flatten().map(|e| e.path()).filter(|p| p.extension().is_some_and(|e| e == "pb")).collect();
     assert_eq!(written, maps_used);
     assert!(maps_used.len() * 2 < cases.len(), "{} maps for {} scenarios", maps_used.len(), cases.len());
 

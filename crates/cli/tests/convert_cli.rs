@@ -6,7 +6,6 @@ use common::*;
 
 use std::path::{Path, PathBuf};
 
-
 #[test]
 fn the_example_converts_and_passes_the_oracle() {
     let out = tmp("convert_cli", "example");
@@ -18,8 +17,7 @@ fn the_example_converts_and_passes_the_oracle() {
     assert!(text.contains(r#"benchmarkID="ZAM_cutin-1_1_T-1""#));
     assert!(text.contains(r#"date="2026-11-22""#), "date from the FileHeader");
     assert!(text.contains("<simulated/>"));
-    let json: serde_json::Value =
-        serde_json::from_slice(&std::fs::read(&report).expect("report")).expect("json");
+    let json: serde_json::Value = serde_json::from_slice(&std::fs::read(&report).expect("report")).expect("json");
     let sc = &json["scenarios"][0];
     assert_eq!(sc["status"], "converted");
     assert_eq!(sc["ego"], "Ego");
@@ -38,8 +36,21 @@ fn the_example_converts_and_passes_the_oracle() {
 fn drop_ego_and_options_reach_the_file() {
     let out = tmp("convert_cli", "options");
     let r = osc2cr(&[
-        "convert", s(&example()), "-o", s(&out), "--drop-ego", "--country", "DEU", "--date",
-        "2024-02-29", "--author", "A. Author", "--affiliation", "Lab", "--goal-length", "30",
+        "convert",
+        s(&example()),
+        "-o",
+        s(&out),
+        "--drop-ego",
+        "--country",
+        "DEU",
+        "--date",
+        "2024-02-29",
+        "--author",
+        "A. Author",
+        "--affiliation",
+        "Lab",
+        "--goal-length",
+        "30",
     ]);
     assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
     let text = std::fs::read_to_string(out.join("cut_in.xml")).expect("output");
@@ -68,12 +79,10 @@ fn exit_codes() {
     let dir = out.join("mixed");
     std::fs::create_dir_all(&dir).expect("dir");
     std::fs::copy(example(), dir.join("good.xosc")).expect("copy");
-    std::fs::copy(testkit::workspace_root().join("examples/two_lane_curve.xodr"), dir.join("two_lane_curve.xodr"))
-        .expect("copy road");
+    std::fs::copy(testkit::workspace_root().join("examples/two_lane_curve.xodr"), dir.join("two_lane_curve.xodr")).expect("copy road");
     std::fs::copy(&bad, dir.join("bad.xosc")).expect("copy");
     // a catalog is skipped and said so
-    std::fs::write(dir.join("cat.xosc"), "<OpenSCENARIO><FileHeader/><Catalog name=\"c\"/></OpenSCENARIO>")
-        .expect("write");
+    std::fs::write(dir.join("cat.xosc"), "<OpenSCENARIO><FileHeader/><Catalog name=\"c\"/></OpenSCENARIO>").expect("write");
     let o2 = out.join("o2");
     let r = osc2cr(&["convert", s(&dir), "-o", s(&o2)]);
     assert_eq!(r.status.code(), Some(1));
@@ -117,10 +126,7 @@ fn distributions_convert_to_capped_variations_in_order() {
     let r = osc2cr(&["convert", s(&dist), "-o", s(&out), "--max-variations", "3", "--report", s(&report), "-j", "2"]);
     assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
     let names: Vec<PathBuf> = files(&out).into_iter().filter(|p| p.extension().is_some_and(|e| e == "xml")).collect();
-    assert_eq!(
-        names,
-        ["cut-in_parameter_set_1.xml", "cut-in_parameter_set_2.xml", "cut-in_parameter_set_3.xml"].map(PathBuf::from)
-    );
+    assert_eq!(names, ["cut-in_parameter_set_1.xml", "cut-in_parameter_set_2.xml", "cut-in_parameter_set_3.xml"].map(PathBuf::from));
     let json: serde_json::Value = serde_json::from_slice(&std::fs::read(&report).expect("report")).expect("json");
     let sc = json["scenarios"].as_array().expect("scenarios");
     assert_eq!(sc.len(), 3);

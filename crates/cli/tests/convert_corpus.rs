@@ -28,8 +28,7 @@ fn the_whole_corpus_converts_and_every_output_passes_the_oracle() {
     assert!(matches!(r.status.code(), Some(0 | 1)), "{stderr}");
     println!("{}", String::from_utf8_lossy(&r.stdout));
 
-    let json: serde_json::Value =
-        serde_json::from_slice(&std::fs::read(&report).expect("report")).expect("json");
+    let json: serde_json::Value = serde_json::from_slice(&std::fs::read(&report).expect("report")).expect("json");
     let scenarios = json["scenarios"].as_array().expect("scenarios");
     assert!(scenarios.len() >= 175, "{} scenarios", scenarios.len());
     let mut outputs = Vec::new();
@@ -53,7 +52,9 @@ fn the_whole_corpus_converts_and_every_output_passes_the_oracle() {
     assert_eq!(skipped.len(), 28, "catalogs");
     let converted_plain = scenarios.iter().filter(|s| s["variation"].is_null() && s["status"] == "converted").count();
     assert!(converted_plain >= 173, "{converted_plain} of 175 scenarios converted");
-    for d in ["EndOfTrafficJamParameterSet", "SlowPrecedingVehicleDeterministicParameterSet", "SlowPrecedingVehicleStochasticParameterSet", "cut-in_parameter_set"] {
+    for d in
+        ["EndOfTrafficJamParameterSet", "SlowPrecedingVehicleDeterministicParameterSet", "SlowPrecedingVehicleStochasticParameterSet", "cut-in_parameter_set"]
+    {
         assert!(outputs.iter().any(|p| p.to_string_lossy().contains(&format!("{d}_1.xml"))), "{d}");
     }
 

@@ -14,13 +14,10 @@ fn sweep() -> PathBuf {
     testkit::workspace_root().join("examples/sweep/motorway_sweep.xosc")
 }
 
-
 /// The batch: the first `variations` of the sweep example, on two threads.
 fn args(out: &Path, format: &str, variations: usize) -> Vec<String> {
     let sweep = sweep();
-    ["convert", s(&sweep), "-o", s(out), "--max-variations", &variations.to_string(), "-j", "2", "--format", format]
-        .map(String::from)
-        .to_vec()
+    ["convert", s(&sweep), "-o", s(out), "--max-variations", &variations.to_string(), "-j", "2", "--format", format].map(String::from).to_vec()
 }
 
 fn run(args: &[String]) -> std::process::Output {
@@ -30,9 +27,7 @@ fn run(args: &[String]) -> std::process::Output {
 /// Complete outputs in `dir`: scenario files (2024, written last) or XML files.
 fn outputs_written(dir: &Path, format: &str) -> usize {
     let suffix = if format == "2024" { "-SC.pb" } else { ".xml" };
-    std::fs::read_dir(dir)
-        .map(|rd| rd.flatten().filter(|e| e.file_name().to_string_lossy().ends_with(suffix)).count())
-        .unwrap_or(0)
+    std::fs::read_dir(dir).map(|rd| rd.flatten().filter(|e| e.file_name().to_string_lossy().ends_with(suffix)).count()).unwrap_or(0)
 }
 
 /// `variations` conversions, killed once `kill_at` outputs exist (enough that a batch takes
@@ -79,12 +74,7 @@ fn killed_and_resumed_run_writes_the_files_of_one_run(format: &str, variations: 
     }
 
     // every variation accounted for: complete (kept) or converted (this run), in batch order
-    let rows: Vec<Vec<String>> = std::fs::read_to_string(&table)
-        .expect("table")
-        .lines()
-        .skip(1)
-        .map(|l| l.split('\t').map(String::from).collect())
-        .collect();
+    let rows: Vec<Vec<String>> = std::fs::read_to_string(&table).expect("table").lines().skip(1).map(|l| l.split('\t').map(String::from).collect()).collect();
     assert_eq!(rows.len(), variations);
     let complete = rows.iter().filter(|r| r[3] == "complete").count();
     let converted = rows.iter().filter(|r| r[3] == "converted").count();

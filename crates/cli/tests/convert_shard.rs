@@ -8,7 +8,6 @@ use common::*;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
-
 /// A library folder (made afresh as `<tmp>/convert_shard/<name>`): the shipped example, a 3 × 3 distribution over it (converted up to 7),
 /// a scenario whose name collides with the distribution's first variation, and a sub-folder.
 fn library(name: &str) -> PathBuf {

@@ -70,8 +70,16 @@ fn a_million_nested_elements_are_refused() {
 #[test]
 fn huge_nan_and_infinite_numbers_are_errors() {
     for (name, from, to) in [
-        ("nan_speed", r#"<ParameterDeclaration name="EgoSpeed" parameterType="double" value="15"/>"#, r#"<ParameterDeclaration name="EgoSpeed" parameterType="double" value="NaN"/>"#),
-        ("inf_speed", r#"<ParameterDeclaration name="EgoSpeed" parameterType="double" value="15"/>"#, r#"<ParameterDeclaration name="EgoSpeed" parameterType="double" value="inf"/>"#),
+        (
+            "nan_speed",
+            r#"<ParameterDeclaration name="EgoSpeed" parameterType="double" value="15"/>"#,
+            r#"<ParameterDeclaration name="EgoSpeed" parameterType="double" value="NaN"/>"#,
+        ),
+        (
+            "inf_speed",
+            r#"<ParameterDeclaration name="EgoSpeed" parameterType="double" value="15"/>"#,
+            r#"<ParameterDeclaration name="EgoSpeed" parameterType="double" value="inf"/>"#,
+        ),
         ("huge_s", r#"<LanePosition roadId="1" laneId="-1" s="30" offset="0"/>"#, r#"<LanePosition roadId="1" laneId="-1" s="1e308" offset="0"/>"#),
     ] {
         let text = example();
@@ -129,8 +137,15 @@ fn zero_length_roads_and_self_referencing_catalogs_end_cleanly() {
         r#"<?xml version="1.0"?><OpenSCENARIO><FileHeader revMajor="1" revMinor="2" date="2024-01-01T00:00:00" description="" author=""/><Catalog name="Self"><Vehicle name="loop"><CatalogReference catalogName="Self" entryName="loop"/></Vehicle></Catalog></OpenSCENARIO>"#,
     )
     .expect("write");
-    let text = example().replace("<CatalogLocations/>", &format!(r#"<CatalogLocations><VehicleCatalog><Directory path="{}"/></VehicleCatalog></CatalogLocations>"#, s(&cat_dir)));
-    let text = text.replacen("<ScenarioObject name=\"Ego\">", "<ScenarioObject name=\"Loop\"><CatalogReference catalogName=\"Self\" entryName=\"loop\"/></ScenarioObject><ScenarioObject name=\"Ego\">", 1);
+    let text = example().replace(
+        "<CatalogLocations/>",
+        &format!(r#"<CatalogLocations><VehicleCatalog><Directory path="{}"/></VehicleCatalog></CatalogLocations>"#, s(&cat_dir)),
+    );
+    let text = text.replacen(
+        "<ScenarioObject name=\"Ego\">",
+        "<ScenarioObject name=\"Loop\"><CatalogReference catalogName=\"Self\" entryName=\"loop\"/></ScenarioObject><ScenarioObject name=\"Ego\">",
+        1,
+    );
     let r = convert("selfcat", &text, Duration::from_secs(60));
     assert_clear_error("selfcat", &r);
     let _ = Path::new("");

@@ -24,7 +24,9 @@ fn every_crate_packs() {
         .filter(|n| n.ends_with(".crate"))
         .collect();
     // every published crate carries the project's prefix (no generic names such as `engine`)
-    for name in ["osc2cr-0.1.0.crate", "osc2cr-engine-0.1.0.crate", "osc2cr-openscenario-0.1.0.crate", "osc2cr-opendrive-0.1.0.crate", "osc2cr-convert-0.1.0.crate"] {
+    for name in
+        ["osc2cr-0.1.0.crate", "osc2cr-engine-0.1.0.crate", "osc2cr-openscenario-0.1.0.crate", "osc2cr-opendrive-0.1.0.crate", "osc2cr-convert-0.1.0.crate"]
+    {
         assert!(packed.iter().any(|p| p == name), "{name} not among {packed:?}");
     }
     assert!(packed.iter().all(|p| p.starts_with("osc2cr")), "{packed:?}");

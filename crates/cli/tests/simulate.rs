@@ -47,10 +47,7 @@ fn simulate_writes_trace_and_events() {
 
 #[test]
 fn simulate_bad_input_exits_2() {
-    let out = Command::new(env!("CARGO_BIN_EXE_osc2cr"))
-        .args(["simulate", "/nonexistent/x.xosc", "--trace", "/tmp/never.csv"])
-        .output()
-        .expect("run osc2cr");
+    let out = Command::new(env!("CARGO_BIN_EXE_osc2cr")).args(["simulate", "/nonexistent/x.xosc", "--trace", "/tmp/never.csv"]).output().expect("run osc2cr");
     assert_eq!(out.status.code(), Some(2));
     let out = Command::new(env!("CARGO_BIN_EXE_osc2cr"))
         .args(["simulate", "/nonexistent/x.xosc", "--trace", "/tmp/never.csv", "--param", "novalue"])

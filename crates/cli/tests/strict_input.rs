@@ -56,7 +56,13 @@ fn rejected_then_lenient(name: &str, from: &str, to: &str, at: &str, what: &str)
 fn an_init_action_on_an_undeclared_entity() {
     // line 70: <Private entityRef="Walker"> — renamed to an entity nobody declared; its first
     // PrivateAction is at line 71, column 11
-    rejected_then_lenient("init_entity", r#"<Private entityRef="Walker">"#, r#"<Private entityRef="Walkr">"#, "init_entity.xosc:71:11", "`Walkr` is not an entity");
+    rejected_then_lenient(
+        "init_entity",
+        r#"<Private entityRef="Walker">"#,
+        r#"<Private entityRef="Walkr">"#,
+        "init_entity.xosc:71:11",
+        "`Walkr` is not an entity",
+    );
 }
 
 #[test]

@@ -5,9 +5,7 @@
 pub enum ModelError {
     /// Left and right bound of a lanelet must have the same number of points: the reader
     /// computes the centre line as `0.5 * (left + right)` point by point.
-    #[error(
-        "lanelet bounds must have the same number of points: left has {left}, right has {right}"
-    )]
+    #[error("lanelet bounds must have the same number of points: left has {left}, right has {right}")]
     BoundPointCountMismatch { left: usize, right: usize },
     /// A bound needs at least two points (XSD `minOccurs="2"`).
     #[error("lanelet bounds need at least 2 points, got {got}")]
@@ -31,9 +29,7 @@ pub enum ModelError {
     #[error("invalid date {year:04}-{month:02}-{day:02}")]
     InvalidDate { year: u16, month: u8, day: u8 },
     /// A benchmark id the CommonRoad readers would not parse.
-    #[error(
-        "benchmark id {id:?} does not match COUNTRY_MapName-MapId[_ConfigId[_T-PredId]]: {why}"
-    )]
+    #[error("benchmark id {id:?} does not match COUNTRY_MapName-MapId[_ConfigId[_T-PredId]]: {why}")]
     InvalidBenchmarkId { id: String, why: &'static str },
 }
 

@@ -39,10 +39,7 @@ pub struct Rectangle {
 impl Rectangle {
     /// Fails unless both are finite and > 0.
     pub fn new(length: f64, width: f64) -> Result<Self, ModelError> {
-        Ok(Self {
-            length: positive("rectangle length", length)?,
-            width: positive("rectangle width", width)?,
-        })
+        Ok(Self { length: positive("rectangle length", length)?, width: positive("rectangle width", width)? })
     }
     pub fn length(&self) -> f64 {
         self.length
@@ -61,9 +58,7 @@ pub struct Circle {
 impl Circle {
     /// Fails unless the radius is finite and > 0.
     pub fn new(radius: f64) -> Result<Self, ModelError> {
-        Ok(Self {
-            radius: positive("circle radius", radius)?,
-        })
+        Ok(Self { radius: positive("circle radius", radius)? })
     }
     pub fn radius(&self) -> f64 {
         self.radius

@@ -30,10 +30,7 @@ impl BenchmarkId {
     pub fn parse(id: &str) -> Result<Self, ModelError> {
         match check_benchmark_id(id) {
             Ok(()) => Ok(Self(id.to_string())),
-            Err(why) => Err(ModelError::InvalidBenchmarkId {
-                id: id.to_string(),
-                why,
-            }),
+            Err(why) => Err(ModelError::InvalidBenchmarkId { id: id.to_string(), why }),
         }
     }
 
@@ -105,31 +102,22 @@ fn check_benchmark_id(id: &str) -> Result<(), &'static str> {
     if !country.bytes().all(|b| b.is_ascii_uppercase()) {
         return Err("country code must be three upper-case letters");
     }
-    let s = s[3..]
-        .strip_prefix('_')
-        .ok_or("expected '_' after the country code")?;
+    let s = s[3..].strip_prefix('_').ok_or("expected '_' after the country code")?;
     let name_len = s.bytes().take_while(u8::is_ascii_alphanumeric).count();
     if name_len == 0 {
         return Err("map name must be non-empty ASCII letters and digits");
     }
-    let s = s[name_len..]
-        .strip_prefix('-')
-        .ok_or("expected '-' after the map name")?;
-    let s =
-        strip_positive_int(s).ok_or("map id must be a positive integer without leading zero")?;
+    let s = s[name_len..].strip_prefix('-').ok_or("expected '-' after the map name")?;
+    let s = strip_positive_int(s).ok_or("map id must be a positive integer without leading zero")?;
     if s.is_empty() {
         return Ok(());
     }
-    let s = s
-        .strip_prefix('_')
-        .ok_or("expected '_' before the configuration id")?;
+    let s = s.strip_prefix('_').ok_or("expected '_' before the configuration id")?;
     let s = strip_positive_int(s).ok_or("configuration id must be a positive integer")?;
     if s.is_empty() {
         return Ok(());
     }
-    let s = s
-        .strip_prefix('_')
-        .ok_or("expected '_' before the prediction type")?;
+    let s = s.strip_prefix('_').ok_or("expected '_' before the prediction type")?;
     let mut s = match s.as_bytes().first() {
         Some(b'S' | b'T' | b'P' | b'I') => &s[1..],
         _ => return Err("prediction type must be one of S, T, P, I"),
@@ -138,9 +126,7 @@ fn check_benchmark_id(id: &str) -> Result<(), &'static str> {
         return Err("prediction type needs at least one -id");
     }
     while !s.is_empty() {
-        s = s
-            .strip_prefix('-')
-            .ok_or("expected '-' before a prediction id")?;
+        s = s.strip_prefix('-').ok_or("expected '-' before a prediction id")?;
         s = strip_positive_int(s).ok_or("prediction id must be a positive integer")?;
     }
     Ok(())
@@ -157,8 +143,7 @@ pub struct Date {
 impl Date {
     /// Fails for a day that does not exist (Gregorian calendar, years 1–9999).
     pub fn new(year: u16, month: u8, day: u8) -> Result<Self, ModelError> {
-        let leap =
-            (year.is_multiple_of(4) && !year.is_multiple_of(100)) || year.is_multiple_of(400);
+        let leap = (year.is_multiple_of(4) && !year.is_multiple_of(100)) || year.is_multiple_of(400);
         let days = match month {
             1 | 3 | 5 | 7 | 8 | 10 | 12 => 31,
             4 | 6 | 9 | 11 => 30,
@@ -200,12 +185,7 @@ pub struct Location {
 
 impl Default for Location {
     fn default() -> Self {
-        Self {
-            geo_name_id: -999,
-            gps_latitude: 999.0,
-            gps_longitude: 999.0,
-            geo_transformation: None,
-        }
+        Self { geo_name_id: -999, gps_latitude: 999.0, gps_longitude: 999.0, geo_transformation: None }
     }
 }
 
@@ -224,12 +204,6 @@ pub struct GeoTransformation {
 impl GeoTransformation {
     /// Only a PROJ string; identity transformation.
     pub fn proj(geo_reference: impl Into<String>) -> Self {
-        Self {
-            geo_reference: geo_reference.into(),
-            x_translation: 0.0,
-            y_translation: 0.0,
-            z_rotation: 0.0,
-            scaling: 1.0,
-        }
+        Self { geo_reference: geo_reference.into(), x_translation: 0.0, y_translation: 0.0, z_rotation: 0.0, scaling: 1.0 }
     }
 }

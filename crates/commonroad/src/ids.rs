@@ -79,16 +79,12 @@ impl Default for IdAllocator {
 impl IdAllocator {
     /// Starts at 1.
     pub fn new() -> Self {
-        Self {
-            next: NonZeroU64::MIN,
-        }
+        Self { next: NonZeroU64::MIN }
     }
 
     /// Starts at `first` (0 is treated as 1).
     pub fn starting_at(first: u64) -> Self {
-        Self {
-            next: NonZeroU64::new(first).unwrap_or(NonZeroU64::MIN),
-        }
+        Self { next: NonZeroU64::new(first).unwrap_or(NonZeroU64::MIN) }
     }
 
     /// The value the next call will return.

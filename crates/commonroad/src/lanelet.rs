@@ -87,10 +87,7 @@ impl LaneletBounds {
     /// Fails if the counts differ, a side has fewer than 2 points, or a coordinate is not finite.
     pub fn new(left: Vec<Point>, right: Vec<Point>) -> Result<Self, ModelError> {
         if left.len() != right.len() {
-            return Err(ModelError::BoundPointCountMismatch {
-                left: left.len(),
-                right: right.len(),
-            });
+            return Err(ModelError::BoundPointCountMismatch { left: left.len(), right: right.len() });
         }
         if left.len() < 2 {
             return Err(ModelError::TooFewBoundPoints { got: left.len() });

@@ -89,31 +89,15 @@ mod validate;
 pub mod xml;
 
 pub use error::ModelError;
-pub use geometry::{
-    AbsoluteShape, Circle, PlacedCircle, PlacedRectangle, Point, Polygon, Rectangle, Shape,
-};
+pub use geometry::{AbsoluteShape, Circle, PlacedCircle, PlacedRectangle, Point, Polygon, Rectangle, Shape};
 pub use header::{BenchmarkId, BenchmarkIdParts, Date, GeoTransformation, Header, Location};
-pub use ids::{
-    IdAllocator, IncomingId, IntersectionId, LaneletId, ObstacleId, PlanningProblemId,
-    TrafficLightId, TrafficSignId,
-};
+pub use ids::{IdAllocator, IncomingId, IntersectionId, LaneletId, ObstacleId, PlanningProblemId, TrafficLightId, TrafficSignId};
 pub use intersection::{Incoming, Intersection};
-pub use lanelet::{
-    Adjacent, DrivingDir, Lanelet, LaneletBounds, LaneletType, LineMarking, RoadUser, StopLine,
-};
-pub use obstacle::{
-    DynamicObstacle, DynamicObstacleType, EnvironmentObstacle, EnvironmentObstacleType, State,
-    StaticObstacle, StaticObstacleType,
-};
-pub use planning::{
-    GoalPosition, GoalState, Interval, PlanningInitialState, PlanningProblem, PlanningProblemSet,
-    TimeInterval,
-};
+pub use lanelet::{Adjacent, DrivingDir, Lanelet, LaneletBounds, LaneletType, LineMarking, RoadUser, StopLine};
+pub use obstacle::{DynamicObstacle, DynamicObstacleType, EnvironmentObstacle, EnvironmentObstacleType, State, StaticObstacle, StaticObstacleType};
+pub use planning::{GoalPosition, GoalState, Interval, PlanningInitialState, PlanningProblem, PlanningProblemSet, TimeInterval};
 pub use scenario::{LaneletNetwork, Scenario};
 pub use sign_ids::{is_xsd_traffic_sign_id, XSD_TRAFFIC_SIGN_IDS};
 pub use tags::Tag;
-pub use traffic::{
-    CycleElement, TrafficLight, TrafficLightColor, TrafficLightDirection, TrafficSign,
-    TrafficSignElement,
-};
+pub use traffic::{CycleElement, TrafficLight, TrafficLightColor, TrafficLightDirection, TrafficSign, TrafficSignElement};
 pub use validate::{ElementKind, Problem, ProblemKind};

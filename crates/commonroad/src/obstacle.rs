@@ -59,16 +59,7 @@ pub struct State {
 impl State {
     /// The finite-ness of every field.
     pub fn is_finite(&self) -> bool {
-        [
-            self.x,
-            self.y,
-            self.orientation,
-            self.velocity,
-            self.acceleration,
-            self.yaw_rate,
-        ]
-        .iter()
-        .all(|v| v.is_finite())
+        [self.x, self.y, self.orientation, self.velocity, self.acceleration, self.yaw_rate].iter().all(|v| v.is_finite())
     }
 }
 

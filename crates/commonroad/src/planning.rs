@@ -87,12 +87,7 @@ pub struct GoalState {
 impl GoalState {
     /// A goal that only constrains time.
     pub fn at_time(time: TimeInterval) -> Self {
-        Self {
-            time,
-            position: None,
-            orientation: None,
-            velocity: None,
-        }
+        Self { time, position: None, orientation: None, velocity: None }
     }
 }
 

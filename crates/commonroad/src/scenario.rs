@@ -27,15 +27,8 @@ impl LaneletNetwork {
         let lanelets = self.lanelets.iter().map(|l| l.id.get());
         let signs = self.traffic_signs.iter().map(|s| s.id.get());
         let lights = self.traffic_lights.iter().map(|l| l.id.get());
-        let inters = self.intersections.iter().flat_map(|i| {
-            std::iter::once(i.id.get()).chain(i.incomings.iter().map(|inc| inc.id.get()))
-        });
-        lanelets
-            .chain(signs)
-            .chain(lights)
-            .chain(inters)
-            .max()
-            .unwrap_or(0)
+        let inters = self.intersections.iter().flat_map(|i| std::iter::once(i.id.get()).chain(i.incomings.iter().map(|inc| inc.id.get())));
+        lanelets.chain(signs).chain(lights).chain(inters).max().unwrap_or(0)
     }
 }
 
@@ -74,19 +67,14 @@ impl Scenario {
             .map(|o| o.id.get())
             .chain(self.dynamic_obstacles.iter().map(|o| o.id.get()))
             .chain(self.environment_obstacles.iter().map(|o| o.id.get()));
-        obstacles
-            .chain(std::iter::once(self.network.max_id()))
-            .max()
-            .unwrap_or(0)
+        obstacles.chain(std::iter::once(self.network.max_id())).max().unwrap_or(0)
     }
 
     /// An allocator whose ids come after every id already in the scenario and in `problems`
     /// (the same argument as [`Scenario::validate`]), e.g. to add obstacles and planning
     /// problems to a converted map. Use it for every further element of the file.
     pub fn id_allocator(&self, problems: Option<&PlanningProblemSet>) -> IdAllocator {
-        let max = self
-            .max_id()
-            .max(problems.map_or(0, PlanningProblemSet::max_id));
+        let max = self.max_id().max(problems.map_or(0, PlanningProblemSet::max_id));
         IdAllocator::starting_at(max.saturating_add(1))
     }
 }

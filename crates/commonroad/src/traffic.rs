@@ -19,10 +19,7 @@ pub struct TrafficSignElement {
 impl TrafficSignElement {
     /// A sign without additional values.
     pub fn new(sign_id: impl Into<String>) -> Self {
-        Self {
-            sign_id: sign_id.into(),
-            additional_values: Vec::new(),
-        }
+        Self { sign_id: sign_id.into(), additional_values: Vec::new() }
     }
 }
 

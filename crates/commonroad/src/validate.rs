@@ -104,50 +104,26 @@ struct Checker {
 
 impl Checker {
     fn push(&mut self, kind: ProblemKind, element: ElementKind, id: Option<u64>, message: String) {
-        self.problems.push(Problem {
-            kind,
-            element,
-            id,
-            message,
-        });
+        self.problems.push(Problem { kind, element, id, message });
     }
 
     fn register(&mut self, kind: ElementKind, id: u64) {
         if let Some(first) = self.ids.get(&id).copied() {
-            self.push(
-                ProblemKind::DuplicateId,
-                kind,
-                Some(id),
-                format!("id {id} is already used by a {}", first.as_str()),
-            );
+            self.push(ProblemKind::DuplicateId, kind, Some(id), format!("id {id} is already used by a {}", first.as_str()));
         } else {
             self.ids.insert(id, kind);
         }
     }
 
-    fn reference(
-        &mut self,
-        from: ElementKind,
-        from_id: u64,
-        field: &str,
-        target: u64,
-        expected: ElementKind,
-    ) {
+    fn reference(&mut self, from: ElementKind, from_id: u64, field: &str, target: u64, expected: ElementKind) {
         match self.ids.get(&target) {
             Some(k) if *k == expected => {}
             Some(k) => {
-                let msg = format!(
-                    "{field} refers to {target}, a {}, expected a {}",
-                    k.as_str(),
-                    expected.as_str()
-                );
+                let msg = format!("{field} refers to {target}, a {}, expected a {}", k.as_str(), expected.as_str());
                 self.push(ProblemKind::DanglingRef, from, Some(from_id), msg);
             }
             None => {
-                let msg = format!(
-                    "{field} refers to {target}, but no {} has that id",
-                    expected.as_str()
-                );
+                let msg = format!("{field} refers to {target}, but no {} has that id", expected.as_str());
                 self.push(ProblemKind::DanglingRef, from, Some(from_id), msg);
             }
         }
@@ -155,45 +131,25 @@ impl Checker {
 
     fn finite(&mut self, element: ElementKind, id: Option<u64>, field: &str, v: f64) {
         if !v.is_finite() {
-            self.push(
-                ProblemKind::NonFinite,
-                element,
-                id,
-                format!("{field} is {v}"),
-            );
+            self.push(ProblemKind::NonFinite, element, id, format!("{field} is {v}"));
         }
     }
 
     fn point(&mut self, element: ElementKind, id: Option<u64>, field: &str, p: &Point) {
         if !p.is_finite() {
-            self.push(
-                ProblemKind::NonFinite,
-                element,
-                id,
-                format!("{field} ({}, {}) is not finite", p.x, p.y),
-            );
+            self.push(ProblemKind::NonFinite, element, id, format!("{field} ({}, {}) is not finite", p.x, p.y));
         }
     }
 
     fn positive(&mut self, element: ElementKind, id: Option<u64>, field: &str, v: f64) {
         if !is_written_positive(v) {
-            self.push(
-                ProblemKind::NotPositive,
-                element,
-                id,
-                format!("{field} is {v}, must be > 0 when written"),
-            );
+            self.push(ProblemKind::NotPositive, element, id, format!("{field} is {v}, must be > 0 when written"));
         }
     }
 
     fn non_empty(&mut self, element: ElementKind, id: Option<u64>, what: &str, len: usize) {
         if len == 0 {
-            self.push(
-                ProblemKind::EmptyList,
-                element,
-                id,
-                format!("{what} must not be empty"),
-            );
+            self.push(ProblemKind::EmptyList, element, id, format!("{what} must not be empty"));
         }
     }
 
@@ -214,10 +170,7 @@ impl Scenario {
     /// file (`osc2cr map`): no planning problem is required. An empty list means the file is
     /// consistent; it does not replace the XSD.
     pub fn validate(&self, problems: Option<&PlanningProblemSet>) -> Vec<Problem> {
-        let mut c = Checker {
-            problems: Vec::new(),
-            ids: BTreeMap::new(),
-        };
+        let mut c = Checker { problems: Vec::new(), ids: BTreeMap::new() };
         self.register_ids(&mut c, problems);
         self.check_header(&mut c);
         self.check_network(&mut c);
@@ -275,12 +228,7 @@ impl Scenario {
     fn check_network(&self, c: &mut Checker) {
         use ElementKind as K;
         let net = &self.network;
-        c.non_empty(
-            K::Scenario,
-            None,
-            "the lanelet list (the XSD needs >= 1 lanelet)",
-            net.lanelets.len(),
-        );
+        c.non_empty(K::Scenario, None, "the lanelet list (the XSD needs >= 1 lanelet)", net.lanelets.len());
         let by_id: BTreeMap<u64, &Lanelet> = net.lanelets.iter().map(|l| (l.id.get(), l)).collect();
         let mut referenced_signs = BTreeSet::new();
         let mut referenced_lights = BTreeSet::new();
@@ -290,8 +238,7 @@ impl Scenario {
                 c.reference(K::Lanelet, id, "predecessor", p.get(), K::Lanelet);
                 if let Some(other) = by_id.get(&p.get()) {
                     if !other.successors.contains(&l.id) {
-                        let msg =
-                            format!("has predecessor {p}, but {p} does not list {id} as successor");
+                        let msg = format!("has predecessor {p}, but {p} does not list {id} as successor");
                         c.push(ProblemKind::AsymmetricSuccessor, K::Lanelet, Some(id), msg);
                     }
                 }
@@ -300,37 +247,23 @@ impl Scenario {
                 c.reference(K::Lanelet, id, "successor", s.get(), K::Lanelet);
                 if let Some(other) = by_id.get(&s.get()) {
                     if !other.predecessors.contains(&l.id) {
-                        let msg =
-                            format!("has successor {s}, but {s} does not list {id} as predecessor");
+                        let msg = format!("has successor {s}, but {s} does not list {id} as predecessor");
                         c.push(ProblemKind::AsymmetricSuccessor, K::Lanelet, Some(id), msg);
                     }
                 }
             }
-            for (side, adj) in [
-                ("adjacentLeft", l.adjacent_left),
-                ("adjacentRight", l.adjacent_right),
-            ] {
+            for (side, adj) in [("adjacentLeft", l.adjacent_left), ("adjacentRight", l.adjacent_right)] {
                 let Some(adj) = adj else { continue };
                 c.reference(K::Lanelet, id, side, adj.lanelet.get(), K::Lanelet);
                 let Some(other) = by_id.get(&adj.lanelet.get()) else {
                     continue;
                 };
                 // same direction: my left neighbour has me on its right; opposite: on its left.
-                let mirrored_left =
-                    (side == "adjacentLeft") == (adj.driving_dir == DrivingDir::Opposite);
-                let back = if mirrored_left {
-                    other.adjacent_left
-                } else {
-                    other.adjacent_right
-                };
-                let ok = adj.lanelet != l.id
-                    && back.is_some_and(|b| b.lanelet == l.id && b.driving_dir == adj.driving_dir);
+                let mirrored_left = (side == "adjacentLeft") == (adj.driving_dir == DrivingDir::Opposite);
+                let back = if mirrored_left { other.adjacent_left } else { other.adjacent_right };
+                let ok = adj.lanelet != l.id && back.is_some_and(|b| b.lanelet == l.id && b.driving_dir == adj.driving_dir);
                 if !ok {
-                    let back_side = if mirrored_left {
-                        "adjacentLeft"
-                    } else {
-                        "adjacentRight"
-                    };
+                    let back_side = if mirrored_left { "adjacentLeft" } else { "adjacentRight" };
                     let msg = format!(
                         "{side}={} ({}) but lanelet {}'s {back_side} is not {id} ({})",
                         adj.lanelet,
@@ -346,22 +279,10 @@ impl Scenario {
                     c.point(K::Lanelet, Some(id), "stop line point", p);
                 }
                 for r in &sl.traffic_sign_refs {
-                    c.reference(
-                        K::Lanelet,
-                        id,
-                        "stopLine trafficSignRef",
-                        r.get(),
-                        K::TrafficSign,
-                    );
+                    c.reference(K::Lanelet, id, "stopLine trafficSignRef", r.get(), K::TrafficSign);
                 }
                 for r in &sl.traffic_light_refs {
-                    c.reference(
-                        K::Lanelet,
-                        id,
-                        "stopLine trafficLightRef",
-                        r.get(),
-                        K::TrafficLight,
-                    );
+                    c.reference(K::Lanelet, id, "stopLine trafficLightRef", r.get(), K::TrafficLight);
                 }
             }
             c.non_empty(K::Lanelet, Some(id), "laneletType", l.lanelet_types.len());
@@ -374,8 +295,7 @@ impl Scenario {
                 referenced_lights.insert(*r);
             }
             if left_bound_on_right(l) {
-                let msg =
-                    "the left bound lies right of the driving direction at every point".to_string();
+                let msg = "the left bound lies right of the driving direction at every point".to_string();
                 c.push(ProblemKind::LeftBoundOnRight, K::Lanelet, Some(id), msg);
             }
         }
@@ -384,10 +304,7 @@ impl Scenario {
             c.non_empty(K::TrafficSign, id, "trafficSignElement", s.elements.len());
             for e in &s.elements {
                 if !is_xsd_traffic_sign_id(&e.sign_id) {
-                    let msg = format!(
-                        "trafficSignID {:?} is not in the 2020a XSD enumeration",
-                        e.sign_id
-                    );
+                    let msg = format!("trafficSignID {:?} is not in the 2020a XSD enumeration", e.sign_id);
                     c.push(ProblemKind::UnknownTrafficSignId, K::TrafficSign, id, msg);
                 }
             }
@@ -395,14 +312,8 @@ impl Scenario {
                 c.point(K::TrafficSign, id, "position", p);
             }
             if !referenced_signs.contains(&s.id) {
-                let msg =
-                    "no lanelet references this sign (commonroad-io asserts one does)".to_string();
-                c.push(
-                    ProblemKind::UnreferencedTrafficSign,
-                    K::TrafficSign,
-                    id,
-                    msg,
-                );
+                let msg = "no lanelet references this sign (commonroad-io asserts one does)".to_string();
+                c.push(ProblemKind::UnreferencedTrafficSign, K::TrafficSign, id, msg);
             }
         }
         for t in &net.traffic_lights {
@@ -411,14 +322,8 @@ impl Scenario {
             match &t.position {
                 Some(p) => c.point(K::TrafficLight, id, "position", p),
                 None if !referenced_lights.contains(&t.id) => {
-                    let msg =
-                        "a light without position must be referenced by a lanelet".to_string();
-                    c.push(
-                        ProblemKind::UnreferencedTrafficLight,
-                        K::TrafficLight,
-                        id,
-                        msg,
-                    );
+                    let msg = "a light without position must be referenced by a lanelet".to_string();
+                    c.push(ProblemKind::UnreferencedTrafficLight, K::TrafficLight, id, msg);
                 }
                 None => {}
             }
@@ -428,12 +333,7 @@ impl Scenario {
             c.non_empty(K::Intersection, Some(iid), "incoming", i.incomings.len());
             for inc in &i.incomings {
                 let id = inc.id.get();
-                c.non_empty(
-                    K::Incoming,
-                    Some(id),
-                    "incomingLanelet",
-                    inc.incoming_lanelets.len(),
-                );
+                c.non_empty(K::Incoming, Some(id), "incomingLanelet", inc.incoming_lanelets.len());
                 let groups = [
                     ("incomingLanelet", &inc.incoming_lanelets),
                     ("successorsRight", &inc.successors_right),
@@ -472,36 +372,17 @@ impl Scenario {
             c.shape(K::DynamicObstacle, id, &o.shape);
             let t0 = o.initial_state.time_step;
             if !o.initial_state.is_finite() {
-                c.push(
-                    ProblemKind::NonFinite,
-                    K::DynamicObstacle,
-                    Some(id),
-                    format!("initial state at {t0} is not finite"),
-                );
+                c.push(ProblemKind::NonFinite, K::DynamicObstacle, Some(id), format!("initial state at {t0} is not finite"));
             }
             if o.trajectory.is_empty() {
                 let msg = "the trajectory has no state (the XSD needs >= 1)".to_string();
-                c.push(
-                    ProblemKind::EmptyTrajectory,
-                    K::DynamicObstacle,
-                    Some(id),
-                    msg,
-                );
+                c.push(ProblemKind::EmptyTrajectory, K::DynamicObstacle, Some(id), msg);
             }
             for (i, s) in o.trajectory.iter().enumerate() {
                 let expected = t0.saturating_add(1).saturating_add(i as u64);
                 if s.time_step != expected {
-                    let msg = format!(
-                        "trajectory state {i} has time step {}, expected {expected} (initial time step {t0} + {})",
-                        s.time_step,
-                        i + 1
-                    );
-                    c.push(
-                        ProblemKind::TrajectoryNotConsecutive,
-                        K::DynamicObstacle,
-                        Some(id),
-                        msg,
-                    );
+                    let msg = format!("trajectory state {i} has time step {}, expected {expected} (initial time step {t0} + {})", s.time_step, i + 1);
+                    c.push(ProblemKind::TrajectoryNotConsecutive, K::DynamicObstacle, Some(id), msg);
                     break; // one report per trajectory is enough
                 }
             }
@@ -515,33 +396,13 @@ impl Scenario {
             match &o.shape {
                 AbsoluteShape::Rectangle(r) => {
                     c.point(K::EnvironmentObstacle, id, "rectangle center", &r.center);
-                    c.finite(
-                        K::EnvironmentObstacle,
-                        id,
-                        "rectangle orientation",
-                        r.orientation,
-                    );
-                    c.positive(
-                        K::EnvironmentObstacle,
-                        id,
-                        "rectangle length",
-                        r.rectangle.length(),
-                    );
-                    c.positive(
-                        K::EnvironmentObstacle,
-                        id,
-                        "rectangle width",
-                        r.rectangle.width(),
-                    );
+                    c.finite(K::EnvironmentObstacle, id, "rectangle orientation", r.orientation);
+                    c.positive(K::EnvironmentObstacle, id, "rectangle length", r.rectangle.length());
+                    c.positive(K::EnvironmentObstacle, id, "rectangle width", r.rectangle.width());
                 }
                 AbsoluteShape::Circle(ci) => {
                     c.point(K::EnvironmentObstacle, id, "circle center", &ci.center);
-                    c.positive(
-                        K::EnvironmentObstacle,
-                        id,
-                        "circle radius",
-                        ci.circle.radius(),
-                    );
+                    c.positive(K::EnvironmentObstacle, id, "circle radius", ci.circle.radius());
                 }
                 AbsoluteShape::Polygon(_) => {}
             }
@@ -570,75 +431,30 @@ fn check_planning(c: &mut Checker, set: &PlanningProblemSet) {
         for (f, v) in fields {
             c.finite(K::PlanningProblem, Some(id), f, v);
         }
-        c.non_empty(
-            K::PlanningProblem,
-            Some(id),
-            "goalState",
-            p.goal_states.len(),
-        );
+        c.non_empty(K::PlanningProblem, Some(id), "goalState", p.goal_states.len());
         for g in &p.goal_states {
             match &g.position {
                 None => {}
                 Some(GoalPosition::Lanelets(refs)) => {
-                    c.non_empty(
-                        K::PlanningProblem,
-                        Some(id),
-                        "goal lanelet list",
-                        refs.len(),
-                    );
+                    c.non_empty(K::PlanningProblem, Some(id), "goal lanelet list", refs.len());
                     for r in refs {
                         c.reference(K::PlanningProblem, id, "goal lanelet", r.get(), K::Lanelet);
                     }
                 }
                 Some(GoalPosition::Rectangles(rs)) => {
-                    c.non_empty(
-                        K::PlanningProblem,
-                        Some(id),
-                        "goal rectangle list",
-                        rs.len(),
-                    );
+                    c.non_empty(K::PlanningProblem, Some(id), "goal rectangle list", rs.len());
                     for r in rs {
-                        c.point(
-                            K::PlanningProblem,
-                            Some(id),
-                            "goal rectangle center",
-                            &r.center,
-                        );
-                        c.finite(
-                            K::PlanningProblem,
-                            Some(id),
-                            "goal rectangle orientation",
-                            r.orientation,
-                        );
-                        c.positive(
-                            K::PlanningProblem,
-                            Some(id),
-                            "goal rectangle length",
-                            r.rectangle.length(),
-                        );
-                        c.positive(
-                            K::PlanningProblem,
-                            Some(id),
-                            "goal rectangle width",
-                            r.rectangle.width(),
-                        );
+                        c.point(K::PlanningProblem, Some(id), "goal rectangle center", &r.center);
+                        c.finite(K::PlanningProblem, Some(id), "goal rectangle orientation", r.orientation);
+                        c.positive(K::PlanningProblem, Some(id), "goal rectangle length", r.rectangle.length());
+                        c.positive(K::PlanningProblem, Some(id), "goal rectangle width", r.rectangle.width());
                     }
                 }
                 Some(GoalPosition::Circles(cs)) => {
                     c.non_empty(K::PlanningProblem, Some(id), "goal circle list", cs.len());
                     for ci in cs {
-                        c.point(
-                            K::PlanningProblem,
-                            Some(id),
-                            "goal circle center",
-                            &ci.center,
-                        );
-                        c.positive(
-                            K::PlanningProblem,
-                            Some(id),
-                            "goal circle radius",
-                            ci.circle.radius(),
-                        );
+                        c.point(K::PlanningProblem, Some(id), "goal circle center", &ci.center);
+                        c.positive(K::PlanningProblem, Some(id), "goal circle radius", ci.circle.radius());
                     }
                 }
                 Some(GoalPosition::Polygons(ps)) => {

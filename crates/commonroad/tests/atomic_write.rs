@@ -6,19 +6,14 @@ use std::path::PathBuf;
 use commonroad::xml::{write_atomic, WriteError};
 
 fn fresh_dir(name: &str) -> PathBuf {
-    let d = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
-        .join("atomic")
-        .join(name);
+    let d = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("atomic").join(name);
     let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).unwrap();
     d
 }
 
 fn entries(dir: &PathBuf) -> Vec<String> {
-    let mut v: Vec<String> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .collect();
+    let mut v: Vec<String> = std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
     v.sort();
     v
 }
@@ -47,11 +42,7 @@ fn missing_directory_is_an_error_naming_a_path_and_creates_nothing() {
     let d = fresh_dir("missing");
     let p = d.join("no/such/dir/out.xml");
     match write_atomic(&p, b"x") {
-        Err(WriteError::Io { path, .. }) => assert!(
-            path.starts_with(d.join("no/such/dir")),
-            "{}",
-            path.display()
-        ),
+        Err(WriteError::Io { path, .. }) => assert!(path.starts_with(d.join("no/such/dir")), "{}", path.display()),
         other => panic!("expected Io error, got {other:?}"),
     }
     assert!(entries(&d).is_empty());
@@ -87,8 +78,5 @@ fn concurrent_writers_leave_one_complete_version() {
 
 #[test]
 fn a_path_without_file_name_is_an_error() {
-    assert!(matches!(
-        write_atomic(std::path::Path::new("/"), b"x"),
-        Err(WriteError::Io { .. })
-    ));
+    assert!(matches!(write_atomic(std::path::Path::new("/"), b"x"), Err(WriteError::Io { .. })));
 }

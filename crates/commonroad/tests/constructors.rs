@@ -8,49 +8,27 @@ fn p(x: f64, y: f64) -> Point {
 
 #[test]
 fn lanelet_bounds_need_equal_counts() {
-    let e = LaneletBounds::new(
-        vec![p(0.0, 1.0), p(1.0, 1.0), p(2.0, 1.0)],
-        vec![p(0.0, 0.0), p(2.0, 0.0)],
-    );
-    assert_eq!(
-        e,
-        Err(ModelError::BoundPointCountMismatch { left: 3, right: 2 })
-    );
+    let e = LaneletBounds::new(vec![p(0.0, 1.0), p(1.0, 1.0), p(2.0, 1.0)], vec![p(0.0, 0.0), p(2.0, 0.0)]);
+    assert_eq!(e, Err(ModelError::BoundPointCountMismatch { left: 3, right: 2 }));
 }
 
 #[test]
 fn lanelet_bounds_need_two_points() {
-    assert_eq!(
-        LaneletBounds::new(vec![p(0.0, 1.0)], vec![p(0.0, 0.0)]),
-        Err(ModelError::TooFewBoundPoints { got: 1 })
-    );
-    assert_eq!(
-        LaneletBounds::new(vec![], vec![]),
-        Err(ModelError::TooFewBoundPoints { got: 0 })
-    );
+    assert_eq!(LaneletBounds::new(vec![p(0.0, 1.0)], vec![p(0.0, 0.0)]), Err(ModelError::TooFewBoundPoints { got: 1 }));
+    assert_eq!(LaneletBounds::new(vec![], vec![]), Err(ModelError::TooFewBoundPoints { got: 0 }));
 }
 
 #[test]
 fn lanelet_bounds_need_finite_points() {
-    let r = LaneletBounds::new(
-        vec![p(0.0, 1.0), p(f64::NAN, 1.0)],
-        vec![p(0.0, 0.0), p(1.0, 0.0)],
-    );
+    let r = LaneletBounds::new(vec![p(0.0, 1.0), p(f64::NAN, 1.0)], vec![p(0.0, 0.0), p(1.0, 0.0)]);
     assert!(matches!(r, Err(ModelError::NonFinite { .. })), "{r:?}");
-    let r = LaneletBounds::new(
-        vec![p(0.0, 1.0), p(1.0, 1.0)],
-        vec![p(0.0, 0.0), Point::with_z(1.0, 0.0, f64::INFINITY)],
-    );
+    let r = LaneletBounds::new(vec![p(0.0, 1.0), p(1.0, 1.0)], vec![p(0.0, 0.0), Point::with_z(1.0, 0.0, f64::INFINITY)]);
     assert!(matches!(r, Err(ModelError::NonFinite { .. })), "{r:?}");
 }
 
 #[test]
 fn valid_bounds_keep_their_points() {
-    let b = LaneletBounds::new(
-        vec![p(0.0, 1.0), p(1.0, 1.0)],
-        vec![p(0.0, 0.0), p(1.0, 0.0)],
-    )
-    .unwrap();
+    let b = LaneletBounds::new(vec![p(0.0, 1.0), p(1.0, 1.0)], vec![p(0.0, 0.0), p(1.0, 0.0)]).unwrap();
     assert_eq!(b.len(), 2);
     assert_eq!(b.left()[1], p(1.0, 1.0));
     assert_eq!(b.right()[0], p(0.0, 0.0));
@@ -58,56 +36,23 @@ fn valid_bounds_keep_their_points() {
 
 #[test]
 fn shapes_need_positive_sizes_and_three_polygon_points() {
-    assert!(matches!(
-        Rectangle::new(0.0, 1.0),
-        Err(ModelError::NotPositive { .. })
-    ));
-    assert!(matches!(
-        Rectangle::new(1.0, -1.0),
-        Err(ModelError::NotPositive { .. })
-    ));
-    assert!(matches!(
-        Rectangle::new(f64::NAN, 1.0),
-        Err(ModelError::NonFinite { .. })
-    ));
-    assert!(matches!(
-        Shape::circle(0.0),
-        Err(ModelError::NotPositive { .. })
-    ));
-    assert!(matches!(
-        Shape::circle(f64::INFINITY),
-        Err(ModelError::NonFinite { .. })
-    ));
-    assert_eq!(
-        Polygon::new(vec![p(0.0, 0.0), p(1.0, 0.0)]),
-        Err(ModelError::TooFewPolygonPoints { got: 2 })
-    );
+    assert!(matches!(Rectangle::new(0.0, 1.0), Err(ModelError::NotPositive { .. })));
+    assert!(matches!(Rectangle::new(1.0, -1.0), Err(ModelError::NotPositive { .. })));
+    assert!(matches!(Rectangle::new(f64::NAN, 1.0), Err(ModelError::NonFinite { .. })));
+    assert!(matches!(Shape::circle(0.0), Err(ModelError::NotPositive { .. })));
+    assert!(matches!(Shape::circle(f64::INFINITY), Err(ModelError::NonFinite { .. })));
+    assert_eq!(Polygon::new(vec![p(0.0, 0.0), p(1.0, 0.0)]), Err(ModelError::TooFewPolygonPoints { got: 2 }));
     assert!(Polygon::new(vec![p(0.0, 0.0), p(1.0, 0.0), p(0.0, f64::NAN)]).is_err());
-    assert_eq!(
-        Shape::rectangle(4.5, 1.8).unwrap(),
-        Shape::Rectangle(Rectangle::new(4.5, 1.8).unwrap())
-    );
+    assert_eq!(Shape::rectangle(4.5, 1.8).unwrap(), Shape::Rectangle(Rectangle::new(4.5, 1.8).unwrap()));
 }
 
 #[test]
 fn intervals_are_ordered_and_finite() {
-    assert_eq!(
-        Interval::new(2.0, 1.0),
-        Err(ModelError::ReversedInterval {
-            start: 2.0,
-            end: 1.0
-        })
-    );
+    assert_eq!(Interval::new(2.0, 1.0), Err(ModelError::ReversedInterval { start: 2.0, end: 1.0 }));
     assert!(Interval::new(f64::NAN, 1.0).is_err());
     assert!(Interval::new(1.0, 1.0).is_ok());
-    assert_eq!(
-        TimeInterval::new(0, 0),
-        Err(ModelError::BadTimeInterval { start: 0, end: 0 })
-    );
-    assert_eq!(
-        TimeInterval::new(5, 4),
-        Err(ModelError::BadTimeInterval { start: 5, end: 4 })
-    );
+    assert_eq!(TimeInterval::new(0, 0), Err(ModelError::BadTimeInterval { start: 0, end: 0 }));
+    assert_eq!(TimeInterval::new(5, 4), Err(ModelError::BadTimeInterval { start: 5, end: 4 }));
     let t = TimeInterval::new(0, 1).unwrap();
     assert_eq!((t.start(), t.end()), (0, 1));
 }
@@ -127,14 +72,7 @@ fn dates_must_exist() {
 
 #[test]
 fn benchmark_ids_follow_the_readers_pattern() {
-    for ok in [
-        "DEU_Ffb-1_2_T-1",
-        "ZAM_Test-1",
-        "C-USA_Lanker-2_1_T-1",
-        "ZAM_a1-10_3",
-        "DEU_X-1_1_S-1-2-3",
-        "ESP_M-1_1_I-7",
-    ] {
+    for ok in ["DEU_Ffb-1_2_T-1", "ZAM_Test-1", "C-USA_Lanker-2_1_T-1", "ZAM_a1-10_3", "DEU_X-1_1_S-1-2-3", "ESP_M-1_1_I-7"] {
         assert!(BenchmarkId::parse(ok).is_ok(), "{ok}");
     }
     for bad in [

@@ -6,10 +6,7 @@ use commonroad::xml::{escape, write_scenario, WriteError};
 
 #[test]
 fn markup_characters_become_entities() {
-    assert_eq!(
-        escape("a&b<c>d\"e'f").unwrap(),
-        "a&amp;b&lt;c&gt;d&quot;e&apos;f"
-    );
+    assert_eq!(escape("a&b<c>d\"e'f").unwrap(), "a&amp;b&lt;c&gt;d&quot;e&apos;f");
     assert_eq!(escape("plain Zoë ✓").unwrap(), "plain Zoë ✓");
     assert_eq!(escape("").unwrap(), "");
 }
@@ -36,10 +33,7 @@ fn hostile_strings_round_trip_through_a_parser() {
     let text = String::from_utf8(write_scenario(&m.scenario, &m.problems).unwrap()).unwrap();
     let doc = roxmltree::Document::parse(&text).unwrap();
     assert_eq!(doc.root_element().attribute("author"), Some(author));
-    let v = doc
-        .descendants()
-        .find(|n| n.has_tag_name("additionalValue"))
-        .unwrap();
+    let v = doc.descendants().find(|n| n.has_tag_name("additionalValue")).unwrap();
     assert_eq!(v.text(), Some(value));
 }
 

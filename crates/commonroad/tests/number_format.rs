@@ -13,11 +13,7 @@ fn is_fixed_decimal(s: &str) -> bool {
     let Some((int, frac)) = body.split_once('.') else {
         return false;
     };
-    !int.is_empty()
-        && !frac.is_empty()
-        && frac.len() <= DECIMALS
-        && int.bytes().all(|b| b.is_ascii_digit())
-        && frac.bytes().all(|b| b.is_ascii_digit())
+    !int.is_empty() && !frac.is_empty() && frac.len() <= DECIMALS && int.bytes().all(|b| b.is_ascii_digit()) && frac.bytes().all(|b| b.is_ascii_digit())
 }
 
 #[test]

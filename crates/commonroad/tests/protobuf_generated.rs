@@ -53,10 +53,7 @@ fn the_checked_in_types_are_prost_builds_output_for_the_descriptor_set() {
     let names = |v: &[(String, Vec<u8>)]| v.iter().map(|(n, _)| n.clone()).collect::<Vec<_>>();
     assert_eq!(names(&have), names(&want), "generated files (OSC2CR_BLESS=1 regenerates them)");
     // the four packages of the three files and their imports
-    assert_eq!(
-        names(&want),
-        ["commonroad_common.rs", "commonroad_dynamic.rs", "commonroad_map.rs", "commonroad_scenario.rs"]
-    );
+    assert_eq!(names(&want), ["commonroad_common.rs", "commonroad_dynamic.rs", "commonroad_map.rs", "commonroad_scenario.rs"]);
     for ((name, a), (_, b)) in want.iter().zip(&have) {
         assert!(a == b, "src/protobuf/generated/{name} is not prost-build's output (OSC2CR_BLESS=1 regenerates it)");
     }

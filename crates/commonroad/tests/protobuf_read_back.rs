@@ -101,8 +101,7 @@ fn rich() -> (Scenario, PlanningProblemSet) {
         id: ids.obstacle(),
         obstacle_type: EnvironmentObstacleType::Building,
         shape: AbsoluteShape::Polygon(
-            Polygon::new(vec![Point::new(0.0, 20.0), Point::new(10.0, 20.0), Point::new(10.0, 30.0), Point::new(0.0, 30.0)])
-                .expect("building"),
+            Polygon::new(vec![Point::new(0.0, 20.0), Point::new(10.0, 20.0), Point::new(10.0, 30.0), Point::new(0.0, 30.0)]).expect("building"),
         ),
     });
     let p = &mut problems.problems[0];
@@ -155,10 +154,18 @@ fn commonroad_io_reads_the_2024_files_as_the_2020a_file() {
     }
     // everything was there to compare
     let counted = &results[1].counted;
-    for (kind, at_least) in [("lanelets", 3), ("traffic signs", 2), ("traffic lights", 2), ("intersections", 1),
-        ("stop lines", 1), ("static_obstacles", 2), ("dynamic_obstacles", 2), ("environment_obstacle", 1),
-        ("trajectory states", 8), ("planning problems", 1)]
-    {
+    for (kind, at_least) in [
+        ("lanelets", 3),
+        ("traffic signs", 2),
+        ("traffic lights", 2),
+        ("intersections", 1),
+        ("stop lines", 1),
+        ("static_obstacles", 2),
+        ("dynamic_obstacles", 2),
+        ("environment_obstacle", 1),
+        ("trajectory states", 8),
+        ("planning problems", 1),
+    ] {
         assert!(counted[kind].as_u64().unwrap_or(0) >= at_least, "{kind}: {counted}");
     }
     let _ = std::fs::remove_dir_all(&dir);

@@ -37,9 +37,7 @@ fn rich() -> (Scenario, PlanningProblemSet) {
         z_rotation: 0.1,
         scaling: 1.0,
     });
-    s.network.lanelets[0].bounds =
-        LaneletBounds::new(vec![Point::with_z(0.0, 3.5, 1.0), p(100.0, 3.5)], vec![p(0.0, 0.0), p(100.0, 0.0)])
-            .unwrap();
+    s.network.lanelets[0].bounds = LaneletBounds::new(vec![Point::with_z(0.0, 3.5, 1.0), p(100.0, 3.5)], vec![p(0.0, 0.0), p(100.0, 0.0)]).unwrap();
     s.network.lanelets[1].user_bidirectional = vec![RoadUser::Bicycle, RoadUser::Pedestrian];
     s.network.traffic_lights[0].time_offset = 7;
     s.network.traffic_lights[0].direction = Some(TrafficLightDirection::LeftStraight);
@@ -72,17 +70,12 @@ fn rich() -> (Scenario, PlanningProblemSet) {
     s.environment_obstacles.push(EnvironmentObstacle {
         id: ids.obstacle(),
         obstacle_type: EnvironmentObstacleType::Building,
-        shape: AbsoluteShape::Polygon(
-            Polygon::new(vec![p(10.0, 20.0), p(30.0, 20.0), p(30.0, 40.0)]).unwrap(),
-        ),
+        shape: AbsoluteShape::Polygon(Polygon::new(vec![p(10.0, 20.0), p(30.0, 20.0), p(30.0, 40.0)]).unwrap()),
     });
     s.environment_obstacles.push(EnvironmentObstacle {
         id: ids.obstacle(),
         obstacle_type: EnvironmentObstacleType::Pillar,
-        shape: AbsoluteShape::Circle(PlacedCircle {
-            circle: Circle::new(0.3).unwrap(),
-            center: p(60.0, -3.0),
-        }),
+        shape: AbsoluteShape::Circle(PlacedCircle { circle: Circle::new(0.3).unwrap(), center: p(60.0, -3.0) }),
     });
     s.static_obstacles.push(StaticObstacle {
         id: ids.obstacle(),
@@ -96,15 +89,7 @@ fn rich() -> (Scenario, PlanningProblemSet) {
         id: ids.obstacle(),
         obstacle_type: DynamicObstacleType::Pedestrian,
         shape: Shape::circle(0.35).unwrap(),
-        initial_state: State {
-            time_step: 5,
-            x: 40.0,
-            y: -2.0,
-            orientation: 1.25,
-            velocity: 1.4,
-            acceleration: -0.5,
-            yaw_rate: 0.01,
-        },
+        initial_state: State { time_step: 5, x: 40.0, y: -2.0, orientation: 1.25, velocity: 1.4, acceleration: -0.5, yaw_rate: 0.01 },
         trajectory: (6..=9)
             .map(|t| State {
                 time_step: t,
@@ -120,15 +105,7 @@ fn rich() -> (Scenario, PlanningProblemSet) {
     let problems = PlanningProblemSet {
         problems: vec![PlanningProblem {
             id: ids.planning_problem(),
-            initial_state: PlanningInitialState {
-                x: 1.0,
-                y: 2.0,
-                orientation: 0.5,
-                velocity: 3.0,
-                yaw_rate: 0.25,
-                slip_angle: -0.125,
-                acceleration: None,
-            },
+            initial_state: PlanningInitialState { x: 1.0, y: 2.0, orientation: 0.5, velocity: 3.0, yaw_rate: 0.25, slip_angle: -0.125, acceleration: None },
             goal_states: vec![
                 GoalState {
                     time: TimeInterval::new(0, 1).unwrap(),
@@ -141,12 +118,7 @@ fn rich() -> (Scenario, PlanningProblemSet) {
                 },
                 GoalState {
                     time: TimeInterval::new(3, 9).unwrap(),
-                    position: Some(GoalPosition::Polygons(vec![Polygon::new(vec![
-                        p(0.0, 0.0),
-                        p(2.0, 0.0),
-                        p(1.0, 1.5),
-                    ])
-                    .unwrap()])),
+                    position: Some(GoalPosition::Polygons(vec![Polygon::new(vec![p(0.0, 0.0), p(2.0, 0.0), p(1.0, 1.5)]).unwrap()])),
                     orientation: Some(Interval::new(-0.1, 0.1).unwrap()),
                     velocity: Some(Interval::new(1.0, 2.0).unwrap()),
                 },
@@ -240,7 +212,8 @@ fn invalid_at(text: &str) -> (u32, u32, String) {
     }
 }
 
-const HEAD: &str = "<commonRoad commonRoadVersion=\"2020a\" benchmarkID=\"ZAM_T-1\" date=\"2026-01-01\" author=\"a\" affiliation=\"b\" source=\"c\" timeStepSize=\"0.1\">\n";
+const HEAD: &str =
+    "<commonRoad commonRoadVersion=\"2020a\" benchmarkID=\"ZAM_T-1\" date=\"2026-01-01\" author=\"a\" affiliation=\"b\" source=\"c\" timeStepSize=\"0.1\">\n";
 
 #[test]
 fn errors_name_line_column_and_expectation() {

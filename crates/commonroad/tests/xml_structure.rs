@@ -14,10 +14,7 @@ const XS: &str = "http://www.w3.org/2001/XMLSchema";
 fn xsd_texts() -> Option<Vec<String>> {
     let shared = testkit::shared_dir()?;
     let mut v = Vec::new();
-    for f in [
-        "XML_commonRoad_XSD_2020a.commonroad-io-2024.3.xsd",
-        "XML_commonRoad_XSD_2020a.commonroad-io-2026.1.xsd",
-    ] {
+    for f in ["XML_commonRoad_XSD_2020a.commonroad-io-2024.3.xsd", "XML_commonRoad_XSD_2020a.commonroad-io-2026.1.xsd"] {
         v.push(std::fs::read_to_string(shared.join("tools/xsd").join(f)).unwrap());
     }
     Some(v)
@@ -45,18 +42,11 @@ fn sequence_names(ct: Node) -> Vec<String> {
 }
 
 fn named<'a>(doc: &'a Document, kind: &str, name: &str) -> Node<'a, 'a> {
-    doc.root_element()
-        .children()
-        .find(|n| is_xs(n, kind) && n.attribute("name") == Some(name))
-        .unwrap_or_else(|| panic!("{kind} {name} not in XSD"))
+    doc.root_element().children().find(|n| is_xs(n, kind) && n.attribute("name") == Some(name)).unwrap_or_else(|| panic!("{kind} {name} not in XSD"))
 }
 
 fn enumeration(doc: &Document, simple_type: &str) -> Vec<String> {
-    named(doc, "simpleType", simple_type)
-        .descendants()
-        .filter(|n| is_xs(n, "enumeration"))
-        .map(|n| n.attribute("value").unwrap().to_string())
-        .collect()
+    named(doc, "simpleType", simple_type).descendants().filter(|n| is_xs(n, "enumeration")).map(|n| n.attribute("value").unwrap().to_string()).collect()
 }
 
 fn written() -> String {
@@ -72,10 +62,7 @@ fn assert_children_in_order(doc: &Document, tag: &str, order: &[String]) -> usiz
         let mut last = 0;
         for c in n.children().filter(Node::is_element) {
             let name = c.tag_name().name();
-            let i = order
-                .iter()
-                .position(|o| o == name)
-                .unwrap_or_else(|| panic!("<{name}> not allowed in <{tag}>"));
+            let i = order.iter().position(|o| o == name).unwrap_or_else(|| panic!("<{name}> not allowed in <{tag}>"));
             assert!(i >= last, "<{name}> after <{}> in <{tag}>", order[last]);
             last = i;
         }
@@ -90,16 +77,9 @@ fn every_sequence_is_written_in_xsd_order() {
     let ours = Document::parse(&out).unwrap();
     for xsd in &xsds {
         let x = Document::parse(xsd).unwrap();
-        let root = x
-            .root_element()
-            .children()
-            .find(|n| is_xs(n, "element") && n.attribute("name") == Some("commonRoad"))
-            .unwrap();
+        let root = x.root_element().children().find(|n| is_xs(n, "element") && n.attribute("name") == Some("commonRoad")).unwrap();
         let root_order = sequence_names(root.children().find(|n| is_xs(n, "complexType")).unwrap());
-        assert_eq!(
-            assert_children_in_order(&ours, "commonRoad", &root_order),
-            1
-        );
+        assert_eq!(assert_children_in_order(&ours, "commonRoad", &root_order), 1);
         let pairs: &[(&str, &str)] = &[
             ("location", "location"),
             ("lanelet", "lanelet"),
@@ -118,10 +98,7 @@ fn every_sequence_is_written_in_xsd_order() {
         ];
         for (tag, ty) in pairs {
             let order = sequence_names(named(&x, "complexType", ty));
-            assert!(
-                assert_children_in_order(&ours, tag, &order) > 0,
-                "no <{tag}> written"
-            );
+            assert!(assert_children_in_order(&ours, tag, &order) > 0, "no <{tag}> written");
         }
     }
 }
@@ -132,60 +109,21 @@ fn enumerations_match_the_xsd() {
     for xsd in &xsds {
         let x = Document::parse(xsd).unwrap();
         let s = |v: Vec<&'static str>| v.into_iter().map(String::from).collect::<Vec<_>>();
-        assert_eq!(
-            enumeration(&x, "lineMarking"),
-            s(LineMarking::ALL.iter().map(|v| v.as_str()).collect())
-        );
-        assert_eq!(
-            enumeration(&x, "laneletType"),
-            s(LaneletType::ALL.iter().map(|v| v.as_str()).collect())
-        );
-        assert_eq!(
-            enumeration(&x, "vehicleType"),
-            s(RoadUser::ALL.iter().map(|v| v.as_str()).collect())
-        );
-        assert_eq!(
-            enumeration(&x, "drivingDir"),
-            s(DrivingDir::ALL.iter().map(|v| v.as_str()).collect())
-        );
-        assert_eq!(
-            enumeration(&x, "trafficLightColor"),
-            s(TrafficLightColor::ALL.iter().map(|v| v.as_str()).collect())
-        );
-        assert_eq!(
-            enumeration(&x, "obstacleTypeStatic"),
-            s(StaticObstacleType::ALL.iter().map(|v| v.as_str()).collect())
-        );
-        assert_eq!(
-            enumeration(&x, "obstacleTypeDynamic"),
-            s(DynamicObstacleType::ALL
-                .iter()
-                .map(|v| v.as_str())
-                .collect())
-        );
-        assert_eq!(
-            enumeration(&x, "obstacleTypeEnvironment"),
-            s(EnvironmentObstacleType::ALL
-                .iter()
-                .map(|v| v.as_str())
-                .collect())
-        );
+        assert_eq!(enumeration(&x, "lineMarking"), s(LineMarking::ALL.iter().map(|v| v.as_str()).collect()));
+        assert_eq!(enumeration(&x, "laneletType"), s(LaneletType::ALL.iter().map(|v| v.as_str()).collect()));
+        assert_eq!(enumeration(&x, "vehicleType"), s(RoadUser::ALL.iter().map(|v| v.as_str()).collect()));
+        assert_eq!(enumeration(&x, "drivingDir"), s(DrivingDir::ALL.iter().map(|v| v.as_str()).collect()));
+        assert_eq!(enumeration(&x, "trafficLightColor"), s(TrafficLightColor::ALL.iter().map(|v| v.as_str()).collect()));
+        assert_eq!(enumeration(&x, "obstacleTypeStatic"), s(StaticObstacleType::ALL.iter().map(|v| v.as_str()).collect()));
+        assert_eq!(enumeration(&x, "obstacleTypeDynamic"), s(DynamicObstacleType::ALL.iter().map(|v| v.as_str()).collect()));
+        assert_eq!(enumeration(&x, "obstacleTypeEnvironment"), s(EnvironmentObstacleType::ALL.iter().map(|v| v.as_str()).collect()));
         let direction: Vec<String> = named(&x, "complexType", "trafficLight")
             .descendants()
             .filter(|n| is_xs(n, "enumeration"))
             .map(|n| n.attribute("value").unwrap().to_string())
             .collect();
-        assert_eq!(
-            direction,
-            s(TrafficLightDirection::ALL
-                .iter()
-                .map(|v| v.as_str())
-                .collect())
-        );
-        assert_eq!(
-            sequence_names(named(&x, "complexType", "tag")),
-            s(Tag::ALL.iter().map(|t| t.as_str()).collect())
-        );
+        assert_eq!(direction, s(TrafficLightDirection::ALL.iter().map(|v| v.as_str()).collect()));
+        assert_eq!(sequence_names(named(&x, "complexType", "tag")), s(Tag::ALL.iter().map(|t| t.as_str()).collect()));
         let mut signs = enumeration(&x, "trafficSignID");
         signs.sort();
         assert_eq!(signs, s(XSD_TRAFFIC_SIGN_IDS.to_vec()));
@@ -195,7 +133,9 @@ fn enumerations_match_the_xsd() {
 #[test]
 fn header_and_declaration_are_exact() {
     let out = written();
-    assert!(out.starts_with("<?xml version='1.0' encoding='utf-8'?>\n<commonRoad commonRoadVersion=\"2020a\" benchmarkID=\"DEU_Example-1_1_T-1\" date=\"2026-01-15\""));
+    assert!(out.starts_with(
+        "<?xml version='1.0' encoding='utf-8'?>\n<commonRoad commonRoadVersion=\"2020a\" benchmarkID=\"DEU_Example-1_1_T-1\" date=\"2026-01-15\""
+    ));
     assert!(out.ends_with("</commonRoad>\n"));
     let doc = Document::parse(&out).unwrap();
     assert_eq!(doc.root_element().attribute("timeStepSize"), Some("0.1"));
@@ -207,32 +147,16 @@ fn numbers_are_fixed_notation_and_values_survive() {
     // a lane bound far from the origin (UTM-sized) with sub-millimetre detail
     let (x0, y0) = (692_345.123_456_789, 5_334_210.987_654_321);
     let l = &mut m.scenario.network.lanelets[1];
-    l.bounds = LaneletBounds::new(
-        vec![Point::new(x0, y0 + 7.0), Point::new(x0 + 100.0, y0 + 7.0)],
-        vec![Point::new(x0, y0 + 3.5), Point::new(x0 + 100.0, y0 + 3.5)],
-    )
-    .unwrap();
+    l.bounds =
+        LaneletBounds::new(vec![Point::new(x0, y0 + 7.0), Point::new(x0 + 100.0, y0 + 7.0)], vec![Point::new(x0, y0 + 3.5), Point::new(x0 + 100.0, y0 + 3.5)])
+            .unwrap();
     m.scenario.dynamic_obstacles[0].trajectory[0].orientation = -1e-12;
     m.scenario.dynamic_obstacles[0].trajectory[1].velocity = 1e-5;
     let out = String::from_utf8(write_scenario(&m.scenario, &m.problems).unwrap()).unwrap();
     let doc = Document::parse(&out).unwrap();
-    let numeric = [
-        "x",
-        "y",
-        "z",
-        "exact",
-        "intervalStart",
-        "intervalEnd",
-        "length",
-        "width",
-        "radius",
-        "orientation",
-    ];
+    let numeric = ["x", "y", "z", "exact", "intervalStart", "intervalEnd", "length", "width", "radius", "orientation"];
     let mut n = 0;
-    for node in doc
-        .descendants()
-        .filter(|n| numeric.contains(&n.tag_name().name()))
-    {
+    for node in doc.descendants().filter(|n| numeric.contains(&n.tag_name().name())) {
         let Some(t) = node.text().filter(|t| !t.trim().is_empty()) else {
             continue;
         };
@@ -241,12 +165,7 @@ fn numbers_are_fixed_notation_and_values_survive() {
         assert!(t.parse::<f64>().is_ok(), "{t}");
     }
     assert!(n > 50);
-    let xs: Vec<f64> = doc
-        .descendants()
-        .filter(|n| n.has_tag_name("x"))
-        .filter_map(|n| n.text()?.parse().ok())
-        .filter(|v: &f64| *v > 600_000.0)
-        .collect();
+    let xs: Vec<f64> = doc.descendants().filter(|n| n.has_tag_name("x")).filter_map(|n| n.text()?.parse().ok()).filter(|v: &f64| *v > 600_000.0).collect();
     assert_eq!(xs.len(), 4);
     for v in xs {
         let err = ((v - x0) - (v - x0).round()).abs();
@@ -261,14 +180,8 @@ fn numbers_are_fixed_notation_and_values_survive() {
 fn same_model_same_bytes() {
     let a = common::minimal();
     let b = common::minimal();
-    assert_eq!(
-        write_scenario(&a.scenario, &a.problems).unwrap(),
-        write_scenario(&b.scenario, &b.problems).unwrap()
-    );
-    assert_eq!(
-        write_map(&a.scenario).unwrap(),
-        write_map(&a.scenario).unwrap()
-    );
+    assert_eq!(write_scenario(&a.scenario, &a.problems).unwrap(), write_scenario(&b.scenario, &b.problems).unwrap());
+    assert_eq!(write_map(&a.scenario).unwrap(), write_map(&a.scenario).unwrap());
 }
 
 #[test]
@@ -280,28 +193,17 @@ fn tags_are_written_in_xsd_order_whatever_the_insertion_order() {
     }
     let out = String::from_utf8(write_map(&m.scenario).unwrap()).unwrap();
     let doc = Document::parse(&out).unwrap();
-    let tags: Vec<&str> = doc
-        .descendants()
-        .find(|n| n.has_tag_name("scenarioTags"))
-        .unwrap()
-        .children()
-        .filter(Node::is_element)
-        .map(|n| n.tag_name().name())
-        .collect();
+    let tags: Vec<&str> =
+        doc.descendants().find(|n| n.has_tag_name("scenarioTags")).unwrap().children().filter(Node::is_element).map(|n| n.tag_name().name()).collect();
     assert_eq!(tags, vec!["interstate", "simulated", "emergency_braking"]);
     m.scenario.tags.clear();
-    assert!(String::from_utf8(write_map(&m.scenario).unwrap())
-        .unwrap()
-        .contains("<scenarioTags/>"));
+    assert!(String::from_utf8(write_map(&m.scenario).unwrap()).unwrap().contains("<scenarioTags/>"));
 }
 
 #[test]
 fn scenario_without_planning_problem_is_refused() {
     let m = common::minimal();
-    assert!(matches!(
-        write_scenario(&m.scenario, &PlanningProblemSet::default()),
-        Err(WriteError::NoPlanningProblem)
-    ));
+    assert!(matches!(write_scenario(&m.scenario, &PlanningProblemSet::default()), Err(WriteError::NoPlanningProblem)));
 }
 
 #[test]
@@ -310,10 +212,7 @@ fn non_finite_number_is_an_error_naming_the_element() {
     m.scenario.dynamic_obstacles[0].trajectory[1].velocity = f64::NAN;
     match write_scenario(&m.scenario, &m.problems) {
         Err(WriteError::NonFinite { context, .. }) => {
-            assert!(
-                context.contains(&format!("dynamicObstacle {}", m.car)),
-                "{context}"
-            );
+            assert!(context.contains(&format!("dynamicObstacle {}", m.car)), "{context}");
             assert!(context.contains("time step 2"), "{context}");
             assert!(context.ends_with("velocity"), "{context}");
         }
@@ -321,20 +220,14 @@ fn non_finite_number_is_an_error_naming_the_element() {
     }
     let mut m = common::minimal();
     m.scenario.header.time_step_size = f64::INFINITY;
-    assert!(matches!(
-        write_map(&m.scenario),
-        Err(WriteError::NonFinite { .. })
-    ));
+    assert!(matches!(write_map(&m.scenario), Err(WriteError::NonFinite { .. })));
 }
 
 #[test]
 fn size_that_rounds_to_zero_is_an_error() {
     let mut m = common::minimal();
     m.scenario.static_obstacles[0].shape = Shape::circle(1e-8).unwrap();
-    assert!(matches!(
-        write_map(&m.scenario),
-        Err(WriteError::NotPositive { .. })
-    ));
+    assert!(matches!(write_map(&m.scenario), Err(WriteError::NotPositive { .. })));
 }
 
 #[test]
@@ -348,11 +241,7 @@ fn late_obstacle_and_trajectory_time_steps_are_written_as_given() {
     let mut times: BTreeMap<&str, Vec<&str>> = BTreeMap::new();
     for t in doc.descendants().filter(|n| n.has_tag_name("time")) {
         let parent = t.parent_element().unwrap().tag_name().name();
-        let exact = t
-            .children()
-            .find(|c| c.has_tag_name("exact"))
-            .and_then(|c| c.text())
-            .unwrap();
+        let exact = t.children().find(|c| c.has_tag_name("exact")).and_then(|c| c.text()).unwrap();
         times.entry(parent).or_default().push(exact);
     }
     assert_eq!(times["initialState"], vec!["0", "5"]); // static obstacle, then the late car

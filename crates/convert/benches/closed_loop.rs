@@ -41,38 +41,48 @@ fn main() {
     let scenario = open.scenario().clone();
     let net = scenario.road_network.logic_file.as_ref().and_then(|p| opendrive::load(p).ok()).map(|l| l.network);
     let settings = engine::Settings { step: options.step, max_time: options.max_time };
-    let batch = median((0..RUNS).map(|_| {
-        let t = Instant::now();
-        let _ = engine::simulate_with(&scenario, net.as_ref(), &settings, &engine::RunControl::default());
-        t.elapsed()
-    }).collect());
+    let batch = median(
+        (0..RUNS)
+            .map(|_| {
+                let t = Instant::now();
+                let _ = engine::simulate_with(&scenario, net.as_ref(), &settings, &engine::RunControl::default());
+                t.elapsed()
+            })
+            .collect(),
+    );
 
     let input = |k: usize| match recorded.get(k).copied().flatten() {
         Some(s) => Input::State(ExternalState::new(s.x, s.y, s.h, s.speed)),
         None => Input::Hold,
     };
     let time = |external: &External, per_call: usize| {
-        median((0..RUNS).map(|_| {
-            let mut run = start(external);
-            let named = !matches!(external.entities, engine::Chosen::None);
-            let t = Instant::now();
-            let mut k = 0;
-            loop {
-                let inputs: Vec<(usize, Input)> = if named { vec![(ego, input(k + per_call - 1))] } else { Vec::new() };
-                k += per_call;
-                if !run.step_held(&inputs, per_call).unwrap_or(false) {
-                    break;
-                }
-            }
-            t.elapsed()
-        }).collect())
+        median(
+            (0..RUNS)
+                .map(|_| {
+                    let mut run = start(external);
+                    let named = !matches!(external.entities, engine::Chosen::None);
+                    let t = Instant::now();
+                    let mut k = 0;
+                    loop {
+                        let inputs: Vec<(usize, Input)> = if named { vec![(ego, input(k + per_call - 1))] } else { Vec::new() };
+                        k += per_call;
+                        if !run.step_held(&inputs, per_call).unwrap_or(false) {
+                            break;
+                        }
+                    }
+                    t.elapsed()
+                })
+                .collect(),
+        )
     };
     let per_step = |d: Duration| d.as_secs_f64() * 1e6 / steps as f64;
     let replaced = External { motion: ScriptedMotion::Replaced, ..External::named([ego_name.as_str()]) };
     let overridden = External::named([ego_name.as_str()]);
     println!("{} ({steps} engine steps, median of {RUNS}), µs per engine step:", path.display());
     println!("  batch engine (simulate_with)                 {:>7.3}", per_step(batch));
-    for (what, external) in [("session, nobody outside", External::none()), ("session, ego replayed, replaced", replaced), ("session, ego replayed, overridden", overridden)] {
+    for (what, external) in
+        [("session, nobody outside", External::none()), ("session, ego replayed, replaced", replaced), ("session, ego replayed, overridden", overridden)]
+    {
         for per_call in [1, 10] {
             let d = time(&external, per_call);
             println!("  {what:<36} {per_call:>2}/call {:>7.3}  ({:.2}x)", per_step(d), d.as_secs_f64() / batch.as_secs_f64());

@@ -4,10 +4,7 @@
 
 use std::collections::BTreeSet;
 
-use commonroad::{
-    Header, Lanelet, LaneletBounds, LaneletNetwork, LaneletType, PlanningProblemSet, Point,
-    Scenario, State, Tag,
-};
+use commonroad::{Header, Lanelet, LaneletBounds, LaneletNetwork, LaneletType, PlanningProblemSet, Point, Scenario, State, Tag};
 use engine::Trace;
 use openscenario::Entity;
 
@@ -50,10 +47,8 @@ pub fn assemble(
     let (first, last) = match &ego.placement {
         Placement::Moving(runs) => (runs.first().and_then(|r| r.first()).copied(), runs.last().and_then(|r| r.last()).copied()),
         &Placement::Fixed { x, y, orientation, last_step } => {
-            warnings.push(format!(
-                "no entity of the scenario moves: the planning problem starts at the fixed object {:?}, at rest for the whole run",
-                ego.entity
-            ));
+            warnings
+                .push(format!("no entity of the scenario moves: the planning problem starts at the fixed object {:?}, at rest for the whole run", ego.entity));
             let at = |time_step| State { time_step, x, y, orientation, velocity: 0.0, acceleration: 0.0, yaw_rate: 0.0 };
             (Some(at(0)), Some(at(last_step.max(1))))
         }
@@ -90,49 +85,22 @@ pub fn assemble(
     scenario.environment_obstacles = built.environment;
     let names = built.names;
 
-    let problem = planning_problem(ids.planning_problem(), &first, &last, &options.goal)
-        .map_err(|e| format!("planning problem of the ego {:?}: {e}", ego.entity))?;
-    let problems = PlanningProblemSet {
-        problems: vec![problem],
-    };
+    let problem =
+        planning_problem(ids.planning_problem(), &first, &last, &options.goal).map_err(|e| format!("planning problem of the ego {:?}: {e}", ego.entity))?;
+    let problems = PlanningProblemSet { problems: vec![problem] };
     let found = scenario.validate(Some(&problems));
     if !found.is_empty() {
         let list: Vec<String> = found.iter().take(5).map(ToString::to_string).collect();
-        return Err(format!(
-            "the CommonRoad scenario is inconsistent ({} problems): {}",
-            found.len(),
-            list.join("; ")
-        ));
+        return Err(format!("the CommonRoad scenario is inconsistent ({} problems): {}", found.len(), list.join("; ")));
     }
-    Ok(Assembled {
-        scenario,
-        problems,
-        ego: ego.entity.clone(),
-        obstacles: n_obstacles,
-        names,
-        lanelets,
-        warnings,
-    })
+    Ok(Assembled { scenario, problems, ego: ego.entity.clone(), obstacles: n_obstacles, names, lanelets, warnings })
 }
 
 /// A lanelet the size of the ego's box under its initial state, aligned with its heading.
-fn placeholder_lanelet(
-    first: &State,
-    ego: &Track,
-    ids: &mut commonroad::IdAllocator,
-) -> Result<Lanelet, String> {
+fn placeholder_lanelet(first: &State, ego: &Track, ids: &mut commonroad::IdAllocator) -> Result<Lanelet, String> {
     let (s, c) = first.orientation.sin_cos();
     let (hl, hw) = (0.5 * ego.length, 0.5 * ego.width);
-    let at = |along: f64, left: f64| {
-        Point::new(
-            first.x + c * along - s * left,
-            first.y + s * along + c * left,
-        )
-    };
-    let bounds = LaneletBounds::new(
-        vec![at(-hl, hw), at(hl, hw)],
-        vec![at(-hl, -hw), at(hl, -hw)],
-    )
-    .map_err(|e| format!("placeholder lanelet: {e}"))?;
+    let at = |along: f64, left: f64| Point::new(first.x + c * along - s * left, first.y + s * along + c * left);
+    let bounds = LaneletBounds::new(vec![at(-hl, hw), at(hl, hw)], vec![at(-hl, -hw), at(hl, -hw)]).map_err(|e| format!("placeholder lanelet: {e}"))?;
     Ok(Lanelet::new(ids.lanelet(), bounds, LaneletType::Unknown))
 }

@@ -32,7 +32,9 @@ fn non_finite(trace: &Trace) -> Result<(), String> {
     for e in &trace.entities {
         for (k, s) in e.samples.iter().enumerate() {
             let Some(s) = s else { continue };
-            for (what, v) in [("x", s.x), ("y", s.y), ("z", s.z), ("heading", s.h), ("speed", s.speed), ("acceleration", s.acceleration), ("yaw rate", s.yaw_rate)] {
+            for (what, v) in
+                [("x", s.x), ("y", s.y), ("z", s.z), ("heading", s.h), ("speed", s.speed), ("acceleration", s.acceleration), ("yaw rate", s.yaw_rate)]
+            {
                 if !v.is_finite() {
                     return Err(format!(
                         "the run gave entity `{}` a {what} of {v} at {:.2} s; nothing is written (an engine fault: please report the scenario)",
@@ -62,8 +64,7 @@ struct ActionIndex<'a> {
 fn sets_position(kind: &ActionKind) -> bool {
     matches!(
         kind,
-        ActionKind::Private(PrivateAction::Teleport(_) | PrivateAction::FollowTrajectory { .. })
-            | ActionKind::Global(GlobalAction::AddEntity { .. })
+        ActionKind::Private(PrivateAction::Teleport(_) | PrivateAction::FollowTrajectory { .. }) | ActionKind::Global(GlobalAction::AddEntity { .. })
     )
 }
 
@@ -132,8 +133,7 @@ impl<'a> ActionIndex<'a> {
             .running
             .iter()
             .filter(|(name, spans)| {
-                self.kinds.get(*name).is_some_and(|(_, on)| on.contains(&entity))
-                    && spans.iter().any(|&(a, b)| a - slack <= t && t <= b + slack)
+                self.kinds.get(*name).is_some_and(|(_, on)| on.contains(&entity)) && spans.iter().any(|&(a, b)| a - slack <= t && t <= b + slack)
             })
             .map(|(name, _)| format!("`{name}` ({})", self.kinds.get(name).map_or("", |k| k.0)))
             .collect();

@@ -24,9 +24,7 @@ use crate::outputs::{complete, write_output, MapFiles, OutputPaths, Written};
 use crate::picture::write_picture;
 use crate::pipeline::{convert_scenario_with, Conversion, Model, Request};
 use crate::plan::{Job, Plan, Work};
-use crate::report::{
-    BatchReport, Failure, FolderSummary, ScenarioReport, Skipped, Stage, StageWarning, Status, Timings, Variation,
-};
+use crate::report::{BatchReport, Failure, FolderSummary, ScenarioReport, Skipped, Stage, StageWarning, Status, Timings, Variation};
 use crate::shard::Shard;
 use crate::single::batch_source;
 use crate::summary::Summary;
@@ -94,10 +92,8 @@ pub fn run_batch_streaming(
     sink: &mut dyn FnMut(usize, ScenarioReport),
 ) -> Result<BatchSummary, String> {
     options.check()?;
-    std::fs::create_dir_all(&batch.out_dir)
-        .map_err(|e| format!("cannot create output folder {}: {e}", batch.out_dir.display()))?;
-    let removed_temporaries =
-        if batch.resume { commonroad::xml::remove_stale_temporaries(&batch.out_dir) } else { Vec::new() };
+    std::fs::create_dir_all(&batch.out_dir).map_err(|e| format!("cannot create output folder {}: {e}", batch.out_dir.display()))?;
+    let removed_temporaries = if batch.resume { commonroad::xml::remove_stale_temporaries(&batch.out_dir) } else { Vec::new() };
     let plan = Plan::new(discover(inputs)?, options);
     let planned = plan.planned;
     let mut skipped = plan.skipped.clone();
@@ -120,17 +116,8 @@ pub fn run_batch_streaming(
     let issued = AtomicUsize::new(0);
     let window = WAITING_PER_WORKER * jobs;
     let mut summary = Summary::default();
-    let mut totals = BatchSummary {
-        skipped,
-        summary: Vec::new(),
-        planned,
-        converted: 0,
-        failed: 0,
-        complete: 0,
-        warnings: 0,
-        input_failed: false,
-        removed_temporaries,
-    };
+    let mut totals =
+        BatchSummary { skipped, summary: Vec::new(), planned, converted: 0, failed: 0, complete: 0, warnings: 0, input_failed: false, removed_temporaries };
     std::thread::scope(|scope| -> Result<(), String> {
         let (tx, rx) = mpsc::sync_channel::<(usize, usize, ScenarioReport)>(2 * jobs);
         for _ in 0..jobs {
@@ -172,8 +159,7 @@ pub fn run_batch_streaming(
                     Status::Complete => totals.complete += 1,
                     Status::Failed => {
                         totals.failed += 1;
-                        totals.input_failed |=
-                            report.failure.as_ref().is_some_and(|f| matches!(f.stage, Stage::Load | Stage::RoadNetwork));
+                        totals.input_failed |= report.failure.as_ref().is_some_and(|f| matches!(f.stage, Stage::Load | Stage::RoadNetwork));
                     }
                 }
                 sink(position, report);
@@ -188,12 +174,7 @@ pub fn run_batch_streaming(
 }
 
 /// Like [`run_batch_streaming`], collecting every report (for batches small enough to list).
-pub fn run_batch(
-    inputs: &[PathBuf],
-    options: &ConvertOptions,
-    batch: &BatchOptions,
-    progress: &dyn Progress,
-) -> Result<BatchReport, String> {
+pub fn run_batch(inputs: &[PathBuf], options: &ConvertOptions, batch: &BatchOptions, progress: &dyn Progress) -> Result<BatchReport, String> {
     let mut scenarios = Vec::new();
     let totals = run_batch_streaming(inputs, options, batch, progress, &mut |_, r| scenarios.push(r))?;
     Ok(BatchReport { scenarios, skipped: totals.skipped, summary: totals.summary, planned: totals.planned })
@@ -210,12 +191,7 @@ struct Shared {
 /// Converts in a worker thread so that a scenario over its time limit can be abandoned: the
 /// engine gets the limit as its deadline and stops itself; loading and map conversion cannot
 /// be interrupted, so a thread stuck there finishes on its own and its result is discarded.
-fn convert_limited(
-    job: &Job,
-    parameters: Vec<(String, String)>,
-    shared: &Shared,
-    keep: bool,
-) -> (Conversion, Option<Model>) {
+fn convert_limited(job: &Job, parameters: Vec<(String, String)>, shared: &Shared, keep: bool) -> (Conversion, Option<Model>) {
     let config = job.variation.as_ref().map_or(1, |(k, _)| *k);
     let source = batch_source(&job.input, job.variation.as_ref().map(|(k, _)| *k));
     let Some(limit) = shared.batch.timeout else {
@@ -224,10 +200,7 @@ fn convert_limited(
     };
     let (tx, rx) = mpsc::channel();
     let (path, name) = (job.scenario.clone(), job.name.clone());
-    let opts = Arc::new(ConvertOptions {
-        deadline: Some(std::time::Instant::now() + limit),
-        ..ConvertOptions::clone(&shared.options)
-    });
+    let opts = Arc::new(ConvertOptions { deadline: Some(std::time::Instant::now() + limit), ..ConvertOptions::clone(&shared.options) });
     let caches = shared.caches.clone();
     let spawned = std::thread::Builder::new().spawn(move || {
         let request = Request { path: &path, name: &name, config, parameters: &parameters, source };
@@ -261,11 +234,7 @@ fn run_job(job: &Job, shared: &Shared) -> ScenarioReport {
         Some((k, dist)) => k.checked_sub(1).and_then(|i| dist.get(i)).unwrap_or_default(),
         None => Vec::new(),
     };
-    let variation = job.variation.as_ref().map(|(k, dist)| Variation {
-        index: *k,
-        scenario_file: dist.scenario_file.clone(),
-        parameters: parameters.clone(),
-    });
+    let variation = job.variation.as_ref().map(|(k, dist)| Variation { index: *k, scenario_file: dist.scenario_file.clone(), parameters: parameters.clone() });
     let paths = OutputPaths::of(&job.stem, shared.options.format, batch.render);
     if batch.resume {
         if let Some(written) = complete(&paths, &batch.out_dir) {

@@ -18,9 +18,9 @@ use crate::ego::EgoChoice;
 use crate::held_input::substep;
 use crate::options::ConvertOptions;
 use crate::pipeline::{finish, prepare, Conversion, Facts, Model, Prepared, Request};
-use crate::stages::run_engine;
 use crate::report::{Failure, Stage, StageWarning, Timings};
 use crate::single::{batch_name, batch_source};
+use crate::stages::run_engine;
 
 self_cell::self_cell!(
     struct Session {

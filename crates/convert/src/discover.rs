@@ -45,27 +45,13 @@ pub fn discover(inputs: &[PathBuf]) -> Result<Vec<Found>, String> {
             for f in files {
                 let rel = f.strip_prefix(input).unwrap_or(&f).to_path_buf();
                 let sub = rel.parent().unwrap_or(Path::new("")).to_path_buf();
-                let folder = if sub.as_os_str().is_empty() {
-                    base.clone()
-                } else {
-                    format!("{base}/{}", sub.display())
-                };
+                let folder = if sub.as_os_str().is_empty() { base.clone() } else { format!("{base}/{}", sub.display()) };
                 let kind = classify(&f);
-                out.push(Found {
-                    output_stem: sub.join(stem(&f)),
-                    path: f,
-                    folder,
-                    kind,
-                });
+                out.push(Found { output_stem: sub.join(stem(&f)), path: f, folder, kind });
             }
         } else if input.is_file() {
             let folder = input.parent().map(label).unwrap_or_else(|| ".".into());
-            out.push(Found {
-                output_stem: PathBuf::from(stem(input)),
-                path: input.clone(),
-                folder,
-                kind: classify(input),
-            });
+            out.push(Found { output_stem: PathBuf::from(stem(input)), path: input.clone(), folder, kind: classify(input) });
         } else {
             return Err(format!("{}: no such file or directory", input.display()));
         }
@@ -84,25 +70,19 @@ fn label(dir: &Path) -> String {
 }
 
 fn stem(path: &Path) -> String {
-    path.file_stem()
-        .map(|s| s.to_string_lossy().into_owned())
-        .unwrap_or_else(|| "scenario".into())
+    path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "scenario".into())
 }
 
 fn walk(dir: &Path, depth: usize, out: &mut Vec<PathBuf>) -> Result<(), String> {
     if depth > MAX_DEPTH {
         return Ok(());
     }
-    let entries =
-        std::fs::read_dir(dir).map_err(|e| format!("cannot read folder {}: {e}", dir.display()))?;
+    let entries = std::fs::read_dir(dir).map_err(|e| format!("cannot read folder {}: {e}", dir.display()))?;
     for entry in entries.flatten() {
         let path = entry.path();
         if path.is_dir() {
             walk(&path, depth + 1, out)?;
-        } else if path
-            .extension()
-            .is_some_and(|e| e.eq_ignore_ascii_case("xosc"))
-        {
+        } else if path.extension().is_some_and(|e| e.eq_ignore_ascii_case("xosc")) {
             out.push(path);
             if out.len() > MAX_FILES {
                 return Err(format!("more than {MAX_FILES} .xosc files under {}", dir.display()));
@@ -127,10 +107,7 @@ pub fn classify(path: &Path) -> FileKind {
     };
     let root = doc.root_element();
     if root.tag_name().name() != "OpenSCENARIO" {
-        return FileKind::Skip(format!(
-            "not an OpenSCENARIO file (root element <{}>)",
-            root.tag_name().name()
-        ));
+        return FileKind::Skip(format!("not an OpenSCENARIO file (root element <{}>)", root.tag_name().name()));
     }
     let has = |name: &str| root.children().any(|c| c.tag_name().name() == name);
     if has("Storyboard") {

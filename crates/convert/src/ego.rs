@@ -29,13 +29,8 @@ pub fn choose_ego(tracks: &[Track], choice: &EgoChoice) -> Result<usize, String>
     match choice {
         EgoChoice::Name(name) => match tracks.iter().position(|t| &t.entity == name) {
             Some(i) if dynamic(&tracks[i]) => Ok(i),
-            Some(_) => Err(format!(
-                "the ego {name:?} is a fixed object, not a moving entity: choose another with --ego"
-            )),
-            None => Err(format!(
-                "no entity named {name:?} (--ego); the scenario has: {}",
-                names(tracks)
-            )),
+            Some(_) => Err(format!("the ego {name:?} is a fixed object, not a moving entity: choose another with --ego")),
+            None => Err(format!("no entity named {name:?} (--ego); the scenario has: {}", names(tracks))),
         },
         EgoChoice::Preferred { name, pattern } => match tracks.iter().position(|t| &t.entity == name) {
             Some(i) if dynamic(&tracks[i]) => Ok(i),

@@ -4,8 +4,8 @@
 //! (never below 0).
 
 use commonroad::{
-    GoalPosition, GoalState, Interval, ModelError, PlacedRectangle, PlanningInitialState,
-    PlanningProblem, PlanningProblemId, Point, Rectangle, State, TimeInterval,
+    GoalPosition, GoalState, Interval, ModelError, PlacedRectangle, PlanningInitialState, PlanningProblem, PlanningProblemId, Point, Rectangle, State,
+    TimeInterval,
 };
 use serde::Serialize;
 
@@ -26,23 +26,12 @@ pub struct GoalOptions {
 
 impl Default for GoalOptions {
     fn default() -> Self {
-        Self {
-            length: 50.0,
-            width: 10.0,
-            time_window: 10,
-            speed_margin: Some(5.0),
-            orientation_margin: None,
-        }
+        Self { length: 50.0, width: 10.0, time_window: 10, speed_margin: Some(5.0), orientation_margin: None }
     }
 }
 
 /// The planning problem of an ego whose first state is `first` and last state `last`.
-pub fn planning_problem(
-    id: PlanningProblemId,
-    first: &State,
-    last: &State,
-    options: &GoalOptions,
-) -> Result<PlanningProblem, ModelError> {
+pub fn planning_problem(id: PlanningProblemId, first: &State, last: &State, options: &GoalOptions) -> Result<PlanningProblem, ModelError> {
     let initial_state = PlanningInitialState {
         x: first.x,
         y: first.y,
@@ -54,16 +43,10 @@ pub fn planning_problem(
     };
     let end = last.time_step.max(1);
     let time = TimeInterval::new(end.saturating_sub(options.time_window), end)?;
-    let rectangle = PlacedRectangle {
-        rectangle: Rectangle::new(options.length, options.width)?,
-        center: Point::new(last.x, last.y),
-        orientation: last.orientation,
-    };
+    let rectangle =
+        PlacedRectangle { rectangle: Rectangle::new(options.length, options.width)?, center: Point::new(last.x, last.y), orientation: last.orientation };
     let velocity = match options.speed_margin {
-        Some(m) => Some(Interval::new(
-            (last.velocity - m).max(0.0),
-            (last.velocity + m).max(0.0),
-        )?),
+        Some(m) => Some(Interval::new((last.velocity - m).max(0.0), (last.velocity + m).max(0.0))?),
         None => None,
     };
     let orientation = match options.orientation_margin {
@@ -73,11 +56,6 @@ pub fn planning_problem(
     Ok(PlanningProblem {
         id,
         initial_state,
-        goal_states: vec![GoalState {
-            time,
-            position: Some(GoalPosition::Rectangles(vec![rectangle])),
-            orientation,
-            velocity,
-        }],
+        goal_states: vec![GoalState { time, position: Some(GoalPosition::Rectangles(vec![rectangle])), orientation, velocity }],
     })
 }

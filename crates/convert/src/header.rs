@@ -50,9 +50,7 @@ pub fn check_country(code: &str) -> Result<(), String> {
     if crate::country::is_known_country(code) {
         Ok(())
     } else {
-        Err(format!(
-            "country must be ZAM or an ISO 3166 alpha-3 code in upper case (e.g. DEU, USA, SWE), got {code:?}"
-        ))
+        Err(format!("country must be ZAM or an ISO 3166 alpha-3 code in upper case (e.g. DEU, USA, SWE), got {code:?}"))
     }
 }
 

@@ -62,10 +62,7 @@ pub fn apply_signal_states(
     for s in states {
         let Some(_) = light_of_signal.get(&s.signal) else { continue };
         let colour = colour_of(&s.state).unwrap_or_else(|| {
-            warnings.push(format!(
-                "signal `{}` state {:?} at {:.2} s has no CommonRoad light colour; written as inactive",
-                s.signal, s.state, s.time
-            ));
+            warnings.push(format!("signal `{}` state {:?} at {:.2} s has no CommonRoad light colour; written as inactive", s.signal, s.state, s.time));
             TrafficLightColor::Inactive
         });
         let step = (s.time.max(0.0) / dt).round() as u64;

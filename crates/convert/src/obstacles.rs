@@ -4,10 +4,7 @@
 //! median strip; a moving one is a dynamic obstacle (`unknown` when its type is not a
 //! dynamic type).
 
-use commonroad::{
-    AbsoluteShape, DynamicObstacle, DynamicObstacleType, EnvironmentObstacle, IdAllocator,
-    PlacedRectangle, Point, Rectangle, StaticObstacle,
-};
+use commonroad::{AbsoluteShape, DynamicObstacle, DynamicObstacleType, EnvironmentObstacle, IdAllocator, PlacedRectangle, Point, Rectangle, StaticObstacle};
 
 use crate::tracks::{Placement, Track};
 
@@ -35,14 +32,7 @@ pub fn obstacles(tracks: &[Track], skip: Option<&str>, ids: &mut IdAllocator) ->
                 if let Some(kind) = t.cr_type.static_type() {
                     let id = ids.obstacle();
                     out.names.push((id.get(), t.entity.clone()));
-                    out.statics.push(StaticObstacle {
-                        id,
-                        obstacle_type: kind,
-                        shape: t.shape.clone(),
-                        x: *x,
-                        y: *y,
-                        orientation: *orientation,
-                    });
+                    out.statics.push(StaticObstacle { id, obstacle_type: kind, shape: t.shape.clone(), x: *x, y: *y, orientation: *orientation });
                 } else if let Some(kind) = t.cr_type.environment() {
                     let Ok(rectangle) = Rectangle::new(t.length, t.width) else {
                         out.warnings.push(format!("entity {:?}: no valid box: left out", t.entity));
@@ -53,18 +43,11 @@ pub fn obstacles(tracks: &[Track], skip: Option<&str>, ids: &mut IdAllocator) ->
                     out.environment.push(EnvironmentObstacle {
                         id,
                         obstacle_type: kind,
-                        shape: AbsoluteShape::Rectangle(PlacedRectangle {
-                            rectangle,
-                            center: Point::new(*x, *y),
-                            orientation: *orientation,
-                        }),
+                        shape: AbsoluteShape::Rectangle(PlacedRectangle { rectangle, center: Point::new(*x, *y), orientation: *orientation }),
                     });
                 } else {
                     // only misc objects are fixed, and every misc type is static or environment
-                    out.warnings.push(format!(
-                        "entity {:?}: type {:?} fits neither a static nor an environment obstacle: left out",
-                        t.entity, t.cr_type
-                    ));
+                    out.warnings.push(format!("entity {:?}: type {:?} fits neither a static nor an environment obstacle: left out", t.entity, t.cr_type));
                 }
             }
             Placement::Moving(runs) => {
@@ -84,13 +67,7 @@ pub fn obstacles(tracks: &[Track], skip: Option<&str>, ids: &mut IdAllocator) ->
                     };
                     let id = ids.obstacle();
                     out.names.push((id.get(), t.entity.clone()));
-                    out.dynamic.push(DynamicObstacle {
-                        id,
-                        obstacle_type: kind,
-                        shape: t.shape.clone(),
-                        initial_state: *first,
-                        trajectory: rest.to_vec(),
-                    });
+                    out.dynamic.push(DynamicObstacle { id, obstacle_type: kind, shape: t.shape.clone(), initial_state: *first, trajectory: rest.to_vec() });
                 }
             }
         }

@@ -121,25 +121,16 @@ impl ConvertOptions {
             return Err(format!("--dt must be at least {MIN_DT} s, got {}", self.dt));
         }
         if !(self.step.is_finite() && self.step > 0.0 && self.step <= self.dt) {
-            return Err(format!(
-                "--step must be > 0 s and at most --dt ({} s), got {}",
-                self.dt, self.step
-            ));
+            return Err(format!("--step must be > 0 s and at most --dt ({} s), got {}", self.dt, self.step));
         }
         if !(self.max_time.is_finite() && self.max_time > 0.0) {
             return Err(format!("--max-time must be > 0 s, got {}", self.max_time));
         }
         let g = &self.goal;
         if !(g.length.is_finite() && g.length > 0.0 && g.width.is_finite() && g.width > 0.0) {
-            return Err(format!(
-                "goal length and width must be > 0 m, got {} × {}",
-                g.length, g.width
-            ));
+            return Err(format!("goal length and width must be > 0 m, got {} × {}", g.length, g.width));
         }
-        for (name, v) in [
-            ("--goal-speed-margin", g.speed_margin),
-            ("--goal-orientation-margin", g.orientation_margin),
-        ] {
+        for (name, v) in [("--goal-speed-margin", g.speed_margin), ("--goal-orientation-margin", g.orientation_margin)] {
             if let Some(v) = v {
                 if !(v.is_finite() && v >= 0.0) {
                     return Err(format!("{name} must be >= 0, got {v}"));

@@ -70,13 +70,8 @@ impl MapFiles {
         let path = self.dir.join(&name);
         let result = match std::fs::read(&path) {
             Ok(existing) if existing == map.bytes => Ok(path),
-            Ok(_) => Err(format!(
-                "{} exists with other content than the map of that name: not overwritten",
-                path.display()
-            )),
-            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
-                write_atomic(&path, &map.bytes).map(|()| path).map_err(|e| e.to_string())
-            }
+            Ok(_) => Err(format!("{} exists with other content than the map of that name: not overwritten", path.display())),
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => write_atomic(&path, &map.bytes).map(|()| path).map_err(|e| e.to_string()),
             Err(e) => Err(format!("cannot read {}: {e}", path.display())),
         };
         known.insert(name, result.clone());
@@ -94,9 +89,7 @@ pub struct Written {
 
 fn create_parent(path: &Path) -> Result<(), String> {
     match path.parent() {
-        Some(dir) if !dir.as_os_str().is_empty() => {
-            std::fs::create_dir_all(dir).map_err(|e| format!("cannot create folder {}: {e}", dir.display()))
-        }
+        Some(dir) if !dir.as_os_str().is_empty() => std::fs::create_dir_all(dir).map_err(|e| format!("cannot create folder {}: {e}", dir.display())),
         _ => Ok(()),
     }
 }

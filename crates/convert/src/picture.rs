@@ -20,8 +20,7 @@ pub fn write_picture(scenario_file: &Path, model: &Model) -> Result<PathBuf, Str
         marks: model.events.iter().map(|(time, text)| render::Mark { time: *time, text: text.clone() }).collect(),
         ..Default::default()
     };
-    let png = render::render_png(&model.scenario, Some(&model.problems), &options)
-    .map_err(|e| format!("picture not drawn: {e}"))?;
+    let png = render::render_png(&model.scenario, Some(&model.problems), &options).map_err(|e| format!("picture not drawn: {e}"))?;
     let path = picture_path(scenario_file);
     commonroad::xml::write_atomic(&path, &png).map_err(|e| format!("picture not written: {e}"))?;
     Ok(path)

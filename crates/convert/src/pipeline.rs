@@ -115,54 +115,35 @@ pub fn convert_scenario(request: &Request<'_>, options: &ConvertOptions) -> Conv
 
 /// Like [`convert_scenario`]; with `keep`, a successful conversion also returns the model it
 /// serialised (not kept otherwise: a batch of large maps should not hold every model).
-pub fn convert_scenario_keeping(
-    request: &Request<'_>,
-    options: &ConvertOptions,
-    keep: bool,
-) -> (Conversion, Option<Model>) {
+pub fn convert_scenario_keeping(request: &Request<'_>, options: &ConvertOptions, keep: bool) -> (Conversion, Option<Model>) {
     convert_scenario_with(request, options, keep, &Caches::with_capacity(1))
 }
 
 /// Like [`convert_scenario_keeping`], reading road networks through `caches` (a batch passes
 /// the one its conversions share).
-pub fn convert_scenario_with(
-    request: &Request<'_>,
-    options: &ConvertOptions,
-    keep: bool,
-    caches: &Caches,
-) -> (Conversion, Option<Model>) {
+pub fn convert_scenario_with(request: &Request<'_>, options: &ConvertOptions, keep: bool, caches: &Caches) -> (Conversion, Option<Model>) {
     let start = Instant::now();
     let mut c = Conversion {
-        result: Err(Failure {
-            stage: Stage::Load,
-            message: String::new(),
-        }),
+        result: Err(Failure { stage: Stage::Load, message: String::new() }),
         warnings: Vec::new(),
         timings: Timings::default(),
         facts: Facts::default(),
     };
     let mut model = None;
-    c.result = run(request, options, caches, &mut c.warnings, &mut c.timings, &mut c.facts)
-        .map(|(output, m)| {
-            model = keep.then_some(m);
-            output
-        });
+    c.result = run(request, options, caches, &mut c.warnings, &mut c.timings, &mut c.facts).map(|(output, m)| {
+        model = keep.then_some(m);
+        output
+    });
     c.timings.total_ms = ms(start);
     (c, model)
 }
 
 fn fail(stage: Stage, message: impl Into<String>) -> Failure {
-    Failure {
-        stage,
-        message: message.into(),
-    }
+    Failure { stage, message: message.into() }
 }
 
 fn warn<T: ToString>(out: &mut Vec<StageWarning>, stage: Stage, list: &[T]) {
-    out.extend(list.iter().map(|w| StageWarning {
-        stage,
-        message: w.to_string(),
-    }));
+    out.extend(list.iter().map(|w| StageWarning { stage, message: w.to_string() }));
 }
 
 /// Which kind of problems a strict reading rejects, for the error's first line.
@@ -176,13 +157,7 @@ enum Problems {
 
 /// Problems a strict reading rejects: an error listing every one (file:line:col each) by
 /// default, warnings with `--lenient`.
-fn strict<T: ToString>(
-    problems: &[T],
-    what: Problems,
-    stage: Stage,
-    options: &ConvertOptions,
-    warnings: &mut Vec<StageWarning>,
-) -> Result<(), Failure> {
+fn strict<T: ToString>(problems: &[T], what: Problems, stage: Stage, options: &ConvertOptions, warnings: &mut Vec<StageWarning>) -> Result<(), Failure> {
     if problems.is_empty() {
         return Ok(());
     }
@@ -199,10 +174,7 @@ fn strict<T: ToString>(
             format!("{n} reference{s} to what does not exist or value{s} that cannot be used")
         }
     };
-    Err(fail(
-        stage,
-        format!("{header} (--lenient reads them as warnings):\n{}", list.join("\n")),
-    ))
+    Err(fail(stage, format!("{header} (--lenient reads them as warnings):\n{}", list.join("\n"))))
 }
 
 fn run(
@@ -264,11 +236,7 @@ pub(crate) fn prepare(
     let t = Instant::now();
     let mut parameters = options.parameters.clone();
     parameters.extend(request.parameters.iter().cloned());
-    let load_options = LoadOptions {
-        parameters,
-        seed: options.seed,
-        ..Default::default()
-    };
+    let load_options = LoadOptions { parameters, seed: options.seed, ..Default::default() };
     // The schema pass first (the same as `osc2cr check`): what is wrong with the file itself,
     // all of it. Its warnings (deprecations, version mixtures) are `check`'s to list.
     let schema_errors: Vec<String> = openscenario::validate::validate_file(request.path, &load_options.parameters)
@@ -277,21 +245,15 @@ pub(crate) fn prepare(
         .map(|f| format!("{}: {}", f.location, f.message))
         .collect();
     strict(&schema_errors, Problems::Schema, Stage::Load, options, warnings)?;
-    let loaded = openscenario::load(request.path, &load_options)
-        .map_err(|e| fail(Stage::Load, e.to_string()))?;
+    let loaded = openscenario::load(request.path, &load_options).map_err(|e| fail(Stage::Load, e.to_string()))?;
     warn(warnings, Stage::Load, &loaded.warnings);
     strict(&loaded.problems, Problems::References, Stage::Load, options, warnings)?;
     let scenario: Scenario = match loaded.content {
         Content::Scenario(s) => *s,
         Content::Distribution(_) => {
-            return Err(fail(
-                Stage::Load,
-                "a parameter value distribution names another scenario file; a distribution cannot vary a distribution",
-            ))
+            return Err(fail(Stage::Load, "a parameter value distribution names another scenario file; a distribution cannot vary a distribution"))
         }
-        Content::Catalog(_) => {
-            return Err(fail(Stage::Load, "a catalog file is not a scenario"))
-        }
+        Content::Catalog(_) => return Err(fail(Stage::Load, "a catalog file is not a scenario")),
     };
     timings.load_ms = ms(t);
 
@@ -311,10 +273,7 @@ pub(crate) fn prepare(
             Some(road)
         }
         None => {
-            warnings.push(StageWarning {
-                stage: Stage::RoadNetwork,
-                message: "the scenario names no road network (RoadNetwork/LogicFile)".into(),
-            });
+            warnings.push(StageWarning { stage: Stage::RoadNetwork, message: "the scenario names no road network (RoadNetwork/LogicFile)".into() });
             timings.road_network_ms = ms(t);
             None
         }
@@ -348,8 +307,7 @@ pub(crate) fn finish(
     facts: &mut Facts,
 ) -> Result<(Output, Model), Failure> {
     let scenario = &prepared.scenario;
-    let audit = crate::audit::audit(trace, scenario, lanelets.as_ref())
-        .map_err(|m| fail(Stage::Engine, format!("{}: {m}", scenario.path.display())))?;
+    let audit = crate::audit::audit(trace, scenario, lanelets.as_ref()).map_err(|m| fail(Stage::Engine, format!("{}: {m}", scenario.path.display())))?;
     warn(warnings, Stage::Engine, &audit);
     timings.engine_ms = ms(engine_start);
     facts.duration_s = Some(trace.end_time().max(0.0));
@@ -375,10 +333,9 @@ pub(crate) fn finish(
     // 5. the output
     let t = Instant::now();
     let output = match options.format {
-        OutputFormat::Xml2020a => Output::Xml(
-            commonroad::xml::write_scenario(&built.scenario, &built.problems)
-                .map_err(|e| fail(Stage::Write, e.to_string()))?,
-        ),
+        OutputFormat::Xml2020a => {
+            Output::Xml(commonroad::xml::write_scenario(&built.scenario, &built.problems).map_err(|e| fail(Stage::Write, e.to_string()))?)
+        }
         OutputFormat::Protobuf2024 => {
             let write_error = |e: commonroad::protobuf::WriteError| fail(Stage::Write, e.to_string());
             // the map of a cached road is encoded once for all its scenarios
@@ -386,30 +343,21 @@ pub(crate) fn finish(
                 Some(road) => road.map_file(&built.scenario).map_err(write_error)?,
                 None => Arc::new(commonroad::protobuf::encode_map(&built.scenario).map_err(write_error)?),
             };
-            let files = commonroad::protobuf::encode_scenario(&built.scenario, &built.problems, &map.id)
-                .map_err(write_error)?;
+            let files = commonroad::protobuf::encode_scenario(&built.scenario, &built.problems, &map.id).map_err(write_error)?;
             warn(warnings, Stage::Write, &map.warnings);
             warn(warnings, Stage::Write, &files.warnings);
             Output::Protobuf(Protobuf2024 { map, scenario: files.scenario, dynamic: files.dynamic })
         }
     };
     timings.write_ms = ms(t);
-    let model = Model {
-        scenario: built.scenario,
-        problems: built.problems,
-        names: built.names,
-        events: crate::story_marks::event_marks(scenario, &trace.events),
-    };
+    let model =
+        Model { scenario: built.scenario, problems: built.problems, names: built.names, events: crate::story_marks::event_marks(scenario, &trace.events) };
     Ok((output, model))
 }
 
 fn header(request: &Request<'_>, scenario: &Scenario, options: &ConvertOptions) -> Result<Header, String> {
-    let benchmark_id = benchmark_id(&options.country, request.name, request.config)
-        .map_err(|e| e.to_string())?;
-    let date = options
-        .date
-        .or_else(|| date_prefix(&scenario.header.date))
-        .unwrap_or_else(fallback_date);
+    let benchmark_id = benchmark_id(&options.country, request.name, request.config).map_err(|e| e.to_string())?;
+    let date = options.date.or_else(|| date_prefix(&scenario.header.date)).unwrap_or_else(fallback_date);
     let author = match &options.author {
         Some(a) => a.clone(),
         None if !scenario.header.author.trim().is_empty() => scenario.header.author.trim().to_string(),

@@ -103,13 +103,7 @@ impl Plan {
 
     /// The work of `shard`, in batch order, with each position's name.
     pub(crate) fn work(self, out_dir: &Path, format: OutputFormat, shard: Option<Shard>) -> impl Iterator<Item = (usize, Work)> {
-        WorkIter {
-            units: self.units.into_iter(),
-            current: None,
-            namer: Namer::new(out_dir, format == OutputFormat::Protobuf2024),
-            shard,
-            position: 0,
-        }
+        WorkIter { units: self.units.into_iter(), current: None, namer: Namer::new(out_dir, format == OutputFormat::Protobuf2024), shard, position: 0 }
     }
 }
 
@@ -129,8 +123,7 @@ fn distribution(f: Found, options: &ConvertOptions) -> Unit {
     };
     let total = dist.len();
     let count = total.min(options.max_variations);
-    let mut notes: Vec<StageWarning> =
-        problems.iter().map(|p| StageWarning { stage: Stage::Load, message: p.to_string() }).collect();
+    let mut notes: Vec<StageWarning> = problems.iter().map(|p| StageWarning { stage: Stage::Load, message: p.to_string() }).collect();
     if total > count {
         notes.push(StageWarning {
             stage: Stage::Load,

@@ -190,9 +190,6 @@ pub struct BatchReport {
 
 impl BatchReport {
     pub fn failed(&self) -> usize {
-        self.scenarios
-            .iter()
-            .filter(|s| s.status == Status::Failed)
-            .count()
+        self.scenarios.iter().filter(|s| s.status == Status::Failed).count()
     }
 }

@@ -60,9 +60,7 @@ impl JsonReport {
             self.out.flush()?;
             Ok(())
         })();
-        let result = tail
-            .map_err(|e| io_error(&self.tmp, e))
-            .and_then(|()| std::fs::rename(&self.tmp, &self.path).map_err(|e| io_error(&self.path, e)));
+        let result = tail.map_err(|e| io_error(&self.tmp, e)).and_then(|()| std::fs::rename(&self.tmp, &self.path).map_err(|e| io_error(&self.path, e)));
         if result.is_err() {
             let _ = std::fs::remove_file(&self.tmp);
         }
@@ -77,10 +75,8 @@ pub struct Table {
 }
 
 /// The table's columns.
-pub const TABLE_COLUMNS: [&str; 13] = [
-    "position", "input", "variation", "status", "stage", "output", "map", "lanelets", "obstacles", "duration_s",
-    "total_ms", "warnings", "message",
-];
+pub const TABLE_COLUMNS: [&str; 13] =
+    ["position", "input", "variation", "status", "stage", "output", "map", "lanelets", "obstacles", "duration_s", "total_ms", "warnings", "message"];
 
 /// Tabs and line ends would break a row: they become spaces.
 fn cell(s: &str) -> String {
@@ -105,11 +101,7 @@ impl Table {
     pub fn add(&mut self, position: usize, r: &ScenarioReport) -> Result<(), String> {
         let opt = |p: &Option<PathBuf>| p.as_ref().map(|p| p.display().to_string()).unwrap_or_default();
         let message = r.failure.as_ref().map(|f| f.message.lines().next().unwrap_or("").to_string()).unwrap_or_default();
-        let parameters = r
-            .variation
-            .as_ref()
-            .map(|v| v.parameters.iter().map(|(n, v)| format!("{n}={v}")).collect::<Vec<_>>().join(";"))
-            .unwrap_or_default();
+        let parameters = r.variation.as_ref().map(|v| v.parameters.iter().map(|(n, v)| format!("{n}={v}")).collect::<Vec<_>>().join(";")).unwrap_or_default();
         let row = [
             position.to_string(),
             r.input.display().to_string(),

@@ -19,14 +19,7 @@ pub struct Pose {
 
 impl Pose {
     fn of(s: &Sample) -> Self {
-        Self {
-            x: s.x,
-            y: s.y,
-            h: wrap_angle(s.h),
-            speed: s.speed,
-            acceleration: s.acceleration,
-            yaw_rate: s.yaw_rate,
-        }
+        Self { x: s.x, y: s.y, h: wrap_angle(s.h), speed: s.speed, acceleration: s.acceleration, yaw_rate: s.yaw_rate }
     }
 
     fn lerp(a: &Sample, b: &Sample, f: f64) -> Self {
@@ -69,9 +62,7 @@ pub fn resample(samples: &[Option<Sample>], step: f64, dt: f64) -> Vec<Option<Po
     let n = cr_step_count(samples.len(), step, dt);
     let at = |i: usize| samples.get(i).copied().flatten();
     if let Some(k) = whole_multiple(step, dt) {
-        return (0..n)
-            .map(|i| at(i.saturating_mul(k)).map(|s| Pose::of(&s)))
-            .collect();
+        return (0..n).map(|i| at(i.saturating_mul(k)).map(|s| Pose::of(&s))).collect();
     }
     (0..n)
         .map(|i| {
@@ -101,17 +92,7 @@ mod tests {
 
     fn sample(t: f64) -> Sample {
         // x = 3t + t², speed = 3 + 2t: a closed form to check interpolation against
-        Sample {
-            x: 3.0 * t + t * t,
-            y: -2.0,
-            z: 0.0,
-            h: 0.1 * t,
-            speed: 3.0 + 2.0 * t,
-            acceleration: 2.0,
-            yaw_rate: 0.1,
-            road: None,
-            visible: true,
-        }
+        Sample { x: 3.0 * t + t * t, y: -2.0, z: 0.0, h: 0.1 * t, speed: 3.0 + 2.0 * t, acceleration: 2.0, yaw_rate: 0.1, road: None, visible: true }
     }
 
     #[test]
@@ -177,9 +158,7 @@ mod tests {
     #[test]
     fn absence_is_kept_and_interpolation_needs_both_neighbours() {
         let step = 0.01;
-        let samples: Vec<_> = (0..=30)
-            .map(|i| (i >= 12).then(|| sample(i as f64 * step)))
-            .collect();
+        let samples: Vec<_> = (0..=30).map(|i| (i >= 12).then(|| sample(i as f64 * step))).collect();
         let out = resample(&samples, step, 0.1);
         assert_eq!(out.len(), 4);
         assert!(out[0].is_none() && out[1].is_none());

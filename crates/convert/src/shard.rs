@@ -19,9 +19,7 @@ impl Shard {
     /// Shard `index` of `count` (1 ≤ index ≤ count).
     pub fn new(index: u64, count: u64) -> Result<Self, String> {
         if count == 0 || index == 0 || index > count {
-            return Err(format!(
-                "a shard is K/N with 1 <= K <= N, got {index}/{count}"
-            ));
+            return Err(format!("a shard is K/N with 1 <= K <= N, got {index}/{count}"));
         }
         Ok(Shard { index, count })
     }
@@ -77,9 +75,7 @@ mod tests {
     fn shards_partition_positions() {
         let n = 4;
         for p in 0..100usize {
-            let owners = (1..=n)
-                .filter(|&k| Shard::new(k, n).unwrap().contains(p))
-                .count();
+            let owners = (1..=n).filter(|&k| Shard::new(k, n).unwrap().contains(p)).count();
             assert_eq!(owners, 1, "position {p}");
         }
     }

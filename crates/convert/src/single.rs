@@ -15,20 +15,14 @@ use crate::report::{Failure, Stage};
 /// `variation` the 1-based parameter set of a distribution.
 pub fn batch_source(input: &Path, variation: Option<u64>) -> String {
     match variation {
-        Some(k) => format!(
-            "OpenSCENARIO {} (parameter set {k}), converted by osc2cr",
-            file_name(input)
-        ),
+        Some(k) => format!("OpenSCENARIO {} (parameter set {k}), converted by osc2cr", file_name(input)),
         None => format!("OpenSCENARIO {}, converted by osc2cr", file_name(input)),
     }
 }
 
 /// The scenario name of the benchmark id: the stem of the file given.
 pub fn batch_name(input: &Path) -> String {
-    input
-        .file_stem()
-        .map(|s| s.to_string_lossy().into_owned())
-        .unwrap_or_default()
+    input.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default()
 }
 
 /// The output file name of a file given directly: `<stem>.xml`, or `<stem>_<k>.xml` for
@@ -40,10 +34,7 @@ pub fn output_file_name(input: &Path, variation: Option<u64>) -> PathBuf {
 /// The output name (no extension) of a file given directly: `<stem>` or `<stem>_<k>`. The
 /// 2020a file is `<name>.xml`; the 2024 files are `<name>-SC.pb` and `<name>.pb`.
 pub fn output_name(input: &Path, variation: Option<u64>) -> String {
-    let stem = input
-        .file_stem()
-        .map(|s| s.to_string_lossy().into_owned())
-        .unwrap_or_else(|| "scenario".into());
+    let stem = input.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "scenario".into());
     match variation {
         Some(k) => format!("{stem}_{k}"),
         None => stem,
@@ -51,9 +42,7 @@ pub fn output_name(input: &Path, variation: Option<u64>) -> String {
 }
 
 fn file_name(p: &Path) -> String {
-    p.file_name()
-        .map(|s| s.to_string_lossy().into_owned())
-        .unwrap_or_default()
+    p.file_name().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default()
 }
 
 /// Converts the scenario file `path` as `osc2cr convert path` does (no file is written).
@@ -64,13 +53,7 @@ pub fn convert_file(path: &Path, options: &ConvertOptions) -> Conversion {
 /// Like [`convert_file`], reading the road network through `caches`.
 pub fn convert_file_with(path: &Path, options: &ConvertOptions, caches: &Caches) -> Conversion {
     let name = batch_name(path);
-    let request = Request {
-        path,
-        name: &name,
-        config: 1,
-        parameters: &[],
-        source: batch_source(path, None),
-    };
+    let request = Request { path, name: &name, config: 1, parameters: &[], source: batch_source(path, None) };
     convert_scenario_with(&request, options, false, caches).0
 }
 
@@ -78,15 +61,8 @@ pub fn convert_file_with(path: &Path, options: &ConvertOptions, caches: &Caches)
 /// as a batch does. `Err` when it cannot be loaded or is not a distribution, or (unless
 /// `options.lenient`) when it cannot be sampled as written.
 pub fn load_distribution(path: &Path, options: &ConvertOptions) -> Result<Distribution, Failure> {
-    let load = LoadOptions {
-        parameters: options.parameters.clone(),
-        seed: options.seed,
-        ..Default::default()
-    };
-    let fail = |message: String| Failure {
-        stage: Stage::Load,
-        message,
-    };
+    let load = LoadOptions { parameters: options.parameters.clone(), seed: options.seed, ..Default::default() };
+    let fail = |message: String| Failure { stage: Stage::Load, message };
     match openscenario::load(path, &load) {
         Ok(l) if !l.problems.is_empty() && !options.lenient => {
             let list: Vec<String> = l.problems.iter().map(ToString::to_string).collect();
@@ -94,10 +70,7 @@ pub fn load_distribution(path: &Path, options: &ConvertOptions) -> Result<Distri
         }
         Ok(l) => match l.content {
             Content::Distribution(d) => Ok(d),
-            _ => Err(fail(format!(
-                "{}: expected a ParameterValueDistribution",
-                path.display()
-            ))),
+            _ => Err(fail(format!("{}: expected a ParameterValueDistribution", path.display()))),
         },
         Err(e) => Err(fail(e.to_string())),
     }
@@ -105,33 +78,18 @@ pub fn load_distribution(path: &Path, options: &ConvertOptions) -> Result<Distri
 
 /// Converts variation `index` (1-based) of the distribution `dist` loaded from `path`, as a
 /// batch does; a failure when the distribution has no such run.
-pub fn convert_variation(
-    path: &Path,
-    dist: &Distribution,
-    index: u64,
-    options: &ConvertOptions,
-) -> Conversion {
+pub fn convert_variation(path: &Path, dist: &Distribution, index: u64, options: &ConvertOptions) -> Conversion {
     convert_variation_with(path, dist, index, options, &Caches::with_capacity(1))
 }
 
 /// Like [`convert_variation`], reading the road network through `caches` (a stream of
 /// variations on one map reads and converts it once).
-pub fn convert_variation_with(
-    path: &Path,
-    dist: &Distribution,
-    index: u64,
-    options: &ConvertOptions,
-    caches: &Caches,
-) -> Conversion {
+pub fn convert_variation_with(path: &Path, dist: &Distribution, index: u64, options: &ConvertOptions, caches: &Caches) -> Conversion {
     let Some(parameters) = index.checked_sub(1).and_then(|i| dist.get(i)) else {
         return Conversion {
             result: Err(Failure {
                 stage: Stage::Load,
-                message: format!(
-                    "{}: no parameter set {index}; the distribution has {} (numbered from 1)",
-                    path.display(),
-                    dist.len()
-                ),
+                message: format!("{}: no parameter set {index}; the distribution has {} (numbered from 1)", path.display(), dist.len()),
             }),
             warnings: Vec::new(),
             timings: Default::default(),
@@ -139,12 +97,6 @@ pub fn convert_variation_with(
         };
     };
     let name = batch_name(path);
-    let request = Request {
-        path: &dist.scenario_file,
-        name: &name,
-        config: index,
-        parameters: &parameters,
-        source: batch_source(path, Some(index)),
-    };
+    let request = Request { path: &dist.scenario_file, name: &name, config: index, parameters: &parameters, source: batch_source(path, Some(index)) };
     convert_scenario_with(&request, options, false, caches).0
 }

@@ -43,19 +43,9 @@ pub fn run_map(road: &opendrive::RoadNetwork, options: &ConvertOptions) -> MapOu
 }
 
 /// Runs the storyboard.
-pub fn run_engine(
-    scenario: &openscenario::Scenario,
-    road: Option<&opendrive::RoadNetwork>,
-    options: &ConvertOptions,
-) -> Result<EngineOutput, engine::Error> {
-    let settings = Settings {
-        step: options.step,
-        max_time: options.max_time,
-    };
+pub fn run_engine(scenario: &openscenario::Scenario, road: Option<&opendrive::RoadNetwork>, options: &ConvertOptions) -> Result<EngineOutput, engine::Error> {
+    let settings = Settings { step: options.step, max_time: options.max_time };
     let control = engine::RunControl { seed: options.engine_seed, deadline: options.deadline };
     let run = engine::simulate_with(scenario, road, &settings, &control)?;
-    Ok(EngineOutput {
-        trace: run.trace,
-        warnings: run.warnings.iter().map(ToString::to_string).collect(),
-    })
+    Ok(EngineOutput { trace: run.trace, warnings: run.warnings.iter().map(ToString::to_string).collect() })
 }

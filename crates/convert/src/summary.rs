@@ -91,8 +91,7 @@ pub fn render(rows: &[FolderSummary]) -> String {
                 r.scenarios.to_string(),
                 r.converted.to_string(),
                 format!("{:.1} %", 100.0 * r.success_rate),
-                r.mean_conversion_ms
-                    .map_or("-".into(), |v| format!("{v:.1} ms")),
+                r.mean_conversion_ms.map_or("-".into(), |v| format!("{v:.1} ms")),
                 r.mean_duration_s.map_or("-".into(), |v| format!("{v:.1} s")),
             ]
         })

@@ -14,12 +14,7 @@ const SPEED_LIMIT_SIGNS: [&str; 2] = ["274", "R2-1"];
 /// The tags this crate adds to a converted scenario on `network` (`None`: no road network).
 pub fn scenario_tags(network: Option<&LaneletNetwork>) -> BTreeSet<Tag> {
     let mut tags = BTreeSet::from([Tag::Simulated]);
-    let speed_sign = network.is_some_and(|net| {
-        net.traffic_signs
-            .iter()
-            .flat_map(|s| &s.elements)
-            .any(|e| SPEED_LIMIT_SIGNS.contains(&e.sign_id.as_str()))
-    });
+    let speed_sign = network.is_some_and(|net| net.traffic_signs.iter().flat_map(|s| &s.elements).any(|e| SPEED_LIMIT_SIGNS.contains(&e.sign_id.as_str())));
     if speed_sign {
         tags.insert(Tag::SpeedLimit);
     }

@@ -61,17 +61,11 @@ pub fn tracks(trace: &Trace, entities: &[Entity], dt: f64) -> (Vec<Track>, Vec<S
                 ));
                 continue;
             }
-            warnings.push(format!(
-                "entity {:?} of the trace is not declared in the scenario: left out",
-                et.name
-            ));
+            warnings.push(format!("entity {:?} of the trace is not declared in the scenario: left out", et.name));
             continue;
         };
         let Some(bb) = entity.object.bounding_box() else {
-            warnings.push(format!(
-                "entity {:?} is an external object reference without bounding box: left out",
-                et.name
-            ));
+            warnings.push(format!("entity {:?} is an external object reference without bounding box: left out", et.name));
             continue;
         };
         let t = cr_type(&entity.object);
@@ -96,55 +90,24 @@ pub fn tracks(trace: &Trace, entities: &[Entity], dt: f64) -> (Vec<Track>, Vec<S
         let poses = resample(from_zero, trace.step, dt);
         let state = |n: usize, p: &Pose| {
             let (x, y) = box_center(p.x, p.y, p.h, bb.center.x, bb.center.y);
-            State {
-                time_step: n as u64,
-                x,
-                y,
-                orientation: p.h,
-                velocity: p.speed,
-                acceleration: p.acceleration,
-                yaw_rate: p.yaw_rate,
-            }
+            State { time_step: n as u64, x, y, orientation: p.h, velocity: p.speed, acceleration: p.acceleration, yaw_rate: p.yaw_rate }
         };
-        let states: Vec<Option<State>> = poses
-            .iter()
-            .enumerate()
-            .map(|(n, p)| p.as_ref().map(|p| state(n, p)))
-            .collect();
+        let states: Vec<Option<State>> = poses.iter().enumerate().map(|(n, p)| p.as_ref().map(|p| state(n, p))).collect();
         let placement = match fixed(&entity.object, &states) {
-            Some(s) => Placement::Fixed {
-                x: s.x,
-                y: s.y,
-                orientation: s.orientation,
-                last_step: states.len().saturating_sub(1) as u64,
-            },
+            Some(s) => Placement::Fixed { x: s.x, y: s.y, orientation: s.orientation, last_step: states.len().saturating_sub(1) as u64 },
             None => {
                 let runs = runs(&states);
                 if runs.is_empty() {
-                    warnings.push(format!(
-                        "entity {:?} exists at no CommonRoad time step: left out",
-                        et.name
-                    ));
+                    warnings.push(format!("entity {:?} exists at no CommonRoad time step: left out", et.name));
                     continue;
                 }
                 if runs.len() > 1 {
-                    warnings.push(format!(
-                        "entity {:?} disappears and reappears: written as {} obstacles, one per appearance",
-                        et.name,
-                        runs.len()
-                    ));
+                    warnings.push(format!("entity {:?} disappears and reappears: written as {} obstacles, one per appearance", et.name, runs.len()));
                 }
                 Placement::Moving(runs)
             }
         };
-        out.push(Track {
-            entity: et.name.clone(),
-            cr_type: t,
-            shape,
-            length,
-            width,
-            placement,
-        });
+        out.push(Track { entity: et.name.clone(), cr_type: t, shape, length, width, placement });
     }
     (out, warnings)
 }
@@ -192,9 +155,7 @@ fn fixed(object: &EntityObject, states: &[Option<State>]) -> Option<State> {
         .iter()
         .all(|s| {
             s.is_some_and(|s| {
-                (s.x - first.x).abs() <= FIXED_POS_EPS
-                    && (s.y - first.y).abs() <= FIXED_POS_EPS
-                    && (s.orientation - first.orientation).abs() <= FIXED_ANGLE_EPS
+                (s.x - first.x).abs() <= FIXED_POS_EPS && (s.y - first.y).abs() <= FIXED_POS_EPS && (s.orientation - first.orientation).abs() <= FIXED_ANGLE_EPS
             })
         })
         .then_some(first)
@@ -217,10 +178,7 @@ fn runs(states: &[Option<State>]) -> Vec<Vec<State>> {
     }
     for run in &mut out {
         if let [only] = run.as_slice() {
-            let pad = State {
-                time_step: only.time_step + 1,
-                ..*only
-            };
+            let pad = State { time_step: only.time_step + 1, ..*only };
             run.push(pad);
         }
     }

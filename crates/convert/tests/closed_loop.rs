@@ -99,7 +99,14 @@ fn the_same_inputs_give_the_same_bytes() {
         let ego = session.entity_names().iter().position(|n| n == "Ego").expect("Ego");
         step_through(&mut session, |k| {
             let t = k as f64 * 0.01;
-            vec![(ego, Input::Driver(engine::DriverInput { throttle: 0.3 * (t * 0.5).sin().abs(), brake: if t > 6.0 { 0.4 } else { 0.0 }, steering: 0.01 * (t * 2.0).sin() }))]
+            vec![(
+                ego,
+                Input::Driver(engine::DriverInput {
+                    throttle: 0.3 * (t * 0.5).sin().abs(),
+                    brake: if t > 6.0 { 0.4 } else { 0.0 },
+                    steering: 0.01 * (t * 2.0).sin(),
+                }),
+            )]
         });
         let (c, _) = session.finish();
         c.result.expect("converts")
@@ -151,7 +158,13 @@ fn held_driver_input_is_the_same_input_at_every_engine_step() {
     if testkit::shared_dir().is_none() {
         return;
     }
-    let pedals = |k: usize| Input::Driver(engine::DriverInput { throttle: if k < 40 { 0.4 } else { 0.0 }, brake: if k >= 60 { 0.3 } else { 0.0 }, steering: 0.002 * (k as f64 * 0.3).sin() });
+    let pedals = |k: usize| {
+        Input::Driver(engine::DriverInput {
+            throttle: if k < 40 { 0.4 } else { 0.0 },
+            brake: if k >= 60 { 0.3 } else { 0.0 },
+            steering: 0.002 * (k as f64 * 0.3).sin(),
+        })
+    };
     // ten engine steps per call, the input of CommonRoad step k held over them
     let mut k = 0;
     let held = drive_cut_in(|s, ego| {

@@ -1,6 +1,6 @@
 //! Benchmark ids, dates, and the summary table.
 
-use convert::{benchmark_id, date_prefix, parse_date, check_country, render_summary, summarise};
+use convert::{benchmark_id, check_country, date_prefix, parse_date, render_summary, summarise};
 use convert::{ScenarioReport, Status, Timings};
 use std::path::PathBuf;
 
@@ -56,12 +56,7 @@ fn report(folder: &str, ok: bool, ms: f64, dur: f64) -> ScenarioReport {
 
 #[test]
 fn summary_per_folder() {
-    let rows = summarise(&[
-        report("b", true, 10.0, 20.0),
-        report("a", true, 4.0, 8.0),
-        report("b", false, 1000.0, 1000.0),
-        report("b", true, 20.0, 10.0),
-    ]);
+    let rows = summarise(&[report("b", true, 10.0, 20.0), report("a", true, 4.0, 8.0), report("b", false, 1000.0, 1000.0), report("b", true, 20.0, 10.0)]);
     assert_eq!(rows.len(), 3);
     assert_eq!((rows[0].folder.as_str(), rows[0].scenarios, rows[0].converted), ("a", 1, 1));
     let b = &rows[1];

@@ -7,8 +7,8 @@ mod common;
 
 use std::path::PathBuf;
 
-use commonroad::TrafficLightColor;
 use common::{convert_and_clean, fresh_dir, CAR};
+use commonroad::TrafficLightColor;
 
 fn set_light(t: f64, state: &str) -> String {
     format!(

@@ -29,11 +29,7 @@ fn scenario() -> String {
     let events = format!(
         "{}{}",
         at_time("Delete", 2.0, "<DeleteEntityAction/>"),
-        at_time(
-            "Add",
-            5.0,
-            r#"<AddEntityAction><Position><LanePosition roadId="1" laneId="-2" offset="0" s="300"/></Position></AddEntityAction>"#
-        )
+        at_time("Add", 5.0, r#"<AddEntityAction><Position><LanePosition roadId="1" laneId="-2" offset="0" s="300"/></Position></AddEntityAction>"#)
     );
     format!(
         r#"<?xml version="1.0" encoding="UTF-8"?>

@@ -2,8 +2,8 @@
 
 mod common;
 
-use commonroad::{DynamicObstacleType as D, EnvironmentObstacleType as E, StaticObstacleType as S};
 use common::*;
+use commonroad::{DynamicObstacleType as D, EnvironmentObstacleType as E, StaticObstacleType as S};
 use convert::{cr_type, CrType};
 use openscenario::{MiscObjectCategory as M, PedestrianCategory as P, VehicleCategory as V};
 

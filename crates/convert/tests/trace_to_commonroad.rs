@@ -7,11 +7,8 @@ mod common;
 use std::collections::BTreeSet;
 use std::f64::consts::{FRAC_PI_2, PI};
 
-use commonroad::{
-    AbsoluteShape, Date, DynamicObstacleType, EnvironmentObstacleType, GoalPosition, Header,
-    Shape, StaticObstacleType,
-};
 use common::*;
+use commonroad::{AbsoluteShape, Date, DynamicObstacleType, EnvironmentObstacleType, GoalPosition, Header, Shape, StaticObstacleType};
 use convert::{assemble, benchmark_id, Assembled, ConvertOptions, EgoChoice};
 use engine::Trace;
 use openscenario::{Entity, MiscObjectCategory as M, PedestrianCategory, VehicleCategory};
@@ -39,9 +36,7 @@ fn close(a: f64, b: f64) -> bool {
 fn positions_are_box_centres_rotated_by_the_heading() {
     // heading north, box centre 1.4 m ahead and 0.3 m left of the reference point
     let e = vec![vehicle("Ego", VehicleCategory::Car, bbox(1.4, 0.3, 4.5, 2.0))];
-    let t = trace(101, &["Ego"], |_, k| {
-        Some(sample(10.0, 5.0 + 0.1 * k as f64, FRAC_PI_2, 10.0))
-    });
+    let t = trace(101, &["Ego"], |_, k| Some(sample(10.0, 5.0 + 0.1 * k as f64, FRAC_PI_2, 10.0)));
     let a = run(&t, &e, &ConvertOptions::default());
     let o = &a.scenario.dynamic_obstacles[0];
     assert_eq!(o.obstacle_type, DynamicObstacleType::Car);
@@ -86,10 +81,7 @@ fn resampled_every_tenth_sample_with_acceleration_and_yaw_rate() {
 fn other_time_steps_interpolate() {
     let e = vec![vehicle("Ego", VehicleCategory::Car, bbox(0.0, 0.0, 4.0, 2.0))];
     let t = trace(101, &["Ego"], |_, k| Some(straight(0.0, 0.0, 10.0)(k)));
-    let options = ConvertOptions {
-        dt: 0.025,
-        ..ConvertOptions::default()
-    };
+    let options = ConvertOptions { dt: 0.025, ..ConvertOptions::default() };
     let a = run(&t, &e, &options);
     let o = &a.scenario.dynamic_obstacles[0];
     assert_eq!(o.trajectory.len(), 40);
@@ -115,11 +107,7 @@ fn headings_are_wrapped() {
 
 #[test]
 fn pedestrians_are_circles_covering_their_box_and_standing_vehicles_stay_dynamic() {
-    let e = vec![
-        car("Ego"),
-        pedestrian("Walker", PedestrianCategory::Pedestrian, bbox(0.0, 0.0, 0.6, 0.8)),
-        car("Parked"),
-    ];
+    let e = vec![car("Ego"), pedestrian("Walker", PedestrianCategory::Pedestrian, bbox(0.0, 0.0, 0.6, 0.8)), car("Parked")];
     let t = trace(51, &["Ego", "Walker", "Parked"], |i, k| match i {
         0 => Some(straight(0.0, 0.0, 10.0)(k)),
         1 => Some(sample(20.0, 5.0, -FRAC_PI_2, 1.0)),
@@ -160,19 +148,11 @@ fn fixed_misc_objects_are_static_or_environment_obstacles_moving_ones_dynamic() 
     let a = run(&t, &e, &ConvertOptions::default());
     let s = &a.scenario;
     let statics: Vec<StaticObstacleType> = s.static_obstacles.iter().map(|o| o.obstacle_type).collect();
-    assert_eq!(
-        statics,
-        [StaticObstacleType::RoadBoundary, StaticObstacleType::ConstructionZone, StaticObstacleType::Unknown]
-    );
+    assert_eq!(statics, [StaticObstacleType::RoadBoundary, StaticObstacleType::ConstructionZone, StaticObstacleType::Unknown]);
     let env: Vec<EnvironmentObstacleType> = s.environment_obstacles.iter().map(|o| o.obstacle_type).collect();
-    assert_eq!(
-        env,
-        [EnvironmentObstacleType::Building, EnvironmentObstacleType::Pillar, EnvironmentObstacleType::MedianStrip]
-    );
+    assert_eq!(env, [EnvironmentObstacleType::Building, EnvironmentObstacleType::Pillar, EnvironmentObstacleType::MedianStrip]);
     // the house: centre 1 m ahead of its reference point, heading north
-    let AbsoluteShape::Rectangle(r) = &s.environment_obstacles[0].shape else {
-        panic!("rectangle expected")
-    };
+    let AbsoluteShape::Rectangle(r) = &s.environment_obstacles[0].shape else { panic!("rectangle expected") };
     assert!(close(r.center.x, 100.0) && close(r.center.y, 21.0));
     assert!(close(r.orientation, FRAC_PI_2));
     assert!(close(r.rectangle.length(), 10.0) && close(r.rectangle.width(), 8.0));
@@ -225,9 +205,7 @@ fn entities_that_appear_and_vanish_start_and_end_there() {
 #[test]
 fn ids_are_unique_and_the_planning_problem_has_its_own() {
     let e = vec![car("Ego"), car("Other"), misc("Pole", M::Pole, bbox(0.0, 0.0, 0.3, 0.3))];
-    let t = trace(101, &["Ego", "Other", "Pole"], |i, k| {
-        Some(if i == 2 { sample(5.0, 5.0, 0.0, 0.0) } else { straight(0.0, 3.5 * i as f64, 10.0)(k) })
-    });
+    let t = trace(101, &["Ego", "Other", "Pole"], |i, k| Some(if i == 2 { sample(5.0, 5.0, 0.0, 0.0) } else { straight(0.0, 3.5 * i as f64, 10.0)(k) }));
     let a = run(&t, &e, &ConvertOptions::default());
     let mut ids: Vec<u64> = a.scenario.network.lanelets.iter().map(|l| l.id.get()).collect();
     ids.extend(a.scenario.dynamic_obstacles.iter().map(|o| o.id.get()));

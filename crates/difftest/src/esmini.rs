@@ -60,11 +60,13 @@ pub fn parse_csv(text: &str) -> Result<Traces, String> {
                 let Some(&n0) = names.first() else { return Err("esmini log without entity columns".into()) };
                 let block = if names.len() > 1 { names[1] - n0 } else { parts.iter().filter(|p| !p.is_empty()).count() - n0 };
                 let find = |key: &str| -> Option<usize> {
-                    (n0..n0 + block).find(|&i| {
-                        let p = parts.get(i).copied().unwrap_or("");
-                        let p = p.trim_start_matches('#').trim_start_matches(|c: char| c.is_ascii_digit()).trim();
-                        p.split(' ').next() == Some(key) || p.split('[').next().map(str::trim) == Some(key)
-                    }).map(|i| i - n0)
+                    (n0..n0 + block)
+                        .find(|&i| {
+                            let p = parts.get(i).copied().unwrap_or("");
+                            let p = p.trim_start_matches('#').trim_start_matches(|c: char| c.is_ascii_digit()).trim();
+                            p.split(' ').next() == Some(key) || p.split('[').next().map(str::trim) == Some(key)
+                        })
+                        .map(|i| i - n0)
                 };
                 let cols = [
                     find("World_Position_X").ok_or("no World_Position_X")?,

@@ -145,7 +145,9 @@ impl Gen<'_> {
                 self.feature(format!("dynamics:LaneOffsetAction/{shape}"));
                 let acc = self.num(0.5, 3.0);
                 let value = self.num(-1.2, 1.2);
-                format!(r#"<PrivateAction><LateralAction><LaneOffsetAction continuous="false"><LaneOffsetActionDynamics maxLateralAcc="{acc}" dynamicsShape="{shape}"/><LaneOffsetTarget><AbsoluteTargetLaneOffset value="{value}"/></LaneOffsetTarget></LaneOffsetAction></LateralAction></PrivateAction>"#)
+                format!(
+                    r#"<PrivateAction><LateralAction><LaneOffsetAction continuous="false"><LaneOffsetActionDynamics maxLateralAcc="{acc}" dynamicsShape="{shape}"/><LaneOffsetTarget><AbsoluteTargetLaneOffset value="{value}"/></LaneOffsetTarget></LaneOffsetAction></LateralAction></PrivateAction>"#
+                )
             }
             _ => {
                 let lane = *self.pick(&self.spot.lanes.clone());
@@ -157,7 +159,8 @@ impl Gen<'_> {
     }
 
     fn condition(&mut self, actor: &str, entities: &[String]) -> String {
-        let kind = *self.pick(&["SimulationTimeCondition", "SimulationTimeCondition", "TraveledDistanceCondition", "SpeedCondition", "RelativeDistanceCondition"]);
+        let kind =
+            *self.pick(&["SimulationTimeCondition", "SimulationTimeCondition", "TraveledDistanceCondition", "SpeedCondition", "RelativeDistanceCondition"]);
         let kind = if kind == "RelativeDistanceCondition" && entities.len() < 2 { "SimulationTimeCondition" } else { kind };
         self.feature(format!("condition:{kind}"));
         let edge = *self.pick(&["none", "none", "rising", "risingOrFalling"]);
@@ -194,7 +197,9 @@ impl Gen<'_> {
                         )
                     }
                 };
-                format!(r#"<ByEntityCondition><TriggeringEntities triggeringEntitiesRule="any"><EntityRef entityRef="{entity}"/></TriggeringEntities><EntityCondition>{condition}</EntityCondition></ByEntityCondition>"#)
+                format!(
+                    r#"<ByEntityCondition><TriggeringEntities triggeringEntitiesRule="any"><EntityRef entityRef="{entity}"/></TriggeringEntities><EntityCondition>{condition}</EntityCondition></ByEntityCondition>"#
+                )
             }
         };
         format!(r#"<Condition name="c" delay="{delay}" conditionEdge="{edge}">{body}</Condition>"#)
@@ -209,7 +214,16 @@ pub fn generate(seed: u64, index: u64, maps: &[MapChoice]) -> Generated {
     let map = &maps[rng.gen_range(0..maps.len())];
     let spot = &map.spots[rng.gen_range(0..map.spots.len())];
     let mut g = Gen { rng, features: BTreeSet::new(), map, spot };
-    g.feature(format!("map:{}", if map.straight { "builtin-straight" } else if map.name == "curve.xodr" { "builtin-curve" } else { "folder" }));
+    g.feature(format!(
+        "map:{}",
+        if map.straight {
+            "builtin-straight"
+        } else if map.name == "curve.xodr" {
+            "builtin-curve"
+        } else {
+            "folder"
+        }
+    ));
 
     let n = g.rng.gen_range(1..=3);
     let names: Vec<String> = (0..n).map(|i| format!("Car{i}")).collect();
@@ -230,8 +244,11 @@ pub fn generate(seed: u64, index: u64, maps: &[MapChoice]) -> Generated {
             let gap = g.num(0.5, 2.0);
             let set_speed = g.num(10.0, 30.0);
             (
-                format!(r#"<ObjectController><Controller name="ACC{name}"><Properties><Property name="esminiController" value="ACCController"/><Property name="timeGap" value="{gap}"/><Property name="mode" value="{mode}"/><Property name="setSpeed" value="{set_speed}"/></Properties></Controller></ObjectController>"#),
-                r#"<PrivateAction><ControllerAction><ActivateControllerAction longitudinal="true" lateral="false"/></ControllerAction></PrivateAction>"#.to_string(),
+                format!(
+                    r#"<ObjectController><Controller name="ACC{name}"><Properties><Property name="esminiController" value="ACCController"/><Property name="timeGap" value="{gap}"/><Property name="mode" value="{mode}"/><Property name="setSpeed" value="{set_speed}"/></Properties></Controller></ObjectController>"#
+                ),
+                r#"<PrivateAction><ControllerAction><ActivateControllerAction longitudinal="true" lateral="false"/></ControllerAction></PrivateAction>"#
+                    .to_string(),
             )
         } else {
             (String::new(), String::new())

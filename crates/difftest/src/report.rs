@@ -90,14 +90,26 @@ impl Report {
             let _ = writeln!(
                 out,
                 "{f:<48} {:>5} {:>5} {:>5} {:>5} {:>5} {:>8}  {}",
-                t.scenarios, t.exact, t.close, t.diverged, t.not_compared, pct(t), t.smallest_divergence.as_deref().unwrap_or("")
+                t.scenarios,
+                t.exact,
+                t.close,
+                t.diverged,
+                t.not_compared,
+                pct(t),
+                t.smallest_divergence.as_deref().unwrap_or("")
             );
         }
         let t = &self.total;
         let _ = writeln!(
             out,
             "{:<48} {:>5} {:>5} {:>5} {:>5} {:>5} {:>8}",
-            format!("all (seed {})", self.seed), t.scenarios, t.exact, t.close, t.diverged, t.not_compared, pct(t)
+            format!("all (seed {})", self.seed),
+            t.scenarios,
+            t.exact,
+            t.close,
+            t.diverged,
+            t.not_compared,
+            pct(t)
         );
         out
     }

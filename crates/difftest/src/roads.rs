@@ -89,10 +89,7 @@ fn document(name: &str, road: String) -> String {
 /// The built-in maps, written into `dir`: a 2 km straight road and a road that curves left
 /// then right, both with three lanes each way.
 pub fn builtin(dir: &Path) -> std::io::Result<Vec<MapChoice>> {
-    let straight = document(
-        "straight",
-        road("1", 2000.0, r#"<geometry s="0" x="0" y="0" hdg="0" length="2000"><line/></geometry>"#),
-    );
+    let straight = document("straight", road("1", 2000.0, r#"<geometry s="0" x="0" y="0" hdg="0" length="2000"><line/></geometry>"#));
     let curve = document("curve", road("1", 1500.0, &curve_plan_view()));
     let mut out = Vec::new();
     for (name, text, straight) in [("straight", straight, true), ("curve", curve, false)] {

@@ -40,11 +40,25 @@ fn every_generated_scenario_loads_and_runs_in_osc2cr() {
     }
     // the grammar reaches every action, condition and Init position kind
     for f in [
-        "action:SpeedAction", "action:LaneChangeAction", "action:LaneOffsetAction", "action:TeleportAction",
-        "condition:SimulationTimeCondition", "condition:TraveledDistanceCondition", "condition:SpeedCondition",
-        "condition:RelativeDistanceCondition", "init:LanePosition", "init:RoadPosition", "init:WorldPosition",
-        "init:RelativeLanePosition", "init:RelativeObjectPosition", "init:RelativeRoadPosition", "edge:rising",
-        "condition-delay", "priority:override", "controller:ACCController/override", "controller:ACCController/additive",
+        "action:SpeedAction",
+        "action:LaneChangeAction",
+        "action:LaneOffsetAction",
+        "action:TeleportAction",
+        "condition:SimulationTimeCondition",
+        "condition:TraveledDistanceCondition",
+        "condition:SpeedCondition",
+        "condition:RelativeDistanceCondition",
+        "init:LanePosition",
+        "init:RoadPosition",
+        "init:WorldPosition",
+        "init:RelativeLanePosition",
+        "init:RelativeObjectPosition",
+        "init:RelativeRoadPosition",
+        "edge:rising",
+        "condition-delay",
+        "priority:override",
+        "controller:ACCController/override",
+        "controller:ACCController/additive",
     ] {
         assert!(features.contains(f), "{f} never generated");
     }

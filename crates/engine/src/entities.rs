@@ -85,10 +85,7 @@ impl Entity {
             EntityObject::MiscObject(_) => (EntityKind::Misc, None),
             EntityObject::External { .. } => (EntityKind::External, None),
         };
-        let bbox = e
-            .object
-            .bounding_box()
-            .map_or([0.0; 6], |b| [b.center.x, b.center.y, b.center.z, b.length, b.width, b.height]);
+        let bbox = e.object.bounding_box().map_or([0.0; 6], |b| [b.center.x, b.center.y, b.center.z, b.length, b.width, b.height]);
         let big = 1e10;
         Entity {
             name: e.name.clone(),
@@ -171,8 +168,7 @@ impl Entity {
                 let dir = if rel.abs() <= std::f64::consts::FRAC_PI_2 + 1e-9 { 1.0 } else { -1.0 };
                 let l = LanePos { road: lp.road, lane_id: lp.lane_id, s: lp.s, offset: lp.offset, dir };
                 self.lane = Some(l);
-                self.on_road =
-                    lp.is_on_road() && net.roads.get(lp.road).is_some_and(|r| !crate::roads::offroad::is_off_road(r, lp.s, lp.t));
+                self.on_road = lp.is_on_road() && net.roads.get(lp.road).is_some_and(|r| !crate::roads::offroad::is_off_road(r, lp.s, lp.t));
                 self.yaw_offset = wrap(h - if dir < 0.0 { lp.heading + std::f64::consts::PI } else { lp.heading });
                 self.z = z.unwrap_or_else(|| net.roads.get(lp.road).map_or(0.0, |r| r.elevation_at(lp.s)));
             }

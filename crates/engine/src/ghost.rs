@@ -79,8 +79,7 @@ impl<'a> Sim<'a> {
         for k in 0..self.init_actions.len() {
             let slot = self.init_actions[k];
             let a = &self.actions[slot];
-            let copy_it = a.actors == [owner]
-                && matches!(&a.model.kind, ActionKind::Private(p) if !matches!(p, PrivateAction::ActivateController { .. }));
+            let copy_it = a.actors == [owner] && matches!(&a.model.kind, ActionKind::Private(p) if !matches!(p, PrivateAction::ActivateController { .. }));
             if !copy_it {
                 continue;
             }
@@ -124,7 +123,17 @@ impl<'a> Sim<'a> {
         // esmini's ScenarioEngine::parseScenario starts a positive head start in RESTART mode;
         // its first UpdateGhostMode rewinds the clock by it (here: the clock starts there).
         let mode = if headstart > 0.0 { GhostMode::Restarting } else { GhostMode::Normal };
-        self.ghost = Some(Ghost { entity: ghost, owner, headstart, trail: Trail::default(), clock: 0.0 - headstart, true_clock: 0.0, mode, restart_events, start_shift: 0.0 });
+        self.ghost = Some(Ghost {
+            entity: ghost,
+            owner,
+            headstart,
+            trail: Trail::default(),
+            clock: 0.0 - headstart,
+            true_clock: 0.0,
+            mode,
+            restart_events,
+            start_shift: 0.0,
+        });
     }
 
     /// esmini gives only the first such entity a ghost; the others' controllers do nothing.
@@ -136,7 +145,10 @@ impl<'a> Sim<'a> {
                 _ => false,
             };
             if let (true, Some(m)) = (needs_ghost, self.scenario.entities.get(e)) {
-                let msg = format!("entity `{}`: only the first entity with a ghost-following controller gets a ghost (esmini); its controller leaves it standing", m.name);
+                let msg = format!(
+                    "entity `{}`: only the first entity with a ghost-following controller gets a ghost (esmini); its controller leaves it standing",
+                    m.name
+                );
                 self.warnings.push(crate::Warning::at(&m.origin, msg));
             }
         }

@@ -124,9 +124,7 @@ pub fn resolve(pos: &Position, net: Option<&RoadNetwork>, entities: &[Entity]) -
             let along = !along_lane || drives_along_s(r.rule, lane_id);
             place(net, lp.road, lane_id, s, offset, along, Some(&relative_heading(orientation.as_ref())))
         }
-        Position::Route { route, orientation, in_route } => {
-            crate::route_position::route_placement(route, in_route, orientation.as_ref(), net, entities)
-        }
+        Position::Route { route, orientation, in_route } => crate::route_position::route_placement(route, in_route, orientation.as_ref(), net, entities),
         Position::Geo { .. } => Err("GeoPosition is not supported".into()),
         Position::Trajectory { trajectory, s, t, orientation } => {
             crate::trajectory_position::trajectory_placement(trajectory, *s, *t, orientation.as_ref(), net, entities)

@@ -27,9 +27,7 @@ pub fn road_references(scenario: &Scenario, road: Option<&opendrive::RoadNetwork
             continue;
         };
         if let Some((lane_id, s)) = lane {
-            let exists = r.section_at(s).is_some_and(|sec| {
-                lane_id == 0 || sec.left.iter().chain(&sec.right).any(|l| l.id == lane_id)
-            });
+            let exists = r.section_at(s).is_some_and(|sec| lane_id == 0 || sec.left.iter().chain(&sec.right).any(|l| l.id == lane_id));
             if !exists {
                 out.push(Warning::at(at, format!("LanePosition: road `{road_id}` has no lane {lane_id} at s = {s}")));
             }

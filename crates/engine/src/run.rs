@@ -80,7 +80,13 @@ pub struct Simulation<'a> {
 
 impl<'a> Simulation<'a> {
     /// Builds the run state of `scenario` on `roads` and runs frame 0.
-    pub fn new(scenario: &'a Scenario, roads: Option<&'a RoadNetwork>, settings: &Settings, control: &RunControl, external: &External) -> Result<Simulation<'a>, Error> {
+    pub fn new(
+        scenario: &'a Scenario,
+        roads: Option<&'a RoadNetwork>,
+        settings: &Settings,
+        control: &RunControl,
+        external: &External,
+    ) -> Result<Simulation<'a>, Error> {
         settings.check()?;
         let mut memos = RunMemos::new();
         let entered = memos.enter();

@@ -39,11 +39,7 @@ impl Settings {
             return Err(crate::Error::Settings(format!("max time must be a non-negative number of seconds, got {}", self.max_time)));
         }
         if self.max_time / self.step > MAX_STEPS as f64 {
-            return Err(crate::Error::Settings(format!(
-                "max time / step = {:.0} steps, more than the {} accepted",
-                self.max_time / self.step,
-                MAX_STEPS
-            )));
+            return Err(crate::Error::Settings(format!("max time / step = {:.0} steps, more than the {} accepted", self.max_time / self.step, MAX_STEPS)));
         }
         Ok(())
     }

@@ -108,7 +108,10 @@ impl<'a> Sim<'a> {
         let mut actions = Vec::new();
         for p in &sb.init.private {
             let Some(entity) = self.entity_index(&p.entity) else {
-                self.warnings.push(Warning::at(&sc.entities.first().map(|e| e.origin.clone()).unwrap_or_else(|| sb_origin(sc)), format!("Init actions for unknown entity `{}` ignored", p.entity)));
+                self.warnings.push(Warning::at(
+                    &sc.entities.first().map(|e| e.origin.clone()).unwrap_or_else(|| sb_origin(sc)),
+                    format!("Init actions for unknown entity `{}` ignored", p.entity),
+                ));
                 continue;
             };
             for a in &p.actions {
@@ -118,7 +121,10 @@ impl<'a> Sim<'a> {
             }
         }
         if crate::init_order::reorder(&mut items) {
-            self.warnings.push(Warning::at(&sb_origin(sc), "Init actions: teleports relative to each other in a circle; esmini gives up reordering them after 2n passes, and so does osc2cr"));
+            self.warnings.push(Warning::at(
+                &sb_origin(sc),
+                "Init actions: teleports relative to each other in a circle; esmini gives up reordering them after 2n passes, and so does osc2cr",
+            ));
         }
         let order = items.iter().map(|i| i.index);
         for k in order {
@@ -146,7 +152,8 @@ impl<'a> Sim<'a> {
                             None => {
                                 let expanded = self.selection_members(a);
                                 if expanded.is_empty() {
-                                    self.warnings.push(Warning::at(&mg.origin, format!("actor `{a}` of maneuver group `{}` is not an entity; ignored", mg.name)));
+                                    self.warnings
+                                        .push(Warning::at(&mg.origin, format!("actor `{a}` of maneuver group `{}` is not an entity; ignored", mg.name)));
                                 }
                                 actors.extend(expanded);
                             }

@@ -100,7 +100,10 @@ impl<'a> Signals<'a> {
         };
         for c in &s.controllers {
             if !c.model.phases.is_empty() && c.cycle() < MIN_CYCLE {
-                warnings.push(Warning::at(&c.model.origin, format!("traffic signal controller `{}`: its phases last no time; it stays in its first phase", c.model.name)));
+                warnings.push(Warning::at(
+                    &c.model.origin,
+                    format!("traffic signal controller `{}`: its phases last no time; it stays in its first phase", c.model.name),
+                ));
             }
         }
         s.advance(0.0);
@@ -196,12 +199,18 @@ fn origin_of(models: &[TrafficSignalController], i: usize, warnings: &mut Vec<Wa
         match models.iter().position(|m| m.name == r) {
             Some(next) if !seen[next] => cur = next,
             Some(_) => {
-                warnings.push(Warning::at(&models[i].origin, format!("traffic signal controller `{}`: its references go round in a circle; only the delays up to `{r}` count", models[i].name)));
+                warnings.push(Warning::at(
+                    &models[i].origin,
+                    format!("traffic signal controller `{}`: its references go round in a circle; only the delays up to `{r}` count", models[i].name),
+                ));
                 return origin;
             }
             None => {
                 if cur == i {
-                    warnings.push(Warning::at(&c.origin, format!("traffic signal controller `{}`: reference `{r}` is not a controller; its delay counts from time 0", c.name)));
+                    warnings.push(Warning::at(
+                        &c.origin,
+                        format!("traffic signal controller `{}`: reference `{r}` is not a controller; its delay counts from time 0", c.name),
+                    ));
                 }
                 return origin;
             }

@@ -128,9 +128,7 @@ impl Trace {
     /// (`time,entity,x,y,z,h,speed,bb_cx,...,lane_id,lane_offset,s`). `boxes` gives each
     /// entity's bounding box `(cx, cy, cz, length, width, height)` by index.
     pub fn to_csv(&self, boxes: &[[f64; 6]]) -> String {
-        let mut out = String::from(
-            "time,entity,x,y,z,h,speed,bb_cx,bb_cy,bb_cz,length,width,height,lane_id,lane_offset,s\n",
-        );
+        let mut out = String::from("time,entity,x,y,z,h,speed,bb_cx,bb_cy,bb_cz,length,width,height,lane_id,lane_offset,s\n");
         for k in 0..self.len {
             let t = self.time(k);
             let row = self.entities.iter().map(|e| e.samples.get(k).copied().flatten());
@@ -151,7 +149,19 @@ impl Trace {
             let _ = write!(
                 out,
                 "{:.3},{},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},",
-                t, csv_field(&e.name), s.x, s.y, s.z, s.h, s.speed, b[0], b[1], b[2], b[3], b[4], b[5]
+                t,
+                csv_field(&e.name),
+                s.x,
+                s.y,
+                s.z,
+                s.h,
+                s.speed,
+                b[0],
+                b[1],
+                b[2],
+                b[3],
+                b[4],
+                b[5]
             );
             match s.road {
                 Some(r) => {

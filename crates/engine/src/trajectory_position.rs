@@ -17,9 +17,7 @@ pub fn trajectory_placement(
     net: Option<&RoadNetwork>,
     entities: &[Entity],
 ) -> Result<Placement, PositionError> {
-    let resolver = |p: &openscenario::Position| {
-        resolve(p, net, entities).ok().map(|pl| Pose::new(pl.x, pl.y, pl.z.unwrap_or(0.0), pl.h))
-    };
+    let resolver = |p: &openscenario::Position| resolve(p, net, entities).ok().map(|pl| Pose::new(pl.x, pl.y, pl.z.unwrap_or(0.0), pl.h));
     let path = crate::position_cache::path(traj, || Path::from_trajectory(traj, Pose::default(), &resolver).map_err(|e| e.to_string()));
     let path = path.map_err(|e| format!("trajectory `{}`: {e}", traj.name))?;
     let p = path.pose_at(s);

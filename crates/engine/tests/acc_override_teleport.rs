@@ -13,9 +13,20 @@ fn scenario(mode: &str) -> String {
         lane_pos(100.0, -1),
         speed_action("step", "time", 0.0, 20.0)
     );
-    let hop = event("Hop", "parallel", &format!("<PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction>", lane_pos(600.0, -1)), &trigger(&sim_time(1.0, "greaterOrEqual", "none", 0.0)));
-    let text = xosc(&format!("{ego}{}", teleport("Target", 900.0, -2)), &story("Ego", &hop), &format!("<ConditionGroup>{}</ConditionGroup>", sim_time(2.0, "greaterThan", "none", 0.0)));
-    let acc = format!(r#"<ObjectController><Controller name="ACC"><Properties><Property name="esminiController" value="ACCController"/><Property name="timeGap" value="1"/><Property name="mode" value="{mode}"/><Property name="setSpeed" value="20"/></Properties></Controller></ObjectController></ScenarioObject>"#);
+    let hop = event(
+        "Hop",
+        "parallel",
+        &format!("<PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction>", lane_pos(600.0, -1)),
+        &trigger(&sim_time(1.0, "greaterOrEqual", "none", 0.0)),
+    );
+    let text = xosc(
+        &format!("{ego}{}", teleport("Target", 900.0, -2)),
+        &story("Ego", &hop),
+        &format!("<ConditionGroup>{}</ConditionGroup>", sim_time(2.0, "greaterThan", "none", 0.0)),
+    );
+    let acc = format!(
+        r#"<ObjectController><Controller name="ACC"><Properties><Property name="esminiController" value="ACCController"/><Property name="timeGap" value="1"/><Property name="mode" value="{mode}"/><Property name="setSpeed" value="20"/></Properties></Controller></ObjectController></ScenarioObject>"#
+    );
     // the controller goes into Ego's ScenarioObject (the first one)
     text.replacen("</ScenarioObject>", &acc, 1)
 }

@@ -25,7 +25,8 @@ fn angle_trigger(angle: f64) -> String {
 
 #[test]
 fn the_heading_is_measured_from_the_current_segment_of_the_trajectory() {
-    let shape = format!("<Polyline><Vertex>{}</Vertex><Vertex>{}</Vertex><Vertex>{}</Vertex></Polyline>", world(10.0, -1.75), world(30.0, -1.75), world(50.0, 8.25));
+    let shape =
+        format!("<Polyline><Vertex>{}</Vertex><Vertex>{}</Vertex><Vertex>{}</Vertex></Polyline>", world(10.0, -1.75), world(30.0, -1.75), world(50.0, 8.25));
     let follow = format!(
         r#"<PrivateAction><RoutingAction><FollowTrajectoryAction><TrajectoryRef><Trajectory name="T" closed="false"><ParameterDeclarations/><Shape>{shape}</Shape></Trajectory></TrajectoryRef><TimeReference><None/></TimeReference><TrajectoryFollowingMode followingMode="position"/></FollowTrajectoryAction></RoutingAction></PrivateAction>"#
     );

@@ -18,7 +18,13 @@ fn load(text: &str) -> (openscenario::Scenario, opendrive::RoadNetwork) {
 
 /// Ego at s = 50 on lane −1 at 10 m/s, Target at s = 200 on lane −1 at 5 m/s; `stories`; 10 s.
 fn scenario(stories: &str) -> String {
-    let init = format!("{}{}{}{}", teleport("Ego", 50.0, -1), init_speed("Ego", "step", "time", 0.0, 10.0), teleport("Target", 200.0, -1), init_speed("Target", "step", "time", 0.0, 5.0));
+    let init = format!(
+        "{}{}{}{}",
+        teleport("Ego", 50.0, -1),
+        init_speed("Ego", "step", "time", 0.0, 10.0),
+        teleport("Target", 200.0, -1),
+        init_speed("Target", "step", "time", 0.0, 5.0)
+    );
     xosc(&init, stories, &format!("<ConditionGroup>{}</ConditionGroup>", sim_time(10.0, "greaterThan", "none", 0.0)))
 }
 
@@ -106,7 +112,9 @@ fn dead_reckoning_goes_on_and_hold_stays() {
 #[test]
 fn wrong_inputs_are_refused_by_name_and_the_step_is_not_run() {
     let (scenario, net) = load(&scenario(""));
-    assert!(matches!(Simulation::new(&scenario, Some(&net), &settings(), &RunControl::default(), &External::named(["Nobody"])), Err(engine::Error::Input(m)) if m.contains("no entity named `Nobody`") && m.contains("Ego, Target")));
+    assert!(
+        matches!(Simulation::new(&scenario, Some(&net), &settings(), &RunControl::default(), &External::named(["Nobody"])), Err(engine::Error::Input(m)) if m.contains("no entity named `Nobody`") && m.contains("Ego, Target"))
+    );
     let mut sim = Simulation::new(&scenario, Some(&net), &settings(), &RunControl::default(), &External::named(["Ego"])).expect("starts");
     let message = |r: Result<bool, engine::Error>| match r {
         Err(engine::Error::Input(m)) => m,
@@ -149,7 +157,11 @@ fn the_storyboards_motion_actions_yield_to_the_outside_as_esminis_do() {
     assert_eq!(event_time(&run, "OverAction", "end"), None);
     assert!(close(at(&run, "Ego", 5.0).x, 50.0, 1e-12) && close(at(&run, "Ego", 5.0).y, -1.75, 1e-12));
     for element in ["SpeedAction", "LaneChangeAction"] {
-        assert!(run.warnings.iter().any(|w| w.message.starts_with(&format!("{element} on `Ego`: the entity is driven from outside"))), "{element}: {:?}", run.warnings);
+        assert!(
+            run.warnings.iter().any(|w| w.message.starts_with(&format!("{element} on `Ego`: the entity is driven from outside"))),
+            "{element}: {:?}",
+            run.warnings
+        );
     }
     // replaced instead: the actions run their course from where the outside put the entity
     // each step (here: standing at s = 50), the outside's state is what everyone sees. Fed
@@ -170,7 +182,12 @@ fn with_outside_driver(text: &str) -> String {
 
 #[test]
 fn an_outside_drivers_controller_makes_its_entity_external_once_activated() {
-    let activate = event("Activate", "parallel", r#"<PrivateAction><ControllerAction><ActivateControllerAction longitudinal="true" lateral="true"/></ControllerAction></PrivateAction>"#, &trigger(&sim_time(1.0, "greaterOrEqual", "none", 0.0)));
+    let activate = event(
+        "Activate",
+        "parallel",
+        r#"<PrivateAction><ControllerAction><ActivateControllerAction longitudinal="true" lateral="true"/></ControllerAction></PrivateAction>"#,
+        &trigger(&sim_time(1.0, "greaterOrEqual", "none", 0.0)),
+    );
     let text = with_outside_driver(&scenario(&story("Ego", &activate)));
     let (scenario, net) = load(&text);
     let mut sim = Simulation::new(&scenario, Some(&net), &settings(), &RunControl::default(), &External::controllers()).expect("starts");
@@ -196,7 +213,8 @@ fn an_outside_drivers_controller_makes_its_entity_external_once_activated() {
 
 #[test]
 fn the_same_inputs_give_the_same_run() {
-    let input = |t: f64, _: &Simulation| vec![(EGO, Input::Driver(DriverInput { throttle: (t * 0.3).sin().abs(), brake: 0.0, steering: (t * 1.7).sin() * 0.2 }))];
+    let input =
+        |t: f64, _: &Simulation| vec![(EGO, Input::Driver(DriverInput { throttle: (t * 0.3).sin().abs(), brake: 0.0, steering: (t * 1.7).sin() * 0.2 }))];
     let a = drive(&scenario(&ego_story()), &External::named(["Ego"]), input);
     let b = drive(&scenario(&ego_story()), &External::named(["Ego"]), input);
     let boxes = vec![[1.5, 0.0, 0.9, 4.5, 2.0, 1.8]; 2];
@@ -213,9 +231,18 @@ fn overridden_by_an_outside_driver() -> String {
         lane_pos(50.0, -1),
         speed_action("step", "time", 0.0, 10.0)
     );
-    let target = format!(r#"<Private entityRef="Target"><PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction>{}</Private>"#, lane_pos(200.0, -1), speed_action("step", "time", 0.0, 5.0));
+    let target = format!(
+        r#"<Private entityRef="Target"><PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction>{}</Private>"#,
+        lane_pos(200.0, -1),
+        speed_action("step", "time", 0.0, 5.0)
+    );
     let init = format!("{ego}{target}");
-    let hop = event("Hop", "parallel", &format!("<PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction>", lane_pos(300.0, -1)), &trigger(&sim_time(4.0, "greaterOrEqual", "none", 0.0)));
+    let hop = event(
+        "Hop",
+        "parallel",
+        &format!("<PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction>", lane_pos(300.0, -1)),
+        &trigger(&sim_time(4.0, "greaterOrEqual", "none", 0.0)),
+    );
     let stories = story("Ego", &format!("{}{hop}", ego_events()));
     with_outside_driver(&xosc(&init, &stories, &format!("<ConditionGroup>{}</ConditionGroup>", sim_time(5.0, "greaterThan", "none", 0.0))))
 }
@@ -235,7 +262,14 @@ fn write_for_esmini() {
 fn esmini_overrides_the_actions_of_an_entity_driven_from_outside() {
     let text = std::fs::read_to_string(fixtures().join("outside_driver_overrides.xosc")).expect("fixture");
     let run = drive(&text, &External::controllers(), |_, _| vec![(EGO, Input::Hold)]);
-    for (element, transition, time) in [("FasterAction", "start", 1.0), ("FasterAction", "end", 1.0), ("OverAction", "start", 1.0), ("OverAction", "end", 4.0), ("HopAction", "start", 4.0), ("HopAction", "end", 4.0)] {
+    for (element, transition, time) in [
+        ("FasterAction", "start", 1.0),
+        ("FasterAction", "end", 1.0),
+        ("OverAction", "start", 1.0),
+        ("OverAction", "end", 4.0),
+        ("HopAction", "start", 4.0),
+        ("HopAction", "end", 4.0),
+    ] {
         assert_eq!(event_time(&run, element, transition).map(|t| (t * 100.0).round() / 100.0), Some(time), "{element} {transition}");
     }
     assert_eq!(at(&run, "Ego", 0.0).speed, 10.0);
@@ -254,7 +288,11 @@ fn esmini_overrides_the_actions_of_an_entity_driven_from_outside() {
 /// Target, with an ACC (set speed 20 m/s, time gap 1 s) activated in the Init, follows Ego in
 /// lane −1; Ego, driven from outside, drives at 15 m/s and stops hard at 3 s.
 fn acc_behind_ego() -> String {
-    let ego = format!(r#"<Private entityRef="Ego"><PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction>{}</Private>"#, lane_pos(100.0, -1), speed_action("step", "time", 0.0, 15.0));
+    let ego = format!(
+        r#"<Private entityRef="Ego"><PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction>{}</Private>"#,
+        lane_pos(100.0, -1),
+        speed_action("step", "time", 0.0, 15.0)
+    );
     let target = format!(
         r#"<Private entityRef="Target"><PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction>{}<PrivateAction><ControllerAction><ActivateControllerAction longitudinal="true" lateral="false"/></ControllerAction></PrivateAction></Private>"#,
         lane_pos(60.0, -1),
@@ -288,6 +326,7 @@ fn an_acc_follows_the_entity_where_the_outside_puts_it() {
     assert!(target.speed < 0.5, "the ACC car still drives at {} m/s", target.speed);
     assert!(target.x < ego.x - 4.5, "the ACC car at {} ran into Ego at {}", target.x, ego.x);
     // and it reacted to the outside's Ego: with Ego gone on at 15 m/s it would not have braked
-    let cruising = drive(&acc_behind_ego(), &External::named(["Ego"]), |t, _| vec![(EGO, Input::State(ExternalState::new(100.0 + 15.0 * t, -1.75, 0.0, 15.0)))]);
+    let cruising =
+        drive(&acc_behind_ego(), &External::named(["Ego"]), |t, _| vec![(EGO, Input::State(ExternalState::new(100.0 + 15.0 * t, -1.75, 0.0, 15.0)))]);
     assert!(at(&cruising, "Target", 9.0).speed > 14.0, "{:?}", at(&cruising, "Target", 9.0));
 }

@@ -86,7 +86,8 @@ fn under_the_override_rule_a_replay_differs_only_where_the_run_says_why() {
     eprintln!("overridden: {exact} of {} replay within 1e-9", runs.len());
     // below a micrometre: rounding (the ego located from its pose rather than moved along its
     // lane, and placed after the storyboard's actions rather than by them)
-    let silent: Vec<String> = runs.iter().filter(|r| r.worst.0 > 1e-6 && !r.said).map(|r| format!("{}: {:.3e} {}", r.file.display(), r.worst.0, r.worst.1)).collect();
+    let silent: Vec<String> =
+        runs.iter().filter(|r| r.worst.0 > 1e-6 && !r.said).map(|r| format!("{}: {:.3e} {}", r.file.display(), r.worst.0, r.worst.1)).collect();
     assert!(silent.is_empty(), "replays that differ without a warning naming the ego as driven from outside:\n{}", silent.join("\n"));
     // most of the corpus does not wait for the ego's own actions
     assert!(exact * 4 >= runs.len() * 3, "only {exact} of {} exact", runs.len());

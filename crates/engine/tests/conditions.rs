@@ -60,7 +60,8 @@ fn storyboard_element_state_follows_transitions() {
 #[test]
 fn reach_position_and_traveled_distance() {
     // |x - 50| < 1.05 first at x = 49.0 (t = 3.90; 48.9 at 3.89 is outside).
-    let reach = by_entity(r#"<ReachPositionCondition tolerance="1.05"><Position><WorldPosition x="50" y="-1.75"/></Position></ReachPositionCondition>"#, "none");
+    let reach =
+        by_entity(r#"<ReachPositionCondition tolerance="1.05"><Position><WorldPosition x="50" y="-1.75"/></Position></ReachPositionCondition>"#, "none");
     assert_time(fire_time(&reach, 500.0), 3.90);
     // 30 m travelled at t = 3.00 (the odometer sums 0.1 m steps: allow one step of rounding).
     let trav = by_entity(r#"<TraveledDistanceCondition value="30"/>"#, "none");
@@ -80,27 +81,42 @@ fn speed_and_standstill() {
 #[test]
 fn relative_distance_headway_ttc_collision() {
     // Target stands at x = 110 on the same lane. Reference points: 100 - 10 t apart.
-    let rd = by_entity(r#"<RelativeDistanceCondition entityRef="Target" relativeDistanceType="longitudinal" value="20" freespace="false" rule="lessThan"/>"#, "none");
+    let rd = by_entity(
+        r#"<RelativeDistanceCondition entityRef="Target" relativeDistanceType="longitudinal" value="20" freespace="false" rule="lessThan"/>"#,
+        "none",
+    );
     assert_time(fire_time(&rd, 110.0), 8.01);
     // Headway = distance / own speed < 5 s: 100 - 10 t < 50, t > 5.
-    let hw = by_entity(r#"<TimeHeadwayCondition entityRef="Target" value="5" freespace="false" rule="lessThan" coordinateSystem="entity" relativeDistanceType="longitudinal"/>"#, "none");
+    let hw = by_entity(
+        r#"<TimeHeadwayCondition entityRef="Target" value="5" freespace="false" rule="lessThan" coordinateSystem="entity" relativeDistanceType="longitudinal"/>"#,
+        "none",
+    );
     assert_time(fire_time(&hw, 110.0), 5.01);
     // TTC with freespace: gap = 100 - 4.5 - 10 t (box lengths 4.5, same offsets), < 2 s at 10 m/s: t > 7.55.
-    let ttc = by_entity(r#"<TimeToCollisionCondition value="2" freespace="true" rule="lessThan" coordinateSystem="entity" relativeDistanceType="longitudinal"><TimeToCollisionConditionTarget><EntityRef entityRef="Target"/></TimeToCollisionConditionTarget></TimeToCollisionCondition>"#, "none");
+    let ttc = by_entity(
+        r#"<TimeToCollisionCondition value="2" freespace="true" rule="lessThan" coordinateSystem="entity" relativeDistanceType="longitudinal"><TimeToCollisionConditionTarget><EntityRef entityRef="Target"/></TimeToCollisionConditionTarget></TimeToCollisionCondition>"#,
+        "none",
+    );
     assert_time(fire_time(&ttc, 110.0), 7.56);
     // Boxes touch when 100 - 10 t <= 4.5: t = 9.55.
     let col = by_entity(r#"<CollisionCondition><EntityRef entityRef="Target"/></CollisionCondition>"#, "none");
     let t = fire_time(&col, 110.0).unwrap_or(-1.0);
     assert!((9.55 - 1e-9..=9.56 + 1e-9).contains(&t), "{t}");
     // Road coordinates give the same longitudinal distance on a straight road.
-    let road = by_entity(r#"<RelativeDistanceCondition entityRef="Target" relativeDistanceType="longitudinal" coordinateSystem="road" value="20" freespace="false" rule="lessThan"/>"#, "none");
+    let road = by_entity(
+        r#"<RelativeDistanceCondition entityRef="Target" relativeDistanceType="longitudinal" coordinateSystem="road" value="20" freespace="false" rule="lessThan"/>"#,
+        "none",
+    );
     assert_time(fire_time(&road, 110.0), 8.01);
 }
 
 #[test]
 fn distance_to_a_position() {
     // Euclidean distance from (10 + 10 t, -1.75) to (100, -1.75) below 30: t > 6.
-    let d = by_entity(r#"<DistanceCondition value="30" freespace="false" rule="lessThan"><Position><WorldPosition x="100" y="-1.75"/></Position></DistanceCondition>"#, "none");
+    let d = by_entity(
+        r#"<DistanceCondition value="30" freespace="false" rule="lessThan"><Position><WorldPosition x="100" y="-1.75"/></Position></DistanceCondition>"#,
+        "none",
+    );
     assert_time(fire_time(&d, 500.0), 6.01);
 }
 

@@ -18,8 +18,7 @@ const FLOORS: &[(&str, &[&str], f64, f64)] = &[
 /// what is known of the cause (ARCHITECTURE.md, "Not supported yet"); some do warn, but about
 /// something else (a catalog parameter's type). The list only shrinks: a new silent divergence
 /// fails the test, and so does a listed scenario that stops diverging (take it off the list).
-const KNOWN_SILENT: &[(&str, &str)] = &[
-];
+const KNOWN_SILENT: &[(&str, &str)] = &[];
 
 fn shared() -> Option<PathBuf> {
     let p = std::env::var_os("OSC2CR_SHARED").map(PathBuf::from).unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared"));

@@ -15,18 +15,14 @@ fn scenario() -> String {
     with_follow_ghost(&xosc(&init, &stories, &stop), 2.0)
 }
 
-
 #[test]
 fn the_ghost_reads_absolute_time_stamps_a_head_start_later() {
     let run = run(&scenario());
     // esmini: the ghost at (60.2, −1.7583) at −0.98 s (the stamp of 1.02 s), (75, −2.375) at
     // 0.5 s, (100, −3) at 3 s; the Ego following at (80.0025, −2.5738) at 3 s.
-    for (who, t, x, y) in [
-        ("Ego_ghost", -0.98, 60.2, -1.7583),
-        ("Ego_ghost", 0.5, 75.0, -2.375),
-        ("Ego_ghost", 3.0, 100.0, -3.0),
-        ("Ego", 3.0, 80.0025, -2.5738),
-    ] {
+    for (who, t, x, y) in
+        [("Ego_ghost", -0.98, 60.2, -1.7583), ("Ego_ghost", 0.5, 75.0, -2.375), ("Ego_ghost", 3.0, 100.0, -3.0), ("Ego", 3.0, 80.0025, -2.5738)]
+    {
         let s = at(&run, who, t);
         assert!(close(s.x, x, 1e-4) && close(s.y, y, 1e-4), "{who} at {t}: ({}, {})", s.x, s.y);
     }

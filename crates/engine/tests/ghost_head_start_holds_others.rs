@@ -14,7 +14,6 @@ fn scenario() -> String {
     with_follow_ghost(&xosc(&init, "", &stop), 2.0)
 }
 
-
 #[test]
 fn another_entitys_init_speed_action_steps_from_time_zero() {
     let run = run(&scenario());

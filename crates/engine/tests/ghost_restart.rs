@@ -41,13 +41,8 @@ fn reach() -> String {
 }
 
 fn restart_notes(run: &engine::Run) -> Vec<String> {
-    run.warnings
-        .iter()
-        .map(|w| w.to_string())
-        .filter(|w| w.contains("started after time 0, where esmini restarts the ghost"))
-        .collect()
+    run.warnings.iter().map(|w| w.to_string()).filter(|w| w.contains("started after time 0, where esmini restarts the ghost")).collect()
 }
-
 
 /// Sample of `entity` at time `t` of the (only) replay.
 fn replayed(run: &engine::Run, entity: &str, t: f64) -> engine::Sample {
@@ -81,16 +76,8 @@ fn an_event_after_time_zero_restarts_the_ghost_and_time_runs_again() {
     assert!(close(r.start, -0.97, 1e-9), "{}", r.start);
     assert_eq!(r.rows.len(), 200);
     // Only the ghost moves (lane offset 0.5 m done): 74.9 m at 0.5 s, 80.1 m at 1.02 s.
-    assert!(
-        near_xy(replayed(&run, "Ego_ghost", 0.5), 74.9, -1.25),
-        "{:?}",
-        xy(replayed(&run, "Ego_ghost", 0.5))
-    );
-    assert!(
-        near_xy(replayed(&run, "Ego_ghost", 1.02), 80.1, -1.25),
-        "{:?}",
-        xy(replayed(&run, "Ego_ghost", 1.02))
-    );
+    assert!(near_xy(replayed(&run, "Ego_ghost", 0.5), 74.9, -1.25), "{:?}", xy(replayed(&run, "Ego_ghost", 0.5)));
+    assert!(near_xy(replayed(&run, "Ego_ghost", 1.02), 80.1, -1.25), "{:?}", xy(replayed(&run, "Ego_ghost", 1.02)));
     for t in [-0.97, 0.5, 1.02] {
         let e = replayed(&run, "Ego", t);
         assert!(near_xy(e, 60.199, -1.75) && close(e.speed, 9.9, 1e-9), "t = {t}: {:?}", xy(e));
@@ -102,18 +89,11 @@ fn an_event_after_time_zero_restarts_the_ghost_and_time_runs_again() {
     let csv = run.trace.to_csv(&[]);
     let a = csv.find("1.020,Ego_ghost,60.1000").expect("restart row");
     let b = a + csv[a..].find("-0.970,Ego_ghost,60.2000").expect("replayed row after it");
-    assert!(
-        csv[a..b].lines().count() == 3,
-        "the replay follows the row of 1.02 s (ghost 1.02, Ego and Target −0.97)"
-    );
+    assert!(csv[a..b].lines().count() == 3, "the replay follows the row of 1.02 s (ghost 1.02, Ego and Target −0.97)");
     // And the run says so, at the condition.
     let w = restart_notes(&run);
     assert_eq!(w.len(), 1, "{:?}", run.warnings);
-    assert!(
-        w[0].contains("condition `near`") && w[0].contains("event `Drift`") && w[0].contains("test.xosc:"),
-        "{}",
-        w[0]
-    );
+    assert!(w[0].contains("condition `near`") && w[0].contains("event `Drift`") && w[0].contains("test.xosc:"), "{}", w[0]);
 }
 
 #[test]
@@ -146,10 +126,7 @@ fn a_later_restart_makes_completed_restart_events_ready_again() {
         "Drift2",
         "parallel",
         r#"<PrivateAction><LateralAction><LaneOffsetAction continuous="false"><LaneOffsetActionDynamics maxLateralAcc="2" dynamicsShape="cubic"/><LaneOffsetTarget><AbsoluteTargetLaneOffset value="-0.5"/></LaneOffsetTarget></LaneOffsetAction></LateralAction></PrivateAction>"#,
-        &format!(
-            "<StartTrigger>{}</StartTrigger>",
-            group(&near(215.0).replace("name=\"near\"", "name=\"near2\""))
-        ),
+        &format!("<StartTrigger>{}</StartTrigger>", group(&near(215.0).replace("name=\"near\"", "name=\"near2\""))),
     );
     let text = ghost_scenario(&group(&near(240.0))).replacen("</Event></Maneuver>", &format!("</Event>{drift2}</Maneuver>"), 1);
     let run = run(&text);

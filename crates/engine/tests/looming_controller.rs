@@ -51,7 +51,9 @@ fn the_steering_wobbles_as_esmini_when_the_lead_becomes_the_far_point() {
 }
 
 fn corpus_run(name: &str) -> Option<Run> {
-    let shared = std::env::var_os("OSC2CR_SHARED").map(std::path::PathBuf::from).unwrap_or_else(|| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared"));
+    let shared = std::env::var_os("OSC2CR_SHARED")
+        .map(std::path::PathBuf::from)
+        .unwrap_or_else(|| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared"));
     let path = shared.join("corpus/esmini-unittest/EnvironmentSimulator/Unittest/xosc").join(name);
     let Ok((scenario, _)) = openscenario::load_scenario(&path, &Default::default()) else {
         eprintln!("corpus not found: test skipped");
@@ -81,7 +83,8 @@ fn looming_advanced_test_goes_through_the_junction_as_esmini() {
     // line gives. The run ends at the end of the road at 41.38 s.
     let Some(r) = corpus_run("loomingAdvancedTest.xosc") else { return };
     assert_eq!(event_time(&r, "Event", "start"), Some(21.09));
-    for (t, x, y) in [(10.0, -257.1052, 15.0229), (20.0, -112.8317, 10.9837), (29.15, 18.7197, -1.5799), (35.0, 101.5878, -1.5010), (41.38, 190.1904, -1.5004)] {
+    for (t, x, y) in [(10.0, -257.1052, 15.0229), (20.0, -112.8317, 10.9837), (29.15, 18.7197, -1.5799), (35.0, 101.5878, -1.5010), (41.38, 190.1904, -1.5004)]
+    {
         let s = at(&r, "Ego", t);
         assert!(close(s.x, x, 0.01) && close(s.y, y, 0.01), "at {t} s: {s:?}, esmini ({x}, {y})");
     }

@@ -10,7 +10,9 @@ fn stop(t: f64) -> String {
 }
 
 fn long_distance(attrs: &str, constraints: &str) -> String {
-    format!(r#"<PrivateAction><LongitudinalAction><LongitudinalDistanceAction entityRef="Target" {attrs}>{constraints}</LongitudinalDistanceAction></LongitudinalAction></PrivateAction>"#)
+    format!(
+        r#"<PrivateAction><LongitudinalAction><LongitudinalDistanceAction entityRef="Target" {attrs}>{constraints}</LongitudinalDistanceAction></LongitudinalAction></PrivateAction>"#
+    )
 }
 
 fn scenario(action: &str) -> String {

@@ -47,7 +47,8 @@ fn route_position_against_s_faces_the_route_direction() {
 fn assign_route_and_acquire_position_complete_at_once_and_warn_about_nothing() {
     let r = route(&[(10.0, -1), (500.0, -1)]);
     let assign = format!(r#"<PrivateAction><RoutingAction><AssignRouteAction>{r}</AssignRouteAction></RoutingAction></PrivateAction>"#);
-    let acquire = format!(r#"<PrivateAction><RoutingAction><AcquirePositionAction>{}</AcquirePositionAction></RoutingAction></PrivateAction>"#, lane(300.0, -1));
+    let acquire =
+        format!(r#"<PrivateAction><RoutingAction><AcquirePositionAction>{}</AcquirePositionAction></RoutingAction></PrivateAction>"#, lane(300.0, -1));
     let init = format!(r#"{}<Private entityRef="Ego">{assign}{}</Private>"#, teleport("Ego", 10.0, -1), speed_action("step", "time", 0.0, 10.0));
     let stories = story("Ego", &event("Acquire", "overwrite", &acquire, &trigger(&sim_time(1.0, "greaterThan", "none", 0.0))));
     let run = run(&xosc(&init, &stories, &stop_at(3.0)));

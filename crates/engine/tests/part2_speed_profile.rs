@@ -6,7 +6,9 @@ use common::*;
 
 fn profile(mode: &str, constraints: &str, entries: &[(f64, f64)]) -> String {
     let e: String = entries.iter().map(|(v, t)| format!(r#"<SpeedProfileEntry speed="{v}" time="{t}"/>"#)).collect();
-    format!(r#"<PrivateAction><LongitudinalAction><SpeedProfileAction followingMode="{mode}">{constraints}{e}</SpeedProfileAction></LongitudinalAction></PrivateAction>"#)
+    format!(
+        r#"<PrivateAction><LongitudinalAction><SpeedProfileAction followingMode="{mode}">{constraints}{e}</SpeedProfileAction></LongitudinalAction></PrivateAction>"#
+    )
 }
 
 fn run_profile(action: &str, stop: f64) -> engine::Run {

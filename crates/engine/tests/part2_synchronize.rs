@@ -25,7 +25,8 @@ fn scenario(target_speed: f64, final_speed: &str) -> String {
         teleport("Target", 50.0, -2),
         init_speed("Target", "step", "time", 0.0, target_speed)
     );
-    let stories = story("Target", &event("Sync", "overwrite", &synchronize(110.0, 150.0, final_speed), &trigger(&sim_time(0.0, "greaterOrEqual", "none", 0.0))));
+    let stories =
+        story("Target", &event("Sync", "overwrite", &synchronize(110.0, 150.0, final_speed), &trigger(&sim_time(0.0, "greaterOrEqual", "none", 0.0))));
     xosc(&init, &stories, &format!("<ConditionGroup>{}</ConditionGroup>", sim_time(15.0, "greaterThan", "none", 0.0)))
 }
 

@@ -22,10 +22,7 @@ fn vehicle(name: &str, category: &str, extra: &str) -> String {
 
 /// Entities: Car (with a hitch; towing `Trailer` from the start when `linked`) and Trailer.
 fn scenario(linked: bool, road: bool, init: &str, stories: &str, stop: f64) -> String {
-    let tow_extra = format!(
-        r#"<TrailerHitch dx="{HITCH}"/>{}"#,
-        if linked { r#"<Trailer><TrailerRef entityRef="Trailer"/></Trailer>"# } else { "" }
-    );
+    let tow_extra = format!(r#"<TrailerHitch dx="{HITCH}"/>{}"#, if linked { r#"<Trailer><TrailerRef entityRef="Trailer"/></Trailer>"# } else { "" });
     let trailer_extra = format!(r#"<TrailerCoupler dx="{COUPLER}"/>"#);
     format!(
         r#"<?xml version="1.0" encoding="UTF-8"?>
@@ -86,11 +83,7 @@ fn articulation_in_a_constant_radius_turn_approaches_the_closed_form_steady_stat
         r#"<PrivateAction><RoutingAction><FollowTrajectoryAction><Trajectory closed="false" name="circle"><Shape><Clothoid curvature="{}" curvatureDot="0" length="{len}"><Position><WorldPosition x="0" y="0" h="0"/></Position></Clothoid></Shape></Trajectory><TimeReference><None/></TimeReference><TrajectoryFollowingMode followingMode="position"/></FollowTrajectoryAction></RoutingAction></PrivateAction>"#,
         1.0 / r
     );
-    let init = format!(
-        r#"{}<Private entityRef="Car">{}{follow}</Private>"#,
-        world("Car", 0.0, 0.0, 0.0),
-        speed_action("step", "time", 0.0, 5.0)
-    );
+    let init = format!(r#"{}<Private entityRef="Car">{}{follow}</Private>"#, world("Car", 0.0, 0.0, 0.0), speed_action("step", "time", 0.0, 5.0));
     let run = run_no_road(&scenario(true, false, &init, "", 40.0));
     let rh = (r * r + HITCH * HITCH).sqrt();
     let rt = (rh * rh - COUPLER * COUPLER).sqrt();
@@ -120,9 +113,19 @@ fn connect_puts_the_coupler_on_the_hitch_and_disconnect_leaves_the_trailer_stand
     let init = format!("{}{}", teleport("Car", 20.0, -1), teleport("Trailer", 20.0 + HITCH - COUPLER - 2.0, -1));
     let events = format!(
         "{}{}{}",
-        event("Connect", "parallel", r#"<PrivateAction><TrailerAction><ConnectTrailerAction trailerRef="Trailer"/></TrailerAction></PrivateAction>"#, &trigger(&sim_time(0.5, "greaterThan", "rising", 0.0))),
+        event(
+            "Connect",
+            "parallel",
+            r#"<PrivateAction><TrailerAction><ConnectTrailerAction trailerRef="Trailer"/></TrailerAction></PrivateAction>"#,
+            &trigger(&sim_time(0.5, "greaterThan", "rising", 0.0))
+        ),
         event("Go", "parallel", &speed_action("step", "time", 0.0, 2.0), &trigger(&sim_time(1.0, "greaterThan", "rising", 0.0))),
-        event("Disconnect", "parallel", r#"<PrivateAction><TrailerAction><DisconnectTrailerAction/></TrailerAction></PrivateAction>"#, &trigger(&sim_time(3.0, "greaterThan", "rising", 0.0))),
+        event(
+            "Disconnect",
+            "parallel",
+            r#"<PrivateAction><TrailerAction><DisconnectTrailerAction/></TrailerAction></PrivateAction>"#,
+            &trigger(&sim_time(3.0, "greaterThan", "rising", 0.0))
+        ),
     );
     let run = run(&scenario(false, true, &init, &story("Car", &events), 5.0));
     let before = at(&run, "Trailer", 0.4);

@@ -86,7 +86,11 @@ fn untimed_polyline_ends_at_its_last_vertex_and_the_entity_drives_on() {
 
 #[test]
 fn trajectory_position_is_s_along_and_t_left_of_the_path() {
-    let traj = format!(r#"<Trajectory name="P" closed="false"><ParameterDeclarations/><Shape><Polyline>{}{}</Polyline></Shape></Trajectory>"#, vertex(None, 0.0, 0.0), vertex(None, 100.0, 0.0));
+    let traj = format!(
+        r#"<Trajectory name="P" closed="false"><ParameterDeclarations/><Shape><Polyline>{}{}</Polyline></Shape></Trajectory>"#,
+        vertex(None, 0.0, 0.0),
+        vertex(None, 100.0, 0.0)
+    );
     let init = format!(
         r#"<Private entityRef="Ego"><PrivateAction><TeleportAction><Position><TrajectoryPosition s="30" t="-1.75"><TrajectoryRef>{traj}</TrajectoryRef></TrajectoryPosition></Position></TeleportAction></PrivateAction></Private>"#
     );

@@ -21,7 +21,12 @@ fn acquire(s: f64, lane: i32) -> String {
 }
 
 fn scenario(actions: &str) -> String {
-    let init = format!(r#"{}<Private entityRef="Ego">{}{actions}</Private>{}"#, teleport("Ego", 10.0, -2), speed_action("step", "time", 0.0, 10.0), teleport("Target", 500.0, -1));
+    let init = format!(
+        r#"{}<Private entityRef="Ego">{}{actions}</Private>{}"#,
+        teleport("Ego", 10.0, -2),
+        speed_action("step", "time", 0.0, 10.0),
+        teleport("Target", 500.0, -1)
+    );
     xosc(&init, "", &format!("<ConditionGroup>{}</ConditionGroup>", sim_time(8.0, "greaterThan", "none", 0.0)))
 }
 

@@ -26,8 +26,14 @@ fn activate(entity: &str) -> String {
 /// Give the Ego (the first ScenarioObject) an ALKSController with `properties` and the limits
 /// 5 m/s² / 10 m/s².
 fn with_alks(text: String, properties: &str) -> String {
-    let controller = format!(r#"<ObjectController><Controller name="ALKSController"><Properties>{properties}</Properties></Controller></ObjectController></ScenarioObject>"#);
-    text.replacen(r#"maxAcceleration="200" maxDeceleration="200""#, r#"maxAcceleration="5" maxDeceleration="10""#, 1).replacen("</ScenarioObject>", &controller, 1)
+    let controller = format!(
+        r#"<ObjectController><Controller name="ALKSController"><Properties>{properties}</Properties></Controller></ObjectController></ScenarioObject>"#
+    );
+    text.replacen(r#"maxAcceleration="200" maxDeceleration="200""#, r#"maxAcceleration="5" maxDeceleration="10""#, 1).replacen(
+        "</ScenarioObject>",
+        &controller,
+        1,
+    )
 }
 
 fn settings(max_time: f64) -> engine::Settings {

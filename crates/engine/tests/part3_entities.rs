@@ -95,7 +95,8 @@ fn entity_conditions_skip_a_deleted_entity() {
         )
     };
     let noop = r#"<GlobalAction><ParameterAction parameterRef="X"><SetAction value="1"/></ParameterAction></GlobalAction>"#;
-    let watch_any = event("WatchAny", "parallel", noop, &trigger(&format!("{}{}", sim_time(3.0, "greaterOrEqual", "none", 0.0), speed_cond("any", &["Target"]))));
+    let watch_any =
+        event("WatchAny", "parallel", noop, &trigger(&format!("{}{}", sim_time(3.0, "greaterOrEqual", "none", 0.0), speed_cond("any", &["Target"]))));
     let watch_all =
         event("WatchAll", "parallel", noop, &trigger(&format!("{}{}", sim_time(3.0, "greaterOrEqual", "none", 0.0), speed_cond("all", &["Ego", "Target"]))));
     let r = delete_and_add(&format!("{watch_any}{watch_all}"));
@@ -138,11 +139,7 @@ fn target_story_while_away(events: &str) -> Run {
     );
     let globals = story(
         "Ego",
-        &format!(
-            "{}{}",
-            event("Delete", "parallel", &delete("Target"), &at_time(2.0)),
-            event("Add", "parallel", &add("Target", 300.0, -2), &at_time(5.0))
-        ),
+        &format!("{}{}", event("Delete", "parallel", &delete("Target"), &at_time(2.0)), event("Add", "parallel", &add("Target", 300.0, -2), &at_time(5.0))),
     );
     run(&xosc(&init(), &format!("{target_story}{globals}"), &stop(7.0)))
 }
@@ -193,10 +190,7 @@ fn an_entity_deleted_in_init_first_exists_when_added() {
     // lane -2 at s = 50 with its Init speed (10 m/s); the teleport's "moved" mark, never
     // cleared while it was away (ScenarioEngine::SwapAndClearDirtyBits clears active
     // entities only), keeps it at 50 m in the add step: 50 + 10 · 0.49 = 54.9 m at 1.50 s.
-    let init = format!(
-        r#"<GlobalAction><EntityAction entityRef="Target"><DeleteEntityAction/></EntityAction></GlobalAction>{}"#,
-        init()
-    );
+    let init = format!(r#"<GlobalAction><EntityAction entityRef="Target"><DeleteEntityAction/></EntityAction></GlobalAction>{}"#, init());
     let events = event("Add", "parallel", &add("Target", 50.0, -2), &at_time(1.0));
     let r = run(&xosc(&init, &story("Ego", &events), &stop(2.0)));
     for k in 0..=100 {

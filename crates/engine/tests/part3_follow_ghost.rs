@@ -35,7 +35,6 @@ fn ghost_scenario(speed: f64, events: &str, end: f64) -> String {
     with_controller(xosc(&init, &stories, &stop(end)), &follow_ghost_props())
 }
 
-
 fn settings(max: f64) -> engine::Settings {
     engine::Settings { step: 0.01, max_time: max }
 }

@@ -44,7 +44,9 @@ fn arc(curvature: f64, length: f64) -> String {
 /// The T (and, with `straight`, a fourth arm straight on).
 fn network(straight: bool) -> opendrive::RoadNetwork {
     let quarter = 5.0 * std::f64::consts::PI; // a quarter circle of radius 10
-    let into = |to: &str| format!(r#"<predecessor elementType="road" elementId="1" contactPoint="end"/><successor elementType="road" elementId="{to}" contactPoint="start"/>"#);
+    let into = |to: &str| {
+        format!(r#"<predecessor elementType="road" elementId="1" contactPoint="end"/><successor elementType="road" elementId="{to}" contactPoint="start"/>"#)
+    };
     let from_junction = r#"<predecessor elementType="junction" elementId="100"/>"#;
     let mut roads = vec![
         road("1", "-1", 50.0, r#"<successor elementType="junction" elementId="100"/>"#, &line(0.0, 0.0, 0.0, 50.0)),
@@ -81,7 +83,8 @@ fn drive(straight: bool, seed: u32) -> engine::Sample {
     let loaded = openscenario::load_str(&fixtures().join("t_junction.xosc"), &text, &Default::default()).expect("test scenario loads");
     let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
     let net = network(straight);
-    let run = engine::simulate_with(&scenario, Some(&net), &Settings { step: 0.01, max_time: 5.0 }, &engine::RunControl { seed, deadline: None }).expect("simulate");
+    let run =
+        engine::simulate_with(&scenario, Some(&net), &Settings { step: 0.01, max_time: 5.0 }, &engine::RunControl { seed, deadline: None }).expect("simulate");
     at(&run, "Ego", 5.0)
 }
 

@@ -29,7 +29,12 @@ fn light_states_are_kept_with_their_time_and_a_warning() {
     let events = format!(
         "{}{}",
         event("Low", "parallel", &light("lowBeam", "on", ""), &trigger(&sim_time(1.0, "greaterOrEqual", "none", 0.0))),
-        event("Blink", "parallel", &light("indicatorLeft", "flashing", r#" flashingOnDuration="0.4" flashingOffDuration="0.6""#), &trigger(&sim_time(2.0, "greaterOrEqual", "none", 0.0))),
+        event(
+            "Blink",
+            "parallel",
+            &light("indicatorLeft", "flashing", r#" flashingOnDuration="0.4" flashingOffDuration="0.6""#),
+            &trigger(&sim_time(2.0, "greaterOrEqual", "none", 0.0))
+        ),
     );
     let r = run(&xosc(&init, &story("Ego", &events), &stop(3.0)));
     assert_eq!(r.lights.len(), 2, "{:?}", r.lights);

@@ -38,8 +38,14 @@ fn dh(a: f64, b: f64) -> f64 {
 fn negative_speed_follows_the_polyline_facing_backwards() {
     // Path: (10, −1.75) → (60, −1.75) → (60, 48.25), a left corner at s = 50. Speed −5 m/s:
     // s = 5 t along the path.
-    let shape = format!("<Polyline><Vertex>{}</Vertex><Vertex>{}</Vertex><Vertex>{}</Vertex></Polyline>", world(10.0, -1.75), world(60.0, -1.75), world(60.0, 48.25));
-    let init = format!(r#"{}<Private entityRef="Ego">{}{}</Private>"#, teleport("Ego", 10.0, -1), speed_action("step", "time", 0.0, -5.0), follow(false, &shape, "<None/>"));
+    let shape =
+        format!("<Polyline><Vertex>{}</Vertex><Vertex>{}</Vertex><Vertex>{}</Vertex></Polyline>", world(10.0, -1.75), world(60.0, -1.75), world(60.0, 48.25));
+    let init = format!(
+        r#"{}<Private entityRef="Ego">{}{}</Private>"#,
+        teleport("Ego", 10.0, -1),
+        speed_action("step", "time", 0.0, -5.0),
+        follow(false, &shape, "<None/>")
+    );
     let run = run(&xosc(&init, "", &stop_at(15.0)));
     // t = 4: s = 20 on the first segment (heading 0): (30, −1.75), facing π.
     let e = at(&run, "Ego", 4.0);
@@ -69,15 +75,7 @@ fn a_timed_path_marked_closed_ends_at_its_end_not_at_its_start() {
     let shape = format!(r#"<Nurbs order="3">{}{}{}{knots}</Nurbs>"#, cp(0.0, 10.0), cp(2.0, 30.0), cp(4.0, 50.0));
     let timing = r#"<Timing domainAbsoluteRelative="relative" scale="1" offset="0"/>"#;
     let init = format!(r#"{}<Private entityRef="Ego">{}</Private>"#, teleport("Ego", 10.0, -1), follow(true, &shape, timing));
-    let stories = story(
-        "Ego",
-        &event(
-            "Stop",
-            "override",
-            &speed_action("step", "time", 0.0, 0.0),
-            &trigger(&sim_time(4.0, "greaterOrEqual", "none", 0.0)),
-        ),
-    );
+    let stories = story("Ego", &event("Stop", "override", &speed_action("step", "time", 0.0, 0.0), &trigger(&sim_time(4.0, "greaterOrEqual", "none", 0.0))));
     let run = run(&xosc(&init, &stories, &stop_at(6.0)));
     let e = at(&run, "Ego", 4.0);
     assert!(close(e.x, 50.0, 1e-6) && close(e.y, -1.75, 1e-6), "{e:?}");
@@ -93,8 +91,14 @@ fn started_reversing_it_comes_back_along_the_path_once_the_speed_turns_positive(
     // heading sign): s = 5 t up to t = 4, then back by 5 m/s, so s = 0 at t = 8 where the
     // action ends; the default controller then drives on in the entity's heading (−x).
     let shape = format!("<Polyline><Vertex>{}</Vertex><Vertex>{}</Vertex></Polyline>", world(10.0, -1.75), world(60.0, -1.75));
-    let init = format!(r#"{}<Private entityRef="Ego">{}{}</Private>"#, teleport("Ego", 10.0, -1), speed_action("step", "time", 0.0, -5.0), follow(false, &shape, "<None/>"));
-    let stories = story("Ego", &event("Forward", "overwrite", &speed_action("step", "time", 0.0, 5.0), &trigger(&sim_time(4.0, "greaterOrEqual", "none", 0.0))));
+    let init = format!(
+        r#"{}<Private entityRef="Ego">{}{}</Private>"#,
+        teleport("Ego", 10.0, -1),
+        speed_action("step", "time", 0.0, -5.0),
+        follow(false, &shape, "<None/>")
+    );
+    let stories =
+        story("Ego", &event("Forward", "overwrite", &speed_action("step", "time", 0.0, 5.0), &trigger(&sim_time(4.0, "greaterOrEqual", "none", 0.0))));
     let run = run(&xosc(&init, &stories, &stop_at(12.0)));
     for (t, x) in [(4.0, 30.0), (6.0, 20.0), (7.99, 10.05), (8.0, 10.0), (8.02, 9.9), (9.0, 5.0)] {
         let e = at(&run, "Ego", t);
@@ -110,7 +114,12 @@ fn reversing_along_vertices_with_explicit_headings_is_a_positioned_warning() {
     // run on this scenario). osc2cr does not model that and says so.
     let v = |x: f64| format!(r#"<Position><WorldPosition x="{x}" y="-1.75" z="0" h="0"/></Position>"#);
     let shape = format!("<Polyline><Vertex>{}</Vertex><Vertex>{}</Vertex></Polyline>", v(10.0), v(60.0));
-    let init = format!(r#"{}<Private entityRef="Ego">{}{}</Private>"#, teleport("Ego", 10.0, -1), speed_action("step", "time", 0.0, -5.0), follow(false, &shape, "<None/>"));
+    let init = format!(
+        r#"{}<Private entityRef="Ego">{}{}</Private>"#,
+        teleport("Ego", 10.0, -1),
+        speed_action("step", "time", 0.0, -5.0),
+        follow(false, &shape, "<None/>")
+    );
     let run = run(&xosc(&init, "", &stop_at(2.0)));
     let w: Vec<_> = run.warnings.iter().filter(|w| w.message.contains("explicit vertex headings")).collect();
     assert_eq!(w.len(), 1, "{:?}", run.warnings);

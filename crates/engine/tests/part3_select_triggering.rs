@@ -8,12 +8,7 @@ use common::*;
 use engine::Run;
 
 fn init() -> String {
-    format!(
-        "{}{}{}",
-        teleport("Ego", 100.0, -1),
-        init_speed("Ego", "step", "time", 0.0, 10.0),
-        teleport("Target", 50.0, -2)
-    )
+    format!("{}{}{}", teleport("Ego", 100.0, -1), init_speed("Ego", "step", "time", 0.0, 10.0), teleport("Target", 50.0, -2))
 }
 
 fn act_trigger() -> String {

@@ -39,19 +39,27 @@ fn run_signals(init: &str, stories: &str, controllers: bool, max_time: f64) -> R
 }
 
 fn state_action(signal: &str, state: &str) -> String {
-    format!(r#"<GlobalAction><InfrastructureAction><TrafficSignalAction><TrafficSignalStateAction name="{signal}" state="{state}"/></TrafficSignalAction></InfrastructureAction></GlobalAction>"#)
+    format!(
+        r#"<GlobalAction><InfrastructureAction><TrafficSignalAction><TrafficSignalStateAction name="{signal}" state="{state}"/></TrafficSignalAction></InfrastructureAction></GlobalAction>"#
+    )
 }
 
 fn phase_action(controller: &str, phase: &str) -> String {
-    format!(r#"<GlobalAction><InfrastructureAction><TrafficSignalAction><TrafficSignalControllerAction trafficSignalControllerRef="{controller}" phase="{phase}"/></TrafficSignalAction></InfrastructureAction></GlobalAction>"#)
+    format!(
+        r#"<GlobalAction><InfrastructureAction><TrafficSignalAction><TrafficSignalControllerAction trafficSignalControllerRef="{controller}" phase="{phase}"/></TrafficSignalAction></InfrastructureAction></GlobalAction>"#
+    )
 }
 
 fn signal_condition(signal: &str, state: &str, edge: &str, delay: f64) -> String {
-    format!(r#"<Condition name="sig" delay="{delay}" conditionEdge="{edge}"><ByValueCondition><TrafficSignalCondition name="{signal}" state="{state}"/></ByValueCondition></Condition>"#)
+    format!(
+        r#"<Condition name="sig" delay="{delay}" conditionEdge="{edge}"><ByValueCondition><TrafficSignalCondition name="{signal}" state="{state}"/></ByValueCondition></Condition>"#
+    )
 }
 
 fn phase_condition(controller: &str, phase: &str, edge: &str) -> String {
-    format!(r#"<Condition name="ph" delay="0" conditionEdge="{edge}"><ByValueCondition><TrafficSignalControllerCondition trafficSignalControllerRef="{controller}" phase="{phase}"/></ByValueCondition></Condition>"#)
+    format!(
+        r#"<Condition name="ph" delay="0" conditionEdge="{edge}"><ByValueCondition><TrafficSignalControllerCondition trafficSignalControllerRef="{controller}" phase="{phase}"/></ByValueCondition></Condition>"#
+    )
 }
 
 /// The (time, state) changes of `signal` in the trace.

@@ -22,7 +22,8 @@ fn teleport_to(pos: &str) -> String {
 
 /// Ego at s = 100 on `lane`, turned by `h` from its lane's direction; Target teleported three times.
 fn scenario(lane: i32, h: f64) -> engine::Run {
-    let ego = format!(r#"<Position><LanePosition roadId="1" laneId="{lane}" offset="0" s="100"><Orientation type="relative" h="{h}"/></LanePosition></Position>"#);
+    let ego =
+        format!(r#"<Position><LanePosition roadId="1" laneId="{lane}" offset="0" s="100"><Orientation type="relative" h="{h}"/></LanePosition></Position>"#);
     let init = format!(r#"<Private entityRef="Ego">{}</Private>{}"#, teleport_to(&ego), teleport("Target", 300.0, -1));
     let moves = [(1.0, rel(-1, "ds", 3.0)), (2.0, rel(1, "dsLane", 5.0)), (3.0, rel(0, "dsLane", -4.0))];
     let events: String = moves

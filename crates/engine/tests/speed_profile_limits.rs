@@ -13,7 +13,11 @@ fn an_entry_too_steep_for_the_limit_is_stretched_to_it() {
     let action = format!(
         r#"<PrivateAction><LongitudinalAction><SpeedProfileAction followingMode="follow">{c}<SpeedProfileEntry speed="10.0" time="2.0"/><SpeedProfileEntry speed="10.0" time="10.0"/></SpeedProfileAction></LongitudinalAction></PrivateAction>"#
     );
-    let init = format!(r#"<Private entityRef="Ego"><PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction>{action}</Private>{}"#, lane_pos(10.0, -1), teleport("Target", 500.0, 1));
+    let init = format!(
+        r#"<Private entityRef="Ego"><PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction>{action}</Private>{}"#,
+        lane_pos(10.0, -1),
+        teleport("Target", 500.0, 1)
+    );
     let stop = format!("<ConditionGroup>{}</ConditionGroup>", sim_time(14.0, "greaterThan", "none", 0.0));
     let run = run(&xosc(&init, "", &stop));
     assert!(close(at(&run, "Ego", 0.5).speed, 0.25, 1e-9), "{}", at(&run, "Ego", 0.5).speed);

@@ -41,7 +41,11 @@ fn relative_road_across() -> String {
         r#"<Private entityRef="Target"><PrivateAction><TeleportAction><Position><RelativeRoadPosition entityRef="Ego" ds="20" dt="3.5"/></Position></TeleportAction></PrivateAction>{}</Private>"#,
         speed_action("step", "time", 0.0, 5.0)
     );
-    xosc(&format!("{}{}", one_private("Ego", 100.0, -1, 10.0), target), "", &format!("<ConditionGroup>{}</ConditionGroup>", sim_time(2.0, "greaterThan", "none", 0.0)))
+    xosc(
+        &format!("{}{}", one_private("Ego", 100.0, -1, 10.0), target),
+        "",
+        &format!("<ConditionGroup>{}</ConditionGroup>", sim_time(2.0, "greaterThan", "none", 0.0)),
+    )
 }
 
 #[test]

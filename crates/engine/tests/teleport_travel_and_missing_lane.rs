@@ -36,7 +36,12 @@ fn a_relative_lane_that_does_not_exist_keeps_the_reference_lane() {
 /// Ego at 10 m/s on lane -1 from s = 0; at 1 s it is teleported 500 m ahead; an event waits for
 /// 15 m of travel. Driving gives 10 m by 1 s, the teleport none, so the event fires after 1.5 s.
 pub fn teleport_travel_scenario() -> String {
-    let hop = event("Hop", "parallel", &format!("<PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction>", lane_pos(510.0, -1)), &trigger(&sim_time(1.0, "greaterOrEqual", "none", 0.0)));
+    let hop = event(
+        "Hop",
+        "parallel",
+        &format!("<PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction>", lane_pos(510.0, -1)),
+        &trigger(&sim_time(1.0, "greaterOrEqual", "none", 0.0)),
+    );
     let far = r#"<Condition name="d" delay="0" conditionEdge="none"><ByEntityCondition><TriggeringEntities triggeringEntitiesRule="any"><EntityRef entityRef="Ego"/></TriggeringEntities><EntityCondition><TraveledDistanceCondition value="15"/></EntityCondition></ByEntityCondition></Condition>"#;
     let stop_car = event("Far", "parallel", &speed_action("step", "time", 0.0, 0.0), &trigger(far));
     xosc(

@@ -12,7 +12,8 @@ fn median(v: &mut [Duration]) -> Duration {
 }
 
 fn main() {
-    let shared = std::env::var_os("OSC2CR_SHARED").map(std::path::PathBuf::from).unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared"));
+    let shared =
+        std::env::var_os("OSC2CR_SHARED").map(std::path::PathBuf::from).unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared"));
     let files = testkit::files_with_ext(&shared.join("corpus"), "xodr");
     if files.is_empty() {
         eprintln!("notice: no corpus maps under {}; nothing to time", shared.display());

@@ -50,7 +50,11 @@ pub fn section_cut(road: &Road, sec_idx: usize, s: f64) -> SectionCut {
             } else if let Some(b) = record_at(&lane.borders, ds) {
                 let raw = base + b.value(ds - b.s);
                 // never on the inner side of the inner border
-                if sign * (raw - inner) < 0.0 { inner } else { raw }
+                if sign * (raw - inner) < 0.0 {
+                    inner
+                } else {
+                    raw
+                }
             } else {
                 inner
             };

@@ -74,12 +74,8 @@ pub fn intersections(net: &RoadNetwork, built: &Built, ids: &mut IdAllocator) ->
             if junction_of(i).is_some() || !vehicular(i) {
                 continue;
             }
-            let into: Vec<usize> = l
-                .successors
-                .iter()
-                .filter_map(|s| pos_of.get(s).copied())
-                .filter(|&k| junction_of(k) == Some(j.id.as_str()) && vehicular(k))
-                .collect();
+            let into: Vec<usize> =
+                l.successors.iter().filter_map(|s| pos_of.get(s).copied()).filter(|&k| junction_of(k) == Some(j.id.as_str()) && vehicular(k)).collect();
             if into.is_empty() {
                 continue;
             }

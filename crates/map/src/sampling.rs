@@ -83,11 +83,7 @@ fn dist_to_segment(p: P2, a: P2, b: P2) -> f64 {
 }
 
 fn deviation(a: &Station, b: &Station, m: &Station) -> f64 {
-    m.points
-        .iter()
-        .zip(a.points.iter().zip(&b.points))
-        .map(|(&p, (&pa, &pb))| dist_to_segment(p, pa, pb))
-        .fold(0.0, f64::max)
+    m.points.iter().zip(a.points.iter().zip(&b.points)).map(|(&p, (&pa, &pb))| dist_to_segment(p, pa, pb)).fold(0.0, f64::max)
 }
 
 struct Refiner<'a> {

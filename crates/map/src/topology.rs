@@ -28,7 +28,11 @@ const MAX_PASS_THROUGH: u32 = 4;
 
 /// Contact (in s terms of the lane's own section) where a lanelet begins / ends.
 fn start_contact(along_s: bool) -> ContactPoint {
-    if along_s { ContactPoint::Start } else { ContactPoint::End }
+    if along_s {
+        ContactPoint::Start
+    } else {
+        ContactPoint::End
+    }
 }
 
 /// The end of `target`'s section reached when leaving `lane` through `end`.
@@ -60,7 +64,11 @@ fn arrival_contact(net: &RoadNetwork, lane: LaneRef, end: ContactPoint, target: 
         let p = troad.reference_pose(s);
         (p.x - here.x).hypot(p.y - here.y)
     };
-    if d(0.0) <= d(troad.length) { ContactPoint::Start } else { ContactPoint::End }
+    if d(0.0) <= d(troad.length) {
+        ContactPoint::Start
+    } else {
+        ContactPoint::End
+    }
 }
 
 /// Lanes (with the end of their section that is reached) continuing `lane` through `end`,
@@ -116,7 +124,11 @@ pub fn link(net: &RoadNetwork, built: &mut Built, warn: &mut WarningSink) {
             let keep = link_gap(a, b) <= MAX_LINK_GAP;
             if !keep {
                 let pos = built.origins.get(i).and_then(|o| net.roads.get(o.lane.road)).map(|r| r.pos).unwrap_or_default();
-                warn.count(&format!("lane links dropped: the lanes' ends are more than {MAX_LINK_GAP} m apart (e.g. a lane closing to zero width)"), &net.file, pos);
+                warn.count(
+                    &format!("lane links dropped: the lanes' ends are more than {MAX_LINK_GAP} m apart (e.g. a lane closing to zero width)"),
+                    &net.file,
+                    pos,
+                );
             }
             keep
         });

@@ -17,7 +17,8 @@ fn check(path: &std::path::Path) -> (usize, f64) {
             let s = s0 + (s1 - s0) * k as f64 / 400.0;
             let b = road.lane_borders(o.lane.section, o.lane.lane, s).unwrap();
             // every lane inward must have non-negative width for the unclamped form to apply
-            let side_ok = road.side_borders(o.lane.section, o.lane.lane > 0, s).iter().all(|(_, bb)| (bb.outer - bb.inner) * (o.lane.lane.signum() as f64) >= 0.0);
+            let side_ok =
+                road.side_borders(o.lane.section, o.lane.lane > 0, s).iter().all(|(_, bb)| (bb.outer - bb.inner) * (o.lane.lane.signum() as f64) >= 0.0);
             if !side_ok {
                 continue;
             }
@@ -44,7 +45,15 @@ fn example_bounds_within_1cm_of_exact_borders() {
 #[test]
 fn corpus_bounds_within_1cm_of_exact_borders() {
     // lines, arcs, spirals, paramPoly3, poly3, lane offsets, width changes
-    for rel in ["esmini/xodr/curves.xodr", "esmini/xodr/e6mini.xodr", "esmini/xodr/fabriksgatan.xodr", "esmini/xodr/soderleden.xodr", "esmini/xodr/circle_300m.xodr", "esmini/scenario_construct_examples/scenario_nurb_curved_road.xodr", "osc-examples-1.3/Databases/AB_RQ31_R2000.xodr"] {
+    for rel in [
+        "esmini/xodr/curves.xodr",
+        "esmini/xodr/e6mini.xodr",
+        "esmini/xodr/fabriksgatan.xodr",
+        "esmini/xodr/soderleden.xodr",
+        "esmini/xodr/circle_300m.xodr",
+        "esmini/scenario_construct_examples/scenario_nurb_curved_road.xodr",
+        "osc-examples-1.3/Databases/AB_RQ31_R2000.xodr",
+    ] {
         let Some(p) = corpus(rel) else { return };
         let (n, worst) = check(&p);
         assert!(n > 1000, "{rel}: only {n} checks");

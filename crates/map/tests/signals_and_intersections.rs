@@ -36,7 +36,8 @@ fn straight_500m_signs() {
         (p.x - w.x).hypot(p.y - w.y) < 1e-9 && s.elements[0].additional_values[0].starts_with("8.33")
     });
     let sign9 = sign9.expect("sign 9");
-    let mut lanes: Vec<i32> = r.network.lanelets.iter().zip(&r.origins).filter(|(l, _)| l.traffic_sign_refs.contains(&sign9.id)).map(|(_, o)| o.lane.lane).collect();
+    let mut lanes: Vec<i32> =
+        r.network.lanelets.iter().zip(&r.origins).filter(|(l, _)| l.traffic_sign_refs.contains(&sign9.id)).map(|(_, o)| o.lane.lane).collect();
     lanes.sort();
     assert_eq!(lanes, vec![-3, -2, 1, 2, 3]);
 }
@@ -77,7 +78,8 @@ fn fabriksgatan_intersection_turns_checked_by_hand() {
     //   5: arc +0.108 L   6: arc −0.172 R   7: pp3 S   8: arc −0.174 R   9: pp3 S
     //  10: arc +0.101 L  11: arc −0.156 R  12: pp3 S  13: arc +0.108 L  14: pp3 S
     //  15: arc +0.107 L  16: arc −0.174 R
-    let expected = [("5", 'L'), ("6", 'R'), ("7", 'S'), ("8", 'R'), ("9", 'S'), ("10", 'L'), ("11", 'R'), ("12", 'S'), ("13", 'L'), ("14", 'S'), ("15", 'L'), ("16", 'R')];
+    let expected =
+        [("5", 'L'), ("6", 'R'), ("7", 'S'), ("8", 'R'), ("9", 'S'), ("10", 'L'), ("11", 'R'), ("12", 'S'), ("13", 'L'), ("14", 'S'), ("15", 'L'), ("16", 'R')];
     let id = |road: &str| r.lanelet_of[&opendrive::LaneRef { road: net.road_index(road).unwrap(), section: 0, lane: -1 }];
     let mut turn: BTreeMap<LaneletId, char> = BTreeMap::new();
     for inc in &inter.incomings {

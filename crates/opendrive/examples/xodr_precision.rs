@@ -8,7 +8,6 @@
 
 use std::path::{Path, PathBuf};
 
-
 fn median(v: &mut [f64]) -> f64 {
     if v.is_empty() {
         return f64::NAN;

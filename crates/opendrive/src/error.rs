@@ -47,9 +47,7 @@ impl Error {
     pub fn position(&self) -> Option<SourcePos> {
         match self {
             Error::Io { .. } => None,
-            Error::Xml { line, col, .. } | Error::Invalid { line, col, .. } => {
-                Some(SourcePos { line: *line, col: *col })
-            }
+            Error::Xml { line, col, .. } | Error::Invalid { line, col, .. } => Some(SourcePos { line: *line, col: *col }),
         }
     }
 }

@@ -18,7 +18,7 @@ pub mod projection;
 pub mod road_geometry;
 pub mod spatial_index;
 
-pub use driving_direction::{driving_heading, drives_along_s};
+pub use driving_direction::{drives_along_s, driving_heading};
 pub use error::{Error, SourcePos, Warning};
 pub use geometry::{CurvePose, Geometry, PRange, Shape};
 pub use links::{section_at_end, LaneRef, RoadEnd};

@@ -125,10 +125,9 @@ impl RoadNetwork {
     pub fn roads_at(&self, road: usize, end: ContactPoint) -> Vec<RoadEnd> {
         let Some(r) = self.roads.get(road) else { return Vec::new() };
         let mut out = match r.link_at(end) {
-            Some(l) if l.element_type == ElementType::Road => self
-                .road_index(&l.element_id)
-                .map(|o| vec![RoadEnd { road: o, contact: l.contact_point.unwrap_or(ContactPoint::Start) }])
-                .unwrap_or_default(),
+            Some(l) if l.element_type == ElementType::Road => {
+                self.road_index(&l.element_id).map(|o| vec![RoadEnd { road: o, contact: l.contact_point.unwrap_or(ContactPoint::Start) }]).unwrap_or_default()
+            }
             Some(l) => self.junction_hops(road, end, &l.element_id).into_iter().map(|h| h.other).collect(),
             None => Vec::new(),
         };

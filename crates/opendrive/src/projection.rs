@@ -112,16 +112,7 @@ impl RoadNetwork {
         let (lane_id, borders, lateral) = lane_at(r, section, s, t)?;
         let off_end = if along.abs() > END_TOLERANCE { along.abs() } else { 0.0 };
         let distance = if off_end > 0.0 || lateral > 0.0 { off_end.hypot(lateral) } else { 0.0 };
-        Some(LanePosition {
-            road,
-            section,
-            lane_id,
-            s,
-            t,
-            offset: t - borders.center(),
-            distance,
-            heading: r.reference_pose(s).hdg,
-        })
+        Some(LanePosition { road, section, lane_id, s, t, offset: t - borders.center(), distance, heading: r.reference_pose(s).hdg })
     }
 
     /// Best s guess per road from the candidate segments: (road, s, squared distance).
@@ -144,8 +135,7 @@ impl RoadNetwork {
         self.index.ring(x, y, 0, &mut ids);
         let mut cands = Vec::new();
         self.road_candidates(x, y, &ids, &mut cands);
-        let mut out: Vec<LanePosition> =
-            cands.iter().filter_map(|&(r, s, _)| self.locate_on_road(r, x, y, s)).filter(|p| p.is_on_road()).collect();
+        let mut out: Vec<LanePosition> = cands.iter().filter_map(|&(r, s, _)| self.locate_on_road(r, x, y, s)).filter(|p| p.is_on_road()).collect();
         out.sort_by_key(|p| p.road);
         out
     }

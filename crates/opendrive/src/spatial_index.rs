@@ -218,7 +218,11 @@ impl SpatialIndex {
         let fy = ((y - self.min_y) / self.cell).floor();
         let (nx, ny) = (self.nx as f64, self.ny as f64);
         let d = (-fx).max(fx - (nx - 1.0)).max(-fy).max(fy - (ny - 1.0)).max(0.0);
-        if d.is_finite() { d.min(1e9) as usize } else { usize::MAX }
+        if d.is_finite() {
+            d.min(1e9) as usize
+        } else {
+            usize::MAX
+        }
     }
 
     /// Append the segment indices stored in the ring of cells at Chebyshev distance `ring`

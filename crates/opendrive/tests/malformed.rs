@@ -11,7 +11,8 @@ fn err(text: &str) -> Error {
 }
 
 const ROAD_HEAD: &str = "<OpenDRIVE>\n<header revMajor=\"1\" revMinor=\"6\"/>\n<road id=\"1\" length=\"10\" junction=\"-1\">\n<planView>\n";
-const ROAD_TAIL: &str = "</planView>\n<lanes><laneSection s=\"0\"><center><lane id=\"0\" type=\"none\"/></center></laneSection></lanes>\n</road>\n</OpenDRIVE>\n";
+const ROAD_TAIL: &str =
+    "</planView>\n<lanes><laneSection s=\"0\"><center><lane id=\"0\" type=\"none\"/></center></laneSection></lanes>\n</road>\n</OpenDRIVE>\n";
 
 #[test]
 fn unclosed_tag() {

@@ -27,9 +27,7 @@ fn xosc_files(dir: &Path) -> Vec<PathBuf> {
 }
 
 fn main() {
-    let shared = std::env::var_os("OSC2CR_SHARED")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared"));
+    let shared = std::env::var_os("OSC2CR_SHARED").map(PathBuf::from).unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared"));
     let corpus = shared.join("corpus");
     if !corpus.is_dir() {
         eprintln!("corpus not found at {}", corpus.display());

@@ -17,9 +17,7 @@ pub trait XmlEnum: Sized + Copy {
 /// Exact spelling first; then case-insensitively (files in the wild vary in case).
 pub(crate) fn parse_enum<T: XmlEnum>(s: &str) -> Option<T> {
     let s = s.trim();
-    T::from_xml(s).or_else(|| {
-        T::NAMES.iter().find(|n| n.eq_ignore_ascii_case(s)).and_then(|n| T::from_xml(n))
-    })
+    T::from_xml(s).or_else(|| T::NAMES.iter().find(|n| n.eq_ignore_ascii_case(s)).and_then(|n| T::from_xml(n)))
 }
 
 /// Defines a schema enumeration with its XML spellings (first spelling is canonical).
@@ -68,31 +66,23 @@ impl<'s> Cx<'s> {
 
     /// The required child `name` of `e`.
     pub fn child<'e>(&self, e: &'e Elem, name: &str) -> Result<&'e Elem, Error> {
-        e.child(name)
-            .ok_or_else(|| self.err(ErrorKind::Structure, e.pos, format!("{} needs a child element <{name}>", e.name)))
+        e.child(name).ok_or_else(|| self.err(ErrorKind::Structure, e.pos, format!("{} needs a child element <{name}>", e.name)))
     }
 
     /// The first child of a schema choice, which must exist.
     pub fn choice<'e>(&self, e: &'e Elem, what: &str) -> Result<&'e Elem, Error> {
-        e.first_child()
-            .ok_or_else(|| self.err(ErrorKind::Structure, e.pos, format!("{} needs a child element ({what})", e.name)))
+        e.first_child().ok_or_else(|| self.err(ErrorKind::Structure, e.pos, format!("{} needs a child element ({what})", e.name)))
     }
 
     pub fn unexpected(&self, e: &Elem, parent: &str, expected: &str) -> Error {
-        self.err(
-            ErrorKind::Structure,
-            e.pos,
-            format!("unexpected element <{}> in {parent}, expected one of {expected}", e.name),
-        )
+        self.err(ErrorKind::Structure, e.pos, format!("unexpected element <{}> in {parent}, expected one of {expected}", e.name))
     }
 
     /// The resolved value of an optional attribute.
     pub fn opt_text(&self, e: &Elem, name: &str) -> Result<Option<String>, Error> {
         match e.attr(name) {
             None => Ok(None),
-            Some(a) => resolve_in_scope(&a.value, self.scope)
-                .map(Some)
-                .map_err(|err| positioned(&self.file, a.pos, err)),
+            Some(a) => resolve_in_scope(&a.value, self.scope).map(Some).map_err(|err| positioned(&self.file, a.pos, err)),
         }
     }
 
@@ -130,9 +120,7 @@ impl<'s> Cx<'s> {
         self.opt_i64(e, name)?.ok_or_else(|| self.missing(e, name))
     }
     pub fn opt_u32(&self, e: &Elem, name: &str) -> Result<Option<u32>, Error> {
-        self.opt_conv(e, name, |s| {
-            parse_i64(s).and_then(|v| u32::try_from(v).map_err(|_| "an unsigned integer".to_string()))
-        })
+        self.opt_conv(e, name, |s| parse_i64(s).and_then(|v| u32::try_from(v).map_err(|_| "an unsigned integer".to_string())))
     }
     pub fn u32_or(&self, e: &Elem, name: &str, default: u32) -> Result<u32, Error> {
         Ok(self.opt_u32(e, name)?.unwrap_or(default))

@@ -85,18 +85,11 @@ impl CatalogStore {
                 Some(f) => {
                     warnings.push(Warning {
                         location: loc,
-                        message: format!(
-                            "catalog directory {} does not exist; using {} instead",
-                            path.display(),
-                            f.display()
-                        ),
+                        message: format!("catalog directory {} does not exist; using {} instead", path.display(), f.display()),
                     });
                     path = f;
                 }
-                None => warnings.push(Warning {
-                    location: loc,
-                    message: format!("catalog directory {} does not exist", path.display()),
-                }),
+                None => warnings.push(Warning { location: loc, message: format!("catalog directory {} does not exist", path.display()) }),
             }
         }
         self.dirs.push(Dir { kind, path });
@@ -112,11 +105,7 @@ impl CatalogStore {
             return l.clone();
         }
         let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
-            .map(|rd| {
-                rd.filter_map(|e| e.ok().map(|e| e.path()))
-                    .filter(|p| p.extension().is_some_and(|x| x.eq_ignore_ascii_case("xosc")))
-                    .collect()
-            })
+            .map(|rd| rd.filter_map(|e| e.ok().map(|e| e.path())).filter(|p| p.extension().is_some_and(|x| x.eq_ignore_ascii_case("xosc"))).collect())
             .unwrap_or_default();
         files.sort();
         files.truncate(MAX_FILES);
@@ -146,14 +135,7 @@ impl CatalogStore {
     /// Finds `entry` of catalog `catalog` for one of `kinds`. Order: directories of the expected
     /// kinds before the others; in each group, files whose Catalog@name matches, then files
     /// named `<catalog>.xosc`.
-    pub fn find(
-        &mut self,
-        kinds: &[CatalogKind],
-        catalog: &str,
-        entry: &str,
-        at: &Location,
-        warnings: &mut Vec<Warning>,
-    ) -> Result<Found, Error> {
+    pub fn find(&mut self, kinds: &[CatalogKind], catalog: &str, entry: &str, at: &Location, warnings: &mut Vec<Warning>) -> Result<Found, Error> {
         let mut groups: Vec<Vec<PathBuf>> = vec![Vec::new(), Vec::new()];
         for d in &self.dirs {
             let g = usize::from(!kinds.contains(&d.kind));
@@ -194,22 +176,14 @@ impl CatalogStore {
             }
         }
         match catalog_found {
-            Some(f) => Err(Error::new(
-                ErrorKind::MissingCatalogEntry,
-                at.clone(),
-                format!("catalog '{catalog}' ({}) has no entry named '{entry}'", f.display()),
-            )),
+            Some(f) => {
+                Err(Error::new(ErrorKind::MissingCatalogEntry, at.clone(), format!("catalog '{catalog}' ({}) has no entry named '{entry}'", f.display())))
+            }
             None => {
                 let tried: Vec<String> = self
                     .dirs
                     .iter()
-                    .map(|d| {
-                        if d.path.is_dir() {
-                            d.path.display().to_string()
-                        } else {
-                            format!("{} (does not exist)", d.path.display())
-                        }
-                    })
+                    .map(|d| if d.path.is_dir() { d.path.display().to_string() } else { format!("{} (does not exist)", d.path.display()) })
                     .collect();
                 Err(Error::new(
                     ErrorKind::MissingCatalog,

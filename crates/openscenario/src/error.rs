@@ -90,11 +90,7 @@ impl fmt::Display for Warning {
 /// the model and in messages are stable and readable.
 pub(crate) fn absolute(path: &Path) -> PathBuf {
     use std::path::Component;
-    let joined = if path.is_absolute() {
-        path.to_path_buf()
-    } else {
-        std::env::current_dir().map(|d| d.join(path)).unwrap_or_else(|_| path.to_path_buf())
-    };
+    let joined = if path.is_absolute() { path.to_path_buf() } else { std::env::current_dir().map(|d| d.join(path)).unwrap_or_else(|_| path.to_path_buf()) };
     let mut out = PathBuf::new();
     for c in joined.components() {
         match c {

@@ -77,10 +77,7 @@ pub(crate) struct ResolveError {
 }
 
 /// Resolves a raw attribute value. `lookup` answers parameter names.
-pub(crate) fn resolve_raw(
-    raw: &str,
-    lookup: &mut dyn FnMut(&str) -> Result<Option<String>, ResolveError>,
-) -> Result<String, ResolveError> {
+pub(crate) fn resolve_raw(raw: &str, lookup: &mut dyn FnMut(&str) -> Result<Option<String>, ResolveError>) -> Result<String, ResolveError> {
     let Some(rest) = raw.strip_prefix('$') else { return Ok(raw.to_string()) };
     if let Some(inner) = rest.strip_prefix('{') {
         let Some(body) = inner.strip_suffix('}') else {
@@ -93,8 +90,7 @@ pub(crate) fn resolve_raw(
         let mut failure: Option<ResolveError> = None;
         let mut lk = |name: &str| -> Result<ExprValue, String> {
             match lookup(name) {
-                Ok(Some(text)) => value_as_expr(&text)
-                    .ok_or_else(|| format!("parameter ${name} has value '{text}', which is not a number or boolean")),
+                Ok(Some(text)) => value_as_expr(&text).ok_or_else(|| format!("parameter ${name} has value '{text}', which is not a number or boolean")),
                 Ok(None) => Err(format!("parameter ${name} is not declared")),
                 Err(e) => {
                     let msg = e.message.clone();
@@ -121,27 +117,15 @@ pub(crate) fn resolve_raw(
                 }
             }
             Err(e) => {
-                let kind = if e.message.contains("is not declared") {
-                    ErrorKind::UndeclaredParameter
-                } else {
-                    ErrorKind::Expression
-                };
-                Err(ResolveError {
-                    kind,
-                    column: e.column + 1,
-                    message: format!("in expression '{}' at column {}: {}", shorten(raw), e.column + 2, e.message),
-                })
+                let kind = if e.message.contains("is not declared") { ErrorKind::UndeclaredParameter } else { ErrorKind::Expression };
+                Err(ResolveError { kind, column: e.column + 1, message: format!("in expression '{}' at column {}: {}", shorten(raw), e.column + 2, e.message) })
             }
         };
     }
     let name = rest.trim();
     match lookup(name)? {
         Some(v) => Ok(v),
-        None => Err(ResolveError {
-            kind: ErrorKind::UndeclaredParameter,
-            column: 0,
-            message: format!("parameter ${name} is not declared"),
-        }),
+        None => Err(ResolveError { kind: ErrorKind::UndeclaredParameter, column: 0, message: format!("parameter ${name} is not declared") }),
     }
 }
 
@@ -195,21 +179,16 @@ pub(crate) fn read_declarations(
                 .attr(name_attr)
                 .map(|a| a.value.trim().trim_start_matches('$').to_string())
                 .ok_or_else(|| Error::new(ErrorKind::Structure, loc.clone(), format!("{} needs a '{name_attr}' attribute", d.name)))?;
-            let ty_attr = d.attr(type_attr).ok_or_else(|| {
-                Error::new(ErrorKind::Structure, loc.clone(), format!("{} '{name}' needs a '{type_attr}' attribute", d.name))
-            })?;
+            let ty_attr = d
+                .attr(type_attr)
+                .ok_or_else(|| Error::new(ErrorKind::Structure, loc.clone(), format!("{} '{name}' needs a '{type_attr}' attribute", d.name)))?;
             let ty = crate::attr::parse_enum::<ParameterType>(&ty_attr.value)
                 .ok_or_else(|| positioned_value_error::<ParameterType>(file, ty_attr.pos, &ty_attr.value, type_attr))?;
-            let val = d.attr("value").ok_or_else(|| {
-                Error::new(ErrorKind::Structure, loc.clone(), format!("{} '{name}' needs a 'value' attribute", d.name))
-            })?;
+            let val = d.attr("value").ok_or_else(|| Error::new(ErrorKind::Structure, loc.clone(), format!("{} '{name}' needs a 'value' attribute", d.name)))?;
             if let Some(prev) = raws.iter().position(|r| r.name == name) {
                 warnings.push(Warning {
                     location: loc.clone(),
-                    message: format!(
-                        "parameter '{name}' is declared twice (first at line {}); the later declaration wins",
-                        raws[prev].pos.line
-                    ),
+                    message: format!("parameter '{name}' is declared twice (first at line {}); the later declaration wins", raws[prev].pos.line),
                 });
                 raws.remove(prev);
             }
@@ -233,10 +212,7 @@ pub(crate) fn read_declarations(
     for (r, v) in raws.iter().zip(state) {
         let value = v.unwrap_or_default();
         if let Some(msg) = violated_constraints(r.elem, &value) {
-            warnings.push(Warning {
-                location: location(file, r.pos),
-                message: format!("parameter '{}' = '{value}' violates its constraints ({msg})", r.name),
-            });
+            warnings.push(Warning { location: location(file, r.pos), message: format!("parameter '{}' = '{value}' violates its constraints ({msg})", r.name) });
         }
         // esmini does not check declared types; a mismatch is worth a warning, not a failure.
         if let Err(msg) = check_type(r.ty, &value) {
@@ -251,11 +227,7 @@ pub(crate) fn read_declarations(
 }
 
 pub(crate) fn positioned_value_error<T: crate::attr::XmlEnum>(file: &Arc<Path>, pos: Pos, value: &str, attr: &str) -> Error {
-    Error::new(
-        ErrorKind::Value,
-        location(file, pos),
-        format!("attribute '{attr}': expected one of {}, found '{value}'", T::NAMES.join(", ")),
-    )
+    Error::new(ErrorKind::Value, location(file, pos), format!("attribute '{attr}': expected one of {}, found '{value}'", T::NAMES.join(", ")))
 }
 
 struct BlockResolver<'a, 'e> {
@@ -281,11 +253,7 @@ impl BlockResolver<'_, '_> {
         if let Some(at) = self.stack.iter().position(|&j| j == i) {
             let mut names: Vec<&str> = self.stack[at..].iter().filter_map(|&j| self.raws.get(j)).map(|r| r.name.as_str()).collect();
             names.push(&raw.name);
-            return Err(Error::new(
-                ErrorKind::ParameterCycle,
-                location(self.file, raw.value_pos),
-                format!("parameter cycle: {}", names.join(" -> ")),
-            ));
+            return Err(Error::new(ErrorKind::ParameterCycle, location(self.file, raw.value_pos), format!("parameter cycle: {}", names.join(" -> "))));
         }
         if self.stack.len() > 200 {
             return Err(Error::new(ErrorKind::Limit, location(self.file, raw.pos), "parameter references nested too deeply"));
@@ -327,14 +295,10 @@ fn check_type(ty: ParameterType, value: &str) -> Result<(), String> {
     let integral = || v.parse::<i64>().is_ok() || v.parse::<f64>().is_ok_and(|f| f.fract() == 0.0);
     match ty {
         ParameterType::Integer if !integral() => Err(format!("expected an integer, found '{value}'")),
-        ParameterType::UnsignedInt | ParameterType::UnsignedShort
-            if !integral() || v.parse::<f64>().is_ok_and(|f| f < 0.0) =>
-        {
+        ParameterType::UnsignedInt | ParameterType::UnsignedShort if !integral() || v.parse::<f64>().is_ok_and(|f| f < 0.0) => {
             Err(format!("expected an unsigned integer, found '{value}'"))
         }
-        ParameterType::Double if v.parse::<f64>().map_or(true, f64::is_nan) => {
-            Err(format!("expected a number, found '{value}'"))
-        }
+        ParameterType::Double if v.parse::<f64>().map_or(true, f64::is_nan) => Err(format!("expected a number, found '{value}'")),
         ParameterType::Boolean if !matches!(v.to_ascii_lowercase().as_str(), "true" | "false" | "1" | "0") => {
             Err(format!("expected true or false, found '{value}'"))
         }

@@ -19,12 +19,8 @@ pub fn positions(s: &Scenario) -> Vec<(&Position, &Location)> {
     for_each_condition(s, |c| {
         if let ConditionKind::ByEntity { condition, .. } = &c.kind {
             match condition {
-                EntityCondition::ReachPosition { position, .. } | EntityCondition::Distance { position, .. } => {
-                    nested_positions(position, &c.origin, &mut out)
-                }
-                EntityCondition::TimeToCollision { target: TtcTarget::Position(position), .. } => {
-                    nested_positions(position, &c.origin, &mut out)
-                }
+                EntityCondition::ReachPosition { position, .. } | EntityCondition::Distance { position, .. } => nested_positions(position, &c.origin, &mut out),
+                EntityCondition::TimeToCollision { target: TtcTarget::Position(position), .. } => nested_positions(position, &c.origin, &mut out),
                 _ => {}
             }
         }
@@ -100,9 +96,7 @@ fn action_positions<'a>(a: &'a Action, out: &mut Vec<(&'a Position, &'a Location
         },
         ActionKind::Global(g) => match g {
             GlobalAction::AddEntity { position, .. } => nested_positions(position, o, out),
-            GlobalAction::TrafficSource { position, .. } | GlobalAction::TrafficSink { position, .. } => {
-                nested_positions(position, o, out)
-            }
+            GlobalAction::TrafficSource { position, .. } | GlobalAction::TrafficSink { position, .. } => nested_positions(position, o, out),
             _ => {}
         },
         _ => {}
@@ -133,9 +127,7 @@ fn trajectory_positions<'a>(t: &'a Trajectory, o: &'a Location, out: &mut Vec<(&
         Shape::Polyline(vs) => vs.iter().for_each(|v| nested_positions(&v.position, o, out)),
         Shape::Clothoid { position: Some(p), .. } => nested_positions(p, o, out),
         Shape::Clothoid { position: None, .. } => {}
-        Shape::ClothoidSpline { segments, .. } => {
-            segments.iter().filter_map(|s| s.position_start.as_ref()).for_each(|p| nested_positions(p, o, out))
-        }
+        Shape::ClothoidSpline { segments, .. } => segments.iter().filter_map(|s| s.position_start.as_ref()).for_each(|p| nested_positions(p, o, out)),
         Shape::Nurbs { control_points, .. } => control_points.iter().for_each(|c| nested_positions(&c.position, o, out)),
     }
 }
@@ -178,14 +170,12 @@ pub fn unresolved(s: &Scenario) -> Vec<Warning> {
             entity(name, &a.origin, &format!("{what}: entity"), &mut out);
         }
         match &a.kind {
-            ActionKind::Global(GlobalAction::ParameterSet { parameter, .. })
-            | ActionKind::Global(GlobalAction::ParameterModify { parameter, .. }) => {
+            ActionKind::Global(GlobalAction::ParameterSet { parameter, .. }) | ActionKind::Global(GlobalAction::ParameterModify { parameter, .. }) => {
                 if s.parameter(parameter).is_none() {
                     out.push(problem(&a.origin, format!("{what}: parameter `{parameter}` is not declared by the scenario")));
                 }
             }
-            ActionKind::Global(GlobalAction::VariableSet { variable, .. })
-            | ActionKind::Global(GlobalAction::VariableModify { variable, .. }) => {
+            ActionKind::Global(GlobalAction::VariableSet { variable, .. }) | ActionKind::Global(GlobalAction::VariableModify { variable, .. }) => {
                 if !declares(&s.variables, variable) {
                     out.push(problem(&a.origin, format!("{what}: variable `{variable}` is not declared by the scenario")));
                 }
@@ -220,10 +210,7 @@ pub fn unresolved(s: &Scenario) -> Vec<Warning> {
                     // esmini finds an element by its own name or by a `::`-separated path
                     let own = element.rsplit("::").next().unwrap_or(element);
                     if !elements.contains(&(*element_type, own)) {
-                        out.push(problem(
-                            &c.origin,
-                            format!("{what}: there is no {} named `{element}` in the storyboard", element_type),
-                        ));
+                        out.push(problem(&c.origin, format!("{what}: there is no {} named `{element}` in the storyboard", element_type)));
                     }
                 }
                 ValueCondition::TrafficSignalController { controller, .. }

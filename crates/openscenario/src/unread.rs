@@ -88,10 +88,7 @@ fn walk(el: &Elem, found: &mut Found) {
 }
 
 fn note(found: &mut Found, parent: &str, member: String, pos: crate::xml::Pos) {
-    found
-        .entry((parent.to_string(), member))
-        .and_modify(|f| f.count += 1)
-        .or_insert(Finding { first: pos, count: 1 });
+    found.entry((parent.to_string(), member)).and_modify(|f| f.count += 1).or_insert(Finding { first: pos, count: 1 });
 }
 
 fn warnings(doc: &Doc, found: Found) -> Vec<Warning> {

@@ -128,11 +128,7 @@ impl LineCounter<'_> {
 pub(crate) fn read_file(path: &Path) -> Result<Doc, Error> {
     let meta = std::fs::metadata(path).map_err(|e| Error::io(path, &e))?;
     if meta.len() > MAX_FILE_BYTES {
-        return Err(Error::new(
-            ErrorKind::Limit,
-            Location::file_only(path),
-            format!("file is larger than {MAX_FILE_BYTES} bytes"),
-        ));
+        return Err(Error::new(ErrorKind::Limit, Location::file_only(path), format!("file is larger than {MAX_FILE_BYTES} bytes")));
     }
     let bytes = std::fs::read(path).map_err(|e| Error::io(path, &e))?;
     let text = String::from_utf8_lossy(&bytes);
@@ -184,12 +180,7 @@ fn convert(node: roxmltree::Node, lc: &mut LineCounter, depth: usize, file: &Arc
         .attributes()
         // `xsi:noNamespaceSchemaLocation` and the like belong to XML tooling, not to the format.
         .filter(|a| a.namespace().is_none())
-        .map(|a| Attr {
-            name: a.name().to_string(),
-            value: a.value().to_string(),
-            pos: lc.pos(a.range_value().start),
-            read: Cell::new(false),
-        })
+        .map(|a| Attr { name: a.name().to_string(), value: a.value().to_string(), pos: lc.pos(a.range_value().start), read: Cell::new(false) })
         .collect();
     let mut children = Vec::new();
     for c in node.children().filter(|c| c.is_element()) {

@@ -38,7 +38,9 @@ fn every_corpus_file_loads() {
             }
             // Its maneuvers use the scenario's global parameter $AccRate (synchronize.xosc
             // declares it): read on its own, the catalog cannot resolve it.
-            Err(e) if rel == "esmini/xosc/Catalogs/Maneuvers/HWManeuvers.xosc" || rel == "esmini-unittest/resources/xosc/Catalogs/Maneuvers/HWManeuvers.xosc" => {
+            Err(e)
+                if rel == "esmini/xosc/Catalogs/Maneuvers/HWManeuvers.xosc" || rel == "esmini-unittest/resources/xosc/Catalogs/Maneuvers/HWManeuvers.xosc" =>
+            {
                 assert_eq!(e.kind, ErrorKind::UndeclaredParameter, "{e}");
                 assert!(e.message.contains("$AccRate"), "{e}");
                 assert_eq!(e.location.line, 84, "{e}");

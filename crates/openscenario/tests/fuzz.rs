@@ -11,10 +11,7 @@ fn corpus() -> &'static Vec<(PathBuf, String)> {
     static FILES: OnceLock<Vec<(PathBuf, String)>> = OnceLock::new();
     FILES.get_or_init(|| {
         let Some(shared) = common::shared() else { return Vec::new() };
-        common::xosc_files(&shared.join("corpus"))
-            .into_iter()
-            .filter_map(|p| std::fs::read_to_string(&p).ok().map(|t| (p, t)))
-            .collect()
+        common::xosc_files(&shared.join("corpus")).into_iter().filter_map(|p| std::fs::read_to_string(&p).ok().map(|t| (p, t))).collect()
     })
 }
 
@@ -36,7 +33,8 @@ fn value_spans(text: &str) -> Vec<(usize, usize)> {
     out
 }
 
-const NASTY: &[&str] = &["", "$", "${", "${(}", "${1/0}", "$$x", "-1e400", "NaN", "inf", "99999999999999999999", "-", "${$x}", "true", "a&amp;b", "${((((((1))))))}", "1e-320"];
+const NASTY: &[&str] =
+    &["", "$", "${", "${(}", "${1/0}", "$$x", "-1e400", "NaN", "inf", "99999999999999999999", "-", "${$x}", "true", "a&amp;b", "${((((((1))))))}", "1e-320"];
 
 #[derive(Debug, Clone)]
 enum Mutation {

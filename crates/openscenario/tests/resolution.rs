@@ -86,16 +86,10 @@ fn story_scope_shadows_global_and_dollar_refs_are_tolerated() {
     let (s, _) = ok(&scenario(params, "", &car("Ego"), "", &stories), &LoadOptions::default());
     let ev = &s.storyboard.stories[0].acts[0].maneuver_groups[0].maneuvers[0].events[0];
     assert_eq!(ev.priority, Priority::Override); // 1.0 `overwrite`
-    assert_eq!(
-        ev.actions[0].kind,
-        ActionKind::Global(GlobalAction::ParameterSet { parameter: "Count".into(), value: "5".into() })
-    );
+    assert_eq!(ev.actions[0].kind, ActionKind::Global(GlobalAction::ParameterSet { parameter: "Count".into(), value: "5".into() }));
     let c = &ev.start_trigger.as_ref().expect("trigger").groups[0].conditions[0];
     assert_eq!(c.edge, ConditionEdge::Rising);
-    assert_eq!(
-        c.kind,
-        ConditionKind::ByValue(ValueCondition::Parameter { parameter: "Count".into(), value: "6".into(), rule: Rule::GreaterThan })
-    );
+    assert_eq!(c.kind, ConditionKind::ByValue(ValueCondition::Parameter { parameter: "Count".into(), value: "6".into(), rule: Rule::GreaterThan }));
     // The global value is unchanged outside the story.
     assert_eq!(param(&s, "V").value, "1");
 }

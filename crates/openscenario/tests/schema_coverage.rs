@@ -75,11 +75,8 @@ fn unread_pair(message: &str) -> Option<(String, String)> {
     if !tail.starts_with(" is not read by osc2cr") {
         return None;
     }
-    let member = if let Some(a) = member.strip_prefix("attribute '") {
-        format!("@{}", a.trim_end_matches('\''))
-    } else {
-        member.strip_prefix("element ")?.to_string()
-    };
+    let member =
+        if let Some(a) = member.strip_prefix("attribute '") { format!("@{}", a.trim_end_matches('\'')) } else { member.strip_prefix("element ")?.to_string() };
     Some((element.to_string(), member))
 }
 
@@ -149,10 +146,7 @@ fn every_element_and_attribute_of_1_3_is_read_or_announced() {
         let new: BTreeSet<&str> = table.lines().collect();
         let gone: Vec<_> = old.difference(&new).take(20).collect();
         let added: Vec<_> = new.difference(&old).take(20).collect();
-        panic!(
-            "the coverage of the 1.3 schema changed (OSC2CR_BLESS=1 rewrites {}):\n- {gone:#?}\n+ {added:#?}",
-            file.display()
-        );
+        panic!("the coverage of the 1.3 schema changed (OSC2CR_BLESS=1 rewrites {}):\n- {gone:#?}\n+ {added:#?}", file.display());
     }
 }
 

@@ -33,7 +33,9 @@ fn scenario(init: &str, story: &str) -> String {
 }
 
 fn teleport(entity: &str) -> String {
-    format!(r#"<Private entityRef="{entity}"><PrivateAction><TeleportAction><Position><WorldPosition x="0" y="0"/></Position></TeleportAction></PrivateAction></Private>"#)
+    format!(
+        r#"<Private entityRef="{entity}"><PrivateAction><TeleportAction><Position><WorldPosition x="0" y="0"/></Position></TeleportAction></PrivateAction></Private>"#
+    )
 }
 
 fn story(actor: &str, action: &str, condition: &str) -> String {
@@ -83,8 +85,14 @@ fn an_undeclared_actor_and_reference_entity() {
 #[test]
 fn a_condition_on_what_does_not_exist() {
     let cases = [
-        (r#"<ByEntityCondition><TriggeringEntities triggeringEntitiesRule="any"><EntityRef entityRef="Ego"/></TriggeringEntities><EntityCondition><RelativeDistanceCondition entityRef="Phantom" value="5" freespace="false" relativeDistanceType="longitudinal" rule="lessThan"/></EntityCondition></ByEntityCondition>"#, "`Phantom`"),
-        (r#"<ByValueCondition><StoryboardElementStateCondition storyboardElementType="event" storyboardElementRef="NoSuchEvent" state="endTransition"/></ByValueCondition>"#, "NoSuchEvent"),
+        (
+            r#"<ByEntityCondition><TriggeringEntities triggeringEntitiesRule="any"><EntityRef entityRef="Ego"/></TriggeringEntities><EntityCondition><RelativeDistanceCondition entityRef="Phantom" value="5" freespace="false" relativeDistanceType="longitudinal" rule="lessThan"/></EntityCondition></ByEntityCondition>"#,
+            "`Phantom`",
+        ),
+        (
+            r#"<ByValueCondition><StoryboardElementStateCondition storyboardElementType="event" storyboardElementRef="NoSuchEvent" state="endTransition"/></ByValueCondition>"#,
+            "NoSuchEvent",
+        ),
         (r#"<ByValueCondition><ParameterCondition parameterRef="Undeclared" value="1" rule="equalTo"/></ByValueCondition>"#, "parameter `Undeclared`"),
         (r#"<ByValueCondition><VariableCondition variableRef="NoVar" value="1" rule="equalTo"/></ByValueCondition>"#, "variable `NoVar`"),
     ];

@@ -78,13 +78,9 @@ fn every_problem_is_reported_at_its_line_in_one_run() {
 #[test]
 fn expressions_are_evaluated_and_their_failures_positioned() {
     let params = r#"<ParameterDeclaration name="zero" parameterType="double" value="0"/><ParameterDeclaration name="when" parameterType="dateTime" value="2024-01-01T00:00:00"/>"#;
-    for (expr, needle) in [
-        ("${1/$zero}", "division by zero"),
-        ("${sqrt(-1)}", "sqrt"),
-        ("${1e308 * 10}", "finite"),
-        ("${5}}", "unexpected"),
-        ("${$when + 1}", "dateTime"),
-    ] {
+    for (expr, needle) in
+        [("${1/$zero}", "division by zero"), ("${sqrt(-1)}", "sqrt"), ("${1e308 * 10}", "finite"), ("${5}}", "unexpected"), ("${$when + 1}", "dateTime")]
+    {
         let e = errors(&check(&scenario(3, params, &speed(expr), "")));
         assert!(e.len() == 1 && e[0].1.contains(needle), "{expr}: {e:#?}");
     }
@@ -137,7 +133,8 @@ fn deprecated_and_later_version_elements_are_warnings() {
 
 #[test]
 fn ranges_of_the_standard_are_checked() {
-    let text = scenario(3, "", &speed("1"), "").replace(r#"wheelDiameter="0.6" trackWidth="1.6" positionX="2.8""#, r#"wheelDiameter="-0.6" trackWidth="1.6" positionX="2.8""#);
+    let text = scenario(3, "", &speed("1"), "")
+        .replace(r#"wheelDiameter="0.6" trackWidth="1.6" positionX="2.8""#, r#"wheelDiameter="-0.6" trackWidth="1.6" positionX="2.8""#);
     let e = errors(&check(&text));
     assert!(e.len() == 1 && e[0].0 == 13 && e[0].1.contains("wheelDiameter > 0"), "{e:#?}");
 }

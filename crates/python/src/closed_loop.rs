@@ -87,9 +87,10 @@ impl Session {
     }
 
     fn index_of(&self, name: &str) -> PyResult<usize> {
-        self.names.iter().position(|n| n == name).ok_or_else(|| {
-            PyValueError::new_err(format!("no entity named `{name}`; the scenario has {}", self.names.join(", ")))
-        })
+        self.names
+            .iter()
+            .position(|n| n == name)
+            .ok_or_else(|| PyValueError::new_err(format!("no entity named `{name}`; the scenario has {}", self.names.join(", "))))
     }
 
     /// Runs one CommonRoad step with `self.inputs`, the GIL released.
@@ -131,11 +132,9 @@ impl Session {
         let width = numbers.len().checked_div(rows).unwrap_or(0);
         let fits = if driver { width == DRIVER_WIDTH } else { STATE_WIDTHS.contains(&width) };
         if !(rows == 0 && numbers.is_empty() || fits && width * rows == numbers.len()) {
-            let expected = if driver { "3 (throttle, brake, steering)".to_string() } else { "4 (x, y, heading, speed) or 8 (and z, pitch, roll, yaw_rate)".to_string() };
-            return Err(PyValueError::new_err(format!(
-                "{} numbers for {rows} external entities: expected {expected} per entity",
-                numbers.len()
-            )));
+            let expected =
+                if driver { "3 (throttle, brake, steering)".to_string() } else { "4 (x, y, heading, speed) or 8 (and z, pitch, roll, yaw_rate)".to_string() };
+            return Err(PyValueError::new_err(format!("{} numbers for {rows} external entities: expected {expected} per entity", numbers.len())));
         }
         self.inputs.clear();
         for (k, x) in self.external.iter().enumerate() {
@@ -183,9 +182,7 @@ fn floats(values: &Bound<'_, PyAny>, out: &mut Vec<f64>) -> PyResult<()> {
     if let Ok(b) = values.cast::<PyByteArray>() {
         return from_bytes(&b.to_vec(), out);
     }
-    *out = values
-        .extract::<Vec<f64>>()
-        .map_err(|_| PyTypeError::new_err("the array must be float64 bytes or a flat sequence of numbers"))?;
+    *out = values.extract::<Vec<f64>>().map_err(|_| PyTypeError::new_err("the array must be float64 bytes or a flat sequence of numbers"))?;
     Ok(())
 }
 
@@ -197,21 +194,16 @@ impl Session {
     /// `"overridden"` or `"replaced"`.
     #[new]
     #[pyo3(signature = (path, external=None, motion="overridden", **options))]
-    fn new(
-        py: Python<'_>,
-        path: PathBuf,
-        external: Option<Vec<String>>,
-        motion: &str,
-        options: Option<&Bound<'_, PyDict>>,
-    ) -> PyResult<Session> {
+    fn new(py: Python<'_>, path: PathBuf, external: Option<Vec<String>>, motion: &str, options: Option<&Bound<'_, PyDict>>) -> PyResult<Session> {
         let (opts, _) = from_kwargs(options)?;
         if opts.format != convert::OutputFormat::Xml2020a {
-            return Err(PyValueError::new_err("a closed-loop session gives its run as CommonRoad 2020a XML (to_xml, to_commonroad); format=\"2024\" is for osc2cr.convert"));
+            return Err(PyValueError::new_err(
+                "a closed-loop session gives its run as CommonRoad 2020a XML (to_xml, to_commonroad); format=\"2024\" is for osc2cr.convert",
+            ));
         }
         let motion = self::motion(motion)?;
-        let substeps = convert::whole_multiple(opts.step, opts.dt).ok_or_else(|| {
-            PyValueError::new_err(format!("dt ({} s) must be a whole multiple of step ({} s) in a closed-loop run", opts.dt, opts.step))
-        })?;
+        let substeps = convert::whole_multiple(opts.step, opts.dt)
+            .ok_or_else(|| PyValueError::new_err(format!("dt ({} s) must be a whole multiple of step ({} s) in a closed-loop run", opts.dt, opts.step)))?;
         let controllers = external.is_none();
         let entities = match external {
             None => Chosen::Controllers,
@@ -404,9 +396,7 @@ impl Session {
         let (_, _, model) = self.converted(py)?;
         let options = picture_options(&model, time.unwrap_or_else(|| self.view().time().max(0.0)), width, follow.as_deref())?;
         let problems = Some(&model.problems).filter(|p| !p.problems.is_empty());
-        let (w, h, pixels) = py
-            .detach(|| render::render_rgba(&model.scenario, problems, &options))
-            .map_err(|e| PyValueError::new_err(e.to_string()))?;
+        let (w, h, pixels) = py.detach(|| render::render_rgba(&model.scenario, problems, &options)).map_err(|e| PyValueError::new_err(e.to_string()))?;
         Ok((w, h, PyBytes::new(py, &pixels)))
     }
 }

@@ -29,16 +29,8 @@ pub fn position(message: &str, fallback: &Path) -> Position {
         }
     }
     let file = fallback.display().to_string();
-    let detail = message
-        .strip_prefix(file.as_str())
-        .and_then(|r| r.strip_prefix(": "))
-        .unwrap_or(message);
-    Position {
-        file,
-        line: None,
-        column: None,
-        detail: detail.to_string(),
-    }
+    let detail = message.strip_prefix(file.as_str()).and_then(|r| r.strip_prefix(": ")).unwrap_or(message);
+    Position { file, line: None, column: None, detail: detail.to_string() }
 }
 
 /// `path:line:col: detail` at the start of one line; the first `:<digits>:<digits>:` ends the path.
@@ -48,12 +40,7 @@ fn line_position(text: &str) -> Option<Position> {
         let start = i + off;
         if let Some((line, col, rest)) = numbers_after(&text[start + 1..]) {
             if start > 0 {
-                return Some(Position {
-                    file: text[..start].to_string(),
-                    line: Some(line),
-                    column: Some(col),
-                    detail: rest.to_string(),
-                });
+                return Some(Position { file: text[..start].to_string(), line: Some(line), column: Some(col), detail: rest.to_string() });
             }
         }
         i = start + 1;
@@ -85,14 +72,7 @@ pub fn conversion_error(py: Python<'_>, failure: &Failure, file: &Path, variatio
     let p = position(&failure.message, file);
     let made = (|| -> PyResult<PyErr> {
         let class = py.import("osc2cr._errors")?.getattr("ConversionError")?;
-        let value = class.call1((
-            failure.message.clone(),
-            p.file,
-            p.line,
-            p.column,
-            failure.stage.as_str(),
-            variation,
-        ))?;
+        let value = class.call1((failure.message.clone(), p.file, p.line, p.column, failure.stage.as_str(), variation))?;
         Ok(PyErr::from_value(value))
     })();
     made.unwrap_or_else(|e| e)
@@ -100,13 +80,5 @@ pub fn conversion_error(py: Python<'_>, failure: &Failure, file: &Path, variatio
 
 /// A reason given as text (e.g. "not a scenario"), for `file`.
 pub fn message_error(py: Python<'_>, message: String, file: &Path) -> PyErr {
-    conversion_error(
-        py,
-        &Failure {
-            stage: Stage::Load,
-            message,
-        },
-        file,
-        None,
-    )
+    conversion_error(py, &Failure { stage: Stage::Load, message }, file, None)
 }

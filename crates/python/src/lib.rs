@@ -49,11 +49,7 @@ fn payload(py: Python<'_>, output: Output) -> Payload<'_> {
 }
 
 fn finish<'py>(py: Python<'py>, c: Conversion, file: &std::path::Path, variation: Option<u64>) -> PyResult<Converted<'py>> {
-    let warnings = c
-        .warnings
-        .iter()
-        .map(|w| (w.stage.as_str(), w.message.clone()))
-        .collect();
+    let warnings = c.warnings.iter().map(|w| (w.stage.as_str(), w.message.clone())).collect();
     match c.result {
         Ok(output) => Ok((payload(py, output), warnings)),
         Err(f) => Err(errors::conversion_error(py, &f, file, variation)),
@@ -65,20 +61,13 @@ fn finish<'py>(py: Python<'py>, c: Conversion, file: &std::path::Path, variation
 /// `osc2cr convert path` writes.
 #[pyfunction]
 #[pyo3(signature = (path, **options))]
-fn convert_file<'py>(
-    py: Python<'py>,
-    path: PathBuf,
-    options: Option<&Bound<'py, pyo3::types::PyDict>>,
-) -> PyResult<Converted<'py>> {
+fn convert_file<'py>(py: Python<'py>, path: PathBuf, options: Option<&Bound<'py, pyo3::types::PyDict>>) -> PyResult<Converted<'py>> {
     let (opts, _) = options::from_kwargs(options)?;
     let c = py.detach(|| convert::convert_file(&path, &opts));
     if c.result.is_err() && convert::classify(&path) == FileKind::Distribution {
         return Err(errors::message_error(
             py,
-            format!(
-                "{}: a parameter value distribution: convert its variations with osc2cr.variations()",
-                path.display()
-            ),
+            format!("{}: a parameter value distribution: convert its variations with osc2cr.variations()", path.display()),
             &path,
         ));
     }
@@ -89,15 +78,9 @@ fn convert_file<'py>(
 /// [`convert_file`] returns.
 #[pyfunction]
 #[pyo3(signature = (path, index, **options))]
-fn convert_variation<'py>(
-    py: Python<'py>,
-    path: PathBuf,
-    index: u64,
-    options: Option<&Bound<'py, pyo3::types::PyDict>>,
-) -> PyResult<Converted<'py>> {
+fn convert_variation<'py>(py: Python<'py>, path: PathBuf, index: u64, options: Option<&Bound<'py, pyo3::types::PyDict>>) -> PyResult<Converted<'py>> {
     let (opts, _) = options::from_kwargs(options)?;
-    let dist = convert::load_distribution(&path, &opts)
-        .map_err(|f| errors::conversion_error(py, &f, &path, None))?;
+    let dist = convert::load_distribution(&path, &opts).map_err(|f| errors::conversion_error(py, &f, &path, None))?;
     let c = py.detach(|| convert::convert_variation(&path, &dist, index, &opts));
     finish(py, c, &path, Some(index))
 }

@@ -83,9 +83,7 @@ pub fn from_kwargs(kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<(ConvertOptio
                 o.engine_seed = u32::try_from(n).map_err(|_| PyValueError::new_err(format!("{key} must be below 2**32")))?;
             }
             "lenient" => o.lenient = boolean(&key, v)?,
-            "format" => {
-                o.format = string(&key, v)?.parse().map_err(|e: String| PyValueError::new_err(format!("format: {e}")))?
-            }
+            "format" => o.format = string(&key, v)?.parse().map_err(|e: String| PyValueError::new_err(format!("format: {e}")))?,
             _ => return Err(unknown(&key)),
         }
     }
@@ -105,26 +103,21 @@ pub fn from_kwargs(kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<(ConvertOptio
 }
 
 fn unknown(key: &str) -> PyErr {
-    PyTypeError::new_err(format!(
-        "unexpected keyword argument {key:?}; the options are: {}",
-        NAMES.join(", ")
-    ))
+    PyTypeError::new_err(format!("unexpected keyword argument {key:?}; the options are: {}", NAMES.join(", ")))
 }
 
 fn float(key: &str, v: &Bound<'_, PyAny>) -> PyResult<f64> {
     if v.is_instance_of::<PyBool>() {
         return Err(PyTypeError::new_err(format!("{key} must be a number, got a bool")));
     }
-    v.extract::<f64>()
-        .map_err(|_| PyTypeError::new_err(format!("{key} must be a number")))
+    v.extract::<f64>().map_err(|_| PyTypeError::new_err(format!("{key} must be a number")))
 }
 
 fn unsigned(key: &str, v: &Bound<'_, PyAny>) -> PyResult<u64> {
     if v.is_instance_of::<PyBool>() {
         return Err(PyTypeError::new_err(format!("{key} must be an int, got a bool")));
     }
-    v.extract::<u64>()
-        .map_err(|_| PyValueError::new_err(format!("{key} must be a non-negative int")))
+    v.extract::<u64>().map_err(|_| PyValueError::new_err(format!("{key} must be a non-negative int")))
 }
 
 fn boolean(key: &str, v: &Bound<'_, PyAny>) -> PyResult<bool> {
@@ -157,14 +150,10 @@ fn date(v: &Bound<'_, PyAny>) -> PyResult<commonroad::Date> {
 /// `{name: value}` with str, int, float or bool values (bools as OpenSCENARIO's `true`/`false`),
 /// in the dict's order.
 fn params(v: &Bound<'_, PyAny>) -> PyResult<Vec<(String, String)>> {
-    let dict = v
-        .cast::<PyDict>()
-        .map_err(|_| PyTypeError::new_err("params must be a dict {name: value}"))?;
+    let dict = v.cast::<PyDict>().map_err(|_| PyTypeError::new_err("params must be a dict {name: value}"))?;
     let mut out = Vec::with_capacity(dict.len());
     for (name, value) in dict.iter() {
-        let name: String = name
-            .extract()
-            .map_err(|_| PyTypeError::new_err("params names must be str"))?;
+        let name: String = name.extract().map_err(|_| PyTypeError::new_err("params names must be str"))?;
         if name.trim().is_empty() {
             return Err(PyValueError::new_err("params names must not be empty"));
         }
@@ -175,9 +164,7 @@ fn params(v: &Bound<'_, PyAny>) -> PyResult<Vec<(String, String)>> {
         } else if value.extract::<i64>().is_ok() || value.extract::<f64>().is_ok() {
             value.str()?.extract::<String>()?
         } else {
-            return Err(PyTypeError::new_err(format!(
-                "params[{name:?}] must be a str, int, float or bool"
-            )));
+            return Err(PyTypeError::new_err(format!("params[{name:?}] must be a str, int, float or bool")));
         };
         out.push((name.trim().to_string(), text));
     }

@@ -33,19 +33,12 @@ pub struct Variations {
 /// `stop` (exclusive) defaults to the end, capped by the `max_variations` option.
 #[pyfunction]
 #[pyo3(signature = (path, start=1, stop=None, **options))]
-pub fn variations(
-    py: Python<'_>,
-    path: PathBuf,
-    start: u64,
-    stop: Option<u64>,
-    options: Option<&Bound<'_, PyDict>>,
-) -> PyResult<Variations> {
+pub fn variations(py: Python<'_>, path: PathBuf, start: u64, stop: Option<u64>, options: Option<&Bound<'_, PyDict>>) -> PyResult<Variations> {
     if start == 0 {
         return Err(PyValueError::new_err("start counts from 1"));
     }
     let (opts, max) = from_kwargs(options)?;
-    let dist = convert::load_distribution(&path, &opts)
-        .map_err(|f| conversion_error(py, &f, &path, None))?;
+    let dist = convert::load_distribution(&path, &opts).map_err(|f| conversion_error(py, &f, &path, None))?;
     let mut end = dist.len().saturating_add(1);
     if let Some(m) = max {
         end = end.min(m.saturating_add(1));
@@ -53,14 +46,7 @@ pub fn variations(
     if let Some(s) = stop {
         end = end.min(s);
     }
-    Ok(Variations {
-        path,
-        dist,
-        options: opts,
-        caches: Caches::with_capacity(2),
-        next: start,
-        stop: end.max(start),
-    })
+    Ok(Variations { path, dist, options: opts, caches: Caches::with_capacity(2), next: start, stop: end.max(start) })
 }
 
 type Item<'py> = (u64, Vec<(String, String)>, crate::Payload<'py>, Vec<(&'static str, String)>);
@@ -80,11 +66,7 @@ impl Variations {
         let this = &*slf;
         let parameters = this.dist.get(k - 1).unwrap_or_default();
         let c = py.detach(|| convert::convert_variation_with(&this.path, &this.dist, k, &this.options, &this.caches));
-        let warnings = c
-            .warnings
-            .iter()
-            .map(|w| (w.stage.as_str(), w.message.clone()))
-            .collect();
+        let warnings = c.warnings.iter().map(|w| (w.stage.as_str(), w.message.clone())).collect();
         match c.result {
             Ok(output) => Ok(Some((k, parameters, crate::payload(py, output), warnings))),
             Err(f) => Err(conversion_error(py, &f, &this.path, Some(k))),
@@ -110,9 +92,6 @@ impl Variations {
 
     /// The parameter values of variation `index` (1-based), without converting it.
     fn parameters(&self, index: u64) -> PyResult<Vec<(String, String)>> {
-        index
-            .checked_sub(1)
-            .and_then(|i| self.dist.get(i))
-            .ok_or_else(|| PyValueError::new_err(format!("no variation {index}; there are {}", self.dist.len())))
+        index.checked_sub(1).and_then(|i| self.dist.get(i)).ok_or_else(|| PyValueError::new_err(format!("no variation {index}; there are {}", self.dist.len())))
     }
 }

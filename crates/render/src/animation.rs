@@ -19,10 +19,7 @@ use crate::timeline::{first_step, last_step};
 const MIN_DELAY_S: f64 = 0.02;
 
 fn encode_error(e: impl std::fmt::Display) -> RenderError {
-    RenderError::Encode {
-        format: "GIF",
-        message: e.to_string(),
-    }
+    RenderError::Encode { format: "GIF", message: e.to_string() }
 }
 
 /// The smallest rectangle (x, y, w, h) in which `a` and `b` differ, or `None`.
@@ -65,8 +62,7 @@ fn encode(frames: &Frames, steps: &[u64], stride: u64, dt: f64, palette: &mut Pa
     let (w, h) = (frames.base.width() as usize, frames.base.height() as usize);
     let mut out = Vec::new();
     {
-        let mut enc = Encoder::new(&mut out, to_u16(w)?, to_u16(h)?, &palette.bytes())
-            .map_err(encode_error)?;
+        let mut enc = Encoder::new(&mut out, to_u16(w)?, to_u16(h)?, &palette.bytes()).map_err(encode_error)?;
         enc.set_repeat(Repeat::Infinite).map_err(encode_error)?;
         let centis = |s: u64| (s as f64 * dt * 100.0).round() as i64;
         let mut previous: Option<Pixmap> = None;

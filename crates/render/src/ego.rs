@@ -12,18 +12,9 @@ pub const SAME_POSITION_M: f64 = 0.01;
 
 /// The ego's id: `chosen` if given (it must exist), else the obstacle at the planning
 /// problem's initial position at time step 0 (nearest first, then smallest id), else none.
-pub fn find_ego(
-    scenario: &Scenario,
-    problems: Option<&PlanningProblemSet>,
-    chosen: Option<u64>,
-) -> Result<Option<ObstacleId>, RenderError> {
+pub fn find_ego(scenario: &Scenario, problems: Option<&PlanningProblemSet>, chosen: Option<u64>) -> Result<Option<ObstacleId>, RenderError> {
     if let Some(id) = chosen {
-        return scenario
-            .dynamic_obstacles
-            .iter()
-            .find(|o| o.id.get() == id)
-            .map(|o| Some(o.id))
-            .ok_or(RenderError::UnknownEgo(id));
+        return scenario.dynamic_obstacles.iter().find(|o| o.id.get() == id).map(|o| Some(o.id)).ok_or(RenderError::UnknownEgo(id));
     }
     let Some(start) = problems.and_then(|p| p.problems.first()) else {
         return Ok(None);

@@ -14,8 +14,5 @@ pub enum RenderError {
     View(String),
     /// The encoder failed (PNG or GIF).
     #[error("cannot encode the {format} picture: {message}")]
-    Encode {
-        format: &'static str,
-        message: String,
-    },
+    Encode { format: &'static str, message: String },
 }

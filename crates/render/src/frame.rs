@@ -32,10 +32,16 @@ pub const FOLLOW_ASPECT: f64 = 0.5;
 #[derive(Debug, Clone, PartialEq)]
 pub enum ViewPlan {
     Fixed(View),
-    Follow { view: View, id: ObstacleId },
+    Follow {
+        view: View,
+        id: ObstacleId,
+    },
     /// A camera that keeps the road users of each step in the middle, zoomed to hold them:
     /// (step, (centre x, centre y, pixels per metre)) for each step someone is on the road.
-    Pan { view: View, cameras: BTreeMap<u64, (f64, f64, f64)> },
+    Pan {
+        view: View,
+        cameras: BTreeMap<u64, (f64, f64, f64)>,
+    },
 }
 
 impl ViewPlan {
@@ -50,12 +56,10 @@ impl ViewPlan {
                     None => *view,
                 }
             }
-            ViewPlan::Follow { view, id } => {
-                match scenario.dynamic_obstacles.iter().find(|o| o.id == *id).and_then(|o| nearest_state(o, step)) {
-                    Some((x, y)) => view.centred_on(x, y),
-                    None => *view,
-                }
-            }
+            ViewPlan::Follow { view, id } => match scenario.dynamic_obstacles.iter().find(|o| o.id == *id).and_then(|o| nearest_state(o, step)) {
+                Some((x, y)) => view.centred_on(x, y),
+                None => *view,
+            },
         }
     }
 
@@ -90,9 +94,7 @@ pub fn road_users(scenario: &Scenario, still: Option<(u64, u64)>) -> Bounds {
                     continue;
                 }
                 let from = step.saturating_sub(trail);
-                states
-                    .filter(|s| (from..=step).contains(&s.time_step))
-                    .for_each(|s| b.add(s.x, s.y, r));
+                states.filter(|s| (from..=step).contains(&s.time_step)).for_each(|s| b.add(s.x, s.y, r));
             }
         }
     }
@@ -121,9 +123,7 @@ pub const ZOOM_WINDOW_S: f64 = 2.0;
 
 /// The smallest of `v[k - w ..= k + w]` at each k.
 fn min_filter(v: &[f64], w: usize) -> Vec<f64> {
-    (0..v.len())
-        .map(|k| v[k.saturating_sub(w)..=(k + w).min(v.len() - 1)].iter().copied().fold(f64::INFINITY, f64::min))
-        .collect()
+    (0..v.len()).map(|k| v[k.saturating_sub(w)..=(k + w).min(v.len() - 1)].iter().copied().fold(f64::INFINITY, f64::min)).collect()
 }
 
 /// The mean of `v[k - w ..= k + w]` at each k.
@@ -164,12 +164,7 @@ fn pan(scenario: &Scenario, fixed: &View, width: u32, y0: f64) -> Result<Option<
     if mean < PAN_GAIN * fixed.scale {
         return Ok(None);
     }
-    let cameras = steps
-        .into_iter()
-        .zip(centres)
-        .zip(smooth)
-        .map(|((k, (x, y)), scale)| (k, (x, y, scale)))
-        .collect();
+    let cameras = steps.into_iter().zip(centres).zip(smooth).map(|((k, (x, y)), scale)| (k, (x, y, scale))).collect();
     Ok(Some(ViewPlan::Pan { view, cameras }))
 }
 
@@ -219,9 +214,7 @@ pub fn plan(
         }
         Frame::Follow(id) => {
             let Some(o) = scenario.dynamic_obstacles.iter().find(|o| o.id.get() == *id) else {
-                return Err(RenderError::Option(format!(
-                    "--follow: the scenario has no dynamic obstacle with id {id}"
-                )));
+                return Err(RenderError::Option(format!("--follow: the scenario has no dynamic obstacle with id {id}")));
             };
             let a = aspect.unwrap_or(FOLLOW_ASPECT);
             let half = 0.5 * FOLLOW_SPAN_M;

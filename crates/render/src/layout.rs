@@ -56,8 +56,20 @@ impl PxRect {
     }
     /// Moved the least distance to lie inside `area` (as far as it fits).
     pub fn pushed_into(&self, area: &PxRect) -> PxRect {
-        let dx = if self.x0 < area.x0 { area.x0 - self.x0 } else if self.x1 > area.x1 { (area.x1 - self.x1).max(area.x0 - self.x0) } else { 0.0 };
-        let dy = if self.y0 < area.y0 { area.y0 - self.y0 } else if self.y1 > area.y1 { (area.y1 - self.y1).max(area.y0 - self.y0) } else { 0.0 };
+        let dx = if self.x0 < area.x0 {
+            area.x0 - self.x0
+        } else if self.x1 > area.x1 {
+            (area.x1 - self.x1).max(area.x0 - self.x0)
+        } else {
+            0.0
+        };
+        let dy = if self.y0 < area.y0 {
+            area.y0 - self.y0
+        } else if self.y1 > area.y1 {
+            (area.y1 - self.y1).max(area.y0 - self.y0)
+        } else {
+            0.0
+        };
         PxRect { x0: self.x0 + dx, y0: self.y0 + dy, x1: self.x1 + dx, y1: self.y1 + dy }
     }
 }

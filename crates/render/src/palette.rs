@@ -9,10 +9,7 @@ use crate::style;
 
 /// Opaque colours of the style (alpha blends are found by sampling).
 fn style_colors() -> Vec<[u8; 3]> {
-    use commonroad::{
-        DynamicObstacleType as D, EnvironmentObstacleType as E, StaticObstacleType as S,
-        TrafficLightColor as L,
-    };
+    use commonroad::{DynamicObstacleType as D, EnvironmentObstacleType as E, StaticObstacleType as S, TrafficLightColor as L};
     let mut v: Vec<Rgba> = vec![
         style::BACKGROUND,
         style::ROAD,
@@ -71,10 +68,7 @@ impl Palette {
                 colors.push(c);
             }
         }
-        Self {
-            colors,
-            cache: HashMap::new(),
-        }
+        Self { colors, cache: HashMap::new() }
     }
 
     /// `r g b r g b …`, padded to 256 entries.

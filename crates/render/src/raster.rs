@@ -1,9 +1,6 @@
 //! Paints a display list into an RGBA pixmap with tiny-skia (anti-aliased, CPU only).
 
-use tiny_skia::{
-    Color, FillRule, LineCap, LineJoin, Paint, PathBuilder, Pixmap, Rect, Stroke as SkStroke,
-    StrokeDash, Transform,
-};
+use tiny_skia::{Color, FillRule, LineCap, LineJoin, Paint, PathBuilder, Pixmap, Rect, Stroke as SkStroke, StrokeDash, Transform};
 
 use crate::error::RenderError;
 use crate::font;
@@ -21,18 +18,14 @@ fn sk_stroke(s: &Stroke) -> SkStroke {
         width: s.width as f32,
         line_cap: LineCap::Butt,
         line_join: LineJoin::Round,
-        dash: s
-            .dash
-            .and_then(|(on, off)| StrokeDash::new(vec![on as f32, off as f32], 0.0)),
+        dash: s.dash.and_then(|(on, off)| StrokeDash::new(vec![on as f32, off as f32], 0.0)),
         ..SkStroke::default()
     }
 }
 
 /// A blank pixmap of the background colour.
 pub fn canvas(width: u32, height: u32, background: Rgba) -> Result<Pixmap, RenderError> {
-    let mut pm = Pixmap::new(width, height).ok_or_else(|| RenderError::View(format!(
-        "cannot allocate a {width} × {height} picture"
-    )))?;
+    let mut pm = Pixmap::new(width, height).ok_or_else(|| RenderError::View(format!("cannot allocate a {width} × {height} picture")))?;
     pm.fill(Color::from_rgba8(background.r, background.g, background.b, background.a));
     Ok(pm)
 }
@@ -83,12 +76,7 @@ fn text(pm: &mut Pixmap, x: f64, y: f64, size: f64, color: Rgba, background: Opt
 pub fn paint_prims(pm: &mut Pixmap, prims: &[Prim]) {
     for prim in prims {
         match prim {
-            Prim::Path {
-                points,
-                closed,
-                fill,
-                stroke,
-            } => {
+            Prim::Path { points, closed, fill, stroke } => {
                 let mut pb = PathBuilder::new();
                 let mut it = points.iter();
                 let Some(&(x0, y0)) = it.next() else { continue };
@@ -104,26 +92,12 @@ pub fn paint_prims(pm: &mut Pixmap, prims: &[Prim]) {
                     fill_and_stroke(pm, &path, fill, stroke.as_ref());
                 }
             }
-            Prim::Circle {
-                center,
-                radius,
-                fill,
-                stroke,
-            } => {
-                if let Some(path) =
-                    PathBuilder::from_circle(clamp(center.0), clamp(center.1), clamp(*radius))
-                {
+            Prim::Circle { center, radius, fill, stroke } => {
+                if let Some(path) = PathBuilder::from_circle(clamp(center.0), clamp(center.1), clamp(*radius)) {
                     fill_and_stroke(pm, &path, *fill, stroke.as_ref());
                 }
             }
-            Prim::Text {
-                x,
-                y,
-                size,
-                color,
-                background,
-                text: s,
-            } => text(pm, *x, *y, *size, *color, *background, s),
+            Prim::Text { x, y, size, color, background, text: s } => text(pm, *x, *y, *size, *color, *background, s),
         }
     }
 }

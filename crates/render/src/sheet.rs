@@ -24,11 +24,7 @@ const GAP: u32 = 6;
 fn mark_steps(scenario: &Scenario, marks: &[crate::options::Mark]) -> Vec<u64> {
     let dt = scenario.header.time_step_size;
     let (first, last) = (first_step(scenario), last_step(scenario));
-    let mut steps: Vec<u64> = marks
-        .iter()
-        .map(|m| step_of(m.time, dt))
-        .filter(|s| (first..=last).contains(s))
-        .collect();
+    let mut steps: Vec<u64> = marks.iter().map(|m| step_of(m.time, dt)).filter(|s| (first..=last).contains(s)).collect();
     steps.sort_unstable();
     steps.dedup();
     steps.retain(|&s| s != first && s != last);
@@ -50,11 +46,7 @@ pub fn sheet_times(scenario: &Scenario, marks: &[crate::options::Mark]) -> Vec<u
 }
 
 /// The sheet as PNG bytes, `options.width` wide: panels in up to 3 columns.
-pub fn render_sheet_png(
-    scenario: &Scenario,
-    problems: Option<&PlanningProblemSet>,
-    options: &RenderOptions,
-) -> Result<Vec<u8>, RenderError> {
+pub fn render_sheet_png(scenario: &Scenario, problems: Option<&PlanningProblemSet>, options: &RenderOptions) -> Result<Vec<u8>, RenderError> {
     options.check()?;
     let steps = sheet_times(scenario, &options.marks);
     let n = steps.len() as u32;

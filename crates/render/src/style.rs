@@ -1,8 +1,6 @@
 //! Colours and line widths: one place for the look of every picture.
 
-use commonroad::{
-    DynamicObstacleType, EnvironmentObstacleType, StaticObstacleType, TrafficLightColor,
-};
+use commonroad::{DynamicObstacleType, EnvironmentObstacleType, StaticObstacleType, TrafficLightColor};
 
 use crate::scene::prim::Rgba;
 

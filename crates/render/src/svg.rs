@@ -56,12 +56,7 @@ fn paint_attrs(fill: Option<Rgba>, stroke: Option<&Stroke>) -> String {
 
 fn prim(out: &mut String, p: &Prim) {
     match p {
-        Prim::Path {
-            points,
-            closed,
-            fill,
-            stroke,
-        } => {
+        Prim::Path { points, closed, fill, stroke } => {
             if points.is_empty() {
                 return;
             }
@@ -75,44 +70,17 @@ fn prim(out: &mut String, p: &Prim) {
             let fill = if *closed { *fill } else { None };
             let _ = writeln!(out, "<path d=\"{d}\"{}/>", paint_attrs(fill, stroke.as_ref()));
         }
-        Prim::Circle {
-            center,
-            radius,
-            fill,
-            stroke,
-        } => {
-            let _ = writeln!(
-                out,
-                "<circle cx=\"{}\" cy=\"{}\" r=\"{}\"{}/>",
-                n(center.0),
-                n(center.1),
-                n(*radius),
-                paint_attrs(*fill, stroke.as_ref())
-            );
+        Prim::Circle { center, radius, fill, stroke } => {
+            let _ = writeln!(out, "<circle cx=\"{}\" cy=\"{}\" r=\"{}\"{}/>", n(center.0), n(center.1), n(*radius), paint_attrs(*fill, stroke.as_ref()));
         }
-        Prim::Text {
-            x,
-            y,
-            size,
-            color,
-            background,
-            text,
-        } => {
+        Prim::Text { x, y, size, color, background, text } => {
             // the same box as the bitmap font, so both formats place the stamp alike
             let dot = font::dot_size(*size);
             let pad = (1.5 * dot).round();
             let size = font::GLYPH_H as f64 * dot;
             if let Some(bg) = background {
                 let (w, h) = font::text_box(text, size);
-                let _ = writeln!(
-                    out,
-                    "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"{}/>",
-                    n(*x),
-                    n(*y),
-                    n(w),
-                    n(h),
-                    paint_attrs(Some(*bg), None)
-                );
+                let _ = writeln!(out, "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"{}/>", n(*x), n(*y), n(w), n(h), paint_attrs(Some(*bg), None));
             }
             let _ = writeln!(
                 out,
@@ -136,13 +104,7 @@ pub fn to_svg(scene: &Scene) -> String {
         w = scene.width,
         h = scene.height
     );
-    let _ = writeln!(
-        out,
-        "<rect x=\"0\" y=\"0\" width=\"{}\" height=\"{}\" fill=\"{}\"/>",
-        scene.width,
-        scene.height,
-        scene.background.hex()
-    );
+    let _ = writeln!(out, "<rect x=\"0\" y=\"0\" width=\"{}\" height=\"{}\" fill=\"{}\"/>", scene.width, scene.height, scene.background.hex());
     for (id, layer) in [("still", &scene.still), ("moving", &scene.moving)] {
         let _ = writeln!(out, "<g id=\"{id}\">");
         layer.iter().for_each(|p| prim(&mut out, p));

@@ -37,23 +37,12 @@ pub fn state_at(o: &DynamicObstacle, step: u64) -> Option<&State> {
 
 /// The last time step of any dynamic obstacle (0 for a scenario without one).
 pub fn last_step(scenario: &Scenario) -> u64 {
-    scenario
-        .dynamic_obstacles
-        .iter()
-        .flat_map(|o| std::iter::once(&o.initial_state).chain(&o.trajectory))
-        .map(|s| s.time_step)
-        .max()
-        .unwrap_or(0)
+    scenario.dynamic_obstacles.iter().flat_map(|o| std::iter::once(&o.initial_state).chain(&o.trajectory)).map(|s| s.time_step).max().unwrap_or(0)
 }
 
 /// The first time step of any dynamic obstacle (0 for a scenario without one).
 pub fn first_step(scenario: &Scenario) -> u64 {
-    scenario
-        .dynamic_obstacles
-        .iter()
-        .map(|o| o.initial_state.time_step)
-        .min()
-        .unwrap_or(0)
+    scenario.dynamic_obstacles.iter().map(|o| o.initial_state.time_step).min().unwrap_or(0)
 }
 
 /// The colour a light shows at `step`: its cycle repeats from `-time_offset`; an inactive
@@ -62,10 +51,7 @@ pub fn light_color(light: &TrafficLight, step: u64) -> TrafficLightColor {
     if light.active == Some(false) {
         return TrafficLightColor::Inactive;
     }
-    let period: u64 = light
-        .cycle
-        .iter()
-        .fold(0u64, |a, c| a.saturating_add(c.duration.get()));
+    let period: u64 = light.cycle.iter().fold(0u64, |a, c| a.saturating_add(c.duration.get()));
     if period == 0 {
         return TrafficLightColor::Inactive;
     }

@@ -2,9 +2,7 @@
 //! chose) mapped onto the map area of a picture `width` pixels wide (y up in the world, down
 //! in the picture), below the picture's header strip.
 
-use commonroad::{
-    AbsoluteShape, GoalPosition, PlanningProblemSet, Point, Scenario, Shape,
-};
+use commonroad::{AbsoluteShape, GoalPosition, PlanningProblemSet, Point, Scenario, Shape};
 
 use crate::error::RenderError;
 
@@ -24,12 +22,7 @@ pub struct Bounds {
 
 impl Bounds {
     pub fn empty() -> Self {
-        Self {
-            min_x: f64::INFINITY,
-            min_y: f64::INFINITY,
-            max_x: f64::NEG_INFINITY,
-            max_y: f64::NEG_INFINITY,
-        }
+        Self { min_x: f64::INFINITY, min_y: f64::INFINITY, max_x: f64::NEG_INFINITY, max_y: f64::NEG_INFINITY }
     }
     /// Grows the box to hold a disc of radius `r` at (x, y); non-finite values are ignored.
     pub fn add(&mut self, x: f64, y: f64, r: f64) {
@@ -58,21 +51,13 @@ pub fn shape_radius(s: &Shape) -> f64 {
     match s {
         Shape::Rectangle(r) => 0.5 * r.length().hypot(r.width()),
         Shape::Circle(c) => c.radius(),
-        Shape::Polygon(p) => p
-            .points()
-            .iter()
-            .map(|q| q.x.hypot(q.y))
-            .fold(0.0, f64::max),
+        Shape::Polygon(p) => p.points().iter().map(|q| q.x.hypot(q.y)).fold(0.0, f64::max),
     }
 }
 
 fn add_absolute(b: &mut Bounds, s: &AbsoluteShape) {
     match s {
-        AbsoluteShape::Rectangle(r) => b.add(
-            r.center.x,
-            r.center.y,
-            0.5 * r.rectangle.length().hypot(r.rectangle.width()),
-        ),
+        AbsoluteShape::Rectangle(r) => b.add(r.center.x, r.center.y, 0.5 * r.rectangle.length().hypot(r.rectangle.width())),
         AbsoluteShape::Circle(c) => b.add(c.center.x, c.center.y, c.circle.radius()),
         AbsoluteShape::Polygon(p) => p.points().iter().for_each(|q| b.add_point(q)),
     }
@@ -82,11 +67,7 @@ fn add_absolute(b: &mut Bounds, s: &AbsoluteShape) {
 pub fn content_bounds(scenario: &Scenario, problems: Option<&PlanningProblemSet>) -> Bounds {
     let mut b = Bounds::empty();
     for l in &scenario.network.lanelets {
-        l.bounds
-            .left()
-            .iter()
-            .chain(l.bounds.right())
-            .for_each(|p| b.add_point(p));
+        l.bounds.left().iter().chain(l.bounds.right()).for_each(|p| b.add_point(p));
     }
     for o in &scenario.dynamic_obstacles {
         let r = shape_radius(&o.shape);
@@ -104,16 +85,9 @@ pub fn content_bounds(scenario: &Scenario, problems: Option<&PlanningProblemSet>
         b.add(p.initial_state.x, p.initial_state.y, 1.0);
         for g in &p.goal_states {
             match &g.position {
-                Some(GoalPosition::Rectangles(rs)) => rs
-                    .iter()
-                    .for_each(|r| add_absolute(&mut b, &AbsoluteShape::Rectangle(*r))),
-                Some(GoalPosition::Circles(cs)) => cs
-                    .iter()
-                    .for_each(|c| add_absolute(&mut b, &AbsoluteShape::Circle(*c))),
-                Some(GoalPosition::Polygons(ps)) => ps
-                    .iter()
-                    .flat_map(|p| p.points())
-                    .for_each(|q| b.add_point(q)),
+                Some(GoalPosition::Rectangles(rs)) => rs.iter().for_each(|r| add_absolute(&mut b, &AbsoluteShape::Rectangle(*r))),
+                Some(GoalPosition::Circles(cs)) => cs.iter().for_each(|c| add_absolute(&mut b, &AbsoluteShape::Circle(*c))),
+                Some(GoalPosition::Polygons(ps)) => ps.iter().flat_map(|p| p.points()).for_each(|q| b.add_point(q)),
                 // goal lanelets are part of the network, already inside
                 Some(GoalPosition::Lanelets(_)) | None => {}
             }
@@ -165,9 +139,7 @@ impl View {
     /// Fits `b` with `fit`'s margin into a map area `width` pixels wide starting at row `y0`.
     pub fn fit(b: Bounds, width: u32, fit: &Fit, y0: f64) -> Result<View, RenderError> {
         if !b.is_valid() {
-            return Err(RenderError::View(
-                "the scenario has no lanelet, obstacle or goal region".to_string(),
-            ));
+            return Err(RenderError::View("the scenario has no lanelet, obstacle or goal region".to_string()));
         }
         let mut w = b.max_x - b.min_x;
         let mut h = b.max_y - b.min_y;
@@ -183,30 +155,17 @@ impl View {
         let (w, h) = if h / w < aspect { (w, w * aspect) } else { (h / aspect, h) };
         let scale = f64::from(width) / w;
         if !(w.is_finite() && h.is_finite() && scale.is_finite() && scale > 0.0) {
-            return Err(RenderError::View(format!(
-                "coordinates out of range (extent {w} m × {h} m)"
-            )));
+            return Err(RenderError::View(format!("coordinates out of range (extent {w} m × {h} m)")));
         }
         let cx = 0.5 * (b.min_x + b.max_x);
         let cy = 0.5 * (b.min_y + b.max_y);
         let height = (f64::from(width) * aspect).round().max(1.0) as u32;
-        Ok(View {
-            width,
-            height,
-            scale,
-            left: cx - 0.5 * w,
-            top: cy + 0.5 * f64::from(height) / scale,
-            y0,
-        })
+        Ok(View { width, height, scale, left: cx - 0.5 * w, top: cy + 0.5 * f64::from(height) / scale, y0 })
     }
 
     /// The same scale and size, centred on (x, y).
     pub fn centred_on(&self, x: f64, y: f64) -> View {
-        View {
-            left: x - 0.5 * f64::from(self.width) / self.scale,
-            top: y + 0.5 * f64::from(self.height) / self.scale,
-            ..*self
-        }
+        View { left: x - 0.5 * f64::from(self.width) / self.scale, top: y + 0.5 * f64::from(self.height) / self.scale, ..*self }
     }
 
     /// Pixel coordinates of a world point.

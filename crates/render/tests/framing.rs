@@ -195,14 +195,8 @@ fn a_time_bar_shows_when_the_events_happen() {
     // before either event the header names none, but the bar's ticks show both
     let pm = decode_png(&render_png(&s, Some(&p), &o).unwrap());
     let c = rgb(render::style::MARK_NEW);
-    let below: usize = (with.map.y1 as u32..pm.height())
-        .flat_map(|y| (0..pm.width()).map(move |x| (x, y)))
-        .filter(|&xy| pixel(&pm, xy) == c)
-        .count();
+    let below: usize = (with.map.y1 as u32..pm.height()).flat_map(|y| (0..pm.width()).map(move |x| (x, y))).filter(|&xy| pixel(&pm, xy) == c).count();
     assert!(below > 20, "{below} tick pixels");
-    let above: usize = (0..with.map.y0 as u32)
-        .flat_map(|y| (0..pm.width()).map(move |x| (x, y)))
-        .filter(|&xy| pixel(&pm, xy) == c)
-        .count();
+    let above: usize = (0..with.map.y0 as u32).flat_map(|y| (0..pm.width()).map(move |x| (x, y))).filter(|&xy| pixel(&pm, xy) == c).count();
     assert_eq!(above, 0, "no event highlighted in the header yet");
 }

@@ -132,8 +132,7 @@ fn traffic_light_cycles() {
         active: Some(true),
     };
     let at = |l: &TrafficLight, t| render::timeline::light_color(l, t);
-    assert_eq!([at(&light, 0), at(&light, 49), at(&light, 50), at(&light, 60), at(&light, 119), at(&light, 120)],
-               [Red, Red, RedYellow, Green, Yellow, Red]);
+    assert_eq!([at(&light, 0), at(&light, 49), at(&light, 50), at(&light, 60), at(&light, 119), at(&light, 120)], [Red, Red, RedYellow, Green, Yellow, Red]);
     light.time_offset = 60; // starts 60 steps into the cycle: green
     assert_eq!(at(&light, 0), Green);
     light.active = Some(false);

@@ -94,7 +94,8 @@ impl Route {
         let p0 = points[0];
         let start = RoutePoint { road: p0.lane.road, lane: p0.lane.lane, s: p0.s, along_s: p0.along_s, leg: 0 };
         let mut route = Route { legs: Vec::new(), length: 0.0, closed, waypoint_s: vec![0.0], start, random_as_shortest: false, warnings: Vec::new() };
-        let extra_kind = net.roads.get(waypoints[0].road).and_then(|r| r.lane_sections.get(points[0].lane.section)).and_then(|s| s.lane(waypoints[0].lane)).map(|l| l.kind);
+        let extra_kind =
+            net.roads.get(waypoints[0].road).and_then(|r| r.lane_sections.get(points[0].lane.section)).and_then(|s| s.lane(waypoints[0].lane)).map(|l| l.kind);
         let mut order: Vec<usize> = (1..points.len()).collect();
         if closed {
             order.push(0);
@@ -217,7 +218,11 @@ impl Route {
     /// Route s of road position (road, s): among the legs covering it, the first at or
     /// after `near` (a route s, e.g. the entity's last one), else the first overall.
     pub fn route_s_of(&self, road: usize, s: f64, near: Option<f64>) -> Option<f64> {
-        let hits = self.legs.iter().filter(|l| l.road == road && s >= l.s_start.min(l.s_end) - 1e-9 && s <= l.s_start.max(l.s_end) + 1e-9).map(|l| l.route_s + (s - l.s_start).abs().min(l.length()));
+        let hits = self
+            .legs
+            .iter()
+            .filter(|l| l.road == road && s >= l.s_start.min(l.s_end) - 1e-9 && s <= l.s_start.max(l.s_end) + 1e-9)
+            .map(|l| l.route_s + (s - l.s_start).abs().min(l.length()));
         let all: Vec<f64> = hits.collect();
         match near {
             Some(n) => all.iter().copied().find(|&r| r >= n - 1e-9).or_else(|| all.first().copied()),

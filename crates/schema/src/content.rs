@@ -97,9 +97,7 @@ impl Matcher<'_> {
             Term::All(items) => {
                 let mut counts = vec![0u32; items.len()];
                 while let Some(next) = self.next() {
-                    let found = items.iter().enumerate().find(|(k, i)| {
-                        i.max.map_or(true, |m| counts[*k] < m) && self.first(&i.term, depth).contains(&next)
-                    });
+                    let found = items.iter().enumerate().find(|(k, i)| i.max.map_or(true, |m| counts[*k] < m) && self.first(&i.term, depth).contains(&next));
                     let Some((k, item)) = found else { break };
                     let before = self.pos;
                     self.term(&item.term, depth + 1);

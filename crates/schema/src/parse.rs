@@ -82,10 +82,7 @@ fn particle(node: Node) -> Result<Particle, String> {
         "element" => Term::Element(element_decl(node)?),
         "group" => Term::Group(node.attribute("ref").ok_or("xsd:group without ref")?.to_string()),
         kind @ ("sequence" | "choice" | "all") => {
-            let items = elements(node)
-                .filter(|n| n.tag_name().name() != "annotation")
-                .map(particle)
-                .collect::<Result<Vec<_>, _>>()?;
+            let items = elements(node).filter(|n| n.tag_name().name() != "annotation").map(particle).collect::<Result<Vec<_>, _>>()?;
             match kind {
                 "sequence" => Term::Sequence(items),
                 "choice" => Term::Choice(items),

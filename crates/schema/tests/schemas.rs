@@ -83,10 +83,7 @@ fn content_models_match_as_the_schema_says() {
     let story = s.complex_type("Story").expect("Story");
     assert_eq!(match_children(s, story, &["ParameterDeclarations", "Act", "Act"]), vec![]);
     assert_eq!(match_children(s, story, &[]), vec![ContentProblem::Missing { expected: vec!["Act".into()], before: None }]);
-    assert_eq!(
-        match_children(s, story, &["Act", "ParameterDeclarations"]),
-        vec![ContentProblem::NotAllowedHere { child: 1 }]
-    );
+    assert_eq!(match_children(s, story, &["Act", "ParameterDeclarations"]), vec![ContentProblem::NotAllowedHere { child: 1 }]);
     assert_eq!(match_children(s, story, &["Act", "Test"]), vec![ContentProblem::Unknown { child: 1 }]);
 
     // A choice: exactly one alternative.
@@ -104,10 +101,7 @@ fn content_models_match_as_the_schema_says() {
     let by_entity = s.complex_type("ByEntityCondition").expect("ByEntityCondition");
     assert!(matches!(by_entity.content.as_ref().map(|p| &p.term), Some(Term::All(_))));
     assert_eq!(match_children(s, by_entity, &["EntityCondition", "TriggeringEntities"]), vec![]);
-    assert_eq!(
-        match_children(s, by_entity, &["EntityCondition", "TriggeringEntities", "EntityCondition"]),
-        vec![ContentProblem::NotAllowedHere { child: 2 }]
-    );
+    assert_eq!(match_children(s, by_entity, &["EntityCondition", "TriggeringEntities", "EntityCondition"]), vec![ContentProblem::NotAllowedHere { child: 2 }]);
 
     // Named groups inside sequences.
     let root = s.complex_type("OpenScenario").expect("OpenScenario");

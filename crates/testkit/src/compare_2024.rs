@@ -80,14 +80,10 @@ fn run_part(python: &Path, cases: &[Case2024], cases_file: &Path) -> Vec<Compari
             })
         })
         .collect();
-    std::fs::write(cases_file, serde_json::to_vec(&list).expect("json"))
-        .unwrap_or_else(|e| panic!("cannot write {}: {e}", cases_file.display()));
+    std::fs::write(cases_file, serde_json::to_vec(&list).expect("json")).unwrap_or_else(|e| panic!("cannot write {}: {e}", cases_file.display()));
     let script = workspace_root().join("crates/testkit/py/compare_2024.py");
-    let out = Command::new(python)
-        .arg(&script)
-        .arg(cases_file)
-        .output()
-        .unwrap_or_else(|e| panic!("cannot run {} {}: {e}", python.display(), script.display()));
+    let out =
+        Command::new(python).arg(&script).arg(cases_file).output().unwrap_or_else(|e| panic!("cannot run {} {}: {e}", python.display(), script.display()));
     let stdout = String::from_utf8_lossy(&out.stdout);
     if !matches!(out.status.code(), Some(0 | 1)) {
         panic!("compare_2024.py failed ({}):\n{stdout}\n{}", out.status, String::from_utf8_lossy(&out.stderr));
@@ -101,10 +97,7 @@ fn run_part(python: &Path, cases: &[Case2024], cases_file: &Path) -> Vec<Compari
             Comparison2024 {
                 xml: PathBuf::from(v["xml"].as_str().unwrap_or_default()),
                 ok: v["ok"].as_bool().unwrap_or(false),
-                differences: v["differences"]
-                    .as_array()
-                    .map(|a| a.iter().filter_map(|s| s.as_str().map(String::from)).collect())
-                    .unwrap_or_default(),
+                differences: v["differences"].as_array().map(|a| a.iter().filter_map(|s| s.as_str().map(String::from)).collect()).unwrap_or_default(),
                 n_differences: v["n_differences"].as_u64().unwrap_or(0),
                 counted: v["counted"].clone(),
                 error: v["error"].as_str().map(String::from),

@@ -44,12 +44,7 @@ impl CrCheckResult {
     }
     /// A one-paragraph description for assertion messages.
     pub fn summary(&self) -> String {
-        let list = |v: &[Finding]| {
-            v.iter()
-                .map(|f| format!("  [{}] {}", f.check, f.msg))
-                .collect::<Vec<_>>()
-                .join("\n")
-        };
+        let list = |v: &[Finding]| v.iter().map(|f| format!("  [{}] {}", f.check, f.msg)).collect::<Vec<_>>().join("\n");
         format!(
             "{}: {} ({} errors, {} warnings)\nerrors:\n{}\nwarnings:\n{}",
             self.file.display(),
@@ -71,10 +66,8 @@ const BATCH: usize = 64;
 /// Test support: panics with a clear message when the tools cannot run (no shared directory,
 /// environments failing, unparsable output); callers check [`crate::shared_dir`] first.
 pub fn cr_check<P: AsRef<Path>>(files: &[P], extra_args: &[&str]) -> Vec<CrCheckResult> {
-    let shared = shared_dir()
-        .unwrap_or_else(|| panic!("cr_check: shared directory not found (set OSC2CR_SHARED)"));
-    let envs =
-        python_envs().unwrap_or_else(|e| panic!("cr_check: Python environments unavailable: {e}"));
+    let shared = shared_dir().unwrap_or_else(|| panic!("cr_check: shared directory not found (set OSC2CR_SHARED)"));
+    let envs = python_envs().unwrap_or_else(|e| panic!("cr_check: Python environments unavailable: {e}"));
     let script = shared.join("tools/cr_check.py");
     let mut results = Vec::with_capacity(files.len());
     for batch in files.chunks(BATCH) {
@@ -85,33 +78,18 @@ pub fn cr_check<P: AsRef<Path>>(files: &[P], extra_args: &[&str]) -> Vec<CrCheck
             .args(extra_args)
             .args(batch.iter().map(AsRef::as_ref))
             .output()
-            .unwrap_or_else(|e| {
-                panic!("cannot run {} {}: {e}", envs.cr.display(), script.display())
-            });
+            .unwrap_or_else(|e| panic!("cannot run {} {}: {e}", envs.cr.display(), script.display()));
         let stdout = String::from_utf8_lossy(&out.stdout);
         // exit 0 = all pass, 1 = some file failed; anything else is a usage error or a crash
         if !matches!(out.status.code(), Some(0 | 1)) {
-            panic!(
-                "cr_check.py failed ({}):\nstdout:\n{stdout}\nstderr:\n{}",
-                out.status,
-                String::from_utf8_lossy(&out.stderr)
-            );
+            panic!("cr_check.py failed ({}):\nstdout:\n{stdout}\nstderr:\n{}", out.status, String::from_utf8_lossy(&out.stderr));
         }
-        let lines: Vec<&str> = stdout
-            .lines()
-            .filter(|l| l.trim_start().starts_with('{'))
-            .collect();
+        let lines: Vec<&str> = stdout.lines().filter(|l| l.trim_start().starts_with('{')).collect();
         if lines.len() != batch.len() {
-            panic!(
-                "cr_check.py printed {} JSON lines for {} files:\n{stdout}\nstderr:\n{}",
-                lines.len(),
-                batch.len(),
-                String::from_utf8_lossy(&out.stderr)
-            );
+            panic!("cr_check.py printed {} JSON lines for {} files:\n{stdout}\nstderr:\n{}", lines.len(), batch.len(), String::from_utf8_lossy(&out.stderr));
         }
         for (file, line) in batch.iter().zip(lines) {
-            let json: Value = serde_json::from_str(line)
-                .unwrap_or_else(|e| panic!("cr_check.py output is not JSON ({e}): {line}"));
+            let json: Value = serde_json::from_str(line).unwrap_or_else(|e| panic!("cr_check.py output is not JSON ({e}): {line}"));
             results.push(parse(file.as_ref(), json));
         }
     }
@@ -123,16 +101,8 @@ fn findings(v: &Value) -> Vec<Finding> {
         .map(|a| {
             a.iter()
                 .map(|f| Finding {
-                    check: f
-                        .get("check")
-                        .and_then(Value::as_str)
-                        .unwrap_or("")
-                        .to_string(),
-                    msg: f
-                        .get("msg")
-                        .and_then(Value::as_str)
-                        .unwrap_or("")
-                        .to_string(),
+                    check: f.get("check").and_then(Value::as_str).unwrap_or("").to_string(),
+                    msg: f.get("msg").and_then(Value::as_str).unwrap_or("").to_string(),
                 })
                 .collect()
         })
@@ -140,13 +110,7 @@ fn findings(v: &Value) -> Vec<Finding> {
 }
 
 fn counts(v: Option<&Value>) -> BTreeMap<String, u64> {
-    v.and_then(Value::as_object)
-        .map(|m| {
-            m.iter()
-                .map(|(k, n)| (k.clone(), n.as_u64().unwrap_or(0)))
-                .collect()
-        })
-        .unwrap_or_default()
+    v.and_then(Value::as_object).map(|m| m.iter().map(|(k, n)| (k.clone(), n.as_u64().unwrap_or(0))).collect()).unwrap_or_default()
 }
 
 fn parse(file: &Path, json: Value) -> CrCheckResult {
@@ -155,10 +119,7 @@ fn parse(file: &Path, json: Value) -> CrCheckResult {
     let mut error_counts = counts(json.get("finding_counts").and_then(|c| c.get("errors")));
     let mut warning_counts = counts(json.get("finding_counts").and_then(|c| c.get("warnings")));
     // e.g. a missing file has findings but no finding_counts
-    for (list, map) in [
-        (&errors, &mut error_counts),
-        (&warnings, &mut warning_counts),
-    ] {
+    for (list, map) in [(&errors, &mut error_counts), (&warnings, &mut warning_counts)] {
         if map.is_empty() {
             for f in list {
                 *map.entry(f.check.clone()).or_insert(0) += 1;

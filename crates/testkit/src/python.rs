@@ -31,8 +31,7 @@ fn setup() -> Result<PyEnvs, String> {
     let shared = shared_dir().ok_or("shared directory not found (set OSC2CR_SHARED)")?;
     let target = workspace_root().join("target");
     let py_dir = target.join("py");
-    std::fs::create_dir_all(&target)
-        .map_err(|e| format!("cannot create {}: {e}", target.display()))?;
+    std::fs::create_dir_all(&target).map_err(|e| format!("cannot create {}: {e}", target.display()))?;
     let lock_path = target.join("py.lock");
     let lock = OpenOptions::new()
         .create(true)
@@ -40,14 +39,9 @@ fn setup() -> Result<PyEnvs, String> {
         .write(true)
         .open(&lock_path)
         .map_err(|e| format!("cannot open lock file {}: {e}", lock_path.display()))?;
-    lock.lock()
-        .map_err(|e| format!("cannot lock {}: {e}", lock_path.display()))?;
+    lock.lock().map_err(|e| format!("cannot lock {}: {e}", lock_path.display()))?;
     let script = shared.join("tools/setup-venvs.sh");
-    let out = Command::new("bash")
-        .arg(&script)
-        .arg(&py_dir)
-        .output()
-        .map_err(|e| format!("cannot run bash {}: {e}", script.display()));
+    let out = Command::new("bash").arg(&script).arg(&py_dir).output().map_err(|e| format!("cannot run bash {}: {e}", script.display()));
     // the lock is released when `lock` is dropped, also on the error paths
     let out = out?;
     if !out.status.success() {
@@ -61,10 +55,7 @@ fn setup() -> Result<PyEnvs, String> {
         ));
     }
     drop(lock);
-    let envs = PyEnvs {
-        cr: py_dir.join("cr/bin/python"),
-        crd: py_dir.join("crd/bin/python"),
-    };
+    let envs = PyEnvs { cr: py_dir.join("cr/bin/python"), crd: py_dir.join("crd/bin/python") };
     for p in [&envs.cr, &envs.crd] {
         if !p.exists() {
             return Err(format!("{} missing after setup-venvs.sh", p.display()));

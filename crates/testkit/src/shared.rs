@@ -29,10 +29,7 @@ pub fn shared_dir() -> Option<PathBuf> {
             dir.display()
         );
     }
-    eprintln!(
-        "notice: shared directory {} not found; skipping this test (set OSC2CR_SHARED)",
-        dir.display()
-    );
+    eprintln!("notice: shared directory {} not found; skipping this test (set OSC2CR_SHARED)", dir.display());
     None
 }
 

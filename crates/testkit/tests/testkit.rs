@@ -8,9 +8,7 @@ fn corpus_files_are_sorted_and_have_the_extension() {
     let files = testkit::corpus_files("xodr");
     assert!(!files.is_empty());
     assert!(files.windows(2).all(|w| w[0] < w[1]));
-    assert!(files
-        .iter()
-        .all(|f| f.extension().unwrap().eq_ignore_ascii_case("xodr")));
+    assert!(files.iter().all(|f| f.extension().unwrap().eq_ignore_ascii_case("xodr")));
     assert!(testkit::corpus_files("no-such-extension").is_empty());
 }
 

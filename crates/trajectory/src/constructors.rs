@@ -132,8 +132,22 @@ impl Path {
 
     /// One clothoid from `start`: curvature κ + κ'·s for s in [0, length]; `time` is
     /// (startTime, stopTime), spread linearly over the length.
-    pub fn clothoid(start: Pose, curvature: f64, curvature_prime: f64, length: f64, time: (Option<f64>, Option<f64>), closed: bool) -> Result<Path, TrajectoryError> {
-        let seg = SplineSegment { start: Some(start), curvature_start: curvature, curvature_end: curvature + curvature_prime * length, length, h_offset: 0.0, time_start: time.0 };
+    pub fn clothoid(
+        start: Pose,
+        curvature: f64,
+        curvature_prime: f64,
+        length: f64,
+        time: (Option<f64>, Option<f64>),
+        closed: bool,
+    ) -> Result<Path, TrajectoryError> {
+        let seg = SplineSegment {
+            start: Some(start),
+            curvature_start: curvature,
+            curvature_end: curvature + curvature_prime * length,
+            length,
+            h_offset: 0.0,
+            time_start: time.0,
+        };
         let mut path = Path::spirals(start, &[seg], time.1, closed)?;
         for w in path.warnings.iter_mut() {
             *w = w.replace("ClothoidSpline", "Clothoid");

@@ -11,8 +11,8 @@
 
 mod angle;
 mod constructors;
-mod from_shape;
 mod error;
+mod from_shape;
 mod nurbs;
 mod nurbs_path;
 mod path;

@@ -31,10 +31,13 @@ pub(crate) struct NurbsPath {
 impl NurbsPath {
     pub(crate) fn new(curve: Nurbs) -> Result<NurbsPath, TrajectoryError> {
         let pts = curve.control_points();
-        let polygon: f64 = pts.windows(2).map(|w| match w {
-            [a, b] => (b[0] - a[0]).hypot(b[1] - a[1]),
-            _ => 0.0,
-        }).sum();
+        let polygon: f64 = pts
+            .windows(2)
+            .map(|w| match w {
+                [a, b] => (b[0] - a[0]).hypot(b[1] - a[1]),
+                _ => 0.0,
+            })
+            .sum();
         if !polygon.is_finite() {
             return Err(TrajectoryError::BadNumber { shape: "NURBS", what: "control polygon length".into(), constraint: "", value: polygon });
         }
@@ -108,14 +111,7 @@ impl NurbsPath {
         let (lo, hi) = self.curve.domain();
         let p = self.curve.point((u0 + a * (u1 - u0)).clamp(lo, (hi - SMALL).max(lo)));
         let turn = angle::diff(h1, h0);
-        PathPoint {
-            s,
-            x: p[0],
-            y: p[1],
-            z: p[2],
-            heading: angle::normalize(h0 + a * turn),
-            curvature: if ds > 0.0 { turn / ds } else { 0.0 },
-        }
+        PathPoint { s, x: p[0], y: p[1], z: p[2], heading: angle::normalize(h0 + a * turn), curvature: if ds > 0.0 { turn / ds } else { 0.0 } }
     }
 
     /// (s, time) at every sample, esmini's rule: each control point's time belongs to the

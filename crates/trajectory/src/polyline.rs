@@ -59,8 +59,20 @@ impl Polyline {
         let len = b[3] - a[3];
         let local = (s - a[3]).clamp(0.0, len);
         let r = CORNER_RADIUS.min(len / 2.0);
-        let prev = if i > 0 { Some(i - 1) } else if self.closed { Some(nseg - 1) } else { None };
-        let next = if i + 1 < nseg { Some(i + 1) } else if self.closed { Some(0) } else { None };
+        let prev = if i > 0 {
+            Some(i - 1)
+        } else if self.closed {
+            Some(nseg - 1)
+        } else {
+            None
+        };
+        let next = if i + 1 < nseg {
+            Some(i + 1)
+        } else if self.closed {
+            Some(0)
+        } else {
+            None
+        };
         if r > 0.0 && local < r {
             if let Some(pp) = prev.and_then(|j| self.segment_pitch(j)) {
                 return pp + (r + local) / (2.0 * r) * angle::diff(p, pp);
@@ -93,8 +105,20 @@ impl Polyline {
         let u = if len > 0.0 { local / len } else { 0.0 };
         let lerp = |k: usize| a[k] + u * (b[k] - a[k]);
         let r = CORNER_RADIUS.min(len / 2.0);
-        let prev = if i > 0 { Some(i - 1) } else if self.closed { Some(nseg - 1) } else { None };
-        let next = if i + 1 < nseg { Some(i + 1) } else if self.closed { Some(0) } else { None };
+        let prev = if i > 0 {
+            Some(i - 1)
+        } else if self.closed {
+            Some(nseg - 1)
+        } else {
+            None
+        };
+        let next = if i + 1 < nseg {
+            Some(i + 1)
+        } else if self.closed {
+            Some(0)
+        } else {
+            None
+        };
         // Same precedence as esmini: the corner at the start wins when both overlap.
         let (heading, curvature) = if r > 0.0 && local < r {
             match self.heading(prev) {

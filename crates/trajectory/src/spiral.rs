@@ -69,14 +69,7 @@ impl Spiral {
         let i = ((s / self.step).floor() as usize).min(self.table.len().saturating_sub(1));
         let (x0, y0) = self.table.get(i).copied().unwrap_or((self.start.x, self.start.y));
         let (dx, dy) = self.integrate(i as f64 * self.step, s);
-        PathPoint {
-            s,
-            x: x0 + dx,
-            y: y0 + dy,
-            z: self.start.z,
-            heading: angle::normalize(self.heading(s)),
-            curvature: self.k0 + self.dk * s,
-        }
+        PathPoint { s, x: x0 + dx, y: y0 + dy, z: self.start.z, heading: angle::normalize(self.heading(s)), curvature: self.k0 + self.dk * s }
     }
 
     /// The pose at the end (start of a following segment).

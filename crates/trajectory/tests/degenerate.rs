@@ -64,10 +64,7 @@ fn from_shape_resolves_through_the_closure_and_reports_failures() {
     assert!((path.length() - 10.0).abs() < 1e-12);
     assert!((path.s_at_time(1.0).unwrap() - 5.0).abs() < 1e-12);
     let bad = Shape::Polyline(vec![Vertex { time: None, position: world(0.0, 0.0) }, Vertex { time: None, position: world(-1.0, 0.0) }]);
-    assert_eq!(
-        Path::from_shape(&bad, false, Pose::default(), &resolver),
-        Err(TrajectoryError::Unresolved { shape: "Polyline", what: "vertex 1".into() })
-    );
+    assert_eq!(Path::from_shape(&bad, false, Pose::default(), &resolver), Err(TrajectoryError::Unresolved { shape: "Polyline", what: "vertex 1".into() }));
     // a clothoid without position starts at the entity's pose
     let cl = Shape::Clothoid { curvature: 0.0, curvature_prime: 0.0, length: 5.0, start_time: None, stop_time: None, position: None };
     let path = Path::from_shape(&cl, false, Pose::new(1.0, 2.0, 0.0, std::f64::consts::FRAC_PI_2), &resolver).unwrap();

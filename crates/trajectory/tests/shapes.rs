@@ -48,11 +48,7 @@ fn polyline_heading_follows_segments_and_blends_corners_over_2m() {
 
 #[test]
 fn timed_polyline_interpolates_linearly_and_waits_at_repeated_vertices() {
-    let path = Path::polyline(
-        &[(p(0.0, 0.0), Some(1.0)), (p(10.0, 0.0), Some(3.0)), (p(10.0, 0.0), Some(5.0)), (p(10.0, 30.0), Some(8.0))],
-        false,
-    )
-    .unwrap();
+    let path = Path::polyline(&[(p(0.0, 0.0), Some(1.0)), (p(10.0, 0.0), Some(3.0)), (p(10.0, 0.0), Some(5.0)), (p(10.0, 30.0), Some(8.0))], false).unwrap();
     assert!(path.is_timed());
     assert_eq!(path.warnings.len(), 1, "{:?}", path.warnings);
     assert!(close(path.length(), 40.0, 1e-12));

@@ -104,9 +104,31 @@ pub enum Body {
         /// rad, −π/2..=π/2
         steering_angle: f64,
     },
-    StateXyzhpr { x: f64, y: f64, z: f64, h: f64, p: f64, r: f64, speed: f64, wheel_angle: f64, dead_reckon: u8 },
-    StateXyh { x: f64, y: f64, h: f64, speed: f64, wheel_angle: f64, dead_reckon: u8 },
-    StateH { h: f64, speed: f64, wheel_angle: f64, dead_reckon: u8 },
+    StateXyzhpr {
+        x: f64,
+        y: f64,
+        z: f64,
+        h: f64,
+        p: f64,
+        r: f64,
+        speed: f64,
+        wheel_angle: f64,
+        dead_reckon: u8,
+    },
+    StateXyh {
+        x: f64,
+        y: f64,
+        h: f64,
+        speed: f64,
+        wheel_angle: f64,
+        dead_reckon: u8,
+    },
+    StateH {
+        h: f64,
+        speed: f64,
+        wheel_angle: f64,
+        dead_reckon: u8,
+    },
 }
 
 impl Body {

@@ -33,7 +33,9 @@ pub enum Reason {
 impl fmt::Display for Reason {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Reason::Short { size } => write!(f, "a datagram of {size} bytes is shorter than the {HEADER_SIZE}-byte header (version, inputMode, objectId, frameNumber)"),
+            Reason::Short { size } => {
+                write!(f, "a datagram of {size} bytes is shorter than the {HEADER_SIZE}-byte header (version, inputMode, objectId, frameNumber)")
+            }
             Reason::Version { got } => write!(f, "message version {got}; only version {VERSION} is understood (esmini 3.6.0's UDP driver messages)"),
             Reason::InputMode { got } => write!(
                 f,
@@ -55,7 +57,9 @@ impl fmt::Display for Reason {
             }
             Reason::ObjectId { got, expected } => write!(f, "objectId {got}, expected {expected}"),
             Reason::NotFinite { field, value } => write!(f, "{field} is {value}, not a finite number"),
-            Reason::OutOfRange { field, value, min, max } if *max == std::f64::consts::FRAC_PI_2 && *min == -max => write!(f, "{field} is {value}, outside -pi/2..=pi/2"),
+            Reason::OutOfRange { field, value, min, max } if *max == std::f64::consts::FRAC_PI_2 && *min == -max => {
+                write!(f, "{field} is {value}, outside -pi/2..=pi/2")
+            }
             Reason::OutOfRange { field, value, min, max } => write!(f, "{field} is {value}, outside {min}..={max}"),
             Reason::OutOfOrder { frame, newest } => write!(f, "frameNumber {frame} is older than frame {newest}, already accepted: out of order"),
             Reason::Receive { error } => write!(f, "the socket failed: {error}"),

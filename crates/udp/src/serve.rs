@@ -134,7 +134,8 @@ pub fn serve(path: &Path, options: &ServeOptions, observer: &mut dyn Observer) -
     let any_asynchronous = udp_drivers(session.scenario()).iter().any(|c| read_properties(c, &mut Vec::new()).is_ok_and(|p| p.exec == ExecMode::Asynchronous));
     let pace = options.pace.unwrap_or(if any_asynchronous { Pace::RealTime(1.0) } else { Pace::AsFastAsPossible });
     let ids = object_ids(session.scenario());
-    let mut server = Server { options, observer, ids, base, links: BTreeMap::new(), unserved: Vec::new(), notes, rejections: Vec::new(), rejections_not_kept: 0 };
+    let mut server =
+        Server { options, observer, ids, base, links: BTreeMap::new(), unserved: Vec::new(), notes, rejections: Vec::new(), rejections_not_kept: 0 };
     let dt = options.convert.step;
 
     // the Init frame: ports of controllers it activated open, and their first datagram is read
@@ -200,7 +201,14 @@ pub fn serve(path: &Path, options: &ServeOptions, observer: &mut dyn Observer) -
 
 /// Counts what `arrival` brought to `link` at time `time`, records and tells its rejections;
 /// the step's message.
-fn tally(link: &mut Link, arrival: &Arrival, time: f64, kept: &mut Vec<Rejection>, not_kept: &mut usize, observer: &mut dyn Observer) -> Option<crate::message::Message> {
+fn tally(
+    link: &mut Link,
+    arrival: &Arrival,
+    time: f64,
+    kept: &mut Vec<Rejection>,
+    not_kept: &mut usize,
+    observer: &mut dyn Observer,
+) -> Option<crate::message::Message> {
     let r = &mut link.report;
     r.datagrams += arrival.datagrams;
     r.superseded += arrival.superseded;
@@ -228,7 +236,11 @@ impl Server<'_> {
             if !is_udp_driver(c) {
                 if ext.active && !self.unserved.contains(&ext.index) {
                     self.unserved.push(ext.index);
-                    self.notes.push(format!("`{}` has a {} controller, which is not served over UDP: it is held where it is", ext.name, c.properties.get("esminiController").unwrap_or(&c.name)));
+                    self.notes.push(format!(
+                        "`{}` has a {} controller, which is not served over UDP: it is held where it is",
+                        ext.name,
+                        c.properties.get("esminiController").unwrap_or(&c.name)
+                    ));
                 }
                 continue;
             }
@@ -270,7 +282,8 @@ impl Server<'_> {
             }
             // the old port closes before the new one opens (it may be the same number)
             link.endpoint = None;
-            let endpoint = Endpoint::bind(address, props.exec, self.options.synchronous_timeout).map_err(|e| ServeError::Bind(format!("cannot listen on {address} for `{}`: {e}", ext.name)))?;
+            let endpoint = Endpoint::bind(address, props.exec, self.options.synchronous_timeout)
+                .map_err(|e| ServeError::Bind(format!("cannot listen on {address} for `{}`: {e}", ext.name)))?;
             let listening = Listening { entity: ext.name.clone(), object_id, address: endpoint.address, exec: props.exec, at_init };
             link.report.address = Some(endpoint.address.to_string());
             link.endpoint = Some(endpoint);

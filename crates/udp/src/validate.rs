@@ -21,7 +21,8 @@ pub fn validate(m: &Message, object_id: u32) -> Result<(), Reason> {
         }
     }
     if let Body::DriverInput { throttle, brake, steering_angle } = m.body {
-        for (field, value, min, max) in [("throttle", throttle, 0.0, 1.0), ("brake", brake, 0.0, 1.0), ("steeringAngle", steering_angle, -FRAC_PI_2, FRAC_PI_2)] {
+        for (field, value, min, max) in [("throttle", throttle, 0.0, 1.0), ("brake", brake, 0.0, 1.0), ("steeringAngle", steering_angle, -FRAC_PI_2, FRAC_PI_2)]
+        {
             if !(min..=max).contains(&value) {
                 return Err(Reason::OutOfRange { field, value, min, max });
             }

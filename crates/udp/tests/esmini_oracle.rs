@@ -28,7 +28,9 @@ fn esmini() -> Option<PathBuf> {
 /// Whether a UDP socket is bound to `port` on this machine.
 fn bound(port: u16) -> bool {
     let hex = format!(":{port:04X}");
-    ["/proc/net/udp", "/proc/net/udp6"].iter().any(|f| std::fs::read_to_string(f).is_ok_and(|t| t.lines().skip(1).any(|l| l.split_whitespace().nth(1).is_some_and(|a| a.ends_with(&hex)))))
+    ["/proc/net/udp", "/proc/net/udp6"]
+        .iter()
+        .any(|f| std::fs::read_to_string(f).is_ok_and(|t| t.lines().skip(1).any(|l| l.split_whitespace().nth(1).is_some_and(|a| a.ends_with(&hex)))))
 }
 
 /// Ego's rows in esmini's CSV log: (time, x, y, z, heading, speed).

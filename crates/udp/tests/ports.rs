@@ -14,7 +14,9 @@ use udp::{serve, Reason, ServeError};
 fn two_cars(params: &[(&str, String)], base_port: Option<u16>, x0: f64, x1: f64) -> (udp::Outcome, Lockstep) {
     let mut o = options(params, 0.2);
     o.base_port = base_port;
-    let script = |id: u32, x: f64, y: f64| (0..=20u32).map(|k| if k == 5 { xyh(1 - id, k, 0.0, 0.0, 0.0, 0.0, 0) } else { xyh(id, k, x, y, 0.0, 0.0, 0) }).collect::<Vec<_>>();
+    let script = |id: u32, x: f64, y: f64| {
+        (0..=20u32).map(|k| if k == 5 { xyh(1 - id, k, 0.0, 0.0, 0.0, 0.0, 0) } else { xyh(id, k, x, y, 0.0, 0.0, 0) }).collect::<Vec<_>>()
+    };
     let mut client = Lockstep::one_each("Car0", script(0, x0, -1.75));
     let car1 = Lockstep::one_each("Car1", script(1, x1, -5.25));
     // one client for both cars
@@ -88,7 +90,9 @@ fn a_port_in_use_or_a_property_esmini_refuses_stops_the_run_before_it_starts() {
     }
     let o = options(&[("ExecMode", "lockstep".into())], 1.0);
     match serve(&fixture("one_car.xosc"), &o, &mut udp::Silent) {
-        Err(ServeError::Setup(m)) => assert!(m.contains("one_car.xosc:") && m.contains(r#"execMode "lockstep" is neither "asynchronous" nor "synchronous""#), "{m}"),
+        Err(ServeError::Setup(m)) => {
+            assert!(m.contains("one_car.xosc:") && m.contains(r#"execMode "lockstep" is neither "asynchronous" nor "synchronous""#), "{m}")
+        }
         other => panic!("expected a setup error, got {other:?}"),
     }
     let o = options(&[("Port", "70000".into())], 1.0);
@@ -104,8 +108,16 @@ fn esminis_controller_catalog_entry_is_served_with_its_port_and_base_port_parame
     let base = free_port_pair();
     let car = std::fs::read_to_string(fixture("two_cars.xosc")).expect("fixture");
     let vehicle = &car[car.find("<Vehicle ").expect("a vehicle")..car.find("</Vehicle>").expect("its end") + "</Vehicle>".len()];
-    let controller = |assignments: &str| format!(r#"<ObjectController><CatalogReference catalogName="ControllerCatalog" entryName="UDPDriverController"><ParameterAssignments>{assignments}</ParameterAssignments></CatalogReference></ObjectController>"#);
-    let init = |name: &str, lane: i32| format!(r#"<Private entityRef="{name}"><PrivateAction><TeleportAction><Position><LanePosition roadId="1" laneId="{lane}" offset="0" s="50"/></Position></TeleportAction></PrivateAction><PrivateAction><ControllerAction><ActivateControllerAction longitudinal="true" lateral="true"/></ControllerAction></PrivateAction></Private>"#);
+    let controller = |assignments: &str| {
+        format!(
+            r#"<ObjectController><CatalogReference catalogName="ControllerCatalog" entryName="UDPDriverController"><ParameterAssignments>{assignments}</ParameterAssignments></CatalogReference></ObjectController>"#
+        )
+    };
+    let init = |name: &str, lane: i32| {
+        format!(
+            r#"<Private entityRef="{name}"><PrivateAction><TeleportAction><Position><LanePosition roadId="1" laneId="{lane}" offset="0" s="50"/></Position></TeleportAction></PrivateAction><PrivateAction><ControllerAction><ActivateControllerAction longitudinal="true" lateral="true"/></ControllerAction></PrivateAction></Private>"#
+        )
+    };
     let text = format!(
         r#"<?xml version="1.0" encoding="UTF-8"?>
 <OpenSCENARIO><FileHeader revMajor="1" revMinor="3" date="2024-01-01T00:00:00" description="esmini's UDP driver catalog entry" author="osc2cr"/>
@@ -121,7 +133,9 @@ fn esminis_controller_catalog_entry_is_served_with_its_port_and_base_port_parame
         catalogs.join("Controllers").display(),
         fixture("straight.xodr").display(),
         controller(r#"<ParameterAssignment parameterRef="Port" value="0"/><ParameterAssignment parameterRef="ExecMode" value="synchronous"/>"#),
-        controller(&format!(r#"<ParameterAssignment parameterRef="Port" value="0"/><ParameterAssignment parameterRef="BasePort" value="{base}"/><ParameterAssignment parameterRef="ExecMode" value="synchronous"/>"#)),
+        controller(&format!(
+            r#"<ParameterAssignment parameterRef="Port" value="0"/><ParameterAssignment parameterRef="BasePort" value="{base}"/><ParameterAssignment parameterRef="ExecMode" value="synchronous"/>"#
+        )),
         init("Car0", -1),
         init("Car1", -2),
     );

@@ -9,10 +9,7 @@ use std::process::{Command, Output};
 
 /// Runs the built `osc2cr` with `args`.
 pub fn osc2cr(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_osc2cr"))
-        .args(args)
-        .output()
-        .expect("osc2cr runs")
+    Command::new(env!("CARGO_BIN_EXE_osc2cr")).args(args).output().expect("osc2cr runs")
 }
 
 /// An empty folder `<target tmp>/<suite>/<name>`, made afresh.
@@ -58,8 +55,11 @@ pub fn files(dir: &Path) -> Vec<PathBuf> {
 
 /// Every file below `dir`: relative path → bytes.
 pub fn contents(dir: &Path) -> std::collections::BTreeMap<PathBuf, Vec<u8>> {
-    files(dir).into_iter().map(|rel| {
-        let bytes = std::fs::read(dir.join(&rel)).expect("read file");
-        (rel, bytes)
-    }).collect()
+    files(dir)
+        .into_iter()
+        .map(|rel| {
+            let bytes = std::fs::read(dir.join(&rel)).expect("read file");
+            (rel, bytes)
+        })
+        .collect()
 }

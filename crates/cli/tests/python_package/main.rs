@@ -35,12 +35,7 @@ static ENV: OnceLock<Result<Env, String>> = OnceLock::new();
 fn run(cmd: &mut Command) -> Result<Output, String> {
     let out = cmd.output().map_err(|e| format!("cannot run {cmd:?}: {e}"))?;
     if !out.status.success() {
-        return Err(format!(
-            "{cmd:?} failed ({}):\n{}{}",
-            out.status,
-            String::from_utf8_lossy(&out.stdout),
-            String::from_utf8_lossy(&out.stderr)
-        ));
+        return Err(format!("{cmd:?} failed ({}):\n{}{}", out.status, String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr)));
     }
     Ok(out)
 }
@@ -48,10 +43,7 @@ fn run(cmd: &mut Command) -> Result<Output, String> {
 /// The target directory this test binary was built in (`<target>/<profile>/deps/<exe>`).
 fn target_dir() -> Result<PathBuf, String> {
     let exe = std::env::current_exe().map_err(|e| format!("current_exe: {e}"))?;
-    exe.ancestors()
-        .nth(3)
-        .map(Path::to_path_buf)
-        .ok_or_else(|| format!("{} is not under <target>/<profile>/deps", exe.display()))
+    exe.ancestors().nth(3).map(Path::to_path_buf).ok_or_else(|| format!("{} is not under <target>/<profile>/deps", exe.display()))
 }
 
 fn setup() -> Result<Env, String> {
@@ -59,12 +51,7 @@ fn setup() -> Result<Env, String> {
     let py = root.join("target/py");
     std::fs::create_dir_all(&py).map_err(|e| format!("cannot create {}: {e}", py.display()))?;
     let lock_path = root.join("target/py-osc2cr.lock");
-    let lock = OpenOptions::new()
-        .create(true)
-        .truncate(false)
-        .write(true)
-        .open(&lock_path)
-        .map_err(|e| format!("cannot open {}: {e}", lock_path.display()))?;
+    let lock = OpenOptions::new().create(true).truncate(false).write(true).open(&lock_path).map_err(|e| format!("cannot open {}: {e}", lock_path.display()))?;
     lock.lock().map_err(|e| format!("cannot lock {}: {e}", lock_path.display()))?;
 
     let venv = py.join("osc2cr-test");
@@ -76,9 +63,7 @@ fn setup() -> Result<Env, String> {
         run(Command::new("python3").args(["-m", "venv"]).arg(&venv))?;
         let req = venv.join("requirements.txt");
         std::fs::write(&req, REQUIREMENTS).map_err(|e| e.to_string())?;
-        run(Command::new(&python)
-            .args(["-m", "pip", "install", "--quiet", "--disable-pip-version-check", "-r"])
-            .arg(&req))?;
+        run(Command::new(&python).args(["-m", "pip", "install", "--quiet", "--disable-pip-version-check", "-r"]).arg(&req))?;
         std::fs::write(&stamp, REQUIREMENTS).map_err(|e| e.to_string())?;
     }
 
@@ -86,11 +71,7 @@ fn setup() -> Result<Env, String> {
     // compiling into this run's target directory so that built crates are reused
     let wheels = py.join("osc2cr-wheel");
     let _ = std::fs::remove_dir_all(&wheels);
-    let path = format!(
-        "{}:{}",
-        bin.display(),
-        std::env::var("PATH").unwrap_or_default()
-    );
+    let path = format!("{}:{}", bin.display(), std::env::var("PATH").unwrap_or_default());
     run(Command::new(&python)
         .args(["-m", "pip", "wheel", "--quiet", "--disable-pip-version-check"])
         .args(["--no-deps", "--no-build-isolation", "-w"])
@@ -104,10 +85,7 @@ fn setup() -> Result<Env, String> {
         .map(|e| e.path())
         .find(|p| p.extension().is_some_and(|x| x == "whl"))
         .ok_or("pip wheel made no wheel")?;
-    run(Command::new(&python)
-        .args(["-m", "pip", "install", "--quiet", "--disable-pip-version-check"])
-        .args(["--no-deps", "--force-reinstall"])
-        .arg(&wheel))?;
+    run(Command::new(&python).args(["-m", "pip", "install", "--quiet", "--disable-pip-version-check"]).args(["--no-deps", "--force-reinstall"]).arg(&wheel))?;
     let package_only = py.join("osc2cr-only");
     let _ = std::fs::remove_dir_all(&package_only);
     run(Command::new(&python)
@@ -139,29 +117,13 @@ fn corpus(rel: &str) -> PathBuf {
 }
 
 fn python(interpreter: &Path, script: &str, args: &[&Path]) -> String {
-    let out = Command::new(interpreter)
-        .arg("-c")
-        .arg(script)
-        .args(args)
-        .output()
-        .expect("python runs");
-    assert!(
-        out.status.success(),
-        "python failed:\n{}{}",
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let out = Command::new(interpreter).arg("-c").arg(script).args(args).output().expect("python runs");
+    assert!(out.status.success(), "python failed:\n{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
     String::from_utf8_lossy(&out.stdout).into_owned()
 }
 
 fn osc2cr_convert(inputs: &[&Path], out: &Path) {
-    let r = Command::new(env!("CARGO_BIN_EXE_osc2cr"))
-        .arg("convert")
-        .args(inputs)
-        .arg("-o")
-        .arg(out)
-        .output()
-        .expect("osc2cr runs");
+    let r = Command::new(env!("CARGO_BIN_EXE_osc2cr")).arg("convert").args(inputs).arg("-o").arg(out).output().expect("osc2cr runs");
     assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
 }
 
@@ -209,10 +171,7 @@ fn a_fresh_environment_reads_a_converted_corpus_scenario_as_commonroad_objects()
 
     // commonroad-io 2026.1 (the other reader API) reads it too, through the same function
     let cr = testkit::python_envs().expect("python envs").cr;
-    let script = format!(
-        "import sys; sys.path.insert(0, {:?})\n{READ}",
-        env.package_only.display().to_string()
-    );
+    let script = format!("import sys; sys.path.insert(0, {:?})\n{READ}", env.package_only.display().to_string());
     let got26 = python(&cr, &script, &[&file, &cli_xml]);
     assert!(got26.starts_with(&expected), "2026.1 reader:\n{got26}");
 }
@@ -288,10 +247,7 @@ fn the_2024_format_comes_as_the_cli_files_and_reads_with_commonroad_io_2026() {
     let file = corpus("esmini/xosc/cut-in.xosc");
     let dist = corpus("esmini/xosc/cut-in_parameter_set.xosc");
     let out = tmp("format-2024");
-    let r = Command::new(env!("CARGO_BIN_EXE_osc2cr"))
-        .args(["convert", s(&file), "-o", s(&out), "--format", "2024"])
-        .output()
-        .expect("osc2cr runs");
+    let r = Command::new(env!("CARGO_BIN_EXE_osc2cr")).args(["convert", s(&file), "-o", s(&out), "--format", "2024"]).output().expect("osc2cr runs");
     assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
     // the three-file reader is commonroad-io 2026's
     let cr = testkit::python_envs().expect("python envs").cr;
@@ -311,8 +267,7 @@ fn errors_carry_file_line_and_column_and_variations_stream() {
     let dir = tmp("errors");
     let bad = dir.join("bad.xosc");
     // line 3 holds an element that is never closed
-    std::fs::write(&bad, "<OpenSCENARIO>\n  <FileHeader/>\n  <Storyboard><Init>\n</OpenSCENARIO>\n")
-        .expect("write");
+    std::fs::write(&bad, "<OpenSCENARIO>\n  <FileHeader/>\n  <Storyboard><Init>\n</OpenSCENARIO>\n").expect("write");
     let dist = corpus("esmini/xosc/cut-in_parameter_set.xosc");
     let missing = dir.join("missing.xosc");
     let example = testkit::workspace_root().join("examples/cut_in.xosc");
@@ -331,10 +286,7 @@ fn errors_carry_file_line_and_column_and_variations_stream() {
     let second = "('EgoSpeed', '70.0'), ('HostVehicle', 'car_blue'), ('TargetSpeedFactor', '1.3'), ('TargetVehicle', 'car_yellow')";
     assert_eq!(lines[6], format!("variation 1 [{first}]"));
     assert_eq!(lines[7], format!("variation 2 [{second}]"));
-    assert_eq!(
-        lines[8],
-        "last 12 [('EgoSpeed', '110.0'), ('TargetSpeedFactor', '1.5'), ('TargetVehicle', 'van_red')]"
-    );
+    assert_eq!(lines[8], "last 12 [('EgoSpeed', '110.0'), ('TargetSpeedFactor', '1.5'), ('TargetVehicle', 'van_red')]");
     // strict by default: an override of a parameter the scenario does not declare is an error;
     // lenient=True converts and says so as a ConversionWarning
     assert_eq!(lines[9], "strict: True", "{got}");
@@ -347,39 +299,23 @@ fn the_dask_example_on_two_workers_writes_the_cli_files() {
     let dist = corpus("esmini/xosc/cut-in_parameter_set.xosc");
     for format in ["2020a", "2024"] {
         let (cli, dask) = (tmp(&format!("dask-cli-{format}")), tmp(&format!("dask-out-{format}")));
-        let r = Command::new(env!("CARGO_BIN_EXE_osc2cr"))
-            .args(["convert", s(&dist), "-o", s(&cli), "--format", format])
-            .output()
-            .expect("osc2cr runs");
+        let r = Command::new(env!("CARGO_BIN_EXE_osc2cr")).args(["convert", s(&dist), "-o", s(&cli), "--format", format]).output().expect("osc2cr runs");
         assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
         let example = testkit::workspace_root().join("examples/dask_variations.py");
-        let out = Command::new(&env.python)
-            .arg(&example)
-            .arg(&dist)
-            .arg("-o")
-            .arg(&dask)
-            .args(["--workers", "2", "--format", format])
-            .output()
-            .expect("python runs");
+        let out =
+            Command::new(&env.python).arg(&example).arg(&dist).arg("-o").arg(&dask).args(["--workers", "2", "--format", format]).output().expect("python runs");
         assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
         let report = String::from_utf8_lossy(&out.stdout);
         assert!(report.contains(r#""variations": 12"#) && report.contains(r#""workers": 2"#), "{report}");
         let names = |d: &Path| {
-            let mut v: Vec<PathBuf> = std::fs::read_dir(d)
-                .expect("dir")
-                .flatten()
-                .map(|e| e.path())
-                .collect();
+            let mut v: Vec<PathBuf> = std::fs::read_dir(d).expect("dir").flatten().map(|e| e.path()).collect();
             v.sort();
             v
         };
         let (a, b) = (names(&cli), names(&dask));
         // 12 XML files, or 12 scenario and 12 dynamic files and their one map
         assert_eq!(a.len(), if format == "2020a" { 12 } else { 25 }, "{a:?}");
-        assert_eq!(
-            a.iter().map(|p| p.file_name()).collect::<Vec<_>>(),
-            b.iter().map(|p| p.file_name()).collect::<Vec<_>>()
-        );
+        assert_eq!(a.iter().map(|p| p.file_name()).collect::<Vec<_>>(), b.iter().map(|p| p.file_name()).collect::<Vec<_>>());
         for (x, y) in a.iter().zip(&b) {
             assert!(std::fs::read(x).ok() == std::fs::read(y).ok(), "{} differs", y.display());
         }

@@ -16,10 +16,7 @@ use crate::obstacle::{DynamicObstacle, State, StaticObstacle};
 use crate::scenario::Scenario;
 use crate::traffic::TrafficLight;
 
-pub(super) fn dynamic_message(
-    scenario: &Scenario,
-    meta: pb::ScenarioMetaInformation,
-) -> Result<dynamic::CommonRoadDynamic, WriteError> {
+pub(super) fn dynamic_message(scenario: &Scenario, meta: pb::ScenarioMetaInformation) -> Result<dynamic::CommonRoadDynamic, WriteError> {
     Ok(dynamic::CommonRoadDynamic {
         dynamic_meta_information: meta,
         environment: dynamic::Environment::default(),

@@ -122,10 +122,8 @@ fn map_message(country: &str, scenario: &Scenario, warnings: &mut Vec<String>) -
                 line_marking: line_marking(Some(sl.line_marking))?,
             });
             msg.stop_line = Some(fits_u32(ctx, id)?);
-            let lost_signs: Vec<String> =
-                sl.traffic_sign_refs.iter().filter(|r| !l.traffic_sign_refs.contains(r)).map(ToString::to_string).collect();
-            let lost_lights: Vec<String> =
-                sl.traffic_light_refs.iter().filter(|r| !l.traffic_light_refs.contains(r)).map(ToString::to_string).collect();
+            let lost_signs: Vec<String> = sl.traffic_sign_refs.iter().filter(|r| !l.traffic_sign_refs.contains(r)).map(ToString::to_string).collect();
+            let lost_lights: Vec<String> = sl.traffic_light_refs.iter().filter(|r| !l.traffic_light_refs.contains(r)).map(ToString::to_string).collect();
             if !lost_signs.is_empty() || !lost_lights.is_empty() {
                 warnings.push(format!(
                     "{}: the 2024 StopLine refers to no sign or light and the lanelet does not refer to \
@@ -137,19 +135,10 @@ fn map_message(country: &str, scenario: &Scenario, warnings: &mut Vec<String>) -
             }
         }
     }
-    let traffic_signs = net
-        .traffic_signs
-        .iter()
-        .map(|s| traffic_sign(s, country, net, warnings))
-        .collect::<Result<Vec<_>, _>>()?;
+    let traffic_signs = net.traffic_signs.iter().map(|s| traffic_sign(s, country, net, warnings)).collect::<Result<Vec<_>, _>>()?;
     let traffic_lights = net.traffic_lights.iter().map(|t| traffic_light(t, net, warnings)).collect::<Result<Vec<_>, _>>()?;
-    let intersections = net
-        .intersections
-        .iter()
-        .map(|i| intersection(i, &mut parts, warnings))
-        .collect::<Result<Vec<_>, _>>()?;
-    let environment_obstacles =
-        scenario.environment_obstacles.iter().map(environment_obstacle).collect::<Result<Vec<_>, _>>()?;
+    let intersections = net.intersections.iter().map(|i| intersection(i, &mut parts, warnings)).collect::<Result<Vec<_>, _>>()?;
+    let environment_obstacles = scenario.environment_obstacles.iter().map(environment_obstacle).collect::<Result<Vec<_>, _>>()?;
     Ok(map::CommonRoadMap {
         map_meta_information: map::MapInformation {
             map_id: pb::MapId { country_id: country.to_string(), map_name: String::new(), map_id: 1 },
@@ -255,13 +244,7 @@ fn fallback_position(net: &LaneletNetwork, refers: impl Fn(&Lanelet) -> bool) ->
     Some(last(l.bounds.right()))
 }
 
-fn placed(
-    what: &str,
-    given: Option<Point>,
-    net: &LaneletNetwork,
-    refers: impl Fn(&Lanelet) -> bool,
-    warnings: &mut Vec<String>,
-) -> Point {
+fn placed(what: &str, given: Option<Point>, net: &LaneletNetwork, refers: impl Fn(&Lanelet) -> bool, warnings: &mut Vec<String>) -> Point {
     if let Some(p) = given {
         return p;
     }
@@ -275,9 +258,7 @@ fn placed(
             p
         }
         None => {
-            warnings.push(format!(
-                "{what} has no position and no lanelet refers to it; the 2024 format requires one: (0, 0) is written"
-            ));
+            warnings.push(format!("{what} has no position and no lanelet refers to it; the 2024 format requires one: (0, 0) is written"));
             Point::new(0.0, 0.0)
         }
     }
@@ -303,11 +284,7 @@ fn traffic_light(t: &TrafficLight, net: &LaneletNetwork, warnings: &mut Vec<Stri
         position: point(&position, &ctx)?,
         // the colours of its cycle, in cycle order: commonroad-io reads a 2020a light's `color` so
         // (the cycle itself is in the dynamic file)
-        color: t
-            .cycle
-            .iter()
-            .map(|c| enum_value("traffic light color", c.color.as_str(), TrafficLightState::from_str_name))
-            .collect::<Result<_, _>>()?,
+        color: t.cycle.iter().map(|c| enum_value("traffic light color", c.color.as_str(), TrafficLightState::from_str_name)).collect::<Result<_, _>>()?,
         direction: t
             .direction
             .map(|d| enum_value("traffic light direction", d.as_str(), map::traffic_light_direction_enum::TrafficLightDirection::from_str_name))
@@ -317,11 +294,7 @@ fn traffic_light(t: &TrafficLight, net: &LaneletNetwork, warnings: &mut Vec<Stri
 
 fn intersection(i: &Intersection, parts: &mut PartIds, warnings: &mut Vec<String>) -> Result<map::Intersection, WriteError> {
     let ctx = || format!("intersection {}", i.id);
-    let left_of: Vec<String> = i
-        .incomings
-        .iter()
-        .filter_map(|inc| inc.is_left_of.map(|l| format!("{} isLeftOf {l}", inc.id)))
-        .collect();
+    let left_of: Vec<String> = i.incomings.iter().filter_map(|inc| inc.is_left_of.map(|l| format!("{} isLeftOf {l}", inc.id))).collect();
     if !left_of.is_empty() {
         warnings.push(format!(
             "{}: the 2024 IncomingGroup has no isLeftOf (commonroad-io 2026.1 reads none from 2020a either): \

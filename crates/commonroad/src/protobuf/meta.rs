@@ -12,13 +12,9 @@ const SCENARIO_VERSION: &str = "2020a";
 /// A date as commonroad-io's `TimeStamp` (hour and minute left out: the model has a day).
 pub(super) fn time_stamp(date: Option<&Date>) -> pb::TimeStamp {
     match date {
-        Some(d) => pb::TimeStamp {
-            year: Some(u32::from(d.year())),
-            month: Some(u32::from(d.month())),
-            day: Some(u32::from(d.day())),
-            hour: None,
-            minute: None,
-        },
+        Some(d) => {
+            pb::TimeStamp { year: Some(u32::from(d.year())), month: Some(u32::from(d.month())), day: Some(u32::from(d.day())), hour: None, minute: None }
+        }
         None => pb::TimeStamp::default(),
     }
 }
@@ -41,18 +37,13 @@ pub(super) fn scenario_meta(header: &Header, warnings: &mut Vec<String>) -> Resu
     let id = &header.benchmark_id;
     let parts = id.parts();
     let configuration_id = parts.configuration_id.unwrap_or_else(|| {
-        warnings.push(format!(
-            "benchmark id {id} has no configuration id; the 2024 ScenarioID needs one: 1 is written"
-        ));
+        warnings.push(format!("benchmark id {id} has no configuration id; the 2024 ScenarioID needs one: 1 is written"));
         1
     });
     let (obstacle_behavior, prediction_id) = match &parts.prediction {
         Some((behaviour, ids)) => {
             if ids.len() > 1 {
-                warnings.push(format!(
-                    "benchmark id {id} has {} prediction ids; the 2024 ScenarioID holds one: the first is written",
-                    ids.len()
-                ));
+                warnings.push(format!("benchmark id {id} has {} prediction ids; the 2024 ScenarioID holds one: the first is written", ids.len()));
             }
             (Some(behaviour.to_string()), ids.first().copied())
         }

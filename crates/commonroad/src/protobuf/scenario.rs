@@ -6,8 +6,7 @@
 use super::error::{fits_u32, WriteError};
 use super::messages::{commonroad_common as pb, commonroad_scenario as sc};
 use super::values::{
-    enum_value, exact, interval, occupancy_of, placed_circle, placed_rectangle, point, polygon_occupancy, state,
-    time_exact, time_interval, StateFields,
+    enum_value, exact, interval, occupancy_of, placed_circle, placed_rectangle, point, polygon_occupancy, state, time_exact, time_interval, StateFields,
 };
 use crate::geometry::Point;
 use crate::planning::{GoalPosition, GoalState, PlanningProblem, PlanningProblemSet};
@@ -23,21 +22,13 @@ pub(super) fn scenario_message(
         return Err(WriteError::NoPlanningProblem);
     }
     let tags = sc::ScenarioTags {
-        tags: scenario
-            .tags
-            .iter()
-            .map(|t| enum_value("scenario tag", t.as_str(), sc::tag_enum::Tag::from_str_name))
-            .collect::<Result<_, _>>()?,
+        tags: scenario.tags.iter().map(|t| enum_value("scenario tag", t.as_str(), sc::tag_enum::Tag::from_str_name)).collect::<Result<_, _>>()?,
     };
     Ok(sc::CommonRoadScenario {
         scenario_meta_information: meta,
         map_id: map_id.to_string(),
         dynamic_id: scenario.header.benchmark_id.to_string(),
-        planning_problems: problems
-            .problems
-            .iter()
-            .map(|p| planning_problem(p, &scenario.network, &tags))
-            .collect::<Result<_, _>>()?,
+        planning_problems: problems.problems.iter().map(|p| planning_problem(p, &scenario.network, &tags)).collect::<Result<_, _>>()?,
         cooperative_planning_problems: Vec::new(),
     })
 }
@@ -90,9 +81,7 @@ fn goal_state(g: &GoalState, net: &LaneletNetwork, ctx: &dyn Fn() -> String) -> 
                     goal_lanelets = ls.iter().map(|l| fits_u32(ctx, l.get())).collect::<Result<_, _>>()?;
                     // the readers make a group of the lanelets' outlines, even of one lanelet
                     let outlines = ls.iter().map(|l| lanelet_outline(net, l.get(), ctx)).collect::<Result<Vec<_>, _>>()?;
-                    vec![pb::Occupancy {
-                        shape: Some(pb::occupancy::Shape::ShapeGroup(pb::OccupancyGroup { shapes: outlines })),
-                    }]
+                    vec![pb::Occupancy { shape: Some(pb::occupancy::Shape::ShapeGroup(pb::OccupancyGroup { shapes: outlines })) }]
                 }
             };
             Some(pb::state::Position::Shape(occupancy_of(shapes)))

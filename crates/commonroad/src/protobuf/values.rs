@@ -23,9 +23,7 @@ pub(super) fn exact(v: f64, context: impl FnOnce() -> String) -> Result<pb::Floa
 /// A closed interval (finite by construction).
 pub(super) fn interval(i: &Interval) -> pb::FloatExactOrInterval {
     use pb::float_exact_or_interval::ExactOrInterval;
-    pb::FloatExactOrInterval {
-        exact_or_interval: Some(ExactOrInterval::Interval(pb::FloatInterval { start: i.start(), end: i.end() })),
-    }
+    pb::FloatExactOrInterval { exact_or_interval: Some(ExactOrInterval::Interval(pb::FloatInterval { start: i.start(), end: i.end() })) }
 }
 
 fn time_step(t: u64, context: impl FnOnce() -> String) -> Result<i32, WriteError> {
@@ -134,11 +132,7 @@ pub(super) fn upper_snake(xsd: &str) -> String {
 }
 
 /// The enumeration value named like the XSD spelling `xsd` (`from_str_name` of a generated enum).
-pub(super) fn enum_value<E: Into<i32>>(
-    what: &'static str,
-    xsd: &str,
-    from_str_name: fn(&str) -> Option<E>,
-) -> Result<i32, WriteError> {
+pub(super) fn enum_value<E: Into<i32>>(what: &'static str, xsd: &str, from_str_name: fn(&str) -> Option<E>) -> Result<i32, WriteError> {
     let name = upper_snake(xsd);
     from_str_name(&name).map(Into::into).ok_or(WriteError::NoEnumValue { what, name })
 }

@@ -29,10 +29,9 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
         let p = p.to_path_buf();
         move |source| WriteError::Io { path: p, source }
     };
-    let file_name = path.file_name().ok_or_else(|| WriteError::Io {
-        path: path.to_path_buf(),
-        source: std::io::Error::new(std::io::ErrorKind::InvalidInput, "the path names no file"),
-    })?;
+    let file_name = path
+        .file_name()
+        .ok_or_else(|| WriteError::Io { path: path.to_path_buf(), source: std::io::Error::new(std::io::ErrorKind::InvalidInput, "the path names no file") })?;
     let dir = match path.parent() {
         Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
         _ => PathBuf::from("."),
@@ -44,11 +43,7 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
     let tmp = dir.join(tmp_name);
 
     let result = (|| {
-        let mut f: File = OpenOptions::new()
-            .write(true)
-            .create_new(true)
-            .open(&tmp)
-            .map_err(io_err(&tmp))?;
+        let mut f: File = OpenOptions::new().write(true).create_new(true).open(&tmp).map_err(io_err(&tmp))?;
         f.write_all(bytes).map_err(io_err(&tmp))?;
         // close before the rename (see the module doc for why there is no sync_all)
         drop(f);

@@ -31,16 +31,10 @@ pub struct ReadScenario {
 
 /// Reads a CommonRoad 2020a file. A missing file names the path tried.
 pub fn read_scenario_file(path: &Path) -> Result<ReadScenario, ReadError> {
-    let io = |source| ReadError::Io {
-        path: path.to_path_buf(),
-        source,
-    };
+    let io = |source| ReadError::Io { path: path.to_path_buf(), source };
     let len = std::fs::metadata(path).map_err(io)?.len();
     if len > MAX_FILE_BYTES {
-        return Err(ReadError::TooLarge {
-            path: path.to_path_buf(),
-            bytes: len,
-        });
+        return Err(ReadError::TooLarge { path: path.to_path_buf(), bytes: len });
     }
     let text = std::fs::read_to_string(path).map_err(io)?;
     read_scenario_str(&text, path)
@@ -48,10 +42,7 @@ pub fn read_scenario_file(path: &Path) -> Result<ReadScenario, ReadError> {
 
 /// Reads CommonRoad 2020a XML text; `path` is only used in messages.
 pub fn read_scenario_str(text: &str, path: &Path) -> Result<ReadScenario, ReadError> {
-    let doc = roxmltree::Document::parse(text).map_err(|source| ReadError::Xml {
-        path: path.to_path_buf(),
-        source,
-    })?;
+    let doc = roxmltree::Document::parse(text).map_err(|source| ReadError::Xml { path: path.to_path_buf(), source })?;
     let mut cx = cursor::Cursor::new(&doc, path);
     let root = doc.root_element();
     if root.tag_name().name() != "commonRoad" {
@@ -64,38 +55,19 @@ pub fn read_scenario_str(text: &str, path: &Path) -> Result<ReadScenario, ReadEr
         match child.tag_name().name() {
             "location" | "scenarioTags" => {}
             "lanelet" => scenario.network.lanelets.push(network::lanelet(&mut cx, child)?),
-            "trafficSign" => scenario
-                .network
-                .traffic_signs
-                .push(network::traffic_sign(&mut cx, child)?),
-            "trafficLight" => scenario
-                .network
-                .traffic_lights
-                .push(network::traffic_light(&mut cx, child)?),
-            "intersection" => scenario
-                .network
-                .intersections
-                .push(network::intersection(&mut cx, child)?),
-            "staticObstacle" => scenario
-                .static_obstacles
-                .push(obstacles::static_obstacle(&mut cx, child)?),
+            "trafficSign" => scenario.network.traffic_signs.push(network::traffic_sign(&mut cx, child)?),
+            "trafficLight" => scenario.network.traffic_lights.push(network::traffic_light(&mut cx, child)?),
+            "intersection" => scenario.network.intersections.push(network::intersection(&mut cx, child)?),
+            "staticObstacle" => scenario.static_obstacles.push(obstacles::static_obstacle(&mut cx, child)?),
             "dynamicObstacle" => {
                 if let Some(o) = obstacles::dynamic_obstacle(&mut cx, child)? {
                     scenario.dynamic_obstacles.push(o);
                 }
             }
-            "environmentObstacle" => scenario
-                .environment_obstacles
-                .push(obstacles::environment_obstacle(&mut cx, child)?),
-            "planningProblem" => problems
-                .problems
-                .push(planning::planning_problem(&mut cx, child)?),
+            "environmentObstacle" => scenario.environment_obstacles.push(obstacles::environment_obstacle(&mut cx, child)?),
+            "planningProblem" => problems.problems.push(planning::planning_problem(&mut cx, child)?),
             other => cx.warn(child, format!("element <{other}> is not read; skipped")),
         }
     }
-    Ok(ReadScenario {
-        scenario,
-        problems,
-        warnings: cx.into_warnings(),
-    })
+    Ok(ReadScenario { scenario, problems, warnings: cx.into_warnings() })
 }

@@ -12,10 +12,7 @@ use crate::scenario::Scenario;
 use crate::traffic::{TrafficLight, TrafficSign};
 
 /// Writes a scenario file: the scenario and at least one planning problem.
-pub fn write_scenario(
-    scenario: &Scenario,
-    problems: &PlanningProblemSet,
-) -> Result<Vec<u8>, WriteError> {
+pub fn write_scenario(scenario: &Scenario, problems: &PlanningProblemSet) -> Result<Vec<u8>, WriteError> {
     if problems.problems.is_empty() {
         return Err(WriteError::NoPlanningProblem);
     }
@@ -59,39 +56,25 @@ fn write(scenario: &Scenario, problems: &[PlanningProblem]) -> Result<Vec<u8>, W
         with_context(&mut e, format!("lanelet {}", l.id), |e| lanelet(e, l))?;
     }
     for s in &net.traffic_signs {
-        with_context(&mut e, format!("trafficSign {}", s.id), |e| {
-            traffic_sign(e, s)
-        })?;
+        with_context(&mut e, format!("trafficSign {}", s.id), |e| traffic_sign(e, s))?;
     }
     for t in &net.traffic_lights {
-        with_context(&mut e, format!("trafficLight {}", t.id), |e| {
-            traffic_light(e, t)
-        })?;
+        with_context(&mut e, format!("trafficLight {}", t.id), |e| traffic_light(e, t))?;
     }
     for i in &net.intersections {
-        with_context(&mut e, format!("intersection {}", i.id), |e| {
-            intersection(e, i)
-        })?;
+        with_context(&mut e, format!("intersection {}", i.id), |e| intersection(e, i))?;
     }
     for o in &scenario.static_obstacles {
-        with_context(&mut e, format!("staticObstacle {}", o.id), |e| {
-            static_obstacle(e, o)
-        })?;
+        with_context(&mut e, format!("staticObstacle {}", o.id), |e| static_obstacle(e, o))?;
     }
     for o in &scenario.dynamic_obstacles {
-        with_context(&mut e, format!("dynamicObstacle {}", o.id), |e| {
-            dynamic_obstacle(e, o)
-        })?;
+        with_context(&mut e, format!("dynamicObstacle {}", o.id), |e| dynamic_obstacle(e, o))?;
     }
     for o in &scenario.environment_obstacles {
-        with_context(&mut e, format!("environmentObstacle {}", o.id), |e| {
-            environment_obstacle(e, o)
-        })?;
+        with_context(&mut e, format!("environmentObstacle {}", o.id), |e| environment_obstacle(e, o))?;
     }
     for p in problems {
-        with_context(&mut e, format!("planningProblem {}", p.id), |e| {
-            planning_problem(e, p)
-        })?;
+        with_context(&mut e, format!("planningProblem {}", p.id), |e| planning_problem(e, p))?;
     }
     e.close("commonRoad");
     Ok(e.finish())
@@ -107,11 +90,7 @@ fn estimated_size(scenario: &Scenario, problems: &[PlanningProblem]) -> usize {
     4096 + 64 * points + 450 * states + 400 * (others + scenario.static_obstacles.len() + problems.len())
 }
 
-fn with_context(
-    e: &mut Emitter,
-    label: String,
-    f: impl FnOnce(&mut Emitter) -> Result<(), WriteError>,
-) -> Result<(), WriteError> {
+fn with_context(e: &mut Emitter, label: String, f: impl FnOnce(&mut Emitter) -> Result<(), WriteError>) -> Result<(), WriteError> {
     e.push_context(label);
     let r = f(e);
     e.pop_context();
@@ -225,12 +204,7 @@ fn location(e: &mut Emitter, s: &Scenario) -> Result<(), WriteError> {
     Ok(())
 }
 
-fn bound(
-    e: &mut Emitter,
-    tag: &str,
-    points: &[Point],
-    marking: Option<LineMarking>,
-) -> Result<(), WriteError> {
+fn bound(e: &mut Emitter, tag: &str, points: &[Point], marking: Option<LineMarking>) -> Result<(), WriteError> {
     e.open(tag, &[])?;
     for p in points {
         point(e, "point", p)?;
@@ -244,10 +218,7 @@ fn bound(
 
 fn adjacent(e: &mut Emitter, tag: &str, a: &Option<Adjacent>) -> Result<(), WriteError> {
     if let Some(a) = a {
-        e.empty(
-            tag,
-            &[("ref", &a.lanelet), ("drivingDir", &a.driving_dir.as_str())],
-        )?;
+        e.empty(tag, &[("ref", &a.lanelet), ("drivingDir", &a.driving_dir.as_str())])?;
     }
     Ok(())
 }
@@ -319,11 +290,7 @@ fn traffic_light(e: &mut Emitter, t: &TrafficLight) -> Result<(), WriteError> {
     e.open("trafficLight", &id_attr(&t.id))?;
     e.open("cycle", &[])?;
     for c in &t.cycle {
-        e.raw_line(&format!(
-            "<cycleElement><duration>{}</duration><color>{}</color></cycleElement>",
-            c.duration,
-            c.color.as_str()
-        ));
+        e.raw_line(&format!("<cycleElement><duration>{}</duration><color>{}</color></cycleElement>", c.duration, c.color.as_str()));
     }
     if t.time_offset > 0 {
         e.int("timeOffset", t.time_offset);
@@ -483,20 +450,14 @@ fn environment_obstacle(e: &mut Emitter, o: &EnvironmentObstacle) -> Result<(), 
 
 fn goal_state(e: &mut Emitter, g: &GoalState) -> Result<(), WriteError> {
     e.open("goalState", &[])?;
-    e.raw_line(&format!(
-        "<time><intervalStart>{}</intervalStart><intervalEnd>{}</intervalEnd></time>",
-        g.time.start(),
-        g.time.end()
-    ));
+    e.raw_line(&format!("<time><intervalStart>{}</intervalStart><intervalEnd>{}</intervalEnd></time>", g.time.start(), g.time.end()));
     if let Some(pos) = &g.position {
         e.open("position", &[])?;
         match pos {
             GoalPosition::Rectangles(rs) => rs.iter().try_for_each(|r| placed_rectangle(e, r))?,
             GoalPosition::Circles(cs) => cs.iter().try_for_each(|c| placed_circle(e, c))?,
             GoalPosition::Polygons(ps) => ps.iter().try_for_each(|p| polygon(e, p))?,
-            GoalPosition::Lanelets(ls) => ls
-                .iter()
-                .try_for_each(|l| e.empty("lanelet", &ref_attr(l)))?,
+            GoalPosition::Lanelets(ls) => ls.iter().try_for_each(|l| e.empty("lanelet", &ref_attr(l)))?,
         }
         e.close("position");
     }

@@ -30,15 +30,7 @@ pub fn header() -> Header {
 }
 
 pub fn state(t: u64, x: f64, y: f64, v: f64) -> State {
-    State {
-        time_step: t,
-        x,
-        y,
-        orientation: 0.0,
-        velocity: v,
-        acceleration: 0.0,
-        yaw_rate: 0.0,
-    }
+    State { time_step: t, x, y, orientation: 0.0, velocity: v, acceleration: 0.0, yaw_rate: 0.0 }
 }
 
 pub fn minimal() -> Minimal {
@@ -49,50 +41,24 @@ pub fn minimal() -> Minimal {
 
     let mut a = Lanelet::new(
         l1,
-        LaneletBounds::new(
-            pts(&[(0.0, 3.5), (50.0, 3.5), (100.0, 3.5)]),
-            pts(&[(0.0, 0.0), (50.0, 0.0), (100.0, 0.0)]),
-        )
-        .unwrap(),
+        LaneletBounds::new(pts(&[(0.0, 3.5), (50.0, 3.5), (100.0, 3.5)]), pts(&[(0.0, 0.0), (50.0, 0.0), (100.0, 0.0)])).unwrap(),
         LaneletType::Highway,
     );
     a.left_marking = Some(LineMarking::Dashed);
     a.right_marking = Some(LineMarking::Solid);
     a.successors.push(l3);
-    a.adjacent_left = Some(Adjacent {
-        lanelet: l2,
-        driving_dir: DrivingDir::Same,
-    });
+    a.adjacent_left = Some(Adjacent { lanelet: l2, driving_dir: DrivingDir::Same });
     a.lanelet_types.push(LaneletType::MainCarriageWay);
     a.user_one_way.push(RoadUser::Vehicle);
     a.traffic_sign_refs.push(sign);
 
-    let mut b = Lanelet::new(
-        l2,
-        LaneletBounds::new(
-            pts(&[(0.0, 7.0), (100.0, 7.0)]),
-            pts(&[(0.0, 3.5), (100.0, 3.5)]),
-        )
-        .unwrap(),
-        LaneletType::Highway,
-    );
+    let mut b = Lanelet::new(l2, LaneletBounds::new(pts(&[(0.0, 7.0), (100.0, 7.0)]), pts(&[(0.0, 3.5), (100.0, 3.5)])).unwrap(), LaneletType::Highway);
     b.left_marking = Some(LineMarking::Solid);
     b.right_marking = Some(LineMarking::Dashed);
-    b.adjacent_right = Some(Adjacent {
-        lanelet: l1,
-        driving_dir: DrivingDir::Same,
-    });
+    b.adjacent_right = Some(Adjacent { lanelet: l1, driving_dir: DrivingDir::Same });
     b.user_one_way.push(RoadUser::Vehicle);
 
-    let mut c = Lanelet::new(
-        l3,
-        LaneletBounds::new(
-            pts(&[(100.0, 3.5), (150.0, 3.5)]),
-            pts(&[(100.0, 0.0), (150.0, 0.0)]),
-        )
-        .unwrap(),
-        LaneletType::Highway,
-    );
+    let mut c = Lanelet::new(l3, LaneletBounds::new(pts(&[(100.0, 3.5), (150.0, 3.5)]), pts(&[(100.0, 0.0), (150.0, 0.0)])).unwrap(), LaneletType::Highway);
     c.predecessors.push(l1);
     c.stop_line = Some(StopLine {
         points: Some([Point::new(150.0, 3.5), Point::new(150.0, 0.0)]),
@@ -108,17 +74,11 @@ pub fn minimal() -> Minimal {
     scenario.network.lanelets = vec![a, b, c];
     scenario.network.traffic_signs.push(TrafficSign {
         id: sign,
-        elements: vec![TrafficSignElement {
-            sign_id: "274".into(),
-            additional_values: vec!["33.33".into()],
-        }],
+        elements: vec![TrafficSignElement { sign_id: "274".into(), additional_values: vec!["33.33".into()] }],
         position: Some(Point::new(5.0, -1.0)),
         is_virtual: false,
     });
-    let phase = |d: u64, color| CycleElement {
-        duration: NonZeroU64::new(d).unwrap(),
-        color,
-    };
+    let phase = |d: u64, color| CycleElement { duration: NonZeroU64::new(d).unwrap(), color };
     scenario.network.traffic_lights.push(TrafficLight {
         id: light,
         cycle: vec![
@@ -146,22 +106,12 @@ pub fn minimal() -> Minimal {
         obstacle_type: DynamicObstacleType::Car,
         shape: Shape::rectangle(4.5, 1.8).unwrap(),
         initial_state: state(0, 10.0, 5.25, 20.0),
-        trajectory: (1..=3)
-            .map(|t| state(t, 10.0 + 2.0 * t as f64, 5.25, 20.0))
-            .collect(),
+        trajectory: (1..=3).map(|t| state(t, 10.0 + 2.0 * t as f64, 5.25, 20.0)).collect(),
     });
     let problems = PlanningProblemSet {
         problems: vec![PlanningProblem {
             id: ids.planning_problem(),
-            initial_state: PlanningInitialState {
-                x: 5.0,
-                y: 1.75,
-                orientation: 0.0,
-                velocity: 15.0,
-                yaw_rate: 0.0,
-                slip_angle: 0.0,
-                acceleration: Some(0.0),
-            },
+            initial_state: PlanningInitialState { x: 5.0, y: 1.75, orientation: 0.0, velocity: 15.0, yaw_rate: 0.0, slip_angle: 0.0, acceleration: Some(0.0) },
             goal_states: vec![
                 GoalState {
                     time: TimeInterval::new(10, 80).unwrap(),
@@ -173,21 +123,9 @@ pub fn minimal() -> Minimal {
                     orientation: Some(Interval::new(-0.5, 0.5).unwrap()),
                     velocity: Some(Interval::new(0.0, 30.0).unwrap()),
                 },
-                GoalState {
-                    time: TimeInterval::new(10, 80).unwrap(),
-                    position: Some(GoalPosition::Lanelets(vec![l3])),
-                    orientation: None,
-                    velocity: None,
-                },
+                GoalState { time: TimeInterval::new(10, 80).unwrap(), position: Some(GoalPosition::Lanelets(vec![l3])), orientation: None, velocity: None },
             ],
         }],
     };
-    Minimal {
-        scenario,
-        problems,
-        lanelets: [l1, l2, l3],
-        sign,
-        light,
-        car,
-    }
+    Minimal { scenario, problems, lanelets: [l1, l2, l3], sign, light, car }
 }

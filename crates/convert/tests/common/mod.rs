@@ -3,18 +3,13 @@
 
 use engine::{EntityTrace, Sample, Trace};
 use openscenario::{
-    Axle, Axles, BoundingBox, Entity, EntityObject, Location, MiscObject, MiscObjectCategory,
-    Pedestrian, PedestrianCategory, Performance, Properties, Vec3, Vehicle, VehicleCategory,
+    Axle, Axles, BoundingBox, Entity, EntityObject, Location, MiscObject, MiscObjectCategory, Pedestrian, PedestrianCategory, Performance, Properties, Vec3,
+    Vehicle, VehicleCategory,
 };
 use std::path::Path;
 
 pub fn bbox(cx: f64, cy: f64, length: f64, width: f64) -> BoundingBox {
-    BoundingBox {
-        center: Vec3 { x: cx, y: cy, z: 0.75 },
-        width,
-        length,
-        height: 1.5,
-    }
+    BoundingBox { center: Vec3 { x: cx, y: cy, z: 0.75 }, width, length, height: 1.5 }
 }
 
 fn origin() -> Location {
@@ -22,13 +17,7 @@ fn origin() -> Location {
 }
 
 pub fn vehicle(name: &str, category: VehicleCategory, bb: BoundingBox) -> Entity {
-    let axle = Axle {
-        max_steering: 0.5,
-        wheel_diameter: 0.6,
-        track_width: 1.6,
-        position_x: 0.0,
-        position_z: 0.3,
-    };
+    let axle = Axle { max_steering: 0.5, wheel_diameter: 0.6, track_width: 1.6, position_x: 0.0, position_z: 0.3 };
     Entity {
         name: name.into(),
         object: EntityObject::Vehicle(Vehicle {
@@ -97,17 +86,7 @@ pub fn misc(name: &str, category: MiscObjectCategory, bb: BoundingBox) -> Entity
 }
 
 pub fn sample(x: f64, y: f64, h: f64, speed: f64) -> Sample {
-    Sample {
-        x,
-        y,
-        z: 0.0,
-        h,
-        speed,
-        acceleration: 0.0,
-        yaw_rate: 0.0,
-        road: None,
-        visible: true,
-    }
+    Sample { x, y, z: 0.0, h, speed, acceleration: 0.0, yaw_rate: 0.0, road: None, visible: true }
 }
 
 /// A trace of `len` steps of 0.01 s; `f(k)` gives each entity's sample at step k.
@@ -116,14 +95,7 @@ pub fn trace(len: usize, names: &[&str], f: impl Fn(usize, usize) -> Option<Samp
         start: 0.0,
         step: 0.01,
         len,
-        entities: names
-            .iter()
-            .enumerate()
-            .map(|(i, n)| EntityTrace {
-                name: n.to_string(),
-                samples: (0..len).map(|k| f(i, k)).collect(),
-            })
-            .collect(),
+        entities: names.iter().enumerate().map(|(i, n)| EntityTrace { name: n.to_string(), samples: (0..len).map(|k| f(i, k)).collect() }).collect(),
         ghosts: Vec::new(),
         events: Vec::new(),
         signal_states: Vec::new(),

@@ -8,7 +8,7 @@
 
 pub mod state;
 
-use state::{FollowTrajectoryRt};
+use state::FollowTrajectoryRt;
 
 use super::state::ActionRt;
 use crate::dynamics::SMALL;
@@ -166,9 +166,7 @@ impl<'a> Sim<'a> {
         }
         let done = match f.timing {
             // esmini's FollowTrajectoryAction::Step: the end ahead, or the start when moving back.
-            None => {
-                !f.path.is_closed() && dt > 0.0 && speed != 0.0 && ((direction > 0.0 && f.s > len - SMALL) || (direction < 0.0 && f.s < SMALL))
-            }
+            None => !f.path.is_closed() && dt > 0.0 && speed != 0.0 && ((direction > 0.0 && f.s > len - SMALL) || (direction < 0.0 && f.s < SMALL)),
             // Summed steps drift below the last stamp by rounding; esmini's sum reaches it.
             Some(_) => f.path.time_range().is_some_and(|r| f.time >= r.1 - 1e-9),
         };

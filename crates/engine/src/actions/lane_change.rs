@@ -6,7 +6,7 @@
 
 pub mod state;
 
-use state::{LaneChangeRt};
+use state::LaneChangeRt;
 
 use super::state::ActionRt;
 use crate::dynamics::{sign, Transition, SMALL};

@@ -4,7 +4,7 @@
 
 pub mod state;
 
-use state::{LaneOffsetRt};
+use state::LaneOffsetRt;
 
 use super::state::ActionRt;
 use crate::dynamics::{avoid_zero, sign, Transition};

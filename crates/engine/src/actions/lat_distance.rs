@@ -15,17 +15,17 @@
 
 pub mod state;
 
-use state::{Phase, LatDistanceRt};
+use state::{LatDistanceRt, Phase};
 
 use super::state::ActionRt;
 use crate::roads::lane_geometry::lane_center_t;
 use crate::roads::move_along_s;
 use crate::roads::road_follow::wrap;
 use crate::roads::road_path::path_ends;
-use opendrive::ContactPoint;
-use std::f64::consts::FRAC_PI_2;
 use crate::sim::Sim;
+use opendrive::ContactPoint;
 use openscenario::{CoordinateSystem, DynamicConstraints, LateralDisplacement};
+use std::f64::consts::FRAC_PI_2;
 
 const LARGE: f64 = 1e10;
 const SMALL: f64 = 1e-10;

@@ -10,7 +10,7 @@
 
 pub mod state;
 
-use state::{LongDistanceRt};
+use state::LongDistanceRt;
 
 use super::state::ActionRt;
 use crate::conditions::distance::between;

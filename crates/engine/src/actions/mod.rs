@@ -9,8 +9,8 @@ pub mod global;
 pub mod lane_change;
 pub mod lane_offset;
 pub mod lat_distance;
-pub mod routing;
 pub mod long_distance;
+pub mod routing;
 pub mod speed;
 pub mod speed_profile;
 pub mod state;
@@ -194,8 +194,17 @@ impl<'a> Sim<'a> {
             }
             PrivateAction::LightState { light_type, state, transition_time } => {
                 let (time, entity) = (self.time, self.entities.get(e).map_or(String::new(), |en| en.name.clone()));
-                self.lights.push(crate::recorded::LightChange { time, entity, light: light_type.clone(), state: state.clone(), transition_time: *transition_time });
-                self.warn_action(slot, "LightStateAction: the light state is kept in the run's light log (Run::lights); CommonRoad 2020a has no place for vehicle lights".into());
+                self.lights.push(crate::recorded::LightChange {
+                    time,
+                    entity,
+                    light: light_type.clone(),
+                    state: state.clone(),
+                    transition_time: *transition_time,
+                });
+                self.warn_action(
+                    slot,
+                    "LightStateAction: the light state is kept in the run's light log (Run::lights); CommonRoad 2020a has no place for vehicle lights".into(),
+                );
                 ActionRt::Done
             }
             PrivateAction::ConnectTrailer { trailer } => {

@@ -7,7 +7,7 @@
 
 pub mod state;
 
-use state::{Target, SpeedRt};
+use state::{SpeedRt, Target};
 
 use super::state::ActionRt;
 use crate::dynamics::{sign, Transition};
@@ -46,12 +46,7 @@ impl<'a> Sim<'a> {
         let target = match target {
             SpeedTarget::Absolute { value } => Target::Absolute(*value),
             SpeedTarget::Relative { entity, value, value_type, continuous } => match self.entity_index(entity) {
-                Some(i) => Target::Relative {
-                    entity: i,
-                    value: *value,
-                    factor: *value_type == SpeedTargetValueType::Factor,
-                    continuous: *continuous,
-                },
+                Some(i) => Target::Relative { entity: i, value: *value, factor: *value_type == SpeedTargetValueType::Factor, continuous: *continuous },
                 None => {
                     self.warn_action(slot, format!("SpeedAction: unknown reference entity `{entity}`"));
                     return ActionRt::Done;

@@ -14,7 +14,7 @@
 
 pub mod state;
 
-use state::{Mode, Submode, Final, SynchronizeRt};
+use state::{Final, Mode, Submode, SynchronizeRt};
 
 use super::state::ActionRt;
 use crate::positions::{resolve, Placement};
@@ -114,10 +114,8 @@ impl<'a> Sim<'a> {
         let dt = self.dt;
         let master_dist_raw = self.distance_to(s.master, &s.target_master);
         let dist_raw = self.distance_to(e, &s.target);
-        let mut done = dist_raw < s.tolerance + SMALL
-            || master_dist_raw < s.tolerance_master + SMALL
-            || dist_raw > s.last_dist
-            || master_dist_raw > s.last_master_dist;
+        let mut done =
+            dist_raw < s.tolerance + SMALL || master_dist_raw < s.tolerance_master + SMALL || dist_raw > s.last_dist || master_dist_raw > s.last_master_dist;
         s.last_dist = dist_raw;
         s.last_master_dist = master_dist_raw;
         let mut dist = (dist_raw - s.tolerance).max(SMALL);

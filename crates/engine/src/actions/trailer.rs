@@ -6,7 +6,7 @@
 
 pub mod state;
 
-use state::{Trailers};
+use state::Trailers;
 
 use crate::entities::Entity;
 use crate::sim::Sim;
@@ -159,7 +159,9 @@ impl<'a> Sim<'a> {
     }
 
     fn pull(&mut self, tow: usize, trailer: usize) {
-        let (Some(hitch), Some(coupler)) = (self.trailers.hitch.get(tow).copied().flatten(), self.trailers.coupler.get(trailer).copied().flatten()) else { return };
+        let (Some(hitch), Some(coupler)) = (self.trailers.hitch.get(tow).copied().flatten(), self.trailers.coupler.get(trailer).copied().flatten()) else {
+            return;
+        };
         let Some(tv) = self.entities.get(tow) else { return };
         let (hx, hy) = (tv.x + hitch * tv.h.cos(), tv.y + hitch * tv.h.sin());
         let speed = tv.speed;

@@ -122,9 +122,9 @@ impl<'a> Sim<'a> {
                 };
                 let frame = match (angle_type, coordinate_system.unwrap_or(CoordinateSystem::World), self.net, e.lane) {
                     (A::Heading, CoordinateSystem::Road, Some(net), Some(lp)) => lp.pose(net).map_or(0.0, |p| p.road_heading),
-                    (A::Heading, CoordinateSystem::Lane, Some(net), Some(lp)) => lp.pose(net).map_or(0.0, |p| {
-                        p.road_heading + if lane_dir(&lp, net) > 0.0 { 0.0 } else { std::f64::consts::PI }
-                    }),
+                    (A::Heading, CoordinateSystem::Lane, Some(net), Some(lp)) => {
+                        lp.pose(net).map_or(0.0, |p| p.road_heading + if lane_dir(&lp, net) > 0.0 { 0.0 } else { std::f64::consts::PI })
+                    }
                     (_, CoordinateSystem::Road, Some(net), Some(lp)) => road_pr(&lp, net),
                     (_, CoordinateSystem::Lane, Some(net), Some(lp)) => road_pr(&lp, net) * lane_dir(&lp, net),
                     (_, CoordinateSystem::Entity, _, _) => own,

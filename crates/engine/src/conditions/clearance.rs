@@ -4,9 +4,9 @@
 //! entity's position (a free but non-existent lane is not clearance).
 
 use crate::entities::Entity;
+use crate::roads::lane_kind::is_driving;
 use crate::roads::road_distance::road_distance_within;
 use crate::sim::Sim;
-use crate::roads::lane_kind::is_driving;
 use opendrive::{Road, RoadNetwork};
 
 /// The parameters of one RelativeClearanceCondition.
@@ -27,11 +27,8 @@ impl<'a> Sim<'a> {
         let (Some(net), Some(me)) = (self.net, self.entities.get(idx)) else { return false };
         let Some(lp) = me.lane else { return false };
         let Some(road) = net.roads.get(lp.road) else { return false };
-        let others: Vec<usize> = if c.entities.is_empty() {
-            (0..self.entities.len()).collect()
-        } else {
-            c.entities.iter().filter_map(|n| self.entity_index(n)).collect()
-        };
+        let others: Vec<usize> =
+            if c.entities.is_empty() { (0..self.entities.len()).collect() } else { c.entities.iter().filter_map(|n| self.entity_index(n)).collect() };
         let occupied = others.into_iter().filter(|&j| j != idx).filter_map(|j| self.entities.get(j)).any(|o| {
             if !o.active {
                 return false;
@@ -53,7 +50,6 @@ fn lane_exists(road: &Road, s: f64, own: i64, c: &Clearance) -> bool {
         is_driving(l.kind) && id >= lo && id <= hi && (c.opposite_lanes || id.signum() == own.signum())
     })
 }
-
 
 /// Road-level difference from `a` to `b`: signed ds (+ ahead of `a`), lane difference (b − a)
 /// and whether `b` is on a lane of the other direction. `None`: not within `max` along the roads.

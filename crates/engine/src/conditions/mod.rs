@@ -8,8 +8,8 @@ pub mod by_value;
 pub mod clearance;
 pub mod distance;
 pub mod state;
-pub mod triggering;
 pub mod traffic_signal;
+pub mod triggering;
 
 use self::state::{ConditionRt, TriggerRt};
 use crate::sim::Sim;
@@ -18,11 +18,7 @@ use openscenario::{Condition, ConditionEdge, ConditionKind, EntityCondition, Sto
 
 impl<'a> TriggerRt<'a> {
     pub fn new(t: &'a Trigger, sim: &Sim) -> TriggerRt<'a> {
-        let groups = t
-            .groups
-            .iter()
-            .map(|g| g.conditions.iter().map(|c| ConditionRt::new(c, sim)).collect())
-            .collect();
+        let groups = t.groups.iter().map(|g| g.conditions.iter().map(|c| ConditionRt::new(c, sim)).collect()).collect();
         TriggerRt { groups }
     }
 
@@ -61,9 +57,7 @@ fn find_element(nodes: &[Node], kind: StoryboardElementType, name: &str) -> Opti
     let candidates = || nodes.iter().enumerate().filter(|(_, n)| n.kind == want && n.name == last).map(|(i, _)| i);
     // A qualified name ("Event::Action") picks the element whose ancestors carry the leading parts, in
     // order (levels may be skipped); names are often reused ("Action") in different events.
-    candidates()
-        .find(|&i| ancestors_match(nodes, i, &parts))
-        .or_else(|| candidates().next())
+    candidates().find(|&i| ancestors_match(nodes, i, &parts)).or_else(|| candidates().next())
 }
 
 /// Whether the ancestors of node `i`, walking up, contain `parts` in reverse order.

@@ -13,7 +13,7 @@
 
 pub mod state;
 
-use state::{AccRt};
+use state::AccRt;
 
 use crate::conditions::distance::between;
 use crate::roads::lane_geometry::lane_center_t;

@@ -13,7 +13,7 @@
 
 pub mod state;
 
-use state::{Model, Mode, Scen, Phase, Info, Trigger, AlksR157Rt};
+use state::{AlksR157Rt, Info, Mode, Model, Phase, Scen, Trigger};
 
 use crate::entities::EntityKind;
 use crate::roads::move_along_s;
@@ -167,8 +167,20 @@ impl<'a> Sim<'a> {
         let (as0, as1, at0, at1) = ext(a, fa);
         let (bs0, bs1, bt0, bt1) = ext(b, fb);
         let dir = if fa.hrel.abs() > std::f64::consts::FRAC_PI_2 { -1.0 } else { 1.0 };
-        let ds = if bs0 > as1 { bs0 - as1 } else if as0 > bs1 { -(as0 - bs1) } else { 0.0 };
-        let dt = if bt0 > at1 { bt0 - at1 } else if at0 > bt1 { -(at0 - bt1) } else { 0.0 };
+        let ds = if bs0 > as1 {
+            bs0 - as1
+        } else if as0 > bs1 {
+            -(as0 - bs1)
+        } else {
+            0.0
+        };
+        let dt = if bt0 > at1 {
+            bt0 - at1
+        } else if at0 > bt1 {
+            -(at0 - bt1)
+        } else {
+            0.0
+        };
         (ds * dir, dt * dir)
     }
 

@@ -10,7 +10,7 @@
 
 pub mod state;
 
-use state::{FollowMode, FollowGhostRt};
+use state::{FollowGhostRt, FollowMode};
 
 use super::kinematic_vehicle::KinematicVehicle;
 use crate::entities::Entity;
@@ -69,10 +69,7 @@ impl<'a> Sim<'a> {
                     f.follow_index = i;
                 }
                 let ahead = |d: f64| trail.at_s(f.closest_s + d, f.follow_index).map(|(p, _)| p);
-                (
-                    ahead(f.min_lookahead_speed.max(f.lookahead_speed * speed)),
-                    ahead(f.min_lookahead_steering.max(f.lookahead_steering * speed)),
-                )
+                (ahead(f.min_lookahead_speed.max(f.lookahead_speed * speed)), ahead(f.min_lookahead_steering.max(f.lookahead_steering * speed)))
             }
             FollowMode::Time => {
                 let back = self.time - f.headstart;

@@ -10,7 +10,7 @@
 
 pub mod state;
 
-use state::{FollowReferenceRt};
+use state::FollowReferenceRt;
 
 use super::kinematic_vehicle::KinematicVehicle;
 use crate::entities::Entity;
@@ -93,12 +93,19 @@ impl<'a> Sim<'a> {
         // Longitudinal distance along our own heading, positive when ahead of the reference.
         let ahead = (x - r.x) * h.cos() + (y - r.y) * h.sin();
         let dh = wrap(r.h - h);
-        let ref_speed = if r.speed.abs() < SMALL { if r.speed < 0.0 { -SMALL } else { SMALL } } else { r.speed };
+        let ref_speed = if r.speed.abs() < SMALL {
+            if r.speed < 0.0 {
+                -SMALL
+            } else {
+                SMALL
+            }
+        } else {
+            r.speed
+        };
         let curvature = r.yaw_rate.clamp(-MAX_YAW_RATE, MAX_YAW_RATE) / ref_speed;
         let sign = if v < 0.0 { -1.0 } else { 1.0 };
-        let steer = f.heading_gain * dh * sign
-            + (-f.cross_track_gain * left).atan2(f.speed_stabilizer + v)
-            + f.curvature_gain * (curvature * f.wheelbase).atan();
+        let steer =
+            f.heading_gain * dh * sign + (-f.cross_track_gain * left).atan2(f.speed_stabilizer + v) + f.curvature_gain * (curvature * f.wheelbase).atan();
         let damping = 2.0 * f.stiffness.sqrt();
         let acc = -f.stiffness * ahead - damping * (v - r.speed);
         car.drive_acc_steer(dt, acc, steer);

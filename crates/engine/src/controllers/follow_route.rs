@@ -11,7 +11,7 @@
 
 pub mod state;
 
-use state::{FollowRouteRt};
+use state::FollowRouteRt;
 
 use super::lane_router::{calculate_path, connecting_lane_id, next_roads, path_waypoints, LaneSpot};
 use crate::actions::lane_change::state::LaneChangeRt;

@@ -274,7 +274,8 @@ pub fn calculate_path(net: &RoadNetwork, start: LaneSpot, forward: bool, target:
         Strategy::Fastest => first_length / average_speed(start_road),
         Strategy::LeastIntersections | Strategy::Random => 0.0,
     };
-    let mut nodes = vec![Node { road: start.road, current_lane: start.lane, from_lane: 0, weight: first_weight, link: Some((start.road, end)), previous: None }];
+    let mut nodes =
+        vec![Node { road: start.road, current_lane: start.lane, from_lane: 0, weight: first_weight, link: Some((start.road, end)), previous: None }];
     let mut heap = Heap { items: Vec::new() };
     heap.push(&nodes, 0);
     let mut visited: Vec<usize> = Vec::new();
@@ -310,10 +311,24 @@ pub fn calculate_path(net: &RoadNetwork, start: LaneSpot, forward: bool, target:
                         Some(ContactPoint::End) => nr.length - target.s,
                         None => 0.0,
                     };
-                    Node { road: next_road, current_lane: to, from_lane: lane.id, weight: node.weight + weight(net, &node, strategy, length, nr), link: None, previous: Some(cur) }
+                    Node {
+                        road: next_road,
+                        current_lane: to,
+                        from_lane: lane.id,
+                        weight: node.weight + weight(net, &node, strategy, length, nr),
+                        link: None,
+                        previous: Some(cur),
+                    }
                 } else {
                     let Some(nl) = next_link(net, &node, next_road) else { continue };
-                    Node { road: next_road, current_lane: to, from_lane: lane.id, weight: node.weight + weight(net, &node, strategy, nr.length, nr), link: Some(nl), previous: Some(cur) }
+                    Node {
+                        road: next_road,
+                        current_lane: to,
+                        from_lane: lane.id,
+                        weight: node.weight + weight(net, &node, strategy, nr.length, nr),
+                        link: Some(nl),
+                        previous: Some(cur),
+                    }
                 };
                 nodes.push(n);
                 heap.push(&nodes, nodes.len() - 1);

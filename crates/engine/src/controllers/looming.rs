@@ -14,7 +14,7 @@
 
 pub mod state;
 
-use state::{LoomingRt};
+use state::LoomingRt;
 
 use super::analog_vehicle::AnalogVehicle;
 use crate::roads::move_along_s;
@@ -93,7 +93,13 @@ impl LoomingRt {
 /// path to `b`'s road whichever junction branch it is on: when the junction rule of
 /// `move_along_s` takes another branch, `b` (ahead of `a`) counts in the same lane if it has the
 /// same lane id, offset by its own offset from its lane centre.
-fn lead_delta(net: &opendrive::RoadNetwork, a: crate::roads::LanePos, b: crate::roads::LanePos, (ax, ay, ah): (f64, f64, f64), (bx, by): (f64, f64)) -> Option<(f64, bool, f64)> {
+fn lead_delta(
+    net: &opendrive::RoadNetwork,
+    a: crate::roads::LanePos,
+    b: crate::roads::LanePos,
+    (ax, ay, ah): (f64, f64, f64),
+    (bx, by): (f64, f64),
+) -> Option<(f64, bool, f64)> {
     if let Some(d) = super::acc::lane_delta(net, a, b, LOOKAHEAD) {
         return Some(d);
     }

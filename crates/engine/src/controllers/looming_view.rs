@@ -152,8 +152,6 @@ pub fn angle_difference(a: f64, b: f64) -> f64 {
     angle_pi(a - b)
 }
 
-
-
 /// The far tangent point ControllerLooming::Step finds, if any: (x, y, its absolute angle seen
 /// from the entity, its distance along the road), and whether the search stopped at a
 /// junction, with the distance searched.
@@ -181,7 +179,8 @@ pub fn far_tangent(net: &RoadNetwork, memo: &mut OsiMemo, me: LanePos, x: f64, y
     let mut angle_diff_prev = [0.0f64; 2];
     let mut far_prev = [(0.0f64, 0.0f64); 2];
     let mut far_s_prev = [0.0f64; 2];
-    let mut far_angle_prev = if forward { [angle_pi(h_road + half_pi), angle_pi(h_road - half_pi)] } else { [angle_pi(h_road - half_pi), angle_pi(h_road + half_pi)] };
+    let mut far_angle_prev =
+        if forward { [angle_pi(h_road + half_pi), angle_pi(h_road - half_pi)] } else { [angle_pi(h_road - half_pi), angle_pi(h_road + half_pi)] };
     let mut road_idx = me.road;
     let mut direction: i32 = if forward { 1 } else { -1 };
     let mut direction_prev = direction;
@@ -221,7 +220,13 @@ pub fn far_tangent(net: &RoadNetwork, memo: &mut OsiMemo, me: LanePos, x: f64, y
             // (`lane->GetLink`, successor when the search went along +s)
             let next_lane = match &prev_links {
                 None => Some(me.lane_id),
-                Some((succ, pred)) => if direction_prev == 1 { succ.first().copied() } else { pred.first().copied() },
+                Some((succ, pred)) => {
+                    if direction_prev == 1 {
+                        succ.first().copied()
+                    } else {
+                        pred.first().copied()
+                    }
+                }
             };
             let Some(lid) = next_lane else { return out };
             let Some(lane) = lsec.lane(lid) else { return out };
@@ -286,7 +291,15 @@ pub fn far_tangent(net: &RoadNetwork, memo: &mut OsiMemo, me: LanePos, x: f64, y
             }
             dist_lsec += lsec_len;
         }
-        dist += if road_counter == 0 { if direction == 1 { road0.length - me.s } else { me.s } } else { road.length };
+        dist += if road_counter == 0 {
+            if direction == 1 {
+                road0.length - me.s
+            } else {
+                me.s
+            }
+        } else {
+            road.length
+        };
     }
     out.dist = dist;
     out

@@ -9,9 +9,9 @@
 //! HID, UDP driver) say so.
 
 pub mod acc;
-pub mod analog_vehicle;
 pub mod alks;
 pub mod alks_r157;
+pub mod analog_vehicle;
 pub mod follow_ghost;
 pub mod follow_reference;
 pub mod follow_route;
@@ -30,7 +30,8 @@ use crate::Warning;
 use openscenario::Controller;
 
 /// Types that need a driver or a co-simulator outside osc2cr.
-const OUTSIDE_INPUT: [&str; 6] = ["InteractiveController", "ExternalController", "SumoController", "HIDController", "UDPDriverController", "ExternalDriverModel"];
+const OUTSIDE_INPUT: [&str; 6] =
+    ["InteractiveController", "ExternalController", "SumoController", "HIDController", "UDPDriverController", "ExternalDriverModel"];
 
 /// The esmini type of a controller.
 pub fn controller_type(c: &Controller) -> &str {
@@ -80,7 +81,8 @@ impl<'a> Sim<'a> {
             "FollowReferenceController" => Some(ControllerRt::FollowReference(Box::new(follow_reference::state::FollowReferenceRt::new(c)))),
             "FollowRouteController" => Some(ControllerRt::FollowRoute(Box::new(follow_route::state::FollowRouteRt::new(c)))),
             "LoomingController" => {
-                if self.net.is_some_and(|n| n.roads.iter().any(|r| r.elevation.iter().chain(&r.superelevation).any(|c| c.b != 0.0 || c.c != 0.0 || c.d != 0.0))) {
+                if self.net.is_some_and(|n| n.roads.iter().any(|r| r.elevation.iter().chain(&r.superelevation).any(|c| c.b != 0.0 || c.c != 0.0 || c.d != 0.0)))
+                {
                     self.warnings.push(Warning::at(&c.origin, looming::APPROXIMATION.to_string()));
                 }
                 Some(ControllerRt::Looming(looming::state::LoomingRt::new(c)))
@@ -90,12 +92,11 @@ impl<'a> Sim<'a> {
         if rt.is_none() && self.waits_for_outside_driver(kind) {
             self.await_outside_driver(e, c);
         } else if rt.is_none() {
-            let why = if OUTSIDE_INPUT.contains(&kind) {
-                "needs a driver or a process outside osc2cr"
-            } else {
-                "is not modelled"
-            };
-            self.warnings.push(Warning::at(&c.origin, format!("controller `{}` ({kind}) {why}; the default controller drives and the storyboard's actions apply", c.name)));
+            let why = if OUTSIDE_INPUT.contains(&kind) { "needs a driver or a process outside osc2cr" } else { "is not modelled" };
+            self.warnings.push(Warning::at(
+                &c.origin,
+                format!("controller `{}` ({kind}) {why}; the default controller drives and the storyboard's actions apply", c.name),
+            ));
         }
         self.any_controller |= rt.is_some();
         if let Some(slot) = self.controllers.get_mut(e) {

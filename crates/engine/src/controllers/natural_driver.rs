@@ -24,7 +24,7 @@
 
 pub mod state;
 
-use state::{NdParams, Mode, NaturalDriverRt};
+use state::{Mode, NaturalDriverRt, NdParams};
 
 use super::natural_view::{adjacent_lanes, desired_gap, freespace, Vois, FOLLOWING, LEAD, LEFT_FOLLOW, LEFT_LEAD, RIGHT_FOLLOW, RIGHT_LEAD, SMALL_NUMBER};
 use super::state::ControllerRt;
@@ -238,7 +238,8 @@ impl<'a> Sim<'a> {
     /// while the previous is still listed.
     fn nd_inject(&mut self, nd: &mut NaturalDriverRt) {
         if nd.pending.is_none() && nd.lane_change.is_none() {
-            let n: u32 = self.controllers.iter().flatten().map(|c| if let ControllerRt::NaturalDriver(x) = c { x.injections } else { 0 }).sum::<u32>() + nd.injections;
+            let n: u32 =
+                self.controllers.iter().flatten().map(|c| if let ControllerRt::NaturalDriver(x) = c { x.injections } else { 0 }).sum::<u32>() + nd.injections;
             nd.pending = Some((nd.target_lane, format!("LaneChangeAction_{n}")));
             nd.injections += 1;
         }

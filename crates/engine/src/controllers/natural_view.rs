@@ -6,11 +6,11 @@
 
 use super::natural_driver::state::NdParams;
 use crate::entities::Entity;
+use crate::roads::lane_kind::is_driving;
 use crate::roads::road_distance::road_distance_within;
 use crate::roads::road_follow::wrap;
 use crate::roads::{move_along_s, LanePos};
 use crate::sim::Sim;
-use crate::roads::lane_kind::is_driving;
 use opendrive::RoadNetwork;
 
 /// esmini's SMALL_NUMBER and LARGE_NUMBER.
@@ -80,7 +80,6 @@ pub fn desired_gap(p: &NdParams, follow_speed: f64, lead_speed: f64) -> f64 {
     let ab = -p.max_acc * p.max_dec;
     p.desired_distance + (follow_speed * p.thw + follow_speed * (follow_speed - lead_speed) / (2.0 * ab.sqrt())).max(0.0)
 }
-
 
 /// The driving lanes to the left and right of `lp` (0: none), or `None` when its side of the
 /// road has at most one driving lane.

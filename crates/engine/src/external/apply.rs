@@ -14,9 +14,9 @@ use crate::dynamics::SMALL;
 use crate::entities::Entity;
 use crate::roads::move_along_s;
 use crate::roads::road_follow::at_dead_end;
-use opendrive::RoadNetwork;
 use crate::sim::Sim;
 use crate::Warning;
+use opendrive::RoadNetwork;
 
 impl<'a> Sim<'a> {
     /// Whether the storyboard's motion yields to the outside for entity `e` now (driven from
@@ -121,7 +121,11 @@ impl<'a> Sim<'a> {
             input.check().map_err(|m| format!("input for `{name}`: {m}"))?;
             let Some(Some(d)) = self.external.get_mut(*e) else {
                 let external: Vec<String> = self.external_entities().into_iter().map(|x| x.name).collect();
-                let list = if external.is_empty() { "none is".to_string() } else { format!("{} {}", external.join(", "), if external.len() == 1 { "is" } else { "are" }) };
+                let list = if external.is_empty() {
+                    "none is".to_string()
+                } else {
+                    format!("{} {}", external.join(", "), if external.len() == 1 { "is" } else { "are" })
+                };
                 return Err(format!("`{name}` is not driven from outside ({list})"));
             };
             if d.input.replace(*input).is_some() {

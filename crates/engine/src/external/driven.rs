@@ -3,8 +3,8 @@
 //! the last state given said (for dead reckoning and the rates it fixes).
 
 use super::choice::Source;
-use crate::controllers::analog_vehicle::AnalogVehicle;
 use super::input::Input;
+use crate::controllers::analog_vehicle::AnalogVehicle;
 
 #[derive(Debug, Clone)]
 pub struct Driven {
@@ -50,7 +50,8 @@ impl Pose {
     }
 
     pub fn put(&self, en: &mut crate::entities::Entity) {
-        (en.x, en.y, en.z, en.h, en.speed, en.lane, en.on_road, en.yaw_offset) = (self.x, self.y, self.z, self.h, self.speed, self.lane, self.on_road, self.yaw_offset);
+        (en.x, en.y, en.z, en.h, en.speed, en.lane, en.on_road, en.yaw_offset) =
+            (self.x, self.y, self.z, self.h, self.speed, self.lane, self.on_road, self.yaw_offset);
     }
 }
 

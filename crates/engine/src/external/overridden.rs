@@ -44,5 +44,7 @@ pub fn note(fate: Overridden, element: &str, entity: &str) -> Option<String> {
         Overridden::Idles => "runs without effect and does not end",
         Overridden::Ignored => "has no effect",
     };
-    Some(format!("{element} on `{entity}`: the entity is driven from outside, so the action {what} (esmini's rule for an entity whose controller overrides it)"))
+    Some(format!(
+        "{element} on `{entity}`: the entity is driven from outside, so the action {what} (esmini's rule for an entity whose controller overrides it)"
+    ))
 }

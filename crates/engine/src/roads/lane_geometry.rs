@@ -4,7 +4,6 @@
 use opendrive::model::poly::record_at;
 use opendrive::{Lane, Road};
 
-
 /// t of the inner and outer border of lane `lane_id` in section `section` at road `s`;
 /// `None` when the lane does not exist. Centre lane: both at the lane offset.
 pub fn lane_borders(road: &Road, section: usize, lane_id: i32, s: f64) -> Option<(f64, f64)> {
@@ -37,4 +36,3 @@ pub fn lane_center_t(road: &Road, lane_id: i32, s: f64) -> Option<f64> {
     let (a, b) = lane_borders(road, road.section_index_at(s), lane_id, s)?;
     Some(0.5 * (a + b))
 }
-

@@ -41,15 +41,7 @@ impl LanePos {
         let (sin, cos) = p.hdg.sin_cos();
         // On a banked road t lies along the tilted surface (see banking.rs).
         let (th, dz, turn) = super::banking::banked(road, s, t, p.curvature);
-        Some(LanePose {
-            x: p.x - th * sin,
-            y: p.y + th * cos,
-            z: road.elevation_at(s) + dz,
-            road_heading: p.hdg + turn,
-            curvature: p.curvature,
-            t,
-            lane,
-        })
+        Some(LanePose { x: p.x - th * sin, y: p.y + th * cos, z: road.elevation_at(s) + dz, road_heading: p.hdg + turn, curvature: p.curvature, t, lane })
     }
 
     /// Heading of the driving direction the entity faces (reference heading, turned by π when

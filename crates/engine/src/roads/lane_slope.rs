@@ -4,8 +4,8 @@
 //! and esmini turns its heading along that drift: the heading of a lane follower is the
 //! direction of its path, road heading + atan(dt/ds / (1 − κ·t)).
 
-use opendrive::model::poly::record_at;
 use opendrive::model::poly::piecewise_slope;
+use opendrive::model::poly::record_at;
 use opendrive::{Lane, Road};
 
 /// dt/ds of the centre of lane `lane_id` in section `section` at road `s` (0 for the centre

@@ -52,23 +52,11 @@ pub fn move_along_route(net: &RoadNetwork, pos: &mut LanePos, dist: f64, route: 
 
 /// [`move_along_route`] for an entity's own move by the default controller: a junction tie is
 /// broken by a draw from esmini's generator, as esmini does.
-pub fn move_along_route_drawing(
-    net: &RoadNetwork,
-    pos: &mut LanePos,
-    dist: f64,
-    route: Option<&routing::Route>,
-    random: &mut EsminiRandom,
-) -> MoveStatus {
+pub fn move_along_route_drawing(net: &RoadNetwork, pos: &mut LanePos, dist: f64, route: Option<&routing::Route>, random: &mut EsminiRandom) -> MoveStatus {
     move_along(net, pos, dist, route, Some(random))
 }
 
-fn move_along(
-    net: &RoadNetwork,
-    pos: &mut LanePos,
-    dist: f64,
-    route: Option<&routing::Route>,
-    mut random: Option<&mut EsminiRandom>,
-) -> MoveStatus {
+fn move_along(net: &RoadNetwork, pos: &mut LanePos, dist: f64, route: Option<&routing::Route>, mut random: Option<&mut EsminiRandom>) -> MoveStatus {
     let Some(road) = net.roads.get(pos.road) else { return MoveStatus::EndOfRoad };
     let s0 = pos.s.clamp(0.0, road.length);
     let p = super::pose_memo::reference_pose(road, s0);
@@ -137,7 +125,11 @@ fn routed_continuation(net: &RoadNetwork, route: &routing::Route, here: LaneRef,
     // The route's own lane when it is reachable, else the lane link's lane on that road.
     let pick = cands.iter().filter(on_road).find(|c| c.lane == next.lane).or_else(|| cands.iter().find(on_road))?;
     let contact = if pick.road == here.road {
-        if end == ContactPoint::End { ContactPoint::Start } else { ContactPoint::End }
+        if end == ContactPoint::End {
+            ContactPoint::Start
+        } else {
+            ContactPoint::End
+        }
     } else {
         next.contact
     };
@@ -176,7 +168,15 @@ fn choose_continuation(
     for c in cands {
         // Only lanes leading away in the same travel sense (lanes_across gives lane links, which
         // are directional already).
-        let contact = if c.road == here.road { if end == ContactPoint::End { ContactPoint::Start } else { ContactPoint::End } } else { contact_of(c.road) };
+        let contact = if c.road == here.road {
+            if end == ContactPoint::End {
+                ContactPoint::Start
+            } else {
+                ContactPoint::End
+            }
+        } else {
+            contact_of(c.road)
+        };
         let Some(r) = net.roads.get(c.road) else { continue };
         let far_heading = match contact {
             ContactPoint::Start => r.reference_pose(r.length).hdg,

@@ -11,11 +11,8 @@ impl Sim<'_> {
     pub fn select_triggering_actors(&mut self, mg: usize) {
         let Some(k) = self.triggering_actors.iter().position(|t| t.group == mg) else { return };
         let act = self.nodes.get(mg).and_then(|n| n.parent).filter(|&a| self.nodes[a].kind == Kind::Act);
-        let from_trigger = act
-            .and_then(|a| self.nodes[a].start_trigger)
-            .and_then(|t| self.triggers.get(t))
-            .map(|t| t.triggering_entities())
-            .unwrap_or_default();
+        let from_trigger =
+            act.and_then(|a| self.nodes[a].start_trigger).and_then(|t| self.triggers.get(t)).map(|t| t.triggering_entities()).unwrap_or_default();
         let mut actors = self.triggering_actors[k].listed.clone();
         for e in from_trigger {
             if !actors.contains(&e) {

@@ -10,7 +10,7 @@ use crate::build::Built;
 use crate::options::MapOptions;
 use crate::sampling::station;
 use crate::warn::WarningSink;
-use commonroad::{CycleElement, IdAllocator, LineMarking, Point, StopLine, TrafficLight, TrafficLightColor, TrafficSign, TrafficSignId, TrafficLightId};
+use commonroad::{CycleElement, IdAllocator, LineMarking, Point, StopLine, TrafficLight, TrafficLightColor, TrafficLightId, TrafficSign, TrafficSignId};
 use opendrive::{LaneRef, LaneValidity, RoadNetwork, Signal, SignalOrientation};
 use sign_map::{map_sign, SignKind};
 use std::collections::BTreeMap;
@@ -86,7 +86,11 @@ fn valid_lanelets(net: &RoadNetwork, built: &Built, ri: usize, s: f64, orientati
         return cands;
     }
     let vehicular: Vec<usize> = cands.iter().copied().filter(|&i| built.classes.get(i).is_some_and(|c| c.vehicular)).collect();
-    if vehicular.is_empty() { cands } else { vehicular }
+    if vehicular.is_empty() {
+        cands
+    } else {
+        vehicular
+    }
 }
 
 /// Left and right point of lanelet `i`'s cross-section at road s `s`.
@@ -110,7 +114,13 @@ fn cross_section(net: &RoadNetwork, built: &Built, i: usize, s: f64) -> Option<[
 /// Signs, lights and stop lines of the whole network; lanelets get their references.
 /// Also returns the light made of each OpenDRIVE signal id (the name an OpenSCENARIO
 /// TrafficSignalStateAction uses), so that a run's signal states can become the light's cycle.
-pub fn convert_signals(net: &RoadNetwork, built: &mut Built, opts: &MapOptions, ids: &mut IdAllocator, warn: &mut WarningSink) -> (Vec<TrafficSign>, Vec<TrafficLight>, BTreeMap<String, TrafficLightId>) {
+pub fn convert_signals(
+    net: &RoadNetwork,
+    built: &mut Built,
+    opts: &MapOptions,
+    ids: &mut IdAllocator,
+    warn: &mut WarningSink,
+) -> (Vec<TrafficSign>, Vec<TrafficLight>, BTreeMap<String, TrafficLightId>) {
     let default_country = opts.default_country.clone().unwrap_or_else(|| "DE".to_string());
     // (road, signal index) → lanelets it is valid for
     let mut targets: BTreeMap<(usize, usize), Vec<usize>> = BTreeMap::new();
@@ -188,7 +198,8 @@ pub fn convert_signals(net: &RoadNetwork, built: &mut Built, opts: &MapOptions, 
                     let pts = cross_section(net, built, i, sig.s);
                     if let Some(l) = built.lanelets.get_mut(i) {
                         if l.stop_line.is_none() {
-                            l.stop_line = Some(StopLine { points: pts, line_marking: LineMarking::Solid, traffic_sign_refs: vec![], traffic_light_refs: vec![] });
+                            l.stop_line =
+                                Some(StopLine { points: pts, line_marking: LineMarking::Solid, traffic_sign_refs: vec![], traffic_light_refs: vec![] });
                         }
                     }
                 }

@@ -52,12 +52,7 @@ impl Geometry {
     pub fn pose_at(&self, ds: f64) -> CurvePose {
         let l = self.local_at(ds);
         let (sin, cos) = self.hdg.sin_cos();
-        CurvePose {
-            x: self.x + l.x * cos - l.y * sin,
-            y: self.y + l.x * sin + l.y * cos,
-            hdg: self.hdg + l.hdg,
-            curvature: l.curvature,
-        }
+        CurvePose { x: self.x + l.x * cos - l.y * sin, y: self.y + l.x * sin + l.y * cos, hdg: self.hdg + l.hdg, curvature: l.curvature }
     }
 
     /// Largest |curvature| of the primitive (sampled for the polynomial ones).
@@ -66,9 +61,7 @@ impl Geometry {
             Shape::Line => 0.0,
             Shape::Arc { curvature } => curvature.abs(),
             Shape::Spiral(sp) => sp.curv_start.abs().max(sp.curv_end.abs()),
-            Shape::Poly3(_) | Shape::ParamPoly3(_) => (0..=16)
-                .map(|i| self.local_at(self.length * f64::from(i) / 16.0).curvature.abs())
-                .fold(0.0, f64::max),
+            Shape::Poly3(_) | Shape::ParamPoly3(_) => (0..=16).map(|i| self.local_at(self.length * f64::from(i) / 16.0).curvature.abs()).fold(0.0, f64::max),
         }
     }
 }

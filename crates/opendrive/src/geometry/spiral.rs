@@ -96,7 +96,13 @@ mod tests {
         };
         for i in 0..=n {
             let u = i as f64 * h;
-            let w = if i == 0 || i == n { 1.0 } else if i % 2 == 1 { 4.0 } else { 2.0 };
+            let w = if i == 0 || i == n {
+                1.0
+            } else if i % 2 == 1 {
+                4.0
+            } else {
+                2.0
+            };
             let th = u * (k0 + 0.5 * rate * u);
             add(&mut sx, &mut cx, w * th.cos());
             add(&mut sy, &mut cy, w * th.sin());

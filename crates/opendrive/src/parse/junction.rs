@@ -20,13 +20,8 @@ pub fn parse_junction(ctx: &mut Ctx, node: Node) -> Result<Junction, Error> {
             JunctionType::Default
         }
     };
-    let mut j = Junction {
-        id: ctx.req_str(node, "id")?.to_string(),
-        name: ctx.opt_string(node, "name"),
-        kind,
-        connections: Vec::new(),
-        controllers: Vec::new(),
-    };
+    let mut j =
+        Junction { id: ctx.req_str(node, "id")?.to_string(), name: ctx.opt_string(node, "name"), kind, connections: Vec::new(), controllers: Vec::new() };
     for child in elements(node) {
         match child.tag_name().name() {
             "connection" => {

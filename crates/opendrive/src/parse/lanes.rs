@@ -141,12 +141,7 @@ fn parse_lane(ctx: &mut Ctx, node: Node) -> Result<Lane, Error> {
             "speed" => {
                 let max_raw = ctx.req_str(child, "max")?.to_string();
                 let unit = ctx.opt_string(child, "unit");
-                lane.speeds.push(LaneSpeed {
-                    s_offset: ctx.f64_or(child, "sOffset", 0.0)?,
-                    max_mps: speed_mps(&max_raw, unit.as_deref()),
-                    max_raw,
-                    unit,
-                });
+                lane.speeds.push(LaneSpeed { s_offset: ctx.f64_or(child, "sOffset", 0.0)?, max_mps: speed_mps(&max_raw, unit.as_deref()), max_raw, unit });
             }
             "height" => ctx.warn(child, "<lane><height> is not modelled; ignored"),
             n if irrelevant(n) => {}

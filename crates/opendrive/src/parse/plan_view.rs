@@ -35,20 +35,12 @@ pub fn parse_plan_view(ctx: &mut Ctx, node: Node) -> Result<Vec<Geometry>, Error
                 "line" => Shape::Line,
                 "arc" => Shape::Arc { curvature: ctx.req_f64(p, "curvature")? },
                 "spiral" => Shape::Spiral(Spiral::new(ctx.req_f64(p, "curvStart")?, ctx.req_f64(p, "curvEnd")?, length)),
-                "poly3" => Shape::Poly3(Poly3::new(
-                    ctx.req_f64(p, "a")?,
-                    ctx.req_f64(p, "b")?,
-                    ctx.req_f64(p, "c")?,
-                    ctx.req_f64(p, "d")?,
-                    length,
-                )),
+                "poly3" => Shape::Poly3(Poly3::new(ctx.req_f64(p, "a")?, ctx.req_f64(p, "b")?, ctx.req_f64(p, "c")?, ctx.req_f64(p, "d")?, length)),
                 "paramPoly3" => {
                     let range = match p.attribute("pRange").map(str::trim) {
                         None | Some("normalized") => PRange::Normalized,
                         Some("arcLength") => PRange::ArcLength,
-                        Some(other) => {
-                            return Err(ctx.error(p, format!("pRange: expected `arcLength` or `normalized`, found `{other}`")))
-                        }
+                        Some(other) => return Err(ctx.error(p, format!("pRange: expected `arcLength` or `normalized`, found `{other}`"))),
                     };
                     let u = [ctx.req_f64(p, "aU")?, ctx.req_f64(p, "bU")?, ctx.req_f64(p, "cU")?, ctx.req_f64(p, "dU")?];
                     let v = [ctx.req_f64(p, "aV")?, ctx.req_f64(p, "bV")?, ctx.req_f64(p, "cV")?, ctx.req_f64(p, "dV")?];

@@ -37,9 +37,7 @@ impl<'a, 'input> Ctx<'a, 'input> {
 
     /// A required attribute as text.
     pub fn req_str<'n>(&self, node: Node<'n, 'input>, name: &str) -> Result<&'n str, Error> {
-        node.attribute(name).ok_or_else(|| {
-            self.error(node, format!("<{}> is missing the required attribute `{name}`", node.tag_name().name()))
-        })
+        node.attribute(name).ok_or_else(|| self.error(node, format!("<{}> is missing the required attribute `{name}`", node.tag_name().name())))
     }
     /// An optional attribute as an owned string.
     pub fn opt_string(&self, node: Node, name: &str) -> Option<String> {
@@ -48,14 +46,12 @@ impl<'a, 'input> Ctx<'a, 'input> {
 
     fn number(&self, node: Node, name: &str, raw: &str) -> Result<f64, Error> {
         let at = node.attribute_node(name).map_or(node.range().start, |a| a.range_value().start);
-        let value: f64 = raw.trim().parse().map_err(|_| {
-            self.error_at(at, format!("attribute `{name}` of <{}>: expected a number, found `{raw}`", node.tag_name().name()))
-        })?;
+        let value: f64 = raw
+            .trim()
+            .parse()
+            .map_err(|_| self.error_at(at, format!("attribute `{name}` of <{}>: expected a number, found `{raw}`", node.tag_name().name())))?;
         if !value.is_finite() {
-            return Err(self.error_at(
-                at,
-                format!("attribute `{name}` of <{}>: expected a finite number, found `{raw}`", node.tag_name().name()),
-            ));
+            return Err(self.error_at(at, format!("attribute `{name}` of <{}>: expected a finite number, found `{raw}`", node.tag_name().name())));
         }
         Ok(value)
     }
@@ -83,9 +79,7 @@ impl<'a, 'input> Ctx<'a, 'input> {
         t.parse::<i32>()
             .ok()
             .or_else(|| t.parse::<f64>().ok().filter(|v| v.fract() == 0.0 && v.abs() < 1e9).map(|v| v as i32))
-            .ok_or_else(|| {
-                self.error_at(at, format!("attribute `{name}` of <{}>: expected an integer, found `{raw}`", node.tag_name().name()))
-            })
+            .ok_or_else(|| self.error_at(at, format!("attribute `{name}` of <{}>: expected an integer, found `{raw}`", node.tag_name().name())))
     }
     /// A required integer.
     pub fn req_i32(&self, node: Node, name: &str) -> Result<i32, Error> {

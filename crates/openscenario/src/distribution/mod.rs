@@ -76,11 +76,25 @@ impl Factor {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub enum Stochastic {
     /// Normal with `expected_value` and `variance`, truncated to `range` by redrawing.
-    Normal { expected_value: f64, variance: f64, range: Option<(f64, f64)> },
+    Normal {
+        expected_value: f64,
+        variance: f64,
+        range: Option<(f64, f64)>,
+    },
     /// Log-normal whose underlying normal has mean `expected_value` and `variance`.
-    LogNormal { expected_value: f64, variance: f64, range: Option<(f64, f64)> },
-    Uniform { lower: f64, upper: f64 },
-    Poisson { expected_value: f64, range: Option<(f64, f64)> },
+    LogNormal {
+        expected_value: f64,
+        variance: f64,
+        range: Option<(f64, f64)>,
+    },
+    Uniform {
+        lower: f64,
+        upper: f64,
+    },
+    Poisson {
+        expected_value: f64,
+        range: Option<(f64, f64)>,
+    },
     /// Bins (weight, lower, upper): a bin by weight, then uniform inside it.
     Histogram(Vec<(f64, f64, f64)>),
     /// ProbabilityDistributionSet: (value, weight).

@@ -44,15 +44,15 @@ pub(crate) fn read_distribution(
                         sets.push(set);
                     }
                     if sets.is_empty() {
-                        problems.push(Warning { location: cx.loc(vsd.pos), message: "ValueSetDistribution has no ParameterValueSet: the distribution has no run".into() });
+                        problems.push(Warning {
+                            location: cx.loc(vsd.pos),
+                            message: "ValueSetDistribution has no ParameterValueSet: the distribution has no run".into(),
+                        });
                     }
                     factors.push(Factor::ValueSets(sets));
                 }
                 "DeterministicSingleParameterDistribution" => factors.push(single(warnings, problems, &cx, f)?),
-                _ => warnings.push(Warning {
-                    location: cx.loc(f.pos),
-                    message: format!("<{}> in Deterministic is not supported yet; ignored", f.name),
-                }),
+                _ => warnings.push(Warning { location: cx.loc(f.pos), message: format!("<{}> in Deterministic is not supported yet; ignored", f.name) }),
             }
         }
         let dist = DistributionKind::Deterministic(factors);
@@ -76,16 +76,10 @@ pub(crate) fn read_distribution(
                 e.child("Range").map(|r| Ok((cx.f64(r, "lowerLimit")?, cx.f64(r, "upperLimit")?))).transpose()
             };
             let dist = match c.name.as_str() {
-                "NormalDistribution" => Stochastic::Normal {
-                    expected_value: cx.f64(c, "expectedValue")?,
-                    variance: cx.f64(c, "variance")?,
-                    range: range(c)?,
-                },
-                "LogNormalDistribution" => Stochastic::LogNormal {
-                    expected_value: cx.f64(c, "expectedValue")?,
-                    variance: cx.f64(c, "variance")?,
-                    range: range(c)?,
-                },
+                "NormalDistribution" => Stochastic::Normal { expected_value: cx.f64(c, "expectedValue")?, variance: cx.f64(c, "variance")?, range: range(c)? },
+                "LogNormalDistribution" => {
+                    Stochastic::LogNormal { expected_value: cx.f64(c, "expectedValue")?, variance: cx.f64(c, "variance")?, range: range(c)? }
+                }
                 "UniformDistribution" => {
                     let r = cx.child(c, "Range")?;
                     Stochastic::Uniform { lower: cx.f64(r, "lowerLimit")?, upper: cx.f64(r, "upperLimit")? }
@@ -99,11 +93,9 @@ pub(crate) fn read_distribution(
                         })
                         .collect::<Result<_, Error>>()?,
                 ),
-                "ProbabilityDistributionSet" => Stochastic::Set(
-                    c.children_named("Element")
-                        .map(|e| Ok((cx.text(e, "value")?, cx.f64(e, "weight")?)))
-                        .collect::<Result<_, Error>>()?,
-                ),
+                "ProbabilityDistributionSet" => {
+                    Stochastic::Set(c.children_named("Element").map(|e| Ok((cx.text(e, "value")?, cx.f64(e, "weight")?))).collect::<Result<_, Error>>()?)
+                }
                 _ => {
                     warnings.push(Warning {
                         location: cx.loc(c.pos),
@@ -131,7 +123,10 @@ fn single(warnings: &mut Vec<Warning>, problems: &mut Vec<Warning>, cx: &Cx, f: 
         "DistributionSet" => {
             let values: Vec<String> = c.children_named("Element").map(|e| cx.text(e, "value")).collect::<Result<_, _>>()?;
             if values.is_empty() {
-                problems.push(Warning { location: cx.loc(c.pos), message: format!("DistributionSet of parameter '{parameter}' has no Element: the distribution has no run") });
+                problems.push(Warning {
+                    location: cx.loc(c.pos),
+                    message: format!("DistributionSet of parameter '{parameter}' has no Element: the distribution has no run"),
+                });
             }
             Ok(Factor::Set { parameter, values })
         }
@@ -182,9 +177,7 @@ fn unsampleable(d: &Stochastic) -> Option<String> {
             }
             inverted(range)
         }
-        Stochastic::Uniform { lower, upper } if !(upper > lower) => {
-            Some(format!("its Range is empty or inverted (lowerLimit {lower}, upperLimit {upper})"))
-        }
+        Stochastic::Uniform { lower, upper } if !(upper > lower) => Some(format!("its Range is empty or inverted (lowerLimit {lower}, upperLimit {upper})")),
         Stochastic::Uniform { .. } => None,
         Stochastic::Poisson { expected_value, range } => {
             if !(*expected_value > 0.0) {

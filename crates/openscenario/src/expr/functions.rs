@@ -4,8 +4,7 @@
 pub(crate) fn call(name: &str, args: &[f64]) -> Result<f64, String> {
     let arity = match name {
         "pow" | "max" | "min" => 2,
-        "round" | "floor" | "ceil" | "sqrt" | "sin" | "cos" | "tan" | "asin" | "acos" | "atan" | "sign"
-        | "abs" => 1,
+        "round" | "floor" | "ceil" | "sqrt" | "sin" | "cos" | "tan" | "asin" | "acos" | "atan" | "sign" | "abs" => 1,
         _ => return Err(format!("unknown function '{name}'")),
     };
     if args.len() != arity {

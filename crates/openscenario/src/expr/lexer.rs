@@ -87,9 +87,7 @@ pub(crate) fn tokenize(src: &str) -> Result<Vec<Spanned>, ExprError> {
                 }
             }
             let text: String = chars[start..i].iter().collect();
-            let v: f64 = text
-                .parse()
-                .map_err(|_| ExprError { column: col, message: format!("'{text}' is not a number") })?;
+            let v: f64 = text.parse().map_err(|_| ExprError { column: col, message: format!("'{text}' is not a number") })?;
             out.push((Tok::Num(v), col));
             continue;
         }

@@ -179,10 +179,7 @@ impl Parser<'_> {
             Tok::Ident(name) if name == "pi" && *self.peek() != Tok::LParen => Ok(ExprValue::Num(std::f64::consts::PI)),
             Tok::Ident(name) => {
                 if *self.peek() != Tok::LParen {
-                    return Err(ExprError {
-                        column: col,
-                        message: format!("expected a number, a $parameter, '(' or a function call, found '{name}'"),
-                    });
+                    return Err(ExprError { column: col, message: format!("expected a number, a $parameter, '(' or a function call, found '{name}'") });
                 }
                 let open = self.bump().1;
                 self.enter()?;

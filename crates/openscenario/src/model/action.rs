@@ -16,9 +16,13 @@ pub enum ActionKind {
     Private(PrivateAction),
     Global(GlobalAction),
     /// UserDefinedAction / CustomCommandAction: type and text content are not interpreted.
-    CustomCommand { command_type: String },
+    CustomCommand {
+        command_type: String,
+    },
     /// An element the model does not represent yet (also reported as a warning at load).
-    Unsupported { element: String },
+    Unsupported {
+        element: String,
+    },
 }
 
 crate::xml_enum! {
@@ -134,7 +138,10 @@ pub struct OverrideValue {
 
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub enum PrivateAction {
-    Speed { dynamics: TransitionDynamics, target: SpeedTarget },
+    Speed {
+        dynamics: TransitionDynamics,
+        target: SpeedTarget,
+    },
     SpeedProfile {
         entity: Option<String>,
         following_mode: FollowingMode,
@@ -151,8 +158,17 @@ pub enum PrivateAction {
         displacement: Option<LongitudinalDisplacement>,
         constraints: Option<DynamicConstraints>,
     },
-    LaneChange { dynamics: TransitionDynamics, target: LaneChangeTarget, target_lane_offset: Option<f64> },
-    LaneOffset { continuous: bool, shape: DynamicsShape, max_lateral_acc: Option<f64>, target: LaneOffsetTarget },
+    LaneChange {
+        dynamics: TransitionDynamics,
+        target: LaneChangeTarget,
+        target_lane_offset: Option<f64>,
+    },
+    LaneOffset {
+        continuous: bool,
+        shape: DynamicsShape,
+        max_lateral_acc: Option<f64>,
+        target: LaneOffsetTarget,
+    },
     LateralDistance {
         entity: String,
         distance: Option<f64>,
@@ -162,7 +178,12 @@ pub enum PrivateAction {
         displacement: Option<LateralDisplacement>,
         constraints: Option<DynamicConstraints>,
     },
-    Visibility { graphics: bool, sensors: bool, traffic: bool, sensor_refs: Vec<String> },
+    Visibility {
+        graphics: bool,
+        sensors: bool,
+        traffic: bool,
+        sensor_refs: Vec<String>,
+    },
     Synchronize {
         master: String,
         target_position_master: Position,
@@ -199,9 +220,20 @@ pub enum PrivateAction {
     AcquirePosition(Position),
     /// RandomRouteAction (1.3): no content.
     RandomRoute,
-    LightState { light_type: LightType, state: LightState, transition_time: Option<f64> },
-    Animation { animation_type: String, loop_: Option<bool>, duration: Option<f64>, state: Option<f64> },
-    ConnectTrailer { trailer: String },
+    LightState {
+        light_type: LightType,
+        state: LightState,
+        transition_time: Option<f64>,
+    },
+    Animation {
+        animation_type: String,
+        loop_: Option<bool>,
+        duration: Option<f64>,
+        state: Option<f64>,
+    },
+    ConnectTrailer {
+        trailer: String,
+    },
     DisconnectTrailer,
 }
 
@@ -218,16 +250,50 @@ pub struct ModifyRule {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub enum GlobalAction {
     Environment(Environment),
-    AddEntity { entity: String, position: Position },
-    DeleteEntity { entity: String },
-    ParameterSet { parameter: String, value: String },
-    ParameterModify { parameter: String, rule: ModifyRule },
-    VariableSet { variable: String, value: String },
-    VariableModify { variable: String, rule: ModifyRule },
-    TrafficSignalState { name: String, state: String },
-    TrafficSignalController { controller: String, phase: String },
-    TrafficSource { position: Position, radius: f64, rate: f64, velocity: Option<f64>, definition: String },
-    TrafficSink { position: Position, radius: f64, rate: Option<f64>, definition: String },
+    AddEntity {
+        entity: String,
+        position: Position,
+    },
+    DeleteEntity {
+        entity: String,
+    },
+    ParameterSet {
+        parameter: String,
+        value: String,
+    },
+    ParameterModify {
+        parameter: String,
+        rule: ModifyRule,
+    },
+    VariableSet {
+        variable: String,
+        value: String,
+    },
+    VariableModify {
+        variable: String,
+        rule: ModifyRule,
+    },
+    TrafficSignalState {
+        name: String,
+        state: String,
+    },
+    TrafficSignalController {
+        controller: String,
+        phase: String,
+    },
+    TrafficSource {
+        position: Position,
+        radius: f64,
+        rate: f64,
+        velocity: Option<f64>,
+        definition: String,
+    },
+    TrafficSink {
+        position: Position,
+        radius: f64,
+        rate: Option<f64>,
+        definition: String,
+    },
     TrafficSwarm {
         central_entity: String,
         inner_radius: f64,
@@ -238,9 +304,17 @@ pub enum GlobalAction {
         velocity: Option<f64>,
         definition: String,
     },
-    TrafficArea { continuous: bool, number_of_entities: u32 },
-    TrafficStop { name: Option<String> },
-    SetMonitor { monitor: String, value: bool },
+    TrafficArea {
+        continuous: bool,
+        number_of_entities: u32,
+    },
+    TrafficStop {
+        name: Option<String>,
+    },
+    SetMonitor {
+        monitor: String,
+        value: bool,
+    },
 }
 
 impl ActionKind {

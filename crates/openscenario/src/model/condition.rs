@@ -85,10 +85,16 @@ pub struct Condition {
 
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub enum ConditionKind {
-    ByEntity { rule: TriggeringEntitiesRule, entities: Vec<String>, condition: EntityCondition },
+    ByEntity {
+        rule: TriggeringEntitiesRule,
+        entities: Vec<String>,
+        condition: EntityCondition,
+    },
     ByValue(ValueCondition),
     /// An element the model does not represent yet (also a load warning).
-    Unsupported { element: String },
+    Unsupported {
+        element: String,
+    },
 }
 
 /// Distance measurement options shared by several conditions.
@@ -116,19 +122,65 @@ pub enum TtcTarget {
 
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub enum EntityCondition {
-    EndOfRoad { duration: f64 },
-    Collision { target: CollisionTarget },
-    Offroad { duration: f64 },
-    TimeHeadway { entity: String, value: f64, rule: Rule, options: DistanceOptions },
-    TimeToCollision { target: TtcTarget, value: f64, rule: Rule, options: DistanceOptions },
-    Acceleration { value: f64, rule: Rule, direction: Option<DirectionalDimension> },
-    StandStill { duration: f64 },
-    Speed { value: f64, rule: Rule, direction: Option<DirectionalDimension> },
-    RelativeSpeed { entity: String, value: f64, rule: Rule, direction: Option<DirectionalDimension> },
-    TraveledDistance { value: f64 },
-    ReachPosition { position: Position, tolerance: f64 },
-    Distance { position: Position, value: f64, rule: Rule, options: DistanceOptions },
-    RelativeDistance { entity: String, value: f64, rule: Rule, options: DistanceOptions },
+    EndOfRoad {
+        duration: f64,
+    },
+    Collision {
+        target: CollisionTarget,
+    },
+    Offroad {
+        duration: f64,
+    },
+    TimeHeadway {
+        entity: String,
+        value: f64,
+        rule: Rule,
+        options: DistanceOptions,
+    },
+    TimeToCollision {
+        target: TtcTarget,
+        value: f64,
+        rule: Rule,
+        options: DistanceOptions,
+    },
+    Acceleration {
+        value: f64,
+        rule: Rule,
+        direction: Option<DirectionalDimension>,
+    },
+    StandStill {
+        duration: f64,
+    },
+    Speed {
+        value: f64,
+        rule: Rule,
+        direction: Option<DirectionalDimension>,
+    },
+    RelativeSpeed {
+        entity: String,
+        value: f64,
+        rule: Rule,
+        direction: Option<DirectionalDimension>,
+    },
+    TraveledDistance {
+        value: f64,
+    },
+    ReachPosition {
+        position: Position,
+        tolerance: f64,
+    },
+    Distance {
+        position: Position,
+        value: f64,
+        rule: Rule,
+        options: DistanceOptions,
+    },
+    RelativeDistance {
+        entity: String,
+        value: f64,
+        rule: Rule,
+        options: DistanceOptions,
+    },
     RelativeClearance {
         entities: Vec<String>,
         opposite_lanes: bool,
@@ -138,8 +190,19 @@ pub enum EntityCondition {
         /// RelativeLaneRange (from, to) pairs.
         lane_ranges: Vec<(Option<i32>, Option<i32>)>,
     },
-    Angle { angle_type: AngleType, angle: f64, tolerance: f64, coordinate_system: Option<CoordinateSystem> },
-    RelativeAngle { entity: String, angle_type: AngleType, angle: f64, tolerance: f64, coordinate_system: Option<CoordinateSystem> },
+    Angle {
+        angle_type: AngleType,
+        angle: f64,
+        tolerance: f64,
+        coordinate_system: Option<CoordinateSystem>,
+    },
+    RelativeAngle {
+        entity: String,
+        angle_type: AngleType,
+        angle: f64,
+        tolerance: f64,
+        coordinate_system: Option<CoordinateSystem>,
+    },
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize)]

@@ -21,7 +21,9 @@ pub enum EntityObject {
     Pedestrian(Pedestrian),
     MiscObject(MiscObject),
     /// ExternalObjectReference: an object defined outside the scenario.
-    External { name: String },
+    External {
+        name: String,
+    },
 }
 
 impl EntityObject {

@@ -18,17 +18,73 @@ pub struct Orientation {
 
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub enum Position {
-    World { x: f64, y: f64, z: Option<f64>, h: Option<f64>, p: Option<f64>, r: Option<f64> },
-    RelativeWorld { entity: String, dx: f64, dy: f64, dz: Option<f64>, orientation: Option<Orientation> },
-    RelativeObject { entity: String, dx: f64, dy: f64, dz: Option<f64>, orientation: Option<Orientation> },
-    Road { road_id: String, s: f64, t: f64, orientation: Option<Orientation> },
-    RelativeRoad { entity: String, ds: f64, dt: f64, orientation: Option<Orientation> },
-    Lane { road_id: String, lane_id: i32, s: f64, offset: f64, orientation: Option<Orientation> },
+    World {
+        x: f64,
+        y: f64,
+        z: Option<f64>,
+        h: Option<f64>,
+        p: Option<f64>,
+        r: Option<f64>,
+    },
+    RelativeWorld {
+        entity: String,
+        dx: f64,
+        dy: f64,
+        dz: Option<f64>,
+        orientation: Option<Orientation>,
+    },
+    RelativeObject {
+        entity: String,
+        dx: f64,
+        dy: f64,
+        dz: Option<f64>,
+        orientation: Option<Orientation>,
+    },
+    Road {
+        road_id: String,
+        s: f64,
+        t: f64,
+        orientation: Option<Orientation>,
+    },
+    RelativeRoad {
+        entity: String,
+        ds: f64,
+        dt: f64,
+        orientation: Option<Orientation>,
+    },
+    Lane {
+        road_id: String,
+        lane_id: i32,
+        s: f64,
+        offset: f64,
+        orientation: Option<Orientation>,
+    },
     /// `ds` (along the reference line) or `ds_lane` (along the lane centre, 1.1+).
-    RelativeLane { entity: String, d_lane: i32, ds: Option<f64>, ds_lane: Option<f64>, offset: f64, orientation: Option<Orientation> },
-    Route { route: Box<Route>, orientation: Option<Orientation>, in_route: InRoutePosition },
-    Geo { latitude_deg: f64, longitude_deg: f64, altitude: Option<f64>, orientation: Option<Orientation> },
-    Trajectory { trajectory: Box<Trajectory>, s: f64, t: Option<f64>, orientation: Option<Orientation> },
+    RelativeLane {
+        entity: String,
+        d_lane: i32,
+        ds: Option<f64>,
+        ds_lane: Option<f64>,
+        offset: f64,
+        orientation: Option<Orientation>,
+    },
+    Route {
+        route: Box<Route>,
+        orientation: Option<Orientation>,
+        in_route: InRoutePosition,
+    },
+    Geo {
+        latitude_deg: f64,
+        longitude_deg: f64,
+        altitude: Option<f64>,
+        orientation: Option<Orientation>,
+    },
+    Trajectory {
+        trajectory: Box<Trajectory>,
+        s: f64,
+        t: Option<f64>,
+        orientation: Option<Orientation>,
+    },
 }
 
 impl Position {

@@ -25,8 +25,15 @@ pub enum Shape {
         stop_time: Option<f64>,
         position: Option<Box<Position>>,
     },
-    ClothoidSpline { segments: Vec<ClothoidSplineSegment>, time_end: Option<f64> },
-    Nurbs { order: u32, control_points: Vec<ControlPoint>, knots: Vec<f64> },
+    ClothoidSpline {
+        segments: Vec<ClothoidSplineSegment>,
+        time_end: Option<f64>,
+    },
+    Nurbs {
+        order: u32,
+        control_points: Vec<ControlPoint>,
+        knots: Vec<f64>,
+    },
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize)]

@@ -27,9 +27,7 @@ pub(crate) fn read_action_kind(r: &mut Reader, cx: &Cx, c: &Elem) -> Result<Acti
             if let Some(cc) = cc {
                 r.warn(cx.loc(cc.pos), "CustomCommandAction: its text content is not interpreted (only its type is kept)");
             }
-            Ok(ActionKind::CustomCommand {
-                command_type: cc.map(|cc| cx.opt_text(cc, "type")).transpose()?.flatten().unwrap_or_default(),
-            })
+            Ok(ActionKind::CustomCommand { command_type: cc.map(|cc| cx.opt_text(cc, "type")).transpose()?.flatten().unwrap_or_default() })
         }
         _ => Err(cx.unexpected(c, "Action", "PrivateAction, GlobalAction, UserDefinedAction")),
     }
@@ -77,9 +75,7 @@ pub(crate) fn read_private_action(r: &mut Reader, cx: &Cx, wrapper: &Elem) -> Re
                     let d = cx.child(c, "LaneOffsetActionDynamics")?;
                     let t = cx.choice(cx.child(c, "LaneOffsetTarget")?, "RelativeTargetLaneOffset or AbsoluteTargetLaneOffset")?;
                     let target = match t.name.as_str() {
-                        "RelativeTargetLaneOffset" => {
-                            LaneOffsetTarget::Relative { entity: cx.text(t, "entityRef")?, value: cx.f64(t, "value")? }
-                        }
+                        "RelativeTargetLaneOffset" => LaneOffsetTarget::Relative { entity: cx.text(t, "entityRef")?, value: cx.f64(t, "value")? },
                         "AbsoluteTargetLaneOffset" => LaneOffsetTarget::Absolute { value: cx.f64(t, "value")? },
                         _ => return Err(cx.unexpected(t, "LaneOffsetTarget", "RelativeTargetLaneOffset, AbsoluteTargetLaneOffset")),
                     };
@@ -141,12 +137,7 @@ pub(crate) fn read_private_action(r: &mut Reader, cx: &Cx, wrapper: &Elem) -> Re
                                     None => v.first_child().map(|g| cx.opt_f64(g, "value")).transpose()?.flatten(),
                                 },
                             };
-                            Ok(OverrideValue {
-                                kind: v.name.clone(),
-                                active: cx.bool_or(v, "active", false)?,
-                                value,
-                                max_rate: cx.opt_f64(v, "maxRate")?,
-                            })
+                            Ok(OverrideValue { kind: v.name.clone(), active: cx.bool_or(v, "active", false)?, value, max_rate: cx.opt_f64(v, "maxRate")? })
                         })
                         .collect::<Result<_, Error>>()?,
                 ),
@@ -275,9 +266,7 @@ fn steady_state(cx: &Cx, e: &Elem) -> Result<Option<SteadyState>, Error> {
 fn synchronize(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<PrivateAction, Error> {
     let final_speed = match e.child("FinalSpeed").and_then(|f| f.first_child()) {
         None => None,
-        Some(f) if f.name == "AbsoluteSpeed" => {
-            Some(FinalSpeed::Absolute { value: cx.f64(f, "value")?, steady_state: steady_state(cx, f)? })
-        }
+        Some(f) if f.name == "AbsoluteSpeed" => Some(FinalSpeed::Absolute { value: cx.f64(f, "value")?, steady_state: steady_state(cx, f)? }),
         Some(f) if f.name == "RelativeSpeedToMaster" => Some(FinalSpeed::RelativeToMaster {
             value: cx.f64(f, "value")?,
             value_type: cx.enum_(f, "speedTargetValueType")?,
@@ -303,13 +292,9 @@ fn follow_trajectory(r: &mut Reader, cx: &Cx, c: &Elem) -> Result<PrivateAction,
         Some(tr) => read_trajectory_ref(r, cx, tr)?,
         // 1.0 form: Trajectory or CatalogReference directly inside the action.
         None => {
-            let inner = c
-                .children()
-                .iter()
-                .find(|x| x.name == "Trajectory" || x.name == "CatalogReference")
-                .ok_or_else(|| {
-                    cx.err(crate::error::ErrorKind::Structure, c.pos, "FollowTrajectoryAction needs a TrajectoryRef, Trajectory or CatalogReference")
-                })?;
+            let inner = c.children().iter().find(|x| x.name == "Trajectory" || x.name == "CatalogReference").ok_or_else(|| {
+                cx.err(crate::error::ErrorKind::Structure, c.pos, "FollowTrajectoryAction needs a TrajectoryRef, Trajectory or CatalogReference")
+            })?;
             match inner.name.as_str() {
                 "Trajectory" => super::trajectory::read_trajectory(r, cx, inner, &[])?,
                 _ => r.catalog_entry(cx, inner, &[crate::catalog::CatalogKind::Trajectory], super::trajectory::read_trajectory)?,
@@ -317,23 +302,16 @@ fn follow_trajectory(r: &mut Reader, cx: &Cx, c: &Elem) -> Result<PrivateAction,
         }
     };
     let time_reference = match c.child("TimeReference").and_then(|t| t.first_child()) {
-        Some(t) if t.name == "Timing" => TimeReference::Timing {
-            domain: cx.enum_(t, "domainAbsoluteRelative")?,
-            scale: cx.f64_or(t, "scale", 1.0)?,
-            offset: cx.f64_or(t, "offset", 0.0)?,
-        },
+        Some(t) if t.name == "Timing" => {
+            TimeReference::Timing { domain: cx.enum_(t, "domainAbsoluteRelative")?, scale: cx.f64_or(t, "scale", 1.0)?, offset: cx.f64_or(t, "offset", 0.0)? }
+        }
         _ => TimeReference::None,
     };
     let following_mode = match c.child("TrajectoryFollowingMode") {
         Some(m) => cx.enum_(m, "followingMode")?,
         None => FollowingMode::Position,
     };
-    Ok(PrivateAction::FollowTrajectory {
-        trajectory,
-        time_reference,
-        following_mode,
-        initial_distance_offset: cx.opt_f64(c, "initialDistanceOffset")?,
-    })
+    Ok(PrivateAction::FollowTrajectory { trajectory, time_reference, following_mode, initial_distance_offset: cx.opt_f64(c, "initialDistanceOffset")? })
 }
 
 fn light_state(cx: &Cx, c: &Elem) -> Result<PrivateAction, Error> {

@@ -15,10 +15,7 @@ pub(crate) fn read_trigger(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<Trigger,
             r.unsupported(cx, g, &e.name);
             continue;
         }
-        let conditions = g
-            .children_named("Condition")
-            .map(|c| read_condition(r, cx, c))
-            .collect::<Result<Vec<_>, Error>>()?;
+        let conditions = g.children_named("Condition").map(|c| read_condition(r, cx, c)).collect::<Result<Vec<_>, Error>>()?;
         groups.push(ConditionGroup { conditions });
     }
     Ok(Trigger { groups })
@@ -72,12 +69,9 @@ fn by_entity(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<ConditionKind, Error> 
             };
             EntityCondition::Collision { target }
         }
-        "TimeHeadwayCondition" => EntityCondition::TimeHeadway {
-            entity: cx.text(c, "entityRef")?,
-            value: cx.f64(c, "value")?,
-            rule: cx.enum_(c, "rule")?,
-            options: options(cx, c)?,
-        },
+        "TimeHeadwayCondition" => {
+            EntityCondition::TimeHeadway { entity: cx.text(c, "entityRef")?, value: cx.f64(c, "value")?, rule: cx.enum_(c, "rule")?, options: options(cx, c)? }
+        }
         "TimeToCollisionCondition" => {
             let t = cx.choice(cx.child(c, "TimeToCollisionConditionTarget")?, "Position or EntityRef")?;
             let target = match t.name.as_str() {
@@ -87,16 +81,10 @@ fn by_entity(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<ConditionKind, Error> 
             };
             EntityCondition::TimeToCollision { target, value: cx.f64(c, "value")?, rule: cx.enum_(c, "rule")?, options: options(cx, c)? }
         }
-        "AccelerationCondition" => EntityCondition::Acceleration {
-            value: cx.f64(c, "value")?,
-            rule: cx.enum_(c, "rule")?,
-            direction: cx.opt_enum(c, "direction")?,
-        },
-        "SpeedCondition" => EntityCondition::Speed {
-            value: cx.f64(c, "value")?,
-            rule: cx.enum_(c, "rule")?,
-            direction: cx.opt_enum(c, "direction")?,
-        },
+        "AccelerationCondition" => {
+            EntityCondition::Acceleration { value: cx.f64(c, "value")?, rule: cx.enum_(c, "rule")?, direction: cx.opt_enum(c, "direction")? }
+        }
+        "SpeedCondition" => EntityCondition::Speed { value: cx.f64(c, "value")?, rule: cx.enum_(c, "rule")?, direction: cx.opt_enum(c, "direction")? },
         "RelativeSpeedCondition" => EntityCondition::RelativeSpeed {
             entity: cx.text(c, "entityRef")?,
             value: cx.f64(c, "value")?,
@@ -104,10 +92,9 @@ fn by_entity(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<ConditionKind, Error> 
             direction: cx.opt_enum(c, "direction")?,
         },
         "TraveledDistanceCondition" => EntityCondition::TraveledDistance { value: cx.f64(c, "value")? },
-        "ReachPositionCondition" => EntityCondition::ReachPosition {
-            position: read_position(r, cx, cx.child(c, "Position")?)?,
-            tolerance: cx.f64(c, "tolerance")?,
-        },
+        "ReachPositionCondition" => {
+            EntityCondition::ReachPosition { position: read_position(r, cx, cx.child(c, "Position")?)?, tolerance: cx.f64(c, "tolerance")? }
+        }
         "DistanceCondition" => EntityCondition::Distance {
             position: read_position(r, cx, cx.child(c, "Position")?)?,
             value: cx.f64(c, "value")?,
@@ -129,9 +116,7 @@ fn by_entity(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<ConditionKind, Error> 
             lane_ranges: c
                 .children_named("RelativeLaneRange")
                 .map(|l| {
-                    let conv = |n: &str| -> Result<Option<i32>, Error> {
-                        Ok(cx.opt_i64(l, n)?.and_then(|v| i32::try_from(v).ok()))
-                    };
+                    let conv = |n: &str| -> Result<Option<i32>, Error> { Ok(cx.opt_i64(l, n)?.and_then(|v| i32::try_from(v).ok())) };
                     Ok((conv("from")?, conv("to")?))
                 })
                 .collect::<Result<_, Error>>()?,
@@ -160,16 +145,10 @@ fn by_entity(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<ConditionKind, Error> 
 fn by_value(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<ConditionKind, Error> {
     let c = cx.choice(e, "a value condition")?;
     let v = match c.name.as_str() {
-        "ParameterCondition" => ValueCondition::Parameter {
-            parameter: cx.name_ref(c, "parameterRef")?,
-            value: cx.text(c, "value")?,
-            rule: cx.enum_(c, "rule")?,
-        },
-        "VariableCondition" => ValueCondition::Variable {
-            variable: cx.name_ref(c, "variableRef")?,
-            value: cx.text(c, "value")?,
-            rule: cx.enum_(c, "rule")?,
-        },
+        "ParameterCondition" => {
+            ValueCondition::Parameter { parameter: cx.name_ref(c, "parameterRef")?, value: cx.text(c, "value")?, rule: cx.enum_(c, "rule")? }
+        }
+        "VariableCondition" => ValueCondition::Variable { variable: cx.name_ref(c, "variableRef")?, value: cx.text(c, "value")?, rule: cx.enum_(c, "rule")? },
         "TimeOfDayCondition" => ValueCondition::TimeOfDay { date_time: cx.text(c, "dateTime")?, rule: cx.enum_(c, "rule")? },
         "SimulationTimeCondition" => ValueCondition::SimulationTime { value: cx.f64(c, "value")?, rule: cx.enum_(c, "rule")? },
         "StoryboardElementStateCondition" => ValueCondition::StoryboardElementState {
@@ -177,16 +156,11 @@ fn by_value(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<ConditionKind, Error> {
             element: cx.text(c, "storyboardElementRef")?,
             state: cx.enum_(c, "state")?,
         },
-        "UserDefinedValueCondition" => ValueCondition::UserDefinedValue {
-            name: cx.text(c, "name")?,
-            value: cx.text(c, "value")?,
-            rule: cx.enum_(c, "rule")?,
-        },
+        "UserDefinedValueCondition" => ValueCondition::UserDefinedValue { name: cx.text(c, "name")?, value: cx.text(c, "value")?, rule: cx.enum_(c, "rule")? },
         "TrafficSignalCondition" => ValueCondition::TrafficSignal { name: cx.text(c, "name")?, state: cx.text(c, "state")? },
-        "TrafficSignalControllerCondition" => ValueCondition::TrafficSignalController {
-            controller: cx.text(c, "trafficSignalControllerRef")?,
-            phase: cx.text(c, "phase")?,
-        },
+        "TrafficSignalControllerCondition" => {
+            ValueCondition::TrafficSignalController { controller: cx.text(c, "trafficSignalControllerRef")?, phase: cx.text(c, "phase")? }
+        }
         _ => {
             r.unsupported(cx, c, "ByValueCondition");
             return Ok(ConditionKind::Unsupported { element: c.name.clone() });

@@ -58,9 +58,7 @@ pub(crate) fn read_scenario_object(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<
 
 fn read_entity_object(r: &mut Reader, cx: &Cx, c: &Elem) -> Result<EntityObject, Error> {
     match c.name.as_str() {
-        "CatalogReference" => {
-            r.catalog_entry_or(cx, c, OBJECT_KINDS, read_entity_object_entry, |name| EntityObject::External { name })
-        }
+        "CatalogReference" => r.catalog_entry_or(cx, c, OBJECT_KINDS, read_entity_object_entry, |name| EntityObject::External { name }),
         "ExternalObjectReference" => Ok(EntityObject::External { name: cx.text(c, "name")? }),
         _ => read_entity_object_entry(r, cx, c, &[]),
     }
@@ -206,13 +204,7 @@ pub(crate) fn read_object_controller(r: &mut Reader, cx: &Cx, e: &Elem) -> Resul
     let Some(c) = e.first_child() else { return Ok(None) };
     match c.name.as_str() {
         "Controller" => Ok(Some(read_controller(r, cx, c, &[])?)),
-        "CatalogReference" => r.catalog_entry_or(
-            cx,
-            c,
-            &[CatalogKind::Controller],
-            |r, cx, e, asg| read_controller(r, cx, e, asg).map(Some),
-            |_| None,
-        ),
+        "CatalogReference" => r.catalog_entry_or(cx, c, &[CatalogKind::Controller], |r, cx, e, asg| read_controller(r, cx, e, asg).map(Some), |_| None),
         "ObjectController" => read_object_controller(r, cx, c),
         _ => Err(cx.unexpected(c, &e.name, "Controller, CatalogReference")),
     }

@@ -80,10 +80,7 @@ fn read_weather(cx: &Cx, w: &Elem) -> Result<Weather, Error> {
                 })
             })
             .transpose()?,
-        wind: w
-            .child("Wind")
-            .map(|x| Ok::<_, Error>(Wind { direction: cx.f64(x, "direction")?, speed: cx.f64(x, "speed")? }))
-            .transpose()?,
+        wind: w.child("Wind").map(|x| Ok::<_, Error>(Wind { direction: cx.f64(x, "direction")?, speed: cx.f64(x, "speed")? })).transpose()?,
         dome_image: w
             .child("DomeImage")
             .map(|d| {

@@ -63,13 +63,10 @@ pub(crate) fn read_global_action(r: &mut Reader, cx: &Cx, wrapper: &Elem) -> Res
             let tsa = cx.child(e, "TrafficSignalAction")?;
             let c = cx.choice(tsa, "TrafficSignalControllerAction or TrafficSignalStateAction")?;
             match c.name.as_str() {
-                "TrafficSignalStateAction" => {
-                    GlobalAction::TrafficSignalState { name: cx.text(c, "name")?, state: cx.text(c, "state")? }
+                "TrafficSignalStateAction" => GlobalAction::TrafficSignalState { name: cx.text(c, "name")?, state: cx.text(c, "state")? },
+                "TrafficSignalControllerAction" => {
+                    GlobalAction::TrafficSignalController { controller: cx.text(c, "trafficSignalControllerRef")?, phase: cx.text(c, "phase")? }
                 }
-                "TrafficSignalControllerAction" => GlobalAction::TrafficSignalController {
-                    controller: cx.text(c, "trafficSignalControllerRef")?,
-                    phase: cx.text(c, "phase")?,
-                },
                 _ => return Ok(unsupported(r, cx, c, "TrafficSignalAction")),
             }
         }
@@ -101,10 +98,7 @@ pub(crate) fn read_global_action(r: &mut Reader, cx: &Cx, wrapper: &Elem) -> Res
                 },
                 "TrafficAreaAction" => {
                     r.warn(cx.loc(c.pos), "TrafficAreaAction: the area's geometry is not modelled");
-                    GlobalAction::TrafficArea {
-                    continuous: cx.bool_or(c, "continuous", false)?,
-                    number_of_entities: cx.u32_or(c, "numberOfEntities", 0)?,
-                    }
+                    GlobalAction::TrafficArea { continuous: cx.bool_or(c, "continuous", false)?, number_of_entities: cx.u32_or(c, "numberOfEntities", 0)? }
                 }
                 "TrafficStopAction" => GlobalAction::TrafficStop { name: cx.opt_text(e, "trafficName")? },
                 _ => return Ok(unsupported(r, cx, c, "TrafficAction")),

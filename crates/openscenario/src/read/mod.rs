@@ -33,13 +33,7 @@ pub(crate) struct Reader {
 
 impl Reader {
     pub fn new() -> Self {
-        Reader {
-            warnings: Vec::new(),
-            problems: Vec::new(),
-            catalogs: CatalogStore::default(),
-            catalog_depth: 0,
-            go_on_without_catalogs: false,
-        }
+        Reader { warnings: Vec::new(), problems: Vec::new(), catalogs: CatalogStore::default(), catalog_depth: 0, go_on_without_catalogs: false }
     }
 
     pub fn warn(&mut self, location: Location, message: impl Into<String>) {
@@ -53,19 +47,11 @@ impl Reader {
     }
 
     /// Declarations of an entry (Vehicle, Maneuver, ...) resolved with `assignments`.
-    pub fn declarations(
-        &mut self,
-        cx: &Cx,
-        e: &Elem,
-        assignments: &[(String, String)],
-    ) -> Result<Vec<ParameterDeclaration>, Error> {
+    pub fn declarations(&mut self, cx: &Cx, e: &Elem, assignments: &[(String, String)]) -> Result<Vec<ParameterDeclaration>, Error> {
         let decls = read_declarations(e.child("ParameterDeclarations"), cx.scope, assignments, &cx.file, &mut self.warnings)?;
         for (name, _) in assignments {
             if !decls.iter().any(|d| &d.name == name) {
-                self.warn(
-                    cx.loc(e.pos),
-                    format!("parameter assignment '{name}' does not match any parameter declared by <{}>", e.name),
-                );
+                self.warn(cx.loc(e.pos), format!("parameter assignment '{name}' does not match any parameter declared by <{}>", e.name));
             }
         }
         Ok(decls)
@@ -107,11 +93,7 @@ impl Reader {
             return Err(Error::new(
                 ErrorKind::Structure,
                 at,
-                format!(
-                    "catalog entry '{entry}' of catalog '{catalog}' is a <{}>, expected {}",
-                    elem.name,
-                    expected.join(" or ")
-                ),
+                format!("catalog entry '{entry}' of catalog '{catalog}' is a <{}>, expected {}", elem.name, expected.join(" or ")),
             ));
         }
         let scope = Scope { params: Vec::new(), parent: Some(cx.scope) };
@@ -139,10 +121,7 @@ impl Reader {
                 reference.announce();
                 let gap = Warning { location: e.location.clone(), message: e.message.clone() };
                 if e.kind == ErrorKind::MissingCatalog {
-                    self.warnings.push(Warning {
-                        message: format!("{} (what this file takes from the catalog is not checked)", gap.message),
-                        ..gap
-                    });
+                    self.warnings.push(Warning { message: format!("{} (what this file takes from the catalog is not checked)", gap.message), ..gap });
                 } else {
                     self.problems.push(gap);
                 }
@@ -155,11 +134,7 @@ impl Reader {
 }
 
 /// One entry of a catalog file read on its own.
-pub(crate) fn read_catalog_entry(
-    r: &mut Reader,
-    cx: &Cx,
-    e: &Elem,
-) -> Result<Option<crate::catalog_file::CatalogEntry>, Error> {
+pub(crate) fn read_catalog_entry(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<Option<crate::catalog_file::CatalogEntry>, Error> {
     use crate::catalog_file::CatalogEntry;
     Ok(Some(match e.name.as_str() {
         "Vehicle" | "Pedestrian" | "MiscObject" => CatalogEntry::Object(entity::read_entity_object_entry(r, cx, e, &[])?),

@@ -15,14 +15,7 @@ pub(crate) fn read_position(r: &mut Reader, cx: &Cx, wrapper: &Elem) -> Result<P
 
 fn orientation(cx: &Cx, e: &Elem) -> Result<Option<Orientation>, Error> {
     e.child("Orientation")
-        .map(|o| {
-            Ok(Orientation {
-                reference: cx.opt_enum(o, "type")?,
-                h: cx.opt_f64(o, "h")?,
-                p: cx.opt_f64(o, "p")?,
-                r: cx.opt_f64(o, "r")?,
-            })
-        })
+        .map(|o| Ok(Orientation { reference: cx.opt_enum(o, "type")?, h: cx.opt_f64(o, "h")?, p: cx.opt_f64(o, "p")?, r: cx.opt_f64(o, "r")? }))
         .transpose()
 }
 
@@ -55,18 +48,10 @@ pub(crate) fn read_position_kind(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<Po
             dz: cx.opt_f64(e, "dz")?,
             orientation: orientation(cx, e)?,
         },
-        "RoadPosition" => Position::Road {
-            road_id: cx.text(e, "roadId")?,
-            s: cx.f64(e, "s")?,
-            t: cx.f64(e, "t")?,
-            orientation: orientation(cx, e)?,
-        },
-        "RelativeRoadPosition" => Position::RelativeRoad {
-            entity: cx.text(e, "entityRef")?,
-            ds: cx.f64(e, "ds")?,
-            dt: cx.f64(e, "dt")?,
-            orientation: orientation(cx, e)?,
-        },
+        "RoadPosition" => Position::Road { road_id: cx.text(e, "roadId")?, s: cx.f64(e, "s")?, t: cx.f64(e, "t")?, orientation: orientation(cx, e)? },
+        "RelativeRoadPosition" => {
+            Position::RelativeRoad { entity: cx.text(e, "entityRef")?, ds: cx.f64(e, "ds")?, dt: cx.f64(e, "dt")?, orientation: orientation(cx, e)? }
+        }
         "LanePosition" => Position::Lane {
             road_id: cx.text(e, "roadId")?,
             lane_id: lane_id(cx, e, "laneId")?,
@@ -79,8 +64,7 @@ pub(crate) fn read_position_kind(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<Po
             let ds_lane = cx.opt_f64(e, "dsLane")?;
             Position::RelativeLane {
                 entity: cx.text(e, "entityRef")?,
-                d_lane: i32::try_from(cx.i64(e, "dLane")?)
-                    .map_err(|_| cx.err(ErrorKind::Value, e.pos, "dLane is out of range"))?,
+                d_lane: i32::try_from(cx.i64(e, "dLane")?).map_err(|_| cx.err(ErrorKind::Value, e.pos, "dLane is out of range"))?,
                 ds: if ds.is_none() && ds_lane.is_none() { Some(0.0) } else { ds },
                 ds_lane,
                 offset: cx.f64_or(e, "offset", 0.0)?,
@@ -92,12 +76,8 @@ pub(crate) fn read_position_kind(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<Po
             let irp = cx.child(e, "InRoutePosition")?;
             let c = cx.choice(irp, "FromCurrentEntity, FromRoadCoordinates or FromLaneCoordinates")?;
             let in_route = match c.name.as_str() {
-                "FromCurrentEntity" | "PositionOfCurrentEntity" => {
-                    InRoutePosition::FromCurrentEntity { entity: cx.text(c, "entityRef")? }
-                }
-                "FromRoadCoordinates" | "PositionInRoadCoordinates" => {
-                    InRoutePosition::FromRoadCoordinates { path_s: cx.f64(c, "pathS")?, t: cx.f64(c, "t")? }
-                }
+                "FromCurrentEntity" | "PositionOfCurrentEntity" => InRoutePosition::FromCurrentEntity { entity: cx.text(c, "entityRef")? },
+                "FromRoadCoordinates" | "PositionInRoadCoordinates" => InRoutePosition::FromRoadCoordinates { path_s: cx.f64(c, "pathS")?, t: cx.f64(c, "t")? },
                 "FromLaneCoordinates" | "PositionInLaneCoordinates" => InRoutePosition::FromLaneCoordinates {
                     path_s: cx.f64(c, "pathS")?,
                     lane_id: lane_id(cx, c, "laneId")?,

@@ -13,13 +13,7 @@ use std::path::{Path, PathBuf};
 
 /// Reads a scenario root (`OpenSCENARIO` with a Storyboard). `overrides` replace the values
 /// of global parameters.
-pub(crate) fn read_scenario(
-    r: &mut Reader,
-    path: &Path,
-    file: &std::sync::Arc<Path>,
-    root: &Elem,
-    overrides: &[(String, String)],
-) -> Result<Scenario, Error> {
+pub(crate) fn read_scenario(r: &mut Reader, path: &Path, file: &std::sync::Arc<Path>, root: &Elem, overrides: &[(String, String)]) -> Result<Scenario, Error> {
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
     let empty = Scope::default();
     let decls = root.child("ParameterDeclarations");
@@ -34,8 +28,7 @@ pub(crate) fn read_scenario(
     }
     let scope = Scope { params: parameters.clone(), parent: None };
     let cx = Cx::new(file.clone(), &scope);
-    let variables: Vec<ParameterDeclaration> =
-        read_declarations(root.child("VariableDeclarations"), &scope, &[], file, &mut r.warnings)?;
+    let variables: Vec<ParameterDeclaration> = read_declarations(root.child("VariableDeclarations"), &scope, &[], file, &mut r.warnings)?;
 
     if let Some(cl) = root.child("CatalogLocations") {
         for k in cl.children() {
@@ -79,16 +72,7 @@ pub(crate) fn read_scenario(
             r.unsupported(&cx, c, "OpenSCENARIO");
         }
     }
-    Ok(Scenario {
-        path: path.to_path_buf(),
-        header,
-        parameters,
-        variables,
-        road_network,
-        entities,
-        entity_selections,
-        storyboard,
-    })
+    Ok(Scenario { path: path.to_path_buf(), header, parameters, variables, road_network, entities, entity_selections, storyboard })
 }
 
 fn read_road_network(r: &mut Reader, cx: &Cx, e: Option<&Elem>, dir: &Path) -> Result<RoadNetwork, Error> {

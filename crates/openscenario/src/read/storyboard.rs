@@ -64,23 +64,18 @@ fn read_story(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<Story, Error> {
 
 fn read_group(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<ManeuverGroup, Error> {
     let (select, actors) = match e.child("Actors") {
-        Some(a) => (
-            cx.bool_or(a, "selectTriggeringEntities", false)?,
-            a.children_named("EntityRef").map(|x| cx.text(x, "entityRef")).collect::<Result<Vec<_>, _>>()?,
-        ),
+        Some(a) => {
+            (cx.bool_or(a, "selectTriggeringEntities", false)?, a.children_named("EntityRef").map(|x| cx.text(x, "entityRef")).collect::<Result<Vec<_>, _>>()?)
+        }
         None => (false, Vec::new()),
     };
     let mut maneuvers = Vec::new();
     for m in e.children() {
         match m.name.as_str() {
             "Maneuver" => maneuvers.push(read_maneuver(r, cx, m, &[])?),
-            "CatalogReference" => maneuvers.extend(r.catalog_entry_or(
-                cx,
-                m,
-                &[CatalogKind::Maneuver],
-                |r, cx, e, asg| read_maneuver(r, cx, e, asg).map(Some),
-                |_| None,
-            )?),
+            "CatalogReference" => {
+                maneuvers.extend(r.catalog_entry_or(cx, m, &[CatalogKind::Maneuver], |r, cx, e, asg| read_maneuver(r, cx, e, asg).map(Some), |_| None)?)
+            }
             "Actors" => {}
             _ => r.unsupported(cx, m, "ManeuverGroup"),
         }

@@ -75,13 +75,7 @@ pub(crate) fn read_trajectory(r: &mut Reader, cx: &Cx, e: &Elem, asg: &[(String,
         },
         _ => return Err(cx.unexpected(s, "Shape", "Polyline, Clothoid, ClothoidSpline, Nurbs")),
     };
-    Ok(Trajectory {
-        name: cx.text(e, "name")?,
-        closed: cx.bool_or(e, "closed", false)?,
-        parameters,
-        shape,
-        origin: cx.loc(e.pos),
-    })
+    Ok(Trajectory { name: cx.text(e, "name")?, closed: cx.bool_or(e, "closed", false)?, parameters, shape, origin: cx.loc(e.pos) })
 }
 
 /// A wrapper whose child is a Route or a CatalogReference.
@@ -100,18 +94,7 @@ pub(crate) fn read_route(r: &mut Reader, cx: &Cx, e: &Elem, asg: &[(String, Stri
     let cx = Cx::new(cx.file.clone(), &scope);
     let waypoints = e
         .children_named("Waypoint")
-        .map(|w| {
-            Ok(Waypoint {
-                strategy: cx.enum_(w, "routeStrategy")?,
-                position: read_position(r, &cx, cx.child(w, "Position")?)?,
-            })
-        })
+        .map(|w| Ok(Waypoint { strategy: cx.enum_(w, "routeStrategy")?, position: read_position(r, &cx, cx.child(w, "Position")?)? }))
         .collect::<Result<_, Error>>()?;
-    Ok(Route {
-        name: cx.text(e, "name")?,
-        closed: cx.bool_or(e, "closed", false)?,
-        parameters,
-        waypoints,
-        origin: cx.loc(e.pos),
-    })
+    Ok(Route { name: cx.text(e, "name")?, closed: cx.bool_or(e, "closed", false)?, parameters, waypoints, origin: cx.loc(e.pos) })
 }

@@ -12,7 +12,7 @@
 mod rules;
 mod values;
 
-use crate::error::{Location, ErrorKind};
+use crate::error::{ErrorKind, Location};
 use crate::params::{self, ResolveError};
 use crate::xml::{self, Attr, Elem};
 use rules::{range_rules, Replacement, DEPRECATED_WITH_REPLACEMENT};
@@ -60,14 +60,8 @@ pub fn validate_str(path: &Path, text: &str, injected: &[(String, String)]) -> V
 
 fn validate_doc(doc: &xml::Doc, injected: &[(String, String)]) -> Vec<Finding> {
     let (minor, version_note) = declared_minor(&doc.root);
-    let mut w = Walker {
-        file: doc.file.clone(),
-        findings: Vec::new(),
-        scopes: Vec::new(),
-        variables: Vec::new(),
-        declared: minor,
-        injected: injected.to_vec(),
-    };
+    let mut w =
+        Walker { file: doc.file.clone(), findings: Vec::new(), scopes: Vec::new(), variables: Vec::new(), declared: minor, injected: injected.to_vec() };
     if let Some((pos, note)) = version_note {
         w.push(Severity::Warning, pos, note);
     }
@@ -102,9 +96,7 @@ fn declared_minor(root: &Elem) -> (u16, Option<(xml::Pos, String)>) {
 
 /// The declared version's schema first, then the others, newest first.
 fn all_schemas(first: u16) -> impl Iterator<Item = &'static Schema> {
-    std::iter::once(first)
-        .chain((0..=schema::NEWEST_MINOR).rev().filter(move |m| *m != first))
-        .filter_map(schema::for_minor)
+    std::iter::once(first).chain((0..=schema::NEWEST_MINOR).rev().filter(move |m| *m != first)).filter_map(schema::for_minor)
 }
 
 /// A declared parameter or variable as the checks need it.
@@ -162,9 +154,7 @@ impl Walker {
         let mut content_schema = schema;
         let problems = match_children(schema, ty, &names);
         if !problems.is_empty() {
-            let other = all_schemas(schema.minor).skip(1).find(|s| {
-                s.complex_type(type_name).is_some_and(|t| match_children(s, t, &names).is_empty())
-            });
+            let other = all_schemas(schema.minor).skip(1).find(|s| s.complex_type(type_name).is_some_and(|t| match_children(s, t, &names).is_empty()));
             match other {
                 Some(s) => {
                     self.push(
@@ -182,9 +172,8 @@ impl Walker {
         for child in el.children_unmarked() {
             let Some(decl) = children.iter().find(|d| d.name == child.name) else { continue };
             if decl.deprecated {
-                let since = deprecated_since(|s| {
-                    s.complex_type(type_name).is_some_and(|t| s.child_elements(t).iter().any(|d| d.name == child.name && d.deprecated))
-                });
+                let since =
+                    deprecated_since(|s| s.complex_type(type_name).is_some_and(|t| s.child_elements(t).iter().any(|d| d.name == child.name && d.deprecated)));
                 self.push(Severity::Warning, child.pos, format!("element <{}> is deprecated since OpenSCENARIO 1.{since}", child.name));
             }
             let child_type = decl.type_name.clone();
@@ -211,11 +200,7 @@ impl Walker {
                     );
                 }
                 ContentProblem::Missing { expected, .. } => {
-                    let what = if expected.len() == 1 {
-                        format!("<{}>", expected[0])
-                    } else {
-                        format!("one of <{}>", expected.join(">, <"))
-                    };
+                    let what = if expected.len() == 1 { format!("<{}>", expected[0]) } else { format!("one of <{}>", expected.join(">, <")) };
                     self.push(Severity::Error, el.pos, format!("<{}> is missing a child element: {what} is required", el.name));
                 }
             }
@@ -255,9 +240,7 @@ impl Walker {
             if decl.deprecated || kind.deprecated {
                 let since = deprecated_since(|s| {
                     s.complex_type(type_name).is_some_and(|t| {
-                        t.attributes.iter().any(|a| {
-                            a.name == attr.name && (a.deprecated || s.simple_kind(&a.type_name).is_some_and(|k| k.deprecated))
-                        })
+                        t.attributes.iter().any(|a| a.name == attr.name && (a.deprecated || s.simple_kind(&a.type_name).is_some_and(|k| k.deprecated)))
                     })
                 });
                 self.push(Severity::Warning, attr.pos, format!("attribute '{}' of <{}> is deprecated since OpenSCENARIO 1.{since}", attr.name, el.name));
@@ -338,7 +321,11 @@ impl Walker {
                         Some(value)
                     }
                     Err(why) => {
-                        self.push(Severity::Error, attr.pos, format!("{}: parameter '${name}' (declared {}): {why}", what(), values::parameter_type_name(d.primitive)));
+                        self.push(
+                            Severity::Error,
+                            attr.pos,
+                            format!("{}: parameter '${name}' (declared {}): {why}", what(), values::parameter_type_name(d.primitive)),
+                        );
                         None
                     }
                 }
@@ -356,7 +343,11 @@ impl Walker {
                     self.push(
                         Severity::Error,
                         attr.pos,
-                        format!("{}: '{}' does not evaluate to a finite number (division by zero, overflow, or a function outside its domain)", what(), shorten(&attr.value)),
+                        format!(
+                            "{}: '{}' does not evaluate to a finite number (division by zero, overflow, or a function outside its domain)",
+                            what(),
+                            shorten(&attr.value)
+                        ),
                     );
                     return None;
                 }
@@ -423,9 +414,7 @@ impl Walker {
             let Some(attr) = el.attr(deprecated) else { continue };
             let clash = match replacement {
                 Replacement::Attribute(a) => el.attr(a).map(|_| format!("attribute '{a}'")),
-                Replacement::Elements(names) => {
-                    names.iter().find(|n| el.child(n).is_some()).map(|n| format!("element <{n}>"))
-                }
+                Replacement::Elements(names) => names.iter().find(|n| el.child(n).is_some()).map(|n| format!("element <{n}>")),
             };
             if let Some(clash) = clash {
                 self.push(
@@ -589,9 +578,7 @@ fn deprecated_since(is_deprecated: impl Fn(&Schema) -> bool) -> u16 {
 }
 
 fn deprecated_literal_since(value: &str) -> u16 {
-    deprecated_since(|s| {
-        s.simple.values().any(|k| k.literals.as_ref().is_some_and(|l| l.iter().any(|l| l.value == value && l.deprecated)))
-    })
+    deprecated_since(|s| s.simple.values().any(|k| k.literals.as_ref().is_some_and(|l| l.iter().any(|l| l.value == value && l.deprecated))))
 }
 
 fn shorten(raw: &str) -> String {

@@ -5,9 +5,7 @@ use std::path::{Path, PathBuf};
 
 /// `../shared` (or $OSC2CR_SHARED). None (with a notice) when absent, unless CI is set.
 pub fn shared() -> Option<PathBuf> {
-    let dir = std::env::var_os("OSC2CR_SHARED")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared"));
+    let dir = std::env::var_os("OSC2CR_SHARED").map(PathBuf::from).unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared"));
     if dir.join("corpus").is_dir() {
         return Some(dir);
     }

@@ -41,11 +41,7 @@ pub fn entries(scenario: &Scenario, problems: Option<&PlanningProblemSet>, ego: 
             out.push(entry(t.as_str(), style::environment_color(*t)));
         }
     }
-    let goal = problems
-        .iter()
-        .flat_map(|p| &p.problems)
-        .flat_map(|p| &p.goal_states)
-        .any(|g| g.position.is_some());
+    let goal = problems.iter().flat_map(|p| &p.problems).flat_map(|p| &p.goal_states).any(|g| g.position.is_some());
     if goal {
         out.push(Entry { name: "goal".into(), fill: style::GOAL_FILL, stroke: style::GOAL });
     }

@@ -20,10 +20,7 @@ pub fn local_to_world(x: f64, y: f64, h: f64, u: f64, v: f64) -> (f64, f64) {
 /// The four corners of a `length` × `width` box centred at (x, y), heading `h`.
 pub fn box_corners(x: f64, y: f64, h: f64, length: f64, width: f64) -> Vec<(f64, f64)> {
     let (a, b) = (0.5 * length, 0.5 * width);
-    [(a, b), (-a, b), (-a, -b), (a, -b)]
-        .iter()
-        .map(|&(u, v)| local_to_world(x, y, h, u, v))
-        .collect()
+    [(a, b), (-a, b), (-a, -b), (a, -b)].iter().map(|&(u, v)| local_to_world(x, y, h, u, v)).collect()
 }
 
 /// An obstacle shape placed at a state.
@@ -31,25 +28,14 @@ pub fn place(shape: &Shape, x: f64, y: f64, h: f64) -> Placed {
     match shape {
         Shape::Rectangle(r) => Placed::Polygon(box_corners(x, y, h, r.length(), r.width())),
         Shape::Circle(c) => Placed::Circle((x, y), c.radius()),
-        Shape::Polygon(p) => Placed::Polygon(
-            p.points()
-                .iter()
-                .map(|q| local_to_world(x, y, h, q.x, q.y))
-                .collect(),
-        ),
+        Shape::Polygon(p) => Placed::Polygon(p.points().iter().map(|q| local_to_world(x, y, h, q.x, q.y)).collect()),
     }
 }
 
 /// A shape already in world coordinates.
 pub fn place_absolute(shape: &AbsoluteShape) -> Placed {
     match shape {
-        AbsoluteShape::Rectangle(r) => Placed::Polygon(box_corners(
-            r.center.x,
-            r.center.y,
-            r.orientation,
-            r.rectangle.length(),
-            r.rectangle.width(),
-        )),
+        AbsoluteShape::Rectangle(r) => Placed::Polygon(box_corners(r.center.x, r.center.y, r.orientation, r.rectangle.length(), r.rectangle.width())),
         AbsoluteShape::Circle(c) => Placed::Circle((c.center.x, c.center.y), c.circle.radius()),
         AbsoluteShape::Polygon(p) => Placed::Polygon(p.points().iter().map(|q| (q.x, q.y)).collect()),
     }

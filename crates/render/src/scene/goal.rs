@@ -11,48 +11,23 @@ use crate::view::View;
 fn goal_prim(view: &View, shape: Placed) -> Prim {
     let stroke = Some(Stroke::dashed(style::GOAL, 2.0, 8.0, 4.0));
     match shape {
-        Placed::Polygon(p) => Prim::Path {
-            points: to_px(view, &p),
-            closed: true,
-            fill: Some(style::GOAL_FILL),
-            stroke,
-        },
-        Placed::Circle((x, y), r) => Prim::Circle {
-            center: view.px(x, y),
-            radius: r * view.scale,
-            fill: Some(style::GOAL_FILL),
-            stroke,
-        },
+        Placed::Polygon(p) => Prim::Path { points: to_px(view, &p), closed: true, fill: Some(style::GOAL_FILL), stroke },
+        Placed::Circle((x, y), r) => Prim::Circle { center: view.px(x, y), radius: r * view.scale, fill: Some(style::GOAL_FILL), stroke },
     }
 }
 
 /// Every goal position of every planning problem.
-pub fn goals(
-    problems: &PlanningProblemSet,
-    net: &LaneletNetwork,
-    view: &View,
-    out: &mut Vec<Prim>,
-) {
+pub fn goals(problems: &PlanningProblemSet, net: &LaneletNetwork, view: &View, out: &mut Vec<Prim>) {
     for g in problems.problems.iter().flat_map(|p| &p.goal_states) {
         let shapes: Vec<Placed> = match &g.position {
-            Some(GoalPosition::Rectangles(rs)) => rs
-                .iter()
-                .map(|r| place_absolute(&AbsoluteShape::Rectangle(*r)))
-                .collect(),
-            Some(GoalPosition::Circles(cs)) => cs
-                .iter()
-                .map(|c| place_absolute(&AbsoluteShape::Circle(*c)))
-                .collect(),
-            Some(GoalPosition::Polygons(ps)) => ps
-                .iter()
-                .map(|p| place_absolute(&AbsoluteShape::Polygon(p.clone())))
-                .collect(),
+            Some(GoalPosition::Rectangles(rs)) => rs.iter().map(|r| place_absolute(&AbsoluteShape::Rectangle(*r))).collect(),
+            Some(GoalPosition::Circles(cs)) => cs.iter().map(|c| place_absolute(&AbsoluteShape::Circle(*c))).collect(),
+            Some(GoalPosition::Polygons(ps)) => ps.iter().map(|p| place_absolute(&AbsoluteShape::Polygon(p.clone()))).collect(),
             Some(GoalPosition::Lanelets(ids)) => ids
                 .iter()
                 .filter_map(|id| net.lanelets.iter().find(|l| l.id == *id))
                 .map(|l| {
-                    let mut outline: Vec<(f64, f64)> =
-                        l.bounds.left().iter().map(|p| (p.x, p.y)).collect();
+                    let mut outline: Vec<(f64, f64)> = l.bounds.left().iter().map(|p| (p.x, p.y)).collect();
                     outline.extend(l.bounds.right().iter().rev().map(|p| (p.x, p.y)));
                     Placed::Polygon(outline)
                 })
@@ -73,11 +48,6 @@ pub fn initial_states(problems: &PlanningProblemSet, view: &View, out: &mut Vec<
             local_to_world(s.x, s.y, s.orientation, -0.5 * len, 0.3 * len),
             local_to_world(s.x, s.y, s.orientation, -0.5 * len, -0.3 * len),
         ];
-        out.push(Prim::Path {
-            points: to_px(view, &tri),
-            closed: true,
-            fill: Some(style::EGO.with_alpha(120)),
-            stroke: Some(Stroke::solid(style::EGO, 2.0)),
-        });
+        out.push(Prim::Path { points: to_px(view, &tri), closed: true, fill: Some(style::EGO.with_alpha(120)), stroke: Some(Stroke::solid(style::EGO, 2.0)) });
     }
 }

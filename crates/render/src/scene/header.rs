@@ -30,21 +30,11 @@ pub fn mark_text(m: &Mark, dt: f64) -> String {
 /// time bar and the footer stand on one).
 pub fn strip(y: f64, width: u32, h: f64, out: &mut Vec<Prim>) {
     let w = f64::from(width);
-    out.push(Prim::Path {
-        points: vec![(0.0, y), (w, y), (w, y + h), (0.0, y + h)],
-        closed: true,
-        fill: Some(style::STRIP),
-        stroke: None,
-    });
+    out.push(Prim::Path { points: vec![(0.0, y), (w, y), (w, y + h), (0.0, y + h)], closed: true, fill: Some(style::STRIP), stroke: None });
 }
 
 fn rule(y: f64, width: u32, out: &mut Vec<Prim>) {
-    out.push(Prim::Path {
-        points: vec![(0.0, y), (f64::from(width), y)],
-        closed: false,
-        fill: None,
-        stroke: Some(Stroke::solid(style::STRIP_LINE, 1.0)),
-    });
+    out.push(Prim::Path { points: vec![(0.0, y), (f64::from(width), y)], closed: false, fill: None, stroke: Some(Stroke::solid(style::STRIP_LINE, 1.0)) });
 }
 
 fn text(x: f64, y: f64, size: f64, color: Rgba, background: Option<Rgba>, s: String) -> Prim {

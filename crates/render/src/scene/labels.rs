@@ -85,12 +85,7 @@ pub fn prims(labels: &[(Label, bool, PxRect)], size: f64, out: &mut Vec<Prim>) {
         let from = nearest(&l.rect, b.center());
         let to = nearest(b, from);
         if (from.0 - to.0).hypot(from.1 - to.1) > 2.0 * GAP {
-            out.push(Prim::Path {
-                points: vec![from, to],
-                closed: false,
-                fill: None,
-                stroke: Some(Stroke::solid(style::MUTED, 1.0)),
-            });
+            out.push(Prim::Path { points: vec![from, to], closed: false, fill: None, stroke: Some(Stroke::solid(style::MUTED, 1.0)) });
         }
     }
     for (l, ego, _) in labels {

@@ -93,12 +93,7 @@ impl<'a> Prepared<'a> {
     }
 
     /// A still at `step` (framed at that time, with its trails).
-    pub fn still_at(
-        scenario: &'a Scenario,
-        problems: Option<&'a PlanningProblemSet>,
-        options: &RenderOptions,
-        step: u64,
-    ) -> Result<Self, RenderError> {
+    pub fn still_at(scenario: &'a Scenario, problems: Option<&'a PlanningProblemSet>, options: &RenderOptions, step: u64) -> Result<Self, RenderError> {
         let trail_steps = step_of(options.trail, scenario.header.time_step_size);
         Self::new(scenario, problems, options, Purpose::Still { step, trail_steps }, None, true)
     }
@@ -142,14 +137,7 @@ impl<'a> Prepared<'a> {
     pub fn layout(&self, step: u64) -> Layout {
         let view = self.plan.at(self.scenario, step);
         let (x0, y0, x1, y1) = view.area();
-        Layout {
-            width: self.width,
-            height: self.height,
-            map: PxRect { x0, y0, x1, y1 },
-            world: view.world(),
-            scale: view.scale,
-            obstacles: self.frame(step).1,
-        }
+        Layout { width: self.width, height: self.height, map: PxRect { x0, y0, x1, y1 }, world: view.world(), scale: view.scale, obstacles: self.frame(step).1 }
     }
 
     fn frame(&self, step: u64) -> (Vec<Prim>, Vec<DrawnObstacle>) {
@@ -198,13 +186,7 @@ impl<'a> Prepared<'a> {
 
     /// The whole picture at `step`.
     pub fn scene(&self, step: u64) -> Scene {
-        Scene {
-            width: self.width,
-            height: self.height,
-            background: style::BACKGROUND,
-            still: self.base(step).into_owned(),
-            moving: self.moving(step),
-        }
+        Scene { width: self.width, height: self.height, background: style::BACKGROUND, still: self.base(step).into_owned(), moving: self.moving(step) }
     }
 }
 

@@ -28,12 +28,7 @@ fn visible(l: &commonroad::Lanelet, view: &View) -> bool {
 }
 
 fn path(points: Vec<(f64, f64)>, stroke: Stroke) -> Prim {
-    Prim::Path {
-        points,
-        closed: false,
-        fill: None,
-        stroke: Some(stroke),
-    }
+    Prim::Path { points, closed: false, fill: None, stroke: Some(stroke) }
 }
 
 /// Road surface of every lanelet. The fill is also stroked in the road colour so that
@@ -42,20 +37,12 @@ pub fn surfaces(net: &LaneletNetwork, view: &View, out: &mut Vec<Prim>) {
     for l in net.lanelets.iter().filter(|l| visible(l, view)) {
         let mut outline = pts(l.bounds.left());
         outline.extend(pts(l.bounds.right()).into_iter().rev());
-        out.push(Prim::Path {
-            points: to_px(view, &outline),
-            closed: true,
-            fill: Some(style::ROAD),
-            stroke: Some(Stroke::solid(style::ROAD, 1.0)),
-        });
+        out.push(Prim::Path { points: to_px(view, &outline), closed: true, fill: Some(style::ROAD), stroke: Some(Stroke::solid(style::ROAD, 1.0)) });
     }
 }
 
 fn dash(view: &View) -> (f64, f64) {
-    (
-        (style::DASH_M.0 * view.scale).max(style::MIN_DASH_PX),
-        (style::DASH_M.1 * view.scale).max(style::MIN_DASH_PX),
-    )
+    ((style::DASH_M.0 * view.scale).max(style::MIN_DASH_PX), (style::DASH_M.1 * view.scale).max(style::MIN_DASH_PX))
 }
 
 /// The lines one bound's marking draws (two for double markings).
@@ -94,10 +81,7 @@ pub fn borders_and_markings(net: &LaneletNetwork, view: &View, out: &mut Vec<Pri
         out.push(path(to_px(view, &pts(l.bounds.right())), border));
     }
     for l in &shown {
-        for (points, marking) in [
-            (l.bounds.left(), l.left_marking),
-            (l.bounds.right(), l.right_marking),
-        ] {
+        for (points, marking) in [(l.bounds.left(), l.left_marking), (l.bounds.right(), l.right_marking)] {
             if let Some(m) = marking {
                 marking_lines(&to_px(view, &pts(points)), m, view, out);
             }
@@ -105,19 +89,11 @@ pub fn borders_and_markings(net: &LaneletNetwork, view: &View, out: &mut Vec<Pri
         if let Some(stop) = &l.stop_line {
             let ends = match &stop.points {
                 Some([a, b]) => Some((*a, *b)),
-                None => l
-                    .bounds
-                    .left()
-                    .last()
-                    .zip(l.bounds.right().last())
-                    .map(|(a, b)| (*a, *b)),
+                None => l.bounds.left().last().zip(l.bounds.right().last()).map(|(a, b)| (*a, *b)),
             };
             if let Some((a, b)) = ends {
                 let w = (0.4 * view.scale).max(2.0);
-                out.push(path(
-                    to_px(view, &[(a.x, a.y), (b.x, b.y)]),
-                    Stroke::solid(style::STOP_LINE, w),
-                ));
+                out.push(path(to_px(view, &[(a.x, a.y), (b.x, b.y)]), Stroke::solid(style::STOP_LINE, w)));
             }
         }
     }

@@ -17,18 +17,8 @@ pub const MIN_MARKER_PX: f64 = 3.0;
 
 fn placed_prim(view: &View, shape: &Placed, fill: Rgba, stroke: Stroke) -> Prim {
     match shape {
-        Placed::Polygon(p) => Prim::Path {
-            points: to_px(view, p),
-            closed: true,
-            fill: Some(fill),
-            stroke: Some(stroke),
-        },
-        Placed::Circle((x, y), r) => Prim::Circle {
-            center: view.px(*x, *y),
-            radius: r * view.scale,
-            fill: Some(fill),
-            stroke: Some(stroke),
-        },
+        Placed::Polygon(p) => Prim::Path { points: to_px(view, p), closed: true, fill: Some(fill), stroke: Some(stroke) },
+        Placed::Circle((x, y), r) => Prim::Circle { center: view.px(*x, *y), radius: r * view.scale, fill: Some(fill), stroke: Some(stroke) },
     }
 }
 
@@ -39,12 +29,7 @@ fn marker_if_tiny(view: &View, shape: &Shape, x: f64, y: f64, fill: Rgba, out: &
         Shape::Polygon(p) => p.points().iter().map(|q| 2.0 * q.x.hypot(q.y)).fold(0.0, f64::max),
     };
     if extent * view.scale < 2.0 * MIN_MARKER_PX {
-        out.push(Prim::Circle {
-            center: view.px(x, y),
-            radius: MIN_MARKER_PX,
-            fill: Some(fill),
-            stroke: Some(Stroke::solid(style::OUTLINE, 0.75)),
-        });
+        out.push(Prim::Circle { center: view.px(x, y), radius: MIN_MARKER_PX, fill: Some(fill), stroke: Some(Stroke::solid(style::OUTLINE, 0.75)) });
     }
 }
 
@@ -66,10 +51,7 @@ pub fn still_obstacles(scenario: &Scenario, view: &View, out: &mut Vec<Prim>) {
 /// shows where everyone goes.
 pub fn paths(scenario: &Scenario, ego: Option<ObstacleId>, view: &View, out: &mut Vec<Prim>) {
     for o in &scenario.dynamic_obstacles {
-        let line: Vec<(f64, f64)> = std::iter::once(&o.initial_state)
-            .chain(&o.trajectory)
-            .map(|s| view.px(s.x, s.y))
-            .collect();
+        let line: Vec<(f64, f64)> = std::iter::once(&o.initial_state).chain(&o.trajectory).map(|s| view.px(s.x, s.y)).collect();
         if line.len() < 2 {
             continue;
         }
@@ -78,12 +60,7 @@ pub fn paths(scenario: &Scenario, ego: Option<ObstacleId>, view: &View, out: &mu
         } else {
             Stroke::solid(style::dynamic_color(o.obstacle_type).with_alpha(90), 1.0)
         };
-        out.push(Prim::Path {
-            points: line,
-            closed: false,
-            fill: None,
-            stroke: Some(stroke),
-        });
+        out.push(Prim::Path { points: line, closed: false, fill: None, stroke: Some(stroke) });
     }
 }
 
@@ -102,17 +79,8 @@ fn heading_wedge(o: &DynamicObstacle, x: f64, y: f64, h: f64, view: &View) -> Op
         return None;
     };
     let (l, w) = (r.length(), r.width());
-    let tri = [
-        local_to_world(x, y, h, 0.45 * l, 0.0),
-        local_to_world(x, y, h, 0.2 * l, 0.3 * w),
-        local_to_world(x, y, h, 0.2 * l, -0.3 * w),
-    ];
-    Some(Prim::Path {
-        points: to_px(view, &tri),
-        closed: true,
-        fill: Some(Rgba::rgb(255, 255, 255).with_alpha(170)),
-        stroke: None,
-    })
+    let tri = [local_to_world(x, y, h, 0.45 * l, 0.0), local_to_world(x, y, h, 0.2 * l, 0.3 * w), local_to_world(x, y, h, 0.2 * l, -0.3 * w)];
+    Some(Prim::Path { points: to_px(view, &tri), closed: true, fill: Some(Rgba::rgb(255, 255, 255).with_alpha(170)), stroke: None })
 }
 
 /// A road user as drawn (before its label is placed).
@@ -137,24 +105,14 @@ fn length(shape: &Shape) -> f64 {
 
 /// Dynamic obstacles at `step` (those that exist then); the ego last, on top, with a thick
 /// outline. Returns where each was drawn.
-pub fn dynamic_at(
-    scenario: &Scenario,
-    ego: Option<ObstacleId>,
-    step: u64,
-    view: &View,
-    out: &mut Vec<Prim>,
-) -> Vec<Shown> {
+pub fn dynamic_at(scenario: &Scenario, ego: Option<ObstacleId>, step: u64, view: &View, out: &mut Vec<Prim>) -> Vec<Shown> {
     let mut shown = Vec::new();
     let others = scenario.dynamic_obstacles.iter().filter(|o| Some(o.id) != ego);
     let ego_obstacle = scenario.dynamic_obstacles.iter().filter(|o| Some(o.id) == ego);
     for o in others.chain(ego_obstacle) {
         let Some(s) = state_at(o, step) else { continue };
         let is_ego = Some(o.id) == ego;
-        let (fill, width) = if is_ego {
-            (style::EGO, style::EGO_OUTLINE_WIDTH)
-        } else {
-            (style::dynamic_color(o.obstacle_type), style::OUTLINE_WIDTH)
-        };
+        let (fill, width) = if is_ego { (style::EGO, style::EGO_OUTLINE_WIDTH) } else { (style::dynamic_color(o.obstacle_type), style::OUTLINE_WIDTH) };
         // a small obstacle would be all outline: keep most of it its fill colour
         let stroke = Stroke::solid(style::OUTLINE, width.min(0.15 * minor_extent(&o.shape) * view.scale));
         let placed = place(&o.shape, s.x, s.y, s.orientation);

@@ -34,18 +34,10 @@ pub struct Stroke {
 
 impl Stroke {
     pub fn solid(color: Rgba, width: f64) -> Self {
-        Self {
-            color,
-            width,
-            dash: None,
-        }
+        Self { color, width, dash: None }
     }
     pub fn dashed(color: Rgba, width: f64, on: f64, off: f64) -> Self {
-        Self {
-            color,
-            width,
-            dash: Some((on, off)),
-        }
+        Self { color, width, dash: Some((on, off)) }
     }
 }
 

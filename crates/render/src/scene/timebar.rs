@@ -24,12 +24,8 @@ pub fn bar(width: u32, y: f64, first: u64, last: u64, step: u64, dt: f64, marks:
     let ym = y + 0.5 * h;
     let span = last.saturating_sub(first).max(1) as f64;
     let x_of = |k: u64| x0 + (x1 - x0) * (k.clamp(first, last) - first) as f64 / span;
-    let line = |a: f64, b: f64, color, width| Prim::Path {
-        points: vec![(a, ym), (b, ym)],
-        closed: false,
-        fill: None,
-        stroke: Some(Stroke::solid(color, width)),
-    };
+    let line =
+        |a: f64, b: f64, color, width| Prim::Path { points: vec![(a, ym), (b, ym)], closed: false, fill: None, stroke: Some(Stroke::solid(color, width)) };
     out.push(line(x0, x1, style::STRIP_LINE, dot));
     out.push(line(x0, x_of(step), style::MUTED, dot));
     for m in marks {
@@ -41,10 +37,5 @@ pub fn bar(width: u32, y: f64, first: u64, last: u64, step: u64, dt: f64, marks:
             stroke: Some(Stroke::solid(style::MUTED, 1.0)),
         });
     }
-    out.push(Prim::Circle {
-        center: (x_of(step), ym),
-        radius: 2.0 * dot,
-        fill: Some(style::TEXT),
-        stroke: Some(Stroke::solid(style::STRIP, 1.0)),
-    });
+    out.push(Prim::Circle { center: (x_of(step), ym), radius: 2.0 * dot, fill: Some(style::TEXT), stroke: Some(Stroke::solid(style::STRIP, 1.0)) });
 }

@@ -16,25 +16,13 @@ pub fn straight(steps: u64) -> (Scenario, PlanningProblemSet) {
     };
     let mut s = Scenario::new(header);
     let mut ids = IdAllocator::new();
-    let bounds = LaneletBounds::new(
-        vec![Point::new(0.0, 4.0), Point::new(100.0, 4.0)],
-        vec![Point::new(0.0, 0.0), Point::new(100.0, 0.0)],
-    )
-    .unwrap();
+    let bounds = LaneletBounds::new(vec![Point::new(0.0, 4.0), Point::new(100.0, 4.0)], vec![Point::new(0.0, 0.0), Point::new(100.0, 0.0)]).unwrap();
     let lane = ids.lanelet();
     let mut l = Lanelet::new(lane, bounds, LaneletType::Urban);
     l.left_marking = Some(LineMarking::Solid);
     l.right_marking = Some(LineMarking::Dashed);
     s.network.lanelets.push(l);
-    let st = |t: u64, x: f64, y: f64, h: f64| State {
-        time_step: t,
-        x,
-        y,
-        orientation: h,
-        velocity: 10.0,
-        acceleration: 0.0,
-        yaw_rate: 0.0,
-    };
+    let st = |t: u64, x: f64, y: f64, h: f64| State { time_step: t, x, y, orientation: h, velocity: 10.0, acceleration: 0.0, yaw_rate: 0.0 };
     let ego = ids.obstacle();
     s.dynamic_obstacles.push(DynamicObstacle {
         id: ego,
@@ -53,15 +41,7 @@ pub fn straight(steps: u64) -> (Scenario, PlanningProblemSet) {
     let problems = PlanningProblemSet {
         problems: vec![PlanningProblem {
             id: ids.planning_problem(),
-            initial_state: PlanningInitialState {
-                x: 20.0,
-                y: 2.0,
-                orientation: 0.0,
-                velocity: 10.0,
-                yaw_rate: 0.0,
-                slip_angle: 0.0,
-                acceleration: None,
-            },
+            initial_state: PlanningInitialState { x: 20.0, y: 2.0, orientation: 0.0, velocity: 10.0, yaw_rate: 0.0, slip_angle: 0.0, acceleration: None },
             goal_states: vec![GoalState {
                 time: TimeInterval::new(1, 50).unwrap(),
                 position: Some(GoalPosition::Rectangles(vec![PlacedRectangle {

@@ -102,12 +102,36 @@ fn junction_link(id: &'static str) -> Option<(&'static str, &'static str, &'stat
 /// (15 m, 3 → 2 eastbound), 14 (25 m, 3 → 1 westbound), 15 (25 m, 2 westbound → 3 southbound).
 pub fn t_junction() -> RoadNetwork {
     let roads = vec![
-        R { id: "1", length: 100.0, junction: "-1", pred: None, succ: junction_link("100"), lanes: vec![L(1, &[], &[]), L(-1, &[], &[]), L(-2, &[], &[])], speed: None },
+        R {
+            id: "1",
+            length: 100.0,
+            junction: "-1",
+            pred: None,
+            succ: junction_link("100"),
+            lanes: vec![L(1, &[], &[]), L(-1, &[], &[]), L(-2, &[], &[])],
+            speed: None,
+        },
         R { id: "2", length: 100.0, junction: "-1", pred: junction_link("100"), succ: None, lanes: vec![L(1, &[], &[]), L(-1, &[], &[])], speed: None },
         R { id: "3", length: 100.0, junction: "-1", pred: None, succ: junction_link("100"), lanes: vec![L(1, &[], &[]), L(-1, &[], &[])], speed: None },
-        R { id: "10", length: 20.0, junction: "100", pred: road_link("1", "end"), succ: road_link("2", "start"), lanes: vec![L(1, &[1], &[1]), L(-1, &[-1], &[-1])], speed: None },
+        R {
+            id: "10",
+            length: 20.0,
+            junction: "100",
+            pred: road_link("1", "end"),
+            succ: road_link("2", "start"),
+            lanes: vec![L(1, &[1], &[1]), L(-1, &[-1], &[-1])],
+            speed: None,
+        },
         R { id: "12", length: 15.0, junction: "100", pred: road_link("1", "end"), succ: road_link("3", "end"), lanes: vec![L(-1, &[1], &[-2])], speed: None },
-        R { id: "13", length: 15.0, junction: "100", pred: road_link("3", "end"), succ: road_link("2", "start"), lanes: vec![L(-1, &[-1], &[-1])], speed: None },
+        R {
+            id: "13",
+            length: 15.0,
+            junction: "100",
+            pred: road_link("3", "end"),
+            succ: road_link("2", "start"),
+            lanes: vec![L(-1, &[-1], &[-1])],
+            speed: None,
+        },
         R { id: "14", length: 25.0, junction: "100", pred: road_link("3", "end"), succ: road_link("1", "end"), lanes: vec![L(-1, &[1], &[-1])], speed: None },
         R { id: "15", length: 25.0, junction: "100", pred: road_link("2", "start"), succ: road_link("3", "end"), lanes: vec![L(-1, &[1], &[1])], speed: None },
     ];
@@ -131,11 +155,35 @@ pub fn t_junction() -> RoadNetwork {
 pub fn two_ways() -> RoadNetwork {
     let roads = vec![
         R { id: "A", length: 100.0, junction: "-1", pred: None, succ: junction_link("J1"), lanes: vec![L(-1, &[], &[])], speed: None },
-        R { id: "c1", length: 10.0, junction: "J1", pred: road_link("A", "end"), succ: road_link("B", "start"), lanes: vec![L(-1, &[-1], &[-1])], speed: Some(5.0) },
+        R {
+            id: "c1",
+            length: 10.0,
+            junction: "J1",
+            pred: road_link("A", "end"),
+            succ: road_link("B", "start"),
+            lanes: vec![L(-1, &[-1], &[-1])],
+            speed: Some(5.0),
+        },
         R { id: "c2", length: 10.0, junction: "J1", pred: road_link("A", "end"), succ: road_link("D", "start"), lanes: vec![L(-1, &[-1], &[-1])], speed: None },
         R { id: "B", length: 50.0, junction: "-1", pred: junction_link("J1"), succ: junction_link("J2"), lanes: vec![L(-1, &[], &[])], speed: Some(5.0) },
-        R { id: "c3", length: 10.0, junction: "J2", pred: road_link("B", "end"), succ: road_link("F", "start"), lanes: vec![L(-1, &[-1], &[-1])], speed: Some(5.0) },
-        R { id: "D", length: 500.0, junction: "-1", pred: junction_link("J1"), succ: road_link("F", "start"), lanes: vec![L(-1, &[-1], &[])], speed: Some(100.0) },
+        R {
+            id: "c3",
+            length: 10.0,
+            junction: "J2",
+            pred: road_link("B", "end"),
+            succ: road_link("F", "start"),
+            lanes: vec![L(-1, &[-1], &[-1])],
+            speed: Some(5.0),
+        },
+        R {
+            id: "D",
+            length: 500.0,
+            junction: "-1",
+            pred: junction_link("J1"),
+            succ: road_link("F", "start"),
+            lanes: vec![L(-1, &[-1], &[])],
+            speed: Some(100.0),
+        },
         R { id: "F", length: 100.0, junction: "-1", pred: junction_link("J2"), succ: None, lanes: vec![L(-1, &[], &[])], speed: None },
     ];
     let j1 = junction("J1", &[C("0", "A", "c1", "start", &[(-1, -1)]), C("1", "A", "c2", "start", &[(-1, -1)])]);
@@ -146,8 +194,24 @@ pub fn two_ways() -> RoadNetwork {
 /// A ring: R1 (100 m) → R2 (50 m) → R1, one lane -1.
 pub fn ring() -> RoadNetwork {
     let roads = vec![
-        R { id: "R1", length: 100.0, junction: "-1", pred: road_link("R2", "end"), succ: road_link("R2", "start"), lanes: vec![L(-1, &[-1], &[-1])], speed: None },
-        R { id: "R2", length: 50.0, junction: "-1", pred: road_link("R1", "end"), succ: road_link("R1", "start"), lanes: vec![L(-1, &[-1], &[-1])], speed: None },
+        R {
+            id: "R1",
+            length: 100.0,
+            junction: "-1",
+            pred: road_link("R2", "end"),
+            succ: road_link("R2", "start"),
+            lanes: vec![L(-1, &[-1], &[-1])],
+            speed: None,
+        },
+        R {
+            id: "R2",
+            length: 50.0,
+            junction: "-1",
+            pred: road_link("R1", "end"),
+            succ: road_link("R1", "start"),
+            lanes: vec![L(-1, &[-1], &[-1])],
+            speed: None,
+        },
     ];
     network(&roads, &[])
 }

@@ -16,11 +16,7 @@ pub(crate) struct Cursor<'d, 'i> {
 
 impl<'d, 'i> Cursor<'d, 'i> {
     pub fn new(doc: &'d Document<'i>, path: &'d Path) -> Self {
-        Self {
-            doc,
-            path,
-            warnings: Vec::new(),
-        }
+        Self { doc, path, warnings: Vec::new() }
     }
 
     fn pos(&self, node: Node) -> (u32, u32) {
@@ -31,23 +27,13 @@ impl<'d, 'i> Cursor<'d, 'i> {
     /// An error at `node`.
     pub fn err(&self, node: Node, message: impl Into<String>) -> ReadError {
         let (line, column) = self.pos(node);
-        ReadError::Invalid {
-            path: self.path.to_path_buf(),
-            line,
-            column,
-            message: message.into(),
-        }
+        ReadError::Invalid { path: self.path.to_path_buf(), line, column, message: message.into() }
     }
 
     /// A warning at `node`.
     pub fn warn(&mut self, node: Node, message: impl Into<String>) {
         let (line, column) = self.pos(node);
-        self.warnings.push(ReadWarning {
-            path: self.path.to_path_buf(),
-            line,
-            column,
-            message: message.into(),
-        });
+        self.warnings.push(ReadWarning { path: self.path.to_path_buf(), line, column, message: message.into() });
     }
 
     pub fn into_warnings(self) -> Vec<ReadWarning> {
@@ -61,12 +47,7 @@ impl<'d, 'i> Cursor<'d, 'i> {
 
     /// A required child element.
     pub fn req<'a, 'x>(&self, node: Node<'a, 'x>, name: &str) -> Result<Node<'a, 'x>, ReadError> {
-        child(node, name).ok_or_else(|| {
-            self.err(
-                node,
-                format!("<{}> needs a <{name}> child", node.tag_name().name()),
-            )
-        })
+        child(node, name).ok_or_else(|| self.err(node, format!("<{}> needs a <{name}> child", node.tag_name().name())))
     }
 
     /// The text of `node` as a finite number (xs:decimal; an exponent is tolerated like
@@ -75,28 +56,14 @@ impl<'d, 'i> Cursor<'d, 'i> {
         let t = self.text(node);
         match t.parse::<f64>() {
             Ok(v) if v.is_finite() => Ok(v),
-            _ => Err(self.err(
-                node,
-                format!(
-                    "<{}>: expected a finite decimal number, found {t:?}",
-                    node.tag_name().name()
-                ),
-            )),
+            _ => Err(self.err(node, format!("<{}>: expected a finite decimal number, found {t:?}", node.tag_name().name()))),
         }
     }
 
     /// The text of `node` as a non-negative integer.
     pub fn u64(&self, node: Node) -> Result<u64, ReadError> {
         let t = self.text(node);
-        t.parse::<u64>().map_err(|_| {
-            self.err(
-                node,
-                format!(
-                    "<{}>: expected a non-negative integer, found {t:?}",
-                    node.tag_name().name()
-                ),
-            )
-        })
+        t.parse::<u64>().map_err(|_| self.err(node, format!("<{}>: expected a non-negative integer, found {t:?}", node.tag_name().name())))
     }
 
     /// The number of the required child `name`.
@@ -108,13 +75,9 @@ impl<'d, 'i> Cursor<'d, 'i> {
     pub fn exact(&self, node: Node) -> Result<f64, ReadError> {
         match child(node, "exact") {
             Some(e) => self.f64(e),
-            None if child(node, "intervalStart").is_some() => Err(self.err(
-                node,
-                format!(
-                    "<{}>: expected an exact value, found an interval",
-                    node.tag_name().name()
-                ),
-            )),
+            None if child(node, "intervalStart").is_some() => {
+                Err(self.err(node, format!("<{}>: expected an exact value, found an interval", node.tag_name().name())))
+            }
             None => self.f64(node),
         }
     }
@@ -135,10 +98,7 @@ impl<'d, 'i> Cursor<'d, 'i> {
 
     /// `(intervalStart, intervalEnd)` numbers.
     pub fn interval(&self, node: Node) -> Result<(f64, f64), ReadError> {
-        Ok((
-            self.f64_child(node, "intervalStart")?,
-            self.f64_child(node, "intervalEnd")?,
-        ))
+        Ok((self.f64_child(node, "intervalStart")?, self.f64_child(node, "intervalEnd")?))
     }
 
     /// A point element with `<x>`, `<y>` and optional `<z>`.
@@ -156,30 +116,16 @@ impl<'d, 'i> Cursor<'d, 'i> {
         let pos = self.req(node, "position")?;
         match child(pos, "point") {
             Some(p) => self.point(p),
-            None => Err(self.err(
-                pos,
-                "<position>: expected an exact <point> (position sets are not supported here)",
-            )),
+            None => Err(self.err(pos, "<position>: expected an exact <point> (position sets are not supported here)")),
         }
     }
 
     /// A positive integer attribute (`id` or `ref`).
     pub fn id_attr(&self, node: Node, attr: &str) -> Result<u64, ReadError> {
-        let raw = node.attribute(attr).ok_or_else(|| {
-            self.err(
-                node,
-                format!("<{}> needs an attribute {attr}", node.tag_name().name()),
-            )
-        })?;
+        let raw = node.attribute(attr).ok_or_else(|| self.err(node, format!("<{}> needs an attribute {attr}", node.tag_name().name())))?;
         match raw.trim().parse::<u64>() {
             Ok(v) if v > 0 => Ok(v),
-            _ => Err(self.err(
-                node,
-                format!(
-                    "<{}> {attr}={raw:?}: expected a positive integer",
-                    node.tag_name().name()
-                ),
-            )),
+            _ => Err(self.err(node, format!("<{}> {attr}={raw:?}: expected a positive integer", node.tag_name().name()))),
         }
     }
 
@@ -191,44 +137,25 @@ impl<'d, 'i> Cursor<'d, 'i> {
 
     /// The `ref`s of every child named `name`.
     pub fn refs<T>(&self, node: Node, name: &str, new: fn(u64) -> Option<T>) -> Result<Vec<T>, ReadError> {
-        children(node, name)
-            .map(|c| self.typed(c, "ref", new))
-            .collect()
+        children(node, name).map(|c| self.typed(c, "ref", new)).collect()
     }
 
     /// The value of an enumeration spelled as in the XSD, from the text of `node`.
-    pub fn enum_text<T: Copy>(
-        &self,
-        node: Node,
-        all: &[T],
-        as_str: fn(T) -> &'static str,
-    ) -> Result<T, ReadError> {
+    pub fn enum_text<T: Copy>(&self, node: Node, all: &[T], as_str: fn(T) -> &'static str) -> Result<T, ReadError> {
         let t = self.text(node);
         all.iter().copied().find(|v| as_str(*v) == t).ok_or_else(|| {
             let allowed: Vec<&str> = all.iter().map(|v| as_str(*v)).collect();
-            self.err(
-                node,
-                format!(
-                    "<{}>: {t:?} is not one of {}",
-                    node.tag_name().name(),
-                    allowed.join(", ")
-                ),
-            )
+            self.err(node, format!("<{}>: {t:?} is not one of {}", node.tag_name().name(), allowed.join(", ")))
         })
     }
 }
 
 /// The first child element named `name`.
 pub(crate) fn child<'a, 'i>(node: Node<'a, 'i>, name: &str) -> Option<Node<'a, 'i>> {
-    node.children()
-        .find(|c| c.is_element() && c.tag_name().name() == name)
+    node.children().find(|c| c.is_element() && c.tag_name().name() == name)
 }
 
 /// Every child element named `name`, in document order.
-pub(crate) fn children<'a, 'i: 'a>(
-    node: Node<'a, 'i>,
-    name: &'a str,
-) -> impl Iterator<Item = Node<'a, 'i>> + 'a {
-    node.children()
-        .filter(move |c| c.is_element() && c.tag_name().name() == name)
+pub(crate) fn children<'a, 'i: 'a>(node: Node<'a, 'i>, name: &'a str) -> impl Iterator<Item = Node<'a, 'i>> + 'a {
+    node.children().filter(move |c| c.is_element() && c.tag_name().name() == name)
 }

@@ -23,12 +23,7 @@ pub enum ReadError {
     },
     /// Well-formed XML that is not what the 2020a format (or the model) allows.
     #[error("{path}:{line}:{column}: {message}")]
-    Invalid {
-        path: PathBuf,
-        line: u32,
-        column: u32,
-        message: String,
-    },
+    Invalid { path: PathBuf, line: u32, column: u32, message: String },
 }
 
 /// Something in the file the model cannot hold and the reader skipped.
@@ -42,13 +37,6 @@ pub struct ReadWarning {
 
 impl fmt::Display for ReadWarning {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "{}:{}:{}: warning: {}",
-            self.path.display(),
-            self.line,
-            self.column,
-            self.message
-        )
+        write!(f, "{}:{}:{}: warning: {}", self.path.display(), self.line, self.column, self.message)
     }
 }

@@ -19,19 +19,14 @@ fn parse_date(s: &str) -> Option<Date> {
 pub(crate) fn header(cx: &mut Cursor, root: Node) -> Result<Header, ReadError> {
     match root.attribute("commonRoadVersion") {
         Some("2020a") => {}
-        other => cx.warn(
-            root,
-            format!("commonRoadVersion {other:?} is not \"2020a\"; reading it as 2020a"),
-        ),
+        other => cx.warn(root, format!("commonRoadVersion {other:?} is not \"2020a\"; reading it as 2020a")),
     }
     let raw_id = root.attribute("benchmarkID").unwrap_or("");
     let benchmark_id = match BenchmarkId::parse(raw_id) {
         Ok(id) => id,
         Err(e) => {
             // commonroad-io renames such a scenario too (with a warning).
-            let id = BenchmarkId::for_converted("ZAM", raw_id)
-                .or_else(|_| BenchmarkId::parse("ZAM_Unnamed-1"))
-                .map_err(|e| cx.err(root, e.to_string()))?;
+            let id = BenchmarkId::for_converted("ZAM", raw_id).or_else(|_| BenchmarkId::parse("ZAM_Unnamed-1")).map_err(|e| cx.err(root, e.to_string()))?;
             cx.warn(root, format!("{e}; using {id}"));
             id
         }
@@ -46,29 +41,13 @@ pub(crate) fn header(cx: &mut Cursor, root: Node) -> Result<Header, ReadError> {
     let step_text = root.attribute("timeStepSize").unwrap_or("");
     let time_step_size = match step_text.trim().parse::<f64>() {
         Ok(v) if v.is_finite() && v > 0.0 => v,
-        _ => {
-            return Err(cx.err(
-                root,
-                format!("timeStepSize {step_text:?}: expected a positive number of seconds"),
-            ))
-        }
+        _ => return Err(cx.err(root, format!("timeStepSize {step_text:?}: expected a positive number of seconds"))),
     };
     let attr = |name| root.attribute(name).unwrap_or("").to_string();
-    Ok(Header {
-        benchmark_id,
-        date,
-        author: attr("author"),
-        affiliation: attr("affiliation"),
-        source: attr("source"),
-        time_step_size,
-    })
+    Ok(Header { benchmark_id, date, author: attr("author"), affiliation: attr("affiliation"), source: attr("source"), time_step_size })
 }
 
-pub(crate) fn location_and_tags(
-    cx: &mut Cursor,
-    root: Node,
-    scenario: &mut Scenario,
-) -> Result<(), ReadError> {
+pub(crate) fn location_and_tags(cx: &mut Cursor, root: Node, scenario: &mut Scenario) -> Result<(), ReadError> {
     if let Some(loc) = child(root, "location") {
         scenario.location = location(cx, loc)?;
     }
@@ -90,9 +69,7 @@ fn location(cx: &mut Cursor, loc: Node) -> Result<Location, ReadError> {
     let mut out = Location::default();
     if let Some(n) = child(loc, "geoNameId") {
         let t = cx.text(n);
-        out.geo_name_id = t
-            .parse()
-            .map_err(|_| cx.err(n, format!("<geoNameId>: expected an integer, found {t:?}")))?;
+        out.geo_name_id = t.parse().map_err(|_| cx.err(n, format!("<geoNameId>: expected an integer, found {t:?}")))?;
     }
     if let Some(n) = child(loc, "gpsLatitude") {
         out.gps_latitude = cx.f64(n)?;
@@ -101,9 +78,7 @@ fn location(cx: &mut Cursor, loc: Node) -> Result<Location, ReadError> {
         out.gps_longitude = cx.f64(n)?;
     }
     if let Some(g) = child(loc, "geoTransformation") {
-        let mut geo = GeoTransformation::proj(
-            child(g, "geoReference").map_or("", |n| cx.text(n)).to_string(),
-        );
+        let mut geo = GeoTransformation::proj(child(g, "geoReference").map_or("", |n| cx.text(n)).to_string());
         if let Some(a) = child(g, "additionalTransformation") {
             geo.x_translation = cx.f64_child(a, "xTranslation")?;
             geo.y_translation = cx.f64_child(a, "yTranslation")?;

@@ -6,9 +6,7 @@ use super::cursor::{child, children, Cursor};
 use super::error::ReadError;
 use super::obstacles::{placed_circle, placed_rectangle, polygon};
 use crate::ids::{LaneletId, PlanningProblemId};
-use crate::planning::{
-    GoalPosition, GoalState, Interval, PlanningInitialState, PlanningProblem, TimeInterval,
-};
+use crate::planning::{GoalPosition, GoalState, Interval, PlanningInitialState, PlanningProblem, TimeInterval};
 
 fn interval(cx: &Cursor, node: Node) -> Result<Interval, ReadError> {
     let (a, b) = cx.interval(node)?;
@@ -23,42 +21,24 @@ fn time_interval(cx: &Cursor, goal: Node) -> Result<TimeInterval, ReadError> {
 }
 
 fn goal_position(cx: &Cursor, pos: Node) -> Result<GoalPosition, ReadError> {
-    let first = pos
-        .children()
-        .find(|n| n.is_element())
-        .ok_or_else(|| cx.err(pos, "goal <position> is empty"))?;
+    let first = pos.children().find(|n| n.is_element()).ok_or_else(|| cx.err(pos, "goal <position> is empty"))?;
     let kind = first.tag_name().name();
     let all = children(pos, kind);
     Ok(match kind {
-        "rectangle" => GoalPosition::Rectangles(
-            all.map(|n| placed_rectangle(cx, n)).collect::<Result<_, _>>()?,
-        ),
-        "circle" => {
-            GoalPosition::Circles(all.map(|n| placed_circle(cx, n)).collect::<Result<_, _>>()?)
-        }
+        "rectangle" => GoalPosition::Rectangles(all.map(|n| placed_rectangle(cx, n)).collect::<Result<_, _>>()?),
+        "circle" => GoalPosition::Circles(all.map(|n| placed_circle(cx, n)).collect::<Result<_, _>>()?),
         "polygon" => GoalPosition::Polygons(all.map(|n| polygon(cx, n)).collect::<Result<_, _>>()?),
         "lanelet" => GoalPosition::Lanelets(cx.refs(pos, "lanelet", LaneletId::new)?),
-        other => {
-            return Err(cx.err(
-                first,
-                format!("goal position <{other}>: expected rectangle, circle, polygon or lanelet"),
-            ))
-        }
+        other => return Err(cx.err(first, format!("goal position <{other}>: expected rectangle, circle, polygon or lanelet"))),
     })
 }
 
 fn goal_state(cx: &Cursor, node: Node) -> Result<GoalState, ReadError> {
     Ok(GoalState {
         time: time_interval(cx, node)?,
-        position: child(node, "position")
-            .map(|p| goal_position(cx, p))
-            .transpose()?,
-        orientation: child(node, "orientation")
-            .map(|o| interval(cx, o))
-            .transpose()?,
-        velocity: child(node, "velocity")
-            .map(|v| interval(cx, v))
-            .transpose()?,
+        position: child(node, "position").map(|p| goal_position(cx, p)).transpose()?,
+        orientation: child(node, "orientation").map(|o| interval(cx, o)).transpose()?,
+        velocity: child(node, "velocity").map(|v| interval(cx, v)).transpose()?,
     })
 }
 
@@ -75,12 +55,6 @@ pub(crate) fn planning_problem(cx: &mut Cursor, node: Node) -> Result<PlanningPr
         slip_angle: cx.exact_child(init, "slipAngle")?.unwrap_or(0.0),
         acceleration: cx.exact_child(init, "acceleration")?,
     };
-    let goal_states = children(node, "goalState")
-        .map(|g| goal_state(cx, g))
-        .collect::<Result<Vec<_>, _>>()?;
-    Ok(PlanningProblem {
-        id,
-        initial_state,
-        goal_states,
-    })
+    let goal_states = children(node, "goalState").map(|g| goal_state(cx, g)).collect::<Result<Vec<_>, _>>()?;
+    Ok(PlanningProblem { id, initial_state, goal_states })
 }

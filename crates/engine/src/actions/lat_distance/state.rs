@@ -1,7 +1,5 @@
 //! What a running LateralDistanceAction remembers.
 
-
-
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) enum Phase {
     Init,
