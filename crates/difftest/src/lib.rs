@@ -1,20 +1,22 @@
 //! `difftest`: differential testing of osc2cr's engine against esmini 3.6.0. It owns a seeded
-//! grammar of OpenSCENARIO scenarios (`generate`), the maps they run on (`roads`), running
-//! esmini and reading its log (`esmini`), the comparison with `conformance.py`'s thresholds
-//! (`compare`) and the agreement-by-feature report (`report`). It runs offline and is
-//! deterministic for a seed; without an esmini binary it still generates and runs osc2cr,
-//! which finds what crashes, warns or is rejected.
+//! grammar of OpenSCENARIO scenarios and the maps they run on (`generate`), running esmini and
+//! reading its log (`esmini`), the comparison with `conformance.py`'s thresholds (`compare`),
+//! the agreement-by-feature report (`report`) and the coverage table of the OpenSCENARIO
+//! elements the engine acts on (`coverage`). It runs offline and is deterministic for a seed;
+//! without an esmini binary it still generates and runs osc2cr, which finds what crashes,
+//! warns or is rejected.
 
 pub mod compare;
+pub mod coverage;
 pub mod esmini;
 pub mod generate;
+pub mod measure;
 pub mod report;
-pub mod roads;
 
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 
-use compare::{State, Traces};
+use compare::{State, TraceBuilder, Traces};
 use report::Outcome;
 
 /// What one run of the tool is asked to do.
@@ -29,8 +31,16 @@ pub struct Plan {
     pub max_maps: usize,
 }
 
-/// osc2cr's engine on `xosc`, as states per entity (the trace CSV is written beside it).
-pub fn run_osc2cr(xosc: &Path) -> Result<Traces, String> {
+/// osc2cr's run of a scenario: its states per entity and the engine's warnings.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Osc2crRun {
+    pub traces: Traces,
+    pub warnings: Vec<String>,
+}
+
+/// osc2cr's engine on `xosc`, as states per entity (the trace CSV is written beside it and
+/// read back, so both sides go through the same reduction).
+pub fn run_osc2cr(xosc: &Path) -> Result<Osc2crRun, String> {
     let loaded = openscenario::load(xosc, &Default::default()).map_err(|e| e.to_string())?;
     if let Some(p) = loaded.problems.first() {
         return Err(format!("rejected: {p}"));
@@ -41,19 +51,23 @@ pub fn run_osc2cr(xosc: &Path) -> Result<Traces, String> {
         None => None,
     };
     let run = engine::simulate(&scenario, road.as_ref(), &engine::Settings::default()).map_err(|e| e.to_string())?;
-    let trace = &run.trace;
-    let _ = std::fs::write(xosc.with_extension("osc2cr.csv"), trace.to_csv(&engine::bounding_boxes(&scenario)));
-    let mut out = Traces::new();
-    for e in &trace.entities {
-        let states: Vec<State> = e
-            .samples
-            .iter()
-            .enumerate()
-            .filter_map(|(k, s)| s.map(|s| State { t: (trace.time(k) * 100.0).round() / 100.0, x: s.x, y: s.y, h: s.h, v: s.speed }))
-            .collect();
-        out.insert(e.name.clone(), states);
+    let csv = run.trace.to_csv(&engine::bounding_boxes(&scenario));
+    let _ = std::fs::write(xosc.with_extension("osc2cr.csv"), &csv);
+    let warnings = loaded.warnings.iter().map(|w| w.to_string()).chain(run.warnings.iter().map(|w| w.to_string())).collect();
+    Ok(Osc2crRun { traces: parse_trace_csv(&csv), warnings })
+}
+
+/// The engine's trace CSV (`time,entity,x,y,z,h,speed,…`) as states per entity.
+pub fn parse_trace_csv(csv: &str) -> Traces {
+    let mut out = TraceBuilder::default();
+    for line in csv.lines().skip(1) {
+        let f: Vec<&str> = line.split(',').collect();
+        let num = |i: usize| f.get(i).and_then(|v| v.parse::<f64>().ok());
+        if let (Some(t), Some(name), Some(x), Some(y), Some(h), Some(v)) = (num(0), f.get(1), num(2), num(3), num(5), num(6)) {
+            out.push(name, State { t: (t * 100.0).round() / 100.0, x, y, h, v });
+        }
     }
-    Ok(out)
+    out.finish()
 }
 
 /// Generates, runs and compares the plan's scenarios; the outcomes in order.
@@ -62,9 +76,9 @@ pub fn run(plan: &Plan, mut progress: impl FnMut(u64, &Outcome)) -> std::io::Res
     // esmini runs in the scenario's folder: every path it gets must be absolute
     let out = std::fs::canonicalize(&plan.out)?;
     let esmini_path = plan.esmini.as_ref().map(|e| std::fs::canonicalize(e).unwrap_or_else(|_| e.clone()));
-    let mut maps = roads::builtin(&out)?;
+    let mut maps = generate::maps::builtin(&out)?;
     if let Some(dir) = &plan.maps {
-        maps.extend(roads::from_folder(dir, plan.max_maps));
+        maps.extend(generate::maps::from_folder(dir, plan.max_maps));
     }
     let mut outcomes = Vec::new();
     for i in 0..plan.count {
@@ -79,16 +93,21 @@ pub fn run(plan: &Plan, mut progress: impl FnMut(u64, &Outcome)) -> std::io::Res
             ref_end: None,
             our_end: None,
             note: None,
+            elements: coverage::elements_in(&g.xosc).into_iter().collect(),
+            esmini_errors: Vec::new(),
+            osc2cr_warnings: Vec::new(),
             size: g.xosc.len(),
         };
         match run_osc2cr(&path) {
             Err(e) => o.note = Some(format!("osc2cr: {e}")),
             Ok(ours) => {
+                o.osc2cr_warnings = ours.warnings.clone();
                 if let Some(esmini) = &esmini_path {
                     match esmini::run(esmini, &path, &path.with_extension("esmini.csv"), Duration::from_secs(60)) {
                         Err(e) => o.note = Some(e),
                         Ok(reference) => {
-                            let c = compare::compare(&reference, &ours);
+                            let c = compare::compare(&reference.traces, &ours.traces);
+                            o.esmini_errors = reference.log_errors;
                             o.verdict = Some(c.verdict);
                             o.max_pos_err = c.max_pos_err;
                             o.ref_end = Some(c.ref_end);
