@@ -7,7 +7,7 @@
 
 use super::global_actions::{PHASES, SIGNAL_STATES};
 use super::positions::Scope;
-use super::{Area, Gen};
+use super::{Area, EntityKind, Gen};
 
 const RULES: [&str; 6] = ["greaterThan", "lessThan", "greaterOrEqual", "lessOrEqual", "equalTo", "notEqualTo"];
 
@@ -76,7 +76,8 @@ impl Gen<'_> {
     }
 
     fn entity_condition(&mut self, kind: &str, actor: &str) -> String {
-        let names = self.names();
+        // never a trailer: esmini 3.6.0 crashes measuring a free-space distance to one
+        let names: Vec<String> = self.entities.iter().filter(|e| e.kind != EntityKind::Trailer).map(|e| e.name.clone()).collect();
         let mobile = self.mobile_names();
         let triggering =
             if kind == "TraveledDistanceCondition" || mobile.is_empty() { actor.to_string() } else { mobile[self.pick_index(mobile.len())].clone() };

@@ -67,9 +67,7 @@ impl Gen<'_> {
             }
             "FollowReferenceController" => {
                 // it follows another entity (without one esmini wants a ghost and quits)
-                let others: Vec<String> =
-                    self.all_names.iter().filter(|n| *n != owner && !n.starts_with("Obj") && !n.starts_with("Trailer")).cloned().collect();
-                if let Some(o) = others.first() {
+                if let Some(o) = self.followed(owner) {
                     props.push(Self::property("referenceEntity", o));
                 }
                 props.push(Self::property("speedControlStiffness", self.num(0.5, 3.0)));
@@ -96,8 +94,7 @@ impl Gen<'_> {
             }
             _ => {
                 // OffroadFollower follows another entity off road
-                let others: Vec<String> = self.all_names.iter().filter(|n| *n != owner).cloned().collect();
-                if let Some(o) = others.first() {
+                if let Some(o) = self.followed(owner) {
                     props.push(Self::property("followEntity", o));
                 }
                 props.push(Self::property("targetDistance", self.num(5.0, 30.0)));
@@ -106,6 +103,13 @@ impl Gen<'_> {
         }
         self.feature(format!("controller:{label}"));
         format!(r#"<Controller name="{owner}Driver"><Properties>{}</Properties></Controller>"#, props.concat())
+    }
+
+    /// The entity a follower controller of `owner` follows: one declared before it (esmini looks
+    /// it up when it reads the controller), moving by itself.
+    pub fn followed(&self, owner: &str) -> Option<String> {
+        let before = self.all_names.iter().take_while(|n| *n != owner);
+        before.filter(|n| !n.starts_with("Obj") && !n.starts_with("Trailer")).last().cloned()
     }
 
     /// An ActivateControllerAction for a controller of type `kind`, longitudinal and/or

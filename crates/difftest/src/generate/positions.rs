@@ -125,21 +125,30 @@ impl Gen<'_> {
         let mut place = at.map(|p| Place { s: if p.forward { p.s + ds } else { p.s - ds }, ..p });
         let xml = match kind {
             "RelativeLanePosition" => {
-                let d_lane = self.pick(&[-1, 0, 0, 1]);
                 let offset = if rich && self.chance(0.2) { self.num(-0.5, 0.5) } else { 0.0 };
                 // ds along s, or (1.1+) dsLane along the lane's driving direction
                 let along_lane = rich && self.chance(0.3);
-                if let Some(p) = place.as_mut() {
-                    let lanes = lanes_at(&self.map.net, p.road, p.s);
-                    let target = p.lane + d_lane + if p.lane + d_lane == 0 { d_lane } else { 0 };
-                    if let Some(&(l, f)) = lanes.iter().find(|(l, _)| *l == target) {
-                        p.lane = l;
-                        p.forward = f;
-                    }
+                if let (Some(p), Some(a)) = (place.as_mut(), at) {
                     if !along_lane {
-                        p.s = at.map_or(p.s, |a| a.s + ds);
+                        p.s = a.s + ds;
                     }
                 }
+                // a lane step that lands on a lane (esmini's Position::SetRelativePosition: the
+                // step is counted along s, or with dsLane in the reference's direction of travel)
+                let d_lane = match place {
+                    Some(p) => {
+                        let lanes = lanes_at(&self.map.net, p.road, p.s);
+                        let target = |d: i32| relative_lane(p.lane, if along_lane && !p.forward { -d } else { d });
+                        let fits: Vec<i32> = [-1, 0, 1].into_iter().filter(|d| *d == 0 || lanes.iter().any(|(l, _)| *l == target(*d))).collect();
+                        let d = if self.chance(0.5) { 0 } else { fits[self.pick_index(fits.len())] };
+                        if let (Some(pl), Some(&(l, f))) = (place.as_mut(), lanes.iter().find(|(l, _)| *l == target(d))) {
+                            pl.lane = l;
+                            pl.forward = f;
+                        }
+                        d
+                    }
+                    None => self.pick(&[-1, 0, 0, 1]),
+                };
                 if along_lane {
                     self.feature(format!("{prefix}RelativeLanePosition/dsLane"));
                     format!(r#"<RelativeLanePosition entityRef="{reference}" dLane="{d_lane}" dsLane="{ds}" offset="{offset}"/>"#)
@@ -207,6 +216,19 @@ impl Gen<'_> {
         let d = self.num(lo, hi);
         let legs = super::lanes::walk(&self.map.net, start, d, &mut self.rng);
         super::lanes::along(&legs, d).unwrap_or(start)
+    }
+}
+
+/// esmini's lane `lane_id` stepped by `offset` lanes, the centre lane skipped
+/// (roadmanager::GetRelativeLaneId).
+pub fn relative_lane(lane_id: i32, offset: i32) -> i32 {
+    let r = lane_id + offset;
+    if lane_id == 0 || offset == 0 {
+        r
+    } else if r == 0 || r.signum() != lane_id.signum() {
+        r + offset.signum()
+    } else {
+        r
     }
 }
 

@@ -212,8 +212,9 @@ impl Gen<'_> {
             let rich = self.rich(Area::Controllers);
             if matches!(kind, EntityKind::Car | EntityKind::Truck) && self.chance(if rich { 0.5 } else { 0.2 }) {
                 let mut t = if rich { self.pick(&TYPES) } else { "ACCController" };
-                let followers = self.all_names.iter().filter(|n| **n != name && !n.starts_with("Obj") && !n.starts_with("Trailer")).count();
-                if (t == "FollowGhostController" && ghost_taken) || (matches!(t, "FollowReferenceController" | "OffroadFollower") && followers == 0) {
+                if (t == "FollowGhostController" && ghost_taken)
+                    || (matches!(t, "FollowReferenceController" | "OffroadFollower") && self.followed(&name).is_none())
+                {
                     t = "ACCController";
                 }
                 ghost_taken |= t == "FollowGhostController";

@@ -95,9 +95,11 @@ impl<'a> Sim<'a> {
 
     fn step_acc(&mut self, e: usize, a: &mut AccRt, dt: f64) {
         let Some(me) = self.entities.get(e) else { return };
-        // In override mode esmini's longitudinal actions leave the entity alone; otherwise a
-        // speed another action set becomes the new set speed.
-        if !a.override_mode && (me.speed - a.current_speed).abs() > 1e-3 {
+        // A speed another action (or controller) set becomes the new set speed, in either mode
+        // (esmini's ControllerACC::Step: its additive-only test is commented out). In override
+        // mode most longitudinal actions end or idle (LongSpeedAction::Start, LongDistanceAction
+        // ::Step, SynchronizeAction), but a SpeedProfileAction still sets the speed.
+        if (me.speed - a.current_speed).abs() > 1e-3 {
             a.set_speed = me.speed;
         }
         let lookahead = (2.0 * MIN_DIST + a.current_speed.powi(2) / me.max_dec).max(50.0);
