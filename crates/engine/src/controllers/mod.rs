@@ -146,6 +146,26 @@ impl<'a> Sim<'a> {
         }
     }
 
+    /// Whether an active controller of entity `e` in override mode owns its lateral or
+    /// longitudinal motion: esmini's `Object::IsControllerModeOnAnyOfDomains(MODE_OVERRIDE,
+    /// DOMAIN_MASK_LAT_AND_LONG)`, under which TeleportAction::Start does nothing. Each type's
+    /// mode as esmini gives it: ACC/ALKS additive unless `mode` says override (ControllerACC);
+    /// Looming, NaturalDriver and ALKS R157 override unless it says additive (the Controller
+    /// base); FollowGhost and FollowReference always override; FollowRoute only while it
+    /// changes lanes.
+    pub(crate) fn overrides_motion(&self, e: usize) -> bool {
+        match self.controllers.get(e) {
+            Some(Some(ControllerRt::Acc(a))) => a.overrides_longitudinal(),
+            Some(Some(ControllerRt::Looming(l))) => l.active && l.override_mode,
+            Some(Some(ControllerRt::NaturalDriver(n))) => n.active && n.override_mode,
+            Some(Some(ControllerRt::AlksR157(a))) => a.active && a.override_mode,
+            Some(Some(ControllerRt::FollowGhost(f))) => f.active,
+            Some(Some(ControllerRt::FollowReference(f))) => f.active,
+            Some(Some(ControllerRt::FollowRoute(f))) => f.overrides_longitudinal(),
+            _ => false,
+        }
+    }
+
     /// Step every active controller by `dt` (after the storyboard, before the default controller).
     pub fn step_controllers(&mut self, dt: f64) {
         if !self.any_controller {

@@ -57,7 +57,7 @@ pub(super) struct Trigger {
 #[derive(Debug, Clone)]
 pub struct AlksR157Rt {
     pub active: bool,
-    pub(super) override_mode: bool,
+    pub(in crate::controllers) override_mode: bool,
     pub model: Model,
     pub(super) rt: f64,
     pub(super) max_dec: f64,
