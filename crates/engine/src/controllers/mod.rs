@@ -22,6 +22,7 @@ pub mod looming;
 pub mod looming_view;
 pub mod natural_driver;
 pub mod natural_view;
+pub mod offroad_follower;
 pub mod state;
 
 use self::state::ControllerRt;
@@ -80,6 +81,7 @@ impl<'a> Sim<'a> {
             "FollowGhostController" => Some(ControllerRt::FollowGhost(Box::new(follow_ghost::state::FollowGhostRt::new(c)))),
             "FollowReferenceController" => Some(ControllerRt::FollowReference(Box::new(follow_reference::state::FollowReferenceRt::new(c)))),
             "FollowRouteController" => Some(ControllerRt::FollowRoute(Box::new(follow_route::state::FollowRouteRt::new(c)))),
+            "OffroadFollower" => Some(ControllerRt::OffroadFollower(Box::new(offroad_follower::state::OffroadFollowerRt::new(c)))),
             "LoomingController" => {
                 if self.net.is_some_and(|n| n.roads.iter().any(|r| r.elevation.iter().chain(&r.superelevation).any(|c| c.b != 0.0 || c.c != 0.0 || c.d != 0.0)))
                 {
@@ -128,6 +130,11 @@ impl<'a> Sim<'a> {
                     l.activate(en, longitudinal);
                 }
             }
+            Some(Some(ControllerRt::OffroadFollower(f))) => {
+                if let Some(en) = self.entities.get(e) {
+                    f.activate(en);
+                }
+            }
             _ => {}
         }
     }
@@ -142,6 +149,7 @@ impl<'a> Sim<'a> {
         match self.controllers.get(e) {
             Some(Some(ControllerRt::Acc(a))) => a.overrides_longitudinal(),
             Some(Some(ControllerRt::FollowRoute(f))) => f.overrides_longitudinal(),
+            Some(Some(ControllerRt::OffroadFollower(f))) => f.active,
             _ => false,
         }
     }
@@ -195,6 +203,7 @@ impl<'a> Sim<'a> {
                 // until then the default controller leaves the entity alone.
                 ControllerRt::FollowGhost(f) => self.hold_follower(e, f.active),
                 ControllerRt::FollowReference(f) => self.hold_follower(e, f.active),
+                ControllerRt::OffroadFollower(f) => self.hold_follower(e, f.active),
                 // Steps after the default controller (`step_route_followers`); its running lane
                 // change moves the entity instead of the default controller (esmini's override).
                 ControllerRt::FollowRoute(f) => self.hold_follower(e, f.holds_entity()),
