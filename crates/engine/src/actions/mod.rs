@@ -176,7 +176,7 @@ impl<'a> Sim<'a> {
                 if let Some(en) = self.entities.get_mut(e) {
                     en.controller_active = on;
                 }
-                self.activate_controller(e, longitudinal.unwrap_or(true));
+                self.activate_controller(e, lateral.unwrap_or(true), longitudinal.unwrap_or(true));
                 ActionRt::Done
             }
             PrivateAction::AssignController { controller, activate_longitudinal, activate_lateral, .. } => {
@@ -186,8 +186,8 @@ impl<'a> Sim<'a> {
                     if lat || long {
                         self.activate_outside_driver(slot, e, lat, long);
                     }
-                    if *activate_longitudinal == Some(true) {
-                        self.activate_controller(e, true);
+                    if lat || long {
+                        self.activate_controller(e, lat, long);
                     }
                 }
                 ActionRt::Done

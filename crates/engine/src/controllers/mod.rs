@@ -106,12 +106,14 @@ impl<'a> Sim<'a> {
         }
     }
 
-    /// ActivateControllerAction on entity `e` for the given domains.
-    pub fn activate_controller(&mut self, e: usize, longitudinal: bool) {
+    /// ActivateControllerAction (or an AssignControllerAction that activates) on entity `e` for
+    /// the given domains. esmini activates a controller on the requested domains it operates on
+    /// (Controller::Activate): ACC, ALKS, NaturalDriver and Looming on the longitudinal one only.
+    pub fn activate_controller(&mut self, e: usize, lateral: bool, longitudinal: bool) {
         let Some(speed) = self.entities.get(e).map(|en| en.speed) else { return };
         match self.controllers.get_mut(e) {
             Some(Some(ControllerRt::Acc(a))) => a.activate(speed, longitudinal),
-            Some(Some(ControllerRt::AlksR157(a))) => a.activate(speed, longitudinal),
+            Some(Some(ControllerRt::AlksR157(a))) => a.activate(speed, lateral, longitudinal),
             Some(Some(ControllerRt::NaturalDriver(a))) => a.activate(speed, longitudinal),
             Some(Some(ControllerRt::FollowGhost(f))) => {
                 if let Some(en) = self.entities.get(e) {

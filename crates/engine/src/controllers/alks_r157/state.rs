@@ -57,6 +57,8 @@ pub(super) struct Trigger {
 #[derive(Debug, Clone)]
 pub struct AlksR157Rt {
     pub active: bool,
+    /// Active on the longitudinal domain (else the default controller moves the entity as well).
+    pub(in crate::controllers) longitudinal: bool,
     pub(in crate::controllers) override_mode: bool,
     pub model: Model,
     pub(super) rt: f64,
