@@ -70,6 +70,7 @@ impl AlksR157Rt {
         let rt_ = AlksR157Rt {
             active: false,
             longitudinal: true,
+            lateral: true,
             override_mode: p("mode").as_deref() != Some("additive"),
             model,
             rt,
@@ -109,6 +110,7 @@ impl AlksR157Rt {
         if lateral || longitudinal {
             self.active = true;
             self.longitudinal = longitudinal;
+            self.lateral = lateral;
         }
     }
 

@@ -176,6 +176,23 @@ impl<'a> Sim<'a> {
         }
     }
 
+    /// Whether an active controller of entity `e` in override mode holds its lateral domain
+    /// (esmini's `IsControllerModeOnDomains(MODE_OVERRIDE, DOMAIN_MASK_LAT)`), under which a
+    /// lane change, a lane offset or a lateral distance action does nothing and never ends
+    /// (LatLaneChangeAction, LatLaneOffsetAction, LatDistanceAction: Start and Step return
+    /// early): an ALKS R157 controller activated laterally in override mode, an
+    /// OffroadFollower, a FollowReference following another entity. (ACC, ALKS, Looming and
+    /// NaturalDriver operate on the longitudinal domain only; a ghost follower's actions drive
+    /// its ghost.)
+    pub(crate) fn lateral_overridden(&self, e: usize) -> bool {
+        match self.controllers.get(e) {
+            Some(Some(ControllerRt::AlksR157(a))) => a.active && a.override_mode && a.lateral,
+            Some(Some(ControllerRt::OffroadFollower(f))) => f.active,
+            Some(Some(ControllerRt::FollowReference(f))) => f.active && !f.uses_ghost(),
+            _ => false,
+        }
+    }
+
     /// Step every active controller by `dt` (after the storyboard, before the default controller).
     pub fn step_controllers(&mut self, dt: f64) {
         if !self.any_controller {

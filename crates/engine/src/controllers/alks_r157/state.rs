@@ -59,6 +59,8 @@ pub struct AlksR157Rt {
     pub active: bool,
     /// Active on the longitudinal domain (else the default controller moves the entity as well).
     pub(in crate::controllers) longitudinal: bool,
+    /// Active on the lateral domain.
+    pub(in crate::controllers) lateral: bool,
     pub(in crate::controllers) override_mode: bool,
     pub model: Model,
     pub(super) rt: f64,
