@@ -71,24 +71,6 @@ fn strip_comments(text: &str) -> String {
     text.lines().map(|l| l.split("//").next().unwrap_or("")).collect::<Vec<_>>().join("\n")
 }
 
-fn rust_files(dir: &Path) -> Vec<std::path::PathBuf> {
-    let mut out = Vec::new();
-    let mut stack = vec![dir.to_path_buf()];
-    while let Some(d) = stack.pop() {
-        let Ok(entries) = std::fs::read_dir(&d) else { continue };
-        for e in entries.flatten() {
-            let p = e.path();
-            if p.is_dir() {
-                stack.push(p);
-            } else if p.extension().is_some_and(|x| x == "rs") {
-                out.push(p);
-            }
-        }
-    }
-    out.sort();
-    out
-}
-
 /// `(Enum, Variant) -> element` from the model's `element_name` arms
 /// (`PrivateAction::Speed { .. } => "SpeedAction"`).
 fn model_element_names(model_dir: &Path) -> BTreeMap<(String, String), String> {
@@ -154,7 +136,7 @@ fn acts(lines: &[&str], n: usize) -> bool {
 /// C`), each with whether it acts on its element (`acts`).
 fn engine_variant_uses(engine_src: &Path) -> BTreeMap<(String, String), bool> {
     let mut out: BTreeMap<(String, String), bool> = BTreeMap::new();
-    for f in rust_files(engine_src) {
+    for f in crate::files_with_ext(engine_src, "rs") {
         let text = strip_comments(&std::fs::read_to_string(&f).unwrap_or_default());
         let mut alias: BTreeMap<String, String> = BTreeMap::new();
         let mut rest = text.as_str();

@@ -70,6 +70,25 @@ pub fn parse_trace_csv(csv: &str) -> Traces {
     out.finish()
 }
 
+/// The files below `dir` (recursively) whose extension is `ext` (any case), in path order.
+pub fn files_with_ext(dir: &Path, ext: &str) -> Vec<PathBuf> {
+    let mut out = Vec::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        let Ok(entries) = std::fs::read_dir(&d) else { continue };
+        for e in entries.flatten() {
+            let p = e.path();
+            if p.is_dir() {
+                stack.push(p);
+            } else if p.extension().is_some_and(|x| x.eq_ignore_ascii_case(ext)) {
+                out.push(p);
+            }
+        }
+    }
+    out.sort();
+    out
+}
+
 /// Generates, runs and compares the plan's scenarios; the outcomes in order.
 pub fn run(plan: &Plan, mut progress: impl FnMut(u64, &Outcome)) -> std::io::Result<Vec<Outcome>> {
     std::fs::create_dir_all(&plan.out)?;

@@ -11,18 +11,10 @@
 
 mod common;
 use common::*;
-use engine::Settings;
-
-fn run(fixture: &str) -> engine::Run {
-    let loaded = openscenario::load(&fixtures().join(fixture), &Default::default()).expect("fixture scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("straight.xodr")).expect("fixture road loads").network;
-    engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 10.0 }).expect("simulate")
-}
 
 #[test]
 fn an_overriding_acc_moves_on_top_of_a_lane_change() {
-    let run = run("acc_override_lane_change.xosc");
+    let run = run_fixture("acc_override_lane_change.xosc", "straight.xodr");
     // esmini: 0.4 m in the lane change's first step (both moves), then one step's 0.2 m ahead
     // of the action's own position for good (was 0.2 m behind esmini from 1.02 s on)
     for (t, x, y) in [(1.01, 30.2, -1.75), (1.02, 30.6, -1.75), (2.0, 50.176, -2.609), (5.0, 110.074, -5.25), (6.0, 130.074, -5.25)] {
@@ -33,7 +25,7 @@ fn an_overriding_acc_moves_on_top_of_a_lane_change() {
 
 #[test]
 fn an_overriding_acc_brakes_at_the_end_of_the_road() {
-    let run = run("acc_override_end_of_road.xosc");
+    let run = run_fixture("acc_override_end_of_road.xosc", "straight.xodr");
     // esmini: at the road's end (x 1000) from 2.50 s; speed 0 from the engine at 2.52 s, which
     // the ACC takes as its set speed: 5 m/s² down from 20 m/s (was 20 m/s for ever)
     for (t, v) in [(2.5, 20.0), (2.51, 20.0), (2.52, 19.95), (4.0, 12.55), (6.0, 2.55)] {

@@ -8,14 +8,10 @@
 
 mod common;
 use common::*;
-use engine::Settings;
 
 #[test]
 fn an_overriding_acc_follows_the_speed_a_speed_profile_sets() {
-    let loaded = openscenario::load(&fixtures().join("acc_override_speed_profile.xosc"), &Default::default()).expect("fixture scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("straight.xodr")).expect("fixture road loads").network;
-    let run = engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 10.0 }).expect("simulate");
+    let run = run_fixture("acc_override_speed_profile.xosc", "straight.xodr");
     // esmini: the profile's ramp, not the ACC's own 3.5 m/s² to 26 m/s (which reaches x 17.0
     // at 2 s and 121.4 at 8 s)
     for (t, x, v) in [(2.0, 14.297, 4.83), (5.0, 41.423, 13.23), (8.0, 93.749, 21.63)] {

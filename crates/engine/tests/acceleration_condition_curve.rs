@@ -11,14 +11,10 @@
 
 mod common;
 use common::*;
-use engine::Settings;
 
 #[test]
 fn an_acceleration_condition_sees_the_centripetal_acceleration() {
-    let loaded = openscenario::load(&fixtures().join("acceleration_condition_curve.xosc"), &Default::default()).expect("fixture scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("curve_r50.xodr")).expect("fixture road loads").network;
-    let run = engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 10.0 }).expect("simulate");
+    let run = run_fixture("acceleration_condition_curve.xosc", "curve_r50.xodr");
     let start = |name: &str| run.trace.events.iter().find(|ev| ev.element == name && ev.to == "running").map(|ev| ev.time);
     assert!(start("Lateral").is_some_and(|t| close(t, 3.02, 1e-9)), "{:?}", start("Lateral"));
     assert!(start("Positive").is_some_and(|t| close(t, 3.02, 1e-9)), "{:?}", start("Positive"));

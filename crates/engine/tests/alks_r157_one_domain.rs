@@ -9,14 +9,10 @@
 
 mod common;
 use common::*;
-use engine::Settings;
 
 #[test]
 fn an_alks_r157_on_one_domain_moves_the_entity_on_top_of_the_default_controller() {
-    let loaded = openscenario::load(&fixtures().join("alks_r157_one_domain.xosc"), &Default::default()).expect("fixture scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("straight.xodr")).expect("fixture road loads").network;
-    let run = engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 10.0 }).expect("simulate");
+    let run = run_fixture("alks_r157_one_domain.xosc", "straight.xodr");
     for (name, x1, x5) in [("OneDomain", 118.0, 190.0), ("Longitudinal", 109.0, 145.0)] {
         let (a, b) = (at(&run, name, 1.0), at(&run, name, 5.0));
         assert!(close(a.x, x1, 1e-6) && close(b.x, x5, 1e-6) && close(b.speed, 9.0, 1e-9), "{name}: {a:?} {b:?}");

@@ -8,14 +8,10 @@
 
 mod common;
 use common::*;
-use engine::Settings;
 
 #[test]
 fn a_lane_change_idles_while_a_controller_holds_the_lateral_domain() {
-    let loaded = openscenario::load(&fixtures().join("controller_holds_lateral.xosc"), &Default::default()).expect("fixture scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("straight.xodr")).expect("fixture road loads").network;
-    let run = engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 10.0 }).expect("simulate");
+    let run = run_fixture("controller_holds_lateral.xosc", "straight.xodr");
     let (a, p) = (at(&run, "Alks", 5.0), at(&run, "Plain", 5.0));
     assert!(close(a.x, 150.0, 1e-6) && close(a.y, -1.75, 1e-9), "{a:?}");
     assert!(close(p.x, 349.617, 2e-3) && close(p.y, -5.25, 1e-6), "{p:?}");

@@ -7,14 +7,10 @@
 
 mod common;
 use common::*;
-use engine::Settings;
 
 #[test]
 fn an_offroad_follower_drives_after_its_lead() {
-    let loaded = openscenario::load(&fixtures().join("offroad_follower.xosc"), &Default::default()).expect("fixture scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("straight.xodr")).expect("fixture road loads").network;
-    let run = engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 20.0 }).expect("simulate");
+    let run = run_fixture("offroad_follower.xosc", "straight.xodr");
     assert!(run.warnings.is_empty(), "{:?}", run.warnings);
     for (t, x, y, v) in [(1.0, 27.519, -4.977, 10.0), (4.0, 80.018, -2.238, 25.0), (6.0, 119.463, 0.442, 13.23), (12.0, 191.909, 1.753, 12.0)] {
         let e = at(&run, "Follower", t);

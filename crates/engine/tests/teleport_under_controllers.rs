@@ -10,14 +10,10 @@
 
 mod common;
 use common::*;
-use engine::Settings;
 
 #[test]
 fn a_teleport_is_ignored_under_a_controller_in_override_mode() {
-    let loaded = openscenario::load(&fixtures().join("teleport_under_controllers.xosc"), &Default::default()).expect("fixture scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("straight.xodr")).expect("fixture road loads").network;
-    let run = engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 10.0 }).expect("simulate");
+    let run = run_fixture("teleport_under_controllers.xosc", "straight.xodr");
     // esmini at 1.02 s: the three overriding controllers' cars drive on, the ACC's jumps
     for (name, x) in [("Looming", 20.198), ("Natural", 20.2), ("Alks", 210.2), ("Acc", 600.0)] {
         let e = at(&run, name, 1.02);

@@ -11,25 +11,29 @@ pub const SIGNAL_STATES: [&str; 3] = ["on;off;off", "off;on;off", "off;off;on"];
 pub const PHASES: [(&str, f64, &str); 3] = [("stop", 4.0, "on;off;off"), ("ready", 2.0, "off;on;off"), ("go", 5.0, "off;off;on")];
 
 impl Gen<'_> {
-    /// A parameter (double) declared once: its name.
+    /// A parameter (double): mostly the first one declared, else a new one; its name.
     pub fn parameter(&mut self) -> String {
-        if !self.parameters.is_empty() && self.chance(0.6) {
-            return self.parameters[0].name.clone();
-        }
-        let name = format!("P{}", self.parameters.len());
-        let value = format!("{}", self.pick_index(5));
-        self.parameters.push(Declared { name: name.clone(), kind: "double", value });
+        let mut declared = std::mem::take(&mut self.parameters);
+        let name = self.declare(&mut declared, "P");
+        self.parameters = declared;
         name
     }
 
-    /// A variable (double) declared once: its name.
+    /// A variable (double), as `parameter`.
     pub fn variable(&mut self) -> String {
-        if !self.variables.is_empty() && self.chance(0.6) {
-            return self.variables[0].name.clone();
+        let mut declared = std::mem::take(&mut self.variables);
+        let name = self.declare(&mut declared, "V");
+        self.variables = declared;
+        name
+    }
+
+    fn declare(&mut self, declared: &mut Vec<Declared>, prefix: &str) -> String {
+        if !declared.is_empty() && self.chance(0.6) {
+            return declared[0].name.clone();
         }
-        let name = format!("V{}", self.variables.len());
+        let name = format!("{prefix}{}", declared.len());
         let value = format!("{}", self.pick_index(5));
-        self.variables.push(Declared { name: name.clone(), kind: "double", value });
+        declared.push(Declared { name: name.clone(), kind: "double", value });
         name
     }
 

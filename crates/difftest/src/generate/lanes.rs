@@ -53,20 +53,9 @@ impl Leg {
     }
 }
 
-/// Lane types a vehicle drives on (esmini's set of driving lanes).
+/// Lane types a vehicle drives on (esmini's set of driving lanes, as the engine has it).
 pub fn drivable(kind: LaneType) -> bool {
-    matches!(
-        kind,
-        LaneType::Driving
-            | LaneType::Entry
-            | LaneType::Exit
-            | LaneType::OnRamp
-            | LaneType::OffRamp
-            | LaneType::ConnectingRamp
-            | LaneType::MwyEntry
-            | LaneType::MwyExit
-            | LaneType::Bidirectional
-    )
+    engine::is_driving_lane(kind)
 }
 
 /// Shortest stretch of a lane section worth starting on, m.

@@ -85,20 +85,7 @@ pub fn builtin(dir: &Path) -> std::io::Result<Vec<MapChoice>> {
 /// The OpenDRIVE files of a folder and its subfolders, in path order, each content once (the
 /// corpus holds copies of some maps), that load and have a driving spot; at most `max_maps`.
 pub fn from_folder(dir: &Path, max_maps: usize) -> Vec<MapChoice> {
-    let mut files: Vec<PathBuf> = Vec::new();
-    let mut stack = vec![dir.to_path_buf()];
-    while let Some(d) = stack.pop() {
-        let Ok(entries) = std::fs::read_dir(&d) else { continue };
-        for e in entries.flatten() {
-            let p = e.path();
-            if p.is_dir() {
-                stack.push(p);
-            } else if p.extension().is_some_and(|x| x.eq_ignore_ascii_case("xodr")) {
-                files.push(p);
-            }
-        }
-    }
-    files.sort();
+    let files = crate::files_with_ext(dir, "xodr");
     let mut seen = BTreeSet::new();
     let mut out = Vec::new();
     for path in files {
