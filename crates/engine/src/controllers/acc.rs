@@ -69,7 +69,11 @@ impl AccRt {
 pub(super) fn lane_delta(net: &RoadNetwork, a: LanePos, b: LanePos, max: f64) -> Option<(f64, bool, f64)> {
     let t = |p: &LanePos| net.roads.get(p.road).and_then(|r| lane_center_t(r, p.lane_id, p.s)).map(|c| c + p.offset);
     if a.road == b.road {
+        // esmini's Position::Delta: found only within `maxDist`, on the same road too
         let ds = (b.s - a.s) * a.dir;
+        if ds.abs() >= max {
+            return None;
+        }
         return Some((ds, a.lane_id == b.lane_id, (t(&b)? - t(&a)?) * a.dir));
     }
     let d = road_distance_within(net, a.road, a.s, b.road, b.s, max)?;
