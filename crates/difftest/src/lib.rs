@@ -29,6 +29,9 @@ pub struct Plan {
     /// A folder of OpenDRIVE maps to use besides the built-in ones.
     pub maps: Option<PathBuf>,
     pub max_maps: usize,
+    /// An osc2cr binary to run instead of this build's engine (`osc2cr simulate`): measures
+    /// another version (a baseline) on the same scenarios.
+    pub osc2cr: Option<PathBuf>,
 }
 
 /// osc2cr's run of a scenario: its states per entity and the engine's warnings.
@@ -54,6 +57,28 @@ pub fn run_osc2cr(xosc: &Path) -> Result<Osc2crRun, String> {
     let csv = run.trace.to_csv(&engine::bounding_boxes(&scenario));
     let _ = std::fs::write(xosc.with_extension("osc2cr.csv"), &csv);
     let warnings = loaded.warnings.iter().map(|w| w.to_string()).chain(run.warnings.iter().map(|w| w.to_string())).collect();
+    Ok(Osc2crRun { traces: parse_trace_csv(&csv), warnings })
+}
+
+/// An osc2cr binary's run of `xosc` (`simulate --trace … -v`): its trace, and its warnings
+/// from stderr. A binary that fails names its exit status and first stderr line.
+pub fn run_osc2cr_binary(bin: &Path, xosc: &Path) -> Result<Osc2crRun, String> {
+    let trace = xosc.with_extension("osc2cr.csv");
+    let out = std::process::Command::new(bin)
+        .arg("simulate")
+        .arg(xosc)
+        .arg("--trace")
+        .arg(&trace)
+        .arg("-v")
+        .output()
+        .map_err(|e| format!("{}: {e}", bin.display()))?;
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    if !out.status.success() {
+        return Err(format!("{}: {}", out.status, stderr.lines().next().unwrap_or("")));
+    }
+    let csv = std::fs::read_to_string(&trace).map_err(|e| format!("{}: {e}", trace.display()))?;
+    // its last line is the run's summary ("… simulated, … -> TRACE"), not a warning
+    let warnings = stderr.lines().filter(|l| !l.ends_with(".osc2cr.csv")).map(str::to_string).collect();
     Ok(Osc2crRun { traces: parse_trace_csv(&csv), warnings })
 }
 
@@ -117,7 +142,11 @@ pub fn run(plan: &Plan, mut progress: impl FnMut(u64, &Outcome)) -> std::io::Res
             osc2cr_warnings: Vec::new(),
             size: g.xosc.len(),
         };
-        match run_osc2cr(&path) {
+        let ours = match &plan.osc2cr {
+            Some(bin) => run_osc2cr_binary(bin, &path),
+            None => run_osc2cr(&path),
+        };
+        match ours {
             Err(e) => o.note = Some(format!("osc2cr: {e}")),
             Ok(ours) => {
                 o.osc2cr_warnings = ours.warnings.clone();

@@ -40,6 +40,10 @@ enum Command {
         /// Most maps taken from --maps.
         #[arg(long, default_value_t = 1000)]
         max_maps: usize,
+        /// Run this osc2cr binary (`osc2cr simulate`) instead of this build's engine, e.g. a
+        /// baseline release, on the same scenarios.
+        #[arg(long)]
+        osc2cr: Option<PathBuf>,
     },
     /// The long measurement: every seed without and (with --maps) with the folder's maps;
     /// writes each run's report, summary.txt, and the measured agreement per coverage element.
@@ -57,6 +61,10 @@ enum Command {
         /// Where the measured agreement per element goes (the coverage table reads it).
         #[arg(long, default_value = concat!(env!("CARGO_MANIFEST_DIR"), "/measured.tsv"))]
         measured: PathBuf,
+        /// Run this osc2cr binary instead of this build's engine (a baseline); give --measured
+        /// elsewhere then, the coverage table is this build's.
+        #[arg(long)]
+        osc2cr: Option<PathBuf>,
     },
     /// The coverage table: print it, or write it (--write) where the test checks it.
     Coverage {
@@ -86,13 +94,12 @@ fn run_plan(plan: &difftest::Plan) -> Result<Report, String> {
 
 fn main() -> ExitCode {
     let result = match Cli::parse().command {
-        Command::Run { seed, count, out, esmini, maps, max_maps } => {
-            run_plan(&difftest::Plan { seed, count, out, esmini, maps, max_maps }).map(|report| print!("{}", report.table(&format!("all (seed {seed})"))))
-        }
-        Command::Measure { seeds, count, out, esmini, maps, measured } => (|| {
+        Command::Run { seed, count, out, esmini, maps, max_maps, osc2cr } => run_plan(&difftest::Plan { seed, count, out, esmini, maps, max_maps, osc2cr })
+            .map(|report| print!("{}", report.table(&format!("all (seed {seed})")))),
+        Command::Measure { seeds, count, out, esmini, maps, measured, osc2cr } => (|| {
             let mut reports = Vec::new();
             let mut summary = String::new();
-            for (label, plan) in measure::runs(&seeds, count, &out, &esmini, maps.as_deref()) {
+            for (label, plan) in measure::runs(&seeds, count, &out, &esmini, maps.as_deref(), osc2cr.as_deref()) {
                 eprintln!("== {label}");
                 let report = run_plan(&plan)?;
                 let t = &report.total;

@@ -43,7 +43,7 @@ pub fn measured(outcomes: &[Outcome]) -> BTreeMap<String, Measured> {
 }
 
 /// One run of a measurement: its label and plan.
-pub fn runs(seeds: &[u64], count: u64, out: &Path, esmini: &Path, maps: Option<&Path>) -> Vec<(String, Plan)> {
+pub fn runs(seeds: &[u64], count: u64, out: &Path, esmini: &Path, maps: Option<&Path>, osc2cr: Option<&Path>) -> Vec<(String, Plan)> {
     let mut plans = Vec::new();
     for &seed in seeds {
         let folders: Vec<Option<&Path>> = if maps.is_some() { vec![None, maps] } else { vec![None] };
@@ -53,7 +53,18 @@ pub fn runs(seeds: &[u64], count: u64, out: &Path, esmini: &Path, maps: Option<&
                 Some(_) => format!("seed {seed} --maps"),
             };
             let dir: PathBuf = out.join(label.replace(' ', "_").replace("--", ""));
-            plans.push((label, Plan { seed, count, out: dir, esmini: Some(esmini.to_path_buf()), maps: folder.map(Path::to_path_buf), max_maps: 1000 }));
+            plans.push((
+                label,
+                Plan {
+                    seed,
+                    count,
+                    out: dir,
+                    esmini: Some(esmini.to_path_buf()),
+                    maps: folder.map(Path::to_path_buf),
+                    max_maps: 1000,
+                    osc2cr: osc2cr.map(Path::to_path_buf),
+                },
+            ));
         }
     }
     plans

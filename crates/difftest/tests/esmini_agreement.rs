@@ -14,7 +14,7 @@ fn agrees_with_esmini_on_a_few() {
         eprintln!("notice: no esmini binary; comparison skipped");
         return;
     }
-    let plan = difftest::Plan { seed: 1, count: 12, out: tmp("esmini"), esmini: Some(esmini), maps: None, max_maps: 0 };
+    let plan = difftest::Plan { seed: 1, count: 12, out: tmp("esmini"), esmini: Some(esmini), maps: None, max_maps: 0, osc2cr: None };
     let outcomes = difftest::run(&plan, |_, _| {}).expect("runs");
     // esmini accepts every scenario: it runs them all, and logs no error
     let compared = outcomes.iter().filter(|o| o.verdict.is_some()).count();
