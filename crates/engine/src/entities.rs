@@ -54,6 +54,9 @@ pub struct Entity {
     pub standstill_since: Option<f64>,
     /// A controller was activated on it (recorded; behaviour is part 2).
     pub controller_active: bool,
+    /// Which OverrideControllerValueAction values are active, in esmini's `OverrideType`
+    /// order (`actions/override_controller.rs`): releasing one restarts a ghost.
+    pub overrides_active: [bool; crate::actions::override_controller::state::OVERRIDE_KINDS],
     /// Driven from outside now under esmini's override rule (external/): the default
     /// controller and the storyboard's motion actions leave it to the outside.
     pub outside: bool,
@@ -114,6 +117,7 @@ impl Entity {
             offroad_since: None,
             standstill_since: None,
             controller_active: false,
+            overrides_active: [false; crate::actions::override_controller::state::OVERRIDE_KINDS],
             outside: false,
             active: true,
             appeared: false,

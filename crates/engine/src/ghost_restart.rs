@@ -24,7 +24,30 @@ impl<'a> Sim<'a> {
     /// if it has one (esmini inserts it at the front of the event's actions).
     pub fn ghost_event_starts(&mut self, ev: usize) {
         let Some(g) = self.ghost.as_ref() else { return };
-        let Some(k) = g.restart_events.iter().position(|(e, _)| *e == ev) else { return };
+        let Some((_, note)) = g.restart_events.iter().find(|(e, _)| *e == ev).cloned() else { return };
+        let ghost = g.entity;
+        // Event::Start: a starting action ends the running ones of its entity on a shared
+        // domain; a teleport holds both.
+        self.run_added_teleport(note, Some(ghost));
+    }
+
+    /// esmini's `ScenarioEngine::InjectGhostRestart`, from an action of event `ev` that
+    /// releases an override (`actions/override_controller.rs`): an added teleport is put at the
+    /// front of the event's actions and started at once — outside `Event::Start`, so no running
+    /// action of the ghost is ended — and stays there, so the event restarts the ghost whenever
+    /// it starts again and counts as one with a teleport for `ResetEvents`.
+    pub fn inject_ghost_restart(&mut self, ev: usize, note: crate::Warning) {
+        let Some(g) = self.ghost.as_mut() else { return };
+        if !g.restart_events.iter().any(|(e, _)| *e == ev) {
+            g.restart_events.push((ev, note.clone()));
+        }
+        self.run_added_teleport(note, None);
+    }
+
+    /// The added teleport's run: `TeleportAction::Start` of the ghost onto its entity (a restart
+    /// once the clock is past 0), after ending the running actions of `ending` if given.
+    fn run_added_teleport(&mut self, note: crate::Warning, ending: Option<usize>) {
+        let Some(g) = self.ghost.as_ref() else { return };
         let (ghost, owner) = (g.entity, g.owner);
         self.log_added_teleport("init", "start", "running");
         // Event::Start: after a teleport of the ghost the event's other actions start at the
@@ -32,9 +55,9 @@ impl<'a> Sim<'a> {
         if let Some(g) = self.ghost.as_mut() {
             g.start_shift = g.headstart;
         }
-        // Event::Start: a starting action ends the running ones of its entity on a shared
-        // domain; a teleport holds both.
-        self.end_running_actions_of(ghost);
+        if let Some(e) = ending {
+            self.end_running_actions_of(e);
+        }
         let Some(src) = self.entities.get(owner).cloned() else { return };
         // TeleportAction::Start: a restart only once the clock is past 0.
         let restart = self.time > ESMINI_SMALL_NUMBER;
@@ -63,11 +86,11 @@ impl<'a> Sim<'a> {
             if let Some(g) = self.ghost.as_mut() {
                 g.mode = GhostMode::Restart;
                 g.trail = Trail::default();
-                // Without a head start no time rewinds: nothing to note.
-                let (_, note) = g.restart_events[k].clone();
-                if g.headstart > 0.0 && !self.warnings.contains(&note) {
-                    self.warnings.push(note);
-                }
+            }
+            // Without a head start no time rewinds: nothing to note.
+            let rewinds = self.ghost.as_ref().is_some_and(|g| g.headstart > 0.0);
+            if rewinds && !self.warnings.contains(&note) {
+                self.warnings.push(note);
             }
             self.reset_ghost_events();
         }

@@ -10,6 +10,7 @@ pub mod lane_change;
 pub mod lane_offset;
 pub mod lat_distance;
 pub mod long_distance;
+pub mod override_controller;
 pub mod routing;
 pub mod speed;
 pub mod speed_profile;
@@ -207,6 +208,7 @@ impl<'a> Sim<'a> {
                 );
                 ActionRt::Done
             }
+            PrivateAction::OverrideControllerValue(values) => self.start_override(slot, e, values),
             PrivateAction::ConnectTrailer { trailer } => {
                 self.connect_trailer(slot, e, trailer);
                 ActionRt::Done

@@ -68,6 +68,7 @@ impl<'a> ActionSlot<'a> {
                 // AcquirePositionAction holds the longitudinal one.
                 PrivateAction::Teleport(_) => LONG | LAT,
                 PrivateAction::AcquirePosition(_) => LONG,
+                PrivateAction::OverrideControllerValue(values) => crate::actions::override_controller::state::domains(values),
                 _ => 0,
             },
             _ => 0,
