@@ -22,7 +22,7 @@ const ADDED_TELEPORT: &str = "AddedGhostTeleport";
 impl<'a> Sim<'a> {
     /// Event `ev` has started and its actions are about to: run its added ghost teleport first,
     /// if it has one (esmini inserts it at the front of the event's actions).
-    pub fn ghost_event_starts(&mut self, ev: usize) {
+    pub(crate) fn ghost_event_starts(&mut self, ev: usize) {
         let Some(g) = self.ghost.as_ref() else { return };
         let Some(k) = g.restart_events.iter().position(|(e, _)| *e == ev) else { return };
         let (ghost, owner) = (g.entity, g.owner);
@@ -75,7 +75,7 @@ impl<'a> Sim<'a> {
     }
 
     /// The event's actions have started.
-    pub fn ghost_event_started(&mut self) {
+    pub(crate) fn ghost_event_started(&mut self) {
         if let Some(g) = self.ghost.as_mut() {
             g.start_shift = 0.0;
         }
@@ -85,7 +85,7 @@ impl<'a> Sim<'a> {
     /// steps: after an added teleport its event's actions start the head start earlier, and in
     /// the step of a restart the ghost's story actions step at the rewound time (esmini's
     /// `Event::Start` adjusted time and `Event::Step` in RESTART mode; Init actions keep it).
-    pub fn ghost_time_shift(&self, slot: usize, e: usize, starting: bool) -> f64 {
+    pub(crate) fn ghost_time_shift(&self, slot: usize, e: usize, starting: bool) -> f64 {
         let Some(g) = self.ghost.as_ref() else { return 0.0 };
         if starting {
             g.start_shift
@@ -97,7 +97,7 @@ impl<'a> Sim<'a> {
     }
 
     /// The run ends at `t` because ghost restarts kept rewinding time (`run.rs` caps them).
-    pub fn warn_endless_restarts(&mut self, t: f64) {
+    pub(crate) fn warn_endless_restarts(&mut self, t: f64) {
         let Some((_, w)) = self.ghost.as_ref().and_then(|g| g.restart_events.first()) else { return };
         let message = format!("the ghost restarts kept rewinding time (over ten rewound steps per step of the run, or a million); the run ends at {t:.2} s");
         let w = crate::Warning { message, ..w.clone() };
