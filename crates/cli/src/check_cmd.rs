@@ -11,7 +11,7 @@ use serde::Serialize;
 use crate::Failure;
 
 #[derive(clap::Args)]
-pub struct CheckArgs {
+pub(crate) struct CheckArgs {
     /// OpenSCENARIO files or folders (searched for .xosc, recursively; catalogs in a folder are
     /// checked through the scenarios that use them, a catalog named alone is read alone).
     #[arg(required = true)]
@@ -153,7 +153,7 @@ fn reader_findings(path: &Path, params: &[(String, String)]) -> Vec<Finding> {
     out
 }
 
-pub fn run(args: &CheckArgs) -> Result<(), Failure> {
+pub(crate) fn run(args: &CheckArgs) -> Result<(), Failure> {
     let files = xosc_files(&args.inputs)?;
     if files.is_empty() {
         return Err(Failure::input("no .xosc file among the inputs"));

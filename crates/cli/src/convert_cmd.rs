@@ -13,7 +13,7 @@ use convert::{BatchOptions, ConvertOptions, EgoChoice, GoalOptions, JsonReport, 
 use crate::Failure;
 
 #[derive(clap::Args)]
-pub struct ConvertArgs {
+pub(crate) struct ConvertArgs {
     /// Scenario files (.xosc, parameter distributions included) and folders to search.
     #[arg(required = true, value_name = "FILE_OR_DIR")]
     pub inputs: Vec<PathBuf>,
@@ -209,7 +209,7 @@ fn describe(r: &ScenarioReport) -> String {
     }
 }
 
-pub fn run(args: &ConvertArgs) -> Result<(), Failure> {
+pub(crate) fn run(args: &ConvertArgs) -> Result<(), Failure> {
     let options = options(args);
     options.check().map_err(Failure::input)?;
     if !(args.timeout.is_finite() && args.timeout > 0.0) {

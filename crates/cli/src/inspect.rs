@@ -13,7 +13,7 @@ use std::path::PathBuf;
 const SHOWN_RUNS: u64 = 10;
 
 #[derive(clap::Args)]
-pub struct InspectArgs {
+pub(crate) struct InspectArgs {
     /// The OpenSCENARIO file (.xosc).
     pub file: PathBuf,
     /// Print JSON instead of text.
@@ -28,7 +28,7 @@ pub struct InspectArgs {
 }
 
 /// Parses `NAME=VALUE` pairs.
-pub fn parse_params(params: &[String]) -> Result<Vec<(String, String)>, Failure> {
+pub(crate) fn parse_params(params: &[String]) -> Result<Vec<(String, String)>, Failure> {
     params
         .iter()
         .map(|p| match p.split_once('=') {
@@ -38,7 +38,7 @@ pub fn parse_params(params: &[String]) -> Result<Vec<(String, String)>, Failure>
         .collect()
 }
 
-pub fn run(args: &InspectArgs) -> Result<(), Failure> {
+pub(crate) fn run(args: &InspectArgs) -> Result<(), Failure> {
     let options = LoadOptions { parameters: parse_params(&args.params)?, seed: args.seed, ..Default::default() };
     let loaded = load(&args.file, &options).map_err(|e| Failure::input(e.to_string()))?;
     let out = if args.json { json(args, &loaded.content, &loaded.warnings)? } else { text(args, &loaded.content, &loaded.warnings) };

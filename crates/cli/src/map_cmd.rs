@@ -4,7 +4,7 @@ use crate::Failure;
 use std::path::PathBuf;
 
 #[derive(clap::Args)]
-pub struct MapArgs {
+pub(crate) struct MapArgs {
     /// The OpenDRIVE file (.xodr).
     pub file: PathBuf,
     /// Where to write the CommonRoad XML.
@@ -32,7 +32,7 @@ fn parse_date(s: &str) -> Option<commonroad::Date> {
     commonroad::Date::new(y, m, d).ok()
 }
 
-pub fn run(args: &MapArgs) -> Result<(), Failure> {
+pub(crate) fn run(args: &MapArgs) -> Result<(), Failure> {
     if !(args.tolerance.is_finite() && args.tolerance > 0.0) {
         return Err(Failure::input(format!("--tolerance {} must be a positive number of metres", args.tolerance)));
     }

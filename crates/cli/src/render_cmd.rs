@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 use crate::Failure;
 
 #[derive(clap::Args)]
-pub struct RenderArgs {
+pub(crate) struct RenderArgs {
     /// The scenario: CommonRoad XML (.xml) or OpenSCENARIO (.xosc, converted with defaults).
     pub file: PathBuf,
     /// The picture: .png or .svg (a still) or .gif (an animation of the whole scenario, each
@@ -73,7 +73,7 @@ fn format_of(path: &Path) -> Option<Format> {
 }
 
 /// `OUT_t5.5.png` for the still at 5.5 s of several.
-pub fn still_path(output: &Path, time: f64) -> PathBuf {
+pub(crate) fn still_path(output: &Path, time: f64) -> PathBuf {
     let stem = output.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
     let ext = output.extension().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
     let mut t = format!("{time:.3}");
@@ -183,7 +183,7 @@ fn layout_json(l: &render::Layout) -> serde_json::Value {
     })
 }
 
-pub fn run(args: &RenderArgs) -> Result<(), Failure> {
+pub(crate) fn run(args: &RenderArgs) -> Result<(), Failure> {
     let format = format_of(&args.output).ok_or_else(|| Failure::input(format!("{}: the output must end in .png, .svg or .gif", args.output.display())))?;
     if format == Format::Gif && !args.times.is_empty() {
         return Err(Failure::input("--time selects stills; a .gif shows the whole scenario"));

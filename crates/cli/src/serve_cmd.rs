@@ -12,7 +12,7 @@ use udp::{Listening, Observer, Pace, Rejection, ServeError, ServeOptions};
 use crate::convert_cmd::parse_param;
 use crate::Failure;
 
-pub const ABOUT: &str = "\
+pub(crate) const ABOUT: &str = "\
 Run a scenario whose UDPDriverController entities are driven over UDP by clients written for \
 esmini 3.6.0, then write the run as CommonRoad (as `osc2cr convert` writes it).
 
@@ -46,7 +46,7 @@ The run ends at the scenario's stop trigger or --max-time; OUT_DIR/<scenario ste
 written (whole or not at all). Ctrl-C stops without writing.";
 
 #[derive(clap::Args)]
-pub struct ServeArgs {
+pub(crate) struct ServeArgs {
     /// The OpenSCENARIO scenario (.xosc).
     #[arg(value_name = "SCENARIO")]
     pub scenario: PathBuf,
@@ -147,7 +147,7 @@ fn options(args: &ServeArgs) -> Result<ServeOptions, Failure> {
     Ok(ServeOptions { convert, bind: args.bind, base_port: args.base_port, pace, ..ServeOptions::default() })
 }
 
-pub fn run(args: &ServeArgs) -> Result<(), Failure> {
+pub(crate) fn run(args: &ServeArgs) -> Result<(), Failure> {
     if !args.udp {
         return Err(Failure::input("say which protocol to serve: --udp (esmini's UDPDriverController)"));
     }

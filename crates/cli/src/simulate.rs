@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 #[derive(clap::Args)]
-pub struct SimulateArgs {
+pub(crate) struct SimulateArgs {
     /// The OpenSCENARIO file (.xosc).
     pub file: PathBuf,
     /// Where to write the trace (CSV: time,entity,x,y,z,h,speed,...).
@@ -63,7 +63,7 @@ fn write_file(path: &std::path::Path, text: &str) -> Result<(), Failure> {
     commonroad::xml::write_atomic(path, text.as_bytes()).map_err(|e| Failure { message: format!("{}: {e}", path.display()), status: 1 })
 }
 
-pub fn run(args: &SimulateArgs) -> Result<(), Failure> {
+pub(crate) fn run(args: &SimulateArgs) -> Result<(), Failure> {
     let parameters = args.params.iter().map(|p| parse_param(p)).collect::<Result<Vec<_>, _>>()?;
     let options = openscenario::LoadOptions { parameters, seed: None, ..Default::default() };
     let loaded = openscenario::load(&args.file, &options).map_err(|e| Failure::input(e.to_string()))?;

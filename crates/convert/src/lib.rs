@@ -13,6 +13,10 @@
 //! `--render`), or print anything (warnings, failures and timings are returned as data; the
 //! `osc2cr` binary presents them).
 
+// A library returns its warnings as data and never prints (ARCHITECTURE.md, Invariants); its
+// unit tests may.
+#![cfg_attr(not(test), deny(clippy::print_stdout, clippy::print_stderr))]
+
 mod angle;
 mod assemble;
 mod audit;

@@ -44,21 +44,21 @@ impl OutputPaths {
 }
 
 /// Maps written (or found) by this batch, by file name, so each is written once.
-pub struct MapFiles {
+pub(crate) struct MapFiles {
     dir: PathBuf,
     known: Mutex<BTreeMap<String, Result<PathBuf, String>>>,
 }
 
 impl MapFiles {
     /// Maps go to the top of the output folder `dir`.
-    pub fn new(dir: &Path) -> Self {
+    pub(crate) fn new(dir: &Path) -> Self {
         MapFiles { dir: dir.to_path_buf(), known: Mutex::new(BTreeMap::new()) }
     }
 
     /// The map's file, written if it is not there yet. A file of that name with other bytes is
     /// an error (not overwritten): the name is the hash of the content, so it is someone else's
     /// file, or a hash collision.
-    pub fn ensure(&self, map: &MapFile) -> Result<PathBuf, String> {
+    pub(crate) fn ensure(&self, map: &MapFile) -> Result<PathBuf, String> {
         let mut known = match self.known.lock() {
             Ok(g) => g,
             Err(poisoned) => poisoned.into_inner(),
@@ -81,7 +81,7 @@ impl MapFiles {
 
 /// The files written for one conversion.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
-pub struct Written {
+pub(crate) struct Written {
     pub main: Option<PathBuf>,
     pub dynamic: Option<PathBuf>,
     pub map: Option<PathBuf>,
@@ -95,7 +95,7 @@ fn create_parent(path: &Path) -> Result<(), String> {
 }
 
 /// Writes a conversion's output files.
-pub fn write_output(paths: &OutputPaths, output: &Output, maps: &MapFiles) -> Result<Written, String> {
+pub(crate) fn write_output(paths: &OutputPaths, output: &Output, maps: &MapFiles) -> Result<Written, String> {
     create_parent(&paths.main)?;
     match output {
         Output::Xml(bytes) => {
@@ -114,7 +114,7 @@ pub fn write_output(paths: &OutputPaths, output: &Output, maps: &MapFiles) -> Re
 
 /// The files an earlier run wrote for this conversion, if it wrote them all (a file written by
 /// `write_atomic` is whole when it exists).
-pub fn complete(paths: &OutputPaths, maps_dir: &Path) -> Option<Written> {
+pub(crate) fn complete(paths: &OutputPaths, maps_dir: &Path) -> Option<Written> {
     if !paths.main.is_file() || paths.picture.as_ref().is_some_and(|p| !p.is_file()) {
         return None;
     }

@@ -22,7 +22,7 @@ const ADDED_TELEPORT: &str = "AddedGhostTeleport";
 impl<'a> Sim<'a> {
     /// Event `ev` has started and its actions are about to: run its added ghost teleport first,
     /// if it has one (esmini inserts it at the front of the event's actions).
-    pub fn ghost_event_starts(&mut self, ev: usize) {
+    pub(crate) fn ghost_event_starts(&mut self, ev: usize) {
         let Some(g) = self.ghost.as_ref() else { return };
         let Some((_, note)) = g.restart_events.iter().find(|(e, _)| *e == ev).cloned() else { return };
         let ghost = g.entity;
@@ -36,7 +36,7 @@ impl<'a> Sim<'a> {
     /// front of the event's actions and started at once — outside `Event::Start`, so no running
     /// action of the ghost is ended — and stays there, so the event restarts the ghost whenever
     /// it starts again and counts as one with a teleport for `ResetEvents`.
-    pub fn inject_ghost_restart(&mut self, ev: usize, note: crate::Warning) {
+    pub(crate) fn inject_ghost_restart(&mut self, ev: usize, note: crate::Warning) {
         let Some(g) = self.ghost.as_mut() else { return };
         if !g.restart_events.iter().any(|(e, _)| *e == ev) {
             g.restart_events.push((ev, note.clone()));
@@ -98,7 +98,7 @@ impl<'a> Sim<'a> {
     }
 
     /// The event's actions have started.
-    pub fn ghost_event_started(&mut self) {
+    pub(crate) fn ghost_event_started(&mut self) {
         if let Some(g) = self.ghost.as_mut() {
             g.start_shift = 0.0;
         }
@@ -108,7 +108,7 @@ impl<'a> Sim<'a> {
     /// steps: after an added teleport its event's actions start the head start earlier, and in
     /// the step of a restart the ghost's story actions step at the rewound time (esmini's
     /// `Event::Start` adjusted time and `Event::Step` in RESTART mode; Init actions keep it).
-    pub fn ghost_time_shift(&self, slot: usize, e: usize, starting: bool) -> f64 {
+    pub(crate) fn ghost_time_shift(&self, slot: usize, e: usize, starting: bool) -> f64 {
         let Some(g) = self.ghost.as_ref() else { return 0.0 };
         if starting {
             g.start_shift
@@ -120,7 +120,7 @@ impl<'a> Sim<'a> {
     }
 
     /// The run ends at `t` because ghost restarts kept rewinding time (`run.rs` caps them).
-    pub fn warn_endless_restarts(&mut self, t: f64) {
+    pub(crate) fn warn_endless_restarts(&mut self, t: f64) {
         let Some((_, w)) = self.ghost.as_ref().and_then(|g| g.restart_events.first()) else { return };
         let message = format!("the ghost restarts kept rewinding time (over ten rewound steps per step of the run, or a million); the run ends at {t:.2} s");
         let w = crate::Warning { message, ..w.clone() };

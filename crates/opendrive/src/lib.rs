@@ -7,6 +7,10 @@
 //! file's own x/y (the header `<offset>` is kept in [`Header`] but not applied, as esmini
 //! does). Errors carry file, line and column; warnings are returned, never printed.
 
+// A library returns its warnings as data and never prints (ARCHITECTURE.md, Invariants); its
+// unit tests may.
+#![cfg_attr(not(test), deny(clippy::print_stdout, clippy::print_stderr))]
+
 pub mod driving_direction;
 pub mod error;
 pub mod geometry;

@@ -20,7 +20,7 @@ use crate::inputs::{from_parts, from_row, DRIVER_WIDTH, STATE_WIDTHS};
 use crate::options::from_kwargs;
 
 /// Numbers per entity in `states()`: x, y, heading, speed, acceleration, yaw rate, z, present.
-pub const STATE_COLUMNS: usize = 8;
+pub(crate) const STATE_COLUMNS: usize = 8;
 
 /// (stage, message) pairs, as the conversion functions return warnings.
 type Warnings = Vec<(&'static str, String)>;

@@ -6,6 +6,10 @@
 //!
 //! It knows the layout of `../shared/tools` and nothing of the converter's crates.
 
+// A library returns its warnings as data and never prints (ARCHITECTURE.md, Invariants); its
+// unit tests may.
+#![cfg_attr(not(test), deny(clippy::print_stdout, clippy::print_stderr))]
+
 mod compare_2024;
 mod cr_check;
 mod python;

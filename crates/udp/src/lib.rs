@@ -12,6 +12,10 @@
 //! an entity (`engine`), nor the command line: it prints nothing and writes no file — rejected
 //! datagrams, notes and the conversion are returned as data and told to an `Observer`.
 
+// A library returns its warnings as data and never prints (ARCHITECTURE.md, Invariants); its
+// unit tests may.
+#![cfg_attr(not(test), deny(clippy::print_stdout, clippy::print_stderr))]
+
 pub mod controller_properties;
 pub mod frame_order;
 pub mod message;

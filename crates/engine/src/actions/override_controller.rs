@@ -5,7 +5,7 @@
 //! on them, and releasing an active override of an entity that has a ghost restarts the ghost
 //! (`ScenarioEngine::InjectGhostRestart`, `ghost_restart.rs`). It ends in the step it starts.
 
-pub mod state;
+pub(crate) mod state;
 
 use self::state::kind_index;
 use crate::actions::state::ActionRt;
@@ -15,7 +15,7 @@ use openscenario::OverrideValue;
 
 impl<'a> Sim<'a> {
     /// `OverrideControlAction::Start` on entity `e`, value by value in document order.
-    pub fn start_override(&mut self, slot: usize, e: usize, values: &[OverrideValue]) -> ActionRt {
+    pub(crate) fn start_override(&mut self, slot: usize, e: usize, values: &[OverrideValue]) -> ActionRt {
         let has_ghost = self.ghost.as_ref().is_some_and(|g| g.owner == e);
         for v in values {
             let Some(k) = kind_index(&v.kind) else { continue };

@@ -20,7 +20,7 @@ const MIN_SEGMENT: f64 = 0.2;
 
 /// One OSI point of a lane centre: s, x, y, road heading.
 #[derive(Debug, Clone, Copy)]
-pub struct OsiPoint {
+pub(crate) struct OsiPoint {
     pub s: f64,
     pub x: f64,
     pub y: f64,
@@ -28,7 +28,7 @@ pub struct OsiPoint {
 }
 
 /// OSI points by (road, lane section, lane), computed once.
-pub type OsiMemo = HashMap<(usize, usize, i32), Vec<OsiPoint>>;
+pub(crate) type OsiMemo = HashMap<(usize, usize, i32), Vec<OsiPoint>>;
 
 fn section_end(road: &Road, j: usize) -> f64 {
     road.lane_sections.get(j + 1).map_or(road.length, |n| n.s)
@@ -81,7 +81,7 @@ fn requirement(p0: &[(f64, f64); 3], p1: &[(f64, f64); 3]) -> bool {
 
 /// OpenDrive::SetLaneOSIPoints for one lane of one lane section (flat roads: no elevation
 /// limit on the segment length).
-pub fn lane_osi_points(net: &RoadNetwork, road_idx: usize, j: usize, lane_id: i32) -> Vec<OsiPoint> {
+pub(crate) fn lane_osi_points(net: &RoadNetwork, road_idx: usize, j: usize, lane_id: i32) -> Vec<OsiPoint> {
     let Some(road) = net.roads.get(road_idx) else { return Vec::new() };
     let Some(lsec) = road.lane_sections.get(j) else { return Vec::new() };
     let s_end = section_end(road, j);
@@ -136,7 +136,7 @@ pub fn lane_osi_points(net: &RoadNetwork, road_idx: usize, j: usize, lane_id: i3
     points
 }
 
-pub fn angle_pi(a: f64) -> f64 {
+pub(crate) fn angle_pi(a: f64) -> f64 {
     // GetAngleInIntervalMinusPIPlusPI
     let mut b = a % (2.0 * std::f64::consts::PI);
     if b < -std::f64::consts::PI {
@@ -148,14 +148,14 @@ pub fn angle_pi(a: f64) -> f64 {
 }
 
 /// GetAngleDifference
-pub fn angle_difference(a: f64, b: f64) -> f64 {
+pub(crate) fn angle_difference(a: f64, b: f64) -> f64 {
     angle_pi(a - b)
 }
 
 /// The far tangent point ControllerLooming::Step finds, if any: (x, y, its absolute angle seen
 /// from the entity, its distance along the road), and whether the search stopped at a
 /// junction, with the distance searched.
-pub struct FarTangent {
+pub(crate) struct FarTangent {
     pub point: Option<(f64, f64, f64, f64)>,
     pub intersection: bool,
     pub dist: f64,
@@ -171,7 +171,8 @@ fn sign(x: f64) -> i32 {
 
 /// The tangent-point search of ControllerLooming::Step. `me`: the entity's lane position,
 /// (x, y), its road heading and whether it faces along the road.
-pub fn far_tangent(net: &RoadNetwork, memo: &mut OsiMemo, me: LanePos, x: f64, y: f64, h_road: f64, forward: bool, far_dist: f64) -> FarTangent {
+#[allow(clippy::too_many_arguments)] // the inputs of esmini's search, each a different quantity
+pub(crate) fn far_tangent(net: &RoadNetwork, memo: &mut OsiMemo, me: LanePos, x: f64, y: f64, h_road: f64, forward: bool, far_dist: f64) -> FarTangent {
     let mut out = FarTangent { point: None, intersection: false, dist: 0.0 };
     let Some(road0) = net.roads.get(me.road) else { return out };
     let half_pi = std::f64::consts::FRAC_PI_2;

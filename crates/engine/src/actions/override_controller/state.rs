@@ -6,10 +6,10 @@ use crate::actions::state::{LAT, LONG};
 use openscenario::OverrideValue;
 
 /// esmini's `Object::OverrideType`: throttle, brake, clutch, parking brake, steering wheel, gear.
-pub const OVERRIDE_KINDS: usize = 6;
+pub(crate) const OVERRIDE_KINDS: usize = 6;
 
 /// The index of an override value's element (`Throttle`, `Brake`, …) in esmini's order.
-pub fn kind_index(element: &str) -> Option<usize> {
+pub(crate) fn kind_index(element: &str) -> Option<usize> {
     ["Throttle", "Brake", "Clutch", "ParkingBrake", "SteeringWheel", "Gear"].iter().position(|k| *k == element)
 }
 
@@ -19,7 +19,7 @@ pub fn kind_index(element: &str) -> Option<usize> {
 /// longitudinal one. So the last non-steering value decides the longitudinal domain: throttle
 /// on then brake off holds none, brake off then throttle on holds it. Starting the action
 /// ends the entity's running actions on what it holds.
-pub fn domains(values: &[OverrideValue]) -> u8 {
+pub(crate) fn domains(values: &[OverrideValue]) -> u8 {
     values.iter().filter(|v| kind_index(&v.kind).is_some()).fold(0, |d, v| {
         let bit = if v.kind == "SteeringWheel" { LAT } else { LONG };
         if v.active {
