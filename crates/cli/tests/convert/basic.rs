@@ -1,8 +1,7 @@
 //! `osc2cr convert` as a user runs it: the shipped example, exit codes, parameter variations,
 //! atomic output, and the same bytes whatever `-j`.
 
-mod common;
-use common::*;
+use crate::common::*;
 
 use std::path::{Path, PathBuf};
 

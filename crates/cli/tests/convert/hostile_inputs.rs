@@ -1,8 +1,7 @@
 //! Malformed and hostile inputs end in a clear error or a correct file — never a panic, a hang
 //! or a partial file. Each runs the real binary with a wall-clock limit.
 
-mod common;
-use common::*;
+use crate::common::*;
 
 use std::path::Path;
 use std::process::Command;

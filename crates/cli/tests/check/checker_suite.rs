@@ -9,8 +9,7 @@
 //! reports a finding of the same severity class on the same line, each finding answering at most
 //! one expectation. The files the API reads without an error must give none here either.
 
-mod common;
-use common::*;
+use crate::common::*;
 use std::collections::{BTreeMap, HashMap};
 use std::path::Path;
 

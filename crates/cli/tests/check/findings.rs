@@ -1,8 +1,7 @@
 //! `osc2cr check`: findings with severity and file:line:col, exit 2 on an error, JSON for tools,
 //! and no error on the corpus (the one scenario whose catalogs are not shipped gets a warning).
 
-mod common;
-use common::*;
+use crate::common::*;
 
 #[test]
 fn the_example_has_no_error() {

@@ -1,12 +1,10 @@
 //! `osc2cr render` end to end: CommonRoad files, converted OpenSCENARIO files and corpus maps
 //! drawn as PNG, SVG and GIF; the files decode, have plausible sizes and real content.
 
-mod common;
-
 use std::path::{Path, PathBuf};
 
-use common::png::Png;
-use common::{assert_ok as ok, osc2cr, s, tmp};
+use crate::common::png::Png;
+use crate::common::{assert_ok as ok, osc2cr, s, tmp};
 
 use render::style;
 

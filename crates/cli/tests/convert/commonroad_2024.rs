@@ -7,10 +7,9 @@
 //! number of threads.
 //!
 //! `cr_check.py` reads only 2020a XML, so it does not check the 2024 files; they are held to
-//! the 2020a files (which pass it, `convert_corpus.rs`) by the comparison.
+//! the 2020a files (which pass it, `convert/corpus.rs`) by the comparison.
 
-mod common;
-use common::*;
+use crate::common::*;
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};

@@ -2,8 +2,7 @@
 //! a name collision, a sub-folder) together write exactly the files of one unsharded run —
 //! same names, same bytes — and each conversion is done by exactly one shard.
 
-mod common;
-use common::*;
+use crate::common::*;
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};

@@ -1,8 +1,7 @@
 //! `osc2cr convert --render`: a PNG beside each converted scenario, named like it; a picture
 //! that cannot be written is a warning of the report, never a failed conversion.
 
-mod common;
-use common::*;
+use crate::common::*;
 
 use std::collections::BTreeSet;
 use std::path::Path;

@@ -3,12 +3,10 @@
 //! is read back to see that the boxes are where the layout says. Corpus scenarios and the
 //! shipped example; the sheet and the event marks.
 
-mod common;
-
 use std::path::{Path, PathBuf};
 
-use common::png::Png;
-use common::{assert_ok as ok, example, osc2cr, s, tmp};
+use crate::common::png::Png;
+use crate::common::{assert_ok as ok, example, osc2cr, s, tmp};
 use render::style;
 use serde_json::Value;
 

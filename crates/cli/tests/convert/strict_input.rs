@@ -5,8 +5,7 @@
 //! problem is placed at the element that holds the broken name: the action (its
 //! `<PrivateAction>`) or the `<Condition>`.
 
-mod common;
-use common::*;
+use crate::common::*;
 
 use std::path::{Path, PathBuf};
 

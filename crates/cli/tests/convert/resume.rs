@@ -3,8 +3,7 @@
 //! uninterrupted run — same names, same bytes, no temporary file left — converting only what
 //! was missing, and its table and report account for every variation. In both formats.
 
-mod common;
-use common::*;
+use crate::common::*;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
