@@ -5,7 +5,7 @@
 //! position, a stop line without points, an intersection with a crossing). The map is named by
 //! its content, and the same model gives the same bytes.
 
-mod common;
+use crate::common;
 
 use std::num::NonZeroU64;
 use std::path::{Path, PathBuf};

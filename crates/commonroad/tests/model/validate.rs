@@ -1,6 +1,6 @@
 //! `Scenario::validate` finds each kind of inconsistency, and nothing in a consistent file.
 
-mod common;
+use crate::common;
 
 use commonroad::*;
 

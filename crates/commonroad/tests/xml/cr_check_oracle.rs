@@ -1,7 +1,7 @@
 //! Files written by the model pass `cr_check.py` (both 2020a XSDs, commonroad-io 2026.1 and
 //! 2024.3 readers, semantic checks). Skipped with a notice when `../shared` is absent.
 
-mod common;
+use crate::common;
 
 use std::path::PathBuf;
 

@@ -2,7 +2,7 @@
 //! what prost-build makes of the descriptor set `proto/commonroad_2024.binpb` (extracted from the
 //! commonroad-io 2026.1 wheel, see `proto/README.md`): they are regenerated here and compared
 //! byte for byte, so the checked-in code cannot drift from the definitions. After a change of the
-//! descriptor set, `OSC2CR_BLESS=1 cargo test -p osc2cr-commonroad --test protobuf_generated`
+//! descriptor set, `OSC2CR_BLESS=1 cargo test -p osc2cr-commonroad --test tests protobuf::generated`
 //! rewrites them.
 
 use std::path::{Path, PathBuf};

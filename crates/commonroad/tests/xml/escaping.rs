@@ -1,6 +1,6 @@
 //! Text and attribute escaping, checked by parsing the written file back with roxmltree.
 
-mod common;
+use crate::common;
 
 use commonroad::xml::{escape, write_scenario, WriteError};
 

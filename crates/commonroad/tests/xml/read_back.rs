@@ -2,7 +2,7 @@
 //! the shared minimal example reads into the values its text states, and bad input gives
 //! errors with line and column (never a panic).
 
-mod common;
+use crate::common;
 
 use std::num::NonZeroU64;
 use std::path::Path;

@@ -1,7 +1,7 @@
 //! The written XML against the XSD itself: element order of every `xs:sequence` we write,
 //! enumeration spellings, lexical form of numbers, determinism, writer errors.
 
-mod common;
+use crate::common;
 
 use std::collections::BTreeMap;
 
