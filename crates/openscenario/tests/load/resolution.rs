@@ -1,8 +1,8 @@
 //! Parameter scoping, tolerances, catalogs and older-version forms resolve as specified.
 
-mod common;
+use crate::common;
 
-use common::{car, scenario, teleport, temp_dir};
+use crate::common::{car, scenario, teleport, temp_dir};
 use openscenario::*;
 use std::path::Path;
 

@@ -1,6 +1,6 @@
 //! No panic on any input: random mutations of corpus files must load to Ok or Err.
 
-mod common;
+use crate::common;
 
 use openscenario::{load_str, LoadOptions};
 use proptest::prelude::*;

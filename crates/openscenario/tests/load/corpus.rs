@@ -1,6 +1,6 @@
 //! Every file of the corpus loads (or fails with the expected, named error).
 
-mod common;
+use crate::common;
 
 use openscenario::{load, Content, ErrorKind, LoadOptions};
 

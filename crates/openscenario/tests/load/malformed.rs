@@ -1,8 +1,8 @@
 //! Malformed inputs fail with the right kind, message and location.
 
-mod common;
+use crate::common;
 
-use common::{car, pos_of, scenario, teleport, temp_dir};
+use crate::common::{car, pos_of, scenario, teleport, temp_dir};
 use openscenario::{load, load_str, Error, ErrorKind, LoadOptions};
 use std::path::Path;
 

@@ -1,7 +1,7 @@
 //! Strict reading accepts what esmini accepts: no corpus file (scenario or distribution, and
 //! every run of a distribution) has a problem a strict reading would stop it for.
 
-mod common;
+use crate::common;
 
 use openscenario::{load, Content, LoadOptions};
 
