@@ -3,11 +3,9 @@
 //! which it exists. The scenario runs on the engine's straight fixture road (along +x; lane -1's
 //! centre at y = -1.75, lane -2's at y = -5.25); times and positions are worked out by hand.
 
-mod common;
-
 use std::path::PathBuf;
 
-use common::{convert_and_clean, fresh_dir, CAR};
+use crate::common::{convert_and_clean, fresh_dir, CAR};
 
 fn place(entity: &str, s: f64, lane: i32, speed: f64) -> String {
     format!(
