@@ -1,8 +1,9 @@
 //! The `osc2cr` binary's tests, one test binary whose modules are its commands: `convert/`,
 //! `check/`, `render/`, `map`, `simulate`, `serve_udp`; then `python_package/` (the wheel as a
-//! user installs it), `evaluation` (the paper's evaluation script) and `packaging` (every crate
-//! packs for crates.io). `common` runs the binary and walks the files it writes; inputs that are
-//! not in the corpus are in `data/`.
+//! user installs it), `evaluation` (the paper's evaluation script), `packaging` (every crate
+//! packs for crates.io) and `workspace` (every test file of the workspace is compiled). `common`
+//! runs the binary and walks the files it writes; inputs that are not in the corpus are in
+//! `data/`.
 
 mod common;
 
@@ -15,3 +16,4 @@ mod python_package;
 mod render;
 mod serve_udp;
 mod simulate;
+mod workspace;
