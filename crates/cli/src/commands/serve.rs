@@ -9,7 +9,7 @@ use std::path::PathBuf;
 use convert::{ConvertOptions, EgoChoice, Stage};
 use udp::{Listening, Observer, Pace, Rejection, ServeError, ServeOptions};
 
-use crate::convert_cmd::parse_param;
+use crate::shared_options::RunArgs;
 use crate::Failure;
 
 pub(crate) const ABOUT: &str = "\
@@ -70,33 +70,20 @@ pub(crate) struct ServeArgs {
     /// Never wait for the wall clock (synchronous ports still wait for their datagrams).
     #[arg(long)]
     pub fast: bool,
-    /// Engine step, s.
-    #[arg(long, default_value_t = 0.01)]
-    pub step: f64,
     /// CommonRoad time step, s.
     #[arg(long, default_value_t = 0.1)]
     pub dt: f64,
-    /// Simulated time after which the run stops, s.
-    #[arg(long, default_value_t = 60.0)]
-    pub max_time: f64,
+    #[command(flatten)]
+    pub run: RunArgs,
     /// The ego entity, by exact name (default: the first entity driven over UDP).
     #[arg(long, value_name = "NAME")]
     pub ego: Option<String>,
     /// Leave the ego out of the obstacles.
     #[arg(long)]
     pub drop_ego: bool,
-    /// Set a global parameter, NAME=VALUE (repeatable).
-    #[arg(long = "param", value_name = "NAME=VALUE", value_parser = parse_param)]
-    pub params: Vec<(String, String)>,
-    /// Seed of esmini's random generator in the engine (esmini's --seed).
-    #[arg(long, default_value_t = 0, value_name = "N")]
-    pub engine_seed: u32,
     /// Date attribute, YYYY-MM-DD (default: the FileHeader's date, else 1970-01-01).
     #[arg(long, value_parser = convert::parse_date)]
     pub date: Option<commonroad::Date>,
-    /// Read references to what does not exist as warnings (as `convert --lenient`).
-    #[arg(long)]
-    pub lenient: bool,
     /// Write a JSON report: ports, datagrams per entity, every rejection, warnings.
     #[arg(long, value_name = "FILE")]
     pub report: Option<PathBuf>,
@@ -124,17 +111,17 @@ impl Observer for Stderr {
 fn options(args: &ServeArgs) -> Result<ServeOptions, Failure> {
     let convert = ConvertOptions {
         dt: args.dt,
-        step: args.step,
-        max_time: args.max_time,
+        step: args.run.step,
+        max_time: args.run.max_time,
         ego: match &args.ego {
             Some(n) => EgoChoice::Name(n.clone()),
             None => ConvertOptions::default().ego,
         },
         drop_ego: args.drop_ego,
-        parameters: args.params.clone(),
-        engine_seed: args.engine_seed,
+        parameters: args.run.params.values.clone(),
+        engine_seed: args.run.engine_seed,
         date: args.date,
-        lenient: args.lenient,
+        lenient: args.run.lenient,
         ..ConvertOptions::default()
     };
     convert.check().map_err(Failure::input)?;

@@ -8,6 +8,7 @@ use std::path::{Path, PathBuf};
 
 use serde::Serialize;
 
+use crate::shared_options::ParamArgs;
 use crate::Failure;
 
 #[derive(clap::Args)]
@@ -22,10 +23,8 @@ pub(crate) struct CheckArgs {
     /// Also list warnings (by default only errors and a count of warnings are printed).
     #[arg(short, long)]
     pub verbose: bool,
-    /// Check as if global parameter NAME had VALUE (as `convert --param` would run it); the value
-    /// must fit the parameter's declared type. Repeatable.
-    #[arg(long = "param", value_name = "NAME=VALUE", value_parser = crate::convert_cmd::parse_param)]
-    pub params: Vec<(String, String)>,
+    #[command(flatten)]
+    pub params: ParamArgs,
 }
 
 #[derive(Debug, Clone, Serialize)]
@@ -158,7 +157,7 @@ pub(crate) fn run(args: &CheckArgs) -> Result<(), Failure> {
     if files.is_empty() {
         return Err(Failure::input("no .xosc file among the inputs"));
     }
-    let findings: Vec<Finding> = files.iter().flat_map(|f| check_file(f, &args.params)).collect();
+    let findings: Vec<Finding> = files.iter().flat_map(|f| check_file(f, &args.params.values)).collect();
     let errors = findings.iter().filter(|f| f.severity == "error").count();
     let warnings = findings.len() - errors;
     if args.json {

@@ -2,6 +2,7 @@
 //! properties, the storyboard outline, parameters with their final values, warnings — as text
 //! or JSON. Distribution files show their run count and first runs; catalogs their entries.
 
+use crate::shared_options::ParamArgs;
 use crate::Failure;
 use openscenario::{
     load, Action, CatalogEntry, CatalogFile, Condition, ConditionKind, Content, Distribution, Entity, EntityObject, LoadOptions, Scenario, Trigger, Warning,
@@ -19,27 +20,15 @@ pub(crate) struct InspectArgs {
     /// Print JSON instead of text.
     #[arg(long)]
     pub json: bool,
-    /// Override a global parameter (repeatable): --param NAME=VALUE.
-    #[arg(long = "param", value_name = "NAME=VALUE")]
-    pub params: Vec<String>,
+    #[command(flatten)]
+    pub params: ParamArgs,
     /// Seed for stochastic parameter distributions (default: the file's randomSeed).
     #[arg(long)]
     pub seed: Option<u64>,
 }
 
-/// Parses `NAME=VALUE` pairs.
-pub(crate) fn parse_params(params: &[String]) -> Result<Vec<(String, String)>, Failure> {
-    params
-        .iter()
-        .map(|p| match p.split_once('=') {
-            Some((n, v)) if !n.trim().is_empty() => Ok((n.trim().trim_start_matches('$').to_string(), v.to_string())),
-            _ => Err(Failure::input(format!("--param expects NAME=VALUE, got '{p}'"))),
-        })
-        .collect()
-}
-
 pub(crate) fn run(args: &InspectArgs) -> Result<(), Failure> {
-    let options = LoadOptions { parameters: parse_params(&args.params)?, seed: args.seed, ..Default::default() };
+    let options = LoadOptions { parameters: args.params.values.clone(), seed: args.seed, ..Default::default() };
     let loaded = load(&args.file, &options).map_err(|e| Failure::input(e.to_string()))?;
     let out = if args.json { json(args, &loaded.content, &loaded.warnings)? } else { text(args, &loaded.content, &loaded.warnings) };
     print!("{out}");

@@ -10,6 +10,7 @@ use std::time::Duration;
 
 use convert::{BatchOptions, ConvertOptions, EgoChoice, GoalOptions, JsonReport, OutputFormat, ScenarioReport, Stage, Table};
 
+use crate::shared_options::RunArgs;
 use crate::Failure;
 
 #[derive(clap::Args)]
@@ -29,12 +30,8 @@ pub(crate) struct ConvertArgs {
     /// CommonRoad time step, s.
     #[arg(long, default_value_t = 0.1)]
     pub dt: f64,
-    /// Engine step, s.
-    #[arg(long, default_value_t = 0.01)]
-    pub step: f64,
-    /// Simulated time after which a run stops, s.
-    #[arg(long, default_value_t = 60.0)]
-    pub max_time: f64,
+    #[command(flatten)]
+    pub run: RunArgs,
     /// The ego entity, by exact name (default: first by name containing --ego-pattern).
     #[arg(long, value_name = "NAME")]
     pub ego: Option<String>,
@@ -44,9 +41,6 @@ pub(crate) struct ConvertArgs {
     /// Leave the ego out of the obstacles (for motion-planning benchmarks).
     #[arg(long)]
     pub drop_ego: bool,
-    /// Set a global parameter, NAME=VALUE (repeatable).
-    #[arg(long = "param", value_name = "NAME=VALUE", value_parser = parse_param)]
-    pub params: Vec<(String, String)>,
     /// Goal rectangle length along the ego's last heading, m.
     #[arg(long, default_value_t = 50.0)]
     pub goal_length: f64,
@@ -92,11 +86,6 @@ pub(crate) struct ConvertArgs {
     /// Seed for stochastic parameter distributions (default: the file's own).
     #[arg(long)]
     pub seed: Option<u64>,
-    /// Seed of esmini's random generator in the engine (esmini's --seed; 0 as in the reference
-    /// traces). It decides ties esmini leaves to chance, e.g. between two equally turning
-    /// junction arms.
-    #[arg(long, default_value_t = 0, value_name = "N")]
-    pub engine_seed: u32,
     /// Scenarios converted in parallel (default: the number of CPUs).
     #[arg(short = 'j', long = "jobs")]
     pub jobs: Option<usize>,
@@ -128,27 +117,13 @@ pub(crate) struct ConvertArgs {
     /// Print every warning on stderr.
     #[arg(short, long)]
     pub verbose: bool,
-    /// Read references to what does not exist (an undeclared entity, storyboard element,
-    /// parameter or variable; a road or lane the map does not have; a parameter override the
-    /// scenario does not declare) and distributions that cannot be sampled (negative variance,
-    /// empty range, …) as warnings and convert anyway, as osc2cr did before 0.2. By default
-    /// each is an error naming file:line:col, and the file is not written.
-    #[arg(long)]
-    pub lenient: bool,
-}
-
-pub(crate) fn parse_param(s: &str) -> Result<(String, String), String> {
-    match s.split_once('=') {
-        Some((n, v)) if !n.trim().is_empty() => Ok((n.trim().to_string(), v.to_string())),
-        _ => Err(format!("expected NAME=VALUE, got {s:?}")),
-    }
 }
 
 fn options(args: &ConvertArgs) -> ConvertOptions {
     ConvertOptions {
         dt: args.dt,
-        step: args.step,
-        max_time: args.max_time,
+        step: args.run.step,
+        max_time: args.run.max_time,
         ego: match &args.ego {
             Some(n) => EgoChoice::Name(n.clone()),
             None => EgoChoice::Pattern(args.ego_pattern.clone()),
@@ -166,13 +141,13 @@ fn options(args: &ConvertArgs) -> ConvertOptions {
         affiliation: args.affiliation.clone(),
         source: args.source.clone(),
         date: args.date,
-        parameters: args.params.clone(),
+        parameters: args.run.params.values.clone(),
         seed: args.seed,
         max_variations: args.max_variations,
         map_tolerance: args.map_tolerance,
-        engine_seed: args.engine_seed,
+        engine_seed: args.run.engine_seed,
         deadline: None,
-        lenient: args.lenient,
+        lenient: args.run.lenient,
         format: args.format,
     }
 }
