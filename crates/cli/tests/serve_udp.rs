@@ -4,8 +4,7 @@
 //! goes to its end, the summary counts the datagrams, and the CommonRoad file is written where
 //! `convert` writes it, the ego ending where the states put it. Bad usage exits with status 2.
 
-mod common;
-use common::*;
+use crate::common::*;
 
 use std::io::{BufRead, BufReader, Read};
 use std::net::UdpSocket;

@@ -2,8 +2,7 @@
 //! a rejection (property tests over random bytes and over random values in well-formed
 //! headers), and a run fed random datagrams among good ones goes to its end.
 
-mod common;
-use common::*;
+use crate::common::*;
 use proptest::prelude::*;
 use udp::frame_order::FrameOrder;
 use udp::{accept, serve, InputMode};

@@ -5,8 +5,7 @@
 //! driver input throughout, a run with a wrong datagram in place of a good one every few steps
 //! writes the bytes of a run without any.
 
-mod common;
-use common::*;
+use crate::common::*;
 use udp::{serve, Outcome, Reason, Rejection};
 
 const THROTTLE: f64 = 0.5;

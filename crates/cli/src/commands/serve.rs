@@ -1,0 +1,190 @@
+//! `osc2cr serve SCENARIO --udp -o OUT_DIR`: runs a scenario whose UDPDriverController entities
+//! are driven over UDP by clients written for esmini, then writes the run as CommonRoad as
+//! `osc2cr convert` writes the file. All the work is `udp::serve`; this maps options, tells
+//! what happens on stderr, prints a summary and writes the file.
+
+use std::net::IpAddr;
+use std::path::PathBuf;
+
+use convert::{ConvertOptions, EgoChoice, Stage};
+use udp::{Listening, Observer, Pace, Rejection, ServeError, ServeOptions};
+
+use crate::shared_options::RunArgs;
+use crate::Failure;
+
+pub(crate) const ABOUT: &str = "\
+Run a scenario whose UDPDriverController entities are driven over UDP by clients written for \
+esmini 3.6.0, then write the run as CommonRoad (as `osc2cr convert` writes it).
+
+Protocol (esmini's ControllerUDPDriver, message version 1, little-endian): a header of four \
+32-bit unsigned integers — version (1), inputMode, objectId, frameNumber — then the mode's \
+fields as 64-bit floats: 1 driverInput (throttle 0..1, brake 0..1, steering angle \
+-pi/2..pi/2), 2 stateXYZHPR (x, y, z, h, p, r, speed, wheel angle, dead-reckoning byte), \
+3 stateXYH (x, y, h, speed, wheel angle, dead-reckoning byte), 4 stateH (h, speed, wheel angle, \
+dead-reckoning byte). Packed as Python's struct.pack packs them, as esmini's C structs, or as \
+its whole 88-byte DMMessage: each length is accepted. A datagram with another version, an \
+unknown mode or length, another object's id, a number that is not finite, a value out of range, \
+or a frameNumber older than one already accepted for the entity is rejected with a message on \
+stderr and counts as none; the run goes on.
+
+Ports: an entity's controller property `port`, else the base port plus its esmini object id \
+(the scenario's entities in order from 0, inline trailers right after their vehicle). The base \
+port is --base-port, else the `basePort` property of the last UDP driver in the scenario, else \
+49950. A port opens when its controller is activated; one activated by the Init reads its \
+first datagram before the first step, as esmini does. Ports are bound on 127.0.0.1 unless \
+--bind says otherwise.
+
+Execution modes (controller property `execMode`): asynchronous (default) reads every datagram \
+queued each step and keeps the newest; synchronous reads one datagram per step, waiting up to \
+500 ms, then goes on without. Without a new message driver input repeats, a state with dead \
+reckoning moves on at its speed and heading, any other state stays where it is.
+
+Pacing: with an asynchronous port the run goes in real time (--realtime-factor F scales it), \
+otherwise as fast as the datagrams come (lockstep); --fast never waits.
+
+The run ends at the scenario's stop trigger or --max-time; OUT_DIR/<scenario stem>.xml is then \
+written (whole or not at all). Ctrl-C stops without writing.";
+
+#[derive(clap::Args)]
+pub(crate) struct ServeArgs {
+    /// The OpenSCENARIO scenario (.xosc).
+    #[arg(value_name = "SCENARIO")]
+    pub scenario: PathBuf,
+    /// Serve esmini's UDPDriverController protocol (the protocol served; required).
+    #[arg(long)]
+    pub udp: bool,
+    /// Output folder (created if missing) for <scenario stem>.xml.
+    #[arg(short, long, value_name = "OUT_DIR")]
+    pub output: PathBuf,
+    /// Address the ports are bound on (0.0.0.0: every interface, as esmini binds).
+    #[arg(long, default_value = "127.0.0.1", value_name = "ADDRESS")]
+    pub bind: IpAddr,
+    /// Base port: an entity without a `port` property listens on it plus its esmini object id
+    /// (default: the scenario's `basePort`, else 49950).
+    #[arg(long, value_name = "PORT")]
+    pub base_port: Option<u16>,
+    /// Simulated seconds per wall-clock second (default: 1 when a port is asynchronous, else
+    /// as fast as the datagrams come).
+    #[arg(long, value_name = "F", conflicts_with = "fast")]
+    pub realtime_factor: Option<f64>,
+    /// Never wait for the wall clock (synchronous ports still wait for their datagrams).
+    #[arg(long)]
+    pub fast: bool,
+    /// CommonRoad time step, s.
+    #[arg(long, default_value_t = 0.1)]
+    pub dt: f64,
+    #[command(flatten)]
+    pub run: RunArgs,
+    /// The ego entity, by exact name (default: the first entity driven over UDP).
+    #[arg(long, value_name = "NAME")]
+    pub ego: Option<String>,
+    /// Leave the ego out of the obstacles.
+    #[arg(long)]
+    pub drop_ego: bool,
+    /// Date attribute, YYYY-MM-DD (default: the FileHeader's date, else 1970-01-01).
+    #[arg(long, value_parser = convert::parse_date)]
+    pub date: Option<commonroad::Date>,
+    /// Write a JSON report: ports, datagrams per entity, every rejection, warnings.
+    #[arg(long, value_name = "FILE")]
+    pub report: Option<PathBuf>,
+    /// Print every warning of the conversion on stderr.
+    #[arg(short, long)]
+    pub verbose: bool,
+}
+
+/// Tells on stderr what the server does.
+struct Stderr;
+
+impl Observer for Stderr {
+    fn listening(&mut self, l: &Listening) {
+        let mode = match l.exec {
+            udp::ExecMode::Synchronous => "synchronous: each step waits up to 500 ms for its datagram",
+            udp::ExecMode::Asynchronous => "asynchronous: each step takes the newest datagram",
+        };
+        eprintln!("listening for `{}` (esmini object id {}) on udp {}, {mode}", l.entity, l.object_id, l.address);
+    }
+    fn rejected(&mut self, r: &Rejection) {
+        eprintln!("warning: {r}");
+    }
+}
+
+fn options(args: &ServeArgs) -> Result<ServeOptions, Failure> {
+    let convert = ConvertOptions {
+        dt: args.dt,
+        step: args.run.step,
+        max_time: args.run.max_time,
+        ego: match &args.ego {
+            Some(n) => EgoChoice::Name(n.clone()),
+            None => ConvertOptions::default().ego,
+        },
+        drop_ego: args.drop_ego,
+        parameters: args.run.params.values.clone(),
+        engine_seed: args.run.engine_seed,
+        date: args.date,
+        lenient: args.run.lenient,
+        ..ConvertOptions::default()
+    };
+    convert.check().map_err(Failure::input)?;
+    let pace = match (args.realtime_factor, args.fast) {
+        (Some(f), _) if !(f.is_finite() && f > 0.0) => return Err(Failure::input(format!("--realtime-factor must be a positive number, got {f}"))),
+        (Some(f), _) => Some(Pace::RealTime(f)),
+        (None, true) => Some(Pace::AsFastAsPossible),
+        (None, false) => None,
+    };
+    Ok(ServeOptions { convert, bind: args.bind, base_port: args.base_port, pace, ..ServeOptions::default() })
+}
+
+pub(crate) fn run(args: &ServeArgs) -> Result<(), Failure> {
+    if !args.udp {
+        return Err(Failure::input("say which protocol to serve: --udp (esmini's UDPDriverController)"));
+    }
+    let options = options(args)?;
+    let outcome = udp::serve(&args.scenario, &options, &mut Stderr).map_err(|e| {
+        let status = match &e {
+            ServeError::Start(f) if matches!(f.stage, Stage::Load | Stage::RoadNetwork) => 2,
+            ServeError::Setup(_) | ServeError::Bind(_) => 2,
+            _ => 1,
+        };
+        Failure { message: format!("{}: {e}", args.scenario.display()), status }
+    })?;
+
+    for n in &outcome.notes {
+        eprintln!("note: {n}");
+    }
+    if args.verbose {
+        for w in &outcome.warnings {
+            eprintln!("warning: {:?}: {}", w.stage, w.message);
+        }
+    }
+    println!("served {}: {} steps to {:.2} s ({})", args.scenario.display(), outcome.steps, outcome.time, outcome.pace);
+    for e in &outcome.entities {
+        println!(
+            "  {}  {}  {}  datagrams {}  accepted {}  superseded {}  rejected {}  steps without a message {}",
+            e.name,
+            e.address.as_deref().unwrap_or("(never activated)"),
+            e.exec.name(),
+            e.datagrams,
+            e.accepted,
+            e.superseded,
+            e.rejected,
+            e.steps_without_message
+        );
+    }
+    if outcome.entities.is_empty() {
+        eprintln!("note: no entity of the scenario has a UDPDriverController: nothing was served");
+    }
+    if let Some(path) = &args.report {
+        let json = serde_json::to_vec_pretty(&outcome).map_err(|e| Failure::input(format!("report: {e}")))?;
+        commonroad::xml::write_atomic(path, &json).map_err(|e| Failure { message: e.to_string(), status: 1 })?;
+    }
+    let Some(bytes) = outcome.bytes() else {
+        let why = outcome.failure.as_ref().map_or_else(String::new, |f| format!("{:?} stage: {}", f.stage, f.message));
+        return Err(Failure { message: format!("{}: the run was not converted: {why}", args.scenario.display()), status: 1 });
+    };
+    std::fs::create_dir_all(&args.output).map_err(|e| Failure { message: format!("cannot create output folder {}: {e}", args.output.display()), status: 1 })?;
+    let path = args.output.join(&outcome.output_name);
+    commonroad::xml::write_atomic(&path, bytes).map_err(|e| Failure { message: e.to_string(), status: 1 })?;
+    let warnings = outcome.warnings.len();
+    eprintln!("wrote {}{}", path.display(), if warnings > 0 && !args.verbose { format!(" ({warnings} warnings, -v lists them)") } else { String::new() });
+    Ok(())
+}
