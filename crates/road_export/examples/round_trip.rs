@@ -72,10 +72,10 @@ fn main() {
             dt.as_secs_f64() * 1e3
         );
         if verbose {
-            for l in c.failures(0.05).iter().take(20) {
+            for l in c.failures(0.05).iter().take(200) {
                 println!("    {l}");
             }
-            for w in exported.warnings.iter().take(20) {
+            for w in exported.warnings.iter().take(200) {
                 println!("    warning: {w}");
             }
         }

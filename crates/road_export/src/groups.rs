@@ -45,13 +45,38 @@ impl Group {
 /// Neighbour of a lanelet on one of its own sides: (index, drives the opposite way).
 type Nb = Option<(usize, bool)>;
 
-/// Whether `a`'s bound `mine` and the neighbour's bound `theirs` (both in `a`'s direction) are one.
+/// How far apart (m) the ends of a shared bound may be along the road (one lanelet a little
+/// longer than its neighbour: the section's cross-section covers both).
+const SHARED_ENDS: f64 = 0.5;
+
+/// The polyline with its end segments extended by `by` m.
+fn extended(line: &[V2], by: f64) -> Vec<V2> {
+    let mut out = line.to_vec();
+    if let (Some(&a), Some(&b)) = (line.first(), line.get(1)) {
+        let d = a.sub(b);
+        if d.len() > 0.0 {
+            out.insert(0, a.add(d.scale(by / d.len())));
+        }
+    }
+    if let (Some(&a), Some(&b)) = (line.last(), line.len().checked_sub(2).and_then(|i| line.get(i))) {
+        let d = a.sub(b);
+        if d.len() > 0.0 {
+            out.push(a.add(d.scale(by / d.len())));
+        }
+    }
+    out
+}
+
+/// Whether `a`'s bound `mine` and the neighbour's bound `theirs` (both in `a`'s direction)
+/// are one border: within [`SHARED`] of each other sideways, their ends close.
 fn shared(mine: &[V2], theirs: &[V2]) -> bool {
     let ends = |x: &[V2], y: &[V2]| match (x.first(), y.first(), x.last(), y.last()) {
         (Some(a), Some(b), Some(c), Some(d)) => a.dist(*b).max(c.dist(*d)),
         _ => f64::INFINITY,
     };
-    ends(mine, theirs) <= SHARED && one_sided_distance(mine, theirs, 1.0) <= SHARED && one_sided_distance(theirs, mine, 1.0) <= SHARED
+    ends(mine, theirs) <= SHARED_ENDS
+        && one_sided_distance(mine, &extended(theirs, SHARED_ENDS), 1.0) <= SHARED
+        && one_sided_distance(theirs, &extended(mine, SHARED_ENDS), 1.0) <= SHARED
 }
 
 /// Verified neighbours of every lanelet, (left, right) on its own sides.

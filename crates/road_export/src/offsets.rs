@@ -175,6 +175,12 @@ pub fn fit_section(line: &RefLine, borders: &[Vec<Border>], s0: f64, s1: f64, br
     grid.retain(|s| s.is_finite() && *s >= s0 && *s <= s1);
     grid.sort_by(f64::total_cmp);
     grid.dedup_by(|a, b| (*a - *b).abs() < SAME_S);
+    // midpoints too: a cubic through four samples is exact at them and may still miss the
+    // corner of a bound between them
+    let mids: Vec<f64> = grid.windows(2).map(|w| 0.5 * (w[0] + w[1])).collect();
+    grid.extend(mids);
+    grid.sort_by(f64::total_cmp);
+    grid.dedup_by(|a, b| (*a - *b).abs() < SAME_S);
     if let Some(last) = grid.last_mut() {
         *last = s1;
     }

@@ -6,14 +6,35 @@ use crate::groups::Group;
 use crate::lanelets::Prepared;
 use crate::offsets::{fit_section, Border, FittedBorders};
 use crate::reference::{knots_along, Knot, RefLine};
-use crate::vec2::{one_sided_distance, V2};
+use crate::vec2::V2;
 use crate::warning::{Subject, Warning};
 use commonroad::LaneletNetwork;
 use std::f64::consts::FRAC_PI_2;
 
-/// How far the reference line may stray from the group's middle before it gets a knot (m);
-/// the lane offsets absorb the rest.
-const REFERENCE_TOL: f64 = 0.1;
+/// How far the reference line may stray from the group's middle before it gets a knot (m),
+/// tried in this order until its normals do not cross inside the road; the lane offsets
+/// absorb the rest.
+const REFERENCE_TOLS: [f64; 5] = [0.1, 0.4, 1.2, 3.0, 8.0];
+/// A border folds where 1 − κ·t falls below this (the offset curve's speed along s).
+const MIN_SPEED: f64 = 0.15;
+
+/// How much the fitted borders fold: 0 when none does, else the worst shortfall of 1 − κ·t
+/// below [`MIN_SPEED`] (sampled every 0.25 m).
+fn folding(line: &RefLine, fitted: &crate::offsets::FittedBorders) -> f64 {
+    let n = ((line.length / 0.25).ceil() as usize).clamp(2, 400_000);
+    let mut worst: f64 = 0.0;
+    for k in 0..=n {
+        let s = line.length * k as f64 / n as f64;
+        let kappa = line.pose(s).curvature;
+        let i = fitted.pieces.partition_point(|&p| p <= s).saturating_sub(1);
+        for border in &fitted.cubics {
+            if let Some(c) = border.get(i) {
+                worst = worst.max(MIN_SPEED - (1.0 - kappa * c.value(s)));
+            }
+        }
+    }
+    worst
+}
 /// A cut more oblique than this (rad from perpendicular) is not followed: the section
 /// starts perpendicular to its lanes instead, with a warning.
 const MAX_SLANT: f64 = 1.2;
@@ -110,42 +131,62 @@ pub fn build(g: &Group, net: &LaneletNetwork, prep: &[Option<Prepared>], tol: f6
             ));
         }
     }
-    let start_knot = start.unwrap_or(Knot { p: first, hdg: h0 });
-    let end_knot = Knot { p: last, hdg: h1 };
-    let knots = knots_along(&middle, start_knot, end_knot, REFERENCE_TOL, middle.len() + 2);
-    let line = RefLine::through(&knots);
-    if !(line.length > 0.0) {
+    // the cross-sections are moved out until no bound starts before (ends after) them: the
+    // lanes then cover every bound, at worst a few centimetres longer than it
+    let (t0, t1) = (V2::unit(h0), V2::unit(h1));
+    let firsts = borders.iter().flatten().filter_map(|b| b.first());
+    let lasts = borders.iter().flatten().filter_map(|b| b.last());
+    let back0 = firsts.map(|p| -p.sub(first).dot(t0)).fold(0.0, f64::max);
+    let ahead1 = lasts.map(|p| p.sub(last).dot(t1)).fold(0.0, f64::max);
+    for (d, at) in [(back0, "start"), (ahead1, "end")] {
+        if d > 0.05 {
+            warnings.push(Warning::new(
+                Subject::Lanelet(id_of(0)),
+                format!("the lanelets of its road do not {at} on one line; the lane section {at}s {d:.2} m further out, so some lanes are that much longer"),
+            ));
+        }
+    }
+    let start_knot = start.unwrap_or(Knot { p: first.sub(t0.scale(back0)), hdg: h0 });
+    let end_knot = Knot { p: last.add(t1.scale(ahead1)), hdg: h1 };
+    let mut middle = middle;
+    if let Some(m) = middle.first_mut() {
+        *m = start_knot.p;
+    }
+    if let Some(m) = middle.last_mut() {
+        *m = end_knot.p;
+    }
+    // a line that follows the middle closely can bend tighter than the road is wide (its
+    // normals would cross inside the road): then it is allowed to cut the bend more
+    let mut best: Option<(SectionGeom, f64)> = None;
+    for ref_tol in REFERENCE_TOLS {
+        let knots = knots_along(&middle, start_knot, end_knot, ref_tol, middle.len() + 2);
+        let line = RefLine::through(&knots);
+        if !(line.length > 0.0) {
+            continue;
+        }
+        let projected: Vec<Vec<Border>> = borders.iter().map(|set| set.iter().map(|b| Border::new(b, &line)).collect()).collect();
+        let backwards = projected.iter().flatten().map(|b| b.backwards).fold(0.0, f64::max);
+        let breaks: Vec<f64> = line.knots_s.iter().copied().filter(|&s| s > 0.0 && s < line.length).collect();
+        let fitted = fit_section(&line, &projected, 0.0, line.length, &breaks, tol);
+        let fold = folding(&line, &fitted).max(backwards - 0.01);
+        let better = best.as_ref().is_none_or(|(_, f)| fold < *f);
+        if better {
+            best = Some((SectionGeom { line, fitted }, fold));
+        }
+        if fold <= 0.0 {
+            break;
+        }
+    }
+    let Some((geom, fold)) = best else {
         warnings.push(Warning::new(Subject::Lanelet(id_of(0)), "its road has no length; not exported"));
         return None;
+    };
+    if fold > 0.0 {
+        warnings.push(Warning::new(
+            Subject::Lanelet(id_of(0)),
+            "its road bends tighter than it is wide (the lane borders fold over the reference line); the borders there are approximate",
+        ));
     }
-    let projected: Vec<Vec<Border>> = borders.iter().map(|set| set.iter().map(|b| Border::new(b, &line)).collect()).collect();
-    for (k, set) in projected.iter().enumerate() {
-        for b in set {
-            if b.backwards > 0.01 {
-                let who = id_of(k.min(n.saturating_sub(1)));
-                warnings.push(Warning::new(
-                    Subject::Lanelet(who),
-                    format!("a bound runs {:.2} m backwards along its road's reference line (a very tight bend or a folded bound); the lane border there is approximate", b.backwards),
-                ));
-            }
-        }
-    }
-    let breaks: Vec<f64> = line.knots_s.iter().copied().filter(|&s| s > 0.0 && s < line.length).collect();
-    let fitted = fit_section(&line, &projected, 0.0, line.length, &breaks, tol);
-    // how far the written ends are from the bounds' own end points
-    let (p0, p1) = (line.pose(0.0), line.pose(line.length));
-    for (k, set) in borders.iter().enumerate() {
-        for b in set {
-            let off = |pose: &crate::reference::Pose, q: Option<&V2>| q.map_or(0.0, |q| q.sub(pose.p).dot(V2::unit(pose.hdg)).abs());
-            let worst = off(&p0, b.first()).max(off(&p1, b.last()));
-            if worst > 0.02 {
-                warnings.push(Warning::new(
-                    Subject::Lanelet(id_of(k.min(n.saturating_sub(1)))),
-                    format!("a bound ends {worst:.3} m off its road's cross-section (the lanelets side by side do not start or end on one line); the lane border ends on the cross-section"),
-                ));
-            }
-        }
-    }
-    let _ = one_sided_distance;
+    let (line, fitted) = (geom.line, geom.fitted);
     Some(SectionGeom { line, fitted })
 }
