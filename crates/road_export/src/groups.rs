@@ -75,8 +75,8 @@ fn shared(mine: &[V2], theirs: &[V2]) -> bool {
         _ => f64::INFINITY,
     };
     ends(mine, theirs) <= SHARED_ENDS
-        && one_sided_distance(mine, &extended(theirs, SHARED_ENDS), 1.0) <= SHARED
-        && one_sided_distance(theirs, &extended(mine, SHARED_ENDS), 1.0) <= SHARED
+        && one_sided_distance(mine, &extended(theirs, SHARED_ENDS), 1.0, 2.0 * SHARED) <= SHARED
+        && one_sided_distance(theirs, &extended(mine, SHARED_ENDS), 1.0, 2.0 * SHARED) <= SHARED
 }
 
 /// Verified neighbours of every lanelet, (left, right) on its own sides.

@@ -33,9 +33,11 @@ impl Border {
         let mut st: Vec<(f64, f64)> = Vec::with_capacity(pts.len());
         let mut backwards: f64 = 0.0;
         for (i, &p) in pts.iter().enumerate() {
+            // the first vertex lies on the start cross-section (s = 0: on a closed loop the end
+            // is as near), each next one near the previous
             let near = match (st.last(), i.checked_sub(1).and_then(|k| pts.get(k))) {
                 (Some(&(s, _)), Some(prev)) => Some((s, 20.0 + 2.0 * prev.dist(p))),
-                _ => None,
+                _ => Some((0.0, 20.0)),
             };
             let (mut s, t) = line.project(p, near);
             if let Some(&(last, _)) = st.last() {

@@ -135,13 +135,14 @@ impl RefLine {
     /// search to ±`window` m around a station (marching along a border).
     pub fn project(&self, p: V2, near: Option<(f64, f64)>) -> (f64, f64) {
         let mut best = (f64::INFINITY, 0.0);
-        for w in self.samples.windows(2) {
-            let ((s0, a), (s1, b)) = (w[0], w[1]);
-            if let Some((c, r)) = near {
-                if s1 < c - r || s0 > c + r {
-                    continue;
-                }
+        let (lo, hi) = match near {
+            Some((c, r)) => {
+                (self.samples.partition_point(|x| x.0 < c - r).saturating_sub(1), (self.samples.partition_point(|x| x.0 <= c + r) + 1).min(self.samples.len()))
             }
+            None => (0, self.samples.len()),
+        };
+        for w in self.samples.get(lo..hi).unwrap_or(&[]).windows(2) {
+            let ((s0, a), (s1, b)) = (w[0], w[1]);
             let (d, u) = to_segment(p, a, b);
             if d < best.0 {
                 best = (d, s0 + u * (s1 - s0));

@@ -7,16 +7,18 @@
 //! of the read-back lanelets outside every original one (scanlines every 5 cm, exact along
 //! each line).
 
-use crate::vec2::{one_sided_distance, to_polyline, V2};
+use crate::vec2::{one_sided_distance, samples, SegmentIndex, V2};
 use commonroad::{Lanelet, LaneletNetwork};
 use std::collections::BTreeMap;
 
 /// How far a read-back lanelet may lie from an original one and still be one of its pieces (m).
-const PIECE: f64 = 0.5;
+const PIECE: f64 = 1.0;
 /// Scanline spacing of the area measure (m).
 const ROW: f64 = 0.05;
 /// Bound sample spacing (m).
 const STEP: f64 = 0.1;
+/// Bound errors are measured up to this (m); larger ones are reported as this.
+pub const ERROR_CAP: f64 = 10.0;
 
 /// One original lanelet's result.
 #[derive(Debug, Clone, PartialEq)]
@@ -95,12 +97,14 @@ fn overlaps(a: &Shape, b: &Shape, margin: f64) -> bool {
     a.min.x <= b.max.x + margin && b.min.x <= a.max.x + margin && a.min.y <= b.max.y + margin && b.min.y <= a.max.y + margin
 }
 
-/// Direction of a polyline from its start to its end.
-fn direction(line: &[V2]) -> V2 {
-    match (line.first(), line.last()) {
-        (Some(a), Some(b)) => b.sub(*a),
-        _ => V2::new(0.0, 0.0),
-    }
+/// Whether `piece` runs the same way as `line` where it lies: its middle segment against
+/// the nearest segment of `line` (closed loops have no start-to-end direction).
+fn same_way(piece: &[V2], line: &[V2]) -> bool {
+    let k = piece.len() / 2;
+    let (Some(&a), Some(&b)) = (piece.get(k.saturating_sub(1)), piece.get(k.max(1))) else { return false };
+    let mid = a.lerp(b, 0.5);
+    let nearest = line.windows(2).min_by(|x, y| crate::vec2::to_segment(mid, x[0], x[1]).0.total_cmp(&crate::vec2::to_segment(mid, y[0], y[1]).0));
+    nearest.is_some_and(|w| w[1].sub(w[0]).dot(b.sub(a)) > 0.0)
 }
 
 /// Compares `original` with `back` (what a reader made of the export).
@@ -115,8 +119,10 @@ pub fn compare(original: &LaneletNetwork, back: &LaneletNetwork) -> Comparison {
             if !overlaps(o, b, PIECE) {
                 continue;
             }
-            let dir_ok = direction(&b.left).add(direction(&b.right)).dot(direction(&o.left).add(direction(&o.right))) > 0.0;
-            if dir_ok && one_sided_distance(&b.left, &o.left, 1.0) <= PIECE && one_sided_distance(&b.right, &o.right, 1.0) <= PIECE {
+            if one_sided_distance(&b.left, &o.left, 1.0, 2.0 * PIECE) <= PIECE
+                && one_sided_distance(&b.right, &o.right, 1.0, 2.0 * PIECE) <= PIECE
+                && (same_way(&b.left, &o.left) || same_way(&b.right, &o.right))
+            {
                 m.push(j);
             }
         }
@@ -132,18 +138,8 @@ pub fn compare(original: &LaneletNetwork, back: &LaneletNetwork) -> Comparison {
             f64::INFINITY
         } else {
             let side = |pts: &[V2], pick: fn(&Shape) -> &Vec<V2>| {
-                let mut worst: f64 = 0.0;
-                let sample = |p: V2| m.iter().filter_map(|&j| read.get(j)).map(|b| to_polyline(p, pick(b))).fold(f64::INFINITY, f64::min);
-                for w in pts.windows(2) {
-                    let n = ((w[0].dist(w[1]) / STEP).ceil() as usize).clamp(1, 100_000);
-                    for k in 0..n {
-                        worst = worst.max(sample(w[0].lerp(w[1], k as f64 / n as f64)));
-                    }
-                }
-                if let Some(&p) = pts.last() {
-                    worst = worst.max(sample(p));
-                }
-                worst
+                let index = SegmentIndex::new(m.iter().filter_map(|&j| read.get(j)).map(|b| pick(b).as_slice()), 2.0);
+                samples(pts, STEP).into_iter().map(|p| index.distance(p, ERROR_CAP)).fold(0.0, f64::max)
             };
             side(&o.left, |s| &s.left).max(side(&o.right, |s| &s.right))
         };

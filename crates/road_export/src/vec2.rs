@@ -93,20 +93,87 @@ pub fn dedup(line: &[V2], eps: f64) -> Vec<V2> {
     out
 }
 
-/// Largest distance from a point of `a` (its vertices and points every `step` m between
-/// them) to the polyline `b`: the one-sided Hausdorff distance, sampled.
-pub fn one_sided_distance(a: &[V2], b: &[V2], step: f64) -> f64 {
-    let mut worst: f64 = 0.0;
-    for w in a.windows(2) {
-        let n = ((w[0].dist(w[1]) / step).ceil() as usize).clamp(1, 10_000);
-        for k in 0..n {
-            worst = worst.max(to_polyline(w[0].lerp(w[1], k as f64 / n as f64), b));
+/// Segments in a grid of square cells, for nearest-segment queries with a cap.
+pub struct SegmentIndex {
+    cell: f64,
+    cells: std::collections::HashMap<(i64, i64), Vec<(V2, V2)>>,
+}
+
+impl SegmentIndex {
+    /// Indexes the segments of the polylines in `lines` with cells of `cell` m.
+    pub fn new<'a>(lines: impl IntoIterator<Item = &'a [V2]>, cell: f64) -> SegmentIndex {
+        let cell = if cell.is_finite() && cell > 0.0 { cell } else { 1.0 };
+        let mut cells: std::collections::HashMap<(i64, i64), Vec<(V2, V2)>> = std::collections::HashMap::new();
+        let key = |v: f64| (v / cell).floor() as i64;
+        for line in lines {
+            let segs: Vec<(V2, V2)> = match line {
+                [only] => vec![(*only, *only)],
+                _ => line.windows(2).map(|w| (w[0], w[1])).collect(),
+            };
+            for (a, b) in segs {
+                let (x0, x1) = (key(a.x.min(b.x)), key(a.x.max(b.x)));
+                let (y0, y1) = (key(a.y.min(b.y)), key(a.y.max(b.y)));
+                // hostile sizes: a segment spanning a huge box goes into its corner cells only
+                if (x1 - x0 + 1).saturating_mul(y1 - y0 + 1) > 1_000_000 {
+                    cells.entry((x0, y0)).or_default().push((a, b));
+                    continue;
+                }
+                for x in x0..=x1 {
+                    for y in y0..=y1 {
+                        cells.entry((x, y)).or_default().push((a, b));
+                    }
+                }
+            }
         }
+        SegmentIndex { cell, cells }
     }
-    if let Some(&p) = a.last() {
-        worst = worst.max(to_polyline(p, b));
+
+    /// Distance from `p` to the nearest indexed segment, or `cap` if none is nearer. Rings
+    /// of cells are searched outward until the nearest hit is closer than the next ring.
+    pub fn distance(&self, p: V2, cap: f64) -> f64 {
+        let r = (cap / self.cell).ceil().clamp(0.0, 1000.0) as i64;
+        let (cx, cy) = ((p.x / self.cell).floor() as i64, (p.y / self.cell).floor() as i64);
+        let mut best = cap;
+        for ring in 0..=r {
+            for x in cx - ring..=cx + ring {
+                for y in cy - ring..=cy + ring {
+                    if (x - cx).abs() != ring && (y - cy).abs() != ring {
+                        continue;
+                    }
+                    if let Some(v) = self.cells.get(&(x, y)) {
+                        for &(a, b) in v {
+                            best = best.min(to_segment(p, a, b).0);
+                        }
+                    }
+                }
+            }
+            // everything in the rings beyond is at least `ring` cells away
+            if best <= ring as f64 * self.cell {
+                break;
+            }
+        }
+        best
     }
-    worst
+}
+
+/// Points along a polyline: its vertices and points every `step` m between them.
+pub fn samples(a: &[V2], step: f64) -> Vec<V2> {
+    let mut out = Vec::new();
+    for w in a.windows(2) {
+        let n = ((w[0].dist(w[1]) / step).ceil() as usize).clamp(1, 100_000);
+        out.extend((0..n).map(|k| w[0].lerp(w[1], k as f64 / n as f64)));
+    }
+    out.extend(a.last().copied());
+    out
+}
+
+/// Largest distance from a point of `a` (its vertices and points every `step` m between
+/// them) to the polyline `b`, the one-sided Hausdorff distance (sampled), capped at `cap`.
+pub fn one_sided_distance(a: &[V2], b: &[V2], step: f64, cap: f64) -> f64 {
+    // cells about half a segment long: few cells per segment, few segments per cell
+    let mean = length(b) / b.len().max(2).saturating_sub(1) as f64;
+    let index = SegmentIndex::new([b], (0.5 * mean).max(cap).max(0.5));
+    samples(a, step).into_iter().map(|p| index.distance(p, cap)).fold(0.0, f64::max)
 }
 
 /// Whether two segments properly cross (shared end points do not count).
@@ -128,7 +195,8 @@ mod tests {
         assert_eq!(to_polyline(V2::new(5.0, 2.0), &line), 2.0);
         assert_eq!(to_polyline(V2::new(13.0, 4.0), &line), 5.0);
         let other = [V2::new(0.0, 1.0), V2::new(10.0, 1.5)];
-        assert!((one_sided_distance(&other, &line, 0.5) - 1.5).abs() < 1e-12);
+        assert!((one_sided_distance(&other, &line, 0.5, 5.0) - 1.5).abs() < 1e-12);
+        assert_eq!(one_sided_distance(&other, &line, 0.5, 1.0), 1.0);
         assert!(segments_cross(V2::new(0.0, -1.0), V2::new(0.0, 1.0), V2::new(-1.0, 0.0), V2::new(1.0, 0.0)));
         assert!(!segments_cross(V2::new(0.0, 0.0), V2::new(1.0, 0.0), V2::new(1.0, 0.0), V2::new(2.0, 1.0)));
     }
