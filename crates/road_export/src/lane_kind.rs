@@ -1,10 +1,27 @@
 //! Lanelet types and road users → OpenDRIVE lane types and road types. CommonRoad types
-//! OpenDRIVE has no lane type for are written as the nearest one, with a warning.
+//! OpenDRIVE has no lane type for are written as the nearest one, with a warning. Bus lanes
+//! are driving lanes whose `<access>` allows buses: OpenDRIVE 1.8's lane type `bus` is an
+//! error for esmini 3.6, which knows the access rule.
 
 use commonroad::{Lanelet, LaneletType, RoadUser};
 
+/// A lane's type and the road user its `<access>` allows (if restricted).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct LaneKind {
+    pub kind: &'static str,
+    pub access: Option<&'static str>,
+}
+
 /// The lane type of a lanelet, and what was approximated (for a warning).
-pub fn lane_type(l: &Lanelet) -> (&'static str, Option<String>) {
+pub fn lane_type(l: &Lanelet) -> (LaneKind, Option<String>) {
+    let (kind, note) = plain_type(l);
+    match kind {
+        "bus" => (LaneKind { kind: "driving", access: Some("bus") }, note),
+        _ => (LaneKind { kind, access: None }, note),
+    }
+}
+
+fn plain_type(l: &Lanelet) -> (&'static str, Option<String>) {
     use LaneletType as T;
     let has = |t: T| l.lanelet_types.contains(&t);
     let users: Vec<RoadUser> = l.user_one_way.iter().chain(&l.user_bidirectional).copied().collect();

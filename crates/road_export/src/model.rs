@@ -29,6 +29,8 @@ pub struct Mark {
 pub struct Lane {
     pub id: i32,
     pub kind: &'static str,
+    /// The road user an `<access rule="allow">` names (bus lanes).
+    pub access: Option<&'static str>,
     pub predecessors: Vec<i32>,
     pub successors: Vec<i32>,
     /// Width records, `s` relative to the section start.

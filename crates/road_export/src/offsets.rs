@@ -56,11 +56,6 @@ impl Border {
         self.st.iter().map(|&(s, _)| s)
     }
 
-    /// s of the first and last vertex.
-    pub fn s_range(&self) -> (f64, f64) {
-        (self.st.first().map_or(0.0, |p| p.0), self.st.last().map_or(0.0, |p| p.0))
-    }
-
     /// The offset of the border on the normal at `s` (the segment lines are extended past
     /// the ends).
     pub fn t_at(&self, s: f64, line: &RefLine) -> f64 {

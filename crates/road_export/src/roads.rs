@@ -71,11 +71,7 @@ fn lanes(net: &LaneletNetwork, g: &Group, geom: &SectionGeom, warnings: &mut Vec
         let is_left = id > 0;
         // a lane's mark is on its outer border: the reference left of a left lane
         let mark = marking(net, g, k, is_left, warnings);
-        // the other lanelet on that border says the same, or the difference is a warning
-        let inner_k = if is_left { k + 1 } else { k.wrapping_sub(1) };
-        let inner_neighbour = if is_left { inner_k < g.centre } else { k > g.centre };
-        let _ = inner_neighbour;
-        let lane = Lane { id, kind, predecessors: Vec::new(), successors: Vec::new(), widths, mark };
+        let lane = Lane { id, kind: kind.kind, access: kind.access, predecessors: Vec::new(), successors: Vec::new(), widths, mark };
         if is_left {
             left.push(lane);
         } else {

@@ -74,6 +74,29 @@ fn cut_heading(left: Option<V2>, right: Option<V2>, fallback: f64) -> (f64, bool
     }
 }
 
+/// The heading near `base` (±30°, never more than [`MAX_SLANT`] from the lanes' `dir`)
+/// whose cross-section holds `points` in the narrowest strip: ends that are not quite on
+/// one line then stick out of the section's cut as little as possible.
+fn narrowest(points: &[V2], base: f64, dir: f64) -> f64 {
+    let spread = |h: f64| {
+        let u = V2::unit(h);
+        let (lo, hi) = points.iter().map(|p| p.dot(u)).fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| (lo.min(x), hi.max(x)));
+        hi - lo
+    };
+    let mut best = (spread(base), base);
+    for k in -120i32..=120 {
+        let h = base + f64::from(k) * 0.25f64.to_radians();
+        if heading_diff(h, dir) > MAX_SLANT {
+            continue;
+        }
+        let s = spread(h);
+        if s < best.0 - 1e-9 {
+            best = (s, h);
+        }
+    }
+    best.1
+}
+
 /// The borders of a group as polylines in its reference direction (a shared border holds
 /// both neighbours' bounds unless they are the same).
 pub fn border_polylines(g: &Group, prep: &[Option<Prepared>]) -> Vec<Vec<Vec<V2>>> {
@@ -118,8 +141,11 @@ pub fn build(g: &Group, net: &LaneletNetwork, prep: &[Option<Prepared>], tol: f6
     };
     let (l0, r0) = ends(false);
     let (l1, r1) = ends(true);
+    let firsts: Vec<V2> = borders.iter().flatten().filter_map(|b| b.first().copied()).collect();
+    let lasts: Vec<V2> = borders.iter().flatten().filter_map(|b| b.last().copied()).collect();
     let (h0, ok0) = cut_heading(l0, r0, dir0);
     let (h1, ok1) = cut_heading(l1, r1, dir1);
+    let (h0, h1) = (narrowest(&firsts, h0, dir0), narrowest(&lasts, h1, dir1));
     for (ok, at) in [(ok0, "start"), (ok1, "end")] {
         if !ok {
             warnings.push(Warning::new(
@@ -134,10 +160,8 @@ pub fn build(g: &Group, net: &LaneletNetwork, prep: &[Option<Prepared>], tol: f6
     // the cross-sections are moved out until no bound starts before (ends after) them: the
     // lanes then cover every bound, at worst a few centimetres longer than it
     let (t0, t1) = (V2::unit(h0), V2::unit(h1));
-    let firsts = borders.iter().flatten().filter_map(|b| b.first());
-    let lasts = borders.iter().flatten().filter_map(|b| b.last());
-    let back0 = firsts.map(|p| -p.sub(first).dot(t0)).fold(0.0, f64::max);
-    let ahead1 = lasts.map(|p| p.sub(last).dot(t1)).fold(0.0, f64::max);
+    let back0 = firsts.iter().map(|p| -p.sub(first).dot(t0)).fold(0.0, f64::max);
+    let ahead1 = lasts.iter().map(|p| p.sub(last).dot(t1)).fold(0.0, f64::max);
     for (d, at) in [(back0, "start"), (ahead1, "end")] {
         if d > 0.05 {
             warnings.push(Warning::new(
@@ -188,5 +212,11 @@ pub fn build(g: &Group, net: &LaneletNetwork, prep: &[Option<Prepared>], tol: f6
         ));
     }
     let (line, fitted) = (geom.line, geom.fitted);
+    if fitted.max_error > tol {
+        warnings.push(Warning::new(
+            Subject::Lanelet(id_of(0)),
+            format!("its lane borders could be fitted only within {:.3} m of the bounds (asked: {tol} m)", fitted.max_error),
+        ));
+    }
     Some(SectionGeom { line, fitted })
 }

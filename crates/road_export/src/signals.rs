@@ -127,14 +127,23 @@ pub fn add_signals(pl: &Places, roads: &mut [Road], next_id: &mut u64, warnings:
             light_refs.entry(s.get()).or_default().push(i);
         }
     }
-    let mut put = |roads: &mut [Road], spot: &Spot, sig: Signal, refs: Vec<(usize, SignalReference)>| {
+    let put = |roads: &mut [Road], spot: &Spot, sig: Signal, refs: Vec<(usize, SignalReference)>, warnings: &mut Vec<Warning>, subject: Subject| {
         if let Some(r) = roads.get_mut(spot.road) {
             r.signals.push(sig);
         }
-        for (road, sr) in refs {
-            if let Some(r) = roads.get_mut(road) {
-                r.signal_references.push(sr);
-            }
+        // OpenDRIVE says "this signal also applies here" with a <signalReference>, which
+        // esmini 3.6 refuses with an error: they are left out, each a warning
+        let mut roads_named: Vec<u64> = refs.iter().filter_map(|(road, _)| roads.get(*road).map(|r| r.id)).collect();
+        roads_named.dedup();
+        if !roads_named.is_empty() {
+            let list: Vec<String> = roads_named.iter().map(u64::to_string).collect();
+            warnings.push(Warning::new(
+                subject,
+                format!(
+                    "it also applies to lanes of road(s) {}; the signalReference that would say so is not written (esmini 3.6 reports it as an error)",
+                    list.join(", ")
+                ),
+            ));
         }
     };
     for sign in &net.traffic_signs {
@@ -203,7 +212,7 @@ pub fn add_signals(pl: &Places, roads: &mut [Road], next_id: &mut u64, warnings:
                 value: value.map(|(v, u)| (v, u)),
                 validity: validity.clone(),
             };
-            put(roads, &spot, sig, if k == 0 { others.clone() } else { Vec::new() });
+            put(roads, &spot, sig, if k == 0 { others.clone() } else { Vec::new() }, warnings, subject);
         }
     }
     for light in &net.traffic_lights {
@@ -245,7 +254,7 @@ pub fn add_signals(pl: &Places, roads: &mut [Road], next_id: &mut u64, warnings:
             value: None,
             validity,
         };
-        put(roads, &spot, sig, others);
+        put(roads, &spot, sig, others, warnings, subject);
     }
     for (i, l) in net.lanelets.iter().enumerate() {
         let Some(stop) = &l.stop_line else { continue };
@@ -273,7 +282,7 @@ pub fn add_signals(pl: &Places, roads: &mut [Road], next_id: &mut u64, warnings:
             value: None,
             validity: vec![Validity { from: p.lane, to: p.lane }],
         };
-        put(roads, &spot, sig, Vec::new());
+        put(roads, &spot, sig, Vec::new(), warnings, Subject::Lanelet(l.id.get()));
     }
 }
 

@@ -87,6 +87,9 @@ fn lane(o: &mut Out, depth: usize, l: &Lane) {
         o.line(depth + 1, &format!("<width sOffset=\"{}\" {}/>", num(w.s), cubic_attrs(w)));
     }
     mark(o, depth + 1, &l.mark);
+    if let Some(user) = l.access {
+        o.line(depth + 1, &format!("<access sOffset=\"0\" rule=\"allow\" restriction=\"{user}\"/>"));
+    }
     o.line(depth, "</lane>");
 }
 
