@@ -167,7 +167,8 @@ pub fn fit_section(line: &RefLine, borders: &[Vec<Border>], s0: f64, s1: f64, br
         grid.extend(b.stations());
     }
     grid.extend(breaks.iter().copied());
-    let n_uniform = (((s1 - s0) / SAMPLE_STEP).ceil() as usize).min(1_000_000);
+    // hostile lengths: at most 20,000 samples between the vertices
+    let n_uniform = (((s1 - s0) / SAMPLE_STEP).ceil() as usize).min(20_000);
     grid.extend((1..n_uniform).map(|k| s0 + (s1 - s0) * k as f64 / n_uniform as f64));
     grid.retain(|s| s.is_finite() && *s >= s0 && *s <= s1);
     grid.sort_by(f64::total_cmp);

@@ -102,7 +102,7 @@ impl RefLine {
     fn sample_points(&self) -> Vec<(f64, V2)> {
         let mut out = Vec::new();
         for g in &self.geometries {
-            let n = ((g.length / SAMPLE_STEP).ceil() as usize).clamp(4, 100_000);
+            let n = ((g.length / SAMPLE_STEP).ceil() as usize).clamp(4, 20_000);
             for k in 0..n {
                 let ds = g.length * k as f64 / n as f64;
                 let p = g.pose_at(ds);

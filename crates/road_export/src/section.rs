@@ -21,7 +21,7 @@ const MIN_SPEED: f64 = 0.15;
 /// How much the fitted borders fold: 0 when none does, else the worst shortfall of 1 − κ·t
 /// below [`MIN_SPEED`] (sampled every 0.25 m).
 fn folding(line: &RefLine, fitted: &crate::offsets::FittedBorders) -> f64 {
-    let n = ((line.length / 0.25).ceil() as usize).clamp(2, 400_000);
+    let n = ((line.length / 0.25).ceil() as usize).clamp(2, 40_000);
     let mut worst: f64 = 0.0;
     for k in 0..=n {
         let s = line.length * k as f64 / n as f64;

@@ -1,1 +1,9 @@
-//! placeholder
+//! The road_export tests, one binary: modules by feature.
+
+mod common;
+
+mod esmini_load;
+mod hostile;
+mod layout;
+mod map_round_trip;
+mod schema;
