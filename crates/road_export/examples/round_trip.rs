@@ -21,14 +21,27 @@ fn main() {
     }
     let (mut pass, mut total, mut worst) = (0, 0, 0.0f64);
     for f in &files {
-        let read = match commonroad::xml::read_scenario_file(f) {
-            Ok(r) => r,
-            Err(e) => {
-                println!("{}: unreadable: {e}", f.display());
-                continue;
+        // an OpenSCENARIO file: osc2cr's conversion of it, in-process (full precision)
+        let network = if f.extension().is_some_and(|e| e == "xosc") {
+            let name = stem(f);
+            let request = convert::Request { path: f, name: &name, config: 1, parameters: &[], source: String::new() };
+            match convert::convert_scenario_keeping(&request, &convert::ConvertOptions::default(), true).1 {
+                Some(m) => m.scenario.network,
+                None => {
+                    println!("{}: does not convert", f.display());
+                    continue;
+                }
+            }
+        } else {
+            match commonroad::xml::read_scenario_file(f) {
+                Ok(r) => r.scenario.network,
+                Err(e) => {
+                    println!("{}: unreadable: {e}", f.display());
+                    continue;
+                }
             }
         };
-        let net = &read.scenario.network;
+        let net = &network;
         if net.lanelets.is_empty() {
             continue;
         }

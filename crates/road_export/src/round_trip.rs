@@ -28,6 +28,8 @@ pub struct LaneletResult {
     pub matched: Vec<u64>,
     /// Largest distance of its bounds from the matched bounds (infinite without a match).
     pub bound_error: f64,
+    /// Where on its bounds the error is largest.
+    pub worst_at: Option<(f64, f64)>,
     /// Relations not found between the matched lanelets, e.g. `successor 12`.
     pub lost: Vec<String>,
 }
@@ -69,7 +71,8 @@ impl Comparison {
             .filter(|l| l.bound_error > tol || !l.lost.is_empty())
             .map(|l| {
                 let err = if l.bound_error.is_finite() { format!("{:.4} m", l.bound_error) } else { "no match".into() };
-                format!("lanelet {}: bound error {err}{}", l.id, if l.lost.is_empty() { String::new() } else { format!(", lost {}", l.lost.join(", ")) })
+                let at = l.worst_at.map(|(x, y)| format!(" at ({x:.2}, {y:.2})")).unwrap_or_default();
+                format!("lanelet {}: bound error {err}{at}{}", l.id, if l.lost.is_empty() { String::new() } else { format!(", lost {}", l.lost.join(", ")) })
             })
             .collect()
     }
@@ -134,14 +137,17 @@ pub fn compare(original: &LaneletNetwork, back: &LaneletNetwork) -> Comparison {
     let (mut relations, mut kept) = (0, 0);
     for (i, (l, o)) in original.lanelets.iter().zip(&orig).enumerate() {
         let m = &pieces[i];
+        let mut worst_at: Option<V2> = None;
         let err = if m.is_empty() {
             f64::INFINITY
         } else {
             let side = |pts: &[V2], pick: fn(&Shape) -> &Vec<V2>| {
                 let index = SegmentIndex::new(m.iter().filter_map(|&j| read.get(j)).map(|b| pick(b).as_slice()), 2.0);
-                samples(pts, STEP).into_iter().map(|p| index.distance(p, ERROR_CAP)).fold(0.0, f64::max)
+                samples(pts, STEP).into_iter().map(|p| (index.distance(p, ERROR_CAP), p)).fold((0.0, None), |a, (d, p)| if d > a.0 { (d, Some(p)) } else { a })
             };
-            side(&o.left, |s| &s.left).max(side(&o.right, |s| &s.right))
+            let (l, r) = (side(&o.left, |s| &s.left), side(&o.right, |s| &s.right));
+            worst_at = if l.0 >= r.0 { l.1 } else { r.1 };
+            l.0.max(r.0)
         };
         // relations
         let pieces_of = |id: u64| orig_pos.get(&id).and_then(|&k| pieces.get(k)).cloned().unwrap_or_default();
@@ -181,7 +187,7 @@ pub fn compare(original: &LaneletNetwork, back: &LaneletNetwork) -> Comparison {
             }
         }
         let matched = m.iter().filter_map(|&j| back.lanelets.get(j)).map(|b| b.id.get()).collect();
-        results.push(LaneletResult { id: l.id.get(), matched, bound_error: err, lost });
+        results.push(LaneletResult { id: l.id.get(), matched, bound_error: err, worst_at: worst_at.map(|p| (p.x, p.y)), lost });
     }
     let (area, area_added) = areas(&orig, &read);
     Comparison { lanelets: results, relations, relations_kept: kept, area, area_added }

@@ -6,7 +6,7 @@ use crate::groups::Group;
 use crate::lanelets::Prepared;
 use crate::offsets::{fit_section, Border, FittedBorders};
 use crate::reference::{knots_along, Knot, RefLine};
-use crate::vec2::V2;
+use crate::vec2::{SegmentIndex, V2};
 use crate::warning::{Subject, Warning};
 use commonroad::LaneletNetwork;
 use std::f64::consts::FRAC_PI_2;
@@ -74,6 +74,26 @@ fn cut_heading(left: Option<V2>, right: Option<V2>, fallback: f64) -> (f64, bool
     }
 }
 
+/// Largest distance of a fitted border (sampled every 0.5 m) from its bound polylines: the
+/// fit is against the offsets of projected vertices, so a vertex projected onto the wrong
+/// part of the line would go unnoticed by the fit itself.
+fn off_bounds(line: &RefLine, fitted: &crate::offsets::FittedBorders, borders: &[Vec<Vec<V2>>]) -> f64 {
+    let n = ((line.length / 0.5).ceil() as usize).clamp(2, 40_000);
+    let mut worst: f64 = 0.0;
+    for (k, set) in borders.iter().enumerate() {
+        let (Some(cubics), false) = (fitted.cubics.get(k), set.is_empty()) else { continue };
+        let index = SegmentIndex::new(set.iter().map(Vec::as_slice), 1.0);
+        for j in 0..=n {
+            let s = line.length * j as f64 / n as f64;
+            let i = fitted.pieces.partition_point(|&p| p <= s).saturating_sub(1);
+            if let Some(c) = cubics.get(i) {
+                worst = worst.max(index.distance(line.pose(s).at_t(c.value(s)), 2.0));
+            }
+        }
+    }
+    worst
+}
+
 /// The heading near `base` (±30°, never more than [`MAX_SLANT`] from the lanes' `dir`)
 /// whose cross-section holds `points` in the narrowest strip: ends that are not quite on
 /// one line then stick out of the section's cut as little as possible.
@@ -89,8 +109,9 @@ fn narrowest(points: &[V2], base: f64, dir: f64) -> f64 {
         if heading_diff(h, dir) > MAX_SLANT {
             continue;
         }
+        // only a real gain turns the cut (noise would pick any angle for collinear ends)
         let s = spread(h);
-        if s < best.0 - 1e-9 {
+        if s < best.0 - 1e-3 {
             best = (s, h);
         }
     }
@@ -192,7 +213,7 @@ pub fn build(g: &Group, net: &LaneletNetwork, prep: &[Option<Prepared>], tol: f6
         let backwards = projected.iter().flatten().map(|b| b.backwards).fold(0.0, f64::max);
         let breaks: Vec<f64> = line.knots_s.iter().copied().filter(|&s| s > 0.0 && s < line.length).collect();
         let fitted = fit_section(&line, &projected, 0.0, line.length, &breaks, tol);
-        let fold = folding(&line, &fitted).max(backwards - 0.01);
+        let fold = folding(&line, &fitted).max(backwards - 0.01).max(off_bounds(&line, &fitted, &borders) - 2.0 * tol);
         let better = best.as_ref().is_none_or(|(_, f)| fold < *f);
         if better {
             best = Some((SectionGeom { line, fitted }, fold));
