@@ -33,41 +33,6 @@ fn median(mut v: Vec<Duration>) -> Duration {
     v.get(v.len() / 2).copied().unwrap_or_default()
 }
 
-/// esmini loads `xodr` (one car on the first lane of the first road, 0.1 s, no error logged).
-fn esmini_loads(esmini: &Path, xodr: &Path, dir: &Path) -> bool {
-    let Ok(text) = std::fs::read_to_string(xodr) else { return false };
-    let Ok(loaded) = opendrive::parse_str(&text, xodr) else { return false };
-    let Some(road) = loaded.network.roads.first() else { return false };
-    let lane = road.lane_sections.first().and_then(|s| s.right.first().or(s.left.first())).map_or(-1, |l| l.id);
-    let xosc = format!(
-        r#"<?xml version="1.0" encoding="UTF-8"?>
-<OpenSCENARIO><FileHeader revMajor="1" revMinor="3" date="2026-01-01T00:00:00" description="load" author="osc2cr"/>
-<ParameterDeclarations/><CatalogLocations/><RoadNetwork><LogicFile filepath="{}"/></RoadNetwork>
-<Entities><ScenarioObject name="Car"><Vehicle name="car" vehicleCategory="car">
-<BoundingBox><Center x="1.4" y="0" z="0.75"/><Dimensions width="1.8" length="4.5" height="1.5"/></BoundingBox>
-<Performance maxSpeed="50" maxAcceleration="5" maxDeceleration="10"/>
-<Axles><FrontAxle maxSteering="0.5" wheelDiameter="0.6" trackWidth="1.6" positionX="2.8" positionZ="0.3"/>
-<RearAxle maxSteering="0" wheelDiameter="0.6" trackWidth="1.6" positionX="0" positionZ="0.3"/></Axles><Properties/></Vehicle></ScenarioObject></Entities>
-<Storyboard><Init><Actions><Private entityRef="Car"><PrivateAction><TeleportAction><Position>
-<LanePosition roadId="{}" laneId="{lane}" s="{}" offset="0"/></Position></TeleportAction></PrivateAction></Private></Actions></Init>
-<StopTrigger><ConditionGroup><Condition name="end" delay="0" conditionEdge="none"><ByValueCondition>
-<SimulationTimeCondition value="0.1" rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup></StopTrigger></Storyboard></OpenSCENARIO>
-"#,
-        xodr.display(),
-        road.id,
-        0.5 * road.length
-    );
-    let file = dir.join("load.xosc");
-    if std::fs::write(&file, xosc).is_err() {
-        return false;
-    }
-    let Ok(out) = Command::new(esmini).args(["--headless", "--fixed_timestep", "0.05", "--disable_log", "--osc"]).arg(&file).current_dir(dir).output() else {
-        return false;
-    };
-    let text = format!("{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
-    out.status.success() && !text.contains("[error]") && text.contains("Car New position")
-}
-
 /// The round trip of an OpenDRIVE file against the network it was made from.
 fn measure(network: &commonroad::LaneletNetwork, xodr: &Path, esmini: Option<&Path>, dir: &Path) -> Measured {
     let mut m = Measured { ok: true, seconds: None, error: None, relations: None, added: None, esmini: None, note: String::new() };
@@ -81,7 +46,7 @@ fn measure(network: &commonroad::LaneletNetwork, xodr: &Path, esmini: Option<&Pa
         }
         Err(e) => m.note = format!("osc2cr cannot read it: {e}"),
     }
-    m.esmini = esmini.map(|e| esmini_loads(e, xodr, dir));
+    m.esmini = esmini.map(|e| common::esmini_loads(e, xodr, dir).is_ok());
     m
 }
 
@@ -129,7 +94,22 @@ fn main() {
         let mut s = commonroad::Scenario::new(header);
         s.network = m.network.clone();
         let file = maps_dir.join(format!("{}.xml", m.name));
-        let problems = commonroad::PlanningProblemSet::default();
+        // the writer needs a planning problem (the 2020a schema does); cr2odr ignores it
+        let mut ids = s.id_allocator(None);
+        let start = m.network.lanelets.first().and_then(|l| l.bounds.left().first().zip(l.bounds.right().first()));
+        let (x, y) = start.map_or((0.0, 0.0), |(a, b)| (0.5 * (a.x + b.x), 0.5 * (a.y + b.y)));
+        let problems = commonroad::PlanningProblemSet {
+            problems: vec![commonroad::PlanningProblem {
+                id: ids.planning_problem(),
+                initial_state: commonroad::PlanningInitialState { x, y, orientation: 0.0, velocity: 0.0, yaw_rate: 0.0, slip_angle: 0.0, acceleration: None },
+                goal_states: vec![commonroad::GoalState {
+                    time: commonroad::TimeInterval::new(1, 10).expect("interval"),
+                    position: None,
+                    orientation: None,
+                    velocity: None,
+                }],
+            }],
+        };
         let bytes = commonroad::xml::write_scenario(&s, &problems).expect("writes the map");
         std::fs::write(&file, bytes).expect("writes");
         inputs.push(file);

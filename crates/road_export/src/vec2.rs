@@ -100,27 +100,31 @@ pub struct SegmentIndex {
 }
 
 impl SegmentIndex {
-    /// Indexes the segments of the polylines in `lines` with cells of `cell` m.
-    pub fn new<'a>(lines: impl IntoIterator<Item = &'a [V2]>, cell: f64) -> SegmentIndex {
+    /// Indexes the segments of the polylines in `lines` with cells of at least `cell` m
+    /// (more for hostile lengths: at most about two million cell entries). A segment is
+    /// entered in the cells it passes through.
+    pub fn new<'a>(lines: impl IntoIterator<Item = &'a [V2]> + Clone, cell: f64) -> SegmentIndex {
+        let total: f64 = lines.clone().into_iter().map(length).sum();
         let cell = if cell.is_finite() && cell > 0.0 { cell } else { 1.0 };
+        let cell = cell.max(total / 1_000_000.0);
         let mut cells: std::collections::HashMap<(i64, i64), Vec<(V2, V2)>> = std::collections::HashMap::new();
-        let key = |v: f64| (v / cell).floor() as i64;
+        let key = |p: V2| ((p.x / cell).floor() as i64, (p.y / cell).floor() as i64);
         for line in lines {
             let segs: Vec<(V2, V2)> = match line {
                 [only] => vec![(*only, *only)],
                 _ => line.windows(2).map(|w| (w[0], w[1])).collect(),
             };
             for (a, b) in segs {
-                let (x0, x1) = (key(a.x.min(b.x)), key(a.x.max(b.x)));
-                let (y0, y1) = (key(a.y.min(b.y)), key(a.y.max(b.y)));
-                // hostile sizes: a segment spanning a huge box goes into its corner cells only
-                if (x1 - x0 + 1).saturating_mul(y1 - y0 + 1) > 1_000_000 {
-                    cells.entry((x0, y0)).or_default().push((a, b));
-                    continue;
-                }
-                for x in x0..=x1 {
-                    for y in y0..=y1 {
-                        cells.entry((x, y)).or_default().push((a, b));
+                let n = ((a.dist(b) / (0.25 * cell)).ceil() as usize).clamp(1, 8_000_000);
+                let mut last = None;
+                for k in 0..=n {
+                    let c = key(a.lerp(b, k as f64 / n as f64));
+                    if last != Some(c) {
+                        let v = cells.entry(c).or_default();
+                        if v.last() != Some(&(a, b)) {
+                            v.push((a, b));
+                        }
+                        last = Some(c);
                     }
                 }
             }
@@ -172,7 +176,7 @@ pub fn samples(a: &[V2], step: f64) -> Vec<V2> {
 pub fn one_sided_distance(a: &[V2], b: &[V2], step: f64, cap: f64) -> f64 {
     // cells about half a segment long: few cells per segment, few segments per cell
     let mean = length(b) / b.len().max(2).saturating_sub(1) as f64;
-    let index = SegmentIndex::new([b], (0.5 * mean).max(cap).max(0.5));
+    let index = SegmentIndex::new([b].into_iter(), (0.5 * mean).max(cap).max(0.5));
     samples(a, step).into_iter().map(|p| index.distance(p, cap)).fold(0.0, f64::max)
 }
 

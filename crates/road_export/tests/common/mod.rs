@@ -92,3 +92,64 @@ pub fn read_back(xodr: &str) -> LaneletNetwork {
     let loaded = opendrive::parse_str(xodr, Path::new("export.xodr")).unwrap_or_else(|e| panic!("the export does not read back: {e}"));
     map::convert(&loaded.network, &map::MapOptions::default()).network
 }
+
+/// The OpenSCENARIO file of the load check: one car teleported onto lane `lane` of road
+/// `road` at `s`, stopped after 0.1 s.
+pub fn load_check_scenario(xodr: &Path, road: &str, lane: i32, s: f64) -> String {
+    format!(
+        r#"<?xml version="1.0" encoding="UTF-8"?>
+<OpenSCENARIO>
+  <FileHeader revMajor="1" revMinor="3" date="2026-01-01T00:00:00" description="load check" author="osc2cr"/>
+  <ParameterDeclarations/>
+  <CatalogLocations/>
+  <RoadNetwork><LogicFile filepath="{}"/></RoadNetwork>
+  <Entities>
+    <ScenarioObject name="Car">
+      <Vehicle name="car" vehicleCategory="car">
+        <BoundingBox><Center x="1.4" y="0" z="0.75"/><Dimensions width="1.8" length="4.5" height="1.5"/></BoundingBox>
+        <Performance maxSpeed="50" maxAcceleration="5" maxDeceleration="10"/>
+        <Axles>
+          <FrontAxle maxSteering="0.5" wheelDiameter="0.6" trackWidth="1.6" positionX="2.8" positionZ="0.3"/>
+          <RearAxle maxSteering="0" wheelDiameter="0.6" trackWidth="1.6" positionX="0" positionZ="0.3"/>
+        </Axles>
+        <Properties/>
+      </Vehicle>
+    </ScenarioObject>
+  </Entities>
+  <Storyboard>
+    <Init><Actions><Private entityRef="Car"><PrivateAction><TeleportAction><Position>
+      <LanePosition roadId="{road}" laneId="{lane}" s="{s}" offset="0"/>
+    </Position></TeleportAction></PrivateAction></Private></Actions></Init>
+    <StopTrigger><ConditionGroup><Condition name="end" delay="0" conditionEdge="none">
+      <ByValueCondition><SimulationTimeCondition value="0.1" rule="greaterThan"/></ByValueCondition>
+    </Condition></ConditionGroup></StopTrigger>
+  </Storyboard>
+</OpenSCENARIO>
+"#,
+        xodr.display()
+    )
+}
+
+/// Whether esmini 3.6.0 (`esmini`) loads `xodr`: the load check on the first lane of the
+/// first road runs in `dir`, exits 0, places the car and logs no error.
+pub fn esmini_loads(esmini: &Path, xodr: &Path, dir: &Path) -> Result<(), String> {
+    let text = std::fs::read_to_string(xodr).map_err(|e| e.to_string())?;
+    let net = opendrive::parse_str(&text, xodr).map_err(|e| format!("osc2cr cannot read it: {e}"))?.network;
+    let road = net.roads.first().ok_or("no road")?;
+    let lane = road.lane_sections.first().and_then(|s| s.right.first().or(s.left.first())).map_or(-1, |l| l.id);
+    let file = dir.join(format!("{}.xosc", xodr.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default()));
+    std::fs::write(&file, load_check_scenario(xodr, &road.id, lane, 0.5 * road.length)).map_err(|e| e.to_string())?;
+    let out = std::process::Command::new(esmini)
+        .args(["--headless", "--fixed_timestep", "0.05", "--disable_log", "--osc"])
+        .arg(&file)
+        .current_dir(dir)
+        .output()
+        .map_err(|e| format!("esmini does not run: {e}"))?;
+    let log = format!("{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
+    let errors: Vec<&str> = log.lines().filter(|l| l.contains("[error]")).collect();
+    if out.status.success() && errors.is_empty() && log.contains("Car New position") {
+        Ok(())
+    } else {
+        Err(format!("exit {:?}; {}", out.status.code(), errors.join(" | ")))
+    }
+}
