@@ -26,7 +26,6 @@ const KNOWN: &[(&str, &str)] = &[
         "ghost_route",
         "lanelets 17/18 read back 6.3 cm off at (200.09, -137.00), where a bend ends, in the full-precision network of the in-process conversion; the same network from osc2cr's 6-decimal XML passes (1.1 cm): not understood yet",
     ),
-    ("DoubleLaneChanger", "lanelet 127 of the corpus conversion is a zero-width ring whose start lies 65 m off its neighbours'; its road's cross-sections are wrong"),
 ];
 
 #[test]
