@@ -51,7 +51,7 @@ impl Prepared {
 fn outline_crosses(left: &[V2], right: &[V2]) -> bool {
     let ring: Vec<V2> = left.iter().chain(right.iter().rev()).copied().collect();
     let n = ring.len();
-    if n < 4 || n > MAX_CHECKED_SEGMENTS {
+    if !(4..=MAX_CHECKED_SEGMENTS).contains(&n) {
         return false;
     }
     for i in 0..n {

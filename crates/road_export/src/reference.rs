@@ -76,7 +76,7 @@ impl RefLine {
             let chord = w[0].p.dist(w[1].p);
             let probe = ParamPoly3::new(u, v, PRange::Normalized, chord.max(1e-9));
             let len = probe.arc_length();
-            if !(len > 1e-9) {
+            if len.is_nan() || len <= 1e-9 {
                 continue;
             }
             let pp = ParamPoly3::new(u, v, PRange::Normalized, len);

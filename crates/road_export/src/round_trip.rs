@@ -265,7 +265,7 @@ fn areas(orig: &[Shape], read: &[Shape]) -> (f64, f64) {
         y0 = y0.min(s.min.y);
         y1 = y1.max(s.max.y);
     }
-    if !(y1 > y0) {
+    if y1.is_nan() || y0.is_nan() || y1 <= y0 {
         return (0.0, 0.0);
     }
     let n_rows = (((y1 - y0) / ROW).ceil() as usize).min(2_000_000);

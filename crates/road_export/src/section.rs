@@ -206,7 +206,7 @@ pub fn build(g: &Group, net: &LaneletNetwork, prep: &[Option<Prepared>], tol: f6
     for ref_tol in REFERENCE_TOLS {
         let knots = knots_along(&middle, start_knot, end_knot, ref_tol, middle.len() + 2);
         let line = RefLine::through(&knots);
-        if !(line.length > 0.0) {
+        if line.length.is_nan() || line.length <= 0.0 {
             continue;
         }
         let projected: Vec<Vec<Border>> = borders.iter().map(|set| set.iter().map(|b| Border::new(b, &line)).collect()).collect();

@@ -209,7 +209,7 @@ pub fn add_signals(pl: &Places, roads: &mut [Road], next_id: &mut u64, warnings:
                 country,
                 kind,
                 subtype,
-                value: value.map(|(v, u)| (v, u)),
+                value,
                 validity: validity.clone(),
             };
             put(roads, &spot, sig, if k == 0 { others.clone() } else { Vec::new() }, warnings, subject);

@@ -64,7 +64,7 @@ fn find(parent: &mut [usize], mut x: usize) -> usize {
 }
 
 /// Lane of `p` at a road end: its `predecessors` list at the start, `successors` at the end.
-fn lane_list<'a>(roads: &'a mut [Road], p: Placed, at_start: bool) -> Option<&'a mut Vec<i32>> {
+fn lane_list(roads: &mut [Road], p: Placed, at_start: bool) -> Option<&mut Vec<i32>> {
     let road = roads.get_mut(p.road)?;
     let sec = road.sections.get_mut(p.section)?;
     let lane = sec.left.iter_mut().chain(sec.right.iter_mut()).find(|l| l.id == p.lane)?;

@@ -176,7 +176,7 @@ pub fn samples(a: &[V2], step: f64) -> Vec<V2> {
 pub fn one_sided_distance(a: &[V2], b: &[V2], step: f64, cap: f64) -> f64 {
     // cells about half a segment long: few cells per segment, few segments per cell
     let mean = length(b) / b.len().max(2).saturating_sub(1) as f64;
-    let index = SegmentIndex::new([b].into_iter(), (0.5 * mean).max(cap).max(0.5));
+    let index = SegmentIndex::new([b], (0.5 * mean).max(cap).max(0.5));
     samples(a, step).into_iter().map(|p| index.distance(p, cap)).fold(0.0, f64::max)
 }
 
