@@ -12,18 +12,18 @@ use commonroad::{DrivingDir, LaneletNetwork};
 use std::collections::BTreeMap;
 
 /// Largest distance (m) between two bounds that count as one shared border.
-pub const SHARED: f64 = 0.1;
+pub(crate) const SHARED: f64 = 0.1;
 
 /// A lanelet in a section, and whether it drives against the section's reference direction.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Member {
+pub(crate) struct Member {
     pub idx: usize,
     pub flipped: bool,
 }
 
 /// Lanelets side by side, left to right in the reference direction.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Group {
+pub(crate) struct Group {
     pub members: Vec<Member>,
     /// Left-hand traffic: the lanes along the reference direction are on the left.
     pub lht: bool,
@@ -33,7 +33,7 @@ pub struct Group {
 
 impl Group {
     /// Reverses the reference direction.
-    pub fn flip(&mut self) {
+    pub(crate) fn flip(&mut self) {
         self.members.reverse();
         for m in &mut self.members {
             m.flipped = !m.flipped;
@@ -129,7 +129,7 @@ fn neighbours(net: &LaneletNetwork, prep: &[Option<Prepared>], pos: &BTreeMap<u6
 }
 
 /// Groups every exportable lanelet into sections.
-pub fn group(net: &LaneletNetwork, prep: &[Option<Prepared>], warnings: &mut Vec<Warning>) -> Vec<Group> {
+pub(crate) fn group(net: &LaneletNetwork, prep: &[Option<Prepared>], warnings: &mut Vec<Warning>) -> Vec<Group> {
     let pos: BTreeMap<u64, usize> = net.lanelets.iter().enumerate().map(|(i, l)| (l.id.get(), i)).collect();
     let nb = neighbours(net, prep, &pos, warnings);
     let id_of = |i: usize| net.lanelets.get(i).map_or(0, |l| l.id.get());

@@ -7,13 +7,13 @@ use commonroad::{Lanelet, LaneletType, RoadUser};
 
 /// A lane's type and the road user its `<access>` allows (if restricted).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct LaneKind {
+pub(crate) struct LaneKind {
     pub kind: &'static str,
     pub access: Option<&'static str>,
 }
 
 /// The lane type of a lanelet, and what was approximated (for a warning).
-pub fn lane_type(l: &Lanelet) -> (LaneKind, Option<String>) {
+pub(crate) fn lane_type(l: &Lanelet) -> (LaneKind, Option<String>) {
     let (kind, note) = plain_type(l);
     match kind {
         "bus" => (LaneKind { kind: "driving", access: Some("bus") }, note),
@@ -70,7 +70,7 @@ fn plain_type(l: &Lanelet) -> (&'static str, Option<String>) {
 }
 
 /// The road type of lanes with these lanelets (the class most of them name).
-pub fn road_type<'a>(lanelets: impl Iterator<Item = &'a Lanelet>) -> &'static str {
+pub(crate) fn road_type<'a>(lanelets: impl Iterator<Item = &'a Lanelet>) -> &'static str {
     let (mut motorway, mut town, mut rural) = (0, 0, 0);
     for l in lanelets {
         let has = |t: LaneletType| l.lanelet_types.contains(&t);

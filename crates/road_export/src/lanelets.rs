@@ -7,15 +7,15 @@ use crate::warning::{Subject, Warning};
 use commonroad::{Lanelet, LaneletNetwork};
 
 /// Points closer than this are one point (m).
-pub const SAME_POINT: f64 = 1e-6;
+pub(crate) const SAME_POINT: f64 = 1e-6;
 /// Lanelets shorter than this are not exported (m).
-pub const MIN_LENGTH: f64 = 1e-3;
+pub(crate) const MIN_LENGTH: f64 = 1e-3;
 /// Outlines with more segments than this are not checked for self-intersection (quadratic).
 const MAX_CHECKED_SEGMENTS: usize = 4_000;
 
 /// A lanelet ready for geometry.
 #[derive(Debug, Clone)]
-pub struct Prepared {
+pub(crate) struct Prepared {
     pub left: Vec<V2>,
     pub right: Vec<V2>,
     /// Centre line (pairs of bound points), without repeated points.
@@ -25,21 +25,21 @@ pub struct Prepared {
 impl Prepared {
     /// The bound on the left of the reference direction (`flipped`: the lanelet drives
     /// against it, so its right bound reversed).
-    pub fn ref_left(&self, flipped: bool) -> Vec<V2> {
+    pub(crate) fn ref_left(&self, flipped: bool) -> Vec<V2> {
         if flipped {
             self.right.iter().rev().copied().collect()
         } else {
             self.left.clone()
         }
     }
-    pub fn ref_right(&self, flipped: bool) -> Vec<V2> {
+    pub(crate) fn ref_right(&self, flipped: bool) -> Vec<V2> {
         if flipped {
             self.left.iter().rev().copied().collect()
         } else {
             self.right.clone()
         }
     }
-    pub fn ref_centre(&self, flipped: bool) -> Vec<V2> {
+    pub(crate) fn ref_centre(&self, flipped: bool) -> Vec<V2> {
         if flipped {
             self.centre.iter().rev().copied().collect()
         } else {
@@ -69,7 +69,7 @@ fn outline_crosses(left: &[V2], right: &[V2]) -> bool {
 }
 
 /// Prepares one lanelet; `None` (with a warning) when it cannot become a lane.
-pub fn prepare(l: &Lanelet, warnings: &mut Vec<Warning>) -> Option<Prepared> {
+pub(crate) fn prepare(l: &Lanelet, warnings: &mut Vec<Warning>) -> Option<Prepared> {
     let id = Subject::Lanelet(l.id.get());
     let raw_l: Vec<V2> = l.bounds.left().iter().map(V2::of).collect();
     let raw_r: Vec<V2> = l.bounds.right().iter().map(V2::of).collect();
@@ -97,6 +97,6 @@ pub fn prepare(l: &Lanelet, warnings: &mut Vec<Warning>) -> Option<Prepared> {
 }
 
 /// Prepares every lanelet of the network (`None` where it cannot be exported).
-pub fn prepare_all(net: &LaneletNetwork, warnings: &mut Vec<Warning>) -> Vec<Option<Prepared>> {
+pub(crate) fn prepare_all(net: &LaneletNetwork, warnings: &mut Vec<Warning>) -> Vec<Option<Prepared>> {
     net.lanelets.iter().map(|l| prepare(l, warnings)).collect()
 }

@@ -7,7 +7,7 @@ use commonroad::LineMarking;
 
 /// The road mark of a marking; `None` for unknown (no road mark is written). The flag says
 /// OpenDRIVE has no exact equivalent.
-pub fn road_mark(m: LineMarking, against_s: bool) -> (Option<Mark>, bool) {
+pub(crate) fn road_mark(m: LineMarking, against_s: bool) -> (Option<Mark>, bool) {
     use LineMarking as L;
     let mk = |kind: &'static str| Some(Mark { kind, weight: None });
     let bold = |kind: &'static str| Some(Mark { kind, weight: Some("bold") });

@@ -6,7 +6,7 @@ use opendrive::Geometry;
 
 /// What a road end links to.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum LinkTarget {
+pub(crate) enum LinkTarget {
     /// A road, at its start (`true`) or end.
     Road {
         id: u64,
@@ -19,14 +19,14 @@ pub enum LinkTarget {
 
 /// A road mark on a lane's outer border.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Mark {
+pub(crate) struct Mark {
     pub kind: &'static str,
     pub weight: Option<&'static str>,
 }
 
 /// One lane of a lane section.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Lane {
+pub(crate) struct Lane {
     pub id: i32,
     pub kind: &'static str,
     /// The road user an `<access rule="allow">` names (bus lanes).
@@ -40,7 +40,7 @@ pub struct Lane {
 
 /// A lane section.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Section {
+pub(crate) struct Section {
     pub s: f64,
     /// Lanes 1, 2, … outward.
     pub left: Vec<Lane>,
@@ -51,14 +51,14 @@ pub struct Section {
 
 /// `<validity fromLane toLane>`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Validity {
+pub(crate) struct Validity {
     pub from: i32,
     pub to: i32,
 }
 
 /// A `<signal>`.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Signal {
+pub(crate) struct Signal {
     pub id: u64,
     pub s: f64,
     pub t: f64,
@@ -75,7 +75,7 @@ pub struct Signal {
 
 /// A `<signalReference>`.
 #[derive(Debug, Clone, PartialEq)]
-pub struct SignalReference {
+pub(crate) struct SignalReference {
     pub id: u64,
     pub s: f64,
     pub t: f64,
@@ -85,7 +85,7 @@ pub struct SignalReference {
 
 /// A road.
 #[derive(Debug, Clone)]
-pub struct Road {
+pub(crate) struct Road {
     pub id: u64,
     pub name: String,
     pub junction: Option<u64>,
@@ -103,7 +103,7 @@ pub struct Road {
 
 /// A junction connection: `target` is the connecting road (default) or linked road (direct).
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Connection {
+pub(crate) struct Connection {
     pub incoming: u64,
     pub target: u64,
     pub target_at_start: bool,
@@ -112,7 +112,7 @@ pub struct Connection {
 
 /// A junction.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Junction {
+pub(crate) struct Junction {
     pub id: u64,
     pub name: String,
     pub direct: bool,
@@ -121,7 +121,7 @@ pub struct Junction {
 
 /// The document.
 #[derive(Debug, Clone, Default)]
-pub struct Document {
+pub(crate) struct Document {
     pub name: String,
     pub geo_reference: Option<String>,
     pub roads: Vec<Road>,

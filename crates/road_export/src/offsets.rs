@@ -19,7 +19,7 @@ const SAME_S: f64 = 1e-7;
 
 /// A bound polyline seen from the reference line.
 #[derive(Debug, Clone)]
-pub struct Border {
+pub(crate) struct Border {
     pts: Vec<V2>,
     /// (s, t) of each vertex, s non-decreasing.
     st: Vec<(f64, f64)>,
@@ -29,7 +29,7 @@ pub struct Border {
 
 impl Border {
     /// Projects the vertices of `pts` (in driving order along +s) onto `line`.
-    pub fn new(pts: &[V2], line: &RefLine) -> Border {
+    pub(crate) fn new(pts: &[V2], line: &RefLine) -> Border {
         let mut st: Vec<(f64, f64)> = Vec::with_capacity(pts.len());
         let mut backwards: f64 = 0.0;
         for (i, &p) in pts.iter().enumerate() {
@@ -52,13 +52,13 @@ impl Border {
     }
 
     /// Stations of the vertices.
-    pub fn stations(&self) -> impl Iterator<Item = f64> + '_ {
+    pub(crate) fn stations(&self) -> impl Iterator<Item = f64> + '_ {
         self.st.iter().map(|&(s, _)| s)
     }
 
     /// The offset of the border on the normal at `s` (the segment lines are extended past
     /// the ends).
-    pub fn t_at(&self, s: f64, line: &RefLine) -> f64 {
+    pub(crate) fn t_at(&self, s: f64, line: &RefLine) -> f64 {
         let n = self.st.len();
         if n == 0 {
             return 0.0;
@@ -93,7 +93,7 @@ impl Border {
 
 /// `a + b·ds + c·ds² + d·ds³` from `s` on.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Cubic {
+pub(crate) struct Cubic {
     pub s: f64,
     pub a: f64,
     pub b: f64,
@@ -102,12 +102,12 @@ pub struct Cubic {
 }
 
 impl Cubic {
-    pub fn value(&self, s: f64) -> f64 {
+    pub(crate) fn value(&self, s: f64) -> f64 {
         let x = s - self.s;
         self.a + x * (self.b + x * (self.c + x * self.d))
     }
     /// Difference of two cubics starting at the same s.
-    pub fn minus(&self, o: &Cubic) -> Cubic {
+    pub(crate) fn minus(&self, o: &Cubic) -> Cubic {
         Cubic { s: self.s, a: self.a - o.a, b: self.b - o.b, c: self.c - o.c, d: self.d - o.d }
     }
 }
@@ -149,7 +149,7 @@ fn constrained_fit(s: &[f64], y: &[f64]) -> Cubic {
 
 /// The fitted borders of one lane section.
 #[derive(Debug, Clone)]
-pub struct FittedBorders {
+pub(crate) struct FittedBorders {
     /// Start s of each piece (the first is the section start).
     pub pieces: Vec<f64>,
     /// Per border, one cubic per piece.
@@ -161,7 +161,7 @@ pub struct FittedBorders {
 /// Fits all `borders` on [s0, s1] with common pieces, breaking at `breaks` (s values). A
 /// border given by two polylines (the bounds of two neighbours that should coincide) is
 /// their mean.
-pub fn fit_section(line: &RefLine, borders: &[Vec<Border>], s0: f64, s1: f64, breaks: &[f64], tol: f64) -> FittedBorders {
+pub(crate) fn fit_section(line: &RefLine, borders: &[Vec<Border>], s0: f64, s1: f64, breaks: &[f64], tol: f64) -> FittedBorders {
     let mut grid: Vec<f64> = vec![s0, s1];
     for b in borders.iter().flatten() {
         grid.extend(b.stations());

@@ -19,14 +19,14 @@ const NEWTON_STEPS: usize = 8;
 
 /// A point with its heading: where a Hermite piece starts or ends.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Knot {
+pub(crate) struct Knot {
     pub p: V2,
     pub hdg: f64,
 }
 
 /// A pose on the line.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Pose {
+pub(crate) struct Pose {
     pub p: V2,
     pub hdg: f64,
     pub curvature: f64,
@@ -34,17 +34,17 @@ pub struct Pose {
 
 impl Pose {
     /// Unit normal (left of the heading): t grows along it.
-    pub fn normal(&self) -> V2 {
+    pub(crate) fn normal(&self) -> V2 {
         V2::unit(self.hdg + std::f64::consts::FRAC_PI_2)
     }
-    pub fn at_t(&self, t: f64) -> V2 {
+    pub(crate) fn at_t(&self, t: f64) -> V2 {
         self.p.add(self.normal().scale(t))
     }
 }
 
 /// The cubic Hermite piece from `a` to `b` as a paramPoly3 in `a`'s frame, p ∈ [0, 1],
 /// tangent magnitude = chord length (the usual choice: no loops for turns below ~120°).
-pub fn hermite(a: Knot, b: Knot) -> ([f64; 4], [f64; 4]) {
+pub(crate) fn hermite(a: Knot, b: Knot) -> ([f64; 4], [f64; 4]) {
     let d = b.p.sub(a.p);
     let m = d.len();
     let (s, c) = (-a.hdg).sin_cos();
@@ -57,7 +57,7 @@ pub fn hermite(a: Knot, b: Knot) -> ([f64; 4], [f64; 4]) {
 
 /// One reference line: its plan-view records (s from 0) and sample points for projection.
 #[derive(Debug, Clone)]
-pub struct RefLine {
+pub(crate) struct RefLine {
     pub geometries: Vec<Geometry>,
     pub length: f64,
     /// Knot stations (the s of each record start, then the end).
@@ -67,7 +67,7 @@ pub struct RefLine {
 
 impl RefLine {
     /// The line through `knots` (at least two), one Hermite piece between each pair.
-    pub fn through(knots: &[Knot]) -> RefLine {
+    pub(crate) fn through(knots: &[Knot]) -> RefLine {
         let mut geometries = Vec::with_capacity(knots.len().saturating_sub(1));
         let mut s = 0.0;
         let mut knots_s = vec![0.0];
@@ -90,7 +90,7 @@ impl RefLine {
     }
 
     /// The line of existing plan-view records (s from 0, in order).
-    pub fn of(geometries: Vec<Geometry>) -> RefLine {
+    pub(crate) fn of(geometries: Vec<Geometry>) -> RefLine {
         let length = geometries.last().map_or(0.0, |g| g.s + g.length);
         let mut knots_s: Vec<f64> = geometries.iter().map(|g| g.s).collect();
         knots_s.push(length);
@@ -120,7 +120,7 @@ impl RefLine {
     }
 
     /// Pose at `s` (clamped to the line).
-    pub fn pose(&self, s: f64) -> Pose {
+    pub(crate) fn pose(&self, s: f64) -> Pose {
         let s = s.clamp(0.0, self.length);
         match self.geometry_at(s) {
             Some(g) => {
@@ -133,7 +133,7 @@ impl RefLine {
 
     /// (s, t) of the foot of the normal through `p` nearest to `p`; `near` restricts the
     /// search to ±`window` m around a station (marching along a border).
-    pub fn project(&self, p: V2, near: Option<(f64, f64)>) -> (f64, f64) {
+    pub(crate) fn project(&self, p: V2, near: Option<(f64, f64)>) -> (f64, f64) {
         let mut best = (f64::INFINITY, 0.0);
         let (lo, hi) = match near {
             Some((c, r)) => {
@@ -215,7 +215,7 @@ fn piece_deviation(m: &[V2], i: usize, j: usize, a: Knot, b: Knot) -> (f64, usiz
 
 /// Knots of a smooth line along the polyline `m` from `start` to `end` (headings forced
 /// there), staying within `tol` of `m`'s vertices where it can; more knots where `m` bends.
-pub fn knots_along(m: &[V2], start: Knot, end: Knot, tol: f64, max_knots: usize) -> Vec<Knot> {
+pub(crate) fn knots_along(m: &[V2], start: Knot, end: Knot, tol: f64, max_knots: usize) -> Vec<Knot> {
     let hdgs = vertex_headings(m);
     let last = m.len().saturating_sub(1);
     // (vertex index, knot), first and last forced

@@ -16,7 +16,7 @@ use commonroad::{LaneletNetwork, LineMarking};
 
 /// Where a lanelet went.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Placed {
+pub(crate) struct Placed {
     /// Index into the document's roads.
     pub road: usize,
     pub section: usize,
@@ -26,13 +26,13 @@ pub struct Placed {
 }
 
 /// The lane id of member `k` of a group whose centre line is after `centre` members.
-pub fn lane_id(k: usize, centre: usize) -> i32 {
+pub(crate) fn lane_id(k: usize, centre: usize) -> i32 {
     let (k, c) = (k as i64, centre as i64);
     (if k < c { c - k } else { -(k - c + 1) }) as i32
 }
 
 /// A road under construction: its sections' groups and geometry.
-pub struct Built {
+pub(crate) struct Built {
     pub road: Road,
     pub groups: Vec<Group>,
 }
@@ -99,7 +99,7 @@ fn lanes(net: &LaneletNetwork, g: &Group, geom: &SectionGeom, warnings: &mut Vec
 }
 
 /// Builds the road made of `groups` (a chain of sections, each continuing the previous one).
-pub fn build_road(id: u64, groups: Vec<Group>, net: &LaneletNetwork, prep: &[Option<Prepared>], tol: f64, warnings: &mut Vec<Warning>) -> Option<Built> {
+pub(crate) fn build_road(id: u64, groups: Vec<Group>, net: &LaneletNetwork, prep: &[Option<Prepared>], tol: f64, warnings: &mut Vec<Warning>) -> Option<Built> {
     let mut road = Road {
         id,
         name: String::new(),

@@ -43,7 +43,7 @@ const SAME_BORDER: f64 = 1e-9;
 
 /// A fitted lane section.
 #[derive(Debug, Clone)]
-pub struct SectionGeom {
+pub(crate) struct SectionGeom {
     pub line: RefLine,
     /// Borders 0 (leftmost) ..= members (rightmost).
     pub fitted: FittedBorders,
@@ -120,7 +120,7 @@ fn narrowest(points: &[V2], base: f64, dir: f64) -> f64 {
 
 /// The borders of a group as polylines in its reference direction (a shared border holds
 /// both neighbours' bounds unless they are the same).
-pub fn border_polylines(g: &Group, prep: &[Option<Prepared>]) -> Vec<Vec<Vec<V2>>> {
+pub(crate) fn border_polylines(g: &Group, prep: &[Option<Prepared>]) -> Vec<Vec<Vec<V2>>> {
     let p = |k: usize| g.members.get(k).and_then(|m| prep.get(m.idx).and_then(Option::as_ref).map(|pr| (pr, m.flipped)));
     let n = g.members.len();
     let mut out = Vec::with_capacity(n + 1);
@@ -143,7 +143,14 @@ pub fn border_polylines(g: &Group, prep: &[Option<Prepared>]) -> Vec<Vec<Vec<V2>
 
 /// Builds the section of group `g`; `start`, if given, is where its reference line must
 /// begin (the end of the previous section of the same road).
-pub fn build(g: &Group, net: &LaneletNetwork, prep: &[Option<Prepared>], tol: f64, start: Option<Knot>, warnings: &mut Vec<Warning>) -> Option<SectionGeom> {
+pub(crate) fn build(
+    g: &Group,
+    net: &LaneletNetwork,
+    prep: &[Option<Prepared>],
+    tol: f64,
+    start: Option<Knot>,
+    warnings: &mut Vec<Warning>,
+) -> Option<SectionGeom> {
     let borders = border_polylines(g, prep);
     let n = g.members.len();
     let id_of = |k: usize| g.members.get(k).and_then(|m| net.lanelets.get(m.idx)).map_or(0, |l| l.id.get());

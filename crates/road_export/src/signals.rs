@@ -18,7 +18,7 @@ use std::collections::BTreeMap;
 const INSET: f64 = 1e-3;
 
 /// ISO 3166 alpha-2 of an alpha-3 code CommonRoad uses (`ZAM` reads the German table).
-pub fn alpha2(country: &str) -> Option<&'static str> {
+pub(crate) fn alpha2(country: &str) -> Option<&'static str> {
     Some(match country.trim().to_ascii_uppercase().as_str() {
         "DEU" | "DE" | "ZAM" => "DE",
         "USA" | "US" => "US",
@@ -38,7 +38,7 @@ pub fn alpha2(country: &str) -> Option<&'static str> {
 }
 
 /// What the signals of a network need to know about where lanelets went.
-pub struct Places<'a> {
+pub(crate) struct Places<'a> {
     pub net: &'a LaneletNetwork,
     pub placed: &'a [Option<Placed>],
     pub lines: &'a [RefLine],
@@ -113,7 +113,7 @@ fn type_and_subtype(sign_id: &str) -> (String, String) {
 
 /// Adds every sign, light and stop line to the roads; `next_id` numbers the signals that
 /// have no CommonRoad id (extra sign elements, stop lines).
-pub fn add_signals(pl: &Places, roads: &mut [Road], next_id: &mut u64, warnings: &mut Vec<Warning>) {
+pub(crate) fn add_signals(pl: &Places, roads: &mut [Road], next_id: &mut u64, warnings: &mut Vec<Warning>) {
     let net = pl.net;
     // referring lanelets of each sign / light, in network order
     let mut sign_refs: BTreeMap<u64, Vec<usize>> = BTreeMap::new();

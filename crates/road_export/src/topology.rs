@@ -26,7 +26,7 @@ struct LinkPair {
 
 /// Lanelets (indices) of each CommonRoad intersection: the incomings' successors and the
 /// intersection lanelets that follow them.
-pub fn intersection_of(net: &LaneletNetwork) -> BTreeMap<usize, u64> {
+pub(crate) fn intersection_of(net: &LaneletNetwork) -> BTreeMap<usize, u64> {
     let pos: BTreeMap<u64, usize> = net.lanelets.iter().enumerate().map(|(i, l)| (l.id.get(), i)).collect();
     let mut out = BTreeMap::new();
     for inter in &net.intersections {
@@ -88,7 +88,7 @@ fn road_end(roads: &[Road], p: Placed, leaving: bool) -> Option<End> {
 }
 
 /// Writes lane links, road links and junctions. `junction_ids` start at `first_junction_id`.
-pub fn link(net: &LaneletNetwork, roads: &mut [Road], placed: &[Option<Placed>], first_junction_id: u64, warnings: &mut Vec<Warning>) -> Vec<Junction> {
+pub(crate) fn link(net: &LaneletNetwork, roads: &mut [Road], placed: &[Option<Placed>], first_junction_id: u64, warnings: &mut Vec<Warning>) -> Vec<Junction> {
     let pos: BTreeMap<u64, usize> = net.lanelets.iter().enumerate().map(|(i, l)| (l.id.get(), i)).collect();
     let mut pairs: BTreeSet<LinkPair> = BTreeSet::new();
     for (i, l) in net.lanelets.iter().enumerate() {

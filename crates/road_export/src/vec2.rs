@@ -3,57 +3,57 @@
 
 /// A point or direction in the plane.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct V2 {
+pub(crate) struct V2 {
     pub x: f64,
     pub y: f64,
 }
 
 impl V2 {
-    pub const fn new(x: f64, y: f64) -> V2 {
+    pub(crate) const fn new(x: f64, y: f64) -> V2 {
         V2 { x, y }
     }
-    pub fn of(p: &commonroad::Point) -> V2 {
+    pub(crate) fn of(p: &commonroad::Point) -> V2 {
         V2 { x: p.x, y: p.y }
     }
-    pub fn add(self, o: V2) -> V2 {
+    pub(crate) fn add(self, o: V2) -> V2 {
         V2::new(self.x + o.x, self.y + o.y)
     }
-    pub fn sub(self, o: V2) -> V2 {
+    pub(crate) fn sub(self, o: V2) -> V2 {
         V2::new(self.x - o.x, self.y - o.y)
     }
-    pub fn scale(self, k: f64) -> V2 {
+    pub(crate) fn scale(self, k: f64) -> V2 {
         V2::new(self.x * k, self.y * k)
     }
-    pub fn dot(self, o: V2) -> f64 {
+    pub(crate) fn dot(self, o: V2) -> f64 {
         self.x * o.x + self.y * o.y
     }
-    pub fn cross(self, o: V2) -> f64 {
+    pub(crate) fn cross(self, o: V2) -> f64 {
         self.x * o.y - self.y * o.x
     }
-    pub fn len(self) -> f64 {
+    pub(crate) fn len(self) -> f64 {
         self.x.hypot(self.y)
     }
-    pub fn dist(self, o: V2) -> f64 {
+    pub(crate) fn dist(self, o: V2) -> f64 {
         self.sub(o).len()
     }
     /// Unit vector at angle `a` (rad, counter-clockwise from +x).
-    pub fn unit(a: f64) -> V2 {
+    pub(crate) fn unit(a: f64) -> V2 {
         let (s, c) = a.sin_cos();
         V2::new(c, s)
     }
-    pub fn angle(self) -> f64 {
+    pub(crate) fn angle(self) -> f64 {
         self.y.atan2(self.x)
     }
-    pub fn lerp(self, o: V2, u: f64) -> V2 {
+    pub(crate) fn lerp(self, o: V2, u: f64) -> V2 {
         V2::new(self.x + (o.x - self.x) * u, self.y + (o.y - self.y) * u)
     }
-    pub fn is_finite(self) -> bool {
+    pub(crate) fn is_finite(self) -> bool {
         self.x.is_finite() && self.y.is_finite()
     }
 }
 
 /// Distance from `p` to the segment `a`–`b` and the segment parameter of the nearest point.
-pub fn to_segment(p: V2, a: V2, b: V2) -> (f64, f64) {
+pub(crate) fn to_segment(p: V2, a: V2, b: V2) -> (f64, f64) {
     let d = b.sub(a);
     let l2 = d.dot(d);
     let u = if l2 > 0.0 { (p.sub(a).dot(d) / l2).clamp(0.0, 1.0) } else { 0.0 };
@@ -61,7 +61,7 @@ pub fn to_segment(p: V2, a: V2, b: V2) -> (f64, f64) {
 }
 
 /// Distance from `p` to a polyline (infinite for an empty one).
-pub fn to_polyline(p: V2, line: &[V2]) -> f64 {
+pub(crate) fn to_polyline(p: V2, line: &[V2]) -> f64 {
     match line {
         [] => f64::INFINITY,
         [only] => p.dist(*only),
@@ -70,12 +70,12 @@ pub fn to_polyline(p: V2, line: &[V2]) -> f64 {
 }
 
 /// Length of a polyline.
-pub fn length(line: &[V2]) -> f64 {
+pub(crate) fn length(line: &[V2]) -> f64 {
     line.windows(2).map(|w| w[0].dist(w[1])).sum()
 }
 
 /// The polyline without consecutive points closer than `eps` (the last point is kept).
-pub fn dedup(line: &[V2], eps: f64) -> Vec<V2> {
+pub(crate) fn dedup(line: &[V2], eps: f64) -> Vec<V2> {
     let mut out: Vec<V2> = Vec::with_capacity(line.len());
     for (i, &p) in line.iter().enumerate() {
         let last = i + 1 == line.len();
@@ -94,7 +94,7 @@ pub fn dedup(line: &[V2], eps: f64) -> Vec<V2> {
 }
 
 /// Segments in a grid of square cells, for nearest-segment queries with a cap.
-pub struct SegmentIndex {
+pub(crate) struct SegmentIndex {
     cell: f64,
     cells: std::collections::HashMap<(i64, i64), Vec<(V2, V2)>>,
 }
@@ -103,7 +103,7 @@ impl SegmentIndex {
     /// Indexes the segments of the polylines in `lines` with cells of at least `cell` m
     /// (more for hostile lengths: at most about two million cell entries). A segment is
     /// entered in the cells it passes through.
-    pub fn new<'a>(lines: impl IntoIterator<Item = &'a [V2]> + Clone, cell: f64) -> SegmentIndex {
+    pub(crate) fn new<'a>(lines: impl IntoIterator<Item = &'a [V2]> + Clone, cell: f64) -> SegmentIndex {
         let total: f64 = lines.clone().into_iter().map(length).sum();
         let cell = if cell.is_finite() && cell > 0.0 { cell } else { 1.0 };
         let cell = cell.max(total / 1_000_000.0);
@@ -134,7 +134,7 @@ impl SegmentIndex {
 
     /// Distance from `p` to the nearest indexed segment, or `cap` if none is nearer. Rings
     /// of cells are searched outward until the nearest hit is closer than the next ring.
-    pub fn distance(&self, p: V2, cap: f64) -> f64 {
+    pub(crate) fn distance(&self, p: V2, cap: f64) -> f64 {
         let r = (cap / self.cell).ceil().clamp(0.0, 1000.0) as i64;
         let (cx, cy) = ((p.x / self.cell).floor() as i64, (p.y / self.cell).floor() as i64);
         let mut best = cap;
@@ -161,7 +161,7 @@ impl SegmentIndex {
 }
 
 /// Points along a polyline: its vertices and points every `step` m between them.
-pub fn samples(a: &[V2], step: f64) -> Vec<V2> {
+pub(crate) fn samples(a: &[V2], step: f64) -> Vec<V2> {
     let mut out = Vec::new();
     for w in a.windows(2) {
         let n = ((w[0].dist(w[1]) / step).ceil() as usize).clamp(1, 100_000);
@@ -173,7 +173,7 @@ pub fn samples(a: &[V2], step: f64) -> Vec<V2> {
 
 /// Largest distance from a point of `a` (its vertices and points every `step` m between
 /// them) to the polyline `b`, the one-sided Hausdorff distance (sampled), capped at `cap`.
-pub fn one_sided_distance(a: &[V2], b: &[V2], step: f64, cap: f64) -> f64 {
+pub(crate) fn one_sided_distance(a: &[V2], b: &[V2], step: f64, cap: f64) -> f64 {
     // cells about half a segment long: few cells per segment, few segments per cell
     let mean = length(b) / b.len().max(2).saturating_sub(1) as f64;
     let index = SegmentIndex::new([b], (0.5 * mean).max(cap).max(0.5));
@@ -181,7 +181,7 @@ pub fn one_sided_distance(a: &[V2], b: &[V2], step: f64, cap: f64) -> f64 {
 }
 
 /// Whether two segments properly cross (shared end points do not count).
-pub fn segments_cross(a: V2, b: V2, c: V2, d: V2) -> bool {
+pub(crate) fn segments_cross(a: V2, b: V2, c: V2, d: V2) -> bool {
     let d1 = b.sub(a).cross(c.sub(a));
     let d2 = b.sub(a).cross(d.sub(a));
     let d3 = d.sub(c).cross(a.sub(c));

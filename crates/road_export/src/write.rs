@@ -8,7 +8,7 @@ use opendrive::Shape;
 use std::fmt::Write;
 
 /// A number as `xs:double` text (non-finite values, which the export never makes, as 0).
-pub fn num(v: f64) -> String {
+pub(crate) fn num(v: f64) -> String {
     if v.is_finite() {
         if v == 0.0 {
             "0".into()
@@ -21,7 +21,7 @@ pub fn num(v: f64) -> String {
 }
 
 /// Attribute text with XML's special characters escaped.
-pub fn esc(s: &str) -> String {
+pub(crate) fn esc(s: &str) -> String {
     let mut o = String::with_capacity(s.len());
     for c in s.chars() {
         match c {
@@ -256,7 +256,7 @@ fn junction(o: &mut Out, j: &Junction) {
 }
 
 /// The document as OpenDRIVE 1.8 XML.
-pub fn write(doc: &Document) -> String {
+pub(crate) fn write(doc: &Document) -> String {
     let mut o = Out { s: String::new() };
     o.line(0, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>");
     o.line(0, "<OpenDRIVE>");

@@ -9,13 +9,13 @@ use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 
 /// A lanelet network to export and where it came from.
-pub struct Map {
+pub(crate) struct Map {
     pub name: String,
     pub network: LaneletNetwork,
 }
 
 /// The lanelet networks of the CommonRoad scenarios (files without lanelets left out).
-pub fn scenario_maps(shared: &Path) -> Vec<Map> {
+pub(crate) fn scenario_maps(shared: &Path) -> Vec<Map> {
     let mut out = Vec::new();
     for f in testkit::files_with_ext(&shared.join("commonroad-scenarios"), "xml") {
         let read = commonroad::xml::read_scenario_file(&f).unwrap_or_else(|e| panic!("{}: {e}", f.display()));
@@ -29,7 +29,7 @@ pub fn scenario_maps(shared: &Path) -> Vec<Map> {
 }
 
 /// The distinct lanelet networks of osc2cr's conversions of the corpus scenarios.
-pub fn corpus_maps(shared: &Path) -> Vec<Map> {
+pub(crate) fn corpus_maps(shared: &Path) -> Vec<Map> {
     let corpus = shared.join("corpus");
     let options = convert::ConvertOptions::default();
     let mut out: Vec<Map> = Vec::new();
@@ -49,7 +49,7 @@ pub fn corpus_maps(shared: &Path) -> Vec<Map> {
 }
 
 /// One exported map: its name, network, the OpenDRIVE text, the file it was written to.
-pub struct Exported {
+pub(crate) struct Exported {
     pub name: String,
     pub network: LaneletNetwork,
     pub export: road_export::RoadExport,
@@ -59,13 +59,13 @@ pub struct Exported {
 static EXPORTS: OnceLock<Option<Vec<Exported>>> = OnceLock::new();
 
 /// Where the tests write their files.
-pub fn out_dir() -> PathBuf {
+pub(crate) fn out_dir() -> PathBuf {
     testkit::workspace_root().join("target/road_export_tests")
 }
 
 /// Every acceptance map exported (once per test process), or `None` (with a notice) when
 /// the shared directory is missing.
-pub fn exports() -> Option<&'static [Exported]> {
+pub(crate) fn exports() -> Option<&'static [Exported]> {
     EXPORTS
         .get_or_init(|| {
             let shared = testkit::shared_dir()?;
@@ -88,14 +88,14 @@ pub fn exports() -> Option<&'static [Exported]> {
 }
 
 /// osc2cr's map conversion of OpenDRIVE text (what `osc2cr map` does with the file).
-pub fn read_back(xodr: &str) -> LaneletNetwork {
+pub(crate) fn read_back(xodr: &str) -> LaneletNetwork {
     let loaded = opendrive::parse_str(xodr, Path::new("export.xodr")).unwrap_or_else(|e| panic!("the export does not read back: {e}"));
     map::convert(&loaded.network, &map::MapOptions::default()).network
 }
 
 /// The OpenSCENARIO file of the load check: one car teleported onto lane `lane` of road
 /// `road` at `s`, stopped after 0.1 s.
-pub fn load_check_scenario(xodr: &Path, road: &str, lane: i32, s: f64) -> String {
+pub(crate) fn load_check_scenario(xodr: &Path, road: &str, lane: i32, s: f64) -> String {
     format!(
         r#"<?xml version="1.0" encoding="UTF-8"?>
 <OpenSCENARIO>
@@ -132,7 +132,7 @@ pub fn load_check_scenario(xodr: &Path, road: &str, lane: i32, s: f64) -> String
 
 /// Whether esmini 3.6.0 (`esmini`) loads `xodr`: the load check on the first lane of the
 /// first road runs in `dir`, exits 0, places the car and logs no error.
-pub fn esmini_loads(esmini: &Path, xodr: &Path, dir: &Path) -> Result<(), String> {
+pub(crate) fn esmini_loads(esmini: &Path, xodr: &Path, dir: &Path) -> Result<(), String> {
     let text = std::fs::read_to_string(xodr).map_err(|e| e.to_string())?;
     let net = opendrive::parse_str(&text, xodr).map_err(|e| format!("osc2cr cannot read it: {e}"))?.network;
     let road = net.roads.first().ok_or("no road")?;
