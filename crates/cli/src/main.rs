@@ -7,6 +7,7 @@ mod check_cmd;
 mod convert_cmd;
 mod inspect;
 mod map_cmd;
+mod osi_file;
 mod render_cmd;
 mod serve_cmd;
 mod simulate;

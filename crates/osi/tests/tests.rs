@@ -1,0 +1,3 @@
+//! The tests of `osi`, one binary: a module per feature.
+
+mod generated;
