@@ -10,6 +10,7 @@ mod map_cmd;
 mod osi_file;
 mod render_cmd;
 mod serve_cmd;
+mod serve_extra;
 mod simulate;
 
 use clap::{Parser, Subcommand};

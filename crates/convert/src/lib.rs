@@ -60,7 +60,7 @@ pub use header::{benchmark_id, check_country, date_prefix, fallback_date, parse_
 pub use obstacle_type::{cr_type, CrType};
 pub use obstacles::{obstacles, Obstacles};
 pub use options::{ConvertOptions, OutputFormat};
-pub use outputs::OutputPaths;
+pub use outputs::{write_output, MapFiles, OutputPaths, Written};
 pub use picture::{picture_path, write_picture};
 pub use pipeline::{convert_scenario, convert_scenario_keeping, convert_scenario_with, Conversion, Facts, Model, Output, Prepared, Protobuf2024, Request};
 pub use report::{BatchReport, Failure, FolderSummary, ScenarioReport, Skipped, Stage, StageWarning, Status, Timings, Variation};

@@ -33,21 +33,22 @@ struct Object {
 
 /// Composes the frames of one run.
 #[derive(Debug, Clone)]
-pub struct Reporter<'a> {
-    roads: Option<&'a RoadNetwork>,
+pub struct Reporter {
     ids: GlobalIds,
     /// By the run's entity index (`Trace::entities`); `None`: not an esmini object (a ghost).
     objects: Vec<Option<Object>>,
-    /// The static part, until the first frame takes it.
-    first: Option<GroundTruth>,
+    /// The static part (the first frame's, without the dynamic part).
+    static_part: GroundTruth,
+    /// The first frame is still to come.
+    first: bool,
     last_time: Option<f64>,
     warnings: Vec<String>,
 }
 
-impl<'a> Reporter<'a> {
+impl Reporter {
     /// A reporter for a run of `scenario` on `roads` whose entities are named `names` (in
     /// `Trace::entities` order).
-    pub fn new(scenario: &Scenario, roads: Option<&'a RoadNetwork>, names: &[String]) -> Reporter<'a> {
+    pub fn new(scenario: &Scenario, roads: Option<&RoadNetwork>, names: &[String]) -> Reporter {
         let mut warnings = Vec::new();
         let ids = GlobalIds::new(roads, &mut warnings);
         let order = esmini_objects(scenario);
@@ -68,18 +69,18 @@ impl<'a> Reporter<'a> {
         }
         let host = order.first().map(|_| id(ids.first_entity)).unwrap_or_default();
         let (lane, lane_boundary) = roads.map(|net| lanes_and_boundaries(net, &ids)).unwrap_or_default();
-        let first = GroundTruth {
+        let static_part = GroundTruth {
             version: Some(InterfaceVersion { version_major: Some(3), version_minor: Some(5), version_patch: Some(0) }),
             host_vehicle_id: host,
             lane,
             lane_boundary,
             ..Default::default()
         };
-        Reporter { roads, ids, objects, first: Some(first), last_time: None, warnings }
+        Reporter { ids, objects, static_part, first: true, last_time: None, warnings }
     }
 
     /// A reporter for the run of `trace`.
-    pub fn for_trace(scenario: &Scenario, roads: Option<&'a RoadNetwork>, trace: &Trace) -> Reporter<'a> {
+    pub fn for_trace(scenario: &Scenario, roads: Option<&RoadNetwork>, trace: &Trace) -> Reporter {
         let names: Vec<String> = trace.entities.iter().map(|e| e.name.clone()).collect();
         Reporter::new(scenario, roads, &names)
     }
@@ -94,12 +95,19 @@ impl<'a> Reporter<'a> {
         self.objects.get(index)?.as_ref().map(|o| self.ids.first_entity + o.index as u64)
     }
 
+    /// The static part: version, host vehicle, lanes and lane boundaries (the first frame has
+    /// them, with the MiscObjects).
+    pub fn static_part(&self) -> &GroundTruth {
+        &self.static_part
+    }
+
     /// The message of the frame at simulated time `time` where the run's entities are at
-    /// `states` (by entity index; `None`: not in the run now).
-    pub fn frame(&mut self, time: f64, states: &[Option<Sample>]) -> GroundTruth {
+    /// `states` (by entity index; `None`: not in the run now) on `roads` (the network the
+    /// reporter was made for).
+    pub fn frame(&mut self, roads: Option<&RoadNetwork>, time: f64, states: &[Option<Sample>]) -> GroundTruth {
         let dt = self.last_time.map_or(0.0, |t| time - t);
         self.last_time = Some(time);
-        let mut gt = self.first.take().unwrap_or_default();
+        let mut gt = if std::mem::take(&mut self.first) { self.static_part.clone() } else { GroundTruth::default() };
         let seconds = time.floor();
         gt.timestamp = Some(Timestamp { seconds: Some(seconds as i64), nanos: Some(((time - seconds) * 1e9) as u32) });
         // esmini's object order
@@ -112,7 +120,7 @@ impl<'a> Reporter<'a> {
                 continue;
             };
             let osi_id = self.ids.first_entity + o.index as u64;
-            let pitch = road_pitch(self.roads, &sample);
+            let pitch = road_pitch(roads, &sample);
             let motion = o.tracker.next(&sample, pitch, dt);
             if let EntityObject::MiscObject(_) = o.model {
                 if !o.reported {
@@ -122,7 +130,7 @@ impl<'a> Reporter<'a> {
                 continue;
             }
             let lane = sample.road.and_then(|r| {
-                let road = self.roads?.roads.get(r.road as usize)?;
+                let road = roads?.roads.get(r.road as usize)?;
                 Some(self.ids.lane((r.road as usize, road.section_index_at(r.s), r.lane_id)))
             });
             gt.moving_object.extend(moving_object(&o.name, o.index, osi_id, &o.model, &motion, lane.unwrap_or(UNDEFINED)));
@@ -131,8 +139,8 @@ impl<'a> Reporter<'a> {
     }
 
     /// The frame's message encoded (what `frame` gives, as bytes).
-    pub fn encoded_frame(&mut self, time: f64, states: &[Option<Sample>]) -> Vec<u8> {
-        self.frame(time, states).encode_to_vec()
+    pub fn encoded_frame(&mut self, roads: Option<&RoadNetwork>, time: f64, states: &[Option<Sample>]) -> Vec<u8> {
+        self.frame(roads, time, states).encode_to_vec()
     }
 }
 
@@ -144,7 +152,7 @@ pub fn trace_frames(scenario: &Scenario, roads: Option<&RoadNetwork>, trace: &Tr
     for k in trace.zero_index()..trace.len {
         states.clear();
         states.extend(trace.entities.iter().map(|e| e.samples.get(k).copied().flatten()));
-        frames.push(r.encoded_frame(trace.time(k), &states));
+        frames.push(r.encoded_frame(roads, trace.time(k), &states));
     }
     (frames, r.warnings)
 }

@@ -28,6 +28,7 @@ impl TraceWriter {
     pub fn create(path: &Path) -> Result<TraceWriter, String> {
         let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
         let name = path.file_name().ok_or_else(|| format!("{}: not a file name", path.display()))?;
+        std::fs::create_dir_all(dir).map_err(|e| io_error(dir, e))?;
         let temporary = dir.join(format!(".{}.{}.osi.tmp", name.to_string_lossy(), std::process::id()));
         let file = File::create(&temporary).map_err(|e| io_error(&temporary, e))?;
         Ok(TraceWriter { out: Some(BufWriter::new(file)), temporary, path: path.to_path_buf(), messages: 0 })
