@@ -3,7 +3,9 @@
 //! displacement over the step, in the world frame (at the first frame, where there is no step,
 //! the speed along the heading); the acceleration the change of that velocity over the step; the
 //! yaw rate the heading's change (the short way) over the step and the yaw acceleration the
-//! change of the rate. The pitch is the road's (its elevation slope along the heading; nose down
+//! change of the rate. A jump no speed explains (esmini's teleport, for which it takes the speed
+//! along the heading) is told by its length: farther than the speed covers in the step plus
+//! half a metre. The pitch is the road's (its elevation slope along the heading; nose down
 //! positive, as esmini's): the engine keeps none of its own. Roll is 0 (superelevation is not
 //! applied to positions).
 
@@ -74,7 +76,7 @@ impl Tracker {
         let yaw = angle_pi(sample.h);
         let mut m = Motion { x: sample.x, y: sample.y, z: sample.z, yaw, pitch, ..Motion::default() };
         match self.last {
-            Some(last) if dt > 1e-9 => {
+            Some(last) if dt > 1e-9 && (m.x - last.x).hypot(m.y - last.y) <= sample.speed.abs() * dt + 0.5 => {
                 m.velocity = ((m.x - last.x) / dt, (m.y - last.y) / dt, (m.z - last.z) / dt);
                 m.acceleration = ((m.velocity.0 - last.velocity.0) / dt, (m.velocity.1 - last.velocity.1) / dt, (m.velocity.2 - last.velocity.2) / dt);
                 m.yaw_rate = angle_pi(yaw - last.yaw) / dt;
@@ -82,8 +84,13 @@ impl Tracker {
             }
             last => {
                 m.velocity = (sample.speed * sample.h.cos(), sample.speed * sample.h.sin(), 0.0);
-                // a frame without a step keeps what the last one derived
-                if let Some(l) = last {
+                if let (Some(l), true) = (last, dt > 1e-9) {
+                    // a teleport: esmini's velocity along the heading, its change the acceleration
+                    m.acceleration = ((m.velocity.0 - l.velocity.0) / dt, (m.velocity.1 - l.velocity.1) / dt, (m.velocity.2 - l.velocity.2) / dt);
+                    m.yaw_rate = angle_pi(yaw - l.yaw) / dt;
+                    m.yaw_acceleration = angle_pi(m.yaw_rate - l.yaw_rate) / dt;
+                } else if let Some(l) = last {
+                    // a frame without a step keeps what the last one derived
                     (m.acceleration, m.yaw_rate, m.yaw_acceleration) = (l.acceleration, l.yaw_rate, l.yaw_acceleration);
                 }
             }
