@@ -44,6 +44,7 @@ mod stages;
 mod story_marks;
 mod summary;
 mod tags;
+mod trace_of;
 mod tracks;
 
 pub use angle::{lerp_angle, wrap_angle};
@@ -73,4 +74,5 @@ pub use single::{
 pub use story_marks::event_marks;
 pub use summary::{render as render_summary, summarise, Summary};
 pub use tags::scenario_tags;
+pub use trace_of::trace_of;
 pub use tracks::{tracks, Placement, Track, MIN_BOX_SIDE};

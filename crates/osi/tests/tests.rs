@@ -1,6 +1,7 @@
 //! The tests of `osi`, one binary: a module per feature.
 
 mod common;
+mod corpus_commonroad;
 mod esmini_agreement;
 mod follow_trajectory;
 mod generated;
