@@ -23,7 +23,7 @@ fields as 64-bit floats: 1 driverInput (throttle 0..1, brake 0..1, steering angl
 3 stateXYH (x, y, h, speed, wheel angle, dead-reckoning byte), 4 stateH (h, speed, wheel angle, \
 dead-reckoning byte). Packed as Python's struct.pack packs them, as esmini's C structs, or as \
 its whole 88-byte DMMessage: each length is accepted. A datagram with another version, an \
-unknown mode or length, another object's id, a number that is not finite, a value out of range, \
+unknown mode or length, another object's id, a number that is not finite, \
 or a frameNumber older than one already accepted for the entity is rejected with a message on \
 stderr and counts as none; the run goes on.
 
