@@ -74,15 +74,12 @@ fn esmini_run(esmini: &Path, xosc: &Path, dir: &Path, trace: &Path, frames: usiz
         .spawn()
         .expect("esmini starts");
     let start = Instant::now();
-    loop {
+    while positions(&std::fs::read(trace).unwrap_or_default()).len() < frames && start.elapsed() < Duration::from_secs(120) {
         std::thread::sleep(Duration::from_millis(100));
-        let bytes = std::fs::read(trace).unwrap_or_default();
-        if positions(&bytes).len() >= frames || start.elapsed() > Duration::from_secs(120) {
-            let _ = e.kill();
-            let _ = e.wait();
-            return std::fs::read(trace).unwrap_or_default();
-        }
     }
+    let _ = e.kill();
+    let _ = e.wait();
+    std::fs::read(trace).unwrap_or_default()
 }
 
 #[test]

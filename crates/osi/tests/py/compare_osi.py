@@ -6,23 +6,9 @@ scenario. Prints one JSON object: per field the largest difference, counts, and 
 """
 import json
 import math
-import struct
 import sys
 
-from osi3.osi_groundtruth_pb2 import GroundTruth
-
-
-def read(path):
-    data = open(path, "rb").read()
-    out, i = [], 0
-    while i < len(data):
-        (n,) = struct.unpack_from("<I", data, i)
-        i += 4
-        g = GroundTruth()
-        g.ParseFromString(data[i:i + n])
-        i += n
-        out.append(g)
-    return out
+from osi_trace import read
 
 
 def vec(v):
