@@ -36,7 +36,7 @@ fn ctrl_c_ends_a_served_run_and_writes_the_run_so_far() {
     let dir = tmp("serve_osi", "ctrl_c");
     let (out, trace) = (dir.join("out"), dir.join("run.osi"));
     // no client: the synchronous port waits 500 ms each step, so the run would take minutes
-    let mut child = Command::new(env!("CARGO_BIN_EXE_osc2cr"))
+    let child = Command::new(env!("CARGO_BIN_EXE_osc2cr"))
         .args(["serve", s(&udp_example()), "--udp", "-o", s(&out), "--base-port", &free_port().to_string(), "--osi-file", s(&trace)])
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
