@@ -40,7 +40,7 @@ impl Gen<'_> {
     }
 
     /// An absolute speed target: mostly forward, sometimes backwards (reversing).
-    pub fn speed_value(&mut self) -> f64 {
+    pub(crate) fn speed_value(&mut self) -> f64 {
         if self.rich(Area::Longitudinal) && self.chance(0.12) {
             self.feature("speed:negative");
             self.num(-8.0, -0.5)
@@ -49,7 +49,7 @@ impl Gen<'_> {
         }
     }
 
-    pub fn speed_action(&mut self, others: &[String]) -> String {
+    pub(crate) fn speed_action(&mut self, others: &[String]) -> String {
         let dynamics = self.dynamics("SpeedActionDynamics", "SpeedAction", true);
         let target = if others.is_empty() || self.chance(0.6) {
             format!(r#"<AbsoluteTargetSpeed value="{}"/>"#, self.speed_value())
@@ -244,7 +244,7 @@ impl Gen<'_> {
 
     /// One private action for `actor`, and the feature name of its kind. `t_start`: about
     /// when it starts (for absolute trajectory times).
-    pub fn private_action(&mut self, actor: &str, t_start: f64) -> String {
+    pub(crate) fn private_action(&mut self, actor: &str, t_start: f64) -> String {
         let others: Vec<String> = self.mobile_names().into_iter().filter(|n| n != actor).collect();
         let kind = self.entity(actor).map_or(EntityKind::Car, |e| e.kind);
         let has_trailer = self.entities.iter().any(|e| e.kind == EntityKind::Trailer);

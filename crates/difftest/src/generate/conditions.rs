@@ -193,7 +193,7 @@ impl Gen<'_> {
     }
 
     /// One condition of an event of `actor`.
-    pub fn condition(&mut self, actor: &str) -> String {
+    pub(crate) fn condition(&mut self, actor: &str) -> String {
         let several = self.entities.len() > 1;
         let mut kinds = vec!["SimulationTimeCondition", "SimulationTimeCondition", "TraveledDistanceCondition", "SpeedCondition"];
         if several {
@@ -258,7 +258,7 @@ impl Gen<'_> {
     }
 
     /// A start trigger: mostly one condition, sometimes two in a group (AND) or two groups (OR).
-    pub fn trigger(&mut self, element: &str, actor: &str) -> String {
+    pub(crate) fn trigger(&mut self, element: &str, actor: &str) -> String {
         if let Some(c) = self.forced_condition.take() {
             return format!("<{element}><ConditionGroup>{c}</ConditionGroup></{element}>");
         }

@@ -6,7 +6,7 @@
 use super::Gen;
 
 /// The controller types the generator assigns.
-pub const TYPES: [&str; 10] = [
+pub(super) const TYPES: [&str; 10] = [
     "ACCController",
     "ALKSController",
     "ALKS_R157SM_Controller",
@@ -26,7 +26,7 @@ impl Gen<'_> {
 
     /// A `<Controller>` of `kind` for entity `owner` (its feature named), and whether the
     /// controller needs a route (FollowRoute).
-    pub fn controller_xml(&mut self, kind: &str, owner: &str) -> String {
+    pub(crate) fn controller_xml(&mut self, kind: &str, owner: &str) -> String {
         let mut props = vec![Self::property("esminiController", kind)];
         let mut label = kind.to_string();
         match kind {
@@ -107,7 +107,7 @@ impl Gen<'_> {
 
     /// The entity a follower controller of `owner` follows: one declared before it (esmini looks
     /// it up when it reads the controller), moving by itself.
-    pub fn followed(&self, owner: &str) -> Option<String> {
+    pub(crate) fn followed(&self, owner: &str) -> Option<String> {
         let before = self.all_names.iter().take_while(|n| *n != owner);
         before.filter(|n| !n.starts_with("Obj") && !n.starts_with("Trailer")).last().cloned()
     }
@@ -115,7 +115,7 @@ impl Gen<'_> {
     /// An ActivateControllerAction for a controller of type `kind`, longitudinal and/or
     /// lateral (both mostly; always both for FollowReference, which esmini activates on both
     /// domains only).
-    pub fn activate_controller_action(&mut self, kind: &str) -> String {
+    pub(crate) fn activate_controller_action(&mut self, kind: &str) -> String {
         let (long, lat) = match self.pick_index(5) {
             0 if kind != "FollowReferenceController" => (true, false),
             1 if kind != "FollowReferenceController" => (false, true),
@@ -128,7 +128,7 @@ impl Gen<'_> {
     }
 
     /// An AssignControllerAction in the story, activating what it assigns.
-    pub fn assign_controller_action(&mut self, actor: &str) -> String {
+    pub(crate) fn assign_controller_action(&mut self, actor: &str) -> String {
         // (a NaturalDriver assigned in the story makes esmini 3.6.0 crash)
         let kind = self.pick(&["ACCController", "ALKS_R157SM_Controller", "LoomingController"]);
         let controller = self.controller_xml(kind, actor);

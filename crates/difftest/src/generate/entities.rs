@@ -55,7 +55,7 @@ fn axles(front_x: f64, track: f64, wheel: f64) -> String {
 impl Gen<'_> {
     /// The definition of an entity of `kind` (the body of its ScenarioObject before any
     /// controller). `hitch`: a car that may tow a trailer.
-    pub fn entity_definition(&mut self, kind: EntityKind, hitch: bool) -> String {
+    pub(crate) fn entity_definition(&mut self, kind: EntityKind, hitch: bool) -> String {
         match kind {
             EntityKind::Car => {
                 let max_speed = self.pick(&[69.444, 40.0]);

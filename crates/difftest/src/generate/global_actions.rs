@@ -6,13 +6,13 @@ use super::positions::Scope;
 use super::{Declared, Gen};
 
 /// The lamp states the generator's signals take (red;yellow;green).
-pub const SIGNAL_STATES: [&str; 3] = ["on;off;off", "off;on;off", "off;off;on"];
+pub(super) const SIGNAL_STATES: [&str; 3] = ["on;off;off", "off;on;off", "off;off;on"];
 /// The phases of the generator's signal controller: (name, duration s, state of every signal).
-pub const PHASES: [(&str, f64, &str); 3] = [("stop", 4.0, "on;off;off"), ("ready", 2.0, "off;on;off"), ("go", 5.0, "off;off;on")];
+pub(super) const PHASES: [(&str, f64, &str); 3] = [("stop", 4.0, "on;off;off"), ("ready", 2.0, "off;on;off"), ("go", 5.0, "off;off;on")];
 
 impl Gen<'_> {
     /// A parameter (double): mostly the first one declared, else a new one; its name.
-    pub fn parameter(&mut self) -> String {
+    pub(crate) fn parameter(&mut self) -> String {
         let mut declared = std::mem::take(&mut self.parameters);
         let name = self.declare(&mut declared, "P");
         self.parameters = declared;
@@ -20,7 +20,7 @@ impl Gen<'_> {
     }
 
     /// A variable (double), as `parameter`.
-    pub fn variable(&mut self) -> String {
+    pub(crate) fn variable(&mut self) -> String {
         let mut declared = std::mem::take(&mut self.variables);
         let name = self.declare(&mut declared, "V");
         self.variables = declared;
@@ -46,7 +46,7 @@ impl Gen<'_> {
     }
 
     /// One global action, its kind named as a feature.
-    pub fn global_action(&mut self) -> String {
+    pub(crate) fn global_action(&mut self) -> String {
         let mut kinds = vec!["ParameterSetAction", "ParameterModifyAction", "VariableSetAction", "VariableModifyAction", "EnvironmentAction"];
         let deletable: Vec<String> = self.names().into_iter().skip(1).filter(|n| !self.deleted.iter().any(|(d, _)| d == n)).collect();
         if !deletable.is_empty() {
@@ -123,7 +123,7 @@ impl Gen<'_> {
     }
 
     /// The RoadNetwork's signal controller over every signal of the map.
-    pub fn signal_controllers(&self) -> String {
+    pub(crate) fn signal_controllers(&self) -> String {
         let phases: String = PHASES
             .iter()
             .map(|(name, duration, state)| {

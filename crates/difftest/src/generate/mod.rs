@@ -59,10 +59,10 @@ pub(crate) struct EntityPlan {
 
 impl EntityPlan {
     /// Moves by itself (vehicles and pedestrians; not objects or trailers).
-    pub fn mobile(&self) -> bool {
+    pub(crate) fn mobile(&self) -> bool {
         matches!(self.kind, EntityKind::Car | EntityKind::Truck | EntityKind::Bicycle | EntityKind::Pedestrian)
     }
-    pub fn vehicle(&self) -> bool {
+    pub(crate) fn vehicle(&self) -> bool {
         matches!(self.kind, EntityKind::Car | EntityKind::Truck | EntityKind::Bicycle)
     }
 }
@@ -179,61 +179,61 @@ impl<'a> Gen<'a> {
     }
 
     /// Whether `area` draws from its whole grammar in this scenario.
-    pub fn rich(&self, area: Area) -> bool {
+    pub(crate) fn rich(&self, area: Area) -> bool {
         Area::ALL.iter().position(|a| *a == area).is_some_and(|i| self.rich & (1 << i) != 0)
     }
 
-    pub fn pick<T: Copy>(&mut self, items: &[T]) -> T {
+    pub(crate) fn pick<T: Copy>(&mut self, items: &[T]) -> T {
         items[self.rng.gen_range(0..items.len())]
     }
-    pub fn pick_index(&mut self, n: usize) -> usize {
+    pub(crate) fn pick_index(&mut self, n: usize) -> usize {
         self.rng.gen_range(0..n.max(1))
     }
-    pub fn chance(&mut self, p: f64) -> bool {
+    pub(crate) fn chance(&mut self, p: f64) -> bool {
         self.rng.gen_bool(p.clamp(0.0, 1.0))
     }
     /// A number in [lo, hi) with two decimals: the file says exactly what both simulators read.
     /// An empty range gives `lo`.
-    pub fn num(&mut self, lo: f64, hi: f64) -> f64 {
+    pub(crate) fn num(&mut self, lo: f64, hi: f64) -> f64 {
         if hi <= lo {
             return (lo * 100.0).round() / 100.0;
         }
         (self.rng.gen_range(lo..hi) * 100.0).round() / 100.0
     }
-    pub fn feature(&mut self, f: impl Into<String>) {
+    pub(crate) fn feature(&mut self, f: impl Into<String>) {
         self.features.insert(f.into());
     }
     /// A fresh name with `prefix`.
-    pub fn unique(&mut self, prefix: &str) -> String {
+    pub(crate) fn unique(&mut self, prefix: &str) -> String {
         self.serial += 1;
         format!("{prefix}{}", self.serial)
     }
-    pub fn entity(&self, name: &str) -> Option<&EntityPlan> {
+    pub(crate) fn entity(&self, name: &str) -> Option<&EntityPlan> {
         self.entities.iter().find(|e| e.name == name)
     }
     /// Names of the entities that move by themselves.
-    pub fn mobile_names(&self) -> Vec<String> {
+    pub(crate) fn mobile_names(&self) -> Vec<String> {
         self.entities.iter().filter(|e| e.mobile()).map(|e| e.name.clone()).collect()
     }
-    pub fn names(&self) -> Vec<String> {
+    pub(crate) fn names(&self) -> Vec<String> {
         self.entities.iter().map(|e| e.name.clone()).collect()
     }
     /// A random driving spot of the map and a place on it.
-    pub fn random_place(&mut self) -> Place {
+    pub(crate) fn random_place(&mut self) -> Place {
         let spots: Vec<&lanes::Spot> = self.map.driving_spots().collect();
         let spot = spots[self.rng.gen_range(0..spots.len())].clone();
         let s = self.num(spot.s_min, spot.s_max.max(spot.s_min + 0.01));
         Place { road: spot.road, lane: spot.lane, s, forward: spot.along_s }
     }
     /// The place of entity `name` at the start, or a random one if unknown.
-    pub fn place_of(&mut self, name: &str) -> Place {
+    pub(crate) fn place_of(&mut self, name: &str) -> Place {
         match self.entity(name).and_then(|e| e.place) {
             Some(p) => p,
             None => self.random_place(),
         }
     }
     /// OpenDRIVE id of road index `road`.
-    pub fn road_id(&self, road: usize) -> String {
+    pub(crate) fn road_id(&self, road: usize) -> String {
         self.map.net.roads.get(road).map_or_else(String::new, |r| r.id.clone())
     }
 }

@@ -13,7 +13,7 @@ use super::{f3, Area, EntityKind, Gen};
 
 /// What kinds of position a caller accepts.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Scope {
+pub(crate) enum Scope {
     /// Lane, Road and World positions only (inside routes, trajectories, conditions).
     Plain,
     /// Also RoutePosition and TrajectoryPosition.
@@ -44,7 +44,7 @@ impl Gen<'_> {
     }
 
     /// A LanePosition of `place` with lateral `offset`.
-    pub fn lane_position_xml(&self, place: &Place, offset: f64, orientation: &str) -> String {
+    pub(crate) fn lane_position_xml(&self, place: &Place, offset: f64, orientation: &str) -> String {
         let id = self.road_id(place.road);
         if orientation.is_empty() {
             format!(r#"<LanePosition roadId="{id}" laneId="{}" offset="{offset}" s="{}"/>"#, place.lane, f3(place.s))
@@ -54,7 +54,7 @@ impl Gen<'_> {
     }
 
     /// A WorldPosition at `place` facing its direction of travel (turned by `dh`).
-    pub fn world_position_xml(&self, place: &Place, offset: f64, dh: f64) -> Option<String> {
+    pub(crate) fn world_position_xml(&self, place: &Place, offset: f64, dh: f64) -> Option<String> {
         let (x, y, h) = world(&self.map.net, place, offset)?;
         let (x, y, h) = self.map.scenario_xyh(x, y, h + dh);
         Some(format!(r#"<WorldPosition x="{}" y="{}" h="{}"/>"#, f3(x), f3(y), f3(normalize(h))))
@@ -62,7 +62,7 @@ impl Gen<'_> {
 
     /// A position describing `place` without reference to an entity. `facing_back`: the
     /// entity faces against its lane (a parked car or object turned round).
-    pub fn place_position(&mut self, place: &Place, prefix: &str, scope: Scope, facing_back: bool) -> String {
+    pub(crate) fn place_position(&mut self, place: &Place, prefix: &str, scope: Scope, facing_back: bool) -> String {
         let mut kinds = vec!["LanePosition", "LanePosition", "RoadPosition", "WorldPosition"];
         if scope == Scope::Any && (self.rich(Area::Positions) || self.rich(Area::Routes)) {
             kinds.extend(["RoutePosition", "RoutePosition"]);
@@ -108,7 +108,7 @@ impl Gen<'_> {
 
     /// A position relative to entity `reference` (placed at `at`, if known) and where it puts
     /// the entity.
-    pub fn relative_position(&mut self, reference: &str, at: Option<Place>, prefix: &str) -> (String, Option<Place>) {
+    pub(crate) fn relative_position(&mut self, reference: &str, at: Option<Place>, prefix: &str) -> (String, Option<Place>) {
         let rich = self.rich(Area::Positions);
         let kind = if rich {
             self.pick(&["RelativeLanePosition", "RelativeLanePosition", "RelativeObjectPosition", "RelativeRoadPosition", "RelativeWorldPosition"])
@@ -199,7 +199,7 @@ impl Gen<'_> {
 
     /// A position for a target (teleport, acquire, a condition's point): a place ahead of
     /// entity `actor` along its lane graph, or one relative to an entity.
-    pub fn target_position(&mut self, actor: &str, scope: Scope) -> String {
+    pub(crate) fn target_position(&mut self, actor: &str, scope: Scope) -> String {
         let names = self.names();
         if self.rich(Area::Positions) && self.chance(0.25) && !names.is_empty() {
             let reference = names[self.pick_index(names.len())].clone();
@@ -211,7 +211,7 @@ impl Gen<'_> {
     }
 
     /// A place `lo`..`hi` metres ahead of where entity `name` starts, along its lane graph.
-    pub fn place_ahead(&mut self, name: &str, lo: f64, hi: f64) -> Place {
+    pub(crate) fn place_ahead(&mut self, name: &str, lo: f64, hi: f64) -> Place {
         let start = self.place_of(name);
         let d = self.num(lo, hi);
         let legs = super::lanes::walk(&self.map.net, start, d, &mut self.rng);
@@ -221,7 +221,7 @@ impl Gen<'_> {
 
 /// esmini's lane `lane_id` stepped by `offset` lanes, the centre lane skipped
 /// (roadmanager::GetRelativeLaneId).
-pub fn relative_lane(lane_id: i32, offset: i32) -> i32 {
+pub(super) fn relative_lane(lane_id: i32, offset: i32) -> i32 {
     let r = lane_id + offset;
     if lane_id == 0 || offset == 0 {
         r
@@ -233,7 +233,7 @@ pub fn relative_lane(lane_id: i32, offset: i32) -> i32 {
 }
 
 /// An angle in (-π, π].
-pub fn normalize(mut h: f64) -> f64 {
+pub(super) fn normalize(mut h: f64) -> f64 {
     while h > PI {
         h -= 2.0 * PI;
     }

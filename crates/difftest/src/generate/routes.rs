@@ -10,14 +10,14 @@ use super::positions::Scope;
 use super::{f3, Gen};
 
 /// A route the generator wrote: its XML and the walk it follows from its first waypoint.
-pub struct Route {
+pub(crate) struct Route {
     pub xml: String,
     pub legs: Vec<Leg>,
 }
 
 impl Gen<'_> {
     /// A route starting at `from`, about `length` metres long.
-    pub fn route_from(&mut self, from: Place, length: f64) -> Route {
+    pub(crate) fn route_from(&mut self, from: Place, length: f64) -> Route {
         let legs = walk(&self.map.net, from, length, &mut self.rng);
         let total = walk_length(&legs);
         let n = if total < 20.0 { 2 } else { self.pick(&[2, 2, 3, 4]) };
@@ -47,7 +47,7 @@ impl Gen<'_> {
     }
 
     /// A RoutePosition on a route through (or near) `place`, and the feature it names.
-    pub fn route_position_at(&mut self, place: &Place, prefix: &str) -> String {
+    pub(crate) fn route_position_at(&mut self, place: &Place, prefix: &str) -> String {
         self.feature(format!("{prefix}RoutePosition"));
         // start the route a little before the place, so that the place is on it at path_s
         let back = self.num(0.0, 60.0);
@@ -102,7 +102,7 @@ impl Gen<'_> {
     /// An AssignRouteAction for entity `actor`: its route starts a little ahead of where the
     /// entity starts (esmini's route followers plan from the entity to the next waypoint and
     /// refuse one on the entity's own road and lane behind it).
-    pub fn assign_route_action(&mut self, actor: &str) -> String {
+    pub(crate) fn assign_route_action(&mut self, actor: &str) -> String {
         let from = self.place_ahead(actor, 5.0, 30.0);
         let len = self.num(150.0, 600.0);
         let route = self.route_from(from, len);

@@ -168,7 +168,7 @@ impl Gen<'_> {
     }
 
     /// The whole scenario.
-    pub fn scenario(&mut self, seed: u64, index: u64) -> String {
+    pub(crate) fn scenario(&mut self, seed: u64, index: u64) -> String {
         self.feature(format!("map:{}", self.map.label));
         if self.map.label == "folder" {
             let stem = self.map.path.file_stem().map(|s| s.to_string_lossy().to_string()).unwrap_or_default();

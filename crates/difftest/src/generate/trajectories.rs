@@ -29,7 +29,7 @@ impl Gen<'_> {
 
     /// A trajectory (its XML) starting at `start` along a walk of `length` metres, with times
     /// counting from `t0` at `speed` m/s.
-    pub fn trajectory_from(&mut self, start: Place, length: f64, t0: f64, speed: f64) -> String {
+    pub(crate) fn trajectory_from(&mut self, start: Place, length: f64, t0: f64, speed: f64) -> String {
         let legs = walk(&self.map.net, start, length, &mut self.rng);
         let total = walk_length(&legs).max(1.0);
         let speed = speed.abs().max(2.0);
@@ -134,7 +134,7 @@ impl Gen<'_> {
     }
 
     /// A FollowTrajectoryAction for `actor`, started at about time `t_start`.
-    pub fn follow_trajectory_action(&mut self, actor: &str, t_start: f64) -> String {
+    pub(crate) fn follow_trajectory_action(&mut self, actor: &str, t_start: f64) -> String {
         let start = self.place_of(actor);
         let speed = self.entity(actor).map_or(10.0, |e| e.speed).abs().max(3.0);
         let length = self.num(40.0, 250.0);
@@ -177,7 +177,7 @@ impl Gen<'_> {
     }
 
     /// A TrajectoryPosition on a trajectory through (or near) `place`.
-    pub fn trajectory_position_at(&mut self, place: &Place, prefix: &str) -> String {
+    pub(crate) fn trajectory_position_at(&mut self, place: &Place, prefix: &str) -> String {
         self.feature(format!("{prefix}TrajectoryPosition"));
         let back = self.num(0.0, 40.0);
         let len = self.map.net.roads.get(place.road).map_or(0.0, |r| r.length);

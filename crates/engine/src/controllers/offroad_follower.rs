@@ -9,7 +9,7 @@
 //! controller leaves the entity alone, and it steps after the default controller has moved
 //! the one it follows.
 
-pub mod state;
+pub(crate) mod state;
 
 use state::OffroadFollowerRt;
 
@@ -21,7 +21,7 @@ use crate::sim::Sim;
 use openscenario::Controller;
 
 impl OffroadFollowerRt {
-    pub fn new(c: &Controller) -> OffroadFollowerRt {
+    pub(crate) fn new(c: &Controller) -> OffroadFollowerRt {
         let num = |n: &str, d: f64| c.properties.get(n).and_then(|v| v.trim().parse::<f64>().ok()).filter(|v| v.is_finite()).unwrap_or(d);
         OffroadFollowerRt {
             active: false,
@@ -34,7 +34,7 @@ impl OffroadFollowerRt {
 
     /// Switched on (ControllerOffroadFollower::Activate): the model starts from the entity's
     /// pose and speed.
-    pub fn activate(&mut self, en: &crate::entities::Entity) {
+    pub(crate) fn activate(&mut self, en: &crate::entities::Entity) {
         self.active = true;
         let car = KinematicVehicle::new(en.x, en.y, en.h, en.speed, en.bbox[3], en.max_speed);
         self.vehicle = Some(AnalogVehicle::new(car, en.max_acc, en.max_dec, self.steering_rate));

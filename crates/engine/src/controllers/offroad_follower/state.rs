@@ -3,7 +3,7 @@
 use crate::controllers::analog_vehicle::AnalogVehicle;
 
 #[derive(Debug, Clone)]
-pub struct OffroadFollowerRt {
+pub(crate) struct OffroadFollowerRt {
     pub active: bool,
     /// `followEntity` (esmini does nothing without it).
     pub(super) follow: Option<String>,

@@ -1,0 +1,9 @@
+//! The ACC: what a controller in override mode does to the storyboard's actions on its entity,
+//! its first frame and its look-ahead.
+
+mod first_frame;
+mod lookahead_same_road;
+mod override_moves;
+mod override_speed_action;
+mod override_speed_profile;
+mod override_teleport;
