@@ -88,10 +88,13 @@ fn check_file(path: &Path, params: &[(String, String)]) -> Vec<Finding> {
             finding(severity, &f.location.file, f.location.line, f.location.col, f.message)
         })
         .collect();
-    let schema_errors: Vec<(String, u32, u32)> = out.iter().filter(|f| f.severity == "error").map(|f| (f.file.clone(), f.line, f.column)).collect();
+    let schema: Vec<(String, u32, u32, bool)> = out.iter().map(|f| (f.file.clone(), f.line, f.column, f.severity == "error")).collect();
     // The reader's error on a line the schema pass found wrong is the same problem seen again;
-    // so is its warning at the very place of a schema error (an unknown attribute is also unread).
-    let already = |f: &Finding| schema_errors.iter().any(|(file, line, col)| *file == f.file && *line == f.line && (f.severity == "error" || *col == f.column));
+    // so is any finding of the reader at the very place of one of the schema pass (an unknown
+    // attribute is also unread; a catalog's undeclared parameter also stops its entry).
+    let already = |f: &Finding| {
+        schema.iter().any(|(file, line, col, error)| *file == f.file && *line == f.line && ((*error && f.severity == "error") || *col == f.column))
+    };
     let reader = reader_findings(path, params);
     out.extend(reader.into_iter().filter(|f| !already(f)));
     out

@@ -67,10 +67,10 @@ const VALID: &[&str] = &[
 /// What osc2cr finds wrong in a file the API reads without error, because osc2cr checks what the
 /// file refers to and the API's schema reading does not: in the two ALKS files a LanePosition's
 /// `laneId` (a string in the schema) is the bare name of a parameter, `Ego_InitPosition_LaneId`,
-/// which no OpenDRIVE lane can be (lane ids are integers).
+/// which no OpenDRIVE lane can be (lane ids are integers; esmini reads the text as lane 0).
 fn beyond_the_schema(file: &str, message: &str) -> bool {
     file.starts_with("ALKS_Scenario_4.2_1_FullyBlockingTarget_")
-        && message == "attribute 'laneId' of <LanePosition>: expected an integer, found 'Ego_InitPosition_LaneId'"
+        && message.starts_with("attribute 'laneId' of <LanePosition>: expected an integer, found 'Ego_InitPosition_LaneId'")
 }
 
 struct Expected {

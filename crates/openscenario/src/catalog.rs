@@ -135,7 +135,8 @@ impl CatalogStore {
     /// Finds `entry` of catalog `catalog` for one of `kinds`. Order: directories of the expected
     /// kinds before the others; in each group, files whose Catalog@name matches, then files
     /// named `<catalog>.xosc`.
-    pub fn find(&mut self, kinds: &[CatalogKind], catalog: &str, entry: &str, at: &Location, warnings: &mut Vec<Warning>) -> Result<Found, Error> {
+    /// `at`: where the reference names the catalog and the entry (for the errors).
+    pub fn find(&mut self, kinds: &[CatalogKind], catalog: &str, entry: &str, at: (&Location, &Location), warnings: &mut Vec<Warning>) -> Result<Found, Error> {
         let mut groups: Vec<Vec<PathBuf>> = vec![Vec::new(), Vec::new()];
         for d in &self.dirs {
             let g = usize::from(!kinds.contains(&d.kind));
@@ -177,7 +178,7 @@ impl CatalogStore {
         }
         match catalog_found {
             Some(f) => {
-                Err(Error::new(ErrorKind::MissingCatalogEntry, at.clone(), format!("catalog '{catalog}' ({}) has no entry named '{entry}'", f.display())))
+                Err(Error::new(ErrorKind::MissingCatalogEntry, at.1.clone(), format!("catalog '{catalog}' ({}) has no entry named '{entry}'", f.display())))
             }
             None => {
                 let tried: Vec<String> = self
@@ -187,7 +188,7 @@ impl CatalogStore {
                     .collect();
                 Err(Error::new(
                     ErrorKind::MissingCatalog,
-                    at.clone(),
+                    at.0.clone(),
                     format!(
                         "catalog '{catalog}' (for entry '{entry}') not found; looked in {}",
                         if tried.is_empty() { "no catalog directories (CatalogLocations is empty)".to_string() } else { tried.join(", ") }

@@ -67,8 +67,8 @@ impl Reader {
         kinds: &[CatalogKind],
         read: impl FnOnce(&mut Reader, &Cx, &Elem, &[(String, String)]) -> Result<T, Error>,
     ) -> Result<T, Error> {
-        let catalog = cx.text(reference, "catalogName")?;
-        let entry = cx.text(reference, "entryName")?;
+        let catalog = cx.reference(reference, "catalogName")?;
+        let entry = cx.reference(reference, "entryName")?;
         let mut assignments = Vec::new();
         if let Some(pa) = reference.child("ParameterAssignments") {
             for a in pa.children_named("ParameterAssignment") {
@@ -84,7 +84,9 @@ impl Reader {
         if self.catalog_depth >= MAX_CATALOG_DEPTH {
             return Err(Error::new(ErrorKind::Limit, at, format!("catalog references nested deeper than {MAX_CATALOG_DEPTH}")));
         }
-        let found = self.catalogs.find(kinds, &catalog, &entry, &at, &mut self.warnings)?;
+        // a catalog that cannot be found is said at its name, a missing entry at the entry's
+        let attr_at = |name: &str| cx.loc(reference.attr(name).map_or(reference.pos, |a| a.pos));
+        let found = self.catalogs.find(kinds, &catalog, &entry, (&attr_at("catalogName"), &attr_at("entryName")), &mut self.warnings)?;
         let Some(elem) = found.elem() else {
             return Err(Error::new(ErrorKind::MissingCatalogEntry, at, format!("catalog entry '{entry}' vanished")));
         };
@@ -97,7 +99,7 @@ impl Reader {
             ));
         }
         let scope = Scope { params: Vec::new(), parent: Some(cx.scope) };
-        let entry_cx = Cx::new(found.doc.file.clone(), &scope);
+        let entry_cx = cx.in_file(found.doc.file.clone(), &scope);
         self.catalog_depth += 1;
         let result = read(self, &entry_cx, elem, &assignments);
         self.catalog_depth -= 1;
