@@ -10,6 +10,8 @@
 //! one does is a warning (esmini and our reader accept such mixtures), not an error.
 
 mod declarations;
+mod names;
+mod operators;
 mod rules;
 mod values;
 
@@ -160,6 +162,7 @@ impl Walker {
         }
         self.attributes(el, schema, type_name);
         self.cross_attribute_rules(el, type_name);
+        self.unique_names(el);
         if matches!(el.name.as_str(), "VariableAction" | "VariableCondition") {
             self.variable_use(el);
         }
@@ -372,6 +375,7 @@ impl Walker {
                     );
                     return None;
                 }
+                self.expression_extensions(&el.name, attr);
                 match self.fits(kind, &value) {
                     Ok(()) => Some(value),
                     Err(why) => {
