@@ -19,9 +19,11 @@ pub struct CheckArgs {
     /// Print the findings as JSON (an array of {file, line, column, severity, message}).
     #[arg(long)]
     pub json: bool,
-    /// Also list warnings (by default only errors and a count of warnings are printed).
-    #[arg(short, long)]
-    pub verbose: bool,
+    /// Also list warnings (by default only errors and a count of warnings are printed). A finding
+    /// repeated in one file is listed once, at its first position, with how many more there
+    /// are; `-vv` lists every one (as `--json` does).
+    #[arg(short, long, action = clap::ArgAction::Count)]
+    pub verbose: u8,
     /// Check as if global parameter NAME had VALUE (as `convert --param` would run it); the value
     /// must fit the parameter's declared type. Repeatable.
     #[arg(long = "param", value_name = "NAME=VALUE", value_parser = crate::convert_cmd::parse_param)]
@@ -168,11 +170,18 @@ pub fn run(args: &CheckArgs) -> Result<(), Failure> {
         let json = serde_json::to_string_pretty(&findings).map_err(|e| Failure::input(e.to_string()))?;
         println!("{json}");
     } else {
-        for f in findings.iter().filter(|f| args.verbose || f.severity == "error") {
+        let shown: Vec<&Finding> = findings.iter().filter(|f| args.verbose > 0 || f.severity == "error").collect();
+        let lines: Vec<(&&Finding, usize)> = if args.verbose > 1 {
+            shown.iter().map(|f| (f, 0)).collect()
+        } else {
+            crate::grouped::by_kind(&shown, |f| (f.file.clone(), f.severity, crate::grouped::kind(&f.message)))
+        };
+        for (f, more) in lines {
+            let more = crate::grouped::more(more);
             if f.line == 0 {
-                println!("{}: {}: {}", f.file, f.severity, f.message);
+                println!("{}: {}: {}{more}", f.file, f.severity, f.message);
             } else {
-                println!("{}:{}:{}: {}: {}", f.file, f.line, f.column, f.severity, f.message);
+                println!("{}:{}:{}: {}: {}{more}", f.file, f.line, f.column, f.severity, f.message);
             }
         }
         eprintln!(
@@ -181,7 +190,7 @@ pub fn run(args: &CheckArgs) -> Result<(), Failure> {
             if files.len() == 1 { "" } else { "s" },
             if errors == 1 { "" } else { "s" },
             if warnings == 1 { "" } else { "s" },
-            if args.verbose || warnings == 0 { "" } else { " (-v lists them)" }
+            if args.verbose > 0 || warnings == 0 { "" } else { " (-v lists them)" }
         );
     }
     if errors > 0 {

@@ -5,6 +5,7 @@
 
 mod check_cmd;
 mod convert_cmd;
+mod grouped;
 mod inspect;
 mod map_cmd;
 mod render_cmd;

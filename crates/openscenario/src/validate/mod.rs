@@ -47,10 +47,14 @@ pub struct Finding {
 /// Validates one file. Never fails: an unreadable or malformed file is itself a finding.
 /// `injected` are `--param NAME=VALUE` overrides of global parameters, checked as such.
 pub fn validate_file(path: &Path, injected: &[(String, String)]) -> Vec<Finding> {
-    match xml::read_file(path) {
-        Ok(doc) => validate_doc(&doc, injected),
-        Err(e) => vec![Finding { severity: Severity::Error, location: e.location, message: e.message }],
-    }
+    validate_readable_file(path, injected).unwrap_or_else(|e| vec![Finding { severity: Severity::Error, location: e.location, message: e.message }])
+}
+
+/// Like [`validate_file`], but a file that cannot be read or is not well-formed XML (empty,
+/// cut off, too large) is the `Err`: no reading, lenient or not, can go on from it, so a caller
+/// that lets `--lenient` pass the schema's findings says it as what it is.
+pub fn validate_readable_file(path: &Path, injected: &[(String, String)]) -> Result<Vec<Finding>, crate::Error> {
+    xml::read_file(path).map(|doc| validate_doc(&doc, injected))
 }
 
 /// Validates text as if it were the file `path`.
