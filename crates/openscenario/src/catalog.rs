@@ -95,6 +95,12 @@ impl CatalogStore {
         self.dirs.push(Dir { kind, path });
     }
 
+    /// Whether every registered catalog directory exists (so a catalog not found in them is
+    /// named wrongly rather than not shipped).
+    pub fn all_directories_exist(&self) -> bool {
+        !self.dirs.is_empty() && self.dirs.iter().all(|d| d.path.is_dir())
+    }
+
     /// The catalog files parsed so far, in path order.
     pub fn documents(&self) -> impl Iterator<Item = &Doc> + '_ {
         self.files.values().filter_map(|d| d.as_deref())

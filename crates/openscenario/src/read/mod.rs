@@ -122,7 +122,8 @@ impl Reader {
             Err(e) if self.go_on_without_catalogs && matches!(e.kind, ErrorKind::MissingCatalog | ErrorKind::MissingCatalogEntry) => {
                 reference.announce();
                 let gap = Warning { location: e.location.clone(), message: e.message.clone() };
-                if e.kind == ErrorKind::MissingCatalog {
+                // a catalog missing from directories that are all there is a wrong name, not a gap
+                if e.kind == ErrorKind::MissingCatalog && !self.catalogs.all_directories_exist() {
                     self.warnings.push(Warning { message: format!("{} (what this file takes from the catalog is not checked)", gap.message), ..gap });
                 } else {
                     self.problems.push(gap);
