@@ -76,13 +76,16 @@ fn validate_doc(doc: &xml::Doc, injected: &[(String, String)]) -> Vec<Finding> {
         declared: minor,
         injected: injected.to_vec(),
         in_catalog,
+        at_root: true,
     };
     if let Some((pos, note)) = version_note {
         w.push(Severity::Warning, pos, note);
     }
     let Some(schema) = schema::for_minor(minor) else { return w.findings };
     let root = &doc.root;
-    let Some(decl) = all_schemas(minor).find_map(|s| s.roots.iter().find(|r| r.name == root.name).map(|r| (s, r))) else {
+    // the schemas also declare a global <OpenScenario>, but a document's root is <OpenSCENARIO>
+    let decl = all_schemas(minor).find_map(|s| s.roots.iter().find(|r| r.name == root.name).map(|r| (s, r))).filter(|_| root.name == "OpenSCENARIO");
+    let Some(decl) = decl else {
         w.push(Severity::Error, root.pos, format!("<{}> is not an OpenSCENARIO document (its root element must be <OpenSCENARIO>)", root.name));
         return w.findings;
     };
@@ -132,6 +135,8 @@ struct Walker {
     /// The file is a catalog: its entries may use parameters of the scenarios that refer to
     /// them, so a parameter it does not declare is a warning, not an error.
     in_catalog: bool,
+    /// The walk is at the document element (until it has been entered).
+    at_root: bool,
 }
 
 impl Walker {
@@ -159,7 +164,7 @@ impl Walker {
             self.inject(at);
         }
         // variables are declared after the global parameters, whose values they may use
-        if el.name == "OpenSCENARIO" {
+        if std::mem::take(&mut self.at_root) {
             if let Some(vars) = el.child("VariableDeclarations") {
                 self.declare_variables(vars);
             }
