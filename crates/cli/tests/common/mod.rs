@@ -2,6 +2,7 @@
 //! shipped example (tests only).
 #![allow(dead_code)]
 
+pub mod checker_suite_valid;
 pub mod png;
 
 use std::path::{Path, PathBuf};
