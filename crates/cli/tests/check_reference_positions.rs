@@ -197,3 +197,23 @@ fn each_broken_reference_is_reported_at_its_attribute() {
     }
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
 }
+
+#[test]
+fn an_assignment_to_a_parameter_the_entry_does_not_declare_is_warned_at_its_parameter_ref() {
+    let (file, text) = broken(
+        "assignment",
+        r#"<CatalogReference catalogName="Cars" entryName="small_car"/>"#,
+        r#"<CatalogReference catalogName="Cars" entryName="small_car"><ParameterAssignments><ParameterAssignment parameterRef="Colour" value="red"/></ParameterAssignments></CatalogReference>"#,
+    );
+    let (line, col) = value_position(&text, r#"parameterRef="Colour""#);
+    let r = osc2cr(&["check", "--json", s(&file)]);
+    let json: serde_json::Value = serde_json::from_slice(&r.stdout).expect("json");
+    let found = json.as_array().cloned().unwrap_or_default();
+    assert!(
+        found.iter().any(|f| f["severity"] == "warning"
+            && f["line"] == line
+            && f["column"] == col
+            && f["message"].as_str().is_some_and(|m| m.contains("'Colour' does not match any parameter declared by <Vehicle> 'small_car'"))),
+        "{found:#?}"
+    );
+}

@@ -48,13 +48,8 @@ impl Reader {
 
     /// Declarations of an entry (Vehicle, Maneuver, ...) resolved with `assignments`.
     pub fn declarations(&mut self, cx: &Cx, e: &Elem, assignments: &[(String, String)]) -> Result<Vec<ParameterDeclaration>, Error> {
-        let decls = read_declarations(e.child("ParameterDeclarations"), cx.scope, assignments, &cx.file, &mut self.warnings)?;
-        for (name, _) in assignments {
-            if !decls.iter().any(|d| &d.name == name) {
-                self.warn(cx.loc(e.pos), format!("parameter assignment '{name}' does not match any parameter declared by <{}>", e.name));
-            }
-        }
-        Ok(decls)
+        // an assignment that matches no declaration is said where it is written (`catalog_entry`)
+        read_declarations(e.child("ParameterDeclarations"), cx.scope, assignments, &cx.file, &mut self.warnings)
     }
 
     /// Resolves a CatalogReference element and reads the entry with `read`, which receives the
@@ -70,10 +65,12 @@ impl Reader {
         let catalog = cx.reference(reference, "catalogName")?;
         let entry = cx.reference(reference, "entryName")?;
         let mut assignments = Vec::new();
+        let mut assigned_at = Vec::new();
         if let Some(pa) = reference.child("ParameterAssignments") {
             for a in pa.children_named("ParameterAssignment") {
                 let name = cx.name_ref(a, "parameterRef")?;
                 let value = cx.text(a, "value")?;
+                assigned_at.push((name.clone(), a.attr("parameterRef").map_or(a.pos, |r| r.pos)));
                 match assignments.iter_mut().find(|(n, _): &&mut (String, String)| n == &name) {
                     Some(slot) => slot.1 = value,
                     None => assignments.push((name, value)),
@@ -97,6 +94,21 @@ impl Reader {
                 at,
                 format!("catalog entry '{entry}' of catalog '{catalog}' is a <{}>, expected {}", elem.name, expected.join(" or ")),
             ));
+        }
+        let declared: Vec<&str> = elem
+            .children_unmarked()
+            .iter()
+            .filter(|d| d.name == "ParameterDeclarations")
+            .flat_map(|d| d.children_unmarked())
+            .filter_map(|p| p.attrs.iter().find(|a| a.name == "name").map(|a| a.value.trim().trim_start_matches('$')))
+            .collect();
+        for (name, pos) in &assigned_at {
+            if !declared.contains(&name.as_str()) {
+                self.warn(
+                    cx.loc(*pos),
+                    format!("parameter assignment '{name}' does not match any parameter declared by <{}> '{entry}' of catalog '{catalog}'", elem.name),
+                );
+            }
         }
         let scope = Scope { params: Vec::new(), parent: Some(cx.scope) };
         let entry_cx = cx.in_file(found.doc.file.clone(), &scope);
