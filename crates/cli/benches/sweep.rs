@@ -71,6 +71,8 @@ fn run(name: &'static str, sweep: &Path, format: &'static str, variations: Optio
     let report = out.with_extension("json");
     let limit = ["--max-variations".to_string(), variations.unwrap_or(u64::MAX).to_string()];
     let start = Instant::now();
+    // waited for below with wait4, which std's Child cannot do (it gives no rusage)
+    #[allow(clippy::zombie_processes)]
     let child = Command::new(env!("CARGO_BIN_EXE_osc2cr"))
         .arg("convert")
         .arg(sweep)

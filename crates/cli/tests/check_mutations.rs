@@ -237,6 +237,9 @@ fn mirror(root: &Path, mirror: &Path, dirs: &BTreeSet<PathBuf>) {
     }
 }
 
+/// Kind → the mutated files with the line and column where the error is expected.
+type Planned = BTreeMap<&'static str, Vec<(PathBuf, (u64, u64))>>;
+
 #[test]
 fn mutations_are_reported_at_the_mutated_line() {
     let Some(shared) = testkit::shared_dir() else { return };
@@ -260,8 +263,7 @@ fn mutations_are_reported_at_the_mutated_line() {
     let out = tmp("check_mutations", "mirror");
     let dirs: BTreeSet<PathBuf> = scenarios.iter().filter_map(|p| p.parent()?.strip_prefix(&corpus).ok().map(Path::to_path_buf)).collect();
     mirror(&corpus, &out, &dirs);
-    // kind → [(file, expected line and column)]
-    let mut planned: BTreeMap<&'static str, Vec<(PathBuf, (u64, u64))>> = BTreeMap::new();
+    let mut planned: Planned = BTreeMap::new();
     for p in &scenarios {
         let text = std::fs::read_to_string(p).expect("scenario");
         let rel = p.strip_prefix(&corpus).expect("in the corpus");
