@@ -8,12 +8,7 @@
 /// with a point and an exponent, or `inf`/`infinity`/`nan` in any case; 0 when no number starts
 /// the text. Hexadecimal floats are read as C reads them too (`0x1A` is 26).
 pub(crate) fn atof(text: &str) -> f64 {
-    let t = text.trim_start_matches(|c: char| c.is_ascii_whitespace());
-    let (negative, rest) = match t.as_bytes().first() {
-        Some(b'-') => (true, &t[1..]),
-        Some(b'+') => (false, &t[1..]),
-        _ => (false, t),
-    };
+    let (negative, rest) = sign(text);
     let magnitude = special(rest).or_else(|| hexadecimal(rest)).unwrap_or_else(|| decimal(rest));
     if negative {
         -magnitude
@@ -25,12 +20,7 @@ pub(crate) fn atof(text: &str) -> f64 {
 /// C's `atoi`: leading white space, a sign and decimal digits; 0 when none start the text
 /// (a value beyond the range of `i64` saturates).
 pub(crate) fn atoi(text: &str) -> i64 {
-    let t = text.trim_start_matches(|c: char| c.is_ascii_whitespace());
-    let (negative, rest) = match t.as_bytes().first() {
-        Some(b'-') => (true, &t[1..]),
-        Some(b'+') => (false, &t[1..]),
-        _ => (false, t),
-    };
+    let (negative, rest) = sign(text);
     let mut v: i64 = 0;
     for d in rest.bytes().take_while(u8::is_ascii_digit) {
         v = v.saturating_mul(10).saturating_add(i64::from(d - b'0'));
@@ -39,6 +29,16 @@ pub(crate) fn atoi(text: &str) -> i64 {
         -v
     } else {
         v
+    }
+}
+
+/// Leading white space skipped, the sign read: whether it is negative, and what follows it.
+fn sign(text: &str) -> (bool, &str) {
+    let t = text.trim_start_matches(|c: char| c.is_ascii_whitespace());
+    match t.as_bytes().first() {
+        Some(b'-') => (true, &t[1..]),
+        Some(b'+') => (false, &t[1..]),
+        _ => (false, t),
     }
 }
 
