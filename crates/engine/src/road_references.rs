@@ -23,13 +23,13 @@ pub fn road_references(scenario: &Scenario, road: Option<&opendrive::RoadNetwork
             _ => continue,
         };
         let element = if lane.is_some() { "LanePosition" } else { "RoadPosition" };
-        let at_road = scenario.reference_site(within, "roadId", |v| v == road_id);
+        let at_road = || scenario.reference_site(within, "roadId", |v| v == road_id);
         let Some(network) = road else {
-            out.push(Warning::at(at_road, format!("{element} on road `{road_id}`, but the scenario has no road network")));
+            out.push(Warning::at(at_road(), format!("{element} on road `{road_id}`, but the scenario has no road network")));
             continue;
         };
         let Some(r) = network.road(road_id) else {
-            out.push(Warning::at(at_road, format!("{element}: road `{road_id}` is not in the road network")));
+            out.push(Warning::at(at_road(), format!("{element}: road `{road_id}` is not in the road network")));
             continue;
         };
         if let Some((lane_id, s)) = lane {
