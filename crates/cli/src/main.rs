@@ -7,6 +7,7 @@ mod commands;
 mod osi_file;
 mod serve_extra;
 mod shared_options;
+mod grouped;
 
 use clap::{Parser, Subcommand};
 use commands::{check, convert, inspect, map, render, serve, simulate};

@@ -239,7 +239,10 @@ pub(crate) fn prepare(
     let load_options = LoadOptions { parameters, seed: options.seed, ..Default::default() };
     // The schema pass first (the same as `osc2cr check`): what is wrong with the file itself,
     // all of it. Its warnings (deprecations, version mixtures) are `check`'s to list.
-    let schema_errors: Vec<String> = openscenario::validate::validate_file(request.path, &load_options.parameters)
+    // A file that is missing, empty or not well-formed XML stops here as what it is: it is not a
+    // schema error `--lenient` could read past.
+    let schema_errors: Vec<String> = openscenario::validate::validate_readable_file(request.path, &load_options.parameters)
+        .map_err(|e| fail(Stage::Load, e.to_string()))?
         .into_iter()
         .filter(|f| f.severity == openscenario::validate::Severity::Error)
         .map(|f| format!("{}: {}", f.location, f.message))

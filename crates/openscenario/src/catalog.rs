@@ -95,6 +95,12 @@ impl CatalogStore {
         self.dirs.push(Dir { kind, path });
     }
 
+    /// Whether every registered catalog directory exists (so a catalog not found in them is
+    /// named wrongly rather than not shipped).
+    pub(crate) fn all_directories_exist(&self) -> bool {
+        !self.dirs.is_empty() && self.dirs.iter().all(|d| d.path.is_dir())
+    }
+
     /// The catalog files parsed so far, in path order.
     pub(crate) fn documents(&self) -> impl Iterator<Item = &Doc> + '_ {
         self.files.values().filter_map(|d| d.as_deref())
@@ -135,7 +141,8 @@ impl CatalogStore {
     /// Finds `entry` of catalog `catalog` for one of `kinds`. Order: directories of the expected
     /// kinds before the others; in each group, files whose Catalog@name matches, then files
     /// named `<catalog>.xosc`.
-    pub(crate) fn find(&mut self, kinds: &[CatalogKind], catalog: &str, entry: &str, at: &Location, warnings: &mut Vec<Warning>) -> Result<Found, Error> {
+    /// `at`: where the reference names the catalog and the entry (for the errors).
+    pub(crate) fn find(&mut self, kinds: &[CatalogKind], catalog: &str, entry: &str, at: (&Location, &Location), warnings: &mut Vec<Warning>) -> Result<Found, Error> {
         let mut groups: Vec<Vec<PathBuf>> = vec![Vec::new(), Vec::new()];
         for d in &self.dirs {
             let g = usize::from(!kinds.contains(&d.kind));
@@ -177,7 +184,7 @@ impl CatalogStore {
         }
         match catalog_found {
             Some(f) => {
-                Err(Error::new(ErrorKind::MissingCatalogEntry, at.clone(), format!("catalog '{catalog}' ({}) has no entry named '{entry}'", f.display())))
+                Err(Error::new(ErrorKind::MissingCatalogEntry, at.1.clone(), format!("catalog '{catalog}' ({}) has no entry named '{entry}'", f.display())))
             }
             None => {
                 let tried: Vec<String> = self
@@ -187,7 +194,7 @@ impl CatalogStore {
                     .collect();
                 Err(Error::new(
                     ErrorKind::MissingCatalog,
-                    at.clone(),
+                    at.0.clone(),
                     format!(
                         "catalog '{catalog}' (for entry '{entry}') not found; looked in {}",
                         if tried.is_empty() { "no catalog directories (CatalogLocations is empty)".to_string() } else { tried.join(", ") }

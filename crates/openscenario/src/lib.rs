@@ -16,6 +16,7 @@ mod catalog;
 mod catalog_file;
 pub mod distribution;
 mod error;
+mod esmini_fallback;
 pub mod expr;
 mod load;
 pub mod model;

@@ -1,5 +1,6 @@
 //! Entry points: load a file (scenario, parameter distribution or catalog) into the model.
 
+use crate::attr::Record;
 use crate::catalog_file::{read_catalog_file, CatalogFile};
 use crate::distribution::{read_distribution, Distribution};
 use crate::error::{absolute, Error, ErrorKind, Location, Warning};
@@ -84,14 +85,20 @@ fn load_doc(path: &Path, doc: Doc, options: &LoadOptions) -> Result<Loaded, Erro
     }
     let mut reader = Reader::new();
     reader.go_on_without_catalogs = options.go_on_without_catalogs;
+    let record = Record::default();
     let content = if root.child("Storyboard").is_some() {
-        let scenario = read_scenario(&mut reader, &abs, &doc.file, root, &options.parameters)?;
+        let mut scenario = read_scenario(&mut reader, &record, &abs, &doc.file, root, &options.parameters)?;
+        scenario.reference_sites = record.sites.take();
+        reader.problems.append(&mut record.problems.take());
         reader.problems.extend(crate::references::unresolved(&scenario));
+        reader.warnings.extend(crate::references::ambiguous(&scenario));
         Content::Scenario(Box::new(scenario))
     } else if let Some(d) = root.child("ParameterValueDistribution") {
         Content::Distribution(read_distribution(&mut reader.warnings, &mut reader.problems, &abs, &doc.file, root, d, options.seed)?)
     } else if let Some(c) = root.child("Catalog") {
-        Content::Catalog(read_catalog_file(&mut reader, &doc.file, c)?)
+        let catalog = read_catalog_file(&mut reader, &record, &doc.file, c)?;
+        reader.problems.append(&mut record.problems.take());
+        Content::Catalog(catalog)
     } else {
         return Err(Error::new(
             ErrorKind::Structure,

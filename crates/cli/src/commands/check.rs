@@ -20,9 +20,11 @@ pub(crate) struct CheckArgs {
     /// Print the findings as JSON (an array of {file, line, column, severity, message}).
     #[arg(long)]
     pub json: bool,
-    /// Also list warnings (by default only errors and a count of warnings are printed).
-    #[arg(short, long)]
-    pub verbose: bool,
+    /// Also list warnings (by default only errors and a count of warnings are printed). A finding
+    /// repeated in one file is listed once, at its first position, with how many more there
+    /// are; `-vv` lists every one (as `--json` does).
+    #[arg(short, long, action = clap::ArgAction::Count)]
+    pub verbose: u8,
     #[command(flatten)]
     pub params: ParamArgs,
 }
@@ -87,10 +89,13 @@ fn check_file(path: &Path, params: &[(String, String)]) -> Vec<Finding> {
             finding(severity, &f.location.file, f.location.line, f.location.col, f.message)
         })
         .collect();
-    let schema_errors: Vec<(String, u32, u32)> = out.iter().filter(|f| f.severity == "error").map(|f| (f.file.clone(), f.line, f.column)).collect();
+    let schema: Vec<(String, u32, u32, bool)> = out.iter().map(|f| (f.file.clone(), f.line, f.column, f.severity == "error")).collect();
     // The reader's error on a line the schema pass found wrong is the same problem seen again;
-    // so is its warning at the very place of a schema error (an unknown attribute is also unread).
-    let already = |f: &Finding| schema_errors.iter().any(|(file, line, col)| *file == f.file && *line == f.line && (f.severity == "error" || *col == f.column));
+    // so is any finding of the reader at the very place of one of the schema pass (an unknown
+    // attribute is also unread; a catalog's undeclared parameter also stops its entry).
+    let already = |f: &Finding| {
+        schema.iter().any(|(file, line, col, error)| *file == f.file && *line == f.line && ((*error && f.severity == "error") || *col == f.column))
+    };
     let reader = reader_findings(path, params);
     out.extend(reader.into_iter().filter(|f| !already(f)));
     out
@@ -164,11 +169,18 @@ pub(crate) fn run(args: &CheckArgs) -> Result<(), Failure> {
         let json = serde_json::to_string_pretty(&findings).map_err(|e| Failure::input(e.to_string()))?;
         println!("{json}");
     } else {
-        for f in findings.iter().filter(|f| args.verbose || f.severity == "error") {
+        let shown: Vec<&Finding> = findings.iter().filter(|f| args.verbose > 0 || f.severity == "error").collect();
+        let lines: Vec<(&&Finding, usize)> = if args.verbose > 1 {
+            shown.iter().map(|f| (f, 0)).collect()
+        } else {
+            crate::grouped::by_kind(&shown, |f| (f.file.clone(), f.severity, crate::grouped::kind(&f.message)))
+        };
+        for (f, more) in lines {
+            let more = crate::grouped::more(more);
             if f.line == 0 {
-                println!("{}: {}: {}", f.file, f.severity, f.message);
+                println!("{}: {}: {}{more}", f.file, f.severity, f.message);
             } else {
-                println!("{}:{}:{}: {}: {}", f.file, f.line, f.column, f.severity, f.message);
+                println!("{}:{}:{}: {}: {}{more}", f.file, f.line, f.column, f.severity, f.message);
             }
         }
         eprintln!(
@@ -177,7 +189,7 @@ pub(crate) fn run(args: &CheckArgs) -> Result<(), Failure> {
             if files.len() == 1 { "" } else { "s" },
             if errors == 1 { "" } else { "s" },
             if warnings == 1 { "" } else { "s" },
-            if args.verbose || warnings == 0 { "" } else { " (-v lists them)" }
+            if args.verbose > 0 || warnings == 0 { "" } else { " (-v lists them)" }
         );
     }
     if errors > 0 {

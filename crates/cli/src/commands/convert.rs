@@ -114,9 +114,10 @@ pub(crate) struct ConvertArgs {
     /// left are removed. The result is the files of an uninterrupted run.
     #[arg(long)]
     pub resume: bool,
-    /// Print every warning on stderr.
-    #[arg(short, long)]
-    pub verbose: bool,
+    /// Print the warnings on stderr: a warning repeated in one file once, at its first position,
+    /// with how many more there are; `-vv` prints every one (the JSON report keeps them all).
+    #[arg(short, long, action = clap::ArgAction::Count)]
+    pub verbose: u8,
     /// Also write each run as an OSI trace file (ASAM OSI 3.5 GroundTruth per frame, as esmini's
     /// --osi_file writes it): FILE for one scenario file, else `<FILE stem>_<output name>.osi`
     /// beside FILE, one per scenario or variation.
@@ -219,9 +220,17 @@ pub(crate) fn run(args: &ConvertArgs) -> Result<(), Failure> {
         if let Some(f) = &r.failure {
             bar.0.suspend(|| eprintln!("failed {}: {} stage: {}", describe(&r), stage_name(f.stage), f.message));
         }
-        if args.verbose {
+        if args.verbose > 1 {
             for w in &r.warnings {
                 bar.0.suspend(|| eprintln!("warning {}: {}: {}", describe(&r), stage_name(w.stage), w.message));
+            }
+        } else if args.verbose == 1 {
+            let kinds = crate::grouped::by_kind(&r.warnings, |w| {
+                let (file, kind) = crate::grouped::split_position(&w.message);
+                (w.stage.as_str(), file.to_string(), crate::grouped::kind(kind))
+            });
+            for (w, more) in kinds {
+                bar.0.suspend(|| eprintln!("warning {}: {}: {}{}", describe(&r), stage_name(w.stage), w.message, crate::grouped::more(more)));
             }
         }
         let written = json.as_mut().map_or(Ok(()), |j| j.add(&r)).and_then(|()| table.as_mut().map_or(Ok(()), |t| t.add(position, &r)));
@@ -252,7 +261,7 @@ pub(crate) fn run(args: &ConvertArgs) -> Result<(), Failure> {
         totals.failed,
         totals.skipped.len(),
         totals.warnings,
-        if args.verbose || totals.warnings == 0 { "" } else { " (-v lists them)" },
+        if args.verbose > 0 || totals.warnings == 0 { "" } else { " (-v lists them)" },
         args.output.display()
     );
     if totals.planned == 0 {

@@ -1,7 +1,7 @@
 //! Reading a ParameterValueDistribution element.
 
 use super::{Distribution, DistributionKind, Factor, ParameterSet, Stochastic};
-use crate::attr::Cx;
+use crate::attr::{Cx, Record};
 use crate::error::{Error, ErrorKind, Warning};
 use crate::params::Scope;
 use crate::xml::Elem;
@@ -21,7 +21,8 @@ pub(crate) fn read_distribution(
     seed_override: Option<u64>,
 ) -> Result<Distribution, Error> {
     let scope = Scope::default();
-    let cx = Cx::new(file.clone(), &scope);
+    let record = Record::default();
+    let cx = Cx::new(file.clone(), &scope, &record);
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
     let sf = cx.child(d, "ScenarioFile")?;
     let scenario_file = crate::error::absolute(&dir.join(cx.text(sf, "filepath")?));
@@ -113,6 +114,7 @@ pub(crate) fn read_distribution(
     } else {
         return Err(cx.err(ErrorKind::Structure, d.pos, "ParameterValueDistribution needs a Deterministic or Stochastic child"));
     };
+    problems.append(&mut record.problems.take());
     Ok(Distribution { scenario_file, kind })
 }
 
