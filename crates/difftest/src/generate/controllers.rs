@@ -127,6 +127,25 @@ impl Gen<'_> {
         format!(r#"<PrivateAction><ControllerAction><ActivateControllerAction longitudinal="{long}" lateral="{lat}"/></ControllerAction></PrivateAction>"#)
     }
 
+    /// An OverrideControllerValueAction: a throttle and/or a steering-wheel value, switched on
+    /// or off (esmini records them and moves nothing headless; the action holds the domains).
+    pub(crate) fn override_controller_value_action(&mut self) -> String {
+        self.feature("action:OverrideControllerValueAction");
+        let mut values = String::new();
+        let which = self.pick_index(3);
+        if which != 1 {
+            let (active, value) = (self.chance(0.7), self.num(0.0, 1.0));
+            values.push_str(&format!(r#"<Throttle active="{active}" value="{value}"/>"#));
+        }
+        if which != 0 {
+            let (active, value) = (self.chance(0.7), self.num(-0.5, 0.5));
+            values.push_str(&format!(r#"<SteeringWheel active="{active}" value="{value}"/>"#));
+        }
+        format!(
+            r#"<PrivateAction><ControllerAction><OverrideControllerValueAction>{values}</OverrideControllerValueAction></ControllerAction></PrivateAction>"#
+        )
+    }
+
     /// An AssignControllerAction in the story, activating what it assigns.
     pub(crate) fn assign_controller_action(&mut self, actor: &str) -> String {
         // (a NaturalDriver assigned in the story makes esmini 3.6.0 crash)

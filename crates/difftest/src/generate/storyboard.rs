@@ -138,7 +138,12 @@ impl Gen<'_> {
                 let kind = self.entity(&actor).and_then(|e| e.controller.clone()).unwrap_or_default();
                 self.activate_controller_action(&kind)
             } else if self.rich(Area::Controllers) && self.entity(&actor).is_some_and(|e| e.vehicle() && e.controller.is_none()) && self.chance(0.15) {
-                self.assign_controller_action(&actor)
+                // (the override's draw only in this branch: other scenarios keep their bytes)
+                if self.chance(0.3) {
+                    self.override_controller_value_action()
+                } else {
+                    self.assign_controller_action(&actor)
+                }
             } else {
                 self.private_action(&actor, t_start)
             };
