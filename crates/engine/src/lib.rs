@@ -10,7 +10,8 @@
 //! state built from a scenario) · the behaviours that change the state: `storyboard` (element
 //! states and transitions), `conditions` (triggers, edges, delays, each condition), `actions`
 //! (one file per action), `controllers` (the driver models), `motion` (default controller),
-//! `external` (entities driven from outside: closed loop), `ghost*` · `sim` (the run state,
+//! `external` (entities driven from outside: closed loop), `ghost` (the ghost the follow
+//! controllers run ahead: setup, trail, restarts) · `sim` (the run state,
 //! data only; each behaviour keeps what it remembers in its own `state` module, which names no
 //! behaviour: `tests/layering.rs`) · below them `roads` (lane geometry, following lanes through
 //! junctions), `positions`, `signals` (traffic signals and their controllers), `dynamics`
@@ -29,8 +30,6 @@ mod entities;
 pub mod esmini_random;
 mod external;
 mod ghost;
-mod ghost_restart;
-mod ghost_trail;
 mod init_order;
 mod motion;
 mod position_cache;

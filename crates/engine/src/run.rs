@@ -93,7 +93,7 @@ impl<'a> Simulation<'a> {
         let dt = settings.step;
         let mut sim = Sim::new(scenario, roads, dt, external).map_err(Error::Input)?;
         sim.random = crate::esmini_random::EsminiRandom::new(control.seed);
-        // A ghost's head start runs before time 0 (ghost.rs); otherwise t0 = 0.
+        // A ghost's head start runs before time 0 (ghost/); otherwise t0 = 0.
         let t0 = sim.time_origin();
         let steps = ((settings.max_time - t0) / dt + 1e-9).floor() as usize;
         let trace = Trace {
@@ -214,7 +214,7 @@ impl<'a> Simulation<'a> {
         self.k = k;
         record(sim, trace);
         if sim.update_ghost_mode() {
-            // A ghost restart (ghost_restart.rs): the clock goes back by the head start and
+            // A ghost restart (ghost/restart.rs): the clock goes back by the head start and
             // runs up to `t` again, only the ghost moving (esmini's ScenarioPlayer::Frame runs
             // these frames before the next one).
             let headstart = sim.ghost.as_ref().map_or(0.0, |g| g.headstart);

@@ -40,7 +40,7 @@ pub(crate) struct Sim<'a> {
     pub any_controller: bool,
     /// Who pulls whom (actions/trailer.rs).
     pub trailers: crate::actions::trailer::state::Trailers,
-    /// The ghost of a FollowGhost / FollowReference controller (ghost.rs).
+    /// The ghost of a FollowGhost / FollowReference controller (ghost/).
     pub ghost: Option<crate::ghost::state::Ghost>,
     /// Maneuver groups with `selectTriggeringEntities` (storyboard/select_triggering.rs).
     pub triggering_actors: Vec<crate::storyboard::tree::TriggeringActors>,

@@ -228,7 +228,7 @@ impl<'a> Sim<'a> {
             return;
         }
         let mut all_done = true;
-        // While the ghost runs ahead only its actions step (ghost.rs, `steps_during_restart`).
+        // While the ghost runs ahead only its actions step (ghost/, `steps_during_restart`).
         let held = self.ghost_restarting();
         for k in 0..self.actions[slot].instances.len() {
             let Some(e) = self.actions[slot].instances[k].entity else { continue };

@@ -19,9 +19,7 @@ pub(crate) mod followers;
 pub(crate) mod kinematic_vehicle;
 pub(crate) mod lane_router;
 pub(crate) mod looming;
-pub(crate) mod looming_view;
 pub(crate) mod natural_driver;
-pub(crate) mod natural_view;
 pub(crate) mod state;
 
 use self::state::ControllerRt;

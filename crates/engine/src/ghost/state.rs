@@ -1,8 +1,8 @@
 //! What a ghost is during a run: the entity it runs ahead of, its head start, its trail and
-//! esmini's ghost mode and clock. Data only: `ghost.rs`, `ghost_trail.rs` and
-//! `ghost_restart.rs` change it.
+//! esmini's ghost mode and clock. Data only: `ghost/mod.rs`, `trail.rs` and
+//! `restart.rs` change it.
 
-use crate::ghost_trail::Trail;
+use crate::ghost::trail::Trail;
 
 #[derive(Debug, Clone)]
 pub(crate) struct Ghost {

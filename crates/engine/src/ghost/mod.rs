@@ -11,19 +11,21 @@
 //! acceleration / end-of-road / off-road / stand-still conditions watch the ghost instead.
 //! esmini also gives an event whose trigger depends on anything else a teleport of the ghost
 //! back to the entity; when it fires after time 0 esmini restarts the ghost (rewinds time by
-//! the head start, freezes the entity, logs the rewound steps again): `ghost_restart.rs`.
+//! the head start, freezes the entity, logs the rewound steps again): `restart.rs`.
 //!
 //! The run then starts at −headstart: until time 0 only the ghost moves (the default
 //! controller leaves every other entity alone, no controller steps, and only the ghost's
-//! actions step: others start but wait), so at 0 the ghost leads by the head start. After every step the ghost's trail is sampled (`ghost_trail`) on
+//! actions step: others start but wait), so at 0 the ghost leads by the head start. After every step the ghost's trail is sampled (`trail.rs`) on
 //! esmini's accumulated clock, whose rounding decides which steps are sampled.
 
+mod restart;
 pub(crate) mod state;
+pub(crate) mod trail;
 
 use self::state::{Ghost, GhostMode};
 use crate::actions::state::ActionSlot;
 use crate::controllers::state::ControllerRt;
-use crate::ghost_trail::Trail;
+use crate::ghost::trail::Trail;
 use crate::sim::Sim;
 use crate::storyboard::{Kind, Node};
 use openscenario::{ActionKind, ConditionKind, EntityCondition, PrivateAction, ValueCondition};
@@ -239,7 +241,7 @@ impl<'a> Sim<'a> {
     /// entity condition other than a ghost-watched one on the entity itself, or one of its
     /// by-value conditions other than SimulationTime (Parameter, Variable, TrafficSignal; a
     /// StoryboardElementState condition is a kind of its own there) an `AddedGhostTeleport`
-    /// (`ghost_restart.rs`): these events, each with the note (at its first such condition)
+    /// (`restart.rs`): these events, each with the note (at its first such condition)
     /// given when it restarts the ghost.
     fn ghost_restart_events(&self, owner: usize, events: &[usize]) -> Vec<(usize, crate::Warning)> {
         let mut out = Vec::new();

@@ -10,7 +10,7 @@
 
 use crate::dynamics::ESMINI_SMALL_NUMBER;
 use crate::ghost::state::GhostMode;
-use crate::ghost_trail::Trail;
+use crate::ghost::trail::Trail;
 use crate::sim::Sim;
 use crate::storyboard::{Kind, State};
 use crate::trace::StoryboardEvent;
