@@ -105,3 +105,8 @@ pub use sign_ids::{is_xsd_traffic_sign_id, XSD_TRAFFIC_SIGN_IDS};
 pub use tags::Tag;
 pub use traffic::{CycleElement, TrafficLight, TrafficLightColor, TrafficLightDirection, TrafficSign, TrafficSignElement};
 pub use validate::{ElementKind, Problem, ProblemKind};
+
+// The README's example is compiled (and run, where it needs no file) with the doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

@@ -78,3 +78,8 @@ pub use story_marks::event_marks;
 pub use summary::{render as render_summary, summarise, Summary};
 pub use tags::scenario_tags;
 pub use tracks::{tracks, Placement, Track, MIN_BOX_SIDE};
+
+// The README's example is compiled (and run, where it needs no file) with the doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

@@ -59,3 +59,8 @@ pub use run::{simulate, simulate_with, Run, Simulation};
 pub use settings::{RunControl, Settings};
 pub use trace::{EntityTrace, RoadPos, Sample, SignalState, StoryboardEvent, Trace};
 pub use warning::{Error, Warning};
+
+// The README's example is compiled (and run, where it needs no file) with the doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

@@ -65,3 +65,8 @@ pub fn convert_with_ids(net: &RoadNetwork, opts: &MapOptions, ids: &mut IdAlloca
         warnings: warn.finish(),
     }
 }
+
+// The README's example is compiled (and run, where it needs no file) with the doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

@@ -36,3 +36,8 @@ pub use model::signals::{LaneValidity, Signal, SignalOrientation, SignalReferenc
 pub use network::{load, parse_str, Loaded, RoadNetwork};
 pub use projection::LanePosition;
 pub use road_geometry::{LaneBorders, WorldPose};
+
+// The README's example is compiled (and run, where it needs no file) with the doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

@@ -35,3 +35,8 @@ pub use load::{load, load_scenario, load_str, Content, LoadOptions, Loaded};
 pub use model::*;
 pub use params::{ParameterDeclaration, ParameterType};
 pub use unread::NO_BEARING;
+
+// The README's example is compiled (and run, where it needs no file) with the doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

@@ -123,3 +123,8 @@ fn pixmap_at(prepared: &Prepared, step: u64) -> Result<tiny_skia::Pixmap, Render
 fn encode_png(pm: &tiny_skia::Pixmap) -> Result<Vec<u8>, RenderError> {
     pm.encode_png().map_err(|e| RenderError::Encode { format: "PNG", message: e.to_string() })
 }
+
+// The README's example is compiled (and run, where it needs no file) with the doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

@@ -36,3 +36,8 @@ pub use receive::SYNCHRONOUS_TIMEOUT;
 pub use rejection::{Reason, Rejection};
 pub use serve::{serve, Listening, Observer, ServeError, ServeOptions, Silent};
 pub use validate::accept;
+
+// The README's example is compiled (and run, where it needs no file) with the doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;
