@@ -70,14 +70,7 @@ fn rich() -> (Scenario, PlanningProblemSet) {
     let inc = ids.incoming();
     scenario.network.intersections.push(Intersection {
         id: ids.intersection(),
-        incomings: vec![Incoming {
-            id: inc,
-            incoming_lanelets: vec![l1],
-            successors_right: vec![],
-            successors_straight: vec![l3],
-            successors_left: vec![],
-            is_left_of: None,
-        }],
+        incomings: vec![common::incoming(inc, l1, [&[], &[l3], &[]], None)],
         crossings: vec![vec![l3]],
     });
     scenario.static_obstacles.push(StaticObstacle {

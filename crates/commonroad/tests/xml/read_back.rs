@@ -47,24 +47,7 @@ fn rich() -> (Scenario, PlanningProblemSet) {
     let inc2 = ids.incoming();
     s.network.intersections.push(Intersection {
         id: ids.intersection(),
-        incomings: vec![
-            Incoming {
-                id: inc1,
-                incoming_lanelets: vec![l1],
-                successors_right: vec![l3],
-                successors_straight: vec![],
-                successors_left: vec![l2],
-                is_left_of: Some(inc2),
-            },
-            Incoming {
-                id: inc2,
-                incoming_lanelets: vec![l2],
-                successors_right: vec![],
-                successors_straight: vec![l3],
-                successors_left: vec![],
-                is_left_of: None,
-            },
-        ],
+        incomings: vec![common::incoming(inc1, l1, [&[l3], &[], &[l2]], Some(inc2)), common::incoming(inc2, l2, [&[], &[l3], &[]], None)],
         crossings: vec![vec![l3]],
     });
     s.environment_obstacles.push(EnvironmentObstacle {

@@ -18,9 +18,9 @@ fn origin() -> Location {
 
 pub(crate) fn vehicle(name: &str, category: VehicleCategory, bb: BoundingBox) -> Entity {
     let axle = Axle { max_steering: 0.5, wheel_diameter: 0.6, track_width: 1.6, position_x: 0.0, position_z: 0.3 };
-    Entity {
-        name: name.into(),
-        object: EntityObject::Vehicle(Vehicle {
+    entity(
+        name,
+        EntityObject::Vehicle(Vehicle {
             name: name.into(),
             category,
             role: None,
@@ -41,48 +41,36 @@ pub(crate) fn vehicle(name: &str, category: VehicleCategory, bb: BoundingBox) ->
             trailer_coupler: None,
             trailer: None,
         }),
-        controllers: Vec::new(),
-        origin: origin(),
-    }
+    )
 }
 
 pub(crate) fn car(name: &str) -> Entity {
     vehicle(name, VehicleCategory::Car, bbox(1.4, 0.0, 4.5, 2.0))
 }
 
+/// An entity without controllers, at the synthetic origin.
+fn entity(name: &str, object: EntityObject) -> Entity {
+    Entity { name: name.into(), object, controllers: Vec::new(), origin: origin() }
+}
+
 pub(crate) fn pedestrian(name: &str, category: PedestrianCategory, bb: BoundingBox) -> Entity {
-    Entity {
+    let pedestrian = Pedestrian {
         name: name.into(),
-        object: EntityObject::Pedestrian(Pedestrian {
-            name: name.into(),
-            category,
-            role: None,
-            mass: 80.0,
-            model3d: None,
-            parameters: Vec::new(),
-            bounding_box: bb,
-            properties: Properties::default(),
-        }),
-        controllers: Vec::new(),
-        origin: origin(),
-    }
+        category,
+        role: None,
+        mass: 80.0,
+        model3d: None,
+        parameters: Vec::new(),
+        bounding_box: bb,
+        properties: Properties::default(),
+    };
+    entity(name, EntityObject::Pedestrian(pedestrian))
 }
 
 pub(crate) fn misc(name: &str, category: MiscObjectCategory, bb: BoundingBox) -> Entity {
-    Entity {
-        name: name.into(),
-        object: EntityObject::MiscObject(MiscObject {
-            name: name.into(),
-            category,
-            mass: 100.0,
-            model3d: None,
-            parameters: Vec::new(),
-            bounding_box: bb,
-            properties: Properties::default(),
-        }),
-        controllers: Vec::new(),
-        origin: origin(),
-    }
+    let misc =
+        MiscObject { name: name.into(), category, mass: 100.0, model3d: None, parameters: Vec::new(), bounding_box: bb, properties: Properties::default() };
+    entity(name, EntityObject::MiscObject(misc))
 }
 
 pub(crate) fn sample(x: f64, y: f64, h: f64, speed: f64) -> Sample {
