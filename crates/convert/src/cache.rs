@@ -166,7 +166,8 @@ fn load_road(path: &Path, options: &ConvertOptions) -> Result<Arc<Road>, String>
     let t = Instant::now();
     let map = run_map(&loaded.network, options);
     Ok(Arc::new(Road {
-        warnings: loaded.warnings.iter().map(ToString::to_string).collect(),
+        // the OpenDRIVE reader's warnings have always said so
+        warnings: loaded.warnings.iter().map(|w| w.labelled("warning").to_string()).collect(),
         network: loaded.network,
         map,
         load_ms,

@@ -51,6 +51,7 @@ mod trajectory_position;
 mod values;
 mod warning;
 
+pub use diagnostic::Diagnostic;
 pub use entities::bounding_boxes;
 pub use external::{Chosen, DriverInput, External, ExternalEntity, ExternalState, Input, ScriptedMotion, Source, OUTSIDE_DRIVERS};
 pub use recorded::{EnvironmentChange, LightChange};
@@ -58,7 +59,7 @@ pub use road_references::road_references;
 pub use run::{simulate, simulate_with, Run, Simulation};
 pub use settings::{RunControl, Settings};
 pub use trace::{EntityTrace, RoadPos, Sample, SignalState, StoryboardEvent, Trace};
-pub use warning::{Error, Warning};
+pub use warning::Error;
 
 // The README's example is compiled (and run, where it needs no file) with the doctests.
 #[cfg(doctest)]

@@ -6,10 +6,10 @@
 
 use openscenario::{Position, Scenario};
 
-use crate::warning::Warning;
+use diagnostic::Diagnostic;
 
 /// Every Road/Lane position of `scenario` whose road or lane `road` does not have.
-pub fn road_references(scenario: &Scenario, road: Option<&opendrive::RoadNetwork>) -> Vec<Warning> {
+pub fn road_references(scenario: &Scenario, road: Option<&opendrive::RoadNetwork>) -> Vec<Diagnostic> {
     let mut out = Vec::new();
     for (p, at) in openscenario::references::positions(scenario) {
         let (road_id, lane) = match p {
@@ -19,17 +19,17 @@ pub fn road_references(scenario: &Scenario, road: Option<&opendrive::RoadNetwork
         };
         let element = if lane.is_some() { "LanePosition" } else { "RoadPosition" };
         let Some(network) = road else {
-            out.push(Warning::at(at, format!("{element} on road `{road_id}`, but the scenario has no road network")));
+            out.push(Diagnostic::at(at, format!("{element} on road `{road_id}`, but the scenario has no road network")));
             continue;
         };
         let Some(r) = network.road(road_id) else {
-            out.push(Warning::at(at, format!("{element}: road `{road_id}` is not in the road network")));
+            out.push(Diagnostic::at(at, format!("{element}: road `{road_id}` is not in the road network")));
             continue;
         };
         if let Some((lane_id, s)) = lane {
             let exists = r.section_at(s).is_some_and(|sec| lane_id == 0 || sec.left.iter().chain(&sec.right).any(|l| l.id == lane_id));
             if !exists {
-                out.push(Warning::at(at, format!("LanePosition: road `{road_id}` has no lane {lane_id} at s = {s}")));
+                out.push(Diagnostic::at(at, format!("LanePosition: road `{road_id}` has no lane {lane_id} at s = {s}")));
             }
         }
     }

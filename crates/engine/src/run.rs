@@ -17,7 +17,7 @@ use crate::run_memos::RunMemos;
 use crate::sim::Sim;
 use crate::storyboard::{State, Transition};
 use crate::trace::{EntityTrace, Replay, RoadPos, Sample, StoryboardEvent, Trace};
-use crate::{Error, RunControl, Settings, Warning};
+use crate::{Diagnostic, Error, RunControl, Settings};
 use opendrive::RoadNetwork;
 use openscenario::Scenario;
 
@@ -25,7 +25,7 @@ use openscenario::Scenario;
 #[derive(Debug, Clone, PartialEq)]
 pub struct Run {
     pub trace: Trace,
-    pub warnings: Vec<Warning>,
+    pub warnings: Vec<Diagnostic>,
     /// Light states LightStateActions asked for, in the order asked (not simulated).
     pub lights: Vec<crate::LightChange>,
     /// Environments EnvironmentActions set, in the order set (not simulated).
@@ -179,7 +179,7 @@ impl<'a> Simulation<'a> {
     }
 
     /// Warnings so far.
-    pub fn warnings(&self) -> &[Warning] {
+    pub fn warnings(&self) -> &[Diagnostic] {
         &self.sim.warnings
     }
 

@@ -34,7 +34,6 @@ mod topology;
 mod warn;
 
 pub use map_scenario::{map_scenario, map_scenario_id};
-pub use opendrive::Warning;
 pub use options::{LaneletOrigin, MapOptions, MapResult};
 pub use sampling::MAX_STATIONS;
 pub use tags::derived_tags;

@@ -22,8 +22,9 @@ pub mod projection;
 pub mod road_geometry;
 pub mod spatial_index;
 
+pub use diagnostic::{Diagnostic, LineCol};
 pub use driving_direction::{drives_along_s, driving_heading};
-pub use error::{Error, SourcePos, Warning};
+pub use error::Error;
 pub use geometry::{CurvePose, Geometry, PRange, Shape};
 pub use links::{section_at_end, LaneRef, RoadEnd};
 pub use model::header::{Header, HeaderOffset};

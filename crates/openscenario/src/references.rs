@@ -8,7 +8,7 @@
 
 use std::collections::BTreeSet;
 
-use crate::error::{Location, Warning};
+use crate::error::{Diagnostic, Location};
 use crate::model::*;
 
 /// Every position of the scenario with the origin of the element that holds it (Init and
@@ -133,7 +133,7 @@ fn trajectory_positions<'a>(t: &'a Trajectory, o: &'a Location, out: &mut Vec<(&
 }
 
 /// Every name of the scenario that refers to nothing it declares, as a positioned problem.
-pub fn unresolved(s: &Scenario) -> Vec<Warning> {
+pub fn unresolved(s: &Scenario) -> Vec<Diagnostic> {
     let mut entities = BTreeSet::new();
     for e in &s.entities {
         declare_entity(e, &mut entities, 0);
@@ -143,7 +143,7 @@ pub fn unresolved(s: &Scenario) -> Vec<Warning> {
     }
     let elements = storyboard_elements(s);
     let mut out = Vec::new();
-    let entity = |name: &str, at: &Location, what: &str, out: &mut Vec<Warning>| {
+    let entity = |name: &str, at: &Location, what: &str, out: &mut Vec<Diagnostic>| {
         if !entities.contains(name) {
             out.push(problem(at, format!("{what} `{name}` is not an entity of the scenario")));
         }
@@ -234,8 +234,8 @@ pub fn unresolved(s: &Scenario) -> Vec<Warning> {
     out
 }
 
-fn problem(at: &Location, message: String) -> Warning {
-    Warning { location: at.clone(), message }
+fn problem(at: &Location, message: String) -> Diagnostic {
+    Diagnostic { location: at.clone(), message }
 }
 
 fn declares(decls: &[crate::ParameterDeclaration], name: &str) -> bool {

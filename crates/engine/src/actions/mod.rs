@@ -23,7 +23,7 @@ use self::state::{ActionRt, Instance};
 use crate::external::overridden::{overridden, Overridden};
 use crate::sim::Sim;
 use crate::storyboard::{State, Transition};
-use crate::Warning;
+use crate::Diagnostic;
 use openscenario::{ActionKind, PrivateAction};
 
 impl<'a> Sim<'a> {
@@ -34,7 +34,7 @@ impl<'a> Sim<'a> {
             return;
         }
         s.warned = true;
-        let w = Warning::at(&s.model.origin, msg);
+        let w = Diagnostic::at(&s.model.origin, msg);
         self.warnings.push(w);
     }
 

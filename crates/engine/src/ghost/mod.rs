@@ -151,7 +151,7 @@ impl<'a> Sim<'a> {
                     "entity `{}`: only the first entity with a ghost-following controller gets a ghost (esmini); its controller leaves it standing",
                     m.name
                 );
-                self.warnings.push(crate::Warning::at(&m.origin, msg));
+                self.warnings.push(crate::Diagnostic::at(&m.origin, msg));
             }
         }
     }
@@ -243,7 +243,7 @@ impl<'a> Sim<'a> {
     /// StoryboardElementState condition is a kind of its own there) an `AddedGhostTeleport`
     /// (`restart.rs`): these events, each with the note (at its first such condition)
     /// given when it restarts the ghost.
-    fn ghost_restart_events(&self, owner: usize, events: &[usize]) -> Vec<(usize, crate::Warning)> {
+    fn ghost_restart_events(&self, owner: usize, events: &[usize]) -> Vec<(usize, crate::Diagnostic)> {
         let mut out = Vec::new();
         for &ev in events {
             let Some(t) = self.nodes[ev].start_trigger else { continue };
@@ -261,7 +261,7 @@ impl<'a> Sim<'a> {
                 "condition `{}`: event `{}` started after time 0, where esmini restarts the ghost from its entity: time rewinds by the head start and the rewound steps are logged again (the trace CSV repeats those times, as esmini's log does; the CommonRoad conversion keeps the first pass)",
                 c.model.name, self.nodes[ev].name
             );
-            out.push((ev, crate::Warning::at(&c.model.origin, msg)));
+            out.push((ev, crate::Diagnostic::at(&c.model.origin, msg)));
         }
         out
     }

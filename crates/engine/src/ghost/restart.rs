@@ -100,7 +100,7 @@ impl<'a> Sim<'a> {
     pub(crate) fn warn_endless_restarts(&mut self, t: f64) {
         let Some((_, w)) = self.ghost.as_ref().and_then(|g| g.restart_events.first()) else { return };
         let message = format!("the ghost restarts kept rewinding time (over ten rewound steps per step of the run, or a million); the run ends at {t:.2} s");
-        let w = crate::Warning { message, ..w.clone() };
+        let w = crate::Diagnostic { message, ..w.clone() };
         self.warnings.push(w);
     }
 
