@@ -173,17 +173,18 @@ impl fmt::Display for Date {
     }
 }
 
-/// `<location>`. The default is what commonroad-io writes for "unknown": -999 / 999 / 999.
+/// `<location>`: where on Earth the scenario is (not to be confused with `diagnostic::Location`,
+/// a place in a file). The default is what commonroad-io writes for "unknown": -999 / 999 / 999.
 /// `<environment>` is deliberately absent: the XSD's enums do not match the readers' enums.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Location {
+pub struct GeoLocation {
     pub geo_name_id: i64,
     pub gps_latitude: f64,
     pub gps_longitude: f64,
     pub geo_transformation: Option<GeoTransformation>,
 }
 
-impl Default for Location {
+impl Default for GeoLocation {
     fn default() -> Self {
         Self { geo_name_id: -999, gps_latitude: 999.0, gps_longitude: 999.0, geo_transformation: None }
     }

@@ -94,7 +94,7 @@ pub mod xml;
 
 pub use error::ModelError;
 pub use geometry::{AbsoluteShape, Circle, PlacedCircle, PlacedRectangle, Point, Polygon, Rectangle, Shape};
-pub use header::{BenchmarkId, BenchmarkIdParts, Date, GeoTransformation, Header, Location};
+pub use header::{BenchmarkId, BenchmarkIdParts, Date, GeoLocation, GeoTransformation, Header};
 pub use ids::{IdAllocator, IncomingId, IntersectionId, LaneletId, ObstacleId, PlanningProblemId, TrafficLightId, TrafficSignId};
 pub use intersection::{Incoming, Intersection};
 pub use lanelet::{Adjacent, DrivingDir, Lanelet, LaneletBounds, LaneletType, LineMarking, RoadUser, StopLine};

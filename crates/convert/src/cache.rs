@@ -15,7 +15,7 @@ use std::sync::{Arc, Mutex, OnceLock};
 use std::time::{Instant, SystemTime};
 
 use commonroad::protobuf::{encode_map, MapFile};
-use commonroad::{EnvironmentObstacle, LaneletNetwork, Location, Scenario};
+use commonroad::{EnvironmentObstacle, GeoLocation, LaneletNetwork, Scenario};
 
 use crate::options::ConvertOptions;
 use crate::stages::{run_map, MapOutput};
@@ -40,7 +40,7 @@ pub struct Road {
 #[derive(PartialEq)]
 struct MapContent {
     country: String,
-    location: Location,
+    location: GeoLocation,
     network: LaneletNetwork,
     environment: Vec<EnvironmentObstacle>,
 }

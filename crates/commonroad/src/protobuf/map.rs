@@ -18,7 +18,7 @@ use super::signs::{element, sign_country};
 use super::values::{absolute_shape, enum_value, point};
 use super::FIRST_MAP_PART_ID;
 use crate::geometry::Point;
-use crate::header::Location;
+use crate::header::GeoLocation;
 use crate::ids::LaneletId;
 use crate::intersection::Intersection;
 use crate::lanelet::{DrivingDir, Lanelet, LineMarking};
@@ -345,7 +345,7 @@ fn environment_obstacle(o: &EnvironmentObstacle) -> Result<map::EnvironmentObsta
     })
 }
 
-fn location(l: &Location) -> Result<map::Location, WriteError> {
+fn location(l: &GeoLocation) -> Result<map::Location, WriteError> {
     let geo_name_id = i32::try_from(l.geo_name_id).map_err(|_| WriteError::OutOfRange {
         context: "location geoNameId".into(),
         value: l.geo_name_id.unsigned_abs(),

@@ -4,7 +4,7 @@ use roxmltree::Node;
 
 use super::cursor::{child, Cursor};
 use super::error::ReadError;
-use crate::header::{BenchmarkId, Date, GeoTransformation, Header, Location};
+use crate::header::{BenchmarkId, Date, GeoLocation, GeoTransformation, Header};
 use crate::scenario::Scenario;
 use crate::tags::Tag;
 
@@ -65,8 +65,8 @@ pub(crate) fn location_and_tags(cx: &mut Cursor, root: Node, scenario: &mut Scen
     Ok(())
 }
 
-fn location(cx: &mut Cursor, loc: Node) -> Result<Location, ReadError> {
-    let mut out = Location::default();
+fn location(cx: &mut Cursor, loc: Node) -> Result<GeoLocation, ReadError> {
+    let mut out = GeoLocation::default();
     if let Some(n) = child(loc, "geoNameId") {
         let t = cx.text(n);
         out.geo_name_id = t.parse().map_err(|_| cx.err(n, format!("<geoNameId>: expected an integer, found {t:?}")))?;
