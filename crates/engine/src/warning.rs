@@ -3,6 +3,7 @@
 
 /// A run that could not start, or was stopped.
 #[derive(Debug, Clone, thiserror::Error)]
+#[non_exhaustive]
 pub enum Error {
     #[error("invalid settings: {0}")]
     Settings(String),

@@ -7,6 +7,7 @@ use diagnostic::LineCol;
 
 /// Why a file could not be loaded.
 #[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
 pub enum Error {
     /// The file could not be read; `path` is the path tried.
     #[error("{}: cannot read OpenDRIVE file: {source}", path.display())]

@@ -8,6 +8,7 @@ use std::path::{Path, PathBuf};
 
 /// What went wrong, for callers that branch on the kind (tests, exit codes).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[non_exhaustive]
 pub enum ErrorKind {
     /// A file could not be read (the message names the path tried).
     Io,

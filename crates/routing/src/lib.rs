@@ -18,7 +18,7 @@ mod route;
 mod search;
 mod waypoint;
 
-pub use error::RouteError;
+pub use error::Error;
 pub use route::{Leg, NextRoad, Route, RoutePoint};
 pub use waypoint::{Strategy, Waypoint};
 

@@ -28,7 +28,7 @@ mod time_mapping;
 mod time_table;
 
 pub use constructors::SplineSegment;
-pub use error::TrajectoryError;
+pub use error::Error;
 pub use from_shape::Resolver;
 pub use nurbs::Nurbs;
 pub use path::Path;

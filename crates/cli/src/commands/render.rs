@@ -206,7 +206,7 @@ pub(crate) fn run(args: &RenderArgs) -> Result<(), Failure> {
         ..Default::default()
     };
     let scenario = &input.scenario;
-    let fail = |e: render::RenderError| Failure::input(format!("{}: {e}", args.file.display()));
+    let fail = |e: render::Error| Failure::input(format!("{}: {e}", args.file.display()));
     let mut written = Vec::new();
     match format {
         Format::Gif => {

@@ -7,7 +7,7 @@ use std::net::IpAddr;
 use std::path::PathBuf;
 
 use convert::{ConvertOptions, EgoChoice, Stage};
-use udp::{Listening, Observer, Pace, Rejection, ServeError, ServeOptions};
+use udp::{Listening, Observer, Pace, Rejection, ServeOptions};
 
 use crate::shared_options::{CommonRoadArgs, RunArgs};
 use crate::Failure;
@@ -134,8 +134,8 @@ pub(crate) fn run(args: &ServeArgs) -> Result<(), Failure> {
     let options = options(args)?;
     let outcome = udp::serve(&args.scenario, &options, &mut Stderr).map_err(|e| {
         let status = match &e {
-            ServeError::Start(f) if matches!(f.stage, Stage::Load | Stage::RoadNetwork) => 2,
-            ServeError::Setup(_) | ServeError::Bind(_) => 2,
+            udp::Error::Start(f) if matches!(f.stage, Stage::Load | Stage::RoadNetwork) => 2,
+            udp::Error::Setup(_) | udp::Error::Bind(_) => 2,
             _ => 1,
         };
         Failure { message: format!("{}: {e}", args.scenario.display()), status }
