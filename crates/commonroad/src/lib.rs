@@ -92,7 +92,7 @@ mod traffic;
 mod validate;
 pub mod xml;
 
-pub use error::ModelError;
+pub use error::Error;
 pub use geometry::{AbsoluteShape, Circle, PlacedCircle, PlacedRectangle, Point, Polygon, Rectangle, Shape};
 pub use header::{BenchmarkId, BenchmarkIdParts, Date, GeoLocation, GeoTransformation, Header};
 pub use ids::{IdAllocator, IncomingId, IntersectionId, LaneletId, ObstacleId, PlanningProblemId, TrafficLightId, TrafficSignId};

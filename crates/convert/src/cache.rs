@@ -65,7 +65,7 @@ impl MapContent {
 
 impl Road {
     /// The 2024 map of `scenario` (made of this road), encoded once per distinct content.
-    pub fn map_file(&self, scenario: &Scenario) -> Result<Arc<MapFile>, commonroad::protobuf::WriteError> {
+    pub fn map_file(&self, scenario: &Scenario) -> Result<Arc<MapFile>, commonroad::Error> {
         if let Some((_, file)) = lock(&self.maps).iter().find(|(c, _)| c.is_of(scenario)) {
             return Ok(file.clone());
         }

@@ -337,7 +337,7 @@ pub(crate) fn finish(
             Output::Xml(commonroad::xml::write_scenario(&built.scenario, &built.problems).map_err(|e| fail(Stage::Write, e.to_string()))?)
         }
         OutputFormat::Protobuf2024 => {
-            let write_error = |e: commonroad::protobuf::WriteError| fail(Stage::Write, e.to_string());
+            let write_error = |e: commonroad::Error| fail(Stage::Write, e.to_string());
             // the map of a cached road is encoded once for all its scenarios
             let map = match &prepared.cached {
                 Some(road) => road.map_file(&built.scenario).map_err(write_error)?,

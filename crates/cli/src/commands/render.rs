@@ -116,7 +116,7 @@ fn load(path: &Path, verbose: bool) -> Result<Input, Failure> {
     let read = commonroad::xml::read_scenario_file(path).map_err(|e| Failure::input(e.to_string()))?;
     if verbose {
         for w in &read.warnings {
-            eprintln!("{w}");
+            eprintln!("{}", w.labelled("warning"));
         }
     }
     Ok(Input { scenario: read.scenario, problems: read.problems, names: BTreeMap::new(), marks: Vec::new() })

@@ -204,5 +204,5 @@ fn ids_in_the_range_of_the_maps_parts_are_refused() {
     s.dynamic_obstacles[0].trajectory[1].x = f64::NAN;
     let e = protobuf::write(&s, &m.problems).expect_err("refused");
     assert!(e.to_string().contains("dynamicObstacle") && e.to_string().contains("time step 2"), "{e}");
-    assert!(matches!(protobuf::write(&m.scenario, &PlanningProblemSet::default()), Err(protobuf::WriteError::NoPlanningProblem)));
+    assert!(matches!(protobuf::write(&m.scenario, &PlanningProblemSet::default()), Err(commonroad::Error::NoPlanningProblem { .. })));
 }
