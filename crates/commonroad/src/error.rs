@@ -43,9 +43,10 @@ pub enum Error {
     /// Writing: NaN or infinity, which neither `xs:decimal` nor the 2024 messages can hold.
     #[error("cannot write {context}: {value} is not a finite number")]
     WriteNonFinite { context: String, value: f64 },
-    /// Writing XML: a `positiveDecimal` that is <= 0 or rounds to 0 at the written precision.
-    #[error("cannot write {context}: {value} is not > 0 at {} decimals", crate::xml::DECIMALS)]
-    WriteNotPositive { context: String, value: f64 },
+    /// Writing XML: a `positiveDecimal` that is <= 0 or rounds to 0 at the written precision
+    /// (`decimals`, [`crate::xml::DECIMALS`]).
+    #[error("cannot write {context}: {value} is not > 0 at {decimals} decimals")]
+    WriteNotPositive { context: String, value: f64, decimals: usize },
     /// Writing XML: a character XML 1.0 cannot represent (e.g. a C0 control character).
     #[error("cannot write {context}: character U+{:04X} is not allowed in XML 1.0", *ch as u32)]
     InvalidChar { context: String, ch: char },
@@ -55,14 +56,10 @@ pub enum Error {
     /// Writing 2024: an id, time step or duration larger than its field (`uint32`, `int32`).
     #[error("cannot write {context}: {value} does not fit the 2024 field (at most {max})")]
     OutOfRange { context: String, value: u64, max: u64 },
-    /// Writing 2024: ids from [`crate::protobuf::FIRST_MAP_PART_ID`] on are the map's bounds,
-    /// stop lines and crossings.
-    #[error(
-        "cannot write {context}: id {id} is in the range the 2024 map numbers its bounds and stop \
-         lines from ({} on)",
-        crate::protobuf::FIRST_MAP_PART_ID
-    )]
-    IdInMapPartRange { context: String, id: u64 },
+    /// Writing 2024: ids from `first` ([`crate::protobuf::FIRST_MAP_PART_ID`]) on are the map's
+    /// bounds, stop lines and crossings.
+    #[error("cannot write {context}: id {id} is in the range the 2024 map numbers its bounds and stop lines from ({first} on)")]
+    IdInMapPartRange { context: String, id: u64, first: u64 },
     /// Writing 2024: a goal names a lanelet the network does not have.
     #[error("cannot write {context}: goal lanelet {id} is not in the lanelet network")]
     UnknownLanelet { context: String, id: u64 },
@@ -85,9 +82,9 @@ pub enum Error {
         #[source]
         source: Arc<std::io::Error>,
     },
-    /// Reading: a file larger than the reader accepts.
-    #[error("{path}: {bytes} bytes is larger than the {} bytes the reader accepts", crate::xml::MAX_FILE_BYTES)]
-    TooLarge { path: PathBuf, bytes: u64 },
+    /// Reading: a file larger than the reader accepts (`max`, [`crate::xml::MAX_FILE_BYTES`]).
+    #[error("{path}: {bytes} bytes is larger than the {max} bytes the reader accepts")]
+    TooLarge { path: PathBuf, bytes: u64, max: u64 },
     /// Reading: not well-formed XML (roxmltree's message carries the line and column).
     #[error("{path}: not well-formed XML: {source}")]
     Xml {

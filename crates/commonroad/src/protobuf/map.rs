@@ -162,7 +162,7 @@ fn check_ids_below_parts(net: &LaneletNetwork, environment: &[EnvironmentObstacl
     let env_max = environment.iter().map(|o| o.id.get()).max().unwrap_or(0);
     let max = net.max_id().max(env_max);
     if max >= FIRST_MAP_PART_ID {
-        return Err(Error::IdInMapPartRange { context: "the lanelet network".into(), id: max });
+        return Err(Error::IdInMapPartRange { context: "the lanelet network".into(), id: max, first: FIRST_MAP_PART_ID });
     }
     Ok(())
 }

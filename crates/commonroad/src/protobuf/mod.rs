@@ -86,7 +86,7 @@ pub fn write(scenario: &Scenario, problems: &PlanningProblemSet) -> Result<Files
 pub fn encode_scenario(scenario: &Scenario, problems: &PlanningProblemSet, map_id: &str) -> Result<ScenarioFiles, Error> {
     let highest = scenario.max_id().max(problems.max_id());
     if highest >= FIRST_MAP_PART_ID {
-        return Err(Error::IdInMapPartRange { context: "the scenario".into(), id: highest });
+        return Err(Error::IdInMapPartRange { context: "the scenario".into(), id: highest, first: FIRST_MAP_PART_ID });
     }
     let mut warnings = Vec::new();
     let meta = meta::scenario_meta(&scenario.header, &mut warnings)?;

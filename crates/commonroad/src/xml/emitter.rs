@@ -8,7 +8,7 @@
 //! the buffer is dropped, so a half-written line never escapes.
 
 use super::escape::escape_into;
-use super::number::{is_written_positive, push_decimal};
+use super::number::{is_written_positive, push_decimal, DECIMALS};
 use crate::Error;
 use std::fmt::Display;
 use std::fmt::Write;
@@ -92,7 +92,7 @@ impl Emitter {
     /// A `positiveDecimal`: must still be > 0 after rounding.
     pub(crate) fn push_positive(&mut self, v: f64, name: &str) -> Result<(), Error> {
         if v.is_finite() && !is_written_positive(v) {
-            return Err(Error::WriteNotPositive { context: self.where_(name), value: v });
+            return Err(Error::WriteNotPositive { context: self.where_(name), value: v, decimals: DECIMALS });
         }
         self.push_decimal(v, || name.to_string())
     }

@@ -34,7 +34,7 @@ pub fn read_scenario_file(path: &Path) -> Result<ReadScenario, Error> {
     let io = |source| Error::ReadFile { path: path.to_path_buf(), source: std::sync::Arc::new(source) };
     let len = std::fs::metadata(path).map_err(io)?.len();
     if len > MAX_FILE_BYTES {
-        return Err(Error::TooLarge { path: path.to_path_buf(), bytes: len });
+        return Err(Error::TooLarge { path: path.to_path_buf(), bytes: len, max: MAX_FILE_BYTES });
     }
     let text = std::fs::read_to_string(path).map_err(io)?;
     read_scenario_str(&text, path)
