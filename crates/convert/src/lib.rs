@@ -66,14 +66,12 @@ pub use obstacles::{obstacles, Obstacles};
 pub use options::{ConvertOptions, OutputFormat};
 pub use outputs::OutputPaths;
 pub use picture::{picture_path, write_picture};
-pub use pipeline::{convert_scenario, convert_scenario_keeping, convert_scenario_with, Conversion, Facts, Model, Output, Prepared, Protobuf2024, Request};
+pub use pipeline::{convert, Conversion, Facts, Model, Output, Prepared, Protobuf2024, Request};
 pub use report::{BatchReport, Failure, FolderSummary, ScenarioReport, Skipped, Stage, StageWarning, Status, Timings, Variation};
 pub use report_files::{JsonReport, Table, TABLE_COLUMNS};
 pub use resample::{cr_step_count, resample, whole_multiple, Pose};
 pub use shard::Shard;
-pub use single::{
-    batch_name, batch_source, convert_file, convert_file_with, convert_variation, convert_variation_with, load_distribution, output_file_name, output_name,
-};
+pub use single::{batch_name, batch_source, convert_variation, convert_variation_with, load_distribution, output_file_name, output_name};
 pub use story_marks::event_marks;
 pub use summary::{render as render_summary, summarise, Summary};
 pub use tags::scenario_tags;

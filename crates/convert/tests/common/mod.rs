@@ -117,8 +117,8 @@ pub(crate) fn fresh_dir(tag: &str) -> std::path::PathBuf {
 /// conversion reports and the model it built (panics, with the failure, if it failed).
 pub(crate) fn convert_and_clean(dir: &Path, name: &str) -> (convert::Conversion, convert::Model) {
     let path = dir.join(format!("{name}.xosc"));
-    let request = convert::Request { path: &path, name, config: 1, parameters: &[], source: String::new() };
-    let (conversion, model) = convert::convert_scenario_keeping(&request, &convert::ConvertOptions::default(), true);
+    let request = convert::Request::named(&path, name).keeping_model();
+    let (conversion, model) = convert::convert(&request, &convert::ConvertOptions::default());
     let _ = std::fs::remove_dir_all(dir);
     assert!(conversion.result.is_ok(), "{:?}", conversion.result.err());
     (conversion, model.expect("model kept"))
