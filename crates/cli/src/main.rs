@@ -4,10 +4,10 @@
 //! Exit status: 0 success, 1 some files of a batch failed, 2 bad usage or bad input.
 
 mod commands;
+mod grouped;
 mod osi_file;
 mod serve_extra;
 mod shared_options;
-mod grouped;
 
 use clap::{Parser, Subcommand};
 use commands::{check, convert, inspect, map, render, serve, simulate};

@@ -10,11 +10,11 @@ use std::collections::BTreeSet;
 
 use openscenario::{ActionKind, ConditionKind, GlobalAction, Position, Scenario, ValueCondition};
 
-use crate::warning::Warning;
+use diagnostic::Diagnostic;
 
 /// Every Road/Lane position of `scenario` whose road or lane `road` does not have, and every
 /// traffic signal it names that `road` does not have.
-pub fn road_references(scenario: &Scenario, road: Option<&opendrive::RoadNetwork>) -> Vec<Warning> {
+pub fn road_references(scenario: &Scenario, road: Option<&opendrive::RoadNetwork>) -> Vec<Diagnostic> {
     let mut out = Vec::new();
     for (p, within) in openscenario::references::positions(scenario) {
         let (road_id, lane) = match p {
@@ -25,18 +25,18 @@ pub fn road_references(scenario: &Scenario, road: Option<&opendrive::RoadNetwork
         let element = if lane.is_some() { "LanePosition" } else { "RoadPosition" };
         let at_road = || scenario.reference_site(within, "roadId", |v| v == road_id);
         let Some(network) = road else {
-            out.push(Warning::at(at_road(), format!("{element} on road `{road_id}`, but the scenario has no road network")));
+            out.push(Diagnostic::at(at_road(), format!("{element} on road `{road_id}`, but the scenario has no road network")));
             continue;
         };
         let Some(r) = network.road(road_id) else {
-            out.push(Warning::at(at_road(), format!("{element}: road `{road_id}` is not in the road network")));
+            out.push(Diagnostic::at(at_road(), format!("{element}: road `{road_id}` is not in the road network")));
             continue;
         };
         if let Some((lane_id, s)) = lane {
             let exists = r.section_at(s).is_some_and(|sec| lane_id == 0 || sec.left.iter().chain(&sec.right).any(|l| l.id == lane_id));
             if !exists {
                 let at_lane = scenario.reference_site(within, "laneId", |v| v == lane_id.to_string());
-                out.push(Warning::at(at_lane, format!("LanePosition: road `{road_id}` has no lane {lane_id} at s = {s}")));
+                out.push(Diagnostic::at(at_lane, format!("LanePosition: road `{road_id}` has no lane {lane_id} at s = {s}")));
             }
         }
     }
@@ -47,12 +47,12 @@ pub fn road_references(scenario: &Scenario, road: Option<&opendrive::RoadNetwork
 }
 
 /// The traffic signals the scenario names that the road network does not have.
-fn signals(scenario: &Scenario, network: &opendrive::RoadNetwork, out: &mut Vec<Warning>) {
+fn signals(scenario: &Scenario, network: &opendrive::RoadNetwork, out: &mut Vec<Diagnostic>) {
     let known: BTreeSet<&str> = network.roads.iter().flat_map(|r| &r.signals).map(|s| s.id.as_str()).collect();
     let mut check = |id: &str, within: &openscenario::Location, attribute: &str, what: &str| {
         if !known.contains(id) {
             let at = scenario.reference_site(within, attribute, |v| v == id);
-            out.push(Warning::at(at, format!("{what}: traffic signal `{id}` is not in the road network")));
+            out.push(Diagnostic::at(at, format!("{what}: traffic signal `{id}` is not in the road network")));
         }
     };
     for c in &scenario.road_network.traffic_signal_controllers {

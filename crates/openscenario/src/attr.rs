@@ -1,6 +1,6 @@
 //! Typed, parameter-resolved access to the attributes and children of an element.
 
-use crate::error::{Error, ErrorKind, Location, Warning};
+use crate::error::{Diagnostic, Error, ErrorKind, Location};
 use crate::esmini_fallback;
 use crate::params::{positioned, resolve_in_scope, Scope};
 use crate::references::ReferenceSite;
@@ -54,7 +54,7 @@ macro_rules! xml_enum {
 #[derive(Default)]
 pub(crate) struct Record {
     pub sites: RefCell<Vec<ReferenceSite>>,
-    pub problems: RefCell<Vec<Warning>>,
+    pub problems: RefCell<Vec<Diagnostic>>,
 }
 
 /// Where we are: the file being read, the parameters in scope and the reading's record.
@@ -80,7 +80,7 @@ impl<'s> Cx<'s> {
     }
 
     fn problem(&self, pos: Pos, message: String) {
-        self.record.problems.borrow_mut().push(Warning { location: self.loc(pos), message });
+        self.record.problems.borrow_mut().push(Diagnostic { location: self.loc(pos), message });
     }
 
     pub(crate) fn loc(&self, pos: Pos) -> Location {

@@ -1,7 +1,7 @@
 //! Catalogs: directories from CatalogLocations, lookup of a catalog by its `name` or (as esmini
 //! does) by file name `<catalogName>.xosc`, and a per-load cache of parsed catalog files.
 
-use crate::error::{Error, ErrorKind, Location, Warning};
+use crate::error::{Diagnostic, Error, ErrorKind, Location};
 use crate::xml::{read_file, Doc, Elem};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -77,19 +77,19 @@ impl CatalogStore {
     /// Registers a CatalogLocations directory. A directory that does not exist falls back to
     /// `<scenario dir>/Catalogs/<last component>` when that exists (esmini finds its bundled
     /// catalogs in such cases); otherwise it is kept and reported.
-    pub(crate) fn add_dir(&mut self, kind: CatalogKind, path: PathBuf, scenario_dir: &Path, loc: Location, warnings: &mut Vec<Warning>) {
+    pub(crate) fn add_dir(&mut self, kind: CatalogKind, path: PathBuf, scenario_dir: &Path, loc: Location, warnings: &mut Vec<Diagnostic>) {
         let mut path = path;
         if !path.is_dir() {
             let fallback = path.file_name().map(|n| scenario_dir.join("Catalogs").join(n));
             match fallback.filter(|f| f.is_dir()) {
                 Some(f) => {
-                    warnings.push(Warning {
+                    warnings.push(Diagnostic {
                         location: loc,
                         message: format!("catalog directory {} does not exist; using {} instead", path.display(), f.display()),
                     });
                     path = f;
                 }
-                None => warnings.push(Warning { location: loc, message: format!("catalog directory {} does not exist", path.display()) }),
+                None => warnings.push(Diagnostic { location: loc, message: format!("catalog directory {} does not exist", path.display()) }),
             }
         }
         self.dirs.push(Dir { kind, path });
@@ -119,7 +119,7 @@ impl CatalogStore {
         files
     }
 
-    fn file(&mut self, path: &Path, warnings: &mut Vec<Warning>) -> Result<Option<Rc<Doc>>, Error> {
+    fn file(&mut self, path: &Path, warnings: &mut Vec<Diagnostic>) -> Result<Option<Rc<Doc>>, Error> {
         if let Some(d) = self.files.get(path) {
             return Ok(d.clone());
         }
@@ -130,7 +130,7 @@ impl CatalogStore {
             Ok(d) if d.root.child("Catalog").is_some() => Some(Rc::new(d)),
             Ok(_) => None,
             Err(e) => {
-                warnings.push(Warning { location: e.location.clone(), message: format!("catalog file skipped: {}", e.message) });
+                warnings.push(Diagnostic { location: e.location.clone(), message: format!("catalog file skipped: {}", e.message) });
                 None
             }
         };
@@ -142,7 +142,14 @@ impl CatalogStore {
     /// kinds before the others; in each group, files whose Catalog@name matches, then files
     /// named `<catalog>.xosc`.
     /// `at`: where the reference names the catalog and the entry (for the errors).
-    pub(crate) fn find(&mut self, kinds: &[CatalogKind], catalog: &str, entry: &str, at: (&Location, &Location), warnings: &mut Vec<Warning>) -> Result<Found, Error> {
+    pub(crate) fn find(
+        &mut self,
+        kinds: &[CatalogKind],
+        catalog: &str,
+        entry: &str,
+        at: (&Location, &Location),
+        warnings: &mut Vec<Diagnostic>,
+    ) -> Result<Found, Error> {
         let mut groups: Vec<Vec<PathBuf>> = vec![Vec::new(), Vec::new()];
         for d in &self.dirs {
             let g = usize::from(!kinds.contains(&d.kind));

@@ -3,7 +3,7 @@
 use crate::attr::Record;
 use crate::catalog_file::{read_catalog_file, CatalogFile};
 use crate::distribution::{read_distribution, Distribution};
-use crate::error::{absolute, Error, ErrorKind, Location, Warning};
+use crate::error::{absolute, Diagnostic, Error, ErrorKind, Location};
 use crate::model::Scenario;
 use crate::read::{read_scenario, Reader};
 use crate::xml::{parse_str, read_file, Doc};
@@ -35,13 +35,13 @@ pub enum Content {
 #[derive(Debug, Clone)]
 pub struct Loaded {
     pub content: Content,
-    pub warnings: Vec<Warning>,
+    pub warnings: Vec<Diagnostic>,
     /// What a strict reading rejects: names that refer to nothing the scenario declares
     /// (entities, storyboard elements, parameters, variables — see [`crate::references`]),
     /// parameter overrides the scenario does not declare, distributions that cannot be sampled.
     /// The file was read as if they were absent; the caller decides whether they stop it
     /// (osc2cr's default) or are reported as warnings (`--lenient`).
-    pub problems: Vec<Warning>,
+    pub problems: Vec<Diagnostic>,
 }
 
 /// Loads an OpenSCENARIO file: a scenario (parameters and catalogs resolved), a
@@ -59,7 +59,7 @@ pub fn load_str(path: &Path, text: &str, options: &LoadOptions) -> Result<Loaded
 
 /// Loads a file that must be a scenario, leniently: its [`Loaded::problems`] are returned among
 /// the warnings (use [`load`] to treat them as errors).
-pub fn load_scenario(path: &Path, options: &LoadOptions) -> Result<(Scenario, Vec<Warning>), Error> {
+pub fn load_scenario(path: &Path, options: &LoadOptions) -> Result<(Scenario, Vec<Diagnostic>), Error> {
     let loaded = load(path, options)?;
     let mut warnings = loaded.warnings;
     warnings.extend(loaded.problems);

@@ -4,7 +4,7 @@
 //! we. Declarations keep their final values in the model because actions and conditions
 //! (ParameterSetAction, ParameterCondition, ...) work on them at run time.
 
-use crate::error::{Error, ErrorKind, Location, Warning};
+use crate::error::{Diagnostic, Error, ErrorKind, Location};
 use crate::expr::{self, ExprValue};
 use crate::xml::{Elem, Pos};
 use serde::Serialize;
@@ -164,7 +164,7 @@ pub(crate) fn read_declarations(
     parent: &Scope,
     assignments: &[(String, String)],
     file: &Arc<Path>,
-    warnings: &mut Vec<Warning>,
+    warnings: &mut Vec<Diagnostic>,
 ) -> Result<Vec<ParameterDeclaration>, Error> {
     let mut raws: Vec<RawDecl> = Vec::new();
     if let Some(el) = el {
@@ -186,7 +186,7 @@ pub(crate) fn read_declarations(
                 .ok_or_else(|| positioned_value_error::<ParameterType>(file, ty_attr.pos, &ty_attr.value, type_attr))?;
             let val = d.attr("value").ok_or_else(|| Error::new(ErrorKind::Structure, loc.clone(), format!("{} '{name}' needs a 'value' attribute", d.name)))?;
             if let Some(prev) = raws.iter().position(|r| r.name == name) {
-                warnings.push(Warning {
+                warnings.push(Diagnostic {
                     location: loc.clone(),
                     message: format!("parameter '{name}' is declared twice (first at line {}); the later declaration wins", raws[prev].pos.line),
                 });
@@ -220,11 +220,12 @@ pub(crate) fn read_declarations(
     let mut out = Vec::with_capacity(raws.len());
     for (r, value) in raws.iter().zip(values.iter().cloned()) {
         if let Some(msg) = violated_constraints(r.elem, &value, &mut bound_lookup) {
-            warnings.push(Warning { location: location(file, r.pos), message: format!("parameter '{}' = '{value}' violates its constraints ({msg})", r.name) });
+            warnings
+                .push(Diagnostic { location: location(file, r.pos), message: format!("parameter '{}' = '{value}' violates its constraints ({msg})", r.name) });
         }
         // esmini does not check declared types; a mismatch is worth a warning, not a failure.
         if let Err(msg) = check_type(r.ty, &value) {
-            warnings.push(Warning {
+            warnings.push(Diagnostic {
                 location: location(file, if r.value_pos.line > 0 { r.value_pos } else { r.pos }),
                 message: format!("parameter '{}' is declared {}: {msg}", r.name, r.ty),
             });

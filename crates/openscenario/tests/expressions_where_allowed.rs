@@ -6,7 +6,6 @@
 //! catalog read alone, whose entries may use parameters that only a referring scenario
 //! declares, can at most warn.
 
-
 use crate::common;
 use openscenario::validate::{validate_str, Finding, Severity};
 use openscenario::{load, load_str, Content, LoadOptions};

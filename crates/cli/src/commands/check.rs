@@ -42,6 +42,10 @@ fn finding(severity: &'static str, file: &Path, line: u32, column: u32, message:
     Finding { file: file.display().to_string(), line, column, severity, message: message.into() }
 }
 
+fn diagnostic_finding(severity: &'static str, d: &diagnostic::Diagnostic) -> Finding {
+    finding(severity, &d.location.file, d.location.line, d.location.col, d.message.clone())
+}
+
 fn xosc_files(inputs: &[PathBuf]) -> Result<Vec<PathBuf>, Failure> {
     let mut out = Vec::new();
     for i in inputs {
@@ -117,21 +121,13 @@ fn reader_findings(path: &Path, params: &[(String, String)]) -> Vec<Finding> {
             return out;
         }
     };
-    for w in &loaded.warnings {
-        let l = &w.location;
-        out.push(finding("warning", &l.file, l.line, l.col, w.message.clone()));
-    }
-    for p in &loaded.problems {
-        let l = &p.location;
-        out.push(finding("error", &l.file, l.line, l.col, p.message.clone()));
-    }
+    out.extend(loaded.warnings.iter().map(|w| diagnostic_finding("warning", w)));
+    out.extend(loaded.problems.iter().map(|p| diagnostic_finding("error", p)));
     if let openscenario::Content::Scenario(s) = &loaded.content {
         let road = match &s.road_network.logic_file {
             Some(f) => match opendrive::load(f) {
                 Ok(r) => {
-                    for w in &r.warnings {
-                        out.push(finding("warning", &w.file, w.line, w.col, w.message.clone()));
-                    }
+                    out.extend(r.warnings.iter().map(|w| diagnostic_finding("warning", w)));
                     Some(r.network)
                 }
                 // the reader has said where the scenario names it; say what follows from it
@@ -149,9 +145,7 @@ fn reader_findings(path: &Path, params: &[(String, String)]) -> Vec<Finding> {
             None => None,
         };
         if road.is_some() {
-            for p in engine::road_references(s, road.as_ref()) {
-                out.push(finding("error", &p.file, p.line, p.col, p.message.clone()));
-            }
+            out.extend(engine::road_references(s, road.as_ref()).iter().map(|p| diagnostic_finding("error", p)));
         }
     }
     out

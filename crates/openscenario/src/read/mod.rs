@@ -14,7 +14,7 @@ pub(crate) use scenario::read_scenario;
 
 use crate::attr::Cx;
 use crate::catalog::{CatalogKind, CatalogStore};
-use crate::error::{Error, ErrorKind, Location, Warning};
+use crate::error::{Diagnostic, Error, ErrorKind, Location};
 use crate::params::{read_declarations, ParameterDeclaration, Scope};
 use crate::xml::Elem;
 
@@ -22,9 +22,9 @@ use crate::xml::Elem;
 const MAX_CATALOG_DEPTH: usize = 16;
 
 pub(crate) struct Reader {
-    pub warnings: Vec<Warning>,
+    pub warnings: Vec<Diagnostic>,
     /// What a strict reading rejects (see `Loaded::problems`).
-    pub problems: Vec<Warning>,
+    pub problems: Vec<Diagnostic>,
     pub catalogs: CatalogStore,
     catalog_depth: usize,
     /// `LoadOptions::go_on_without_catalogs`.
@@ -37,7 +37,7 @@ impl Reader {
     }
 
     pub(crate) fn warn(&mut self, location: Location, message: impl Into<String>) {
-        self.warnings.push(Warning { location, message: message.into() });
+        self.warnings.push(Diagnostic { location, message: message.into() });
     }
 
     /// Records an element the model does not represent yet.
@@ -133,10 +133,10 @@ impl Reader {
         match self.catalog_entry(cx, reference, kinds, read) {
             Err(e) if self.go_on_without_catalogs && matches!(e.kind, ErrorKind::MissingCatalog | ErrorKind::MissingCatalogEntry) => {
                 reference.announce();
-                let gap = Warning { location: e.location.clone(), message: e.message.clone() };
+                let gap = Diagnostic { location: e.location.clone(), message: e.message.clone() };
                 // a catalog missing from directories that are all there is a wrong name, not a gap
                 if e.kind == ErrorKind::MissingCatalog && !self.catalogs.all_directories_exist() {
-                    self.warnings.push(Warning { message: format!("{} (what this file takes from the catalog is not checked)", gap.message), ..gap });
+                    self.warnings.push(Diagnostic { message: format!("{} (what this file takes from the catalog is not checked)", gap.message), ..gap });
                 } else {
                     self.problems.push(gap);
                 }

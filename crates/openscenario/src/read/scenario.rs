@@ -5,7 +5,7 @@ use super::storyboard::read_storyboard;
 use super::Reader;
 use crate::attr::{Cx, Record};
 use crate::catalog::CatalogKind;
-use crate::error::{Error, Warning};
+use crate::error::{Diagnostic, Error};
 use crate::model::*;
 use crate::params::{read_declarations, ParameterDeclaration, Scope};
 use crate::xml::Elem;
@@ -27,7 +27,7 @@ pub(crate) fn read_scenario(
     let parameters = read_declarations(decls, &empty, overrides, file, &mut r.warnings)?;
     for (name, _) in overrides {
         if !parameters.iter().any(|p| &p.name == name) {
-            r.problems.push(Warning {
+            r.problems.push(Diagnostic {
                 location: crate::error::Location::file_only(path),
                 message: format!("parameter '{name}' given as an override (a distribution's run or --param) is not declared by the scenario"),
             });

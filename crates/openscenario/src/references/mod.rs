@@ -12,7 +12,7 @@ mod storyboard;
 
 use std::collections::BTreeSet;
 
-use crate::error::{Location, Warning};
+use crate::error::{Diagnostic, Location};
 use crate::model::*;
 
 /// Every position of the scenario with the origin of the element that holds it (Init and
@@ -147,7 +147,7 @@ pub struct ReferenceSite {
 
 /// Every name of the scenario that refers to nothing it declares, as a problem at the attribute
 /// that holds the name.
-pub fn unresolved(s: &Scenario) -> Vec<Warning> {
+pub fn unresolved(s: &Scenario) -> Vec<Diagnostic> {
     let mut entities = BTreeSet::new();
     for e in &s.entities {
         declare_entity(e, &mut entities, 0);
@@ -159,12 +159,12 @@ pub fn unresolved(s: &Scenario) -> Vec<Warning> {
     let mut out = Vec::new();
     // `within`: the element holding the attribute; the problem is put at the attribute itself
     let at = |within: &'_ Location, attribute: &str, value: &str| -> Location { s.reference_site(within, attribute, |v| v == value).clone() };
-    let entity = |name: &str, within: &Location, attribute: &str, what: &str, out: &mut Vec<Warning>| {
+    let entity = |name: &str, within: &Location, attribute: &str, what: &str, out: &mut Vec<Diagnostic>| {
         if !entities.contains(name) {
             out.push(problem(&at(within, attribute, name), format!("{what} `{name}` is not an entity of the scenario")));
         }
     };
-    let signal_controller = |name: &str, within: &Location, attribute: &str, what: &str, out: &mut Vec<Warning>| {
+    let signal_controller = |name: &str, within: &Location, attribute: &str, what: &str, out: &mut Vec<Diagnostic>| {
         if !s.road_network.traffic_signal_controllers.iter().any(|c| c.name == name) {
             out.push(problem(&at(within, attribute, name), format!("{what}: traffic signal controller `{name}` is not declared in the RoadNetwork")));
         }
@@ -254,9 +254,9 @@ pub fn unresolved(s: &Scenario) -> Vec<Warning> {
 
 /// Storyboard element references that name several elements (esmini takes the first), as
 /// warnings at their attributes, each place once.
-pub fn ambiguous(s: &Scenario) -> Vec<Warning> {
+pub fn ambiguous(s: &Scenario) -> Vec<Diagnostic> {
     let elements = storyboard::Elements::of(s);
-    let mut out: Vec<Warning> = Vec::new();
+    let mut out: Vec<Diagnostic> = Vec::new();
     for_each_condition(s, |c| {
         if let ConditionKind::ByValue(ValueCondition::StoryboardElementState { element_type, element, .. }) = &c.kind {
             if let Err(storyboard::Unresolved::Several(message)) = elements.resolve(*element_type, element) {
@@ -273,7 +273,7 @@ pub fn ambiguous(s: &Scenario) -> Vec<Warning> {
 /// A maneuver group whose maneuvers hold private actions but that names no actor (and does not
 /// take the triggering entities as its actors): those actions act on nothing. The standard makes
 /// the actors of a maneuver group the entities its private actions act on.
-fn actorless_private_actions(mg: &ManeuverGroup) -> Option<Warning> {
+fn actorless_private_actions(mg: &ManeuverGroup) -> Option<Diagnostic> {
     if !mg.actors.is_empty() || mg.select_triggering_entities {
         return None;
     }
@@ -289,8 +289,8 @@ fn actorless_private_actions(mg: &ManeuverGroup) -> Option<Warning> {
     ))
 }
 
-fn problem(at: &Location, message: String) -> Warning {
-    Warning { location: at.clone(), message }
+fn problem(at: &Location, message: String) -> Diagnostic {
+    Diagnostic { location: at.clone(), message }
 }
 
 fn declares(decls: &[crate::ParameterDeclaration], name: &str) -> bool {

@@ -18,7 +18,7 @@ fn at(e: &Error) -> (u32, u32) {
 }
 
 /// The one problem of a file that loads (what esmini reads its own way: an error unless lenient).
-fn problem(text: &str) -> openscenario::Warning {
+fn problem(text: &str) -> openscenario::Diagnostic {
     match load_str(Path::new("/virtual/test.xosc"), text, &LoadOptions::default()) {
         Ok(l) => {
             assert_eq!(l.problems.len(), 1, "{:?}", l.problems);

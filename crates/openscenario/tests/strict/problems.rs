@@ -5,7 +5,7 @@
 use openscenario::*;
 use std::path::Path;
 
-fn problems(text: &str, overrides: &[(&str, &str)]) -> Vec<Warning> {
+fn problems(text: &str, overrides: &[(&str, &str)]) -> Vec<Diagnostic> {
     let options = LoadOptions { parameters: overrides.iter().map(|(a, b)| (a.to_string(), b.to_string())).collect(), seed: None, ..Default::default() };
     match load_str(Path::new("/virtual/strict.xosc"), text, &options) {
         Ok(l) => l.problems,
@@ -51,7 +51,7 @@ fn story(actor: &str, action: &str, condition: &str) -> String {
 const SIM_TIME: &str = r#"<ByValueCondition><SimulationTimeCondition value="1" rule="greaterThan"/></ByValueCondition>"#;
 const SPEED: &str = r#"<PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="step" value="0" dynamicsDimension="time"/><SpeedActionTarget><AbsoluteTargetSpeed value="1"/></SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction>"#;
 
-fn one(found: &[Warning]) -> &Warning {
+fn one(found: &[Diagnostic]) -> &Diagnostic {
     assert_eq!(found.len(), 1, "{found:?}");
     &found[0]
 }
