@@ -20,8 +20,38 @@ pub struct State {
     pub v: f64,
 }
 
-/// States per entity name, in time order.
+/// States per entity name, in time order. A log that goes back in time (esmini rewinds its
+/// clock when a ghost restarts) is a replay: each stretch after a rewind is an entity of its
+/// own, `NAME#2`, `NAME#3`, … as `conformance.py` reads it.
 pub type Traces = BTreeMap<String, Vec<State>>;
+
+/// Builds [`Traces`] from rows in log order, splitting an entity's rows where time goes back.
+#[derive(Debug, Default)]
+pub struct TraceBuilder {
+    traces: Traces,
+    /// Per entity: the time of its last row and its current stretch number.
+    last: BTreeMap<String, (f64, u32)>,
+}
+
+impl TraceBuilder {
+    pub fn push(&mut self, name: &str, s: State) {
+        let stretch = match self.last.get(name) {
+            Some(&(t, k)) if s.t < t - 1e-9 => k + 1,
+            Some(&(_, k)) => k,
+            None => 1,
+        };
+        self.last.insert(name.to_string(), (s.t, stretch));
+        let key = if stretch == 1 { name.to_string() } else { format!("{name}#{stretch}") };
+        self.traces.entry(key).or_default().push(s);
+    }
+
+    pub fn finish(mut self) -> Traces {
+        for states in self.traces.values_mut() {
+            states.sort_by(|a, b| a.t.total_cmp(&b.t));
+        }
+        self.traces
+    }
+}
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Serialize)]
 #[serde(rename_all = "kebab-case")]

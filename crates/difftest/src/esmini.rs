@@ -6,11 +6,19 @@ use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-use crate::compare::{State, Traces};
+use crate::compare::{State, TraceBuilder, Traces};
+
+/// What esmini made of a scenario: its states and the error lines of its log (a scenario the
+/// generator wrote well gives none).
+#[derive(Debug, Clone, PartialEq)]
+pub struct EsminiRun {
+    pub traces: Traces,
+    pub log_errors: Vec<String>,
+}
 
 /// Runs `esmini` headless at a 0.01 s step on `xosc` (its stop trigger ends it; `wall` kills
 /// it), logging to `csv`. `Err` says why there is no trace.
-pub fn run(esmini: &Path, xosc: &Path, csv: &Path, wall: Duration) -> Result<Traces, String> {
+pub fn run(esmini: &Path, xosc: &Path, csv: &Path, wall: Duration) -> Result<EsminiRun, String> {
     let dir = xosc.parent().unwrap_or(Path::new("."));
     let mut child = Command::new(esmini)
         .args(["--headless", "--fixed_timestep", "0.01", "--seed", "0", "--osc"])
@@ -37,21 +45,24 @@ pub fn run(esmini: &Path, xosc: &Path, csv: &Path, wall: Duration) -> Result<Tra
             Err(e) => return Err(e.to_string()),
         }
     };
+    let log = std::fs::read_to_string(csv.with_extension("log")).unwrap_or_default();
+    let log_errors: Vec<String> = log.lines().filter(|l| l.contains("[error]")).map(|l| l.trim().to_string()).collect();
     if !status.success() {
-        return Err(format!("esmini exited with {status}"));
+        let why = log_errors.last().map(|e| format!(": {e}")).unwrap_or_default();
+        return Err(format!("esmini exited with {status}{why}"));
     }
     let text = std::fs::read_to_string(csv).map_err(|e| format!("no esmini log: {e}"))?;
     let traces = parse_csv(&text)?;
     if traces.is_empty() {
         return Err("esmini logged no state".into());
     }
-    Ok(traces)
+    Ok(EsminiRun { traces, log_errors })
 }
 
 /// esmini's CSV log as states per entity.
 pub fn parse_csv(text: &str) -> Result<Traces, String> {
     let mut header: Option<(usize, usize, [usize; 4])> = None;
-    let mut out = Traces::new();
+    let mut out = TraceBuilder::default();
     for line in text.lines() {
         let parts: Vec<&str> = line.split(',').map(str::trim).collect();
         let Some((n0, block, cols)) = header else {
@@ -88,10 +99,10 @@ pub fn parse_csv(text: &str) -> Result<Traces, String> {
             if let (Some(x), Some(y), Some(h), Some(v)) = (get(cols[0]), get(cols[1]), get(cols[2]), get(cols[3])) {
                 // the reference traces keep two decimals of time
                 let t = (t * 100.0).round() / 100.0;
-                out.entry(parts[k].to_string()).or_default().push(State { t, x, y, h, v });
+                out.push(parts[k], State { t, x, y, h, v });
             }
             k += block;
         }
     }
-    Ok(out)
+    Ok(out.finish())
 }

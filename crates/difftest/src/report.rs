@@ -19,6 +19,12 @@ pub struct Outcome {
     pub ref_end: Option<f64>,
     pub our_end: Option<f64>,
     pub note: Option<String>,
+    /// The coverage elements the scenario holds (`coverage::elements_in`).
+    pub elements: Vec<String>,
+    /// esmini's log lines marked `[error]` (a well-formed scenario has none).
+    pub esmini_errors: Vec<String>,
+    /// osc2cr's warnings on the scenario (reader and engine).
+    pub osc2cr_warnings: Vec<String>,
     /// Size of the scenario file, bytes (the smallest divergence is the easiest to read).
     pub size: usize,
 }
@@ -81,8 +87,8 @@ impl Report {
         r
     }
 
-    /// The table printed at the end of a run.
-    pub fn table(&self) -> String {
+    /// The table printed at the end of a run, its last line titled `title`.
+    pub fn table(&self, title: &str) -> String {
         let mut out = String::new();
         let pct = |t: &Tally| t.agreement().map_or("-".to_string(), |a| format!("{:.1} %", 100.0 * a));
         let _ = writeln!(out, "{:<48} {:>5} {:>5} {:>5} {:>5} {:>5} {:>8}  smallest divergence", "feature", "n", "exact", "close", "div", "n/c", "agree");
@@ -100,17 +106,7 @@ impl Report {
             );
         }
         let t = &self.total;
-        let _ = writeln!(
-            out,
-            "{:<48} {:>5} {:>5} {:>5} {:>5} {:>5} {:>8}",
-            format!("all (seed {})", self.seed),
-            t.scenarios,
-            t.exact,
-            t.close,
-            t.diverged,
-            t.not_compared,
-            pct(t)
-        );
+        let _ = writeln!(out, "{:<48} {:>5} {:>5} {:>5} {:>5} {:>5} {:>8}", title, t.scenarios, t.exact, t.close, t.diverged, t.not_compared, pct(t));
         out
     }
 }

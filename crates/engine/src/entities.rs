@@ -34,6 +34,9 @@ pub(crate) struct Entity {
     pub yaw_rate: f64,
     /// World velocity of the last step (for relative speeds).
     pub vel: (f64, f64),
+    /// World acceleration of the last step: the change of `vel` over it (esmini's object
+    /// acceleration, ScenarioEngine::prepareGroundTruth; AccelerationConditions read it).
+    pub acc_vec: (f64, f64),
     /// Nearest lane (also when off the road), `None` without a road network.
     pub lane: Option<LanePos>,
     /// Whether the reference point lies on a lane.
@@ -105,6 +108,7 @@ impl Entity {
             accel: 0.0,
             yaw_rate: 0.0,
             vel: (0.0, 0.0),
+            acc_vec: (0.0, 0.0),
             lane: None,
             on_road: false,
             yaw_offset: 0.0,

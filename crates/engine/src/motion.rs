@@ -60,12 +60,14 @@ impl<'a> Sim<'a> {
         let time = self.time;
         for (en, b) in self.entities.iter_mut().zip(before) {
             let (dx, dy) = (en.x - b.x, en.y - b.y);
+            let old_vel = en.vel;
             if en.appeared {
                 // Just added: where it was before (deleted, or never placed) says nothing
                 // about its motion.
                 en.appeared = false;
                 en.vel = (en.speed * en.h.cos(), en.speed * en.h.sin());
                 en.accel = 0.0;
+                en.acc_vec = (0.0, 0.0);
                 en.yaw_rate = 0.0;
             } else if en.teleported {
                 // ScenarioEngine::prepareStep/step: a teleport is no travel
@@ -73,6 +75,7 @@ impl<'a> Sim<'a> {
                 en.vel = (en.speed * en.h.cos(), en.speed * en.h.sin());
                 if dt > SMALL {
                     en.accel = (en.speed - b.speed) / dt;
+                    en.acc_vec = ((en.vel.0 - old_vel.0) / dt, (en.vel.1 - old_vel.1) / dt);
                     en.yaw_rate = wrap(en.h - b.h) / dt;
                 }
             } else {
@@ -80,6 +83,7 @@ impl<'a> Sim<'a> {
                 if dt > SMALL {
                     en.vel = (dx / dt, dy / dt);
                     en.accel = (en.speed - b.speed) / dt;
+                    en.acc_vec = ((en.vel.0 - old_vel.0) / dt, (en.vel.1 - old_vel.1) / dt);
                     en.yaw_rate = wrap(en.h - b.h) / dt;
                 }
             }

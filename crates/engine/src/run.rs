@@ -137,6 +137,9 @@ impl<'a> Simulation<'a> {
         storyboard_step(sim, 0.0);
         if !restarting {
             sim.step_natural_drivers(0.0);
+            // esmini's ScenarioEngine::step steps every active controller in frame 0 too (dt 0):
+            // an ACC already stops for a lead closer than 1 m (ControllerACC::Step)
+            sim.step_acc_controllers(0.0);
             sim.step_looming_controllers(0.0);
         }
         sim.pull_trailers();

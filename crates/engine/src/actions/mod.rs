@@ -63,7 +63,10 @@ impl<'a> Sim<'a> {
     /// `Runs` unless `e` is driven from outside), warned once per slot when `tell`.
     fn overridden_on(&mut self, slot: usize, e: usize, p: &PrivateAction, tell: bool) -> Overridden {
         if !self.outside(e) {
-            return Overridden::Runs;
+            // a controller in override mode on the lateral domain holds the lateral actions
+            // (controllers::lateral_overridden)
+            let lateral = matches!(p, PrivateAction::LaneChange { .. } | PrivateAction::LaneOffset { .. } | PrivateAction::LateralDistance { .. });
+            return if lateral && self.lateral_overridden(e) { Overridden::Idles } else { Overridden::Runs };
         }
         let fate = overridden(p);
         if let Some(note) = crate::external::overridden::note(fate, p.element_name(), self.entities.get(e).map_or("", |en| en.name.as_str())).filter(|_| tell) {
@@ -177,7 +180,7 @@ impl<'a> Sim<'a> {
                 if let Some(en) = self.entities.get_mut(e) {
                     en.controller_active = on;
                 }
-                self.activate_controller(e, longitudinal.unwrap_or(true));
+                self.activate_controller(e, lateral.unwrap_or(true), longitudinal.unwrap_or(true));
                 ActionRt::Done
             }
             PrivateAction::AssignController { controller, activate_longitudinal, activate_lateral, .. } => {
@@ -187,8 +190,8 @@ impl<'a> Sim<'a> {
                     if lat || long {
                         self.activate_outside_driver(slot, e, lat, long);
                     }
-                    if *activate_longitudinal == Some(true) {
-                        self.activate_controller(e, true);
+                    if lat || long {
+                        self.activate_controller(e, lat, long);
                     }
                 }
                 ActionRt::Done
@@ -242,7 +245,7 @@ impl<'a> Sim<'a> {
             // instance already done did what it did before, and a speed change whose
             // transition is over loses nothing by ending: only the others are told.
             let rt = &self.actions[slot].instances[k].rt;
-            if let (true, ActionKind::Private(p)) = (self.outside(e), &self.actions[slot].model.kind) {
+            if let (true, ActionKind::Private(p)) = (self.outside(e) || self.lateral_overridden(e), &self.actions[slot].model.kind) {
                 if !matches!(rt, ActionRt::Done | ActionRt::EndedAtStart) {
                     let cut_short = !matches!(rt, ActionRt::Speed(s) if s.transition.param >= s.transition.param_target);
                     if self.overridden_on(slot, e, p, cut_short) == Overridden::Idles {

@@ -8,12 +8,10 @@ use openscenario::Position;
 impl<'a> Sim<'a> {
     pub(super) fn teleport(&mut self, slot: usize, e: usize, pos: &Position) {
         // esmini's TeleportAction::Start does nothing while a controller in override mode owns
-        // the entity's lateral or longitudinal motion (here: an active ACC/ALKS in override mode)
-        if let Some(Some(crate::controllers::state::ControllerRt::Acc(a))) = self.controllers.get(e) {
-            if a.overrides_longitudinal() {
-                self.warn_action(slot, "TeleportAction: ignored, as esmini does, while the entity's ACC controller in override mode drives it".into());
-                return;
-            }
+        // the entity's lateral or longitudinal motion (controllers/mod.rs `overrides_motion`)
+        if self.overrides_motion(e) {
+            self.warn_action(slot, "TeleportAction: ignored, as esmini does, while the entity's controller in override mode drives it".into());
+            return;
         }
         let placement = match resolve(pos, self.net, &self.entities) {
             Ok(p) => p,

@@ -151,7 +151,7 @@ impl<'a> Sim<'a> {
                 self.relative_clearance(idx, &c)
             }
             C::RelativeSpeed { value, rule, direction, .. } => o.is_some_and(|o| compare(relative_speed(e, o, *direction), *value, *rule)),
-            C::Acceleration { value, rule, .. } => compare(e.accel, *value, *rule),
+            C::Acceleration { value, rule, direction } => compare(directed_acceleration(e, *direction), *value, *rule),
             C::StandStill { duration } => e.standstill_since.is_some_and(|s| t - s >= duration - SMALL),
             C::TraveledDistance { value } => e.odometer >= *value,
             C::EndOfRoad { duration } => e.end_of_road && t - e.end_of_road_since >= duration - SMALL,
@@ -235,6 +235,32 @@ fn directed_speed(e: &crate::entities::Entity, direction: Option<openscenario::D
         None => e.speed,
         Some(D::Longitudinal) => in_frame(e.vel, e.h).0,
         Some(D::Lateral) => in_frame(e.vel, e.h).1,
+        Some(D::Vertical) => 0.0,
+    }
+}
+
+/// An AccelerationCondition's acceleration, from the entity's acceleration vector (the change
+/// of its world velocity over the last step) as esmini's TrigByAcceleration::CheckCondition
+/// reads it: without a direction Position::GetAcc — the vector's length, signed as its
+/// component along the heading (so a car at constant speed in a curve has its centripetal
+/// acceleration, positive or not by its sign along the heading); with one, the component along
+/// the entity's own axes (GetAccLong, GetAccLat; vertical is 0 on our flat model).
+fn directed_acceleration(e: &crate::entities::Entity, direction: Option<openscenario::DirectionalDimension>) -> f64 {
+    use openscenario::DirectionalDimension as D;
+    let (along, lateral) = in_frame(e.acc_vec, e.h);
+    match direction {
+        None => {
+            let sign = if along > 0.0 {
+                1.0
+            } else if along < 0.0 {
+                -1.0
+            } else {
+                0.0
+            };
+            sign * e.acc_vec.0.hypot(e.acc_vec.1)
+        }
+        Some(D::Longitudinal) => along,
+        Some(D::Lateral) => lateral,
         Some(D::Vertical) => 0.0,
     }
 }

@@ -18,7 +18,7 @@ use state::AccRt;
 use crate::conditions::distance::between;
 use crate::roads::lane_geometry::lane_center_t;
 use crate::roads::road_distance::road_distance_within;
-use crate::roads::{move_along_s, LanePos};
+use crate::roads::{move_along_s, LanePos, MoveStatus};
 use crate::sim::Sim;
 use opendrive::RoadNetwork;
 use openscenario::{Controller, CoordinateSystem, RelativeDistanceType};
@@ -46,6 +46,9 @@ impl AccRt {
             current_speed: 0.0,
             override_mode: c.properties.get("mode") == Some("override"),
             moved_by_action: false,
+            at_end: false,
+            moved: true,
+            end_seen: false,
         }
     }
 
@@ -66,7 +69,11 @@ impl AccRt {
 pub(super) fn lane_delta(net: &RoadNetwork, a: LanePos, b: LanePos, max: f64) -> Option<(f64, bool, f64)> {
     let t = |p: &LanePos| net.roads.get(p.road).and_then(|r| lane_center_t(r, p.lane_id, p.s)).map(|c| c + p.offset);
     if a.road == b.road {
+        // esmini's Position::Delta: found only within `maxDist`, on the same road too
         let ds = (b.s - a.s) * a.dir;
+        if ds.abs() >= max {
+            return None;
+        }
         return Some((ds, a.lane_id == b.lane_id, (t(&b)? - t(&a)?) * a.dir));
     }
     let d = road_distance_within(net, a.road, a.s, b.road, b.s, max)?;
@@ -94,10 +101,27 @@ impl<'a> Sim<'a> {
     }
 
     fn step_acc(&mut self, e: usize, a: &mut AccRt, dt: f64) {
+        // esmini's ScenarioEngine::step, before it steps the controllers: an entity at the end of
+        // its road since the step before that did not move in the last step gets speed 0 (which
+        // the ACC then takes as its set speed and brakes to). The default controller's entities
+        // get this in `default_controller`; the ACC moves its own in override mode.
+        if a.override_mode {
+            if !a.at_end {
+                a.end_seen = false;
+            } else if !a.end_seen {
+                a.end_seen = true;
+            } else if !a.moved {
+                if let Some(en) = self.entities.get_mut(e) {
+                    en.speed = 0.0;
+                }
+            }
+        }
         let Some(me) = self.entities.get(e) else { return };
-        // In override mode esmini's longitudinal actions leave the entity alone; otherwise a
-        // speed another action set becomes the new set speed.
-        if !a.override_mode && (me.speed - a.current_speed).abs() > 1e-3 {
+        // A speed another action (or controller) set becomes the new set speed, in either mode
+        // (esmini's ControllerACC::Step: its additive-only test is commented out). In override
+        // mode most longitudinal actions end or idle (LongSpeedAction::Start, LongDistanceAction
+        // ::Step, SynchronizeAction), but a SpeedProfileAction still sets the speed.
+        if (me.speed - a.current_speed).abs() > 1e-3 {
             a.set_speed = me.speed;
         }
         let lookahead = (2.0 * MIN_DIST + a.current_speed.powi(2) / me.max_dec).max(50.0);
@@ -152,17 +176,24 @@ impl<'a> Sim<'a> {
         }
         let net = self.net;
         let Some(en) = self.entities.get_mut(e) else { return };
-        if a.override_mode && !a.moved_by_action {
+        // In override mode esmini's ACC moves the entity along s whether or not an action moved
+        // it this step (ControllerACC::Step: MoveAlongS); an action that keeps its own position
+        // (a lane change: LatLaneChangeAction::Step restores `internal_pos_`) starts from there
+        // again next step, so the log shows the ACC's move on top.
+        if a.override_mode {
+            let (x0, y0) = (en.x, en.y);
             match (net, en.lane) {
                 (Some(net), Some(mut lp)) => {
-                    move_along_s(net, &mut lp, a.current_speed * dt);
+                    a.at_end = move_along_s(net, &mut lp, a.current_speed * dt) == MoveStatus::EndOfRoad;
                     en.set_lane_pos(net, lp);
                 }
                 _ => {
+                    a.at_end = false;
                     en.x += a.current_speed * dt * en.h.cos();
                     en.y += a.current_speed * dt * en.h.sin();
                 }
             }
+            a.moved = (en.x - x0).hypot(en.y - y0) > 1e-9;
             en.moved_by_action = true;
         }
         en.speed = a.current_speed;

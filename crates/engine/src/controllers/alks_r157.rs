@@ -69,6 +69,8 @@ impl AlksR157Rt {
         };
         let rt_ = AlksR157Rt {
             active: false,
+            longitudinal: true,
+            lateral: true,
             override_mode: p("mode").as_deref() != Some("additive"),
             model,
             rt,
@@ -99,10 +101,16 @@ impl AlksR157Rt {
         (rt_, note)
     }
 
-    pub(crate) fn activate(&mut self, speed: f64, longitudinal: bool) {
+    /// ControllerALKS_R157SM::Activate: it operates on both domains, so it is active on either
+    /// one asked for, and steps (moving the entity in override mode) whichever it is; only when
+    /// it holds the longitudinal one does the default controller leave the entity alone
+    /// (ScenarioEngine::defaultController: `IsControllerModeOnDomains(MODE_OVERRIDE, LONG)`).
+    pub(crate) fn activate(&mut self, speed: f64, lateral: bool, longitudinal: bool) {
         self.set_speed = speed;
-        if longitudinal {
+        if lateral || longitudinal {
             self.active = true;
+            self.longitudinal = longitudinal;
+            self.lateral = lateral;
         }
     }
 
@@ -577,7 +585,8 @@ impl<'a> Sim<'a> {
                     en.y += speed * dt * en.h.sin();
                 }
             }
-            en.moved_by_action = true;
+            // active on the lateral domain only, the default controller moves the entity too
+            en.moved_by_action = a.longitudinal;
         }
         en.speed = speed;
     }

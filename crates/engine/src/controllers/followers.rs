@@ -14,7 +14,10 @@ impl<'a> Sim<'a> {
             return;
         }
         for e in 0..self.controllers.len() {
-            let is_follower = matches!(self.controllers.get(e), Some(Some(ControllerRt::FollowGhost(_) | ControllerRt::FollowReference(_))));
+            let is_follower = matches!(
+                self.controllers.get(e),
+                Some(Some(ControllerRt::FollowGhost(_) | ControllerRt::FollowReference(_) | ControllerRt::OffroadFollower(_)))
+            );
             if !is_follower || !self.entities.get(e).is_some_and(|en| en.active) {
                 continue;
             }
@@ -22,6 +25,7 @@ impl<'a> Sim<'a> {
             match &mut rt {
                 ControllerRt::FollowGhost(f) if f.active => self.step_follow_ghost(e, f, dt),
                 ControllerRt::FollowReference(f) if f.active => self.step_follow_reference(e, f, dt),
+                ControllerRt::OffroadFollower(f) if f.active => self.step_offroad_follower(e, f, dt),
                 _ => {}
             }
             if let Some(slot) = self.controllers.get_mut(e) {

@@ -20,6 +20,7 @@ pub(crate) mod kinematic_vehicle;
 pub(crate) mod lane_router;
 pub(crate) mod looming;
 pub(crate) mod natural_driver;
+pub(crate) mod offroad_follower;
 pub(crate) mod state;
 
 use self::state::ControllerRt;
@@ -78,6 +79,7 @@ impl<'a> Sim<'a> {
             "FollowGhostController" => Some(ControllerRt::FollowGhost(Box::new(follow_ghost::state::FollowGhostRt::new(c)))),
             "FollowReferenceController" => Some(ControllerRt::FollowReference(Box::new(follow_reference::state::FollowReferenceRt::new(c)))),
             "FollowRouteController" => Some(ControllerRt::FollowRoute(Box::new(follow_route::state::FollowRouteRt::new(c)))),
+            "OffroadFollower" => Some(ControllerRt::OffroadFollower(Box::new(offroad_follower::state::OffroadFollowerRt::new(c)))),
             "LoomingController" => {
                 if self.net.is_some_and(|n| n.roads.iter().any(|r| r.elevation.iter().chain(&r.superelevation).any(|c| c.b != 0.0 || c.c != 0.0 || c.d != 0.0)))
                 {
@@ -102,12 +104,14 @@ impl<'a> Sim<'a> {
         }
     }
 
-    /// ActivateControllerAction on entity `e` for the given domains.
-    pub(crate) fn activate_controller(&mut self, e: usize, longitudinal: bool) {
+    /// ActivateControllerAction (or an AssignControllerAction that activates) on entity `e` for
+    /// the given domains. esmini activates a controller on the requested domains it operates on
+    /// (Controller::Activate): ACC, ALKS, NaturalDriver and Looming on the longitudinal one only.
+    pub(crate) fn activate_controller(&mut self, e: usize, lateral: bool, longitudinal: bool) {
         let Some(speed) = self.entities.get(e).map(|en| en.speed) else { return };
         match self.controllers.get_mut(e) {
             Some(Some(ControllerRt::Acc(a))) => a.activate(speed, longitudinal),
-            Some(Some(ControllerRt::AlksR157(a))) => a.activate(speed, longitudinal),
+            Some(Some(ControllerRt::AlksR157(a))) => a.activate(speed, lateral, longitudinal),
             Some(Some(ControllerRt::NaturalDriver(a))) => a.activate(speed, longitudinal),
             Some(Some(ControllerRt::FollowGhost(f))) => {
                 if let Some(en) = self.entities.get(e) {
@@ -126,6 +130,11 @@ impl<'a> Sim<'a> {
                     l.activate(en, longitudinal);
                 }
             }
+            Some(Some(ControllerRt::OffroadFollower(f))) => {
+                if let Some(en) = self.entities.get(e) {
+                    f.activate(en);
+                }
+            }
             _ => {}
         }
     }
@@ -140,6 +149,44 @@ impl<'a> Sim<'a> {
         match self.controllers.get(e) {
             Some(Some(ControllerRt::Acc(a))) => a.overrides_longitudinal(),
             Some(Some(ControllerRt::FollowRoute(f))) => f.overrides_longitudinal(),
+            Some(Some(ControllerRt::OffroadFollower(f))) => f.active,
+            _ => false,
+        }
+    }
+
+    /// Whether an active controller of entity `e` in override mode owns its lateral or
+    /// longitudinal motion: esmini's `Object::IsControllerModeOnAnyOfDomains(MODE_OVERRIDE,
+    /// DOMAIN_MASK_LAT_AND_LONG)`, under which TeleportAction::Start does nothing. Each type's
+    /// mode as esmini gives it: ACC/ALKS additive unless `mode` says override (ControllerACC);
+    /// Looming, NaturalDriver and ALKS R157 override unless it says additive (the Controller
+    /// base); FollowGhost and FollowReference always override; FollowRoute only while it
+    /// changes lanes.
+    pub(crate) fn overrides_motion(&self, e: usize) -> bool {
+        match self.controllers.get(e) {
+            Some(Some(ControllerRt::Acc(a))) => a.overrides_longitudinal(),
+            Some(Some(ControllerRt::Looming(l))) => l.active && l.override_mode,
+            Some(Some(ControllerRt::NaturalDriver(n))) => n.active && n.override_mode,
+            Some(Some(ControllerRt::AlksR157(a))) => a.active && a.override_mode,
+            Some(Some(ControllerRt::FollowGhost(f))) => f.active,
+            Some(Some(ControllerRt::FollowReference(f))) => f.active,
+            Some(Some(ControllerRt::FollowRoute(f))) => f.overrides_longitudinal(),
+            _ => false,
+        }
+    }
+
+    /// Whether an active controller of entity `e` in override mode holds its lateral domain
+    /// (esmini's `IsControllerModeOnDomains(MODE_OVERRIDE, DOMAIN_MASK_LAT)`), under which a
+    /// lane change, a lane offset or a lateral distance action does nothing and never ends
+    /// (LatLaneChangeAction, LatLaneOffsetAction, LatDistanceAction: Start and Step return
+    /// early): an ALKS R157 controller activated laterally in override mode, an
+    /// OffroadFollower, a FollowReference following another entity. (ACC, ALKS, Looming and
+    /// NaturalDriver operate on the longitudinal domain only; a ghost follower's actions drive
+    /// its ghost.)
+    pub(crate) fn lateral_overridden(&self, e: usize) -> bool {
+        match self.controllers.get(e) {
+            Some(Some(ControllerRt::AlksR157(a))) => a.active && a.override_mode && a.lateral,
+            Some(Some(ControllerRt::OffroadFollower(f))) => f.active,
+            Some(Some(ControllerRt::FollowReference(f))) => f.active && !f.uses_ghost(),
             _ => false,
         }
     }
@@ -173,6 +220,7 @@ impl<'a> Sim<'a> {
                 // until then the default controller leaves the entity alone.
                 ControllerRt::FollowGhost(f) => self.hold_follower(e, f.active),
                 ControllerRt::FollowReference(f) => self.hold_follower(e, f.active),
+                ControllerRt::OffroadFollower(f) => self.hold_follower(e, f.active),
                 // Steps after the default controller (`step_route_followers`); its running lane
                 // change moves the entity instead of the default controller (esmini's override).
                 ControllerRt::FollowRoute(f) => self.hold_follower(e, f.holds_entity()),

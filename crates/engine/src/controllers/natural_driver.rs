@@ -78,6 +78,7 @@ impl NaturalDriverRt {
         let cooldown = p.lane_change_duration + p.lane_change_delay;
         NaturalDriverRt {
             active: false,
+            override_mode: c.properties.get("mode") != Some("additive"),
             p,
             current_speed: 0.0,
             mode: Mode::Drive,

@@ -11,4 +11,5 @@ pub(crate) enum ControllerRt {
     FollowReference(Box<super::follow_reference::state::FollowReferenceRt>),
     FollowRoute(Box<super::follow_route::state::FollowRouteRt>),
     Looming(super::looming::state::LoomingRt),
+    OffroadFollower(Box<super::offroad_follower::state::OffroadFollowerRt>),
 }

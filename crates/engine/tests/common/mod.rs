@@ -101,6 +101,14 @@ pub(crate) fn run(text: &str) -> Run {
     run_with(text, &Settings { step: 0.01, max_time: 20.0 })
 }
 
+/// The run of fixture scenario `xosc` on fixture road `xodr` (0.01 s steps, at most 20 s).
+pub(crate) fn run_fixture(xosc: &str, xodr: &str) -> Run {
+    let loaded = openscenario::load(&fixtures().join(xosc), &Default::default()).expect("fixture scenario loads");
+    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
+    let net = opendrive::load(fixtures().join(xodr)).expect("fixture road loads").network;
+    engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 20.0 }).expect("simulate")
+}
+
 /// Sample of `entity` at time `t` (a run with a ghost's head start begins before 0).
 pub(crate) fn at(run: &Run, entity: &str, t: f64) -> engine::Sample {
     let e = run.trace.entities.iter().find(|e| e.name == entity).expect("entity in trace");

@@ -1,5 +1,6 @@
 //! Triggers and each condition, checked against hand computations or esmini 3.6.0's runs.
 
+mod acceleration_curve;
 mod angle;
 mod basic;
 mod clearance_across_roads;

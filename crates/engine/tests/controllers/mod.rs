@@ -3,6 +3,10 @@
 mod acc;
 mod alks;
 mod alks_r157;
+mod alks_r157_one_domain;
 mod follow_route;
+mod holds_lateral;
 mod looming;
 mod natural_driver;
+mod offroad_follower;
+mod teleport_under_controllers;

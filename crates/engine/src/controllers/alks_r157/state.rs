@@ -57,7 +57,11 @@ pub(super) struct Trigger {
 #[derive(Debug, Clone)]
 pub(crate) struct AlksR157Rt {
     pub active: bool,
-    pub(super) override_mode: bool,
+    /// Active on the longitudinal domain (else the default controller moves the entity as well).
+    pub(in crate::controllers) longitudinal: bool,
+    /// Active on the lateral domain.
+    pub(in crate::controllers) lateral: bool,
+    pub(in crate::controllers) override_mode: bool,
     pub model: Model,
     pub(super) rt: f64,
     pub(super) max_dec: f64,

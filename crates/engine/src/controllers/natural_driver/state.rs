@@ -31,6 +31,9 @@ pub(super) enum Mode {
 #[derive(Debug, Clone)]
 pub(crate) struct NaturalDriverRt {
     pub active: bool,
+    /// esmini's mode: override unless the `mode` property says additive (the driver moves the
+    /// entity either way; the mode decides whether a teleport is ignored).
+    pub(in crate::controllers) override_mode: bool,
     pub p: NdParams,
     pub(super) current_speed: f64,
     pub(super) mode: Mode,

@@ -1,4 +1,9 @@
-//! What a controller in override mode (ACC) does to the storyboard's actions on its entity.
+//! The ACC: what a controller in override mode does to the storyboard's actions on its entity,
+//! its first frame and its look-ahead.
 
+mod first_frame;
+mod lookahead_same_road;
+mod override_moves;
 mod override_speed_action;
+mod override_speed_profile;
 mod override_teleport;

@@ -1,0 +1,77 @@
+//! OffroadFollower, as esmini's ControllerOffroadFollower: the entity drives straight at another
+//! entity (`followEntity`), off the road if need be, on esmini's analog vehicle model
+//! (`analog_vehicle`, steering rate `steeringRate`): steering is the angle from its heading to
+//! the other's reference point (limited to ±1), throttle 0.5 · (distance − `targetDistance`)
+//! − 0.5 · (own speed − the other's) (limited to ±1), its top speed 1.2 × the road's speed
+//! limit (esmini's Position::GetSpeedLimit: the road type's, else 120 km/h with more than one
+//! driving lane on its side, 60 km/h with one, 70 km/h off any road), at most the vehicle's.
+//! It works on both domains in override mode (the Controller base's defaults): the default
+//! controller leaves the entity alone, and it steps after the default controller has moved
+//! the one it follows.
+
+pub(crate) mod state;
+
+use state::OffroadFollowerRt;
+
+use super::analog_vehicle::AnalogVehicle;
+use super::kinematic_vehicle::KinematicVehicle;
+use crate::roads::lane_kind::is_driving;
+use crate::roads::road_follow::wrap;
+use crate::sim::Sim;
+use openscenario::Controller;
+
+impl OffroadFollowerRt {
+    pub(crate) fn new(c: &Controller) -> OffroadFollowerRt {
+        let num = |n: &str, d: f64| c.properties.get(n).and_then(|v| v.trim().parse::<f64>().ok()).filter(|v| v.is_finite()).unwrap_or(d);
+        OffroadFollowerRt {
+            active: false,
+            follow: c.properties.get("followEntity").map(str::trim).filter(|s| !s.is_empty()).map(str::to_string),
+            target_distance: num("targetDistance", 20.0),
+            steering_rate: num("steeringRate", 4.0),
+            vehicle: None,
+        }
+    }
+
+    /// Switched on (ControllerOffroadFollower::Activate): the model starts from the entity's
+    /// pose and speed.
+    pub(crate) fn activate(&mut self, en: &crate::entities::Entity) {
+        self.active = true;
+        let car = KinematicVehicle::new(en.x, en.y, en.h, en.speed, en.bbox[3], en.max_speed);
+        self.vehicle = Some(AnalogVehicle::new(car, en.max_acc, en.max_dec, self.steering_rate));
+    }
+}
+
+impl<'a> Sim<'a> {
+    /// esmini's Position::GetSpeedLimit where entity `e` is.
+    fn speed_limit(&self, e: usize) -> f64 {
+        let (Some(net), Some(lp)) = (self.net, self.entities.get(e).and_then(|en| en.lane)) else { return 70.0 / 3.6 };
+        let Some(road) = net.roads.get(lp.road) else { return 70.0 / 3.6 };
+        if let Some(v) = road.type_at(lp.s).and_then(|t| t.speed.as_ref()).and_then(|s| s.max_mps).filter(|v| *v > 1e-10) {
+            return v;
+        }
+        let Some(sec) = road.section_at(lp.s) else { return 60.0 / 3.6 };
+        let side = if lp.lane_id > 0 { &sec.left } else { &sec.right };
+        let driving = side.iter().filter(|l| is_driving(l.kind)).count();
+        if driving > 1 {
+            120.0 / 3.6
+        } else {
+            60.0 / 3.6
+        }
+    }
+
+    /// One step of OffroadFollower `e` (after the default controller).
+    pub(super) fn step_offroad_follower(&mut self, e: usize, f: &mut OffroadFollowerRt, dt: f64) {
+        let Some(lead) = f.follow.as_deref().and_then(|n| self.entities.iter().find(|o| o.name == n)) else { return };
+        let (Some(me), Some(mut v)) = (self.entities.get(e), f.vehicle) else { return };
+        v.car.max_speed = (1.2 * self.speed_limit(e)).min(me.max_speed);
+        let (dx, dy) = (lead.x - me.x, lead.y - me.y);
+        let direction = wrap(dy.atan2(dx) - me.h);
+        let dist = dx.hypot(dy);
+        let steering = direction.clamp(-1.0, 1.0);
+        let throttle = (0.5 * (dist - f.target_distance) - 0.5 * (me.speed - lead.speed)).clamp(-1.0, 1.0);
+        v.drive(dt, throttle, steering);
+        if self.place_driven(e, &v.car) {
+            f.vehicle = Some(v);
+        }
+    }
+}

@@ -1,0 +1,18 @@
+//! OffroadFollower, esmini's ControllerOffroadFollower: the entity steers at the entity it
+//! follows (angle to its reference point, ±1) with throttle 0.5·(distance − targetDistance) −
+//! 0.5·(speed difference) on esmini's analog vehicle model, top speed 1.2 × the road's speed
+//! limit. Fixture `offroad_follower.xosc` (straight road): Lead at 12 m/s changes to lane 1 at
+//! t > 3; Follower starts 40 m behind in lane -2 at 5 m/s and follows it at 12 m. Expected
+//! values: esmini 3.6.0 on the same fixture (osc2cr drove the follower along its lane before).
+
+use crate::common::*;
+
+#[test]
+fn an_offroad_follower_drives_after_its_lead() {
+    let run = run_fixture("offroad_follower.xosc", "straight.xodr");
+    assert!(run.warnings.is_empty(), "{:?}", run.warnings);
+    for (t, x, y, v) in [(1.0, 27.519, -4.977, 10.0), (4.0, 80.018, -2.238, 25.0), (6.0, 119.463, 0.442, 13.23), (12.0, 191.909, 1.753, 12.0)] {
+        let e = at(&run, "Follower", t);
+        assert!(close(e.x, x, 2e-3) && close(e.y, y, 2e-3) && close(e.speed, v, 6e-3), "t {t}: {e:?}");
+    }
+}
