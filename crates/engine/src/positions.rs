@@ -190,7 +190,7 @@ fn place(net: &RoadNetwork, road: usize, lane_id: i32, s: f64, offset: f64, alon
 }
 
 /// Face `p` at `h` from its road's reference direction; the lane direction it drives follows.
-fn turn_from_road_direction(net: &RoadNetwork, p: &mut Placement, h: f64) {
+pub(crate) fn turn_from_road_direction(net: &RoadNetwork, p: &mut Placement, h: f64) {
     let Some(lp) = p.lane.as_mut() else { return };
     let Some(pose) = lp.pose(net) else { return };
     p.h = pose.road_heading + h;

@@ -15,6 +15,9 @@ impl<'a> Sim<'a> {
                 return;
             }
         }
+        if let Some(note) = crate::route_position::esmini_deviation(pos, self.net, &self.entities) {
+            self.warn_action(slot, format!("TeleportAction: {note}"));
+        }
         let placement = match resolve(pos, self.net, &self.entities) {
             Ok(p) => p,
             Err(msg) => {

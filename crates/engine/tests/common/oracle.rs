@@ -1,0 +1,112 @@
+//! esmini 3.6.0 as the oracle of a fixture test: a fixture scenario run by the engine and, where
+//! esmini can run here (`../shared/tools/esmini`), by esmini too, each entity compared row by row.
+//! Where esmini cannot run the comparison is skipped with a notice (the tests also assert
+//! esmini's numbers, written down from a confirmed run).
+
+use engine::{Run, Settings};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// One row of esmini's CSV log for one entity.
+#[derive(Debug, Clone, PartialEq)]
+pub struct OracleRow {
+    pub time: f64,
+    pub entity: String,
+    pub x: f64,
+    pub y: f64,
+    pub h: f64,
+    pub speed: f64,
+}
+
+/// The fixture `name` (its map named in it, relative to the fixtures) run by the engine.
+pub fn run_fixture_scenario(name: &str, max_time: f64) -> Run {
+    let path = super::fixtures().join(name);
+    let (scenario, _) = openscenario::load_scenario(&path, &Default::default()).expect("fixture scenario loads");
+    let net = scenario.road_network.logic_file.as_ref().map(|p| opendrive::load(p).expect("fixture road loads").network);
+    engine::simulate(&scenario, net.as_ref(), &Settings { step: 0.01, max_time }).expect("simulate")
+}
+
+fn esmini_binary() -> Option<PathBuf> {
+    let bin = testkit::shared_dir()?.join("tools/esmini/bin/esmini-3.6.0");
+    let runs = Command::new(&bin).arg("--version").output().is_ok_and(|o| String::from_utf8_lossy(&o.stdout).contains("esmini"));
+    runs.then_some(bin)
+}
+
+/// esmini's rows for the fixture `name` (fixed step 0.01 s, seed 0), or `None` with a notice.
+pub fn esmini_rows(name: &str) -> Option<Vec<OracleRow>> {
+    let Some(bin) = esmini_binary() else {
+        eprintln!("notice: esmini 3.6.0 cannot run here; the oracle comparison of {name} is skipped");
+        return None;
+    };
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("esmini-oracle");
+    std::fs::create_dir_all(&dir).expect("oracle folder");
+    let csv = dir.join(Path::new(name).with_extension("csv"));
+    let log = dir.join(Path::new(name).with_extension("log"));
+    let status = Command::new(&bin)
+        .args(["--headless", "--fixed_timestep", "0.01", "--seed", "0", "--osc"])
+        .arg(super::fixtures().join(name))
+        .arg("--csv_logger")
+        .arg(&csv)
+        .arg("--logfile_path")
+        .arg(&log)
+        .output()
+        .expect("esmini starts");
+    assert!(status.status.success(), "esmini failed on {name}: {}", String::from_utf8_lossy(&status.stderr));
+    Some(parse_esmini_csv(&std::fs::read_to_string(&csv).expect("esmini's log")))
+}
+
+/// esmini's wide CSV log (a block of columns per entity) as rows.
+fn parse_esmini_csv(text: &str) -> Vec<OracleRow> {
+    let mut out = Vec::new();
+    let mut layout: Option<(usize, usize, [usize; 4])> = None;
+    for line in text.lines() {
+        let parts: Vec<&str> = line.split(',').map(str::trim).collect();
+        let Some((first, block, cols)) = layout else {
+            if parts.get(1).is_some_and(|p| p.starts_with("TimeStamp")) {
+                let names: Vec<usize> = parts.iter().enumerate().filter(|(_, p)| p.contains("Entity_Name")).map(|(i, _)| i).collect();
+                let first = names[0];
+                let block = names.get(1).map_or(parts.len() - first, |n| n - first);
+                let find = |key: &str| parts[first..first + block].iter().position(|p| p.contains(key)).expect("esmini column");
+                layout = Some((first, block, [find("World_Position_X"), find("World_Position_Y"), find("World_Heading_Angle"), find("Current_Speed")]));
+            }
+            continue;
+        };
+        let Ok(time) = parts.get(1).unwrap_or(&"").parse::<f64>() else { continue };
+        let mut k = first;
+        while k + block <= parts.len() && !parts[k].is_empty() {
+            let num = |c: usize| parts[k + c].parse::<f64>().expect("esmini number");
+            out.push(OracleRow { time, entity: parts[k].to_string(), x: num(cols[0]), y: num(cols[1]), h: num(cols[2]), speed: num(cols[3]) });
+            k += block;
+        }
+    }
+    out
+}
+
+/// The worst distance (m) between the engine's and esmini's positions of any entity at any
+/// time both have, with where it was; and the last time of each.
+pub fn worst_against_esmini(run: &Run, rows: &[OracleRow]) -> (f64, String, f64, f64) {
+    let mut worst = (0.0, String::new());
+    let mut last = 0.0f64;
+    for r in rows {
+        last = last.max(r.time);
+        let Some(e) = run.trace.entities.iter().find(|e| e.name == r.entity) else {
+            return (f64::INFINITY, format!("{} missing", r.entity), 0.0, 0.0);
+        };
+        let k = ((r.time - run.trace.start) / run.trace.step).round() as usize;
+        let Some(Some(s)) = e.samples.get(k) else { continue };
+        let d = (s.x - r.x).hypot(s.y - r.y);
+        if d > worst.0 {
+            worst = (d, format!("{} at {:.2} s: ours ({:.3}, {:.3}) esmini ({:.3}, {:.3})", r.entity, r.time, s.x, s.y, r.x, r.y));
+        }
+    }
+    (worst.0, worst.1, run.trace.end_time(), last)
+}
+
+/// Assert that the engine's run of fixture `name` is esmini's within `tol` m and one step of
+/// end time, when esmini can run here.
+pub fn assert_matches_esmini(name: &str, run: &Run, tol: f64) {
+    let Some(rows) = esmini_rows(name) else { return };
+    let (worst, at, ours_end, esmini_end) = worst_against_esmini(run, &rows);
+    assert!(worst <= tol, "{name}: {worst:.3} m from esmini ({at})");
+    assert!((ours_end - esmini_end).abs() <= 0.011, "{name}: ends at {ours_end:.2} s, esmini at {esmini_end:.2} s");
+}
