@@ -36,7 +36,7 @@ impl<'a> Sim<'a> {
                 en.set_lane_pos(net, lp);
                 en.h = crate::entities::wrap_2pi(placement.h);
             }
-            _ => en.set_world(net, placement.x, placement.y, placement.z, placement.h),
+            _ => en.set_world_snapping(net, placement.x, placement.y, placement.z, placement.h, false),
         }
         // esmini records a teleported entity where it was put: it does not move on this step.
         en.moved_by_action = true;

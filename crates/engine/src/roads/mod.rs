@@ -2,11 +2,13 @@
 //! attached to a lane, and moving along the lanes through sections, roads and junctions.
 
 pub mod banking;
+pub mod junction_connections;
 pub mod lane_geometry;
 pub mod lane_kind;
 pub mod lane_position;
 pub mod lane_shape;
 pub mod lane_slope;
+pub mod lane_snap;
 pub mod locate;
 pub mod offroad;
 pub mod pose_memo;
