@@ -1,6 +1,6 @@
 //! TeleportAction: put the entity at a position (speed unchanged).
 
-use crate::positions::resolve;
+use crate::positions::resolve_with_route;
 use crate::roads::road_follow::wrap;
 use crate::sim::Sim;
 use openscenario::Position;
@@ -18,7 +18,8 @@ impl<'a> Sim<'a> {
         if let Some(note) = crate::route_position::esmini_deviation(pos, self.net, &self.entities) {
             self.warn_action(slot, format!("TeleportAction: {note}"));
         }
-        let placement = match resolve(pos, self.net, &self.entities) {
+        let own_route = self.entities.get(e).and_then(|en| en.route.clone());
+        let placement = match resolve_with_route(pos, self.net, &self.entities, own_route.as_deref()) {
             Ok(p) => p,
             Err(msg) => {
                 self.warn_action(slot, format!("TeleportAction: {msg}; the entity stays where it is"));

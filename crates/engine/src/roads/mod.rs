@@ -18,4 +18,4 @@ pub mod road_path;
 pub mod zero_width;
 
 pub use lane_position::LanePos;
-pub use road_follow::{move_along_route, move_along_route_drawing, move_along_s, MoveStatus};
+pub use road_follow::{move_along_road_s, move_along_route, move_along_route_drawing, move_along_s, MoveStatus};

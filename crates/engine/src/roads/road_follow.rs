@@ -48,7 +48,14 @@ pub fn move_along_s(net: &RoadNetwork, pos: &mut LanePos, dist: f64) -> MoveStat
 
 /// [`move_along_s`], taking at junctions the road an assigned route continues on.
 pub fn move_along_route(net: &RoadNetwork, pos: &mut LanePos, dist: f64, route: Option<&routing::Route>) -> MoveStatus {
-    move_along(net, pos, dist, route, None, false)
+    move_along(net, pos, dist, route, None, false, true)
+}
+
+/// Move `pos` by `ds` in road s (not a distance along its lane) in the direction it faces,
+/// taking at junctions the road `route` continues on: esmini's Position::MoveAlongS with
+/// actualDistance false, as a relative position moves a copy of its reference entity.
+pub fn move_along_road_s(net: &RoadNetwork, pos: &mut LanePos, ds: f64, route: Option<&routing::Route>) -> MoveStatus {
+    move_along(net, pos, ds, route, None, false, false)
 }
 
 /// [`move_along_route`] for an entity's own move by the default controller: a junction tie is
@@ -62,9 +69,10 @@ pub fn move_along_route_drawing(
     random: &mut EsminiRandom,
     sidewalks: bool,
 ) -> MoveStatus {
-    move_along(net, pos, dist, route, Some(random), sidewalks)
+    move_along(net, pos, dist, route, Some(random), sidewalks, true)
 }
 
+/// `along_lane`: `dist` is a distance along the lane (scaled to road s on curves), else road s.
 fn move_along(
     net: &RoadNetwork,
     pos: &mut LanePos,
@@ -72,13 +80,14 @@ fn move_along(
     route: Option<&routing::Route>,
     mut random: Option<&mut EsminiRandom>,
     sidewalks: bool,
+    along_lane: bool,
 ) -> MoveStatus {
     let Some(road) = net.roads.get(pos.road) else { return MoveStatus::EndOfRoad };
     let s0 = pos.s.clamp(0.0, road.length);
     let p = super::pose_memo::reference_pose(road, s0);
     let t = super::pose_memo::lane_borders_at(road, pos.lane_id, s0).map_or(0.0, |(a, b)| 0.5 * (a + b)) + pos.offset;
     // Distance along the lane to distance along the reference line.
-    let scale = (1.0 - p.curvature * t).max(0.1);
+    let scale = if along_lane { (1.0 - p.curvature * t).max(0.1) } else { 1.0 };
     let ds = pos.dir * dist / scale;
     let mut s = s0 + ds;
     let section_before = road.section_index_at(s0);
