@@ -24,36 +24,22 @@
 //! whole runs are compared too.
 
 mod common;
-use common::oracle::{assert_matches_esmini, run_fixture_scenario};
-use common::*;
-
-/// `entity` at `t` within 1 mm of esmini's (x, y) and 1 mrad of its heading.
-fn assert_at(run: &engine::Run, entity: &str, t: f64, x: f64, y: f64, h: f64) {
-    let s = at(run, entity, t);
-    let dh = (s.h - h).rem_euclid(std::f64::consts::TAU);
-    assert!(
-        close(s.x, x, 1e-3) && close(s.y, y, 1e-3) && dh.min(std::f64::consts::TAU - dh) < 1e-3,
-        "{entity} at {t} s: ({:.3}, {:.3}, {:.3}), esmini ({x}, {y}, {h})",
-        s.x,
-        s.y,
-        s.h
-    );
-}
+use common::oracle::{assert_esmini_pose_at, assert_matches_esmini, run_fixture_scenario};
 
 #[test]
 fn reversing_cars_take_the_arms_esmini_takes() {
     let run = run_fixture_scenario("reversing_through_junctions.xosc", 20.0);
     // Road 2's lane −1 has no connection into the junction: stuck at the road's start.
-    assert_at(&run, "NoConnection", 12.0, 120.0, -1.75, 0.0);
+    assert_esmini_pose_at(&run, "NoConnection", 12.0, 120.0, -1.75, 0.0);
     // Lane 1 of road 2 connects back through road 10 to road 1.
-    assert_at(&run, "BackThrough", 12.0, 70.0, 1.75, 0.0);
+    assert_esmini_pose_at(&run, "BackThrough", 12.0, 70.0, 1.75, 0.0);
     // Reversing from road 1 into the fork: lane −1 drives +s, so the straight arm.
-    assert_at(&run, "BackByLane", 12.0, 140.0, -1.75, std::f64::consts::PI);
+    assert_esmini_pose_at(&run, "BackByLane", 12.0, 140.0, -1.75, std::f64::consts::PI);
     // The same with a route onto road 3: the curve.
-    assert_at(&run, "BackOnRoute", 8.0, 117.301, 6.819, 4.061);
-    assert_at(&run, "BackOnRoute", 12.0, 121.75, 25.836, 4.712);
+    assert_esmini_pose_at(&run, "BackOnRoute", 8.0, 117.301, 6.819, 4.061);
+    assert_esmini_pose_at(&run, "BackOnRoute", 12.0, 121.75, 25.836, 4.712);
     // Driving forward against road 3's lane −1 towards the fork: no connection, stuck.
-    assert_at(&run, "ForwardAgainstRoute", 12.0, 121.75, 20.0, 4.712);
+    assert_esmini_pose_at(&run, "ForwardAgainstRoute", 12.0, 121.75, 20.0, 4.712);
     assert_matches_esmini("reversing_through_junctions.xosc", &run, 1e-3);
 }
 
@@ -63,15 +49,15 @@ fn junction_arms_include_esmini_counter_connections_in_its_order() {
     // Road 30 enters the junction only by counter connections: first the one towards road 20
     // (added while esmini checks road 20), then towards road 10. A route elsewhere takes the
     // first.
-    assert_at(&run, "FirstArm", 8.0, 107.745, -1.164, 2.422);
-    assert_at(&run, "FirstArm", 12.0, 88.463, 1.75, std::f64::consts::PI);
+    assert_esmini_pose_at(&run, "FirstArm", 8.0, 107.745, -1.164, 2.422);
+    assert_esmini_pose_at(&run, "FirstArm", 12.0, 88.463, 1.75, std::f64::consts::PI);
     // Without a route both arms turn 90°: esmini's seeded draw, in that order, picks road 10.
-    assert_at(&run, "TieDrawn", 12.0, 137.05, -1.75, 0.0);
-    assert_at(&run, "RoutedEast", 12.0, 137.05, -1.75, 0.0);
+    assert_esmini_pose_at(&run, "TieDrawn", 12.0, 137.05, -1.75, 0.0);
+    assert_esmini_pose_at(&run, "RoutedEast", 12.0, 137.05, -1.75, 0.0);
     // Reversing on road 10's lane −1 through the counter connection of road 101.
-    assert_at(&run, "BackIntoCounter", 12.0, 70.0, -1.75, 0.0);
+    assert_esmini_pose_at(&run, "BackIntoCounter", 12.0, 70.0, -1.75, 0.0);
     // Road 20's lane 1 has no connection at all.
-    assert_at(&run, "BackNoConnection", 12.0, 100.0, 1.75, std::f64::consts::PI);
+    assert_esmini_pose_at(&run, "BackNoConnection", 12.0, 100.0, 1.75, std::f64::consts::PI);
     assert_matches_esmini("junction_arms_one_way.xosc", &run, 1e-3);
 }
 
@@ -80,13 +66,13 @@ fn entities_beside_the_lanes_follow_esmini_snapped_lanes() {
     let run = run_fixture_scenario("parking_bay_world_positions.xosc", 20.0);
     // Backing out of the border beside the bay lane −2, attached to lane −2 (the nearest
     // driving lane) at its offset; where lane −2 ends it joins lane −1's centre.
-    assert_at(&run, "OutOfBay", 4.0, 117.85, -12.704, 1.302);
-    assert_at(&run, "OutOfBay", 12.0, 134.55, -16.32, 0.802);
-    assert_at(&run, "BayLane", 8.0, 133.19, -14.979, 5.525);
-    assert_at(&run, "Straight", 12.0, 84.0, -9.5, 4.683);
+    assert_esmini_pose_at(&run, "OutOfBay", 4.0, 117.85, -12.704, 1.302);
+    assert_esmini_pose_at(&run, "OutOfBay", 12.0, 134.55, -16.32, 0.802);
+    assert_esmini_pose_at(&run, "BayLane", 8.0, 133.19, -14.979, 5.525);
+    assert_esmini_pose_at(&run, "Straight", 12.0, 84.0, -9.5, 4.683);
     // The pedestrian put on the sidewalk is attached to lane −2 too (a teleport snaps to
     // driving lanes); when lane −2 ends its own types take it to the sidewalk's centre.
-    assert_at(&run, "Walker", 8.0, 119.217, -15.686, 5.922);
-    assert_at(&run, "Walker", 12.0, 124.564, -18.431, 5.622);
+    assert_esmini_pose_at(&run, "Walker", 8.0, 119.217, -15.686, 5.922);
+    assert_esmini_pose_at(&run, "Walker", 12.0, 124.564, -18.431, 5.622);
     assert_matches_esmini("parking_bay_world_positions.xosc", &run, 1e-3);
 }

@@ -11,15 +11,8 @@
 //! runs here the whole runs are compared too.
 
 mod common;
-use common::oracle::{assert_matches_esmini, run_fixture_scenario};
-use common::*;
+use common::oracle::{assert_esmini_pose_at, assert_matches_esmini, run_fixture_scenario};
 use std::f64::consts::PI;
-
-fn assert_pose(run: &engine::Run, entity: &str, x: f64, y: f64, h: f64) {
-    let s = at(run, entity, 0.0);
-    let dh = (s.h - h).rem_euclid(2.0 * PI);
-    assert!(close(s.x, x, 1e-3) && close(s.y, y, 1e-3) && dh.min(2.0 * PI - dh) < 1e-3, "{entity}: ({}, {}, {}), esmini ({x}, {y}, {h})", s.x, s.y, s.h);
-}
 
 #[test]
 fn positions_on_a_route_against_the_lanes_face_as_esmini_faces_them() {
@@ -27,27 +20,27 @@ fn positions_on_a_route_against_the_lanes_face_as_esmini_faces_them() {
     // Route Back runs road 2 → 10 → 1 on lane 1 (against s). Lane 1 without an orientation
     // faces −s (π), lane −1 faces +s, wherever the route goes; the pedestrians 2 m ahead and 3 m
     // to the left of them land on the side the heading gives.
-    assert_pose(&run, "Obst0", 150.0, 1.75, PI);
-    assert_pose(&run, "Ped0", 148.0, -1.25, PI);
-    assert_pose(&run, "Obst1", 150.0, -1.75, 0.0);
-    assert_pose(&run, "Ped1", 152.0, 1.25, 0.0);
-    assert_pose(&run, "Obst2", 110.0, -1.35, 0.0);
+    assert_esmini_pose_at(&run, "Obst0", 0.0, 150.0, 1.75, PI);
+    assert_esmini_pose_at(&run, "Ped0", 0.0, 148.0, -1.25, PI);
+    assert_esmini_pose_at(&run, "Obst1", 0.0, 150.0, -1.75, 0.0);
+    assert_esmini_pose_at(&run, "Ped1", 0.0, 152.0, 1.25, 0.0);
+    assert_esmini_pose_at(&run, "Obst2", 0.0, 110.0, -1.35, 0.0);
     // With an orientation its h is relative, plus π on lane 1; "absolute" is read as relative.
-    assert_pose(&run, "Obst3", 90.0, 1.75, PI + 0.3);
-    assert_pose(&run, "Ped3", 87.685, 5.849, PI + 0.3);
-    assert_pose(&run, "Obst4", 90.0, -1.75, 0.3);
-    assert_pose(&run, "Ped4", 92.315, -5.849, 0.3);
+    assert_esmini_pose_at(&run, "Obst3", 0.0, 90.0, 1.75, PI + 0.3);
+    assert_esmini_pose_at(&run, "Ped3", 0.0, 87.685, 5.849, PI + 0.3);
+    assert_esmini_pose_at(&run, "Obst4", 0.0, 90.0, -1.75, 0.3);
+    assert_esmini_pose_at(&run, "Ped4", 0.0, 92.315, -5.849, 0.3);
     // FromRoadCoordinates: t = −2.6 is −2; the heading is the road's, turned by h.
-    assert_pose(&run, "Obst5", 125.0, -2.0, 0.0);
-    assert_pose(&run, "Obst6", 160.0, 2.0, 0.5);
+    assert_esmini_pose_at(&run, "Obst5", 0.0, 125.0, -2.0, 0.0);
+    assert_esmini_pose_at(&run, "Obst6", 0.0, 160.0, 2.0, 0.5);
     // Two waypoints on road 1 from s 80 to 20: pathS 30 is s 50; pathS 75 lies beyond the 60 m
     // route, so the position is the first waypoint.
-    assert_pose(&run, "Obst7", 50.0, -1.75, 0.0);
-    assert_pose(&run, "Obst8", 50.0, 1.75, PI);
-    assert_pose(&run, "Obst9", 80.0, -1.75, 0.0);
+    assert_esmini_pose_at(&run, "Obst7", 0.0, 50.0, -1.75, 0.0);
+    assert_esmini_pose_at(&run, "Obst8", 0.0, 50.0, 1.75, PI);
+    assert_esmini_pose_at(&run, "Obst9", 0.0, 80.0, -1.75, 0.0);
     // Along the lanes through the junction's curve onto road 3: lane 1 still faces −s.
-    assert_pose(&run, "Obst10", 108.750, 3.984, 3.642);
-    assert_pose(&run, "Obst11", 114.826, 4.086, 3.892);
+    assert_esmini_pose_at(&run, "Obst10", 0.0, 108.750, 3.984, 3.642);
+    assert_esmini_pose_at(&run, "Obst11", 0.0, 114.826, 4.086, 3.892);
     let notes: Vec<&str> = run.warnings.iter().map(|w| w.message.as_str()).collect();
     assert!(notes.iter().any(|m| m.contains("t = -2.6 is read as -2")), "{notes:?}");
     assert!(notes.iter().any(|m| m.contains("pathS = 75 lies outside route `SameRoadBack`")), "{notes:?}");
@@ -62,12 +55,12 @@ fn a_route_across_roads_of_opposite_direction_keeps_the_lane_id_as_written() {
     // facing road 1's +s (π, against the route); lane 1 lies at y = −1.5 facing 0, with or
     // without an orientation of h 0. FromRoadCoordinates t 1 at pathS 80 (road 1, s 170) is
     // y = −1, facing road 1's +s.
-    assert_pose(&run, "Obst0", 180.0, -1.5, 0.0);
-    assert_pose(&run, "Obst1", 250.0, 1.5, PI);
-    assert_pose(&run, "Ped1", 248.0, -1.5, PI);
-    assert_pose(&run, "Obst2", 250.0, -1.5, 0.0);
-    assert_pose(&run, "Ped2", 252.0, 1.5, 0.0);
-    assert_pose(&run, "Obst3", 250.0, -1.5, 0.0);
-    assert_pose(&run, "Obst4", 230.0, -1.0, PI);
+    assert_esmini_pose_at(&run, "Obst0", 0.0, 180.0, -1.5, 0.0);
+    assert_esmini_pose_at(&run, "Obst1", 0.0, 250.0, 1.5, PI);
+    assert_esmini_pose_at(&run, "Ped1", 0.0, 248.0, -1.5, PI);
+    assert_esmini_pose_at(&run, "Obst2", 0.0, 250.0, -1.5, 0.0);
+    assert_esmini_pose_at(&run, "Ped2", 0.0, 252.0, 1.5, 0.0);
+    assert_esmini_pose_at(&run, "Obst3", 0.0, 250.0, -1.5, 0.0);
+    assert_esmini_pose_at(&run, "Obst4", 0.0, 230.0, -1.0, PI);
     assert_matches_esmini("route_position_across_opposite_roads.xosc", &run, 1e-3);
 }

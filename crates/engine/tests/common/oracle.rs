@@ -82,31 +82,66 @@ fn parse_esmini_csv(text: &str) -> Vec<OracleRow> {
     out
 }
 
-/// The worst distance (m) between the engine's and esmini's positions of any entity at any
-/// time both have, with where it was; and the last time of each.
-pub fn worst_against_esmini(run: &Run, rows: &[OracleRow]) -> (f64, String, f64, f64) {
-    let mut worst = (0.0, String::new());
-    let mut last = 0.0f64;
+/// How far the engine's run is from esmini's rows.
+pub struct Agreement {
+    /// The worst distance (m) between positions of any entity at any time both have, and where.
+    pub worst: f64,
+    pub worst_at: String,
+    /// The worst heading difference (rad), and where.
+    pub worst_heading: f64,
+    pub worst_heading_at: String,
+    /// The last time of each run.
+    pub ours_end: f64,
+    pub esmini_end: f64,
+}
+
+/// Compare the engine's run with esmini's rows.
+pub fn against_esmini(run: &Run, rows: &[OracleRow]) -> Agreement {
+    let mut a =
+        Agreement { worst: 0.0, worst_at: String::new(), worst_heading: 0.0, worst_heading_at: String::new(), ours_end: run.trace.end_time(), esmini_end: 0.0 };
     for r in rows {
-        last = last.max(r.time);
+        a.esmini_end = a.esmini_end.max(r.time);
         let Some(e) = run.trace.entities.iter().find(|e| e.name == r.entity) else {
-            return (f64::INFINITY, format!("{} missing", r.entity), 0.0, 0.0);
+            a.worst = f64::INFINITY;
+            a.worst_at = format!("{} missing", r.entity);
+            return a;
         };
         let k = ((r.time - run.trace.start) / run.trace.step).round() as usize;
         let Some(Some(s)) = e.samples.get(k) else { continue };
         let d = (s.x - r.x).hypot(s.y - r.y);
-        if d > worst.0 {
-            worst = (d, format!("{} at {:.2} s: ours ({:.3}, {:.3}) esmini ({:.3}, {:.3})", r.entity, r.time, s.x, s.y, r.x, r.y));
+        if d > a.worst {
+            a.worst = d;
+            a.worst_at = format!("{} at {:.2} s: ours ({:.3}, {:.3}) esmini ({:.3}, {:.3})", r.entity, r.time, s.x, s.y, r.x, r.y);
+        }
+        let dh = (s.h - r.h).rem_euclid(std::f64::consts::TAU);
+        let dh = dh.min(std::f64::consts::TAU - dh);
+        if dh > a.worst_heading {
+            a.worst_heading = dh;
+            a.worst_heading_at = format!("{} at {:.2} s: ours {:.4} esmini {:.4}", r.entity, r.time, s.h, r.h);
         }
     }
-    (worst.0, worst.1, run.trace.end_time(), last)
+    a
 }
 
-/// Assert that the engine's run of fixture `name` is esmini's within `tol` m and one step of
-/// end time, when esmini can run here.
+/// Assert that the engine's run of fixture `name` is esmini's within `tol` m, 0.01 rad of
+/// heading and one step of end time, when esmini can run here.
 pub fn assert_matches_esmini(name: &str, run: &Run, tol: f64) {
     let Some(rows) = esmini_rows(name) else { return };
-    let (worst, at, ours_end, esmini_end) = worst_against_esmini(run, &rows);
-    assert!(worst <= tol, "{name}: {worst:.3} m from esmini ({at})");
-    assert!((ours_end - esmini_end).abs() <= 0.011, "{name}: ends at {ours_end:.2} s, esmini at {esmini_end:.2} s");
+    let a = against_esmini(run, &rows);
+    assert!(a.worst <= tol, "{name}: {:.3} m from esmini ({})", a.worst, a.worst_at);
+    assert!(a.worst_heading <= 0.01, "{name}: heading {:.4} rad from esmini's ({})", a.worst_heading, a.worst_heading_at);
+    assert!((a.ours_end - a.esmini_end).abs() <= 0.011, "{name}: ends at {:.2} s, esmini at {:.2} s", a.ours_end, a.esmini_end);
+}
+
+/// Assert that `entity` is at esmini's pose (x, y, heading) at `t`: within 1 mm and 1 mrad.
+pub fn assert_esmini_pose_at(run: &Run, entity: &str, t: f64, x: f64, y: f64, h: f64) {
+    let s = super::at(run, entity, t);
+    let dh = (s.h - h).rem_euclid(std::f64::consts::TAU);
+    assert!(
+        super::close(s.x, x, 1e-3) && super::close(s.y, y, 1e-3) && dh.min(std::f64::consts::TAU - dh) < 1e-3,
+        "{entity} at {t} s: ({:.4}, {:.4}, {:.4}), esmini ({x}, {y}, {h})",
+        s.x,
+        s.y,
+        s.h
+    );
 }
