@@ -193,7 +193,7 @@ fn junction_arm_on_route(
     });
     let leads_to_target = |c: &&LaneRef| target.is_some() && far_end(net, c.road, here.road) == target;
     let on_route = |c: &&LaneRef| route.legs().iter().any(|l| l.road == c.road);
-    let pick = cands.iter().filter(leads_to_target).find(on_route).or_else(|| cands.iter().filter(leads_to_target).last()).or(cands.first())?;
+    let pick = cands.iter().filter(leads_to_target).find(on_route).or_else(|| cands.iter().rfind(leads_to_target)).or(cands.first())?;
     let contact = net.roads_at(here.road, end).into_iter().find(|e| e.road == pick.road).map_or(ContactPoint::Start, |e| e.contact);
     Some((*pick, contact))
 }
