@@ -75,12 +75,13 @@ pub fn resolve_with_route(
             let net = net.ok_or("a RoadPosition needs a road network")?;
             let road = net.road_index(road_id).ok_or_else(|| format!("unknown road `{road_id}`"))?;
             let mut p = road_placement(net, road, *s, *t, orientation.as_ref())?;
-            // esmini turns a RoadPosition's relative heading from the road's reference
-            // direction on either side of the road (a LanePosition's from the lane's direction).
-            if let Some(Orientation { reference, h: Some(h), .. }) = orientation {
-                if *reference != Some(ReferenceContext::Absolute) {
-                    turn_from_road_direction(net, &mut p, *h);
-                }
+            // esmini's OSCPositionRoad: the heading is relative to the road's reference direction
+            // on either side of the road (a LanePosition's to the lane's direction) unless an
+            // absolute orientation gives h; without an orientation (or without h) it is the
+            // road's direction itself, so on a lane driving against s the entity faces +s.
+            match orientation {
+                Some(Orientation { reference: Some(ReferenceContext::Absolute), h: Some(_), .. }) => {}
+                o => turn_from_road_direction(net, &mut p, o.as_ref().and_then(|o| o.h).unwrap_or(0.0)),
             }
             Ok(p)
         }
