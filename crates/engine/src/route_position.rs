@@ -18,10 +18,21 @@ fn strategy(s: RouteStrategy) -> Strategy {
     }
 }
 
-/// A waypoint for a placement on a lane: its road, lane, s and the way it faces.
-pub fn waypoint_of(p: &Placement) -> Option<Waypoint> {
-    let lp = p.lane?;
-    Some(Waypoint { road: lp.road, lane: lp.lane_id, s: lp.s, along_s: Some(lp.dir > 0.0) })
+/// The waypoint of `pos`, resolved as placement `p`: its road, lane, s and the way it faces.
+/// A placement given in the world (a WorldPosition, a position relative to an entity) is
+/// attached to a road as esmini attaches every waypoint (Position::SetInertiaPos →
+/// XYZ2TrackPos): the lane of the driving types containing the point, else the nearest one
+/// (`lane_snap`); it faces as its heading says when the position gives one, else the lane's
+/// driving direction (Route::AddWaypoint: a first waypoint without a heading takes it).
+pub fn waypoint_of(pos: &openscenario::Position, p: &Placement, net: &RoadNetwork) -> Option<Waypoint> {
+    if let Some(lp) = p.lane {
+        return Some(Waypoint { road: lp.road, lane: lp.lane_id, s: lp.s, along_s: Some(lp.dir > 0.0) });
+    }
+    let at = crate::roads::locate::world_to_lane(net, p.x, p.y, None)?;
+    let road = net.roads.get(at.road)?;
+    let lane = crate::roads::lane_snap::snap(road, at.section, at.s, at.t, false).map_or(at.lane_id, |(id, _)| id);
+    let along_s = trajectory::gives_heading(pos).then(|| crate::roads::road_follow::wrap(p.h - at.heading).abs() <= std::f64::consts::FRAC_PI_2 + 1e-9);
+    Some(Waypoint { road: at.road, lane, s: at.s, along_s })
 }
 
 /// Plan `route`; its waypoints are resolved against `entities` as they are now.
@@ -30,7 +41,7 @@ pub fn plan_route(route: &Route, net: &RoadNetwork, entities: &[Entity]) -> Resu
     let mut strategies = Vec::with_capacity(route.waypoints.len());
     for (i, w) in route.waypoints.iter().enumerate() {
         let p = resolve(&w.position, Some(net), entities).map_err(|e| format!("waypoint {i}: {e}"))?;
-        let wp = waypoint_of(&p).ok_or_else(|| format!("waypoint {i} is not on a lane"))?;
+        let wp = waypoint_of(&w.position, &p, net).ok_or_else(|| format!("waypoint {i} is not on a road"))?;
         wps.push(wp);
         strategies.push(strategy(w.strategy));
     }
@@ -168,6 +179,6 @@ fn lane_drives_against_s(net: &RoadNetwork, road: usize, lane: i32) -> bool {
 fn first_waypoint(route: &Route, net: &RoadNetwork, entities: &[Entity]) -> Result<(usize, f64), PositionError> {
     let w = route.waypoints.first().ok_or_else(|| format!("route `{}` has no waypoint", route.name))?;
     let p = resolve(&w.position, Some(net), entities).map_err(|e| format!("route `{}`, waypoint 0: {e}", route.name))?;
-    let wp = waypoint_of(&p).ok_or_else(|| format!("route `{}`: waypoint 0 is not on a lane", route.name))?;
+    let wp = waypoint_of(&w.position, &p, net).ok_or_else(|| format!("route `{}`: waypoint 0 is not on a road", route.name))?;
     Ok((wp.road, wp.s))
 }
