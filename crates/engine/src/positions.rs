@@ -28,7 +28,7 @@ pub type PositionError = String;
 
 /// Resolve `pos`; `entities` gives the reference entities of relative positions.
 pub fn resolve(pos: &Position, net: Option<&RoadNetwork>, entities: &[Entity]) -> Result<Placement, PositionError> {
-    resolve_with_route(pos, net, entities, None)
+    resolve_with_route(pos, net, entities, None, None)
 }
 
 /// [`resolve`] for a position an action puts its entity at: a relative road or lane position
@@ -39,6 +39,7 @@ pub fn resolve_with_route(
     net: Option<&RoadNetwork>,
     entities: &[Entity],
     own_route: Option<&routing::Route>,
+    random: Option<&mut crate::esmini_random::EsminiRandom>,
 ) -> Result<Placement, PositionError> {
     let find = |name: &str| entities.iter().find(|e| e.name == name).ok_or_else(|| format!("unknown entity `{name}`"));
     match pos {
@@ -87,12 +88,12 @@ pub fn resolve_with_route(
         }
         Position::RelativeRoad { entity, ds, dt, orientation } => {
             let net = net.ok_or("a RelativeRoadPosition needs a road network")?;
-            crate::relative_position::relative_road(net, find(entity)?, *ds, *dt, orientation.as_ref(), own_route)
+            crate::relative_position::relative_road(net, find(entity)?, *ds, *dt, orientation.as_ref(), own_route, random)
         }
         Position::RelativeLane { entity, d_lane, ds, ds_lane, offset, orientation } => {
             let net = net.ok_or("a RelativeLanePosition needs a road network")?;
             let along = crate::relative_position::Along::of(*ds, *ds_lane);
-            crate::relative_position::relative_lane(net, find(entity)?, *d_lane, along, *offset, orientation.as_ref(), own_route)
+            crate::relative_position::relative_lane(net, find(entity)?, *d_lane, along, *offset, orientation.as_ref(), own_route, random)
         }
         Position::Route { route, orientation, in_route } => crate::route_position::route_placement(route, in_route, orientation.as_ref(), net, entities),
         Position::Geo { .. } => Err("GeoPosition is not supported".into()),

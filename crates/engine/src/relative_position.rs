@@ -3,12 +3,14 @@
 //! the road network — across lane sections, roads and junctions, not clamped to its road —
 //! the way Position::MoveAlongS moves it (road s, not distance; `ds` along the road's s axis,
 //! `dsLane` along the reference lane's driving direction; at a junction the route's arm, or
-//! the arm turning least from the lane's driving direction). The route is the entity's own
+//! the arm turning least from the lane's driving direction, a tie drawn from the run's seeded
+//! generator when a teleport resolves the position, as esmini's MoveToConnectingRoad). The route is the entity's own
 //! when an action puts it there, else the reference entity's. The result is on the road the
 //! copy reached: a lane position keeps the reference entity's lane id plus `dLane` (not the id
 //! of the lane the copy followed onto that road), a road position the copy's t plus `dt`.
 
 use crate::entities::Entity;
+use crate::esmini_random::EsminiRandom;
 use crate::positions::{place, relative_heading, road_placement, step_lane, turn_from_road_direction, Placement, PositionError};
 use crate::roads::lane_geometry::{lane_borders, lane_center_t};
 use crate::roads::lane_position::LanePos;
@@ -36,11 +38,11 @@ impl Along {
 }
 
 /// The reference entity's lane position moved `ds` in road s (+: along +s).
-fn moved(net: &RoadNetwork, e: &Entity, ds: f64, own_route: Option<&routing::Route>) -> Result<LanePos, PositionError> {
+fn moved(net: &RoadNetwork, e: &Entity, ds: f64, own_route: Option<&routing::Route>, random: Option<&mut EsminiRandom>) -> Result<LanePos, PositionError> {
     let mut lp = e.lane.ok_or_else(|| format!("entity `{}` is not on a road", e.name))?;
     lp.dir = 1.0;
     let route = own_route.or(e.route.as_deref());
-    crate::roads::move_along_road_s(net, &mut lp, ds, route);
+    crate::roads::move_along_road_s(net, &mut lp, ds, route, random);
     Ok(lp)
 }
 
@@ -52,8 +54,9 @@ pub fn relative_road(
     dt: f64,
     orientation: Option<&Orientation>,
     own_route: Option<&routing::Route>,
+    random: Option<&mut EsminiRandom>,
 ) -> Result<Placement, PositionError> {
-    let lp = moved(net, e, ds, own_route)?;
+    let lp = moved(net, e, ds, own_route, random)?;
     let road = net.roads.get(lp.road).ok_or("reference road missing")?;
     let t = lane_center_t(road, lp.lane_id, lp.s).unwrap_or(0.0) + lp.offset;
     let mut p = road_placement(net, lp.road, lp.s, t + dt, orientation)?;
@@ -78,6 +81,7 @@ pub fn relative_lane(
     offset: f64,
     orientation: Option<&Orientation>,
     own_route: Option<&routing::Route>,
+    random: Option<&mut EsminiRandom>,
 ) -> Result<Placement, PositionError> {
     let reference = e.lane.ok_or_else(|| format!("entity `{}` is not on a road", e.name))?;
     let ref_road = net.roads.get(reference.road).ok_or("reference road missing")?;
@@ -89,7 +93,7 @@ pub fn relative_lane(
             (d * if ref_road.rule == TrafficRule::LeftHand { sign } else { -sign }, true)
         }
     };
-    let lp = moved(net, e, ds, own_route)?;
+    let lp = moved(net, e, ds, own_route, random)?;
     let (lane_id, offset) = if along_lane {
         let forward = reference.dir > 0.0;
         let as_road = match ref_road.rule {

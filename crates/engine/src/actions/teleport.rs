@@ -19,7 +19,7 @@ impl<'a> Sim<'a> {
             self.warn_action(slot, format!("TeleportAction: {note}"));
         }
         let own_route = self.entities.get(e).and_then(|en| en.route.clone());
-        let placement = match resolve_with_route(pos, self.net, &self.entities, own_route.as_deref()) {
+        let placement = match resolve_with_route(pos, self.net, &self.entities, own_route.as_deref(), Some(&mut self.random)) {
             Ok(p) => p,
             Err(msg) => {
                 self.warn_action(slot, format!("TeleportAction: {msg}; the entity stays where it is"));

@@ -54,8 +54,10 @@ pub fn move_along_route(net: &RoadNetwork, pos: &mut LanePos, dist: f64, route: 
 /// Move `pos` by `ds` in road s (not a distance along its lane) in the direction it faces,
 /// taking at junctions the road `route` continues on: esmini's Position::MoveAlongS with
 /// actualDistance false, as a relative position moves a copy of its reference entity.
-pub fn move_along_road_s(net: &RoadNetwork, pos: &mut LanePos, ds: f64, route: Option<&routing::Route>) -> MoveStatus {
-    move_along(net, pos, ds, route, None, false, false)
+/// A junction tie is broken by a draw from `random` when given (esmini's seeded draw), else
+/// the first of the tied arms.
+pub fn move_along_road_s(net: &RoadNetwork, pos: &mut LanePos, ds: f64, route: Option<&routing::Route>, random: Option<&mut EsminiRandom>) -> MoveStatus {
+    move_along(net, pos, ds, route, random, false, false)
 }
 
 /// [`move_along_route`] for an entity's own move by the default controller: a junction tie is
