@@ -156,11 +156,14 @@ pub(crate) fn place(
     let mut lp = LanePos { road, lane_id, s, offset, dir: if along { 1.0 } else { -1.0 } };
     let pose = lp.pose(net).ok_or("lane missing")?;
     let facing = lp.facing_heading(&pose);
+    // A relative heading also turns by the lane centre's drift atan(dt/ds) (esmini's
+    // EvaluateHPR: h_road + h_relative + GetHOffset), as a lane follower's heading does.
+    let drift = lane_drift(net, road, lane_id, s);
     let h = match o {
         Some(Orientation { reference: Some(ReferenceContext::Absolute), h: Some(h), .. }) => *h,
         // A relative heading is taken from the road's reference direction, as esmini does.
-        Some(Orientation { h: Some(h), .. }) => pose.road_heading + h + if along { 0.0 } else { PI },
-        _ => facing,
+        Some(Orientation { h: Some(h), .. }) => pose.road_heading + h + if along { 0.0 } else { PI } + drift,
+        _ => facing + drift,
     };
     // Facing the other way than the lane's direction makes the entity drive against s.
     let rel = wrap(h - pose.road_heading);
@@ -168,11 +171,18 @@ pub(crate) fn place(
     Ok(Placement { x: pose.x, y: pose.y, z: Some(pose.z), h, lane: Some(lp) })
 }
 
-/// Face `p` at `h` from its road's reference direction; the lane direction it drives follows.
+/// The drift atan(dt/ds) of the centre of lane `lane_id` of road `road` at `s` (esmini's
+/// Position::GetHOffset; 0 for a road that does not exist).
+pub(crate) fn lane_drift(net: &RoadNetwork, road: usize, lane_id: i32, s: f64) -> f64 {
+    net.roads.get(road).map_or(0.0, |r| crate::roads::lane_slope::drift_angle(r, r.section_index_at(s), lane_id, s))
+}
+
+/// Face `p` at `h` from its road's reference direction (plus the lane's drift, as esmini's
+/// relative headings); the lane direction it drives follows.
 pub(crate) fn turn_from_road_direction(net: &RoadNetwork, p: &mut Placement, h: f64) {
     let Some(lp) = p.lane.as_mut() else { return };
     let Some(pose) = lp.pose(net) else { return };
-    p.h = pose.road_heading + h;
+    p.h = pose.road_heading + h + lane_drift(net, lp.road, lp.lane_id, lp.s);
     lp.dir = if wrap(h).abs() <= std::f64::consts::FRAC_PI_2 + 1e-9 { 1.0 } else { -1.0 };
 }
 

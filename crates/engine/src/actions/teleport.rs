@@ -32,7 +32,9 @@ impl<'a> Sim<'a> {
         match (placement.lane, net) {
             (Some(lp), Some(net)) => {
                 if let Some(pose) = lp.pose(net) {
-                    en.yaw_offset = wrap(placement.h - lp.facing_heading(&pose));
+                    // The heading relative to the lane leaves out the lane's drift, which moving adds
+                    // back (esmini keeps h_relative without GetHOffset).
+                    en.yaw_offset = wrap(placement.h - lp.facing_heading(&pose) - crate::positions::lane_drift(net, lp.road, lp.lane_id, lp.s));
                 }
                 en.set_lane_pos(net, lp);
                 en.h = crate::entities::wrap_2pi(placement.h);
