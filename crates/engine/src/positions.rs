@@ -80,10 +80,7 @@ pub fn resolve_with_route(
             // on either side of the road (a LanePosition's to the lane's direction) unless an
             // absolute orientation gives h; without an orientation (or without h) it is the
             // road's direction itself, so on a lane driving against s the entity faces +s.
-            match orientation {
-                Some(Orientation { reference: Some(ReferenceContext::Absolute), h: Some(_), .. }) => {}
-                o => turn_from_road_direction(net, &mut p, o.as_ref().and_then(|o| o.h).unwrap_or(0.0)),
-            }
+            face_along_road(net, &mut p, orientation.as_ref());
             Ok(p)
         }
         Position::RelativeRoad { entity, ds, dt, orientation } => {
@@ -169,6 +166,15 @@ pub(crate) fn place(
     let rel = wrap(h - pose.road_heading);
     lp.dir = if rel.abs() <= std::f64::consts::FRAC_PI_2 + 1e-9 { 1.0 } else { -1.0 };
     Ok(Placement { x: pose.x, y: pose.y, z: Some(pose.z), h, lane: Some(lp) })
+}
+
+/// Face `p` as esmini faces a road position (OSCPositionRoad, a RELATIVE_ROAD position): an
+/// absolute h as it is, else relative to the road's reference direction (h, or 0 without one).
+pub(crate) fn face_along_road(net: &RoadNetwork, p: &mut Placement, orientation: Option<&Orientation>) {
+    match orientation {
+        Some(Orientation { reference: Some(ReferenceContext::Absolute), h: Some(_), .. }) => {}
+        o => turn_from_road_direction(net, p, o.and_then(|o| o.h).unwrap_or(0.0)),
+    }
 }
 
 /// The drift atan(dt/ds) of the centre of lane `lane_id` of road `road` at `s` (esmini's

@@ -11,11 +11,11 @@
 
 use crate::entities::Entity;
 use crate::esmini_random::EsminiRandom;
-use crate::positions::{place, relative_heading, road_placement, step_lane, turn_from_road_direction, Placement, PositionError};
+use crate::positions::{face_along_road, place, relative_heading, road_placement, step_lane, Placement, PositionError};
 use crate::roads::lane_geometry::{lane_borders, lane_center_t};
 use crate::roads::lane_position::LanePos;
 use opendrive::{drives_along_s, RoadNetwork, TrafficRule};
-use openscenario::{Orientation, ReferenceContext};
+use openscenario::Orientation;
 
 /// How a RelativeLanePosition measures its distance.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -63,9 +63,7 @@ pub fn relative_road(
     // The heading is relative to the road's reference direction — along +s without an
     // orientation — whichever side of the road the entity lands on; only an absolute
     // orientation is kept as is.
-    if !matches!(orientation, Some(Orientation { reference: Some(ReferenceContext::Absolute), h: Some(_), .. })) {
-        turn_from_road_direction(net, &mut p, orientation.and_then(|o| o.h).unwrap_or(0.0));
-    }
+    face_along_road(net, &mut p, orientation);
     Ok(p)
 }
 

@@ -286,18 +286,8 @@ fn esmini_clock(origin: f64, dt: f64, time: f64) -> f64 {
 
 /// Whether a polyline vertex of `traj` gives a heading of its own.
 fn explicit_headings(traj: &Trajectory) -> bool {
-    use openscenario::Position as P;
     match &traj.shape {
-        openscenario::Shape::Polyline(vs) => vs.iter().any(|v| match &v.position {
-            P::World { h, .. } => h.is_some(),
-            P::RelativeWorld { orientation, .. }
-            | P::RelativeObject { orientation, .. }
-            | P::Road { orientation, .. }
-            | P::RelativeRoad { orientation, .. }
-            | P::Lane { orientation, .. }
-            | P::RelativeLane { orientation, .. } => orientation.is_some_and(|o| o.h.is_some()),
-            _ => false,
-        }),
+        openscenario::Shape::Polyline(vs) => vs.iter().any(|v| trajectory::gives_heading(&v.position)),
         _ => false,
     }
 }
