@@ -19,7 +19,7 @@ use openscenario::Orientation;
 
 /// How a RelativeLanePosition measures its distance.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Along {
+pub(crate) enum Along {
     /// `ds`: along the road's s axis.
     Road(f64),
     /// `dsLane`: along the reference lane's driving direction.
@@ -28,7 +28,7 @@ pub enum Along {
 
 impl Along {
     /// From the attributes as written (`ds` wins, as in esmini's reader).
-    pub fn of(ds: Option<f64>, ds_lane: Option<f64>) -> Along {
+    pub(crate) fn of(ds: Option<f64>, ds_lane: Option<f64>) -> Along {
         match (ds, ds_lane) {
             (Some(d), _) => Along::Road(d),
             (None, Some(d)) => Along::Lane(d),
@@ -47,7 +47,7 @@ fn moved(net: &RoadNetwork, e: &Entity, ds: f64, own_route: Option<&routing::Rou
 }
 
 /// esmini's RELATIVE_ROAD: the moved copy's t plus `dt`, heading from the road's direction.
-pub fn relative_road(
+pub(crate) fn relative_road(
     net: &RoadNetwork,
     e: &Entity,
     ds: f64,
@@ -71,7 +71,10 @@ pub fn relative_road(
 /// direction, and dLane and the offset count to the left of it — unless the reference entity
 /// faces along its lane's driving direction on the rule's side of the road (right-hand
 /// traffic: a right lane, facing +s), when they count as with `ds` (towards higher lane ids).
-pub fn relative_lane(
+// The attributes of esmini's RelativeLanePosition, plus the route and the generator its move
+// through a junction may use: grouping them would only rename them.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn relative_lane(
     net: &RoadNetwork,
     e: &Entity,
     d_lane: i32,

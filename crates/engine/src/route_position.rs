@@ -24,7 +24,7 @@ fn strategy(s: RouteStrategy) -> Strategy {
 /// XYZ2TrackPos): the lane of the driving types containing the point, else the nearest one
 /// (`lane_snap`); it faces as its heading says when the position gives one, else the lane's
 /// driving direction (Route::AddWaypoint: a first waypoint without a heading takes it).
-pub fn waypoint_of(pos: &openscenario::Position, p: &Placement, net: &RoadNetwork) -> Option<Waypoint> {
+pub(crate) fn waypoint_of(pos: &openscenario::Position, p: &Placement, net: &RoadNetwork) -> Option<Waypoint> {
     if let Some(lp) = p.lane {
         return Some(Waypoint { road: lp.road, lane: lp.lane_id, s: lp.s, along_s: Some(lp.dir > 0.0) });
     }
@@ -36,7 +36,7 @@ pub fn waypoint_of(pos: &openscenario::Position, p: &Placement, net: &RoadNetwor
 }
 
 /// Plan `route`; its waypoints are resolved against `entities` as they are now.
-pub fn plan_route(route: &Route, net: &RoadNetwork, entities: &[Entity]) -> Result<routing::Route, String> {
+pub(crate) fn plan_route(route: &Route, net: &RoadNetwork, entities: &[Entity]) -> Result<routing::Route, String> {
     let mut wps = Vec::with_capacity(route.waypoints.len());
     let mut strategies = Vec::with_capacity(route.waypoints.len());
     for (i, w) in route.waypoints.iter().enumerate() {
@@ -76,7 +76,7 @@ pub fn plan_route(route: &Route, net: &RoadNetwork, entities: &[Entity]) -> Resu
 ///   origin, turned by the angle above taken on lane 0 (Position::SetLanePosMode fails before
 ///   Track2XYZ and before it sets the lane id);
 /// - FromCurrentEntity is not implemented by esmini: its position is the world origin, heading 0.
-pub fn route_placement(
+pub(crate) fn route_placement(
     route: &Route,
     in_route: &InRoutePosition,
     orientation: Option<&Orientation>,
@@ -88,7 +88,7 @@ pub fn route_placement(
 
 /// What esmini 3.6 does with a RoutePosition where it differs from the standard (see
 /// `route_placement`), to be said where an action uses it.
-pub fn esmini_deviation(pos: &openscenario::Position, net: Option<&RoadNetwork>, entities: &[Entity]) -> Option<String> {
+pub(crate) fn esmini_deviation(pos: &openscenario::Position, net: Option<&RoadNetwork>, entities: &[Entity]) -> Option<String> {
     let openscenario::Position::Route { route, in_route, orientation } = pos else { return None };
     resolve_route(route, in_route, orientation.as_ref(), net, entities).ok().and_then(|(_, note)| note)
 }

@@ -46,37 +46,37 @@ pub(crate) struct Doc {
 }
 
 impl Elem {
-    pub fn attr(&self, name: &str) -> Option<&Attr> {
+    pub(crate) fn attr(&self, name: &str) -> Option<&Attr> {
         self.read.set(true);
         let a = self.attrs.iter().find(|a| a.name == name)?;
         a.read.set(true);
         Some(a)
     }
-    pub fn child(&self, name: &str) -> Option<&Elem> {
+    pub(crate) fn child(&self, name: &str) -> Option<&Elem> {
         self.read.set(true);
         let c = self.children.iter().find(|c| c.name == name)?;
         c.read.set(true);
         Some(c)
     }
-    pub fn children_named<'a>(&'a self, name: &'a str) -> impl Iterator<Item = &'a Elem> + 'a {
+    pub(crate) fn children_named<'a>(&'a self, name: &'a str) -> impl Iterator<Item = &'a Elem> + 'a {
         self.read.set(true);
         self.children.iter().filter(move |c| c.name == name).inspect(|c| c.read.set(true))
     }
     /// The first child element (for XSD choices).
-    pub fn first_child(&self) -> Option<&Elem> {
+    pub(crate) fn first_child(&self) -> Option<&Elem> {
         self.read.set(true);
         let c = self.children.first()?;
         c.read.set(true);
         Some(c)
     }
     /// Every child element; a child counts as read only once the reader looks into it.
-    pub fn children(&self) -> &[Elem] {
+    pub(crate) fn children(&self) -> &[Elem] {
         self.read.set(true);
         &self.children
     }
     /// Marks the element and all it holds as read: for content the reader has already warned
     /// about as a whole (an unsupported element), so it is not reported twice.
-    pub fn announce(&self) {
+    pub(crate) fn announce(&self) {
         self.read.set(true);
         for a in &self.attrs {
             a.read.set(true);
@@ -87,7 +87,7 @@ impl Elem {
     }
     /// The children without marking anything read (checks that only look, such as the schema
     /// pass and the report of what was not read).
-    pub fn children_unmarked(&self) -> &[Elem] {
+    pub(crate) fn children_unmarked(&self) -> &[Elem] {
         &self.children
     }
 }
@@ -137,10 +137,19 @@ pub(crate) fn read_file(path: &Path) -> Result<Doc, Error> {
 
 pub(crate) fn parse_str(path: &Path, text: &str) -> Result<Doc, Error> {
     let file: Arc<Path> = Arc::from(path);
+    if text.trim_start_matches('\u{feff}').trim().is_empty() {
+        return Err(Error::new(ErrorKind::Xml, Location::file_only(path), "the file is empty: there is no XML document in it"));
+    }
     let options = roxmltree::ParsingOptions { allow_dtd: true, ..Default::default() };
     let doc = roxmltree::Document::parse_with_options(text, options).map_err(|e| {
         let (line, col) = xml_error_position(&e, text);
-        Error::new(ErrorKind::Xml, Location { file: file.clone(), line, col }, format!("not well-formed XML: {e}"))
+        let message = match e {
+            roxmltree::Error::UnexpectedEndOfStream | roxmltree::Error::UnclosedRootNode => {
+                format!("not well-formed XML: the file ends before its document does (cut off?): {e}")
+            }
+            _ => format!("not well-formed XML: {e}"),
+        };
+        Error::new(ErrorKind::Xml, Location { file: file.clone(), line, col }, message)
     })?;
     let mut counter = LineCounter { text, offset: 0, line: 1, col: 1 };
     let root = convert(doc.root_element(), &mut counter, 0, &file)?;

@@ -13,6 +13,10 @@
 //! returns the 2020a XML text or the 2024 format's three files as `bytes`, by the `format`
 //! option.
 
+// A library returns its warnings as data and never prints (ARCHITECTURE.md, Invariants); its
+// unit tests may.
+#![cfg_attr(not(test), deny(clippy::print_stdout, clippy::print_stderr))]
+
 mod benchmark;
 mod closed_loop;
 mod errors;
@@ -63,7 +67,7 @@ fn finish<'py>(py: Python<'py>, c: Conversion, file: &std::path::Path, variation
 #[pyo3(signature = (path, **options))]
 fn convert_file<'py>(py: Python<'py>, path: PathBuf, options: Option<&Bound<'py, pyo3::types::PyDict>>) -> PyResult<Converted<'py>> {
     let (opts, _) = options::from_kwargs(options)?;
-    let c = py.detach(|| convert::convert_file(&path, &opts));
+    let c = py.detach(|| convert::convert(&convert::Request::file(&path), &opts).0);
     if c.result.is_err() && convert::classify(&path) == FileKind::Distribution {
         return Err(errors::message_error(
             py,

@@ -8,13 +8,17 @@
 //! route does at a junction. It only plans routes and answers questions about them
 //! (route s ↔ road s, which road follows at a junction).
 
+// A library returns its warnings as data and never prints (ARCHITECTURE.md, Invariants); its
+// unit tests may.
+#![cfg_attr(not(test), deny(clippy::print_stdout, clippy::print_stderr))]
+
 mod cost;
 mod error;
 mod route;
 mod search;
 mod waypoint;
 
-pub use error::RouteError;
+pub use error::Error;
 pub use route::{Leg, NextRoad, Route, RoutePoint};
 pub use waypoint::{Strategy, Waypoint};
 
@@ -22,3 +26,8 @@ pub use waypoint::{Strategy, Waypoint};
 pub const MAX_WAYPOINTS: usize = 10_000;
 /// Extra cost of one lane change, in metres of driving (shortest) or its time (fastest).
 pub const LANE_CHANGE_COST_M: f64 = 30.0;
+
+// The README's example is compiled (and run, where it needs no file) with the doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

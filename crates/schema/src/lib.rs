@@ -10,6 +10,10 @@
 //! It checks nothing by itself: [`content::match_children`] and [`simple::check_literal`] are the
 //! two questions a validator asks; the walk over a document lives in `openscenario::validate`.
 
+// A library returns its warnings as data and never prints (ARCHITECTURE.md, Invariants); its
+// unit tests may.
+#![cfg_attr(not(test), deny(clippy::print_stdout, clippy::print_stderr))]
+
 pub mod content;
 mod model;
 mod parse;
@@ -36,3 +40,8 @@ pub fn for_minor(minor: u16) -> Option<&'static Schema> {
 
 /// The newest schema this crate has (used when a file declares a later minor version).
 pub const NEWEST_MINOR: u16 = 3;
+
+// The README's example is compiled (and run, where it needs no file) with the doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

@@ -9,6 +9,10 @@
 //! the behaviour follows esmini (corner blending of polyline headings, NURBS sampling and
 //! control-point time interpolation).
 
+// A library returns its warnings as data and never prints (ARCHITECTURE.md, Invariants); its
+// unit tests may.
+#![cfg_attr(not(test), deny(clippy::print_stdout, clippy::print_stderr))]
+
 mod angle;
 mod constructors;
 mod error;
@@ -24,7 +28,7 @@ mod time_mapping;
 mod time_table;
 
 pub use constructors::{filter_vertices, PolylineVertex, SplineSegment};
-pub use error::TrajectoryError;
+pub use error::Error;
 pub use from_shape::{gives_heading, Resolver};
 pub use nurbs::Nurbs;
 pub use path::Path;
@@ -37,3 +41,8 @@ pub use time_table::TimeTable;
 pub const MAX_ITEMS: usize = 100_000;
 /// Upper bound on a trajectory's length in metres (hostile input).
 pub const MAX_LENGTH: f64 = 1.0e6;
+
+// The README's example is compiled (and run, where it needs no file) with the doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

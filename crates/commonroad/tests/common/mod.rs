@@ -5,7 +5,7 @@ use std::num::NonZeroU64;
 
 use commonroad::*;
 
-pub struct Minimal {
+pub(crate) struct Minimal {
     pub scenario: Scenario,
     pub problems: PlanningProblemSet,
     pub lanelets: [LaneletId; 3],
@@ -18,7 +18,7 @@ fn pts(v: &[(f64, f64)]) -> Vec<Point> {
     v.iter().map(|&(x, y)| Point::new(x, y)).collect()
 }
 
-pub fn header() -> Header {
+pub(crate) fn header() -> Header {
     Header {
         benchmark_id: BenchmarkId::parse("DEU_Example-1_1_T-1").unwrap(),
         date: Date::new(2026, 1, 15).unwrap(),
@@ -29,11 +29,11 @@ pub fn header() -> Header {
     }
 }
 
-pub fn state(t: u64, x: f64, y: f64, v: f64) -> State {
+pub(crate) fn state(t: u64, x: f64, y: f64, v: f64) -> State {
     State { time_step: t, x, y, orientation: 0.0, velocity: v, acceleration: 0.0, yaw_rate: 0.0 }
 }
 
-pub fn minimal() -> Minimal {
+pub(crate) fn minimal() -> Minimal {
     let mut ids = IdAllocator::new();
     let (l1, l2, l3) = (ids.lanelet(), ids.lanelet(), ids.lanelet());
     let sign = ids.traffic_sign();
@@ -128,4 +128,17 @@ pub fn minimal() -> Minimal {
         }],
     };
     Minimal { scenario, problems, lanelets: [l1, l2, l3], sign, light, car }
+}
+
+/// An intersection's incoming: the lanelets entering it from `from`, its successors to the right,
+/// straight on and to the left, and the incoming it is left of.
+pub(crate) fn incoming(id: IncomingId, from: LaneletId, [right, straight, left]: [&[LaneletId]; 3], is_left_of: Option<IncomingId>) -> Incoming {
+    Incoming {
+        id,
+        incoming_lanelets: vec![from],
+        successors_right: right.to_vec(),
+        successors_straight: straight.to_vec(),
+        successors_left: left.to_vec(),
+        is_left_of,
+    }
 }

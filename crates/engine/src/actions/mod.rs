@@ -3,43 +3,44 @@
 //! (longitudinal / lateral), as esmini does; an action node ends when all its instances are
 //! done.
 
-pub mod add_delete_entity;
-pub mod follow_trajectory;
-pub mod global;
-pub mod lane_change;
-pub mod lane_offset;
-pub mod lat_distance;
-pub mod long_distance;
-pub mod routing;
-pub mod speed;
-pub mod speed_profile;
-pub mod state;
-pub mod synchronize;
-pub mod teleport;
-pub mod traffic_signal;
-pub mod trailer;
+pub(crate) mod add_delete_entity;
+pub(crate) mod follow_trajectory;
+pub(crate) mod global;
+pub(crate) mod lane_change;
+pub(crate) mod lane_offset;
+pub(crate) mod lat_distance;
+pub(crate) mod long_distance;
+pub(crate) mod override_controller;
+pub(crate) mod routing;
+pub(crate) mod speed;
+pub(crate) mod speed_profile;
+pub(crate) mod state;
+pub(crate) mod synchronize;
+pub(crate) mod teleport;
+pub(crate) mod traffic_signal;
+pub(crate) mod trailer;
 
 use self::state::{ActionRt, Instance};
 use crate::external::overridden::{overridden, Overridden};
 use crate::sim::Sim;
 use crate::storyboard::{State, Transition};
-use crate::Warning;
+use crate::Diagnostic;
 use openscenario::{ActionKind, PrivateAction};
 
 impl<'a> Sim<'a> {
     /// Warn once about action slot `slot`.
-    pub fn warn_action(&mut self, slot: usize, msg: String) {
+    pub(crate) fn warn_action(&mut self, slot: usize, msg: String) {
         let Some(s) = self.actions.get_mut(slot) else { return };
         if s.warned {
             return;
         }
         s.warned = true;
-        let w = Warning::at(&s.model.origin, msg);
+        let w = Diagnostic::at(&s.model.origin, msg);
         self.warnings.push(w);
     }
 
     /// End the running actions of the same actors whose domains overlap this one's.
-    pub fn end_conflicting_actions(&mut self, slot: usize) {
+    pub(crate) fn end_conflicting_actions(&mut self, slot: usize) {
         let dom = self.actions[slot].domains();
         if dom == 0 {
             return;
@@ -72,7 +73,7 @@ impl<'a> Sim<'a> {
     }
 
     /// Start action slot `slot`: running state, one instance per actor.
-    pub fn start_action(&mut self, slot: usize) {
+    pub(crate) fn start_action(&mut self, slot: usize) {
         if self.entity_action_refused(slot) {
             return;
         }
@@ -207,6 +208,7 @@ impl<'a> Sim<'a> {
                 );
                 ActionRt::Done
             }
+            PrivateAction::OverrideControllerValue(values) => self.start_override(slot, e, values),
             PrivateAction::ConnectTrailer { trailer } => {
                 self.connect_trailer(slot, e, trailer);
                 ActionRt::Done
@@ -223,12 +225,12 @@ impl<'a> Sim<'a> {
     }
 
     /// Step action slot `slot`; end its node when every instance is done.
-    pub fn step_action(&mut self, slot: usize) {
+    pub(crate) fn step_action(&mut self, slot: usize) {
         if !self.actions[slot].running {
             return;
         }
         let mut all_done = true;
-        // While the ghost runs ahead only its actions step (ghost.rs, `steps_during_restart`).
+        // While the ghost runs ahead only its actions step (ghost/, `steps_during_restart`).
         let held = self.ghost_restarting();
         for k in 0..self.actions[slot].instances.len() {
             let Some(e) = self.actions[slot].instances[k].entity else { continue };

@@ -7,7 +7,7 @@ use openscenario::Condition;
 
 /// One condition with its evaluation memory.
 #[derive(Debug, Clone)]
-pub struct ConditionRt<'a> {
+pub(crate) struct ConditionRt<'a> {
     pub model: &'a Condition,
     pub(super) last_result: bool,
     /// Evaluated since the trigger last fired (edges need a previous value).
@@ -16,7 +16,7 @@ pub struct ConditionRt<'a> {
     /// (time, edge-filtered value) at each change, for delays.
     pub(super) history: Vec<(f64, bool)>,
     pub triggering: Vec<usize>,
-    /// Seconds a SimulationTime condition fires early (a ghost's head start, `ghost.rs`).
+    /// Seconds a SimulationTime condition fires early (a ghost's head start, `ghost/`).
     pub time_shift: f64,
     /// The triggering entities for which the condition held when it was last true (read by
     /// `selectTriggeringEntities`), and the scratch list of the evaluation in progress.
@@ -30,6 +30,6 @@ pub struct ConditionRt<'a> {
 }
 
 #[derive(Debug, Clone, Default)]
-pub struct TriggerRt<'a> {
+pub(crate) struct TriggerRt<'a> {
     pub groups: Vec<Vec<ConditionRt<'a>>>,
 }

@@ -5,14 +5,15 @@
 //!   (1 − distFactor)·dvMin`, without one `setSpeed − speed`, clamped to ±1;
 //! - steering: `(1.8·near + 1.3·near' + 1.5·far') / (π/4)`, clamped to ±1, from the angle to
 //!   the near point (lane centre 10 m ahead) and to the far point: the tangent point of the
-//!   lane's inner edge within 80 m (`looming_view.rs`), else the lead vehicle within 80 m
+//!   lane's inner edge within 80 m (`looming/view.rs`), else the lead vehicle within 80 m
 //!   (esmini's angle from the lead to the entity), else the lane centre 80 m ahead;
 //! - esmini's vehicle model (vehicle::Vehicle::DrivingControlAnalog) moves the entity: speed
 //!   by max acceleration or deceleration times the throttle, an engine drag of 0.1 % per step
 //!   at zero throttle, a handbrake when braking through zero; the wheel turned by the steering
 //!   and the kinematic bicycle of `kinematic_vehicle.rs`.
 
-pub mod state;
+pub(crate) mod state;
+pub(crate) mod view;
 
 use state::LoomingRt;
 
@@ -43,12 +44,12 @@ const K1: f64 = 1.3;
 const K2: f64 = 1.5;
 
 /// What the run says about a LoomingController on roads with elevation or superelevation.
-pub const APPROXIMATION: &str = "LoomingController: the OSI points of its far tangent point are esmini's for flat roads; the shorter spacing esmini uses where the road's elevation or superelevation changes is not modelled";
+pub(crate) const APPROXIMATION: &str = "LoomingController: the OSI points of its far tangent point are esmini's for flat roads; the shorter spacing esmini uses where the road's elevation or superelevation changes is not modelled";
 
 impl LoomingRt {
     /// ControllerLooming's constructor: `timeGap` (1.5 s) and `setSpeed` properties; the mode
     /// is esmini's Controller default, override, unless `mode` says additive.
-    pub fn new(c: &Controller) -> LoomingRt {
+    pub(crate) fn new(c: &Controller) -> LoomingRt {
         let num = |n: &str| c.properties.get(n).and_then(|v| v.trim().parse::<f64>().ok());
         LoomingRt {
             active: false,
@@ -69,7 +70,7 @@ impl LoomingRt {
     /// ControllerLooming::Activate: the vehicle model starts at the entity's speed; the set
     /// speed is the entity's speed unless given in override mode. The controller operates on
     /// the longitudinal domain only.
-    pub fn activate(&mut self, en: &crate::entities::Entity, longitudinal: bool) {
+    pub(crate) fn activate(&mut self, en: &crate::entities::Entity, longitudinal: bool) {
         let (speed, max_acc, max_dec) = (en.speed, en.max_acc, en.max_dec);
         if !longitudinal {
             return;
@@ -113,7 +114,7 @@ fn lead_delta(
 impl<'a> Sim<'a> {
     /// Step every active LoomingController by `dt`, after the default controller (esmini steps
     /// its controllers then, in frame 0 too with dt = 0).
-    pub fn step_looming_controllers(&mut self, dt: f64) {
+    pub(crate) fn step_looming_controllers(&mut self, dt: f64) {
         self.for_each_controller(|sim, e, c| {
             if let super::state::ControllerRt::Looming(l) = c {
                 if l.active {
@@ -161,7 +162,7 @@ impl<'a> Sim<'a> {
         if let (Some(net), Some(lp)) = (self.net, me.lane) {
             let h_road = lp.pose(net).map_or(me.h, |p| p.road_heading);
             let forward = lp.dir > 0.0;
-            let t = super::looming_view::far_tangent(net, &mut l.osi, lp, me.x, me.y, h_road, forward, far_dist);
+            let t = view::far_tangent(net, &mut l.osi, view::Viewpoint { lane: lp, x: me.x, y: me.y, h_road, forward }, far_dist);
             far = t.point;
             intersection = t.intersection;
             searched = t.dist;
@@ -197,7 +198,7 @@ impl<'a> Sim<'a> {
                         break;
                     }
                     has_lead_far = true;
-                    far_angle = super::looming_view::angle_pi((me.y - p.y).atan2(me.x - p.x) - me.h);
+                    far_angle = view::angle_pi((me.y - p.y).atan2(me.x - p.x) - me.h);
                 }
             }
         }

@@ -8,25 +8,23 @@
 //! naming it; the ones that need a human or an outside process (Interactive, External, SUMO,
 //! HID, UDP driver) say so.
 
-pub mod acc;
-pub mod alks;
-pub mod alks_r157;
-pub mod analog_vehicle;
-pub mod follow_ghost;
-pub mod follow_reference;
-pub mod follow_route;
-pub mod followers;
-pub mod kinematic_vehicle;
-pub mod lane_router;
-pub mod looming;
-pub mod looming_view;
-pub mod natural_driver;
-pub mod natural_view;
-pub mod state;
+pub(crate) mod acc;
+pub(crate) mod alks;
+pub(crate) mod alks_r157;
+pub(crate) mod analog_vehicle;
+pub(crate) mod follow_ghost;
+pub(crate) mod follow_reference;
+pub(crate) mod follow_route;
+pub(crate) mod followers;
+pub(crate) mod kinematic_vehicle;
+pub(crate) mod lane_router;
+pub(crate) mod looming;
+pub(crate) mod natural_driver;
+pub(crate) mod state;
 
 use self::state::ControllerRt;
 use crate::sim::Sim;
-use crate::Warning;
+use crate::Diagnostic;
 use openscenario::Controller;
 
 /// Types that need a driver or a co-simulator outside osc2cr.
@@ -34,7 +32,7 @@ const OUTSIDE_INPUT: [&str; 6] =
     ["InteractiveController", "ExternalController", "SumoController", "HIDController", "UDPDriverController", "ExternalDriverModel"];
 
 /// The esmini type of a controller.
-pub fn controller_type(c: &Controller) -> &str {
+pub(crate) fn controller_type(c: &Controller) -> &str {
     c.properties.get("esminiController").unwrap_or(c.name.as_str())
 }
 
@@ -59,10 +57,10 @@ impl<'a> Sim<'a> {
     }
 
     /// Assign controller `c` to entity `e`; warns when its type is not modelled.
-    pub fn assign_controller(&mut self, e: usize, c: &Controller) {
+    pub(crate) fn assign_controller(&mut self, e: usize, c: &Controller) {
         if self.named_external(e) {
             let name = self.entities.get(e).map_or("", |en| en.name.as_str());
-            self.warnings.push(Warning::at(&c.origin, format!("controller `{}` of `{name}` is not stepped: the entity is driven from outside", c.name)));
+            self.warnings.push(Diagnostic::at(&c.origin, format!("controller `{}` of `{name}` is not stepped: the entity is driven from outside", c.name)));
             return;
         }
         let kind = controller_type(c);
@@ -72,7 +70,7 @@ impl<'a> Sim<'a> {
             "ALKS_R157SM_Controller" => {
                 let (rt, note) = alks_r157::state::AlksR157Rt::new(c);
                 if let Some(n) = note {
-                    self.warnings.push(Warning::at(&c.origin, n));
+                    self.warnings.push(Diagnostic::at(&c.origin, n));
                 }
                 Some(ControllerRt::AlksR157(Box::new(rt)))
             }
@@ -83,7 +81,7 @@ impl<'a> Sim<'a> {
             "LoomingController" => {
                 if self.net.is_some_and(|n| n.roads.iter().any(|r| r.elevation.iter().chain(&r.superelevation).any(|c| c.b != 0.0 || c.c != 0.0 || c.d != 0.0)))
                 {
-                    self.warnings.push(Warning::at(&c.origin, looming::APPROXIMATION.to_string()));
+                    self.warnings.push(Diagnostic::at(&c.origin, looming::APPROXIMATION.to_string()));
                 }
                 Some(ControllerRt::Looming(looming::state::LoomingRt::new(c)))
             }
@@ -93,7 +91,7 @@ impl<'a> Sim<'a> {
             self.await_outside_driver(e, c);
         } else if rt.is_none() {
             let why = if OUTSIDE_INPUT.contains(&kind) { "needs a driver or a process outside osc2cr" } else { "is not modelled" };
-            self.warnings.push(Warning::at(
+            self.warnings.push(Diagnostic::at(
                 &c.origin,
                 format!("controller `{}` ({kind}) {why}; the default controller drives and the storyboard's actions apply", c.name),
             ));
@@ -105,7 +103,7 @@ impl<'a> Sim<'a> {
     }
 
     /// ActivateControllerAction on entity `e` for the given domains.
-    pub fn activate_controller(&mut self, e: usize, longitudinal: bool) {
+    pub(crate) fn activate_controller(&mut self, e: usize, longitudinal: bool) {
         let Some(speed) = self.entities.get(e).map(|en| en.speed) else { return };
         match self.controllers.get_mut(e) {
             Some(Some(ControllerRt::Acc(a))) => a.activate(speed, longitudinal),
@@ -147,7 +145,7 @@ impl<'a> Sim<'a> {
     }
 
     /// Step every active controller by `dt` (after the storyboard, before the default controller).
-    pub fn step_controllers(&mut self, dt: f64) {
+    pub(crate) fn step_controllers(&mut self, dt: f64) {
         if !self.any_controller {
             return;
         }

@@ -1,11 +1,11 @@
 //! What a ghost is during a run: the entity it runs ahead of, its head start, its trail and
-//! esmini's ghost mode and clock. Data only: `ghost.rs`, `ghost_trail.rs` and
-//! `ghost_restart.rs` change it.
+//! esmini's ghost mode and clock. Data only: `ghost/mod.rs`, `trail.rs` and
+//! `restart.rs` change it.
 
-use crate::ghost_trail::Trail;
+use crate::ghost::trail::Trail;
 
 #[derive(Debug, Clone)]
-pub struct Ghost {
+pub(crate) struct Ghost {
     /// The ghost entity.
     pub entity: usize,
     /// The entity it runs ahead of (the only one that follows it).
@@ -20,7 +20,7 @@ pub struct Ghost {
     pub mode: GhostMode,
     /// Events that teleport the ghost back to its entity when they start (esmini's
     /// `AddedGhostTeleport`), each with the condition that made it one.
-    pub restart_events: Vec<(usize, crate::Warning)>,
+    pub restart_events: Vec<(usize, crate::Diagnostic)>,
     /// While the actions of an event start after its added teleport: how much earlier they
     /// start (esmini's `Event::Start` passes them the time less the head start).
     pub start_shift: f64,
@@ -30,7 +30,7 @@ pub struct Ghost {
 /// its entity, then `Restarting` while the rewound time catches up (the head start before time
 /// 0 is run the same way), else `Normal`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum GhostMode {
+pub(crate) enum GhostMode {
     Normal,
     Restart,
     Restarting,

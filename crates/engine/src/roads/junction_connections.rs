@@ -15,7 +15,7 @@ use std::sync::Arc;
 /// One connection: entering `connecting` from `incoming` at `contact` of the connecting road;
 /// lane links (incoming lane, connecting lane).
 #[derive(Debug, Clone, PartialEq)]
-pub struct Connection {
+pub(crate) struct Connection {
     pub incoming: usize,
     pub connecting: usize,
     pub contact: ContactPoint,
@@ -40,7 +40,7 @@ fn all(net: &RoadNetwork) -> Arc<Vec<Vec<Connection>>> {
 }
 
 /// The connections of the junction `junction` that `road` enters by, in esmini's order.
-pub fn entering(net: &RoadNetwork, junction: usize, road: usize) -> Vec<Connection> {
+pub(crate) fn entering(net: &RoadNetwork, junction: usize, road: usize) -> Vec<Connection> {
     all(net).get(junction).map(|c| c.iter().filter(|c| c.incoming == road).cloned().collect()).unwrap_or_default()
 }
 
@@ -126,16 +126,16 @@ fn add_counter_connection(net: &RoadNetwork, junction_id: &str, conns: &mut Vec<
 }
 
 /// One run's entry (`crate::run_memos`).
-pub struct Store(Option<Built>);
+pub(crate) struct Store(Option<Built>);
 
 impl Store {
     /// No entry.
-    pub fn new() -> Store {
+    pub(crate) fn new() -> Store {
         Store(None)
     }
 
     /// Exchange this entry with the thread's.
-    pub fn swap_with_thread(&mut self) {
+    pub(crate) fn swap_with_thread(&mut self) {
         MEMO.with(|m| std::mem::swap(&mut *m.borrow_mut(), &mut self.0));
     }
 }

@@ -13,12 +13,12 @@ const MIN_WIDTH: f64 = 1e-6;
 /// The lane and the offset from its centre of point (s, t) in section `section` of `road`
 /// (`sidewalks`: a pedestrian's types); `None` when no lane of the types qualifies (esmini then
 /// keeps the reference lane).
-pub fn snap(road: &Road, section: usize, s: f64, t: f64, sidewalks: bool) -> Option<(i32, f64)> {
+pub(crate) fn snap(road: &Road, section: usize, s: f64, t: f64, sidewalks: bool) -> Option<(i32, f64)> {
     snap_on_side(road, section, s, t, sidewalks, 0)
 }
 
 /// [`snap`] among the lanes of one side (`side` −1 right, +1 left; 0 both).
-pub fn snap_on_side(road: &Road, section: usize, s: f64, t: f64, sidewalks: bool, side: i32) -> Option<(i32, f64)> {
+pub(crate) fn snap_on_side(road: &Road, section: usize, s: f64, t: f64, sidewalks: bool, side: i32) -> Option<(i32, f64)> {
     let sec = road.lane_sections.get(section)?;
     let allowed = |k: LaneType| super::lane_kind::is_driving(k) || (sidewalks && k == LaneType::Sidewalk);
     let mut best: Option<(f64, i32, f64)> = None;

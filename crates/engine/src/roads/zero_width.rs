@@ -14,13 +14,13 @@ const ZERO_WIDTH: f64 = 1e-6;
 
 /// Move `pos` to the centre of the lane esmini picks when its own lane has no width at its s
 /// (`sidewalks`: a pedestrian's lane types). Returns whether it moved.
-pub fn leave_zero_width_lane(net: &RoadNetwork, pos: &mut LanePos, sidewalks: bool) -> bool {
+pub(crate) fn leave_zero_width_lane(net: &RoadNetwork, pos: &mut LanePos, sidewalks: bool) -> bool {
     let Some(road) = net.roads.get(pos.road) else { return false };
     leave_zero_width_lane_in(net, pos, road.section_index_at(pos.s), sidewalks)
 }
 
 /// [`leave_zero_width_lane`] when the caller knows the lane section at `pos.s` already.
-pub fn leave_zero_width_lane_in(net: &RoadNetwork, pos: &mut LanePos, section: usize, sidewalks: bool) -> bool {
+pub(crate) fn leave_zero_width_lane_in(net: &RoadNetwork, pos: &mut LanePos, section: usize, sidewalks: bool) -> bool {
     let Some(road) = net.roads.get(pos.road) else { return false };
     if super::lane_shape::lane_shape(road, section, pos.lane_id).never_zero_width {
         return false;

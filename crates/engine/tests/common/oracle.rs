@@ -9,7 +9,7 @@ use std::process::Command;
 
 /// One row of esmini's CSV log for one entity.
 #[derive(Debug, Clone, PartialEq)]
-pub struct OracleRow {
+pub(crate) struct OracleRow {
     pub time: f64,
     pub entity: String,
     pub x: f64,
@@ -19,7 +19,7 @@ pub struct OracleRow {
 }
 
 /// The fixture `name` (its map named in it, relative to the fixtures) run by the engine.
-pub fn run_fixture_scenario(name: &str, max_time: f64) -> Run {
+pub(crate) fn run_fixture_scenario(name: &str, max_time: f64) -> Run {
     let path = super::fixtures().join(name);
     let (scenario, _) = openscenario::load_scenario(&path, &Default::default()).expect("fixture scenario loads");
     let net = scenario.road_network.logic_file.as_ref().map(|p| opendrive::load(p).expect("fixture road loads").network);
@@ -33,7 +33,7 @@ fn esmini_binary() -> Option<PathBuf> {
 }
 
 /// esmini's rows for the fixture `name` (fixed step 0.01 s, seed 0), or `None` with a notice.
-pub fn esmini_rows(name: &str) -> Option<Vec<OracleRow>> {
+pub(crate) fn esmini_rows(name: &str) -> Option<Vec<OracleRow>> {
     let Some(bin) = esmini_binary() else {
         eprintln!("notice: esmini 3.6.0 cannot run here; the oracle comparison of {name} is skipped");
         return None;
@@ -83,7 +83,7 @@ fn parse_esmini_csv(text: &str) -> Vec<OracleRow> {
 }
 
 /// How far the engine's run is from esmini's rows.
-pub struct Agreement {
+pub(crate) struct Agreement {
     /// The worst distance (m) between positions of any entity at any time both have, and where.
     pub worst: f64,
     pub worst_at: String,
@@ -96,7 +96,7 @@ pub struct Agreement {
 }
 
 /// Compare the engine's run with esmini's rows.
-pub fn against_esmini(run: &Run, rows: &[OracleRow]) -> Agreement {
+pub(crate) fn against_esmini(run: &Run, rows: &[OracleRow]) -> Agreement {
     let mut a =
         Agreement { worst: 0.0, worst_at: String::new(), worst_heading: 0.0, worst_heading_at: String::new(), ours_end: run.trace.end_time(), esmini_end: 0.0 };
     for r in rows {
@@ -125,7 +125,7 @@ pub fn against_esmini(run: &Run, rows: &[OracleRow]) -> Agreement {
 
 /// Assert that the engine's run of fixture `name` is esmini's within `tol` m, 0.01 rad of
 /// heading and one step of end time, when esmini can run here.
-pub fn assert_matches_esmini(name: &str, run: &Run, tol: f64) {
+pub(crate) fn assert_matches_esmini(name: &str, run: &Run, tol: f64) {
     let Some(rows) = esmini_rows(name) else { return };
     let a = against_esmini(run, &rows);
     assert!(a.worst <= tol, "{name}: {:.3} m from esmini ({})", a.worst, a.worst_at);
@@ -134,7 +134,7 @@ pub fn assert_matches_esmini(name: &str, run: &Run, tol: f64) {
 }
 
 /// Assert that `entity` is at esmini's pose (x, y, heading) at `t`: within 1 mm and 1 mrad.
-pub fn assert_esmini_pose_at(run: &Run, entity: &str, t: f64, x: f64, y: f64, h: f64) {
+pub(crate) fn assert_esmini_pose_at(run: &Run, entity: &str, t: f64, x: f64, y: f64, h: f64) {
     let s = super::at(run, entity, t);
     let dh = (s.h - h).rem_euclid(std::f64::consts::TAU);
     assert!(

@@ -11,25 +11,26 @@ mod road;
 mod signals;
 mod xml;
 
-use crate::error::{Error, Warning};
+use crate::error::Error;
 use crate::model::header::Header;
 use crate::model::junction::{Controller, Junction};
 use crate::model::road::Road;
+use diagnostic::Diagnostic;
 use std::path::Path;
 use xml::{elements, irrelevant, Ctx};
 
 /// Hostile-input caps: XML nodes in a document, roads, junctions.
-pub const MAX_XML_NODES: u32 = 20_000_000;
-pub const MAX_ROADS: usize = 1_000_000;
-pub const MAX_JUNCTIONS: usize = 1_000_000;
+pub(crate) const MAX_XML_NODES: u32 = 20_000_000;
+pub(crate) const MAX_ROADS: usize = 1_000_000;
+pub(crate) const MAX_JUNCTIONS: usize = 1_000_000;
 
 /// Everything read from the file, before indexing.
-pub struct Parsed {
+pub(crate) struct Parsed {
     pub header: Header,
     pub roads: Vec<Road>,
     pub junctions: Vec<Junction>,
     pub controllers: Vec<Controller>,
-    pub warnings: Vec<Warning>,
+    pub warnings: Vec<Diagnostic>,
 }
 
 /// Where a parse error is. roxmltree puts "the file ended too early" errors at 1:1; the place
@@ -50,7 +51,7 @@ fn xml_error_position(e: &roxmltree::Error, text: &str) -> (u32, u32) {
 }
 
 /// Parse OpenDRIVE text; `file` is used in messages only.
-pub fn parse_document(text: &str, file: &Path) -> Result<Parsed, Error> {
+pub(crate) fn parse_document(text: &str, file: &Path) -> Result<Parsed, Error> {
     let opts = roxmltree::ParsingOptions { allow_dtd: false, nodes_limit: MAX_XML_NODES, ..Default::default() };
     let doc = roxmltree::Document::parse_with_options(text, opts).map_err(|e| {
         let (line, col) = xml_error_position(&e, text);

@@ -2,10 +2,10 @@
 //! previous steering angles, the OSI points it has looked at.
 
 use crate::controllers::analog_vehicle::AnalogVehicle;
-use crate::controllers::looming_view::OsiMemo;
+use crate::controllers::looming::view::OsiMemo;
 
 #[derive(Debug, Clone)]
-pub struct LoomingRt {
+pub(crate) struct LoomingRt {
     pub active: bool,
     pub(super) time_gap: f64,
     pub(super) set_speed: f64,

@@ -1,0 +1,164 @@
+//! What esmini's NaturalDriver sees around it: the road-network delta between two entities
+//! (signed distance along the roads, lane difference), the free space between their bounding
+//! boxes, the six vehicles of interest (closest ahead and behind in its own lane and in the
+//! lanes to the left and right), the driving lanes next to it, and the IDM acceleration it
+//! predicts for any follower/leader pair.
+
+use super::state::NdParams;
+use crate::entities::Entity;
+use crate::roads::lane_kind::is_driving;
+use crate::roads::road_distance::road_distance_within;
+use crate::roads::road_follow::wrap;
+use crate::roads::{move_along_s, LanePos};
+use crate::sim::Sim;
+use opendrive::RoadNetwork;
+
+/// esmini's SMALL_NUMBER and LARGE_NUMBER.
+pub(crate) const SMALL_NUMBER: f64 = 1e-10;
+pub(crate) const LARGE_NUMBER: f64 = 1e10;
+
+/// Slots of the vehicles of interest.
+pub(crate) const LEAD: usize = 0;
+pub(crate) const FOLLOWING: usize = 1;
+pub(crate) const LEFT_LEAD: usize = 2;
+pub(crate) const LEFT_FOLLOW: usize = 3;
+pub(crate) const RIGHT_LEAD: usize = 4;
+pub(crate) const RIGHT_FOLLOW: usize = 5;
+
+/// The closest vehicle of each kind: entity index and signed distance along the road.
+pub(crate) type Vois = [Option<(usize, f64)>; 6];
+
+/// Road delta from `a` to `b` as esmini's `Position::Delta` has it: signed distance along the
+/// roads (positive ahead of the way `a` faces) and lane difference (positive towards the road
+/// centre as `a` sees it, the centre lane skipped). On one road the distance is the difference
+/// of s whatever its size; across roads the shortest chain within `max`, searched forward and,
+/// when `both`, backward. `None` when no path is found.
+pub(crate) fn road_delta(net: &RoadNetwork, a: &LanePos, b: &LanePos, both: bool, max: f64) -> Option<(f64, i32)> {
+    let lane_diff = |from: i32, to: i32| {
+        let mut d = -from.signum() * (to - from);
+        if from.signum() != to.signum() && from != 0 && to != 0 {
+            d -= d.signum();
+        }
+        d
+    };
+    if a.road == b.road {
+        return Some(((b.s - a.s) * a.dir, lane_diff(a.lane_id, b.lane_id)));
+    }
+    let d = road_distance_within(net, a.road, a.s, b.road, b.s, max)?;
+    let mut p = *a;
+    move_along_s(net, &mut p, d);
+    if p.road == b.road {
+        return Some((d, lane_diff(p.lane_id, b.lane_id)));
+    }
+    if both {
+        let mut p = *a;
+        move_along_s(net, &mut p, -d);
+        if p.road == b.road {
+            return Some((-d, lane_diff(p.lane_id, b.lane_id)));
+        }
+    }
+    None
+}
+
+/// Free space between `follow` and `target` along the road given the reference-point distance
+/// `ds` (esmini's EstimateFreespace): bounding-box overhangs removed when both point roughly the
+/// same way, clipped at 0; the raw distance otherwise.
+pub(crate) fn freespace(follow: &Entity, target: &Entity, ds: f64) -> f64 {
+    if wrap(follow.h - target.h).abs() >= std::f64::consts::FRAC_PI_2 {
+        return ds;
+    }
+    let overhang = (follow.bbox[3] / 2.0 + follow.bbox[0]) + (target.bbox[3] / 2.0 - target.bbox[0]);
+    if ds > 0.0 {
+        (ds - overhang).max(0.0)
+    } else {
+        (ds + overhang).min(0.0)
+    }
+}
+
+/// IDM desired gap s0 + max(0, v·T + v·Δv / (2·√(a·b))).
+pub(crate) fn desired_gap(p: &NdParams, follow_speed: f64, lead_speed: f64) -> f64 {
+    let ab = -p.max_acc * p.max_dec;
+    p.desired_distance + (follow_speed * p.thw + follow_speed * (follow_speed - lead_speed) / (2.0 * ab.sqrt())).max(0.0)
+}
+
+/// The driving lanes to the left and right of `lp` (0: none), or `None` when its side of the
+/// road has at most one driving lane.
+pub(crate) fn adjacent_lanes(net: &RoadNetwork, lp: &LanePos) -> Option<[i32; 2]> {
+    let road = net.roads.get(lp.road)?;
+    let sec = road.lane_sections.get(road.section_index_at(lp.s.clamp(0.0, road.length)))?;
+    let cur = lp.lane_id;
+    if cur == 0 {
+        return None;
+    }
+    let side = if cur > 0 { &sec.left } else { &sec.right };
+    if side.iter().filter(|l| is_driving(l.kind)).count() <= 1 {
+        return None;
+    }
+    let driving = |id: i32| id != 0 && id.signum() == cur.signum() && side.iter().any(|l| l.id == id && is_driving(l.kind));
+    let (left, right) = (cur - cur.signum(), cur + cur.signum());
+    Some([if driving(left) { left } else { 0 }, if driving(right) { right } else { 0 }])
+}
+
+impl<'a> Sim<'a> {
+    /// Other active entities within `radius` (straight-line distance of the reference points).
+    pub(super) fn nd_in_radius(&self, e: usize, radius: f64) -> Vec<usize> {
+        let Some(me) = self.entities.get(e) else { return Vec::new() };
+        (0..self.entities.len())
+            .filter(|&i| i != e)
+            .filter(|&i| self.entities[i].active && (self.entities[i].x - me.x).hypot(self.entities[i].y - me.y) <= radius)
+            .collect()
+    }
+
+    /// Delta from entity `a` to entity `b` with esmini's fallback when no path is found
+    /// (distance LARGE_NUMBER, same lane).
+    pub(super) fn nd_delta(&self, a: usize, b: usize, both: bool, max: f64) -> (f64, i32) {
+        let found = match (self.net, self.entities.get(a).and_then(|x| x.lane), self.entities.get(b).and_then(|x| x.lane)) {
+            (Some(net), Some(la), Some(lb)) => road_delta(net, &la, &lb, both, max),
+            _ => None,
+        };
+        found.unwrap_or((LARGE_NUMBER, 0))
+    }
+
+    /// The vehicles of interest of entity `e` among `around` (esmini's UpdateSurroundingVehicles;
+    /// the left/right test multiplies the lane sign in twice, as esmini does).
+    pub(super) fn nd_vois(&self, e: usize, around: &[usize], lookahead: f64) -> Vois {
+        let mut v: Vois = [None; 6];
+        let my_lane = self.entities.get(e).and_then(|x| x.lane).map_or(0, |l| l.lane_id);
+        for &i in around {
+            let (ds, dlane) = self.nd_delta(e, i, true, lookahead);
+            let side = dlane * -my_lane.signum();
+            let (ahead, behind) = match (dlane, side) {
+                (0, _) => (LEAD, FOLLOWING),
+                (_, 1) => (LEFT_LEAD, LEFT_FOLLOW),
+                (_, -1) => (RIGHT_LEAD, RIGHT_FOLLOW),
+                _ => continue,
+            };
+            if ds >= 0.0 {
+                if v[ahead].is_none_or(|(_, d)| ds < d) {
+                    v[ahead] = Some((i, ds));
+                }
+            } else if v[behind].is_none_or(|(_, d)| ds > d) {
+                v[behind] = Some((i, ds));
+            }
+        }
+        v
+    }
+
+    /// IDM acceleration of `follow` behind `lead` with the driver's parameters (0 without a
+    /// follower; free road without a leader).
+    pub(super) fn nd_idm(&self, p: &NdParams, follow: Option<usize>, lead: Option<usize>) -> f64 {
+        let Some((fi, f)) = follow.and_then(|i| self.entities.get(i).map(|x| (i, x))) else { return 0.0 };
+        let v = f.speed;
+        let mut acc = p.max_acc * (1.0 - (v / p.desired_speed).powi(4));
+        if let Some((li, l)) = lead.and_then(|i| self.entities.get(i).map(|x| (i, x))) {
+            let gap = desired_gap(p, v, l.speed);
+            let (ds, _) = self.nd_delta(fi, li, false, p.lookahead);
+            let mut free = freespace(f, l, ds);
+            if free == 0.0 {
+                free = SMALL_NUMBER;
+            }
+            acc -= p.max_acc * (gap / free).powi(2);
+        }
+        acc
+    }
+}

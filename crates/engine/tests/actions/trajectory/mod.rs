@@ -1,0 +1,5 @@
+//! FollowTrajectoryAction, forwards and backwards.
+
+mod follow;
+mod reverse;
+mod timing;

@@ -1,0 +1,6 @@
+//! Moving along the road: banking, lanes that end, junction choice.
+
+mod ending_lane;
+mod junction_random;
+mod reversing_through_junctions;
+mod superelevation;
