@@ -158,13 +158,7 @@ impl Polyline {
     fn corner_heading(&self, i: usize, h: f64, hn: f64, len: f64, local: f64) -> (f64, f64) {
         let nseg = self.headings.len();
         let r = CORNER_RADIUS.min(len / 2.0);
-        let prev = if i > 0 {
-            Some(i - 1)
-        } else if self.closed {
-            Some(nseg - 1)
-        } else {
-            None
-        };
+        let (prev, _) = self.neighbours(i);
         // Same precedence as esmini: the corner at the start wins when both overlap.
         if r > 0.0 && local < r {
             return match prev.and_then(|j| self.vertex_headings.get(j)) {
