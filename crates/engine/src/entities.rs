@@ -140,7 +140,7 @@ impl Entity {
             self.z = p.z;
             // Along a lane that widens or narrows the path drifts sideways; esmini's heading follows it.
             let known_parallel = self.parallel_lane.is_some_and(|(r, l, a, b)| r == lp.road && l == lp.lane_id && lp.s >= a && lp.s < b);
-            let drift = if known_parallel { 0.0 } else { self.drift(net, &lp, p.t, p.curvature) };
+            let drift = if known_parallel { 0.0 } else { self.drift(net, &lp) };
             self.h = wrap_2pi(lp.facing_heading(&p) + self.yaw_offset + drift);
             self.on_road = inside_real_lane(net, &lp, &p) || self.lane_contains(net, &lp, p.t);
         }
@@ -148,18 +148,27 @@ impl Entity {
 
     /// The heading drift on lane position `lp` (see `lane_slope`); remembers a section where the
     /// lane runs parallel, so that the next steps there skip the question.
-    fn drift(&mut self, net: &RoadNetwork, lp: &LanePos, t: f64, curvature: f64) -> f64 {
+    fn drift(&mut self, net: &RoadNetwork, lp: &LanePos) -> f64 {
         let Some(road) = net.roads.get(lp.road) else { return 0.0 };
         let section = road.section_index_at(lp.s);
         if crate::roads::lane_shape::lane_shape(road, section, lp.lane_id).parallel {
             self.parallel_lane = road.section_range(section).map(|(a, b)| (lp.road, lp.lane_id, a, b));
             return 0.0;
         }
-        crate::roads::lane_slope::drift_angle(road, section, lp.lane_id, lp.s, t, curvature)
+        crate::roads::lane_slope::drift_angle(road, section, lp.lane_id, lp.s)
     }
 
-    /// Place the entity at a world pose; attach it to the nearest lane (`hint`: road preferred).
+    /// Place the entity at a world pose; attach it to the nearest lane (`hint`: road preferred)
+    /// of the types esmini snaps the entity's own position to (a pedestrian's include sidewalks).
     pub(crate) fn set_world(&mut self, net: Option<&RoadNetwork>, x: f64, y: f64, z: Option<f64>, h: f64) {
+        let sidewalks = self.kind == EntityKind::Pedestrian;
+        self.set_world_snapping(net, x, y, z, h, sidewalks);
+    }
+
+    /// [`Entity::set_world`] with the lane types given: a teleport copies the location of a
+    /// position of its own, which snaps to driving lanes only, whatever the entity (esmini's
+    /// TeleportAction: Position::CopyLocation).
+    pub(crate) fn set_world_snapping(&mut self, net: Option<&RoadNetwork>, x: f64, y: f64, z: Option<f64>, h: f64, sidewalks: bool) {
         self.x = x;
         self.y = y;
         self.h = wrap_2pi(h);
@@ -174,10 +183,17 @@ impl Entity {
             Some(lp) => {
                 let rel = wrap(h - lp.heading);
                 let dir = if rel.abs() <= std::f64::consts::FRAC_PI_2 + 1e-9 { 1.0 } else { -1.0 };
-                let l = LanePos { road: lp.road, lane_id: lp.lane_id, s: lp.s, offset: lp.offset, dir };
+                // esmini attaches the entity to the nearest lane of the types it snaps to
+                // (LaneSection::GetClosestLaneIdx), measuring the offset from that lane's centre.
+                let (lane_id, offset) =
+                    net.roads.get(lp.road).and_then(|r| crate::roads::lane_snap::snap(r, lp.section, lp.s, lp.t, sidewalks)).unwrap_or((lp.lane_id, lp.offset));
+                let l = LanePos { road: lp.road, lane_id, s: lp.s, offset, dir };
                 self.lane = Some(l);
                 self.on_road = lp.is_on_road() && net.roads.get(lp.road).is_some_and(|r| !crate::roads::offroad::is_off_road(r, lp.s, lp.t));
-                self.yaw_offset = wrap(h - if dir < 0.0 { lp.heading + std::f64::consts::PI } else { lp.heading });
+                // The heading relative to the lane leaves out the lane's drift (esmini's
+                // EvaluateHPR: h_relative = h − h_road − h_offset), which moving adds back.
+                let drift = self.drift(net, &l);
+                self.yaw_offset = wrap(h - drift - if dir < 0.0 { lp.heading + std::f64::consts::PI } else { lp.heading });
                 self.z = z.unwrap_or_else(|| net.roads.get(lp.road).map_or(0.0, |r| r.elevation_at(lp.s)));
             }
             None => {

@@ -35,6 +35,7 @@ mod motion;
 mod position_cache;
 mod positions;
 mod recorded;
+mod relative_position;
 mod road_references;
 mod roads;
 mod route_position;

@@ -32,7 +32,8 @@ impl<'a> Sim<'a> {
             match (net, en.lane) {
                 (Some(net), Some(mut lp)) => {
                     // esmini's own move: a junction tie is decided by its generator.
-                    let status = move_along_route_drawing(net, &mut lp, en.speed * dt, en.route.as_deref(), random);
+                    let pedestrian = en.kind == crate::entities::EntityKind::Pedestrian;
+                    let status = move_along_route_drawing(net, &mut lp, en.speed * dt, en.route.as_deref(), random, pedestrian);
                     en.set_lane_pos(net, lp);
                     if status == MoveStatus::EndOfRoad {
                         // Stuck at the end since the previous step: esmini stops the entity.

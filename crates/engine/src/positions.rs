@@ -5,7 +5,7 @@
 //! road's reference direction, on either side); an absolute one is the world heading. Relative object/world positions take the reference entity's heading.
 
 use crate::entities::Entity;
-use crate::roads::lane_geometry::{lane_borders, lane_center_t};
+use crate::roads::lane_geometry::lane_borders;
 use crate::roads::lane_position::LanePos;
 use crate::roads::road_follow::wrap;
 use opendrive::{drives_along_s, RoadNetwork};
@@ -28,6 +28,19 @@ pub(crate) type PositionError = String;
 
 /// Resolve `pos`; `entities` gives the reference entities of relative positions.
 pub(crate) fn resolve(pos: &Position, net: Option<&RoadNetwork>, entities: &[Entity]) -> Result<Placement, PositionError> {
+    resolve_with_route(pos, net, entities, None, None)
+}
+
+/// [`resolve`] for a position an action puts its entity at: a relative road or lane position
+/// moves along the entity's own route first, else along its reference entity's (esmini's
+/// TeleportAction copies the entity's route into the position, Position::EvaluateRelation).
+pub(crate) fn resolve_with_route(
+    pos: &Position,
+    net: Option<&RoadNetwork>,
+    entities: &[Entity],
+    own_route: Option<&routing::Route>,
+    random: Option<&mut crate::esmini_random::EsminiRandom>,
+) -> Result<Placement, PositionError> {
     let find = |name: &str| entities.iter().find(|e| e.name == name).ok_or_else(|| format!("unknown entity `{name}`"));
     match pos {
         Position::World { x, y, z, h, .. } => {
@@ -63,66 +76,21 @@ pub(crate) fn resolve(pos: &Position, net: Option<&RoadNetwork>, entities: &[Ent
             let net = net.ok_or("a RoadPosition needs a road network")?;
             let road = net.road_index(road_id).ok_or_else(|| format!("unknown road `{road_id}`"))?;
             let mut p = road_placement(net, road, *s, *t, orientation.as_ref())?;
-            // esmini turns a RoadPosition's relative heading from the road's reference
-            // direction on either side of the road (a LanePosition's from the lane's direction).
-            if let Some(Orientation { reference, h: Some(h), .. }) = orientation {
-                if *reference != Some(ReferenceContext::Absolute) {
-                    turn_from_road_direction(net, &mut p, *h);
-                }
-            }
+            // esmini's OSCPositionRoad: the heading is relative to the road's reference direction
+            // on either side of the road (a LanePosition's to the lane's direction) unless an
+            // absolute orientation gives h; without an orientation (or without h) it is the
+            // road's direction itself, so on a lane driving against s the entity faces +s.
+            face_along_road(net, &mut p, orientation.as_ref());
             Ok(p)
         }
         Position::RelativeRoad { entity, ds, dt, orientation } => {
             let net = net.ok_or("a RelativeRoadPosition needs a road network")?;
-            let e = find(entity)?;
-            let lp = e.lane.ok_or_else(|| format!("entity `{entity}` is not on a road"))?;
-            let road = net.roads.get(lp.road).ok_or("reference road missing")?;
-            let t = lane_center_t(road, lp.lane_id, lp.s).unwrap_or(0.0) + lp.offset;
-            let mut p = road_placement(net, lp.road, lp.s + ds, t + dt, orientation.as_ref())?;
-            // esmini (Position::SetRelativePosition, RELATIVE_ROAD): the heading is relative to
-            // the road's reference direction — along +s without an orientation — whichever
-            // side of the road the entity lands on; only an absolute orientation is kept as is.
-            if !matches!(orientation, Some(Orientation { reference: Some(ReferenceContext::Absolute), h: Some(_), .. })) {
-                turn_from_road_direction(net, &mut p, orientation.and_then(|o| o.h).unwrap_or(0.0));
-            }
-            Ok(p)
+            crate::relative_position::relative_road(net, find(entity)?, *ds, *dt, orientation.as_ref(), own_route, random)
         }
         Position::RelativeLane { entity, d_lane, ds, ds_lane, offset, orientation } => {
             let net = net.ok_or("a RelativeLanePosition needs a road network")?;
-            let e = find(entity)?;
-            let lp = e.lane.ok_or_else(|| format!("entity `{entity}` is not on a road"))?;
-            let road = net.roads.get(lp.road).ok_or("reference road missing")?;
-            // esmini's Position::SetRelativePosition (RELATIVE_LANE). `ds` moves along the road's
-            // s axis and counts dLane and the offset as the lane ids and t do; `dsLane` moves
-            // along the reference lane's driving direction and counts dLane and the offset to the
-            // left of it — unless the reference entity faces along its lane's driving direction
-            // on the rule's side of the road (right-hand traffic: a right lane, facing +s),
-            // when they count as with `ds`.
-            let along_lane = ds_lane.is_some() && ds.is_none();
-            let (lane_id, offset, s) = if along_lane {
-                let lane_dir = if drives_along_s(road.rule, lp.lane_id) { 1.0 } else { -1.0 };
-                let forward = lp.dir > 0.0;
-                let as_road = match road.rule {
-                    opendrive::TrafficRule::RightHand => forward && lp.lane_id < 0,
-                    opendrive::TrafficRule::LeftHand => !forward && lp.lane_id > 0,
-                };
-                let sign = if as_road { 1 } else { -1 };
-                (step_lane(lp.lane_id, sign * d_lane), offset * f64::from(sign), lp.s + ds_lane.unwrap_or(0.0) * lane_dir)
-            } else {
-                (step_lane(lp.lane_id, *d_lane), *offset, lp.s + ds.unwrap_or(0.0))
-            };
-            let s = s.clamp(0.0, road.length);
-            // Without an absolute heading the entity faces from the road's s direction, turned by
-            // π with `dsLane` where the new lane drives against s (esmini's SetHeadingRelative).
-            let r = road;
-            if lane_borders(r, r.section_index_at(s), lane_id, s).is_none() {
-                // No such lane: esmini's Position::SetRelativePosition keeps the location it moved
-                // the reference to (its lane and lane offset at the new s), as SetLanePos fails.
-                let along = !along_lane || drives_along_s(r.rule, lp.lane_id);
-                return place(net, lp.road, lp.lane_id, s, lp.offset, along, Some(&relative_heading(orientation.as_ref())));
-            }
-            let along = !along_lane || drives_along_s(r.rule, lane_id);
-            place(net, lp.road, lane_id, s, offset, along, Some(&relative_heading(orientation.as_ref())))
+            let along = crate::relative_position::Along::of(*ds, *ds_lane);
+            crate::relative_position::relative_lane(net, find(entity)?, *d_lane, along, *offset, orientation.as_ref(), own_route, random)
         }
         Position::Route { route, orientation, in_route } => crate::route_position::route_placement(route, in_route, orientation.as_ref(), net, entities),
         Position::Geo { .. } => Err("GeoPosition is not supported".into()),
@@ -134,7 +102,7 @@ pub(crate) fn resolve(pos: &Position, net: Option<&RoadNetwork>, entities: &[Ent
 
 /// A relative position's orientation as esmini reads it: none is a relative heading of 0
 /// (ScenarioReader: "if no orientation specified, assume Relative is preferred").
-fn relative_heading(o: Option<&Orientation>) -> Orientation {
+pub(crate) fn relative_heading(o: Option<&Orientation>) -> Orientation {
     match o {
         Some(o) if o.h.is_some() => *o,
         Some(o) => Orientation { h: Some(0.0), ..*o },
@@ -173,15 +141,26 @@ pub(crate) fn lane_placement(net: &RoadNetwork, road: usize, lane_id: i32, s: f6
     place(net, road, lane_id, s, offset, along, o)
 }
 
-fn place(net: &RoadNetwork, road: usize, lane_id: i32, s: f64, offset: f64, along: bool, o: Option<&Orientation>) -> Result<Placement, PositionError> {
+pub(crate) fn place(
+    net: &RoadNetwork,
+    road: usize,
+    lane_id: i32,
+    s: f64,
+    offset: f64,
+    along: bool,
+    o: Option<&Orientation>,
+) -> Result<Placement, PositionError> {
     let mut lp = LanePos { road, lane_id, s, offset, dir: if along { 1.0 } else { -1.0 } };
     let pose = lp.pose(net).ok_or("lane missing")?;
     let facing = lp.facing_heading(&pose);
+    // A relative heading also turns by the lane centre's drift atan(dt/ds) (esmini's
+    // EvaluateHPR: h_road + h_relative + GetHOffset), as a lane follower's heading does.
+    let drift = lane_drift(net, road, lane_id, s);
     let h = match o {
         Some(Orientation { reference: Some(ReferenceContext::Absolute), h: Some(h), .. }) => *h,
         // A relative heading is taken from the road's reference direction, as esmini does.
-        Some(Orientation { h: Some(h), .. }) => pose.road_heading + h + if along { 0.0 } else { PI },
-        _ => facing,
+        Some(Orientation { h: Some(h), .. }) => pose.road_heading + h + if along { 0.0 } else { PI } + drift,
+        _ => facing + drift,
     };
     // Facing the other way than the lane's direction makes the entity drive against s.
     let rel = wrap(h - pose.road_heading);
@@ -189,40 +168,37 @@ fn place(net: &RoadNetwork, road: usize, lane_id: i32, s: f64, offset: f64, alon
     Ok(Placement { x: pose.x, y: pose.y, z: Some(pose.z), h, lane: Some(lp) })
 }
 
-/// Face `p` at `h` from its road's reference direction; the lane direction it drives follows.
-fn turn_from_road_direction(net: &RoadNetwork, p: &mut Placement, h: f64) {
+/// Face `p` as esmini faces a road position (OSCPositionRoad, a RELATIVE_ROAD position): an
+/// absolute h as it is, else relative to the road's reference direction (h, or 0 without one).
+pub(crate) fn face_along_road(net: &RoadNetwork, p: &mut Placement, orientation: Option<&Orientation>) {
+    match orientation {
+        Some(Orientation { reference: Some(ReferenceContext::Absolute), h: Some(_), .. }) => {}
+        o => turn_from_road_direction(net, p, o.and_then(|o| o.h).unwrap_or(0.0)),
+    }
+}
+
+/// The drift atan(dt/ds) of the centre of lane `lane_id` of road `road` at `s` (esmini's
+/// Position::GetHOffset; 0 for a road that does not exist).
+pub(crate) fn lane_drift(net: &RoadNetwork, road: usize, lane_id: i32, s: f64) -> f64 {
+    net.roads.get(road).map_or(0.0, |r| crate::roads::lane_slope::drift_angle(r, r.section_index_at(s), lane_id, s))
+}
+
+/// Face `p` at `h` from its road's reference direction (plus the lane's drift, as esmini's
+/// relative headings); the lane direction it drives follows.
+pub(crate) fn turn_from_road_direction(net: &RoadNetwork, p: &mut Placement, h: f64) {
     let Some(lp) = p.lane.as_mut() else { return };
     let Some(pose) = lp.pose(net) else { return };
-    p.h = pose.road_heading + h;
+    p.h = pose.road_heading + h + lane_drift(net, lp.road, lp.lane_id, lp.s);
     lp.dir = if wrap(h).abs() <= std::f64::consts::FRAC_PI_2 + 1e-9 { 1.0 } else { -1.0 };
 }
 
-/// Placement at road coordinates (s, t): the lane containing t.
+/// Placement at road coordinates (s, t): attached to the lane esmini's Track2Lane picks, the
+/// driving lane containing t or else the nearest one (`lane_snap`), at the offset that keeps t.
 pub(crate) fn road_placement(net: &RoadNetwork, road: usize, s: f64, t: f64, o: Option<&Orientation>) -> Result<Placement, PositionError> {
     let r = net.roads.get(road).ok_or("road missing")?;
     let s = s.clamp(0.0, r.length);
     let section = r.section_index_at(s);
-    let mut found = None;
-    if let Some(sec) = r.lane_sections.get(section) {
-        for lane in sec.left.iter().chain(sec.right.iter()) {
-            if let Some((a, b)) = lane_borders(r, section, lane.id, s) {
-                let (lo, hi) = if a <= b { (a, b) } else { (b, a) };
-                if t >= lo && t <= hi && hi > lo {
-                    found = Some((lane.id, 0.5 * (a + b)));
-                    break;
-                }
-            }
-        }
-        if found.is_none() {
-            // Outside the road: the outermost lane on the side of t.
-            let side = if t >= r.lane_offset_at(s) { &sec.left } else { &sec.right };
-            let other = if t >= r.lane_offset_at(s) { &sec.right } else { &sec.left };
-            if let Some(l) = side.last().or(other.first()) {
-                found = lane_center_t(r, l.id, s).map(|c| (l.id, c));
-            }
-        }
-    }
-    let (lane_id, center) = found.unwrap_or((0, r.lane_offset_at(s)));
+    let (lane_id, offset) = crate::roads::lane_snap::snap(r, section, s, t, false).unwrap_or((0, t - r.lane_offset_at(s)));
     let along = drives_along_s(r.rule, lane_id);
-    place(net, road, lane_id, s, t - center, along, o)
+    place(net, road, lane_id, s, offset, along, o)
 }

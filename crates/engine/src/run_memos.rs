@@ -1,5 +1,5 @@
 //! One run's memos. The per-step memos of `roads` (reference poses, lane borders, lane shapes,
-//! world → lane searches) and `position_cache` (routes, trajectory paths) are keyed by the
+//! world → lane searches, esmini's junction connections) and `position_cache` (routes, trajectory paths) are keyed by the
 //! addresses of the network and scenario a run borrows, and live in thread-local slots so
 //! that the hot paths reach them without a handle. A run owns its own set and swaps it into
 //! the slots of the thread stepping it for the duration of a step (`RunMemos::enter`): two
@@ -8,7 +8,7 @@
 //! network reuses never finds a stale one.
 
 use crate::position_cache;
-use crate::roads::{lane_shape, locate, pose_memo};
+use crate::roads::{junction_connections, lane_shape, locate, pose_memo};
 
 /// The memo entries of one run.
 pub(crate) struct RunMemos {
@@ -16,12 +16,19 @@ pub(crate) struct RunMemos {
     shapes: lane_shape::Store,
     located: locate::Store,
     positions: position_cache::Store,
+    connections: junction_connections::Store,
 }
 
 impl RunMemos {
     /// No entries yet (a run starts).
     pub(crate) fn new() -> RunMemos {
-        RunMemos { poses: pose_memo::Store::new(), shapes: lane_shape::Store::new(), located: locate::Store::new(), positions: position_cache::Store::new() }
+        RunMemos {
+            poses: pose_memo::Store::new(),
+            shapes: lane_shape::Store::new(),
+            located: locate::Store::new(),
+            positions: position_cache::Store::new(),
+            connections: junction_connections::Store::new(),
+        }
     }
 
     /// This run's entries in the thread's slots until the guard drops (then the slots hold
@@ -36,6 +43,7 @@ impl RunMemos {
         self.shapes.swap_with_thread();
         self.located.swap_with_thread();
         self.positions.swap_with_thread();
+        self.connections.swap_with_thread();
     }
 }
 

@@ -1,5 +1,6 @@
 //! Paths from already-resolved world poses, one constructor per shape.
 
+use crate::angle;
 use crate::error::Error;
 use crate::nurbs::Nurbs;
 use crate::nurbs_path::NurbsPath;
@@ -13,6 +14,80 @@ use crate::{MAX_ITEMS, MAX_LENGTH};
 
 /// Vertices closer than this (m) are the same point.
 const SAME_POINT: f64 = 1e-9;
+
+/// esmini's player merges polyline vertices this close (m; its `--traj_filter` default)...
+const FILTER_RADIUS: f64 = 0.1;
+/// ... whose headings differ by less than this (rad)...
+const FILTER_HEADING: f64 = 0.1;
+/// ... unless the next distinct vertex is this much later (s): then the entity stands still.
+const FILTER_TIME: f64 = 1.0;
+/// esmini's SMALL_NUMBER.
+const ESMINI_SMALL: f64 = 1e-6;
+
+/// A polyline vertex as resolved: its pose, time stamp, whether its position gives a heading
+/// of its own and whether it is a relative position (esmini never merges those).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PolylineVertex {
+    pub pose: Pose,
+    pub time: Option<f64>,
+    pub explicit_heading: bool,
+    pub relative: bool,
+}
+
+/// esmini's PolyLineShape::FinalizeVertices as its player runs it (traj_filter 0.1): the
+/// first and last vertices stay; a vertex within 0.1 m of the one kept before it (and within
+/// 0.1 rad of its heading, esmini's signed difference) is dropped — or, when the next distinct
+/// vertex comes more than a second later, put on the kept one (the entity stands still there).
+/// Relative positions are never merged. A missing time counts as 0.
+pub fn filter_vertices(v: &[PolylineVertex]) -> Vec<PolylineVertex> {
+    if v.len() <= 2 {
+        return v.to_vec();
+    }
+    let same = |a: &PolylineVertex, b: &PolylineVertex| {
+        !a.relative
+            && !b.relative
+            && (a.pose.x - b.pose.x).hypot(a.pose.y - b.pose.y) < FILTER_RADIUS + ESMINI_SMALL
+            && angle::diff(a.pose.heading, b.pose.heading) < FILTER_HEADING + ESMINI_SMALL
+    };
+    let time = |x: &PolylineVertex| x.time.unwrap_or(0.0);
+    let mut w: Vec<PolylineVertex> = v.to_vec();
+    let (mut a, mut b, mut c) = (0usize, 1usize, 2usize);
+    while c < w.len() {
+        if same(&w[a], &w[b]) {
+            if same(&w[a], &w[c]) {
+                // b and c both close to a: c takes b's place
+                w[b] = w[c];
+                c += 1;
+            } else {
+                if time(&w[c]) - time(&w[a]) < FILTER_TIME + ESMINI_SMALL {
+                    // no stand-still: b goes, c is the new a
+                    a += 1;
+                    w[a] = w[c];
+                } else {
+                    // stand-still: b takes a's place (and pose), c is the new a
+                    let keep = PolylineVertex { pose: w[a].pose, relative: w[a].relative, explicit_heading: w[a].explicit_heading, time: w[b].time };
+                    a += 1;
+                    w[a] = keep;
+                    a += 1;
+                    w[a] = w[c];
+                }
+                b = c + 1;
+                c += 2;
+            }
+        } else {
+            a += 1;
+            w[a] = w[b];
+            b += 1;
+            c += 1;
+        }
+    }
+    if b < w.len() {
+        a += 1;
+        w[a] = w[b];
+    }
+    w.truncate(a + 1);
+    w
+}
 
 /// One clothoid-spline segment with its start resolved (None: continue from the previous
 /// segment's end, or from the path's start pose for the first).
@@ -77,21 +152,41 @@ fn all_or_none(shape: &'static str, times: &[Option<f64>], warnings: &mut Vec<St
 }
 
 impl Path {
-    /// A polyline through `vertices` (pose, optional time). Repeated vertices are dropped
-    /// from the geometry (their time stamps stay: the entity waits there); a closed
-    /// polyline gets a segment back to its first vertex.
+    /// A polyline through `vertices` (pose, optional time), none giving a heading of its own.
     pub fn polyline(vertices: &[(Pose, Option<f64>)], closed: bool) -> Result<Path, Error> {
+        let v: Vec<PolylineVertex> =
+            vertices.iter().map(|(pose, time)| PolylineVertex { pose: *pose, time: *time, explicit_heading: false, relative: false }).collect();
+        Path::polyline_of(&v, closed)
+    }
+
+    /// A polyline through `vertices`, filtered as esmini's player filters them (see
+    /// [`filter_vertices`]). Repeated vertices are dropped from the geometry (their time
+    /// stamps stay: the entity waits there); a closed polyline gets a segment back to its
+    /// first vertex.
+    pub fn polyline_of(vertices: &[PolylineVertex], closed: bool) -> Result<Path, Error> {
         const SHAPE: &str = "Polyline";
         check_count(SHAPE, "vertices", vertices.len(), 2)?;
         let mut warnings = Vec::new();
-        let mut xyz: Vec<[f64; 3]> = Vec::with_capacity(vertices.len() + 1);
-        let mut stamps = Vec::with_capacity(vertices.len());
-        let mut s = 0.0;
-        for (i, (p, t)) in vertices.iter().enumerate() {
-            check_pose(SHAPE, format!("vertex {i}"), p)?;
-            if let Some(t) = t {
-                check_num(SHAPE, format!("time of vertex {i}"), *t)?;
+        for (i, v) in vertices.iter().enumerate() {
+            check_pose(SHAPE, format!("vertex {i}"), &v.pose)?;
+            if let Some(t) = v.time {
+                check_num(SHAPE, format!("time of vertex {i}"), t)?;
             }
+        }
+        let filtered = filter_vertices(vertices);
+        if filtered.len() < vertices.len() {
+            warnings.push(format!(
+                "{SHAPE}: {} of {} vertices lie within {FILTER_RADIUS} m of a neighbour and are merged, as esmini's player merges them (traj_filter)",
+                vertices.len() - filtered.len(),
+                vertices.len()
+            ));
+        }
+        let mut xyz: Vec<[f64; 3]> = Vec::with_capacity(filtered.len() + 1);
+        let mut explicit: Vec<Option<f64>> = Vec::with_capacity(filtered.len() + 1);
+        let mut stamps = Vec::with_capacity(filtered.len());
+        let mut s = 0.0;
+        for (i, v) in filtered.iter().enumerate() {
+            let p = &v.pose;
             match xyz.last() {
                 Some(q) if (p.x - q[0]).hypot(p.y - q[1]) <= SAME_POINT => {
                     warnings.push(format!("{SHAPE}: vertex {i} repeats the previous one and adds no segment"));
@@ -99,33 +194,46 @@ impl Path {
                 Some(q) => {
                     s += (p.x - q[0]).hypot(p.y - q[1]);
                     xyz.push([p.x, p.y, p.z]);
+                    explicit.push(v.explicit_heading.then_some(p.heading));
                 }
-                None => xyz.push([p.x, p.y, p.z]),
+                None => {
+                    xyz.push([p.x, p.y, p.z]);
+                    explicit.push(v.explicit_heading.then_some(p.heading));
+                }
             }
-            stamps.push((s, *t));
+            stamps.push((s, v.time));
         }
         if xyz.len() < 2 {
-            return Err(Error::ZeroLength { shape: SHAPE });
+            // Every vertex at one point: esmini keeps the entity there (for the time the
+            // stamps span, if any).
+            warnings.push(format!("{SHAPE}: all vertices lie at one point; the path has no length"));
         }
-        if closed {
+        if closed && xyz.len() > 1 {
             if let (Some(first), Some(last)) = (xyz.first().copied(), xyz.last()) {
                 if (first[0] - last[0]).hypot(first[1] - last[1]) > SAME_POINT {
                     xyz.push(first);
                 }
             }
         }
-        let line = Polyline::new(&xyz, closed);
+        let line = Polyline::new(&xyz, &explicit, closed);
         let length = line.length();
-        check_length(SHAPE, length)?;
+        if length > MAX_LENGTH {
+            return Err(Error::BadNumber { shape: SHAPE, what: "the total length".into(), constraint: " ≤ 1e6 m", value: length });
+        }
+        // esmini reads a vertex without a time as time 0 (ScenarioReader: strtod of nothing);
+        // stamps need not rise.
         let times: Vec<Option<f64>> = stamps.iter().map(|p| p.1).collect();
-        let times = match all_or_none(SHAPE, &times, &mut warnings) {
-            Some(ts) => {
-                if closed && xyz.len() > vertices.len() {
-                    warnings.push(format!("{SHAPE}: closed and timed; the closing segment has no time stamps and takes no time"));
-                }
-                Some(TimeTable::new(SHAPE, stamps.iter().zip(ts).map(|((s, _), t)| (*s, t)).collect())?)
+        let given = times.iter().filter(|t| t.is_some()).count();
+        let times = if given == 0 {
+            None
+        } else {
+            if given < times.len() {
+                warnings.push(format!("{SHAPE}: only {given} of {} vertices have a time stamp; the others count as time 0, as in esmini", times.len()));
             }
-            None => None,
+            if closed && xyz.len() > filtered.len() {
+                warnings.push(format!("{SHAPE}: closed and timed; the closing segment has no time stamps and takes no time"));
+            }
+            Some(TimeTable::unordered(SHAPE, stamps.iter().map(|(s, t)| (*s, t.unwrap_or(0.0))).collect())?)
         };
         Ok(Path { curve: Curve::Polyline(line), length, closed, times, warnings })
     }

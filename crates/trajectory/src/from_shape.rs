@@ -1,6 +1,6 @@
 //! Paths from the OpenSCENARIO model: positions resolved through the engine's closure.
 
-use crate::constructors::SplineSegment;
+use crate::constructors::{PolylineVertex, SplineSegment};
 use crate::error::Error;
 use crate::path::Path;
 use crate::pose::Pose;
@@ -27,9 +27,10 @@ impl Path {
             Shape::Polyline(vertices) => {
                 let mut v = Vec::with_capacity(vertices.len().min(crate::MAX_ITEMS + 1));
                 for (i, vx) in vertices.iter().take(crate::MAX_ITEMS + 1).enumerate() {
-                    v.push((resolve("Polyline", format!("vertex {i}"), resolver, &vx.position)?, vx.time));
+                    let pose = resolve("Polyline", format!("vertex {i}"), resolver, &vx.position)?;
+                    v.push(PolylineVertex { pose, time: vx.time, explicit_heading: gives_heading(&vx.position), relative: is_relative(&vx.position) });
                 }
-                Path::polyline(&v, closed)
+                Path::polyline_of(&v, closed)
             }
             Shape::Clothoid { curvature, curvature_prime, length, start_time, stop_time, position } => {
                 let start = match position {
@@ -65,4 +66,32 @@ impl Path {
             }
         }
     }
+}
+
+/// Whether a position gives a heading of its own (esmini sets its heading mode: a World
+/// position's h, an Orientation's h).
+pub fn gives_heading(p: &Position) -> bool {
+    match p {
+        Position::World { h, .. } => h.is_some(),
+        Position::RelativeWorld { orientation, .. }
+        | Position::RelativeObject { orientation, .. }
+        | Position::Road { orientation, .. }
+        | Position::RelativeRoad { orientation, .. }
+        | Position::Lane { orientation, .. }
+        | Position::RelativeLane { orientation, .. } => orientation.as_ref().is_some_and(|o| o.h.is_some()),
+        _ => false,
+    }
+}
+
+/// Whether esmini counts a position as relative (not of its NORMAL type): relative to an
+/// entity, or in route coordinates.
+fn is_relative(p: &Position) -> bool {
+    matches!(
+        p,
+        Position::RelativeWorld { .. }
+            | Position::RelativeObject { .. }
+            | Position::RelativeRoad { .. }
+            | Position::RelativeLane { .. }
+            | Position::Route { .. }
+    )
 }

@@ -27,11 +27,12 @@ mod spiral;
 mod time_mapping;
 mod time_table;
 
-pub use constructors::SplineSegment;
+pub use constructors::{filter_vertices, PolylineVertex, SplineSegment};
 pub use error::Error;
-pub use from_shape::Resolver;
+pub use from_shape::{gives_heading, Resolver};
 pub use nurbs::Nurbs;
 pub use path::Path;
+pub use polyline::Interpolation;
 pub use pose::{PathPoint, Pose};
 pub use time_mapping::{TimeDomain, TimeMapping};
 pub use time_table::TimeTable;

@@ -62,6 +62,19 @@ impl Path {
         }
     }
 
+    /// Whether the shape is a polyline (esmini times its segments by constant accelerations in
+    /// the `follow` mode; the other shapes' time runs linearly with their length).
+    pub fn is_polyline(&self) -> bool {
+        matches!(self.curve, Curve::Polyline(_))
+    }
+
+    /// How a polyline's heading is interpolated between its vertices (other shapes keep theirs).
+    pub fn set_interpolation(&mut self, mode: crate::polyline::Interpolation) {
+        if let Curve::Polyline(p) = &mut self.curve {
+            p.mode = mode;
+        }
+    }
+
     /// Position, heading and curvature at arc length `s` (see [`Path::normalize_s`]).
     pub fn pose_at(&self, s: f64) -> PathPoint {
         self.eval(self.normalize_s(s))

@@ -12,6 +12,17 @@ pub struct TimeTable {
 impl TimeTable {
     /// Build from (s, t) pairs; `shape` names the shape in errors.
     pub fn new(shape: &'static str, points: Vec<(f64, f64)>) -> Result<TimeTable, Error> {
+        TimeTable::build(shape, points, true)
+    }
+
+    /// [`TimeTable::new`] for a polyline's vertices, whose times esmini takes in any order
+    /// (its time lookup walks the vertices: see the engine's polyline timing). `s_at_time`
+    /// and `time_at` assume order; `points` gives them as written.
+    pub fn unordered(shape: &'static str, points: Vec<(f64, f64)>) -> Result<TimeTable, Error> {
+        TimeTable::build(shape, points, false)
+    }
+
+    fn build(shape: &'static str, points: Vec<(f64, f64)>, ordered: bool) -> Result<TimeTable, Error> {
         if points.is_empty() {
             return Err(Error::TooFew { shape, what: "time stamps", needed: 1, found: 0 });
         }
@@ -25,7 +36,7 @@ impl TimeTable {
         }
         for (i, w) in points.windows(2).enumerate() {
             if let [a, b] = w {
-                if b.1 < a.1 {
+                if ordered && b.1 < a.1 {
                     return Err(Error::NotMonotone { shape, what: "time stamps", index: i + 1 });
                 }
                 if b.0 < a.0 {

@@ -9,16 +9,29 @@ fn p(x: f64, y: f64) -> Pose {
 }
 
 #[test]
-fn too_few_and_coincident_vertices_are_errors() {
+fn too_few_vertices_and_bad_numbers_are_errors() {
     assert!(matches!(Path::polyline(&[(p(0.0, 0.0), None)], false), Err(Error::TooFew { .. })));
-    assert_eq!(Path::polyline(&[(p(1.0, 1.0), None), (p(1.0, 1.0), None)], false), Err(Error::ZeroLength { shape: "Polyline" }));
     assert!(matches!(Path::polyline(&[(p(0.0, 0.0), None), (p(f64::NAN, 1.0), None)], false), Err(Error::BadNumber { .. })));
 }
 
 #[test]
-fn decreasing_times_are_an_error() {
-    let r = Path::polyline(&[(p(0.0, 0.0), Some(2.0)), (p(1.0, 0.0), Some(1.0))], false);
-    assert!(matches!(r, Err(Error::NotMonotone { index: 1, .. })), "{r:?}");
+fn coincident_vertices_make_a_path_without_length_as_in_esmini() {
+    // esmini keeps the entity at the point for the time the stamps span
+    let path = Path::polyline(&[(p(1.0, 1.0), Some(0.0)), (p(1.0, 1.0), Some(3.0))], false).expect("a path");
+    assert_eq!(path.length(), 0.0);
+    assert_eq!(path.time_range(), Some((0.0, 3.0)));
+    let at = path.pose_at(0.5);
+    assert_eq!((at.x, at.y), (1.0, 1.0));
+    assert!(path.warnings.iter().any(|w| w.contains("one point")), "{:?}", path.warnings);
+}
+
+#[test]
+fn polyline_times_are_taken_as_written() {
+    // esmini walks the vertices for a time and reads a missing stamp as 0
+    let path = Path::polyline(&[(p(0.0, 0.0), Some(2.0)), (p(1.0, 0.0), Some(1.0))], false).expect("a path");
+    assert_eq!(path.time_table().map(|t| t.points().to_vec()), Some(vec![(0.0, 2.0), (1.0, 1.0)]));
+    let partial = Path::polyline(&[(p(0.0, 0.0), None), (p(1.0, 0.0), Some(1.0))], false).expect("a path");
+    assert_eq!(partial.time_table().map(|t| t.points().to_vec()), Some(vec![(0.0, 0.0), (1.0, 1.0)]));
 }
 
 #[test]

@@ -64,9 +64,10 @@ fn timed_polyline_interpolates_linearly_and_waits_at_repeated_vertices() {
 }
 
 #[test]
-fn partial_time_stamps_are_ignored_with_a_warning() {
-    let path = Path::polyline(&[(p(0.0, 0.0), Some(0.0)), (p(1.0, 0.0), None)], false).unwrap();
-    assert!(!path.is_timed());
+fn a_missing_polyline_time_stamp_is_time_0_with_a_warning() {
+    // esmini's ScenarioReader reads a vertex without a time as 0
+    let path = Path::polyline(&[(p(0.0, 0.0), Some(1.0)), (p(1.0, 0.0), None)], false).unwrap();
+    assert_eq!(path.time_table().map(|t| t.points().to_vec()), Some(vec![(0.0, 1.0), (1.0, 0.0)]));
     assert_eq!(path.warnings.len(), 1);
 }
 

@@ -15,43 +15,89 @@ use crate::dynamics::SMALL;
 use crate::positions::resolve;
 use crate::sim::Sim;
 use openscenario::{FollowingMode, ReferenceContext, TimeReference, Trajectory};
-use trajectory::{Path, Pose, TimeDomain, TimeMapping};
+use trajectory::{Interpolation, Path, Pose, TimeDomain, TimeMapping};
 
 impl FollowTrajectoryRt {
     fn s_at_time(&self, t: f64) -> Option<f64> {
-        let Some(segs) = &self.accel else { return self.path.s_at_time(t) };
-        let first = segs.first()?;
-        if t <= first.1 {
-            return Some(first.0);
+        match &self.vertices {
+            Some(v) if !self.path.is_closed() => Some(polyline_s_at_time(v, self.path.length(), t)),
+            _ => self.path.s_at_time(t),
         }
-        let i = segs.partition_point(|q| q.1 <= t).saturating_sub(1);
-        let (s0, t0, v0, a) = segs[i];
-        let tau = t - t0;
-        Some(s0 + v0 * tau + 0.5 * a * tau * tau)
     }
 }
 
-/// The constant-acceleration segments of a timed path (see [`FollowTrajectoryRt::accel`]).
-fn accel_segments(path: &Path) -> Option<Vec<(f64, f64, f64, f64)>> {
+/// esmini's SMALL_NUMBER.
+const SMALL_NUMBER: f64 = 1e-6;
+
+/// esmini's SIGN: zero counts as positive.
+fn esmini_sign(x: f64) -> f64 {
+    if x < 0.0 {
+        -1.0
+    } else {
+        1.0
+    }
+}
+
+/// A timed polyline's vertices as esmini's PolyLineShape::CalculatePolyLine times them:
+/// (s, t, speed, acceleration towards the next). `follow` mode: the speed starts at the
+/// entity's (`initial_speed`) and stays continuous, each segment at a constant acceleration; a
+/// segment that would turn the speed's sign (too much time for its distance) brakes to a stop
+/// at its end instead (a = −v²/2d, arriving early); a segment without distance stops the
+/// entity. `position` mode: each vertex at its segment's mean speed, no acceleration, the
+/// last vertex at rest.
+fn polyline_timing(path: &Path, follow: bool, initial_speed: f64) -> Option<Vec<(f64, f64, f64, f64)>> {
     let pts = path.time_table()?.points();
-    let mut out = Vec::with_capacity(pts.len());
-    let mut v = match pts {
-        [a, b, ..] if b.1 - a.1 > SMALL => (b.0 - a.0) / (b.1 - a.1),
-        _ => 0.0,
-    };
-    for w in pts.windows(2) {
-        if let [a, b] = w {
-            let (d, dt) = (b.0 - a.0, b.1 - a.1);
-            let acc = if dt > SMALL { 2.0 * (d - v * dt) / (dt * dt) } else { 0.0 };
-            out.push((a.0, a.1, v, acc));
-            v += acc * dt;
+    let mut out: Vec<(f64, f64, f64, f64)> = pts.iter().map(|&(s, t)| (s, t, 0.0, 0.0)).collect();
+    if follow {
+        let mut v = initial_speed;
+        if let Some(first) = out.first_mut() {
+            first.2 = v;
+        }
+        for i in 1..out.len() {
+            let (d, dt) = (out[i].0 - out[i - 1].0, out[i].1 - out[i - 1].1);
+            let mut acc = 0.0;
+            if d.abs() > SMALL_NUMBER {
+                acc = 2.0 * (d - v * dt) / (dt * dt);
+                if esmini_sign(v + acc * dt) != esmini_sign(v) {
+                    acc = -(v * v) / (2.0 * d);
+                    v = 0.0;
+                } else {
+                    v += acc * dt;
+                }
+            } else {
+                v = 0.0;
+            }
+            out[i - 1].3 = if acc.is_finite() { acc } else { 0.0 };
+            out[i].2 = if v.is_finite() { v } else { 0.0 };
+        }
+    } else {
+        for i in 0..out.len().saturating_sub(1) {
+            let (d, dt) = (out[i + 1].0 - out[i].0, out[i + 1].1 - out[i].1);
+            out[i].2 = if dt > SMALL_NUMBER { d / dt } else { 0.0 };
         }
     }
-    if let Some(last) = pts.last() {
-        // After the last stamp the entity stays at the end.
-        out.push((last.0, last.1, 0.0, 0.0));
-    }
     Some(out)
+}
+
+/// esmini's PolyLineShape::Evaluate by time `t`: past the last vertex's time the end; else the
+/// first vertex whose next one is not earlier than `t` (walking the vertices as written),
+/// moved on by its speed and acceleration — stopping where a braking speed reaches zero. The
+/// distance is not held to the vertex's segment: a vertex that starts a stand-still with
+/// speed left moves on at that speed until the next stamp (esmini's), then the entity jumps
+/// back to where the stamps put it.
+fn polyline_s_at_time(v: &[(f64, f64, f64, f64)], length: f64, t: f64) -> f64 {
+    let Some(last) = v.last() else { return 0.0 };
+    if t > last.1 {
+        return length;
+    }
+    let ordered = v.windows(2).all(|w| w[0].1 <= w[1].1);
+    let i = if ordered { v[1..].partition_point(|q| q.1 < t) } else { v[1..].iter().take_while(|q| q.1 < t).count() };
+    let Some(&(s0, t0, v0, a)) = v.get(i) else { return last.0 };
+    let mut tau = (t - t0).max(0.0);
+    if a < 0.0 {
+        tau = tau.min(-v0 / a);
+    }
+    (s0 + v0 * tau + 0.5 * a * tau * tau).clamp(0.0, length)
 }
 
 /// The world pose of a position resolved for a trajectory vertex.
@@ -82,7 +128,12 @@ impl<'a> Sim<'a> {
         let current = Pose::new(en.x, en.y, en.z, en.h);
         let entity_speed = en.speed;
         let path = match build_path(self, traj, current) {
-            Ok(p) => p,
+            // esmini's FollowTrajectoryAction::Start: a polyline's heading turns over whole
+            // segments in the `follow` mode, across corners only in the `position` mode.
+            Ok(mut p) => {
+                p.set_interpolation(if mode == FollowingMode::Follow { Interpolation::Segment } else { Interpolation::Corner });
+                p
+            }
             Err(msg) => {
                 self.warn_action(slot, format!("FollowTrajectoryAction: trajectory `{}` cannot be followed: {msg}", traj.name));
                 return ActionRt::Done;
@@ -92,7 +143,17 @@ impl<'a> Sim<'a> {
             let msg = format!("trajectory `{}`: {w}", traj.name);
             self.warn_action(slot, msg);
         }
+        let span = path.time_range().map_or(0.0, |r| r.1 - r.0);
         let timing = match time_ref {
+            // esmini's ScenarioReader: a trajectory whose stamps span no time is followed without
+            // its time reference.
+            TimeReference::Timing { .. } if path.is_timed() && span < SMALL_NUMBER => {
+                self.warn_action(
+                    slot,
+                    format!("FollowTrajectoryAction: trajectory `{}` spans no time; its time reference is ignored, as esmini ignores it", traj.name),
+                );
+                None
+            }
             TimeReference::Timing { domain, scale, offset } if path.is_timed() => Some(TimeMapping {
                 domain: if *domain == ReferenceContext::Absolute { TimeDomain::Absolute } else { TimeDomain::Relative },
                 scale: *scale,
@@ -105,7 +166,11 @@ impl<'a> Sim<'a> {
             TimeReference::None => None,
         };
         let s = path.normalize_s(initial_offset.unwrap_or(0.0));
-        let time = path.time_at(s).unwrap_or(0.0);
+        // esmini's trajectory time at the start s: at (or within SMALL_NUMBER of) a polyline's end
+        // it is the last vertex's time (PolyLineBase::Evaluate), so a path without length
+        // that is timed relatively is over at once.
+        let at_end = path.is_polyline() && s > path.length() - SMALL_NUMBER;
+        let time = if at_end { path.time_range().map_or(0.0, |r| r.1) } else { path.time_at(s).unwrap_or(0.0) };
         // esmini's FollowTrajectoryAction::Start: without time stamps the speed's sign picks the
         // way the entity faces (against the path when reversing), and that sign is kept for
         // the whole action.
@@ -119,22 +184,25 @@ impl<'a> Sim<'a> {
                 format!("FollowTrajectoryAction: trajectory `{}` is started reversing and its vertices give headings; esmini's motion along explicit vertex headings is not modelled (the entity faces against the path and advances along it)", traj.name),
             );
         }
+        // A timed polyline is timed vertex by vertex (PolyLineShape::CalculatePolyLine); the other
+        // shapes' time runs linearly with their length.
+        let vertices = if timing.is_some() && path.is_polyline() { polyline_timing(&path, mode == FollowingMode::Follow, entity_speed) } else { None };
+        let start_speed = timing.map(|_| start_speed(&path, s, vertices.as_deref()));
         let p = path.pose_at(s);
         let heading = p.heading + if speed_sign < 0.0 { std::f64::consts::PI } else { 0.0 };
-        let start_speed = timing.map(|_| start_speed(&path, s));
         let net = self.net;
         let en = &mut self.entities[e];
         en.set_world(net, p.x, p.y, None, heading);
         if let Some(v) = start_speed {
             en.speed = speed_sign * v;
         }
-        let accel = if timing.is_some() && mode == FollowingMode::Follow { accel_segments(&path) } else { None };
-        ActionRt::FollowTrajectory(Box::new(FollowTrajectoryRt { path, s, timing, time, accel, heading_sign: speed_sign, elevated: elevated(traj) }))
+
+        let clock = esmini_clock(self.time_origin(), self.dt, self.time);
+        ActionRt::FollowTrajectory(Box::new(FollowTrajectoryRt { path, s, timing, time, clock, vertices, heading_sign: speed_sign, elevated: elevated(traj) }))
     }
 
     pub(super) fn step_follow_trajectory(&mut self, e: usize, f: &mut FollowTrajectoryRt) -> bool {
         let dt = self.dt;
-        let sim_time = self.time;
         let ghost_offset = self.ghost.as_ref().filter(|g| g.entity == e).map_or(0.0, |g| g.headstart);
         let Some(en) = self.entities.get(e) else { return true };
         let speed = en.speed;
@@ -155,20 +223,29 @@ impl<'a> Sim<'a> {
                     TimeDomain::Relative => f.time += m.scale * dt,
                     // esmini's FollowTrajectoryAction::Move: a ghost reads absolute time stamps
                     // its head start later (timeOffset), so it is where its entity will be.
-                    TimeDomain::Absolute => f.time = (sim_time + dt) * m.scale + ghost_offset,
+                    TimeDomain::Absolute => f.time = (f.clock + dt) * m.scale + ghost_offset,
                 }
                 f.s = f.s_at_time(f.time + m.offset).unwrap_or(f.s);
                 let end = f.path.time_range().map_or(0.0, |r| r.1);
-                if dt > SMALL && f.time + m.offset < end + SMALL {
+                // esmini's Move updates the speed while the trajectory time (relative: with
+                // the offset; absolute: without it) has not passed the last stamp.
+                let reached = match m.domain {
+                    TimeDomain::Relative => f.time + m.offset,
+                    TimeDomain::Absolute => f.time,
+                };
+                if dt > SMALL && reached < end + SMALL {
                     new_speed = (f.s - old_s).abs() / dt;
                 }
             }
         }
+        // esmini's Step ends a timed trajectory when its time plus the offset passes the last
+        // stamp (TimeReference offset included).
+        let time_offset = f.timing.map_or(0.0, |m| m.offset);
         let done = match f.timing {
             // esmini's FollowTrajectoryAction::Step: the end ahead, or the start when moving back.
             None => !f.path.is_closed() && dt > 0.0 && speed != 0.0 && ((direction > 0.0 && f.s > len - SMALL) || (direction < 0.0 && f.s < SMALL)),
             // Summed steps drift below the last stamp by rounding; esmini's sum reaches it.
-            Some(_) => f.path.time_range().is_some_and(|r| f.time >= r.1 - 1e-9),
+            Some(_) => f.path.time_range().is_some_and(|r| f.time + time_offset >= r.1 - 1e-9),
         };
         // A timed path that ends leaves the entity at its end, also when it is marked closed.
         let at_end = done && f.timing.is_some() && f.path.is_closed() && f.s >= len - SMALL;
@@ -181,7 +258,7 @@ impl<'a> Sim<'a> {
             // The rest of the step's distance continues along the final heading.
             let rest = match f.timing {
                 None => speed.abs() * dt - (f.s - old_s).abs(),
-                Some(_) => (f.time - f.path.time_range().map_or(0.0, |r| r.1)).max(0.0) * new_speed,
+                Some(_) => (f.time + time_offset - f.path.time_range().map_or(0.0, |r| r.1)).max(0.0) * new_speed,
             };
             x += rest * p.heading.cos();
             y += rest * p.heading.sin();
@@ -191,24 +268,26 @@ impl<'a> Sim<'a> {
         en.set_world(net, x, y, None, heading);
         en.speed = new_speed;
         en.moved_by_action = true;
+        f.clock += dt;
         done
     }
 }
 
+/// esmini's simulation clock at `time`: the steps of `dt` from `origin` summed one by one,
+/// with the rounding that sum has (1.49 + 0.01 is 1.5 exactly, the sum of 150 steps of 0.01
+/// a hair above), which decides the segment an absolute time stamp falls in.
+fn esmini_clock(origin: f64, dt: f64, time: f64) -> f64 {
+    if dt <= 0.0 {
+        return time;
+    }
+    let n = ((time - origin) / dt).round().max(0.0) as u64;
+    (0..n).fold(origin, |t, _| t + dt)
+}
+
 /// Whether a polyline vertex of `traj` gives a heading of its own.
 fn explicit_headings(traj: &Trajectory) -> bool {
-    use openscenario::Position as P;
     match &traj.shape {
-        openscenario::Shape::Polyline(vs) => vs.iter().any(|v| match &v.position {
-            P::World { h, .. } => h.is_some(),
-            P::RelativeWorld { orientation, .. }
-            | P::RelativeObject { orientation, .. }
-            | P::Road { orientation, .. }
-            | P::RelativeRoad { orientation, .. }
-            | P::Lane { orientation, .. }
-            | P::RelativeLane { orientation, .. } => orientation.is_some_and(|o| o.h.is_some()),
-            _ => false,
-        }),
+        openscenario::Shape::Polyline(vs) => vs.iter().any(|v| trajectory::gives_heading(&v.position)),
         _ => false,
     }
 }
@@ -235,16 +314,22 @@ fn move_s(path: &Path, s: f64, ds: f64) -> f64 {
     }
 }
 
-/// Speed along the first timed segment at or after arc length `s`.
-fn start_speed(path: &Path, s: f64) -> f64 {
+/// The speed esmini gives the entity when a timed trajectory starts at arc length `s`
+/// (RMTrajectory::GetSpeed): the vertex speeds interpolated linearly by s (a polyline's from
+/// `polyline_timing`; other shapes: their mean speed).
+fn start_speed(path: &Path, s: f64, vertices: Option<&[(f64, f64, f64, f64)]>) -> f64 {
     let Some(tt) = path.time_table() else { return 0.0 };
-    let pts = tt.points();
-    for w in pts.windows(2) {
-        if let [a, b] = w {
-            if b.0 > s - SMALL && b.1 > a.1 + SMALL {
-                return (b.0 - a.0) / (b.1 - a.1);
-            }
+    let Some(v) = vertices else {
+        let (t0, t1) = (tt.start_time(), tt.end_time());
+        return if t1 - t0 > SMALL { path.length() / (t1 - t0) } else { 0.0 };
+    };
+    let i = v.partition_point(|q| q.0 < s).saturating_sub(1).min(v.len().saturating_sub(1));
+    match (v.get(i), v.get(i + 1)) {
+        (Some(a), Some(b)) if b.0 - a.0 > SMALL => {
+            let u = ((s - a.0) / (b.0 - a.0)).clamp(0.0, 1.0);
+            (1.0 - u) * a.2 + u * b.2
         }
+        (Some(a), _) => a.2,
+        _ => 0.0,
     }
-    0.0
 }

@@ -38,7 +38,7 @@ impl<'a> Sim<'a> {
         };
         let Some(en) = self.entities.get(e) else { return ActionRt::Done };
         let from = en.lane.map(|lp| routing::Waypoint { road: lp.road, lane: lp.lane_id, s: lp.s, along_s: Some(lp.dir > 0.0) });
-        let to = resolve(target, Some(net), &self.entities).ok().and_then(|p| waypoint_of(&p));
+        let to = resolve(target, Some(net), &self.entities).ok().and_then(|p| waypoint_of(target, &p, net));
         let (Some(from), Some(to)) = (from, to) else {
             self.warn_action(slot, "AcquirePositionAction: the entity or the target is not on a lane".into());
             return ActionRt::Done;

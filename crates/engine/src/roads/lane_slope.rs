@@ -1,8 +1,8 @@
 //! How fast a lane's centre moves sideways along the road: dt/ds of the centre of a lane, from
 //! the slopes of the lane offset and of the widths (or borders) of the lanes between it and
 //! the reference line. An entity that follows a widening or narrowing lane drifts sideways,
-//! and esmini turns its heading along that drift: the heading of a lane follower is the
-//! direction of its path, road heading + atan(dt/ds / (1 − κ·t)).
+//! and esmini turns its heading by atan(dt/ds) (Position::GetHOffset: the slope in road s, not
+//! scaled to the lane's own length on a curve).
 
 use opendrive::model::poly::piecewise_slope;
 use opendrive::model::poly::record_at;
@@ -36,13 +36,13 @@ pub(crate) fn lane_center_slope(road: &Road, section: usize, lane_id: i32, s: f6
 }
 
 /// The turn of a lane follower's heading away from the road direction: atan of the centre's
-/// sideways slope over the lane's own length scale (1 − κ·t).
-pub(crate) fn drift_angle(road: &Road, section: usize, lane_id: i32, s: f64, t: f64, curvature: f64) -> f64 {
+/// sideways slope (esmini's Position::GetHOffset).
+pub(crate) fn drift_angle(road: &Road, section: usize, lane_id: i32, s: f64) -> f64 {
     let slope = lane_center_slope(road, section, lane_id, s);
     if slope == 0.0 {
         return 0.0;
     }
-    (slope / (1.0 - curvature * t).max(0.1)).atan()
+    slope.atan()
 }
 
 #[cfg(test)]
@@ -64,7 +64,7 @@ mod tests {
         assert_eq!(lane_center_slope(road, 0, -1, 20.0), 0.0);
         // Lane −2's centre is at −3 − w/2, w' = 0.1: dt/ds = −0.05.
         assert!((lane_center_slope(road, 0, -2, 20.0) + 0.05).abs() < 1e-15);
-        assert!((drift_angle(road, 0, -2, 20.0, -4.0, 0.0) - (-0.05f64).atan()).abs() < 1e-15);
+        assert!((drift_angle(road, 0, -2, 20.0) - (-0.05f64).atan()).abs() < 1e-15);
         // Past s = 40 the width is constant again.
         assert_eq!(lane_center_slope(road, 0, -2, 60.0), 0.0);
     }

@@ -2,11 +2,13 @@
 //! attached to a lane, and moving along the lanes through sections, roads and junctions.
 
 pub(crate) mod banking;
+pub(crate) mod junction_connections;
 pub(crate) mod lane_geometry;
 pub(crate) mod lane_kind;
 pub(crate) mod lane_position;
 pub(crate) mod lane_shape;
 pub(crate) mod lane_slope;
+pub(crate) mod lane_snap;
 pub(crate) mod locate;
 pub(crate) mod offroad;
 pub(crate) mod pose_memo;
@@ -16,4 +18,4 @@ pub(crate) mod road_path;
 pub(crate) mod zero_width;
 
 pub(crate) use lane_position::LanePos;
-pub(crate) use road_follow::{move_along_route, move_along_route_drawing, move_along_s, MoveStatus};
+pub(crate) use road_follow::{move_along_road_s, move_along_route, move_along_route_drawing, move_along_s, MoveStatus};

@@ -5,7 +5,8 @@
 //! Junction rule without a route, as esmini's `Position::MoveToConnectingRoad` with junction
 //! selector angle 0 (straight on, which is what esmini 3.6's default controller uses): the
 //! continuations are visited in the junction's connection order and the one whose heading at its
-//! far end turns least from the heading the entity drives in wins; a later one that turns less
+//! far end turns least from the driving direction of the entity's lane wins (whichever way the
+//! entity faces or moves); a later one that turns less
 //! wins outright, one that turns as much (within 1e-10 rad, e.g. the two ±90° arms of a T) wins
 //! when a coin drawn from esmini's global generator says 1 (`esmini_random`). Only the default
 //! controller's move draws (`move_along_route_drawing`); probes and other moves keep the earlier
@@ -47,28 +48,54 @@ pub(crate) fn move_along_s(net: &RoadNetwork, pos: &mut LanePos, dist: f64) -> M
 
 /// [`move_along_s`], taking at junctions the road an assigned route continues on.
 pub(crate) fn move_along_route(net: &RoadNetwork, pos: &mut LanePos, dist: f64, route: Option<&routing::Route>) -> MoveStatus {
-    move_along(net, pos, dist, route, None)
+    move_along(net, pos, dist, route, None, false, true)
+}
+
+/// Move `pos` by `ds` in road s (not a distance along its lane) in the direction it faces,
+/// taking at junctions the road `route` continues on: esmini's Position::MoveAlongS with
+/// actualDistance false, as a relative position moves a copy of its reference entity.
+/// A junction tie is broken by a draw from `random` when given (esmini's seeded draw), else
+/// the first of the tied arms.
+pub(crate) fn move_along_road_s(
+    net: &RoadNetwork,
+    pos: &mut LanePos,
+    ds: f64,
+    route: Option<&routing::Route>,
+    random: Option<&mut EsminiRandom>,
+) -> MoveStatus {
+    move_along(net, pos, ds, route, random, false, false)
 }
 
 /// [`move_along_route`] for an entity's own move by the default controller: a junction tie is
-/// broken by a draw from esmini's generator, as esmini does.
+/// broken by a draw from esmini's generator, as esmini does; `sidewalks`: the entity is a
+/// pedestrian, whose lane, when it narrows to nothing, may give way to a sidewalk.
 pub(crate) fn move_along_route_drawing(
     net: &RoadNetwork,
     pos: &mut LanePos,
     dist: f64,
     route: Option<&routing::Route>,
     random: &mut EsminiRandom,
+    sidewalks: bool,
 ) -> MoveStatus {
-    move_along(net, pos, dist, route, Some(random))
+    move_along(net, pos, dist, route, Some(random), sidewalks, true)
 }
 
-fn move_along(net: &RoadNetwork, pos: &mut LanePos, dist: f64, route: Option<&routing::Route>, mut random: Option<&mut EsminiRandom>) -> MoveStatus {
+/// `along_lane`: `dist` is a distance along the lane (scaled to road s on curves), else road s.
+fn move_along(
+    net: &RoadNetwork,
+    pos: &mut LanePos,
+    dist: f64,
+    route: Option<&routing::Route>,
+    mut random: Option<&mut EsminiRandom>,
+    sidewalks: bool,
+    along_lane: bool,
+) -> MoveStatus {
     let Some(road) = net.roads.get(pos.road) else { return MoveStatus::EndOfRoad };
     let s0 = pos.s.clamp(0.0, road.length);
     let p = super::pose_memo::reference_pose(road, s0);
     let t = super::pose_memo::lane_borders_at(road, pos.lane_id, s0).map_or(0.0, |(a, b)| 0.5 * (a + b)) + pos.offset;
     // Distance along the lane to distance along the reference line.
-    let scale = (1.0 - p.curvature * t).max(0.1);
+    let scale = if along_lane { (1.0 - p.curvature * t).max(0.1) } else { 1.0 };
     let ds = pos.dir * dist / scale;
     let mut s = s0 + ds;
     let section_before = road.section_index_at(s0);
@@ -84,14 +111,17 @@ fn move_along(net: &RoadNetwork, pos: &mut LanePos, dist: f64, route: Option<&ro
             if section_now != section_before && pos.road == road_before {
                 follow_section_change(net, pos, section_before, section_now);
             }
-            super::zero_width::leave_zero_width_lane_in(net, pos, section_now);
+            super::zero_width::leave_zero_width_lane_in(net, pos, section_now, sidewalks);
             return MoveStatus::Ok;
         }
         let (end, overshoot) = if s > road.length { (ContactPoint::End, s - road.length) } else { (ContactPoint::Start, -s) };
         let section = opendrive::section_at_end(road, end);
         let here = LaneRef { road: pos.road, section, lane: pos.lane_id };
-        let facing_back = if pos.dir < 0.0 { std::f64::consts::PI } else { 0.0 };
-        let heading_in = super::pose_memo::reference_pose(road, s_here.clamp(0.0, road.length)).hdg + facing_back;
+        // esmini measures from the heading of the lane's driving direction
+        // (Position::GetHRoadInDrivingDirection), not from the way the entity faces or moves: a
+        // car reversing into a junction picks the arm a car driving its lane would.
+        let against_s = if opendrive::drives_along_s(road.rule, pos.lane_id) { 0.0 } else { std::f64::consts::PI };
+        let heading_in = super::pose_memo::reference_pose(road, s_here.clamp(0.0, road.length)).hdg + against_s;
         let routed = route.and_then(|r| routed_continuation(net, r, here, end));
         let Some((next, contact)) = routed.or_else(|| choose_continuation(net, here, end, heading_in, random.as_deref_mut())) else {
             pos.s = s.clamp(0.0, road.length);
@@ -115,7 +145,7 @@ fn move_along(net: &RoadNetwork, pos: &mut LanePos, dist: f64, route: Option<&ro
         };
         if s >= 0.0 && s <= next_road.length {
             pos.s = s;
-            super::zero_width::leave_zero_width_lane(net, pos);
+            super::zero_width::leave_zero_width_lane(net, pos, sidewalks);
             return MoveStatus::Ok;
         }
     }
@@ -123,8 +153,12 @@ fn move_along(net: &RoadNetwork, pos: &mut LanePos, dist: f64, route: Option<&ro
 }
 
 /// The lane continuing `here` across its `end` onto the road the route takes next, if the
-/// route passes this road in this direction and a lane leads there.
+/// route passes this road in this direction and a lane leads there. Into a junction, esmini's
+/// rule instead (`junction_arm_on_route`).
 fn routed_continuation(net: &RoadNetwork, route: &routing::Route, here: LaneRef, end: ContactPoint) -> Option<(LaneRef, ContactPoint)> {
+    if let Some(j) = junction_at(net, here, end) {
+        return junction_arm_on_route(net, route, j, here, end);
+    }
     let next = route.next_road_after(here.road, end == ContactPoint::End)?;
     let cands = net.lanes_across(here, end);
     let on_road = |c: &&LaneRef| c.road == next.road;
@@ -140,6 +174,48 @@ fn routed_continuation(net: &RoadNetwork, route: &routing::Route, here: LaneRef,
         next.contact
     };
     Some((*pick, contact))
+}
+
+/// The junction arm an entity with a route takes, as esmini's Position::MoveToConnectingRoad
+/// does with a valid route (Route::GetRoadAtOtherEndOfIncomingRoad): the road beyond the
+/// junction is the far end of the first route road that is a connecting road of this junction
+/// linked to the entity's road — whichever way the route runs, so a car reversing along its
+/// route goes back the way the route came; the arm is the last connection of the entity's lane
+/// leading there (one on the route first). When the route does not cross this junction from
+/// this road, esmini takes the lane's first connection, not the straightest.
+fn junction_arm_on_route(
+    net: &RoadNetwork,
+    route: &routing::Route,
+    junction: &opendrive::Junction,
+    here: LaneRef,
+    end: ContactPoint,
+) -> Option<(LaneRef, ContactPoint)> {
+    let cands = junction_arms(net, here, junction, net.lanes_across(here, end));
+    // esmini's connections include the counter connections it adds (`junction_connections`).
+    let ji = net.junction_index(&junction.id)?;
+    let entering = super::junction_connections::entering(net, ji, here.road);
+    let target = route.legs().iter().find_map(|leg| {
+        let r = net.roads.get(leg.road)?;
+        let entered_here = entering.iter().any(|c| c.connecting == leg.road);
+        (r.junction.as_deref() == Some(junction.id.as_str()) && entered_here).then(|| far_end(net, leg.road, here.road)).flatten()
+    });
+    let leads_to_target = |c: &&LaneRef| target.is_some() && far_end(net, c.road, here.road) == target;
+    let on_route = |c: &&LaneRef| route.legs().iter().any(|l| l.road == c.road);
+    let pick = cands.iter().filter(leads_to_target).find(on_route).or_else(|| cands.iter().rfind(leads_to_target)).or(cands.first())?;
+    let contact = net.roads_at(here.road, end).into_iter().find(|e| e.road == pick.road).map_or(ContactPoint::Start, |e| e.contact);
+    Some((*pick, contact))
+}
+
+/// The road at the other end of connecting road `road` from `incoming` (its successor when
+/// that is another road, else its predecessor; esmini's order).
+fn far_end(net: &RoadNetwork, road: usize, incoming: usize) -> Option<usize> {
+    let r = net.roads.get(road)?;
+    let incoming_id = net.roads.get(incoming).map(|x| x.id.as_str());
+    [r.successor.as_ref(), r.predecessor.as_ref()]
+        .into_iter()
+        .flatten()
+        .find(|l| l.element_type == ElementType::Road && Some(l.element_id.as_str()) != incoming_id)
+        .and_then(|l| net.road_index(&l.element_id))
 }
 
 /// The lane continuing `here` across its `end`, and the contact point on that lane's road.
@@ -168,7 +244,7 @@ fn choose_continuation(
     };
     let junction = junction_at(net, here, end);
     if let Some(j) = junction {
-        order_by_connections(net, here, j, &mut cands);
+        cands = junction_arms(net, here, j, cands);
     }
     let mut best: Option<(f64, LaneRef, ContactPoint)> = None;
     for c in cands {
@@ -223,16 +299,19 @@ fn junction_at(net: &RoadNetwork, here: LaneRef, end: ContactPoint) -> Option<&o
     net.junction(&link.element_id)
 }
 
-/// Sort junction arms the way esmini visits them: by the junction's connections from this road
-/// (document order), lane links in order; arms no connection names come last, by road.
-fn order_by_connections(net: &RoadNetwork, here: LaneRef, junction: &opendrive::Junction, cands: &mut [LaneRef]) {
-    let Some(road) = net.roads.get(here.road) else { return };
+/// The arms of `junction` lane `here` can take, in the order esmini visits them: esmini's
+/// connections from this road (the file's in document order, then its counter connections,
+/// `junction_connections`), lane links in order. In a default junction a lane none of them
+/// starts from cannot enter (esmini's MoveToConnectingRoad finds no connection: the entity
+/// stays at the road's end); a direct junction keeps every linked lane, unnamed arms last.
+fn junction_arms(net: &RoadNetwork, here: LaneRef, junction: &opendrive::Junction, mut cands: Vec<LaneRef>) -> Vec<LaneRef> {
+    let Some(ji) = net.junction_index(&junction.id) else { return cands };
+    let conns = super::junction_connections::entering(net, ji, here.road);
     let rank = |c: &LaneRef| -> usize {
-        let Some(target) = net.roads.get(c.road) else { return usize::MAX };
         let mut k = 0usize;
-        for conn in junction.connections.iter().filter(|x| x.incoming_road.as_deref() == Some(road.id.as_str())) {
-            for link in conn.lane_links.iter().filter(|l| l.from == here.lane) {
-                if conn.target_road() == Some(target.id.as_str()) && link.to == c.lane {
+        for conn in &conns {
+            for &(_, to) in conn.lane_links.iter().filter(|l| l.0 == here.lane) {
+                if conn.connecting == c.road && to == c.lane {
                     return k;
                 }
                 k += 1;
@@ -240,8 +319,12 @@ fn order_by_connections(net: &RoadNetwork, here: LaneRef, junction: &opendrive::
         }
         usize::MAX
     };
+    if junction.kind != opendrive::JunctionType::Direct {
+        cands.retain(|c| rank(c) != usize::MAX);
+    }
     // Stable: equal ranks (unnamed arms) keep lanes_across's road order.
     cands.sort_by_key(|c| rank(c));
+    cands
 }
 
 /// Keep the lane across a lane-section boundary inside one road, following lane links.

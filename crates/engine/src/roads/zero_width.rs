@@ -1,30 +1,26 @@
 //! esmini's rule for a lane that has narrowed to nothing: after every move along the road, an
-//! entity whose lane is (or became) zero wide is put on the centre of the nearest lane a
-//! vehicle may drive on (esmini's `Position::MoveAlongS`, "lane is or became zero width,
-//! moved to closest available lane"). A merge lane that ends thus drops its vehicle into the
-//! neighbouring lane in one step, without a lane change.
+//! entity whose lane is (or became) zero wide is put on the centre of a lane of the types it
+//! snaps to on the same side of the road — the one containing its point, else the one whose
+//! centre is nearest (esmini's `Position::MoveAlongS`, "lane is or became zero width, moved to
+//! closest available lane", LaneSection::GetClosestLaneIdx with the side of its lane). A merge
+//! lane that ends thus drops its vehicle into the neighbouring lane in one step, without a lane
+//! change; a pedestrian may land on a sidewalk.
 
-use super::lane_geometry::lane_borders;
 use super::lane_position::LanePos;
-use opendrive::{LaneType, RoadNetwork};
+use opendrive::RoadNetwork;
 
 /// Narrower than this is zero wide (esmini's SMALL_NUMBER).
-const ZERO_WIDTH: f64 = 1e-10;
+const ZERO_WIDTH: f64 = 1e-6;
 
-/// The lane types esmini snaps to by default (its "any driving" lane types).
-fn drivable(kind: LaneType) -> bool {
-    matches!(kind, LaneType::Driving | LaneType::Entry | LaneType::Exit | LaneType::OnRamp | LaneType::OffRamp | LaneType::Bidirectional)
-}
-
-/// Move `pos` to the centre of the nearest drivable lane of non-zero width when its own lane
-/// has no width at its s. Returns whether it moved.
-pub(crate) fn leave_zero_width_lane(net: &RoadNetwork, pos: &mut LanePos) -> bool {
+/// Move `pos` to the centre of the lane esmini picks when its own lane has no width at its s
+/// (`sidewalks`: a pedestrian's lane types). Returns whether it moved.
+pub(crate) fn leave_zero_width_lane(net: &RoadNetwork, pos: &mut LanePos, sidewalks: bool) -> bool {
     let Some(road) = net.roads.get(pos.road) else { return false };
-    leave_zero_width_lane_in(net, pos, road.section_index_at(pos.s))
+    leave_zero_width_lane_in(net, pos, road.section_index_at(pos.s), sidewalks)
 }
 
 /// [`leave_zero_width_lane`] when the caller knows the lane section at `pos.s` already.
-pub(crate) fn leave_zero_width_lane_in(net: &RoadNetwork, pos: &mut LanePos, section: usize) -> bool {
+pub(crate) fn leave_zero_width_lane_in(net: &RoadNetwork, pos: &mut LanePos, section: usize, sidewalks: bool) -> bool {
     let Some(road) = net.roads.get(pos.road) else { return false };
     if super::lane_shape::lane_shape(road, section, pos.lane_id).never_zero_width {
         return false;
@@ -34,24 +30,12 @@ pub(crate) fn leave_zero_width_lane_in(net: &RoadNetwork, pos: &mut LanePos, sec
     if pos.lane_id == 0 || (b - a).abs() >= ZERO_WIDTH {
         return false;
     }
-    let Some(sec) = road.lane_sections.get(section) else { return false };
     let t = 0.5 * (a + b) + pos.offset;
-    let mut best: Option<(f64, i32)> = None;
-    // Left lanes outward then right lanes outward: a tie keeps the first found.
-    for lane in sec.left.iter().chain(sec.right.iter()) {
-        if lane.id == pos.lane_id || !drivable(lane.kind) {
-            continue;
-        }
-        let Some((la, lb)) = lane_borders(road, section, lane.id, pos.s) else { continue };
-        if (lb - la).abs() < ZERO_WIDTH {
-            continue;
-        }
-        let d = (0.5 * (la + lb) - t).abs();
-        if best.is_none_or(|(bd, _)| d < bd) {
-            best = Some((d, lane.id));
-        }
+    let side = pos.lane_id.signum();
+    let Some((lane_id, _)) = super::lane_snap::snap_on_side(road, section, pos.s, t, sidewalks, side) else { return false };
+    if lane_id == pos.lane_id {
+        return false;
     }
-    let Some((_, lane_id)) = best else { return false };
     // The direction of travel along s is kept, as esmini keeps the heading.
     pos.lane_id = lane_id;
     pos.offset = 0.0;
@@ -80,12 +64,12 @@ mod tests {
         let n = net(ROAD);
         // Before the end lane -2 is 3 m wide: nothing happens.
         let mut p = LanePos { road: 0, lane_id: -2, s: 49.0, offset: 0.2, dir: 1.0 };
-        assert!(!leave_zero_width_lane(&n, &mut p));
+        assert!(!leave_zero_width_lane(&n, &mut p, false));
         assert_eq!((p.lane_id, p.offset), (-2, 0.2));
         // At s = 60 lane -2 has no width: its centre is t = -3.5, the border's centre -3.65
         // (not drivable), lane -1's centre -1.75: the entity goes to lane -1, offset 0.
         let mut p = LanePos { road: 0, lane_id: -2, s: 60.0, offset: 0.0, dir: 1.0 };
-        assert!(leave_zero_width_lane(&n, &mut p));
+        assert!(leave_zero_width_lane(&n, &mut p, false));
         assert_eq!((p.lane_id, p.offset, p.s), (-1, 0.0, 60.0));
     }
 }

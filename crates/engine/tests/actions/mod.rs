@@ -8,6 +8,7 @@ mod lateral_distance;
 mod longitudinal_distance_and_acc;
 mod override_controller_value;
 mod recorded;
+mod route_world_waypoints;
 mod routes;
 mod speed;
 mod synchronize;

@@ -32,14 +32,16 @@ fn route_position_in_lane_coordinates() {
 }
 
 #[test]
-fn route_position_against_s_faces_the_route_direction() {
+fn route_position_against_s_faces_the_road_direction_and_reads_t_as_an_integer() {
     // Lane 1 drives against s: a route from s = 500 to s = 100 on it; path s 50 is road s 450.
+    // esmini 3.6.0 (OSCPositionRoute::SetRouteRefRoadCoord, ScenarioReader's strtoi of t) puts
+    // it at t = 1, not 1.75, facing the road's reference direction, not the route's.
     let r = route(&[(500.0, 1), (100.0, 1)]);
     let pos = route_position(&r, r#"<FromRoadCoordinates pathS="50" t="1.75"/>"#);
     let init = format!(r#"<Private entityRef="Ego"><PrivateAction><TeleportAction>{pos}</TeleportAction></PrivateAction></Private>"#);
     let run = run(&xosc(&init, "", &stop_at(1.0)));
     let e = at(&run, "Ego", 0.0);
-    assert!(close(e.x, 450.0, 1e-9) && close(e.y, 1.75, 1e-9) && close(e.h, std::f64::consts::PI, 1e-9), "{e:?}");
+    assert!(close(e.x, 450.0, 1e-9) && close(e.y, 1.0, 1e-9) && close(e.h, 0.0, 1e-9), "{e:?}");
 }
 
 #[test]

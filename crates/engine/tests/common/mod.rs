@@ -4,6 +4,8 @@
 
 #![allow(dead_code)]
 
+pub(crate) mod oracle;
+
 use engine::{Run, Settings};
 use std::path::Path;
 

@@ -2,4 +2,5 @@
 
 mod ending_lane;
 mod junction_random;
+mod reversing_through_junctions;
 mod superelevation;

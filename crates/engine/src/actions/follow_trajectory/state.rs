@@ -12,10 +12,12 @@ pub(crate) struct FollowTrajectoryRt {
     pub timing: Option<TimeMapping>,
     /// esmini's running trajectory time (before the offset is added).
     pub time: f64,
-    /// Following mode `follow` with time stamps: per segment between stamps (s, t, v, a),
-    /// constant acceleration with the speed continuous, starting at the first segment's
-    /// mean speed (esmini's vertex speeds); `position` mode moves at each segment's mean speed.
-    pub accel: Option<Vec<(f64, f64, f64, f64)>>,
+    /// esmini's simulation clock at the step in progress: the sum of the steps so far, whose
+    /// rounding an absolute time reference reads (esmini's simTime).
+    pub clock: f64,
+    /// A timed polyline's vertices as esmini times them: (s, t, speed, acceleration to the
+    /// next), by the following mode (`polyline_timing`).
+    pub vertices: Option<Vec<(f64, f64, f64, f64)>>,
     /// −1 when the entity faces against the path (it started reversing), else 1; fixed at
     /// the start (esmini's `initialHeadingSign_`).
     pub heading_sign: f64,

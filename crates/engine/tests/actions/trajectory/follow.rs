@@ -45,17 +45,19 @@ fn timed_polyline_in_position_mode_moves_at_each_segment_mean_speed() {
 
 #[test]
 fn timed_polyline_in_follow_mode_accelerates_uniformly_per_segment() {
-    // First segment: 20 m in 2 s, so 10 m/s at the start and at the first stamp. Second: 5 m
-    // in 1 s from 10 m/s: a = 2 (5 − 10) / 1 = −10 m/s², ending at rest.
+    // esmini 3.6.0 (PolyLineShape::CalculatePolyLine, follow mode): the speed starts at the
+    // entity's, 0 here. First segment: 20 m in 2 s from rest, a = 10 m/s², 20 m/s at the
+    // stamp. Second: 5 m in 1 s from 20 m/s would end at −10 m/s, so esmini brakes to a stop
+    // over the 5 m instead (a = −20²/(2·5) = −40 m/s²), arriving at 2.5 s, and waits there.
     let shape = format!("<Polyline>{}{}{}</Polyline>", vertex(Some(0.0), 10.0, -1.75), vertex(Some(2.0), 30.0, -1.75), vertex(Some(3.0), 35.0, -1.75));
     let run = run(&xosc(&init_with("Ego", &follow(&shape, RELATIVE, "follow")), "", &stop_at(5.0)));
-    assert!(close(at(&run, "Ego", 1.0).x, 20.0, 1e-6));
-    // s(2.5) = 20 + 10·0.5 − 5·0.25 = 23.75
-    assert!(close(at(&run, "Ego", 2.5).x, 10.0 + 23.75, 1e-6));
-    // The last stamp is reached at t = 3; the speed left is that of the last step, the mean
-    // over [2.99, 3]: (s(1) − s(0.99)) / 0.01 = (25 − 24.9995) / 0.01 = 0.05 m/s.
-    let e = at(&run, "Ego", 3.0);
-    assert!(close(e.x, 35.0, 1e-6) && close(e.speed, 0.05, 1e-6), "{e:?}");
+    // s(1) = 10·1²/2 = 5; esmini's speed is the last step's mean, 9.95 m/s.
+    let e1 = at(&run, "Ego", 1.0);
+    assert!(close(e1.x, 15.0, 1e-6) && close(e1.speed, 9.95, 1e-6), "{e1:?}");
+    assert!(close(at(&run, "Ego", 2.0).x, 30.0, 1e-6));
+    let e = at(&run, "Ego", 2.5);
+    assert!(close(e.x, 35.0, 1e-6) && close(e.speed, 0.2, 1e-6), "{e:?}");
+    assert!(close(at(&run, "Ego", 2.75).speed, 0.0, 1e-9));
 }
 
 #[test]
