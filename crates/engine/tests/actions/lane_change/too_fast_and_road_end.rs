@@ -10,13 +10,9 @@
 //!   ends there (POS_STATUS_END_OF_ROAD → OSCAction::End), the offset and heading kept.
 
 use crate::common::*;
-use engine::Settings;
 
 fn run_fixture() -> engine::Run {
-    let loaded = openscenario::load(&fixtures().join("lane_change_fast_and_road_end.xosc"), &Default::default()).expect("fixture scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("straight.xodr")).expect("fixture road loads").network;
-    engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 10.0 }).expect("simulate")
+    run_straight_fixture("lane_change_fast_and_road_end.xosc", 10.0)
 }
 
 /// (entity, time, x, y, heading) rows of esmini's log.
@@ -39,12 +35,7 @@ const ESMINI: &[(&str, f64, f64, f64, f64)] = &[
 
 #[test]
 fn lane_changes_follow_esmini_log() {
-    let run = run_fixture();
-    for &(name, t, x, y, h) in ESMINI {
-        let s = at(&run, name, t);
-        let dh = (s.h - h + std::f64::consts::PI).rem_euclid(2.0 * std::f64::consts::PI) - std::f64::consts::PI;
-        assert!(close(s.x, x, 2e-6) && close(s.y, y, 2e-6) && dh.abs() < 2e-5, "{name} at {t}: ({}, {}, {}) against esmini ({x}, {y}, {h})", s.x, s.y, s.h);
-    }
+    assert_esmini_poses(&run_fixture(), ESMINI, 2e-6, 2e-5);
 }
 
 #[test]

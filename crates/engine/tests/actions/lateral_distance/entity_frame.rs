@@ -11,13 +11,9 @@
 //! - ActD, lane coordinates: esmini's step does nothing; the entity drives on in its lane.
 
 use crate::common::*;
-use engine::Settings;
 
 fn run_fixture() -> engine::Run {
-    let loaded = openscenario::load(&fixtures().join("lat_distance_entity_frame.xosc"), &Default::default()).expect("fixture scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("straight.xodr")).expect("fixture road loads").network;
-    engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 10.0 }).expect("simulate")
+    run_straight_fixture("lat_distance_entity_frame.xosc", 10.0)
 }
 
 /// (entity, time, x, y, heading) rows of esmini's log.
@@ -42,12 +38,10 @@ const ESMINI: &[(&str, f64, f64, f64, f64)] = &[
 #[test]
 fn entity_frame_follows_esmini_log() {
     let run = run_fixture();
-    for &(name, t, x, y, h) in ESMINI {
-        let s = at(&run, name, t);
-        let dh = (s.h - h + std::f64::consts::PI).rem_euclid(2.0 * std::f64::consts::PI) - std::f64::consts::PI;
-        assert!(close(s.x, x, 2e-6) && close(s.y, y, 2e-6) && dh.abs() < 2e-6, "{name} at {t}: ({}, {}, {}) against esmini ({x}, {y}, {h})", s.x, s.y, s.h);
-        // The actions drive along at the entity's speed.
-        assert!(close(s.speed, 10.0, 1e-12), "{name} at {t}: speed {}", s.speed);
+    assert_esmini_poses(&run, ESMINI, 2e-6, 2e-6);
+    // The actions drive along at the entity's speed.
+    for &(name, t, ..) in ESMINI {
+        assert!(close(at(&run, name, t).speed, 10.0, 1e-12), "{name} at {t}: speed {}", at(&run, name, t).speed);
     }
 }
 

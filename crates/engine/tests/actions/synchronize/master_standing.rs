@@ -9,13 +9,9 @@
 //! - Actor2 (8 m/s) must reach s = 750 when Master2 reaches s = 700, no final speed.
 
 use crate::common::*;
-use engine::Settings;
 
 fn run_fixture() -> engine::Run {
-    let loaded = openscenario::load(&fixtures().join("synchronize_master_standing.xosc"), &Default::default()).expect("fixture scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("straight.xodr")).expect("fixture road loads").network;
-    engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 30.0 }).expect("simulate")
+    run_straight_fixture("synchronize_master_standing.xosc", 30.0)
 }
 
 /// (entity, time, x, speed) rows of esmini's log.
