@@ -94,9 +94,14 @@ pub(crate) fn run_with(text: &str, settings: &Settings) -> Run {
 
 /// Run the fixture scenario `name` (in `fixtures/`) on the straight fixture road, 0.01 s steps.
 pub(crate) fn run_straight_fixture(name: &str, max_time: f64) -> Run {
+    run_fixture_on(name, "straight.xodr", max_time)
+}
+
+/// Run the fixture scenario `name` on the fixture road network `map`, 0.01 s steps.
+pub(crate) fn run_fixture_on(name: &str, map: &str, max_time: f64) -> Run {
     let loaded = openscenario::load(&fixtures().join(name), &Default::default()).expect("fixture scenario loads");
     let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("straight.xodr")).expect("fixture road loads").network;
+    let net = opendrive::load(fixtures().join(map)).expect("fixture road loads").network;
     engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time }).expect("simulate")
 }
 
