@@ -14,6 +14,7 @@ mod map;
 mod packaging;
 mod python_package;
 mod render;
+mod serve_osi;
 mod serve_udp;
 mod simulate;
 mod workspace;

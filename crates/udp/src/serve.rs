@@ -11,6 +11,8 @@ use std::collections::BTreeMap;
 use std::fmt;
 use std::net::{IpAddr, Ipv4Addr, SocketAddr};
 use std::path::Path;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
 use std::time::Duration;
 
 use convert::{ClosedLoop, ConvertOptions, Failure};
@@ -20,6 +22,7 @@ use openscenario::Controller;
 use crate::controller_properties::{base_port, is_udp_driver, port, read_properties, udp_drivers, ExecMode};
 use crate::frame_order::FrameOrder;
 use crate::object_ids::{object_id, object_ids};
+use crate::osi_out::OsiOut;
 use crate::outcome::{EntityReport, Outcome, MAX_KEPT_REJECTIONS};
 use crate::pacing::{Clock, Pace};
 use crate::receive::{Arrival, Endpoint, SYNCHRONOUS_TIMEOUT};
@@ -27,7 +30,7 @@ use crate::rejection::Rejection;
 use crate::translate::Driving;
 
 /// How to serve a scenario.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct ServeOptions {
     /// The conversion's options (step, time cap, ego, parameters, …).
     pub convert: ConvertOptions,
@@ -39,6 +42,13 @@ pub struct ServeOptions {
     pub pace: Option<Pace>,
     /// How long a synchronous port waits for its datagram each step (esmini: 500 ms).
     pub synchronous_timeout: Duration,
+    /// Compose an OSI GroundTruth message per frame (told to `Observer::osi_frame`).
+    pub osi: bool,
+    /// Send each message there too, as esmini's `--osi_receiver_ip` sends it.
+    pub osi_receiver: Option<SocketAddr>,
+    /// Set from elsewhere (Ctrl-C) to end the run after the current step; the run so far is
+    /// converted and the outcome says it was interrupted.
+    pub stop: Option<Arc<AtomicBool>>,
 }
 
 impl Default for ServeOptions {
@@ -49,6 +59,9 @@ impl Default for ServeOptions {
             base_port: None,
             pace: None,
             synchronous_timeout: SYNCHRONOUS_TIMEOUT,
+            osi: false,
+            osi_receiver: None,
+            stop: None,
         }
     }
 }
@@ -74,6 +87,8 @@ pub trait Observer {
     /// A frame was run (the Init frame too, once its ports were read); `time` is the
     /// simulated time it reached. The next step reads the ports next.
     fn stepped(&mut self, _time: f64) {}
+    /// The OSI GroundTruth message of the frame just run (when `ServeOptions::osi`).
+    fn osi_frame(&mut self, _message: &[u8]) {}
 }
 
 /// An observer that is told nothing.
@@ -82,7 +97,8 @@ impl Observer for Silent {}
 
 /// Why a scenario could not be served.
 #[derive(Debug, Clone, PartialEq)]
-pub enum ServeError {
+#[non_exhaustive]
+pub enum Error {
     /// Loading the scenario, its map, or the first frame failed.
     Start(Failure),
     /// A UDPDriverController's properties are wrong (esmini stops on them too).
@@ -91,16 +107,20 @@ pub enum ServeError {
     Bind(String),
     /// A step failed.
     Step(Failure),
+    /// The OSI receiver could not be reached.
+    Osi(String),
 }
 
-impl fmt::Display for ServeError {
+impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            ServeError::Start(e) | ServeError::Step(e) => write!(f, "{:?} stage: {}", e.stage, e.message),
-            ServeError::Setup(m) | ServeError::Bind(m) => f.write_str(m),
+            Error::Start(e) | Error::Step(e) => write!(f, "{:?} stage: {}", e.stage, e.message),
+            Error::Setup(m) | Error::Bind(m) | Error::Osi(m) => f.write_str(m),
         }
     }
 }
+
+impl std::error::Error for Error {}
 
 /// One entity served over UDP.
 struct Link {
@@ -127,16 +147,21 @@ struct Server<'o> {
 
 /// Runs the scenario file `path`, serving its UDP drivers, to its end (its stop trigger or the
 /// time cap); the observer is told of ports, rejections and steps as they happen.
-pub fn serve(path: &Path, options: &ServeOptions, observer: &mut dyn Observer) -> Result<Outcome, ServeError> {
-    let mut session = ClosedLoop::start(path, &options.convert, &External::controllers()).map_err(ServeError::Start)?;
+pub fn serve(path: &Path, options: &ServeOptions, observer: &mut dyn Observer) -> Result<Outcome, Error> {
+    let mut session = ClosedLoop::start(path, &options.convert, &External::controllers()).map_err(Error::Start)?;
     let mut notes = Vec::new();
-    let base = base_port(session.scenario(), options.base_port, &mut notes).map_err(ServeError::Setup)?;
+    let base = base_port(session.scenario(), options.base_port, &mut notes).map_err(Error::Setup)?;
     let any_asynchronous = udp_drivers(session.scenario()).iter().any(|c| read_properties(c, &mut Vec::new()).is_ok_and(|p| p.exec == ExecMode::Asynchronous));
     let pace = options.pace.unwrap_or(if any_asynchronous { Pace::RealTime(1.0) } else { Pace::AsFastAsPossible });
     let ids = object_ids(session.scenario());
     let mut server =
         Server { options, observer, ids, base, links: BTreeMap::new(), unserved: Vec::new(), notes, rejections: Vec::new(), rejections_not_kept: 0 };
     let dt = options.convert.step;
+    let mut osi = match options.osi || options.osi_receiver.is_some() {
+        true => Some(OsiOut::new(&session, options.osi_receiver).map_err(|e| Error::Osi(format!("cannot send OSI messages: {e}")))?),
+        false => None,
+    };
+    let stopped = || options.stop.as_ref().is_some_and(|s| s.load(Ordering::SeqCst));
 
     // the Init frame: ports of controllers it activated open, and their first datagram is read
     server.follow_activations(&session, true)?;
@@ -152,15 +177,23 @@ pub fn serve(path: &Path, options: &ServeOptions, observer: &mut dyn Observer) -
         }
     }
     server.observer.stepped(session.time());
+    if let Some(o) = &mut osi {
+        o.frame(&session, server.observer);
+    }
 
     let clock = Clock::start(pace);
     let t0 = session.time();
+    let mut interrupted = false;
     while !session.is_over() {
+        if stopped() {
+            interrupted = true;
+            break;
+        }
         let t = session.time() + dt;
         clock.wait_until(t - t0);
         let (inputs, without_message) = server.inputs(&session, t, dt);
         let before = session.time();
-        session.step_with(&inputs).map_err(ServeError::Step)?;
+        session.step_with(&inputs).map_err(Error::Step)?;
         // the frame in which the stop trigger fires records nothing: it was no step
         if session.time() > before {
             for index in without_message {
@@ -176,6 +209,12 @@ pub fn serve(path: &Path, options: &ServeOptions, observer: &mut dyn Observer) -
             }
         }
         server.observer.stepped(session.time());
+        if let (Some(o), true) = (&mut osi, session.time() > before) {
+            o.frame(&session, server.observer);
+        }
+    }
+    if let Some(o) = &osi {
+        server.notes.extend(o.notes());
     }
 
     let (conversion, _) = session.finish();
@@ -193,6 +232,8 @@ pub fn serve(path: &Path, options: &ServeOptions, observer: &mut dyn Observer) -
         rejections: server.rejections,
         rejections_not_kept: server.rejections_not_kept,
         notes: server.notes,
+        interrupted,
+        osi_frames: osi.as_ref().map_or(0, |o| o.frames),
         warnings: conversion.warnings.clone(),
         failure: conversion.result.as_ref().err().cloned(),
         conversion,
@@ -214,6 +255,7 @@ fn tally(
     r.superseded += arrival.superseded;
     r.rejected += arrival.rejected.len();
     r.accepted += usize::from(arrival.message.is_some());
+    r.clamped += arrival.clamped;
     for reason in &arrival.rejected {
         let port = link.endpoint.as_ref().map_or(0, |e| e.address.port());
         let rejection = Rejection { entity: r.name.clone(), object_id: r.object_id, port, time, reason: reason.clone() };
@@ -230,7 +272,7 @@ fn tally(
 impl Server<'_> {
     /// Links the entities whose controller is a UDP driver, and opens the port of each whose
     /// controller is active (again with its port if a new controller was assigned).
-    fn follow_activations(&mut self, session: &ClosedLoop, at_init: bool) -> Result<(), ServeError> {
+    fn follow_activations(&mut self, session: &ClosedLoop, at_init: bool) -> Result<(), Error> {
         for ext in session.external() {
             let Source::Controller(c) = &ext.source else { continue };
             if !is_udp_driver(c) {
@@ -245,8 +287,8 @@ impl Server<'_> {
                 continue;
             }
             // (its notes were taken when the base port was read from every UDP driver)
-            let props = read_properties(c, &mut Vec::new()).map_err(ServeError::Setup)?;
-            let object_id = object_id(&self.ids, &ext.name).ok_or_else(|| ServeError::Setup(format!("`{}` has no esmini object id", ext.name)))?;
+            let props = read_properties(c, &mut Vec::new()).map_err(Error::Setup)?;
+            let object_id = object_id(&self.ids, &ext.name).ok_or_else(|| Error::Setup(format!("`{}` has no esmini object id", ext.name)))?;
             let link = self.links.entry(ext.index).or_insert_with(|| Link {
                 controller: c.clone(),
                 endpoint: None,
@@ -261,6 +303,7 @@ impl Server<'_> {
                     accepted: 0,
                     superseded: 0,
                     rejected: 0,
+                    clamped: 0,
                     steps_without_message: 0,
                     states: Vec::new(),
                 },
@@ -275,7 +318,7 @@ impl Server<'_> {
             if !ext.active {
                 continue;
             }
-            let port = port(&props, self.base, object_id).map_err(|m| ServeError::Setup(format!("`{}`: {m}", ext.name)))?;
+            let port = port(&props, self.base, object_id).map_err(|m| Error::Setup(format!("`{}`: {m}", ext.name)))?;
             let address = SocketAddr::new(self.options.bind, port);
             if link.endpoint.as_ref().is_some_and(|e| e.address == address && e.exec == props.exec) {
                 continue;
@@ -283,7 +326,7 @@ impl Server<'_> {
             // the old port closes before the new one opens (it may be the same number)
             link.endpoint = None;
             let endpoint = Endpoint::bind(address, props.exec, self.options.synchronous_timeout)
-                .map_err(|e| ServeError::Bind(format!("cannot listen on {address} for `{}`: {e}", ext.name)))?;
+                .map_err(|e| Error::Bind(format!("cannot listen on {address} for `{}`: {e}", ext.name)))?;
             let listening = Listening { entity: ext.name.clone(), object_id, address: endpoint.address, exec: props.exec, at_init };
             link.report.address = Some(endpoint.address.to_string());
             link.endpoint = Some(endpoint);

@@ -18,6 +18,10 @@ pub(crate) struct SimulateArgs {
     /// Also write the storyboard state transitions (time,element,from,transition,to).
     #[arg(long)]
     pub events: Option<PathBuf>,
+    /// Also write the run as an OSI trace file (ASAM OSI 3.5 GroundTruth per frame, as esmini's
+    /// --osi_file writes it).
+    #[arg(long, value_name = "FILE")]
+    pub osi_file: Option<PathBuf>,
     /// Print the warnings on stderr.
     #[arg(short, long)]
     pub verbose: bool,
@@ -68,13 +72,16 @@ pub(crate) fn run(args: &SimulateArgs) -> Result<(), Failure> {
         }
         write_file(ev, &text)?;
     }
+    if let Some(path) = &args.osi_file {
+        load_warnings.extend(crate::osi_file::write_trace(path, &scenario, roads.as_ref(), &run.trace)?);
+    }
     let n_warn = load_warnings.len() + road_warnings.len() + run.warnings.len();
     if args.verbose {
         for w in &load_warnings {
             eprintln!("{w}");
         }
         for w in &road_warnings {
-            eprintln!("{w}");
+            eprintln!("{}", w.labelled("warning"));
         }
         for w in &run.warnings {
             eprintln!("{w}");
