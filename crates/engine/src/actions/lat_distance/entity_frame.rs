@@ -9,7 +9,7 @@
 //! from the arc left). The road plays no part; the action never ends by itself (esmini calls no
 //! `End` there), and it moves the entity itself (the default controller leaves it alone).
 
-use crate::controllers::looming_view::angle_difference;
+use crate::controllers::looming::view::angle_difference;
 use crate::dynamics::{abs_limit, ESMINI_SMALL_NUMBER as SMALL_NUMBER};
 use crate::entities::wrap_2pi;
 use std::f64::consts::PI;
