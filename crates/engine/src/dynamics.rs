@@ -19,6 +19,15 @@ pub(crate) fn sign(x: f64) -> f64 {
     }
 }
 
+/// esmini's ABS_LIMIT: limit the magnitude, keep the sign.
+pub(crate) fn abs_limit(v: f64, limit: f64) -> f64 {
+    if v.abs() > limit.abs() {
+        sign(v) * limit.abs()
+    } else {
+        v
+    }
+}
+
 pub(crate) fn avoid_zero(x: f64) -> f64 {
     if x.abs() < SMALL {
         sign(x) * SMALL

@@ -1,21 +1,24 @@
 //! LaneChangeAction: the entity's offset, measured from the centre of the target lane, follows
 //! the transition shape from where it starts to the target lane offset, over time or distance
-//! (a rate is read as a lateral speed); lateral speed never exceeds the forward speed. Each
-//! step moves the entity by speed·dt split into its lateral and longitudinal parts, turns it
-//! by the slope of the path, and re-attaches it to the lane it is actually in.
+//! (a rate is read as a lateral speed). Each step moves the entity by speed·dt split into its
+//! lateral and longitudinal parts, turns it by the slope of the path, and re-attaches it to
+//! the lane it is actually in; where the shape asks for more sideways motion than speed·dt,
+//! the entity moves sideways only, by speed·dt along a straight line (esmini 3.6's fallback).
+//! The action ends at the target, or where the road ends.
 
 pub(crate) mod state;
 
 use state::LaneChangeRt;
 
 use super::state::ActionRt;
-use crate::dynamics::{sign, Transition, SMALL};
+use crate::dynamics::{sign, Transition, ESMINI_SMALL_NUMBER, SMALL};
 use crate::positions::step_lane;
 use crate::roads::lane_geometry::{lane_borders, lane_center_t};
 use crate::roads::{move_along_s, LanePos, MoveStatus};
 use crate::sim::Sim;
 use opendrive::RoadNetwork;
 use openscenario::{DynamicsDimension, DynamicsShape, LaneChangeTarget, TransitionDynamics};
+use std::f64::consts::FRAC_PI_2;
 
 /// Re-express `lp` in the lane of its road that contains its lateral position.
 pub(crate) fn relane(net: &RoadNetwork, lp: &mut LanePos) {
@@ -125,60 +128,66 @@ impl<'a> Sim<'a> {
         let Some(net) = self.net else { return true };
         let Some(en) = self.entities.get(e) else { return true };
         let speed = en.speed;
-        if speed.abs() < SMALL {
+        if speed.abs() < ESMINI_SMALL_NUMBER {
             return false;
         }
         let dt = self.dt;
         let t = &mut l.transition;
-        // esmini 3.6.0, over time (or rate): the step's lateral part is the rate at the start of
-        // the step times dt, its longitudinal part what is left of speed·dt, and the heading
-        // the direction of that step (asin of rate / speed), not atan(rate / speed).
+        let step_len = (speed * dt).abs();
+        let time_like = t.dimension != DynamicsDimension::Distance;
+        // esmini 3.6.0, over time (or rate), LatLaneChangeAction::Step: the step's lateral part
+        // is the rate at the start of the step times dt, its longitudinal part what is left of
+        // speed·dt, and the heading the direction of that step. The transition is never
+        // stretched to the speed (esmini calls no SetMaxRate on it).
         let rate_before = t.scaled_derivative();
-        let lagged = t.dimension != DynamicsDimension::Distance
-            && t.shape != openscenario::DynamicsShape::Step
-            && t.param_target >= SMALL
-            && dt * rate_before.abs() < (speed * dt).abs() + SMALL;
-        if t.dimension == DynamicsDimension::Distance {
+        // A step shape, or an empty span over time, puts the entity on the target at once and
+        // keeps its whole longitudinal motion (TransitionDynamics::Evaluate/EvaluatePrim).
+        let instant = t.shape == DynamicsShape::Step || (time_like && t.param_target < ESMINI_SMALL_NUMBER);
+        let d_lat_wanted = dt * rate_before.abs();
+        let lagged = time_like && !instant && d_lat_wanted < step_len + ESMINI_SMALL_NUMBER;
+        // More sideways motion than speed·dt: esmini drops the longitudinal motion, moves the
+        // parameter by speed·dt on a straight line from start to target and evaluates the
+        // linear shape there, heading (almost) square to the road ("requested lateral motion
+        // too large wrt speed").
+        let too_fast = time_like && !instant && !lagged;
+        let agnostic = if instant {
+            t.step(dt);
+            t.target
+        } else if too_fast {
+            let span = (t.target - t.start).abs();
+            t.step(if span > 0.0 { step_len * t.param_target / span } else { t.param_target });
+            t.start + t.param * (t.target - t.start) / crate::dynamics::avoid_zero(t.param_target)
+        } else if time_like {
+            t.step(dt);
+            t.value()
+        } else {
             // esmini counts the distance along the road: the step's length projected by the
             // slope at the start of the step (LatLaneChangeAction::Step, DISTANCE branch).
-            t.step(dt * speed.abs() / (1.0 + rate_before * rate_before).sqrt());
-        } else {
-            t.step(dt);
-        }
-        t.set_max_rate(speed);
-        let agnostic = t.value();
-        let rate = t.scaled_derivative();
-        let lane_sign = sign(f64::from(l.internal.lane_id));
-        let old_offset = l.internal.offset;
-        l.internal.offset = agnostic * lane_sign;
-        let dist = speed * dt;
-        let d_lat = l.internal.offset - old_offset;
-        // A step jumps sideways and still drives on the whole speed·dt (esmini 3.6's traces).
-        let d_lat_step = if lagged {
-            dt * rate_before.abs()
-        } else if t.shape == openscenario::DynamicsShape::Step {
-            0.0
-        } else {
-            d_lat.abs()
+            t.step(step_len / (1.0 + rate_before * rate_before).sqrt());
+            t.value()
         };
-        let d_long = if t.dimension == DynamicsDimension::Distance && t.shape != openscenario::DynamicsShape::Step {
+        let lane_sign = sign(f64::from(l.internal.lane_id));
+        l.internal.offset = agnostic * lane_sign;
+        let d_long = if instant {
+            sign(speed) * step_len
+        } else if time_like {
+            sign(speed) * (step_len * step_len - d_lat_wanted.min(step_len).powi(2)).sqrt()
+        } else {
             // Over distance the longitudinal part is the step projected by the slope at its
             // start, also in the last step, where the clamped parameter moves less sideways.
-            dist / (1.0 + rate_before * rate_before).sqrt()
-        } else {
-            sign(speed) * (dist * dist - d_lat_step * d_lat_step).max(0.0).sqrt()
+            sign(speed) * step_len / (1.0 + rate_before * rate_before).sqrt()
         };
         let status = move_along_s(net, &mut l.internal, d_long);
         let done = t.done(agnostic);
         let yaw = if done {
             0.0
         } else {
-            let angle = if lagged {
-                (sign(speed) * sign(rate_before) * d_lat_step).atan2(d_long.abs())
-            } else if t.dimension == DynamicsDimension::Distance {
-                rate_before.atan()
+            let angle = if too_fast {
+                sign(speed) * sign(rate_before) * (FRAC_PI_2 - ESMINI_SMALL_NUMBER)
+            } else if time_like {
+                (sign(speed) * sign(rate_before) * d_lat_wanted).atan2(d_long.abs())
             } else {
-                (rate / crate::dynamics::avoid_zero(speed)).atan()
+                rate_before.atan()
             };
             l.internal.dir * lane_sign * angle
         };
@@ -189,8 +198,11 @@ impl<'a> Sim<'a> {
         en.set_lane_pos(net, attached);
         en.moved_by_action = true;
         if status == MoveStatus::EndOfRoad {
-            en.speed = 0.0;
+            // esmini ends the lane change where the road ends (POS_STATUS_END_OF_ROAD →
+            // OSCAction::End), the offset reached so far kept; the speed is left to the
+            // default controller, which stops an entity stuck there.
             en.at_road_end = true;
+            return true;
         }
         done
     }

@@ -1,5 +1,5 @@
-//! LateralDistanceAction in the road coordinate system: keep a lateral distance (t along the
-//! road) to the left or right of a reference entity.
+//! LateralDistanceAction: keep a lateral distance to the left or right of a reference entity,
+//! in the road coordinate system (t along the road) or the reference's own (entity).
 //!
 //! As esmini: the first step only records the position (the default controller moves the
 //! entity). Then the distance error is the wanted t (reference t ± distance, ± half the two
@@ -10,14 +10,19 @@
 //! pulls the lateral velocity, its acceleration clipped to the limit and the lateral speed to
 //! min(max speed, speed). The actor keeps its lane id (the offset grows past the lane), moves
 //! along the road by √(v² − v_lat²)·dt, and heads along its displacement. A non-continuous
-//! action ends when the error is below 0.01 m. The entity coordinate system is not supported
-//! (warning; the action ends).
+//! action ends when the error is below 0.01 m. The entity coordinate system (the reference's
+//! own axes, esmini's `CS_ENTITY` branch) is in `entity_frame.rs`; in the lane, trajectory and
+//! world systems esmini 3.6's LatDistanceAction::Step does nothing and never ends, which is
+//! what we do, with a warning.
 
+mod entity_frame;
 pub(crate) mod state;
 
-use state::{LatDistanceRt, Phase};
+use entity_frame::{entity_frame_step, Pose};
+use state::{Frame, LatDistanceRt, Phase};
 
 use super::state::ActionRt;
+use crate::dynamics::ESMINI_SMALL_NUMBER as ESMINI_SMALL;
 use crate::roads::lane_geometry::lane_center_t;
 use crate::roads::move_along_s;
 use crate::roads::road_follow::wrap;
@@ -30,6 +35,10 @@ use std::f64::consts::FRAC_PI_2;
 const LARGE: f64 = 1e10;
 const SMALL: f64 = 1e-10;
 const SPRING: f64 = 0.4;
+/// parseDynamicConstraints' defaults for a limit given as (about) zero.
+const DEFAULT_MAX_ACC: f64 = 5.0;
+const DEFAULT_MAX_DEC: f64 = 10.0;
+const DEFAULT_MAX_SPEED: f64 = 250.0 / 3.6;
 /// Distance error below which a non-continuous action is done, m.
 const THRESHOLD: f64 = 0.01;
 
@@ -50,28 +59,52 @@ impl<'a> Sim<'a> {
             self.warn_action(slot, format!("LateralDistanceAction: unknown entity `{}`", spec.entity));
             return ActionRt::Done;
         };
-        let cs = spec.coordinate_system.unwrap_or(CoordinateSystem::Entity);
-        if !matches!(cs, CoordinateSystem::Road | CoordinateSystem::Lane) {
-            self.warn_action(slot, "LateralDistanceAction: only the road coordinate system is supported; the action completes at once".into());
-            return ActionRt::Done;
-        }
+        let frame = match spec.coordinate_system.unwrap_or(CoordinateSystem::Entity) {
+            CoordinateSystem::Road => Frame::Road,
+            CoordinateSystem::Entity => Frame::Entity,
+            other => {
+                self.warn_action(
+                    slot,
+                    format!("LateralDistanceAction: coordinate system `{other:?}` is not supported (nor by esmini 3.6, which then leaves the entity to its default controller): the action runs without effect"),
+                );
+                Frame::Idle
+            }
+        };
         let (Some(a), Some(b)) = (self.entities.get(e), self.entities.get(target)) else { return ActionRt::Done };
-        // Left of the reference: larger t (esmini's default for "any" too).
-        let side = if spec.displacement == Some(LateralDisplacement::RightToReferencedEntity) { -1.0 } else { 1.0 };
-        let mut wanted = side * spec.distance.unwrap_or(0.0).abs();
+        // Left of the reference: larger t (esmini's default for "any" too). Before 1.1 esmini
+        // reads no displacement and keeps the distance's sign; from 1.1 on it takes its magnitude
+        // (ScenarioReader::parseOSCPrivateAction). In road coordinates the sign never counts
+        // (LatDistanceAction::Start).
+        let right = spec.displacement == Some(LateralDisplacement::RightToReferencedEntity) && self.scenario.header.rev_minor >= 1;
+        let side = if right { -1.0 } else { 1.0 };
+        let distance = spec.distance.unwrap_or(0.0);
+        let magnitude = if frame == Frame::Entity && self.scenario.header.rev_minor < 1 { distance } else { distance.abs() };
+        let mut wanted = side * magnitude;
         if spec.freespace {
             wanted += side * (a.bbox[4] + b.bbox[4]) / 2.0;
         }
         let c = spec.constraints;
-        let lim = |v: Option<f64>| v.filter(|x| *x > 0.0).unwrap_or(LARGE);
+        // ScenarioReader::parseDynamicConstraints without an entity: a missing limit is none, a
+        // value under SMALL_NUMBER takes the default (maxSpeed 250 km/h, maxAcceleration 5,
+        // maxDeceleration 10, the rates none).
+        let lim = |v: Option<f64>, default: f64| match v {
+            None => LARGE,
+            Some(x) if x < ESMINI_SMALL => default,
+            Some(x) => x,
+        };
+        let max_acc = lim(c.and_then(|c| c.max_acceleration), DEFAULT_MAX_ACC);
+        let max_speed = lim(c.and_then(|c| c.max_speed), DEFAULT_MAX_SPEED);
+        let max_dec = lim(c.and_then(|c| c.max_deceleration), DEFAULT_MAX_DEC);
         ActionRt::LatDistance(Box::new(LatDistanceRt {
             slot,
             target,
+            frame,
             wanted,
             continuous: spec.continuous,
-            max_acc: lim(c.and_then(|c| c.max_acceleration)),
-            max_acc_rate: lim(c.and_then(|c| c.max_acceleration_rate)),
-            max_speed: lim(c.and_then(|c| c.max_speed)),
+            max_acc,
+            max_acc_rate: lim(c.and_then(|c| c.max_acceleration_rate), LARGE),
+            max_speed,
+            rigid: max_speed >= LARGE && max_acc >= LARGE && max_dec >= LARGE,
             phase: Phase::Init,
             lat_vel: 0.0,
             acceleration: 0.0,
@@ -122,6 +155,31 @@ impl<'a> Sim<'a> {
     }
 
     pub(super) fn step_lat_distance(&mut self, e: usize, r: &mut LatDistanceRt) -> bool {
+        match r.frame {
+            Frame::Road => self.step_lat_distance_road(e, r),
+            Frame::Entity => {
+                self.step_lat_distance_entity(e, r);
+                false
+            }
+            Frame::Idle => false,
+        }
+    }
+
+    /// The entity coordinate system (`entity_frame.rs`): the actor is put where esmini's step
+    /// puts it, facing as it says, and attached to the lane it is over.
+    fn step_lat_distance_entity(&mut self, e: usize, r: &LatDistanceRt) {
+        let (Some(a), Some(b)) = (self.entities.get(e), self.entities.get(r.target)) else { return };
+        let actor = Pose { x: a.x, y: a.y, h: a.h };
+        let reference = Pose { x: b.x, y: b.y, h: b.h };
+        let to = entity_frame_step(actor, reference, r.wanted, a.speed, r.max_acc, LARGE, self.dt);
+        let net = self.net;
+        let Some(en) = self.entities.get_mut(e) else { return };
+        let z = if net.is_some() { None } else { Some(en.z) };
+        en.set_world(net, to.x, to.y, z, to.h);
+        en.moved_by_action = true;
+    }
+
+    fn step_lat_distance_road(&mut self, e: usize, r: &mut LatDistanceRt) -> bool {
         let dt = self.dt;
         let Some(net) = self.net else { return true };
         let Some((ta, tb, side, vel_lat)) = self.lat_state(e, r) else {
@@ -134,7 +192,7 @@ impl<'a> Sim<'a> {
         let error = tb + side * r.wanted - ta;
         match r.phase {
             Phase::Init => {
-                r.phase = if r.max_speed >= LARGE && r.max_acc >= LARGE { Phase::Rigid } else { Phase::Dynamic };
+                r.phase = if r.rigid { Phase::Rigid } else { Phase::Dynamic };
                 r.old = (en.x, en.y);
                 return false;
             }

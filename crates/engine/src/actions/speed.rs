@@ -10,20 +10,11 @@ pub(crate) mod state;
 use state::{SpeedRt, Target};
 
 use super::state::ActionRt;
-use crate::dynamics::{sign, Transition};
+use crate::dynamics::{abs_limit, sign, Transition};
 use crate::sim::Sim;
 use openscenario::{DynamicsDimension, DynamicsShape, SpeedTarget, SpeedTargetValueType, TransitionDynamics};
 
 use crate::dynamics::ESMINI_SMALL_NUMBER as SMALL_NUMBER;
-
-/// esmini's ABS_LIMIT: limit the magnitude, keep the sign.
-fn abs_limit(v: f64, limit: f64) -> f64 {
-    if v.abs() > limit.abs() {
-        sign(v) * limit.abs()
-    } else {
-        v
-    }
-}
 
 /// The shape's value; an empty span (time or distance under SMALL_NUMBER) is a step
 /// (esmini's TransitionDynamics::Evaluate).

@@ -10,7 +10,8 @@
 //! covers the distance in the master's time. Distances are measured along the roads when both
 //! ends are on the road network, else in a straight line. The action ends when the actor or the
 //! master is within its tolerance, when either distance starts to grow (a target was passed),
-//! or when the master arrives within the next step; then the actor takes the final speed.
+//! or when the master arrives within the next step; then the actor takes the final speed. While
+//! the master stands still the actor stands too.
 
 pub(crate) mod state;
 
@@ -22,7 +23,8 @@ use crate::roads::road_distance::road_distance;
 use crate::sim::Sim;
 use openscenario::{FinalSpeed, Position, SpeedTargetValueType, SteadyState};
 
-const SMALL: f64 = 1e-10;
+/// esmini's SMALL_NUMBER, every tolerance of SynchronizeAction::Step.
+const SMALL: f64 = crate::dynamics::ESMINI_SMALL_NUMBER;
 const LARGE: f64 = 1e10;
 /// The deceleration esmini uses to stop at once, m/s².
 const STOP_DECELERATION: f64 = -8.0;
@@ -104,9 +106,14 @@ impl<'a> Sim<'a> {
         (en.x - p.x).hypot(en.y - p.y)
     }
 
-    /// Speed projected on the road's s axis, keeping the sign of the speed.
+    /// The velocity projected on the road's s axis, with the sign of the speed (esmini's
+    /// `SIGN(GetSpeed()) * |Position::GetVelS()|`). The velocity is the one derived from the
+    /// last step's motion, so a master that just got a speed counts as moving one step later.
     fn speed_along_road(&self, e: usize) -> f64 {
-        self.entities.get(e).map_or(0.0, |en| en.speed.signum() * (en.speed * en.yaw_offset.cos()).abs())
+        self.entities.get(e).map_or(0.0, |en| {
+            let road_h = en.h - en.yaw_offset;
+            en.speed.signum() * (en.vel.0 * road_h.cos() + en.vel.1 * road_h.sin()).abs()
+        })
     }
 
     /// One step; true when the action is done.
@@ -127,6 +134,12 @@ impl<'a> Sim<'a> {
             if t_master < dt {
                 done = true;
             }
+        } else if s.mode != Mode::Waiting {
+            // SynchronizeAction::Step: a master standing still ("Waiting for master to move")
+            // stops the actor at once, whether a final speed is given or not; with one it
+            // waits until the master moves again.
+            s.mode = Mode::Waiting;
+            self.set_speed(e, 0.0);
         }
         let speed = self.entities.get(e).map_or(0.0, |x| x.speed);
         if done {

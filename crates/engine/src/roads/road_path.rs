@@ -4,7 +4,7 @@
 //! the first road it leaves by, which end of the last road before the second position's road
 //! it leaves by, and whether a lane id keeps its sign along the chain.
 
-use opendrive::{ContactPoint, RoadNetwork};
+use opendrive::{ContactPoint, ElementType, RoadEnd, RoadNetwork};
 
 /// Most road ends the search settles (hostile input: bounded work per call).
 const MAX_SETTLED: usize = 512;
@@ -36,7 +36,7 @@ pub(crate) fn path_ends(net: &RoadNetwork, a: usize, sa: f64, b: usize) -> Optio
     let mut frontier: Vec<Reached> = Vec::new();
     let mut settled: Vec<(usize, ContactPoint)> = Vec::new();
     let push = |frontier: &mut Vec<Reached>, road: usize, exit: ContactPoint, d: f64, first: Option<ContactPoint>, flip: bool| {
-        for e in net.roads_at(road, exit) {
+        for e in next_roads(net, road, exit) {
             // Entering by the same kind of end as left by turns the lane numbering around.
             let f = flip ^ (e.contact == exit);
             frontier.push((d, e.road, e.contact, first.unwrap_or(exit), exit, f));
@@ -64,4 +64,24 @@ pub(crate) fn path_ends(net: &RoadNetwork, a: usize, sa: f64, b: usize) -> Optio
         push(&mut frontier, road, entry.opposite(), d + r.length, Some(first), flip);
     }
     None
+}
+
+/// The roads the search steps to from `road`'s end `exit`. Into a junction esmini's
+/// RoadPath::Calculate takes only the connections whose incoming road is this one
+/// (Junction::GetConnectingRoadIdFromIncomingRoadId), entered at their contact point: of two
+/// connecting roads laid along the same way in opposite directions, the one leading out of
+/// this road.
+fn next_roads(net: &RoadNetwork, road: usize, exit: ContactPoint) -> Vec<RoadEnd> {
+    let Some(r) = net.roads.get(road) else { return Vec::new() };
+    match r.link_at(exit) {
+        Some(l) if l.element_type == ElementType::Junction => {
+            let Some(j) = net.junction(&l.element_id) else { return Vec::new() };
+            j.connections
+                .iter()
+                .filter(|c| c.incoming_road.as_deref() == Some(r.id.as_str()))
+                .filter_map(|c| Some(RoadEnd { road: net.road_index(c.target_road()?)?, contact: c.contact_point.unwrap_or(ContactPoint::Start) }))
+                .collect()
+        }
+        _ => net.roads_at(road, exit),
+    }
 }

@@ -167,7 +167,10 @@ fn the_storyboards_motion_actions_yield_to_the_outside_as_esminis_do() {
     // the states the script gives, the course is the open-loop one (closed_loop/replay.rs).
     let replaced = External { motion: ScriptedMotion::Replaced, ..External::named(["Ego"]) };
     let run = drive(&scenario(&ego_story()), &replaced, hold);
-    assert!(event_time(&run, "OverAction", "end").is_some_and(|t| t > 2.9), "{:?}", event_time(&run, "OverAction", "end"));
+    // (The lane change ends a little before its 2 s: the held entity's speed is the speed
+    // action's from 0, and while the lateral rate exceeds it esmini moves by speed·dt along the
+    // straight line to the target, which can outrun the shape's clock — LatLaneChangeAction::Step.)
+    assert!(event_time(&run, "OverAction", "end").is_some_and(|t| t > 2.5), "{:?}", event_time(&run, "OverAction", "end"));
     assert!(event_time(&run, "FasterAction", "end").is_none_or(|t| t > 2.9), "{:?}", event_time(&run, "FasterAction", "end"));
     assert!(!run.warnings.iter().any(|w| w.message.contains("driven from outside")), "{:?}", run.warnings);
     assert!(close(at(&run, "Ego", 5.0).x, 50.0, 1e-12) && close(at(&run, "Ego", 5.0).y, -1.75, 1e-12));

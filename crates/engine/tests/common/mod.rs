@@ -99,6 +99,30 @@ pub(crate) fn run_with(text: &str, settings: &Settings) -> Run {
     engine::simulate(&scenario, Some(&net), settings).expect("simulate")
 }
 
+/// Run the fixture scenario `name` (in `fixtures/`) on the straight fixture road, 0.01 s steps.
+pub(crate) fn run_straight_fixture(name: &str, max_time: f64) -> Run {
+    run_fixture_on(name, "straight.xodr", max_time)
+}
+
+/// Run the fixture scenario `name` on the fixture road network `map`, 0.01 s steps.
+pub(crate) fn run_fixture_on(name: &str, map: &str, max_time: f64) -> Run {
+    let loaded = openscenario::load(&fixtures().join(name), &Default::default()).expect("fixture scenario loads");
+    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
+    let net = opendrive::load(fixtures().join(map)).expect("fixture road loads").network;
+    engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time }).expect("simulate")
+}
+
+/// Assert that `run` puts each (entity, time, x, y, heading) row of an esmini log (6 decimals)
+/// within `tol` m and `tol_h` rad.
+pub(crate) fn assert_esmini_poses(run: &Run, rows: &[(&str, f64, f64, f64, f64)], tol: f64, tol_h: f64) {
+    use std::f64::consts::PI;
+    for &(name, t, x, y, h) in rows {
+        let s = at(run, name, t);
+        let dh = (s.h - h + PI).rem_euclid(2.0 * PI) - PI;
+        assert!(close(s.x, x, tol) && close(s.y, y, tol) && dh.abs() < tol_h, "{name} at {t}: ({}, {}, {}) against esmini ({x}, {y}, {h})", s.x, s.y, s.h);
+    }
+}
+
 pub(crate) fn run(text: &str) -> Run {
     run_with(text, &Settings { step: 0.01, max_time: 20.0 })
 }

@@ -7,17 +7,31 @@ pub(super) enum Phase {
     Dynamic,
 }
 
+/// The coordinate system the distance is kept in, as esmini acts on it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) enum Frame {
+    /// t along the road (`CS_ROAD`).
+    Road,
+    /// The reference's own axes (`CS_ENTITY`).
+    Entity,
+    /// Any other (lane, trajectory, world): esmini's step does nothing and never ends.
+    Idle,
+}
+
 #[derive(Debug, Clone)]
 pub(crate) struct LatDistanceRt {
     /// The action's slot, for its warning.
     pub(super) slot: usize,
     pub(super) target: usize,
+    pub(super) frame: Frame,
     /// Signed wanted t of the actor relative to the reference (+ left).
     pub(super) wanted: f64,
     pub(super) continuous: bool,
     pub(super) max_acc: f64,
     pub(super) max_acc_rate: f64,
     pub(super) max_speed: f64,
+    /// Whether the constraints leave the road-frame motion unlimited (esmini's MOVE_RIGID).
+    pub(super) rigid: bool,
     pub(super) phase: Phase,
     pub(super) lat_vel: f64,
     pub(super) acceleration: f64,

@@ -2,4 +2,5 @@
 
 mod missing_lane;
 mod step;
+mod too_fast_and_road_end;
 mod transition;

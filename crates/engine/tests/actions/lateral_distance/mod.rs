@@ -1,4 +1,6 @@
-//! LateralDistanceAction on one road and across roads.
+//! LateralDistanceAction on one road and across roads, in road and entity coordinates.
 
+mod across_junction;
 mod across_roads;
+mod entity_frame;
 mod road_coordinates;

@@ -80,11 +80,3 @@ fn max_acceleration_spring_settles_and_a_single_shot_ends() {
         assert!(acc.abs() <= 2.0 + 1e-6, "step {k}: {acc}");
     }
 }
-
-#[test]
-fn entity_coordinate_system_warns_and_ends() {
-    let action = r#"<PrivateAction><LateralAction><LateralDistanceAction entityRef="Target" coordinateSystem="entity" distance="1" freespace="true" continuous="true"/></LateralAction></PrivateAction>"#;
-    let run = run(&scenario(action));
-    assert!(run.warnings.iter().any(|w| w.to_string().contains("LateralDistanceAction")));
-    assert!(close(at(&run, "Ego", 2.0).y, -1.75, 1e-9));
-}

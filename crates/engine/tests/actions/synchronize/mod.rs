@@ -1,4 +1,5 @@
 //! SynchronizeAction and its tolerances.
 
 mod basic;
+mod master_standing;
 mod tolerance;
