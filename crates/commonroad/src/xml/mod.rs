@@ -13,5 +13,5 @@ pub use atomic::{remove_stale_temporaries, write_atomic};
 pub use error::WriteError;
 pub use escape::escape;
 pub use number::{format_decimal, is_written_positive, DECIMALS};
-pub use read::{read_scenario_file, read_scenario_str, ReadError, ReadScenario, ReadWarning, MAX_FILE_BYTES};
-pub use write::{write_map, write_scenario};
+pub use read::{read_planning_problem_str, read_scenario_file, read_scenario_str, ReadError, ReadPlanningProblem, ReadScenario, ReadWarning, MAX_FILE_BYTES};
+pub use write::{write_map, write_planning_problem, write_scenario, PLANNING_PROBLEM_ROOT};
