@@ -5,6 +5,7 @@
 
 mod check_cmd;
 mod convert_cmd;
+mod export_cmd;
 mod inspect;
 mod map_cmd;
 mod render_cmd;
@@ -31,6 +32,10 @@ enum Command {
     Convert(Box<convert_cmd::ConvertArgs>),
     /// Convert an OpenDRIVE road network (.xodr) into a CommonRoad lanelet network (.xml).
     Map(map_cmd::MapArgs),
+    /// The way back: CommonRoad scenarios (2018b/2020a XML, 2024 protobuf) as OpenSCENARIO
+    /// (1.3, or 1.0) and OpenDRIVE, for OpenSCENARIO simulators to replay.
+    #[command(long_about = export_cmd::ABOUT)]
+    Export(Box<export_cmd::ExportArgs>),
     /// Load an OpenSCENARIO file and show what it resolves to: entities, storyboard,
     /// parameters, warnings.
     Inspect(inspect::InspectArgs),
@@ -66,6 +71,7 @@ fn main() -> ExitCode {
     let result = match &cli.command {
         Command::Convert(args) => convert_cmd::run(args),
         Command::Map(args) => map_cmd::run(args),
+        Command::Export(args) => export_cmd::run(args),
         Command::Inspect(args) => inspect::run(args),
         Command::Simulate(args) => simulate::run(args),
         Command::Render(args) => render_cmd::run(args),
