@@ -111,11 +111,14 @@ fn lanelet(l: &mp::Lanelet, bounds: &BTreeMap<i32, &mp::Bound>, stop_lines: &BTr
     Ok(out)
 }
 
-/// The national id of a 2024 sign member in the table of `country` (the writer's table read
-/// backwards; `MAX_SPEED` is `274` where the country's table has no id of its own for it).
+/// The 2020a id of a 2024 sign member for `country`: the writer's table read backwards, an id
+/// the 2020a XSD knows first; `MAX_SPEED` is `274` where the country's own id is not in the XSD
+/// (the 2020a readers read 274 as the speed limit of any country, and the writer writes it so).
 fn national_id(country: &str, member: &str) -> Option<&'static str> {
     let table = SIGN_NAMES.iter().find(|(c, _)| *c == country)?.1;
-    table.iter().find(|(_, name)| *name == member).map(|(id, _)| *id).or((member == "MAX_SPEED").then_some("274"))
+    let mut ids = table.iter().filter(|(_, name)| *name == member).map(|(id, _)| *id);
+    let first = ids.clone().next();
+    ids.find(|id| crate::is_xsd_traffic_sign_id(id)).or((member == "MAX_SPEED").then_some("274")).or(first)
 }
 
 fn traffic_sign(s: &mp::TrafficSign, country: &str, warnings: &mut Vec<String>) -> Result<TrafficSign, Bad> {
