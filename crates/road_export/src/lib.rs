@@ -1,4 +1,4 @@
-//! `road_export` — a CommonRoad lanelet network as an OpenDRIVE 1.8 road network.
+//! `road_export` — a CommonRoad lanelet network as an OpenDRIVE road network.
 //!
 //! **This is the stand-in of the `xosc-export` branch**, not the map converter of issue 24: it
 //! has the seam's exact interface ([`Options`], [`RoadExport`], [`export`]) and the smallest
@@ -59,7 +59,7 @@ pub struct RoadExport {
     pub warnings: Vec<Warning>,
 }
 
-/// The OpenDRIVE 1.8 road network of `network`. Deterministic: the same network and options
+/// The OpenDRIVE road network of `network` (the stand-in writes 1.7; see `write.rs`). Deterministic: the same network and options
 /// give the same text.
 pub fn export(network: &LaneletNetwork, options: &Options) -> Result<RoadExport, Error> {
     let mut warnings = vec![Warning {

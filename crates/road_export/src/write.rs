@@ -1,7 +1,8 @@
 //! The stand-in's OpenDRIVE text: the header, a road per lanelet (its pieces as `line`
 //! geometries, one lane `-1` of the lanelet's width centred on the line by a `laneOffset`), and
 //! the signals of the traffic lights and signs on the road of the first lanelet that refers to
-//! them (`positionRoad`, OpenDRIVE 1.8's form).
+//! them. OpenDRIVE 1.7: its signals have `s` and `t` attributes, which esmini 3.6.0 and
+//! osc2cr's reader read (1.8 moved them into `positionRoad`, which neither reads).
 
 use std::fmt::Write;
 
@@ -57,19 +58,19 @@ fn signal_xml(out: &mut String, sig: &SignalPlace, road: &Road, at: (f64, f64)) 
     let (dynamic, name) = if sig.light { ("yes", "traffic light") } else { ("no", "traffic sign") };
     let _ = writeln!(
         out,
-        "      <signal id=\"{}\" name=\"{name} {}\" dynamic=\"{dynamic}\" orientation=\"+\" type=\"{}\" subtype=\"-1\" height=\"0.8\" width=\"0.3\">",
+        "      <signal s=\"{}\" t=\"{}\" id=\"{}\" name=\"{name} {}\" dynamic=\"{dynamic}\" orientation=\"+\" zOffset=\"2\" type=\"{}\" subtype=\"-1\" height=\"0.8\" width=\"0.3\"/>",
+        num(s),
+        num(t),
         sig.id,
         sig.id,
         escape(&sig.kind)
     );
-    let _ = writeln!(out, "        <positionRoad roadId=\"{}\" s=\"{}\" t=\"{}\" zOffset=\"2\" hOffset=\"0\"/>", road.lanelet, num(s), num(t));
-    out.push_str("      </signal>\n");
 }
 
 pub(crate) fn document(network: &LaneletNetwork, roads: &[Road], options: &Options, warnings: &mut Vec<Warning>) -> Result<String, Error> {
     let mut out = String::new();
     out.push_str("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<OpenDRIVE>\n");
-    let _ = write!(out, "  <header revMajor=\"1\" revMinor=\"8\" name=\"{}\"", escape(&options.name));
+    let _ = write!(out, "  <header revMajor=\"1\" revMinor=\"7\" name=\"{}\"", escape(&options.name));
     match &options.geo_reference {
         Some(g) => {
             let _ = writeln!(out, ">\n    <geoReference>{}</geoReference>\n  </header>", escape(g));
