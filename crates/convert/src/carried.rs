@@ -145,3 +145,53 @@ pub fn retarget(c: &Carried, network: Option<&LaneletNetwork>, warnings: &mut Ve
     }
     problem
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use commonroad::{GoalState, LaneletBounds, LaneletType, PlanningInitialState, PlanningProblemId, TimeInterval};
+
+    fn lanelet(id: u64, x0: f64, x1: f64, y0: f64) -> Lanelet {
+        let line = |y: f64| vec![Point::new(x0, y), Point::new(x1, y)];
+        let bounds = LaneletBounds::new(line(y0 + 3.0), line(y0)).unwrap_or_else(|e| panic!("{e}"));
+        Lanelet::new(LaneletId::new(id).unwrap_or_else(|| unreachable!()), bounds, LaneletType::Urban)
+    }
+
+    fn carried(goal_lanelet: Lanelet) -> Carried {
+        let problem = PlanningProblem {
+            id: PlanningProblemId::new(9).unwrap_or_else(|| unreachable!()),
+            initial_state: PlanningInitialState { x: 0.0, y: 1.5, orientation: 0.0, velocity: 5.0, yaw_rate: 0.0, slip_angle: 0.0, acceleration: None },
+            goal_states: vec![GoalState {
+                time: TimeInterval::new(0, 10).unwrap_or_else(|e| panic!("{e}")),
+                position: Some(GoalPosition::Lanelets(vec![goal_lanelet.id])),
+                orientation: None,
+                velocity: None,
+            }],
+        };
+        Carried { entity: "Ego".into(), problem, lanelets: vec![goal_lanelet] }
+    }
+
+    #[test]
+    fn goal_lanelets_are_found_again_by_geometry() {
+        // the carried goal lanelet 7 (x 0..100, y 0..3) is split in the converted map into
+        // lanelets 40 and 41; 42 lies beside it, 43 runs the other way over it
+        let mut reversed = lanelet(43, 100.0, 0.0, 3.0);
+        reversed.bounds = LaneletBounds::new(reversed.bounds.right().to_vec(), reversed.bounds.left().to_vec()).unwrap_or_else(|e| panic!("{e}"));
+        let network = LaneletNetwork {
+            lanelets: vec![lanelet(40, 0.0, 60.0, 0.0), lanelet(41, 60.0, 100.0, 0.0), lanelet(42, 0.0, 100.0, 3.0), reversed],
+            ..Default::default()
+        };
+        let mut warnings = Vec::new();
+        let p = retarget(&carried(lanelet(7, 0.0, 100.0, 0.0)), Some(&network), &mut warnings);
+        let ids: Vec<u64> = match &p.goal_states[0].position {
+            Some(GoalPosition::Lanelets(ids)) => ids.iter().map(|i| i.get()).collect(),
+            other => panic!("{other:?}"),
+        };
+        assert_eq!(ids, vec![40, 41]);
+        assert!(warnings.is_empty(), "{warnings:?}");
+        // no map: the goal is the lanelet's outline, with a warning
+        let p = retarget(&carried(lanelet(7, 0.0, 100.0, 0.0)), None, &mut warnings);
+        assert!(matches!(&p.goal_states[0].position, Some(GoalPosition::Polygons(v)) if v.len() == 1 && v[0].points().len() == 4));
+        assert_eq!(warnings.len(), 1);
+    }
+}
