@@ -210,6 +210,15 @@ fn one(found: &Found, options: &BatchOptions, cache: &MapCache, written: &Writte
     report
 }
 
+/// Exports one scenario file into `out_dir` as a batch of it alone does: `<name>.xosc` there,
+/// its map beside it. The report says what was written, or why not.
+pub fn export_file(input: &Path, out_dir: &Path, options: &ExportOptions) -> Report {
+    let found = Found { path: input.to_path_buf(), folder: label(out_dir), output_stem: PathBuf::from(scenario_name(input)) };
+    let batch = BatchOptions { out_dir: out_dir.to_path_buf(), jobs: 1, export: options.clone() };
+    // `one` makes the output folder (the `.xosc`'s folder) before it writes the map into it
+    one(&found, &batch, &MapCache::new(), &Mutex::new(HashMap::new()))
+}
+
 /// Exports every scenario of `inputs`; `sink` gets each report in input order as it is ready.
 pub fn run_batch(inputs: &[PathBuf], options: &BatchOptions, sink: &mut dyn FnMut(&Report)) -> Result<BatchTotals, String> {
     let (found, skipped) = discover(inputs)?;

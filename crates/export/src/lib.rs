@@ -46,7 +46,7 @@ mod xml;
 
 use std::sync::Arc;
 
-pub use batch::{discover, run_batch, BatchOptions, BatchTotals, Found};
+pub use batch::{discover, export_file, run_batch, BatchOptions, BatchTotals, Found};
 pub use carrier::PLANNING_PROBLEM_PROPERTY;
 pub use entity::{ID_PROPERTY, TYPE_PROPERTY};
 pub use map_file::{map_file, MapCache, MapFile, MapResult};

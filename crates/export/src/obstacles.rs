@@ -11,10 +11,12 @@
 //! added when the simulation time passes (k − 1)·dt: a simulator stepping at dt shows it first
 //! at k·dt on its first state; a finer step shows it standing on its first state a little
 //! earlier (less than dt). It is deleted when the time passes its last step, so it is still
-//! there at that step. (esmini evaluates story triggers from its second step on: with a step
-//! of dt an obstacle whose first state is at step 1 appears one step late; a step of dt/2 or
-//! finer has no such case.) Times carry a margin of a thousandth of dt against the rounding of
-//! summed steps.
+//! there at that step. Times carry a margin of a thousandth of dt against the rounding of
+//! summed steps, and no event fires at time 0 (`> dt/1000` at the earliest): esmini runs time 0
+//! twice — its Init frame (a step of 0, whose events already fire and whose row is logged at 0)
+//! and its first step — so an obstacle whose first state is at step 1 is added in the step
+//! after 0 and is there at step 1 when the simulator steps at dt/2 or finer (at dt it is one
+//! step late).
 
 use commonroad::{AbsoluteShape, DynamicObstacle, EnvironmentObstacle, Scenario, State, StaticObstacle};
 
@@ -75,11 +77,12 @@ fn dynamic(o: &DynamicObstacle, dt: f64, end_step: u64, version: OscVersion, war
     } else {
         let mut actions = vec![action(format!("{name}_add"), add_entity(&name, x, y, first.orientation))];
         actions.extend(moves.map(|m| action(format!("{name}_follow"), m)));
-        let at = (first.time_step - 1) as f64 * dt - margin;
+        let at = ((first.time_step - 1) as f64 * dt - margin).max(margin);
         (Vec::new(), vec![event(format!("{name}_appears"), actions, at)])
     };
     if last.time_step < end_step {
-        events.push(event(format!("{name}_leaves"), vec![action(format!("{name}_delete"), delete_entity(&name))], last.time_step as f64 * dt - margin));
+        let at = (last.time_step as f64 * dt - margin).max(margin);
+        events.push(event(format!("{name}_leaves"), vec![action(format!("{name}_delete"), delete_entity(&name))], at));
     }
     Placed { entity, init, events, last_step: Some(last.time_step) }
 }
