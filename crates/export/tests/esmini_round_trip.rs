@@ -21,7 +21,7 @@ use std::time::{Duration, Instant};
 
 use commonroad::{Scenario, Shape, State};
 
-use crate::common::{all_scenarios, esmini, export_into, fresh_dir, short};
+use crate::common::{acceptance_scenarios, esmini, export_batch, fresh_dir, short};
 
 /// The acceptance threshold, m.
 const TOLERANCE: f64 = 0.10;
@@ -156,10 +156,9 @@ fn compare(log: &Log, expect: &[(String, u64, f64, f64)]) -> (f64, usize) {
     (worst, missing)
 }
 
-fn round_trip(esmini: &Path, input: &Path, dir: &Path) -> Outcome {
+fn round_trip(esmini: &Path, input: &Path, exported: &Result<PathBuf, String>) -> Outcome {
     let mut out = Outcome { input: input.to_path_buf(), states: 0, worst: 0.0, missing: 0, problems: Vec::new(), unfiltered: None };
-    let options = export::ExportOptions { play_to_end: true, ..Default::default() };
-    let (xosc, source) = match export_into(input, dir, &options).and_then(|(x, _)| export::read_source(input).map(|s| (x, s))) {
+    let (xosc, source) = match exported.clone().and_then(|x| export::read_source(input).map(|s| (x, s))) {
         Ok(v) => v,
         Err(e) => {
             out.problems.push(format!("not exported: {e}"));
@@ -196,12 +195,13 @@ fn round_trip(esmini: &Path, input: &Path, dir: &Path) -> Outcome {
 #[test]
 fn every_obstacle_replays_within_10_cm_in_esmini() {
     let Some(esmini) = esmini() else { return };
-    let inputs = all_scenarios();
+    let inputs = acceptance_scenarios();
     if inputs.is_empty() {
         return;
     }
-    let root = fresh_dir("esmini-round-trip");
     let start = Instant::now();
+    let root = fresh_dir("esmini-round-trip");
+    let exported = export_batch(&inputs, &root, &export::ExportOptions { play_to_end: true, ..Default::default() });
     let next = AtomicUsize::new(0);
     let outcomes: Mutex<Vec<(usize, Outcome)>> = Mutex::new(Vec::new());
     let workers = std::thread::available_parallelism().map_or(2, |n| n.get()).max(2);
@@ -209,10 +209,8 @@ fn every_obstacle_replays_within_10_cm_in_esmini() {
         for _ in 0..workers {
             scope.spawn(|| loop {
                 let i = next.fetch_add(1, Ordering::Relaxed);
-                let Some(input) = inputs.get(i) else { break };
-                let dir = root.join(i.to_string());
-                std::fs::create_dir_all(&dir).expect("scenario folder");
-                let o = round_trip(&esmini, input, &dir);
+                let Some((input, xosc)) = exported.get(i) else { break };
+                let o = round_trip(&esmini, input, xosc);
                 outcomes.lock().expect("outcomes").push((i, o));
             });
         }

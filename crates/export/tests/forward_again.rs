@@ -7,11 +7,11 @@
 //! the ego (keeping its lane and speed) reaches its goal, which can be before the last states.
 
 use std::collections::HashMap;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use commonroad::{GoalPosition, LaneletNetwork, PlanningProblem, Scenario, State};
 
-use crate::common::{all_scenarios, export_into, fresh_dir, short};
+use crate::common::{acceptance_scenarios, export_batch, fresh_dir, short};
 
 const POSITION: f64 = 0.01;
 /// The carrier writes 6 decimals (0.5e-6 of rounding).
@@ -135,13 +135,13 @@ fn problem_differences(s: &PlanningProblem, net_s: &LaneletNetwork, f: &Planning
 }
 
 /// The differences between S and convert(export(S)), or why there is nothing to compare.
-fn forward(input: &Path, dir: &Path) -> Result<Vec<String>, String> {
+fn forward(input: &Path, exported: &Result<PathBuf, String>) -> Result<Vec<String>, String> {
     let source = export::read_source(input)?;
     let s: &Scenario = &source.scenario;
     if source.problems.problems.is_empty() && s.dynamic_obstacles.is_empty() && s.static_obstacles.is_empty() {
         return Err("nothing to convert (no planning problem, no obstacle)".into());
     }
-    let (xosc, _) = export_into(input, dir, &export::ExportOptions { play_to_end: true, ..Default::default() })?;
+    let xosc = exported.clone()?;
     let name = export::scenario_name(input);
     let request = convert::Request { path: &xosc, name: &name, config: 1, parameters: &[], source: "export round trip".into() };
     let options = convert::ConvertOptions { dt: s.header.time_step_size, ..Default::default() };
@@ -197,21 +197,20 @@ fn forward(input: &Path, dir: &Path) -> Result<Vec<String>, String> {
 
 #[test]
 fn convert_of_export_gives_the_obstacles_and_planning_problems_back() {
-    let inputs = all_scenarios();
+    let inputs = acceptance_scenarios();
     if inputs.is_empty() {
         return;
     }
     let root = fresh_dir("forward-again");
+    let exported = export_batch(&inputs, &root, &export::ExportOptions { play_to_end: true, ..Default::default() });
     let next = std::sync::atomic::AtomicUsize::new(0);
     let results = std::sync::Mutex::new(Vec::new());
     std::thread::scope(|scope| {
         for _ in 0..std::thread::available_parallelism().map_or(2, |n| n.get()).max(2) {
             scope.spawn(|| loop {
                 let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-                let Some(input) = inputs.get(i) else { break };
-                let dir = root.join(i.to_string());
-                std::fs::create_dir_all(&dir).expect("folder");
-                let r = forward(input, &dir);
+                let Some((input, xosc)) = exported.get(i) else { break };
+                let r = forward(input, xosc);
                 results.lock().expect("results").push((i, r));
             });
         }
@@ -222,7 +221,7 @@ fn convert_of_export_gives_the_obstacles_and_planning_problems_back() {
     let mut skipped = Vec::new();
     let mut failed = Vec::new();
     for (i, r) in results {
-        let input = &inputs[i];
+        let input = &exported[i].0;
         match r {
             Ok(d) if d.is_empty() => compared += 1,
             Ok(d) => {
