@@ -94,7 +94,8 @@ pub fn run(args: &ExportArgs) -> Result<(), Failure> {
     for s in &totals.skipped {
         eprintln!("skipped {}: {}", s.path.display(), s.reason);
     }
-    print!("{}", export::render_summary(&totals.summary));
+    let cells: Vec<Vec<String>> = totals.summary.iter().map(export::SummaryRow::cells).collect();
+    print!("{}", convert::render_table(&export::SummaryRow::HEADER, &cells));
     eprintln!(
         "{} exported, {} failed, {} skipped, {} map(s), {} warnings{} -> {}",
         totals.exported,

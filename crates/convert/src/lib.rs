@@ -73,6 +73,6 @@ pub use single::{
     batch_name, batch_source, convert_file, convert_file_with, convert_variation, convert_variation_with, load_distribution, output_file_name, output_name,
 };
 pub use story_marks::event_marks;
-pub use summary::{render as render_summary, summarise, Summary};
+pub use summary::{render as render_summary, render_table, summarise, Summary};
 pub use tags::scenario_tags;
 pub use tracks::{tracks, Placement, Track, MIN_BOX_SIDE};

@@ -51,7 +51,7 @@ pub use carrier::PLANNING_PROBLEM_PROPERTY;
 pub use entity::{ID_PROPERTY, TYPE_PROPERTY};
 pub use map_file::{map_file, MapCache, MapFile, MapResult};
 pub use options::{EgoController, ExportOptions, OscVersion};
-pub use report::{render_summary, summarise, Failure, JsonReport, MapReport, Report, Skipped, Stage, Status, SummaryRow};
+pub use report::{summarise, Failure, JsonReport, MapReport, Report, Skipped, Stage, Status, SummaryRow};
 pub use scenario::{document, Document, Facts};
 pub use source::{is_input, read_source, scenario_name, Source};
 

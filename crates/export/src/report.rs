@@ -1,8 +1,8 @@
 //! What a batch tells the user, as data: a report per scenario (serialised for `--report`),
-//! the maps written with their warnings, and the summary table per folder.
+//! the maps written with their warnings, and the summary per folder (rows and their cells; the
+//! CLI draws the table).
 
 use std::collections::BTreeMap;
-use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 use serde::Serialize;
@@ -121,42 +121,21 @@ pub fn summarise(reports: &[Report]) -> Vec<SummaryRow> {
     rows
 }
 
-/// The summary as an aligned text table.
-pub fn render_summary(rows: &[SummaryRow]) -> String {
-    let header = ["folder", "scenarios", "exported", "success", "mean time", "obstacles"];
-    let cells: Vec<[String; 6]> = rows
-        .iter()
-        .map(|r| {
-            [
-                r.folder.clone(),
-                r.scenarios.to_string(),
-                r.exported.to_string(),
-                format!("{:.1} %", 100.0 * r.success_rate),
-                r.mean_time_ms.map_or("-".into(), |v| format!("{v:.1} ms")),
-                r.obstacles.to_string(),
-            ]
-        })
-        .collect();
-    let mut width = header.map(str::len);
-    for c in &cells {
-        for (w, s) in width.iter_mut().zip(c) {
-            *w = (*w).max(s.chars().count());
-        }
+impl SummaryRow {
+    /// The table's header (the CLI draws the table).
+    pub const HEADER: [&'static str; 6] = ["folder", "scenarios", "exported", "success", "mean time", "obstacles"];
+
+    /// The row's cells, in the order of [`SummaryRow::HEADER`].
+    pub fn cells(&self) -> Vec<String> {
+        vec![
+            self.folder.clone(),
+            self.scenarios.to_string(),
+            self.exported.to_string(),
+            format!("{:.1} %", 100.0 * self.success_rate),
+            self.mean_time_ms.map_or("-".into(), |v| format!("{v:.1} ms")),
+            self.obstacles.to_string(),
+        ]
     }
-    let mut out = String::new();
-    let line = |out: &mut String, c: &[String]| {
-        for (i, (s, w)) in c.iter().zip(width).enumerate() {
-            let pad = " ".repeat(w.saturating_sub(s.chars().count()));
-            let _ = if i == 0 { write!(out, "{s}{pad}") } else { write!(out, "  {pad}{s}") };
-        }
-        out.push('\n');
-    };
-    line(&mut out, &header.map(String::from));
-    line(&mut out, &width.map(|w| "-".repeat(w)));
-    for c in &cells {
-        line(&mut out, c);
-    }
-    out
 }
 
 /// The JSON report of a batch.

@@ -1,7 +1,7 @@
 //! A small element tree for the OpenSCENARIO document and its writer: attributes in the order
-//! they were added, two-space indentation, escaped values, and numbers in their shortest
-//! round-trip form (never an exponent, never `-0`), so that the same scenario gives the same
-//! bytes and every coordinate is written exactly.
+//! they were added, two-space indentation, escaped values, coordinates in their shortest
+//! round-trip form (never an exponent, never `-0`: every coordinate written exactly), times as
+//! CommonRoad writes decimals; the same scenario gives the same bytes.
 
 /// An element: name, attributes in order, children in order.
 #[derive(Debug, Clone, PartialEq)]
@@ -87,23 +87,13 @@ pub(crate) fn document(root: &El) -> String {
     out
 }
 
-/// Escapes an attribute value. Line breaks and tabs are written as character references so a
-/// reader's attribute-value normalisation keeps them.
+/// Escapes an attribute value (`commonroad::xml::escape`: line breaks and tabs as character
+/// references, so a reader's attribute-value normalisation keeps them). Characters XML 1.0
+/// cannot hold at all become U+FFFD.
 fn escape_into(out: &mut String, s: &str) {
-    for c in s.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            '\n' => out.push_str("&#10;"),
-            '\r' => out.push_str("&#13;"),
-            '\t' => out.push_str("&#9;"),
-            // characters XML 1.0 cannot hold at all
-            c if (c as u32) < 0x20 => out.push('\u{FFFD}'),
-            c => out.push(c),
-        }
-    }
+    let holdable = |c: char| !(((c as u32) < 0x20 && !matches!(c, '\t' | '\n' | '\r')) || c == '\u{FFFE}' || c == '\u{FFFF}');
+    let clean: String = s.chars().map(|c| if holdable(c) { c } else { '\u{FFFD}' }).collect();
+    out.push_str(&commonroad::xml::escape(&clean).unwrap_or_default());
 }
 
 /// A number in its shortest round-trip form; `-0` is `0`. The caller has checked it is finite.
@@ -115,19 +105,9 @@ pub(crate) fn num(v: f64) -> String {
     }
 }
 
-/// A time `k·dt` rounded to the nanosecond (`0.3`, not `0.30000000000000004`).
+/// A time `k·dt` as CommonRoad writes decimals (6 digits: `0.3`, not `0.30000000000000004`).
 pub(crate) fn time(seconds: f64) -> String {
-    let mut s = format!("{seconds:.9}");
-    while s.ends_with('0') {
-        s.pop();
-    }
-    if s.ends_with('.') {
-        s.pop();
-    }
-    if s == "-0" {
-        s = "0".to_string();
-    }
-    s
+    commonroad::xml::format_decimal(seconds).unwrap_or_else(|| "0.0".to_string())
 }
 
 #[cfg(test)]
@@ -140,9 +120,9 @@ mod tests {
         assert_eq!(num(0.1 + 0.2), "0.30000000000000004");
         assert_eq!(num(1e-7), "0.0000001");
         assert_eq!(time(3.0 * 0.1), "0.3");
-        assert_eq!(time(12.0), "12");
-        assert_eq!(time(-0.0000000001), "0");
-        let d = document(&El::new("A").attr("v", "a<\"b\"\n&").child(El::new("B")));
-        assert_eq!(d, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<A v=\"a&lt;&quot;b&quot;&#10;&amp;\">\n  <B/>\n</A>\n");
+        assert_eq!(time(12.0), "12.0");
+        assert_eq!(time(-0.0000000001), "0.0");
+        let d = document(&El::new("A").attr("v", "a<\"b\"\n&\u{1}").child(El::new("B")));
+        assert_eq!(d, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<A v=\"a&lt;&quot;b&quot;&#10;&amp;\u{FFFD}\">\n  <B/>\n</A>\n");
     }
 }

@@ -78,9 +78,9 @@ fn a_trajectory_has_a_vertex_per_state_with_absolute_timing() {
     let t = named(&doc, "Trajectory", "car_4_trajectory");
     let vertices: Vec<Node> = t.descendants().filter(|n| n.has_tag_name("Vertex")).collect();
     assert_eq!(vertices.len(), 101, "states 0..=100");
-    assert_eq!(vertices[0].attribute("time"), Some("0"));
-    assert_eq!(vertices[3].attribute("time"), Some("0.3"), "k·dt written to the nanosecond");
-    assert_eq!(vertices[100].attribute("time"), Some("10"));
+    assert_eq!(vertices[0].attribute("time"), Some("0.0"));
+    assert_eq!(vertices[3].attribute("time"), Some("0.3"), "k·dt as CommonRoad writes decimals");
+    assert_eq!(vertices[100].attribute("time"), Some("10.0"));
     let w = child(vertices[10], "WorldPosition");
     assert!((f(w, "x") - 32.0).abs() < 1e-9 && f(w, "y") == 1.75 && f(w, "h") == 0.0);
     let action = t.ancestors().find(|n| n.has_tag_name("FollowTrajectoryAction")).expect("action");

@@ -154,6 +154,19 @@ pub(crate) fn dynamic_obstacle(cx: &mut Cursor, node: Node) -> Result<Option<Dyn
     Ok(Some(DynamicObstacle { id, obstacle_type, shape, initial_state, trajectory }))
 }
 
+/// The type of a 2018b obstacle for its role's element: one of `own`, or `fallback` with a
+/// warning when it is a type only the other role's element has (`other`).
+fn type_2018b<T: Copy>(cx: &mut Cursor, node: Node, text: &str, own: &[T], as_str: fn(T) -> &'static str, other: bool, fallback: T) -> Result<T, ReadError> {
+    if let Some(t) = own.iter().copied().find(|t| as_str(*t) == text) {
+        return Ok(t);
+    }
+    if !other {
+        return Err(cx.err(node, format!("obstacle type {text:?} is not a CommonRoad obstacle type")));
+    }
+    cx.warn(node, format!("obstacle type {text:?} is read as {:?}: 2020a has no such obstacle of this role", as_str(fallback)));
+    Ok(fallback)
+}
+
 /// A 2018b `<obstacle>` (its `<role>` says static or dynamic; one type list for both), as the
 /// 2020a element it became. A static obstacle whose type only a dynamic one may have (a parked
 /// `car`) becomes a static `parkedVehicle`; a dynamic one whose type only a static one may have
@@ -166,14 +179,9 @@ pub(crate) fn obstacle_2018b(cx: &mut Cursor, node: Node) -> Result<Option<Obsta
     let type_text = cx.text(type_node).to_string();
     match role.as_str() {
         "static" => {
-            let obstacle_type = match StaticObstacleType::ALL.iter().find(|t| t.as_str() == type_text) {
-                Some(t) => *t,
-                None if DynamicObstacleType::ALL.iter().any(|t| t.as_str() == type_text) => {
-                    cx.warn(type_node, format!("static obstacle {id} of type {type_text:?}: read as a static parkedVehicle (2020a has no static {type_text})"));
-                    StaticObstacleType::ParkedVehicle
-                }
-                None => return Err(cx.err(type_node, format!("obstacle type {type_text:?} is not a CommonRoad obstacle type"))),
-            };
+            let other = DynamicObstacleType::ALL.iter().any(|t| t.as_str() == type_text);
+            let obstacle_type =
+                type_2018b(cx, type_node, &type_text, StaticObstacleType::ALL, StaticObstacleType::as_str, other, StaticObstacleType::ParkedVehicle)?;
             let shape = shape(cx, node)?;
             let init = cx.req(node, "initialState")?;
             let mut uncertain = false;
@@ -183,14 +191,9 @@ pub(crate) fn obstacle_2018b(cx: &mut Cursor, node: Node) -> Result<Option<Obsta
             Ok(Some(Obstacle2018b::Static(StaticObstacle { id, obstacle_type, shape, x: p.x, y: p.y, orientation })))
         }
         "dynamic" => {
-            let obstacle_type = match DynamicObstacleType::ALL.iter().find(|t| t.as_str() == type_text) {
-                Some(t) => *t,
-                None if StaticObstacleType::ALL.iter().any(|t| t.as_str() == type_text) => {
-                    cx.warn(type_node, format!("dynamic obstacle {id} of type {type_text:?}: read as a dynamic unknown (2020a has no dynamic {type_text})"));
-                    DynamicObstacleType::Unknown
-                }
-                None => return Err(cx.err(type_node, format!("obstacle type {type_text:?} is not a CommonRoad obstacle type"))),
-            };
+            let other = StaticObstacleType::ALL.iter().any(|t| t.as_str() == type_text);
+            let obstacle_type =
+                type_2018b(cx, type_node, &type_text, DynamicObstacleType::ALL, DynamicObstacleType::as_str, other, DynamicObstacleType::Unknown)?;
             let shape = shape(cx, node)?;
             let mut uncertain = false;
             let initial_state = state(cx, cx.req(node, "initialState")?, &mut uncertain)?;
