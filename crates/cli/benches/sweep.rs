@@ -54,6 +54,7 @@ struct Run {
 
 /// Runs the conversion as a child process and waits for it with `wait4`, which reports the
 /// child's own peak resident set.
+#[allow(clippy::zombie_processes)] // the child is reaped by `wait4`, which clippy does not see
 fn run(format: &'static str, variations: u64, jobs: &str, out: &Path) -> Run {
     let _ = std::fs::remove_dir_all(out);
     let sweep = testkit::workspace_root().join("examples/sweep/motorway_sweep.xosc");

@@ -3,16 +3,13 @@
 //!
 //! Exit status: 0 success, 1 some files of a batch failed, 2 bad usage or bad input.
 
-mod check_cmd;
-mod convert_cmd;
-mod export_cmd;
-mod inspect;
-mod map_cmd;
-mod render_cmd;
-mod serve_cmd;
-mod simulate;
+mod commands;
+mod osi_file;
+mod serve_extra;
+mod shared_options;
 
 use clap::{Parser, Subcommand};
+use commands::{check, convert, export, inspect, map, render, serve, simulate};
 use std::process::ExitCode;
 
 /// Convert OpenSCENARIO scenarios (with their OpenDRIVE maps) into CommonRoad scenarios.
@@ -29,13 +26,13 @@ enum Command {
     /// CommonRoad scenarios: lanelet network, obstacles, the ego's planning problem. 2020a XML by
     /// default; --format 2024 for parameter sweeps (one shared map file per lanelet network).
     /// Large batches stream in flat memory; --resume continues an interrupted one.
-    Convert(Box<convert_cmd::ConvertArgs>),
+    Convert(Box<convert::ConvertArgs>),
     /// Convert an OpenDRIVE road network (.xodr) into a CommonRoad lanelet network (.xml).
-    Map(map_cmd::MapArgs),
+    Map(map::MapArgs),
     /// The way back: CommonRoad scenarios (2018b/2020a XML, 2024 protobuf) as OpenSCENARIO
     /// (1.3, or 1.0) and OpenDRIVE, for OpenSCENARIO simulators to replay.
-    #[command(long_about = export_cmd::ABOUT)]
-    Export(Box<export_cmd::ExportArgs>),
+    #[command(long_about = export::ABOUT)]
+    Export(Box<export::ExportArgs>),
     /// Load an OpenSCENARIO file and show what it resolves to: entities, storyboard,
     /// parameters, warnings.
     Inspect(inspect::InspectArgs),
@@ -43,14 +40,14 @@ enum Command {
     Simulate(simulate::SimulateArgs),
     /// Draw a scenario (.xml, or .xosc converted first) as PNG/SVG stills, an animated GIF or a
     /// sheet of stills at the storyboard events: road users labelled, the events marked.
-    Render(render_cmd::RenderArgs),
+    Render(render::RenderArgs),
     /// Report what is wrong with OpenSCENARIO files without converting them: every finding with
     /// severity and file:line:col (exit 2 when there is an error).
-    Check(check_cmd::CheckArgs),
+    Check(check::CheckArgs),
     /// Run a scenario whose UDPDriverController entities are driven over UDP by esmini clients
     /// (--udp), then write the run as CommonRoad.
-    #[command(long_about = serve_cmd::ABOUT)]
-    Serve(Box<serve_cmd::ServeArgs>),
+    #[command(long_about = serve::ABOUT)]
+    Serve(Box<serve::ServeArgs>),
 }
 
 /// A failed command: the message for the user and the exit status.
@@ -69,14 +66,14 @@ impl Failure {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match &cli.command {
-        Command::Convert(args) => convert_cmd::run(args),
-        Command::Map(args) => map_cmd::run(args),
-        Command::Export(args) => export_cmd::run(args),
+        Command::Convert(args) => convert::run(args),
+        Command::Map(args) => map::run(args),
+        Command::Export(args) => export::run(args),
         Command::Inspect(args) => inspect::run(args),
         Command::Simulate(args) => simulate::run(args),
-        Command::Render(args) => render_cmd::run(args),
-        Command::Check(args) => check_cmd::run(args),
-        Command::Serve(args) => serve_cmd::run(args),
+        Command::Render(args) => render::run(args),
+        Command::Check(args) => check::run(args),
+        Command::Serve(args) => serve::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

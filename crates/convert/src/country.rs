@@ -20,7 +20,7 @@ const ISO_3166_ALPHA_3: [&str; 250] = [
 ];
 
 /// Whether `code` may start a benchmark id.
-pub fn is_known_country(code: &str) -> bool {
+pub(crate) fn is_known_country(code: &str) -> bool {
     code == "ZAM" || ISO_3166_ALPHA_3.binary_search(&code).is_ok()
 }
 

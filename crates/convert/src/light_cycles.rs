@@ -15,7 +15,7 @@ use engine::SignalState;
 /// The CommonRoad colour of an OpenSCENARIO signal state. esmini's lamp form lists the lamps
 /// top to bottom, red;yellow;green (`"off;off;on"` is green); colour words are read too.
 /// `None`: the state has no CommonRoad colour (e.g. a flashing lamp).
-pub fn colour_of(state: &str) -> Option<TrafficLightColor> {
+pub(crate) fn colour_of(state: &str) -> Option<TrafficLightColor> {
     let lamps: Vec<String> = state.split(';').map(|l| l.trim().to_ascii_lowercase()).collect();
     let on = |l: &String| match l.as_str() {
         "on" => Some(true),
@@ -45,7 +45,7 @@ pub fn colour_of(state: &str) -> Option<TrafficLightColor> {
 
 /// Replaces the cycle of every light whose signal the run set. `end_time` is the scenario's
 /// last time, `dt` the CommonRoad time step. Returns the warnings (states without a colour).
-pub fn apply_signal_states(
+pub(crate) fn apply_signal_states(
     network: &mut LaneletNetwork,
     light_of_signal: &BTreeMap<String, TrafficLightId>,
     states: &[SignalState],

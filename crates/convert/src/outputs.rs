@@ -58,7 +58,7 @@ impl MapFiles {
     /// The map's file, written if it is not there yet. A file of that name with other bytes is
     /// an error (not overwritten): the name is the hash of the content, so it is someone else's
     /// file, or a hash collision.
-    pub fn ensure(&self, map: &MapFile) -> Result<PathBuf, String> {
+    pub(crate) fn ensure(&self, map: &MapFile) -> Result<PathBuf, String> {
         let mut known = match self.known.lock() {
             Ok(g) => g,
             Err(poisoned) => poisoned.into_inner(),
@@ -114,7 +114,7 @@ pub fn write_output(paths: &OutputPaths, output: &Output, maps: &MapFiles) -> Re
 
 /// The files an earlier run wrote for this conversion, if it wrote them all (a file written by
 /// `write_atomic` is whole when it exists).
-pub fn complete(paths: &OutputPaths, maps_dir: &Path) -> Option<Written> {
+pub(crate) fn complete(paths: &OutputPaths, maps_dir: &Path) -> Option<Written> {
     if !paths.main.is_file() || paths.picture.as_ref().is_some_and(|p| !p.is_file()) {
         return None;
     }

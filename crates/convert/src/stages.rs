@@ -19,14 +19,14 @@ pub struct MapOutput {
 }
 
 /// What the engine returns.
-pub struct EngineOutput {
+pub(crate) struct EngineOutput {
     pub trace: Trace,
     pub warnings: Vec<String>,
 }
 
 /// Lanelets of `road`. Signals that name no country are read as the benchmark's country when
 /// one is given (ZAM: the map converter's default).
-pub fn run_map(road: &opendrive::RoadNetwork, options: &ConvertOptions) -> MapOutput {
+pub(crate) fn run_map(road: &opendrive::RoadNetwork, options: &ConvertOptions) -> MapOutput {
     let defaults = map::MapOptions::default();
     let map_options = map::MapOptions {
         default_country: (options.country != "ZAM").then(|| options.country.clone()),
@@ -43,7 +43,11 @@ pub fn run_map(road: &opendrive::RoadNetwork, options: &ConvertOptions) -> MapOu
 }
 
 /// Runs the storyboard.
-pub fn run_engine(scenario: &openscenario::Scenario, road: Option<&opendrive::RoadNetwork>, options: &ConvertOptions) -> Result<EngineOutput, engine::Error> {
+pub(crate) fn run_engine(
+    scenario: &openscenario::Scenario,
+    road: Option<&opendrive::RoadNetwork>,
+    options: &ConvertOptions,
+) -> Result<EngineOutput, engine::Error> {
     let settings = Settings { step: options.step, max_time: options.max_time };
     let control = engine::RunControl { seed: options.engine_seed, deadline: options.deadline };
     let run = engine::simulate_with(scenario, road, &settings, &control)?;

@@ -3,11 +3,9 @@
 //! type 1000001) added; TrafficSignalStateActions at 1.0 s and 2.5 s (green → yellow → red)
 //! and the stop at 4 s give the cycle by hand: the CommonRoad step is 0.1 s.
 
-mod common;
-
 use std::path::PathBuf;
 
-use common::{convert_and_clean, fresh_dir, CAR};
+use crate::common::{convert_and_clean, fresh_dir, CAR};
 use commonroad::TrafficLightColor;
 
 fn set_light(t: f64, state: &str) -> String {

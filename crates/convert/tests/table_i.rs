@@ -1,8 +1,6 @@
 //! Table I of the paper, row by row, and which CommonRoad element each type may become.
 
-mod common;
-
-use common::*;
+use crate::common::*;
 use commonroad::{DynamicObstacleType as D, EnvironmentObstacleType as E, StaticObstacleType as S};
 use convert::{cr_type, CrType};
 use openscenario::{MiscObjectCategory as M, PedestrianCategory as P, VehicleCategory as V};

@@ -2,9 +2,7 @@
 //! position-setting action explains, and an entity far from the map, are warnings naming the
 //! entity, the time and what was running. Traces are built by hand (0.01 s steps).
 
-mod common;
-
-use common::{sample, straight, trace};
+use crate::common::{sample, straight, trace};
 use engine::StoryboardEvent;
 use openscenario::{load_str, Content, LoadOptions, Scenario};
 use std::path::Path;

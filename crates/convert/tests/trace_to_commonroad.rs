@@ -2,12 +2,10 @@
 //! hand: bounding-box centres, shapes, element kinds, appear/vanish, resampling, ids, the ego
 //! and its planning problem.
 
-mod common;
-
 use std::collections::BTreeSet;
 use std::f64::consts::{FRAC_PI_2, PI};
 
-use common::*;
+use crate::common::*;
 use commonroad::{AbsoluteShape, Date, DynamicObstacleType, EnvironmentObstacleType, GoalPosition, Header, Shape, StaticObstacleType};
 use convert::{assemble, benchmark_id, Assembled, ConvertOptions, EgoChoice};
 use engine::Trace;

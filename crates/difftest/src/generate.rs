@@ -254,10 +254,9 @@ pub fn generate(seed: u64, index: u64, maps: &[MapChoice]) -> Generated {
             (String::new(), String::new())
         };
         controllers.push(controller);
-        let _ = write!(
+        let _ = writeln!(
             init,
-            r#"<Private entityRef="{name}"><PrivateAction><TeleportAction><Position>{position}</Position></TeleportAction></PrivateAction><PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="step" value="0" dynamicsDimension="time"/><SpeedActionTarget><AbsoluteTargetSpeed value="{speed}"/></SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction>{activate}</Private>
-"#
+            r#"<Private entityRef="{name}"><PrivateAction><TeleportAction><Position>{position}</Position></TeleportAction></PrivateAction><PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="step" value="0" dynamicsDimension="time"/><SpeedActionTarget><AbsoluteTargetSpeed value="{speed}"/></SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction>{activate}</Private>"#
         );
         placed.push(name.clone());
     }

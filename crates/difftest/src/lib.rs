@@ -5,6 +5,10 @@
 //! deterministic for a seed; without an esmini binary it still generates and runs osc2cr,
 //! which finds what crashes, warns or is rejected.
 
+// A library returns its warnings as data and never prints (ARCHITECTURE.md, Invariants); its
+// unit tests may.
+#![cfg_attr(not(test), deny(clippy::print_stdout, clippy::print_stderr))]
+
 pub mod compare;
 pub mod esmini;
 pub mod generate;

@@ -16,7 +16,7 @@ use opendrive::RoadNetwork;
 use std::f64::consts::FRAC_PI_2;
 
 /// The road's pitch and roll along its s direction at `lp`.
-pub fn road_pitch_roll(net: &RoadNetwork, lp: &LanePos) -> (f64, f64) {
+pub(crate) fn road_pitch_roll(net: &RoadNetwork, lp: &LanePos) -> (f64, f64) {
     let Some(road) = net.roads.get(lp.road) else { return (0.0, 0.0) };
     let s = lp.s.clamp(0.0, road.length);
     (-road.elevation_slope_at(s).atan(), roll_at(road, s).0)
@@ -24,7 +24,7 @@ pub fn road_pitch_roll(net: &RoadNetwork, lp: &LanePos) -> (f64, f64) {
 
 impl<'a> Sim<'a> {
     /// World pitch and roll of entity `idx`.
-    pub fn pitch_roll(&self, idx: usize) -> (f64, f64) {
+    pub(crate) fn pitch_roll(&self, idx: usize) -> (f64, f64) {
         let Some(e) = self.entities.get(idx) else { return (0.0, 0.0) };
         let (mut pitch, mut roll) = (0.0, 0.0);
         if let (Some(net), Some(lp)) = (self.net, e.lane) {

@@ -6,12 +6,12 @@
 use openscenario::{DynamicsDimension, DynamicsShape};
 use std::f64::consts::PI;
 
-pub const SMALL: f64 = 1e-10;
+pub(crate) const SMALL: f64 = 1e-10;
 
 /// esmini's SMALL_NUMBER (CommonMini.hpp): the tolerance of its actions' end tests.
-pub const ESMINI_SMALL_NUMBER: f64 = 1e-6;
+pub(crate) const ESMINI_SMALL_NUMBER: f64 = 1e-6;
 
-pub fn sign(x: f64) -> f64 {
+pub(crate) fn sign(x: f64) -> f64 {
     if x < 0.0 {
         -1.0
     } else {
@@ -19,7 +19,7 @@ pub fn sign(x: f64) -> f64 {
     }
 }
 
-pub fn avoid_zero(x: f64) -> f64 {
+pub(crate) fn avoid_zero(x: f64) -> f64 {
     if x.abs() < SMALL {
         sign(x) * SMALL
     } else {
@@ -28,7 +28,7 @@ pub fn avoid_zero(x: f64) -> f64 {
 }
 
 #[derive(Debug, Clone, Copy)]
-pub struct Transition {
+pub(crate) struct Transition {
     pub shape: DynamicsShape,
     pub dimension: DynamicsDimension,
     pub start: f64,
@@ -44,13 +44,13 @@ pub struct Transition {
 }
 
 impl Transition {
-    pub fn new(shape: DynamicsShape, dimension: DynamicsDimension, value: f64) -> Self {
+    pub(crate) fn new(shape: DynamicsShape, dimension: DynamicsDimension, value: f64) -> Self {
         let mut t = Transition { shape, dimension, start: 0.0, target: 0.0, param: 0.0, param_target: 1.0, rate: 0.0, scale: 1.0 };
         t.set_param_target(value);
         t
     }
 
-    pub fn set_param_target(&mut self, value: f64) {
+    pub(crate) fn set_param_target(&mut self, value: f64) {
         if self.dimension == DynamicsDimension::Rate {
             self.rate = value;
             self.update_rate();
@@ -59,12 +59,12 @@ impl Transition {
         }
     }
 
-    pub fn set_start(&mut self, v: f64) {
+    pub(crate) fn set_start(&mut self, v: f64) {
         self.start = v;
         self.update_rate();
     }
 
-    pub fn set_target(&mut self, v: f64) {
+    pub(crate) fn set_target(&mut self, v: f64) {
         self.target = v;
         self.update_rate();
     }
@@ -77,7 +77,7 @@ impl Transition {
     }
 
     /// Parameter span for a given peak rate.
-    pub fn param_by_peak(&self, peak: f64) -> f64 {
+    pub(crate) fn param_by_peak(&self, peak: f64) -> f64 {
         let d = self.target - self.start;
         match self.shape {
             DynamicsShape::Step => 0.0,
@@ -88,7 +88,7 @@ impl Transition {
     }
 
     /// Parameter span for a given peak second derivative (LaneOffsetAction's maxLateralAcc).
-    pub fn param_by_peak_acc(&self, acc: f64) -> f64 {
+    pub(crate) fn param_by_peak_acc(&self, acc: f64) -> f64 {
         let d = (self.target - self.start).abs();
         match self.shape {
             DynamicsShape::Step => 0.0,
@@ -98,7 +98,7 @@ impl Transition {
     }
 
     /// Peak first derivative over the whole transition.
-    pub fn peak_rate(&self) -> f64 {
+    pub(crate) fn peak_rate(&self) -> f64 {
         if self.dimension == DynamicsDimension::Rate {
             return self.rate;
         }
@@ -113,14 +113,14 @@ impl Transition {
     }
 
     /// Limit the peak rate to `max_rate` by stretching the parameter.
-    pub fn set_max_rate(&mut self, max_rate: f64) {
+    pub(crate) fn set_max_rate(&mut self, max_rate: f64) {
         let peak = self.peak_rate().abs();
         self.scale = if peak > max_rate.abs() { peak / avoid_zero(max_rate.abs()) } else { 1.0 };
     }
 
     /// Advance the parameter, kept within [0, span] so the last step lands on the target
     /// (esmini's TransitionDynamics::Step).
-    pub fn step(&mut self, d: f64) {
+    pub(crate) fn step(&mut self, d: f64) {
         self.param += d / self.scale;
         if self.param > self.param_target {
             self.param = self.param_target;
@@ -129,7 +129,7 @@ impl Transition {
         }
     }
 
-    pub fn value(&self) -> f64 {
+    pub(crate) fn value(&self) -> f64 {
         let (a, b) = (self.start, self.target - self.start);
         let c = avoid_zero(self.param_target);
         let x = self.param;
@@ -142,7 +142,7 @@ impl Transition {
     }
 
     /// First derivative with respect to the (unscaled) parameter.
-    pub fn derivative(&self) -> f64 {
+    pub(crate) fn derivative(&self) -> f64 {
         let b = self.target - self.start;
         let c = avoid_zero(self.param_target);
         let x = self.param;
@@ -155,13 +155,13 @@ impl Transition {
     }
 
     /// Derivative with the stretch applied.
-    pub fn scaled_derivative(&self) -> f64 {
+    pub(crate) fn scaled_derivative(&self) -> f64 {
         self.derivative() / avoid_zero(self.scale)
     }
 
     /// Whether the target is reached at `value` (end of span, close enough, or passed), with
     /// the tolerance of esmini's lane change / lane offset end test (SMALL_NUMBER).
-    pub fn done(&self, value: f64) -> bool {
+    pub(crate) fn done(&self, value: f64) -> bool {
         self.param > self.param_target - ESMINI_SMALL_NUMBER
             || (value - self.target).abs() < ESMINI_SMALL_NUMBER
             || (self.param > 0.0 && sign(value - self.target) != sign(self.start - self.target))

@@ -8,7 +8,7 @@ use openscenario::{EntityObject, Scenario};
 
 /// What kind of object an entity is (for CollisionCondition by type).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum EntityKind {
+pub(crate) enum EntityKind {
     Vehicle,
     Pedestrian,
     Misc,
@@ -17,7 +17,7 @@ pub enum EntityKind {
 
 /// One entity during a run.
 #[derive(Debug, Clone)]
-pub struct Entity {
+pub(crate) struct Entity {
     pub name: String,
     pub kind: EntityKind,
     /// Bounding box: centre (x, y, z) relative to the reference point, length, width, height.
@@ -54,6 +54,9 @@ pub struct Entity {
     pub standstill_since: Option<f64>,
     /// A controller was activated on it (recorded; behaviour is part 2).
     pub controller_active: bool,
+    /// Which OverrideControllerValueAction values are active, in esmini's `OverrideType`
+    /// order (`actions/override_controller.rs`): releasing one restarts a ghost.
+    pub overrides_active: [bool; crate::actions::override_controller::state::OVERRIDE_KINDS],
     /// Driven from outside now under esmini's override rule (external/): the default
     /// controller and the storyboard's motion actions leave it to the outside.
     pub outside: bool,
@@ -73,12 +76,12 @@ pub struct Entity {
 }
 
 impl Entity {
-    pub fn from_scenario(scenario: &Scenario) -> Vec<Entity> {
+    pub(crate) fn from_scenario(scenario: &Scenario) -> Vec<Entity> {
         scenario.entities.iter().map(Entity::from_model).collect()
     }
 
     /// The run state of one scenario entity, at rest at the origin.
-    pub fn from_model(e: &openscenario::Entity) -> Entity {
+    pub(crate) fn from_model(e: &openscenario::Entity) -> Entity {
         let (kind, perf) = match &e.object {
             EntityObject::Vehicle(v) => (EntityKind::Vehicle, Some(v.performance)),
             EntityObject::Pedestrian(_) => (EntityKind::Pedestrian, None),
@@ -114,6 +117,7 @@ impl Entity {
             offroad_since: None,
             standstill_since: None,
             controller_active: false,
+            overrides_active: [false; crate::actions::override_controller::state::OVERRIDE_KINDS],
             outside: false,
             active: true,
             appeared: false,
@@ -124,7 +128,7 @@ impl Entity {
     }
 
     /// Place the entity on a lane position, heading along the direction it faces plus `yaw_offset`.
-    pub fn set_lane_pos(&mut self, net: &RoadNetwork, lp: LanePos) {
+    pub(crate) fn set_lane_pos(&mut self, net: &RoadNetwork, lp: LanePos) {
         self.lane = Some(lp);
         if let Some(p) = lp.pose(net) {
             self.x = p.x;
@@ -151,7 +155,7 @@ impl Entity {
     }
 
     /// Place the entity at a world pose; attach it to the nearest lane (`hint`: road preferred).
-    pub fn set_world(&mut self, net: Option<&RoadNetwork>, x: f64, y: f64, z: Option<f64>, h: f64) {
+    pub(crate) fn set_world(&mut self, net: Option<&RoadNetwork>, x: f64, y: f64, z: Option<f64>, h: f64) {
         self.x = x;
         self.y = y;
         self.h = wrap_2pi(h);
@@ -186,7 +190,7 @@ impl Entity {
     }
 
     /// Bounding-box centre in world coordinates.
-    pub fn box_center(&self) -> (f64, f64) {
+    pub(crate) fn box_center(&self) -> (f64, f64) {
         let (s, c) = self.h.sin_cos();
         (self.x + self.bbox[0] * c - self.bbox[1] * s, self.y + self.bbox[0] * s + self.bbox[1] * c)
     }
@@ -209,7 +213,7 @@ fn inside_real_lane(net: &RoadNetwork, lp: &LanePos, p: &crate::roads::lane_posi
 }
 
 /// Angle in [0, 2π) as esmini reports headings.
-pub fn wrap_2pi(a: f64) -> f64 {
+pub(crate) fn wrap_2pi(a: f64) -> f64 {
     let two_pi = 2.0 * std::f64::consts::PI;
     let x = a % two_pi;
     if x < 0.0 {

@@ -18,7 +18,7 @@
 //! actions step: others start but wait), so at 0 the ghost leads by the head start. After every step the ghost's trail is sampled (`ghost_trail`) on
 //! esmini's accumulated clock, whose rounding decides which steps are sampled.
 
-pub mod state;
+pub(crate) mod state;
 
 use self::state::{Ghost, GhostMode};
 use crate::actions::state::ActionSlot;
@@ -60,7 +60,7 @@ fn watches_ghost(c: &EntityCondition) -> bool {
 
 impl<'a> Sim<'a> {
     /// Create the ghost of the first entity whose controller needs one (after `build`).
-    pub fn setup_ghost(&mut self) {
+    pub(crate) fn setup_ghost(&mut self) {
         self.check_follow_references();
         let found = self.controllers.iter().enumerate().find_map(|(e, c)| match c {
             Some(ControllerRt::FollowGhost(f)) => Some((e, f.headstart)),
@@ -172,13 +172,13 @@ impl<'a> Sim<'a> {
     }
 
     /// When the run starts: −headstart with a ghost, else 0.
-    pub fn time_origin(&self) -> f64 {
+    pub(crate) fn time_origin(&self) -> f64 {
         self.ghost.as_ref().map_or(0.0, |g| -g.headstart)
     }
 
     /// Whether the step starting at the current time is part of the ghost's head start or of
     /// a rewound run after a restart (esmini's RESTARTING mode).
-    pub fn ghost_restarting(&self) -> bool {
+    pub(crate) fn ghost_restarting(&self) -> bool {
         self.ghost.as_ref().is_some_and(|g| g.mode == GhostMode::Restarting)
     }
 
@@ -186,12 +186,12 @@ impl<'a> Sim<'a> {
     /// ghost's do. esmini's `StoryBoard::Step` skips the Init actions of every other object
     /// (and all global ones) while its ghost mode is RESTARTING, and `Event::Step` likewise the
     /// story's; they still start, and a Start that sets a state (a step SpeedAction) sets it.
-    pub fn steps_during_restart(&self, e: usize) -> bool {
+    pub(crate) fn steps_during_restart(&self, e: usize) -> bool {
         self.ghost.as_ref().is_some_and(|g| g.entity == e)
     }
 
     /// During the head start only the ghost moves.
-    pub fn hold_during_restart(&mut self) {
+    pub(crate) fn hold_during_restart(&mut self) {
         let ghost = self.ghost.as_ref().map(|g| g.entity);
         for (i, en) in self.entities.iter_mut().enumerate() {
             if Some(i) != ghost {
@@ -202,7 +202,7 @@ impl<'a> Sim<'a> {
 
     /// Sample the ghost's trail after a step of `dt` (0 for the first frame); not in the step
     /// of a restart (esmini's `prepareGroundTruth` skips the ghost in RESTART mode).
-    pub fn record_ghost_trail(&mut self, dt: f64) {
+    pub(crate) fn record_ghost_trail(&mut self, dt: f64) {
         let Some(g) = self.ghost.as_mut() else { return };
         g.clock += dt;
         if g.clock > g.true_clock {
@@ -219,7 +219,7 @@ impl<'a> Sim<'a> {
     /// esmini's `ScenarioEngine::UpdateGhostMode`, at the end of a frame: a restart rewinds the
     /// clock by the head start (true: a rewound run begins); a rewound run ends when the clock
     /// is back at the latest time reached.
-    pub fn update_ghost_mode(&mut self) -> bool {
+    pub(crate) fn update_ghost_mode(&mut self) -> bool {
         let Some(g) = self.ghost.as_mut() else { return false };
         match g.mode {
             GhostMode::Restart => {

@@ -22,9 +22,32 @@ const ADDED_TELEPORT: &str = "AddedGhostTeleport";
 impl<'a> Sim<'a> {
     /// Event `ev` has started and its actions are about to: run its added ghost teleport first,
     /// if it has one (esmini inserts it at the front of the event's actions).
-    pub fn ghost_event_starts(&mut self, ev: usize) {
+    pub(crate) fn ghost_event_starts(&mut self, ev: usize) {
         let Some(g) = self.ghost.as_ref() else { return };
-        let Some(k) = g.restart_events.iter().position(|(e, _)| *e == ev) else { return };
+        let Some((_, note)) = g.restart_events.iter().find(|(e, _)| *e == ev).cloned() else { return };
+        let ghost = g.entity;
+        // Event::Start: a starting action ends the running ones of its entity on a shared
+        // domain; a teleport holds both.
+        self.run_added_teleport(note, Some(ghost));
+    }
+
+    /// esmini's `ScenarioEngine::InjectGhostRestart`, from an action of event `ev` that
+    /// releases an override (`actions/override_controller.rs`): an added teleport is put at the
+    /// front of the event's actions and started at once — outside `Event::Start`, so no running
+    /// action of the ghost is ended — and stays there, so the event restarts the ghost whenever
+    /// it starts again and counts as one with a teleport for `ResetEvents`.
+    pub(crate) fn inject_ghost_restart(&mut self, ev: usize, note: crate::Warning) {
+        let Some(g) = self.ghost.as_mut() else { return };
+        if !g.restart_events.iter().any(|(e, _)| *e == ev) {
+            g.restart_events.push((ev, note.clone()));
+        }
+        self.run_added_teleport(note, None);
+    }
+
+    /// The added teleport's run: `TeleportAction::Start` of the ghost onto its entity (a restart
+    /// once the clock is past 0), after ending the running actions of `ending` if given.
+    fn run_added_teleport(&mut self, note: crate::Warning, ending: Option<usize>) {
+        let Some(g) = self.ghost.as_ref() else { return };
         let (ghost, owner) = (g.entity, g.owner);
         self.log_added_teleport("init", "start", "running");
         // Event::Start: after a teleport of the ghost the event's other actions start at the
@@ -32,9 +55,9 @@ impl<'a> Sim<'a> {
         if let Some(g) = self.ghost.as_mut() {
             g.start_shift = g.headstart;
         }
-        // Event::Start: a starting action ends the running ones of its entity on a shared
-        // domain; a teleport holds both.
-        self.end_running_actions_of(ghost);
+        if let Some(e) = ending {
+            self.end_running_actions_of(e);
+        }
         let Some(src) = self.entities.get(owner).cloned() else { return };
         // TeleportAction::Start: a restart only once the clock is past 0.
         let restart = self.time > ESMINI_SMALL_NUMBER;
@@ -63,11 +86,11 @@ impl<'a> Sim<'a> {
             if let Some(g) = self.ghost.as_mut() {
                 g.mode = GhostMode::Restart;
                 g.trail = Trail::default();
-                // Without a head start no time rewinds: nothing to note.
-                let (_, note) = g.restart_events[k].clone();
-                if g.headstart > 0.0 && !self.warnings.contains(&note) {
-                    self.warnings.push(note);
-                }
+            }
+            // Without a head start no time rewinds: nothing to note.
+            let rewinds = self.ghost.as_ref().is_some_and(|g| g.headstart > 0.0);
+            if rewinds && !self.warnings.contains(&note) {
+                self.warnings.push(note);
             }
             self.reset_ghost_events();
         }
@@ -75,7 +98,7 @@ impl<'a> Sim<'a> {
     }
 
     /// The event's actions have started.
-    pub fn ghost_event_started(&mut self) {
+    pub(crate) fn ghost_event_started(&mut self) {
         if let Some(g) = self.ghost.as_mut() {
             g.start_shift = 0.0;
         }
@@ -85,7 +108,7 @@ impl<'a> Sim<'a> {
     /// steps: after an added teleport its event's actions start the head start earlier, and in
     /// the step of a restart the ghost's story actions step at the rewound time (esmini's
     /// `Event::Start` adjusted time and `Event::Step` in RESTART mode; Init actions keep it).
-    pub fn ghost_time_shift(&self, slot: usize, e: usize, starting: bool) -> f64 {
+    pub(crate) fn ghost_time_shift(&self, slot: usize, e: usize, starting: bool) -> f64 {
         let Some(g) = self.ghost.as_ref() else { return 0.0 };
         if starting {
             g.start_shift
@@ -97,7 +120,7 @@ impl<'a> Sim<'a> {
     }
 
     /// The run ends at `t` because ghost restarts kept rewinding time (`run.rs` caps them).
-    pub fn warn_endless_restarts(&mut self, t: f64) {
+    pub(crate) fn warn_endless_restarts(&mut self, t: f64) {
         let Some((_, w)) = self.ghost.as_ref().and_then(|g| g.restart_events.first()) else { return };
         let message = format!("the ghost restarts kept rewinding time (over ten rewound steps per step of the run, or a million); the run ends at {t:.2} s");
         let w = crate::Warning { message, ..w.clone() };

@@ -17,7 +17,7 @@ const TOLERANCE: f64 = crate::dynamics::ESMINI_SMALL_NUMBER;
 const MAX_VERTICES: usize = 1 << 20;
 
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct TrailPoint {
+pub(crate) struct TrailPoint {
     pub x: f64,
     pub y: f64,
     /// Arc length from the first vertex, m.
@@ -27,13 +27,13 @@ pub struct TrailPoint {
 }
 
 #[derive(Debug, Clone, Default, PartialEq)]
-pub struct Trail {
+pub(crate) struct Trail {
     pub vertices: Vec<TrailPoint>,
 }
 
 impl Trail {
     /// Offer the ghost's state at `time`; kept when the sampling rule says so.
-    pub fn sample(&mut self, time: f64, x: f64, y: f64, speed: f64) {
+    pub(crate) fn sample(&mut self, time: f64, x: f64, y: f64, speed: f64) {
         if self.vertices.len() >= MAX_VERTICES {
             return;
         }
@@ -69,7 +69,7 @@ impl Trail {
     /// The trail point nearest to (x, y), searching the segments from `start` on, and the
     /// index of its segment. Beyond a segment's ends the distance to the end point counts
     /// along and across the segment. `None` with fewer than two vertices.
-    pub fn closest(&self, x: f64, y: f64, start: usize) -> Option<(TrailPoint, usize)> {
+    pub(crate) fn closest(&self, x: f64, y: f64, start: usize) -> Option<(TrailPoint, usize)> {
         let n = self.vertices.len();
         // After the trail was reset the old index may lie beyond it.
         let start = if start + 1 > n { 0 } else { start };
@@ -101,7 +101,7 @@ impl Trail {
 
     /// The point at arc length `s` (the last vertex beyond the end), searching from segment
     /// `start`, and its segment index. `None` on an empty trail.
-    pub fn at_s(&self, s: f64, start: usize) -> Option<(TrailPoint, usize)> {
+    pub(crate) fn at_s(&self, s: f64, start: usize) -> Option<(TrailPoint, usize)> {
         let last = *self.vertices.last()?;
         if s > last.s {
             let i = self.vertices.len() - 1;
@@ -117,7 +117,7 @@ impl Trail {
 
     /// Where the ghost was at `time` (interpolated between samples; the first or last vertex
     /// outside the sampled span), searching from segment `start`, and its segment index.
-    pub fn at_time(&self, time: f64, start: usize) -> Option<(TrailPoint, usize)> {
+    pub(crate) fn at_time(&self, time: f64, start: usize) -> Option<(TrailPoint, usize)> {
         let first = *self.vertices.first()?;
         let n = self.vertices.len();
         if time <= first.time {

@@ -9,7 +9,7 @@ use openscenario::{ActionKind, Position, PrivateAction};
 /// One Init private action: the entity it belongs to and the entity its teleport is relative
 /// to (if it is such a teleport).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct InitItem {
+pub(crate) struct InitItem {
     pub entity: usize,
     pub relative_to: Option<usize>,
     /// Position of the action in file order.
@@ -17,7 +17,7 @@ pub struct InitItem {
 }
 
 /// The entity a TeleportAction's position refers to, for the position types esmini reorders.
-pub fn teleport_reference(kind: &ActionKind) -> Option<&str> {
+pub(crate) fn teleport_reference(kind: &ActionKind) -> Option<&str> {
     match kind {
         ActionKind::Private(PrivateAction::Teleport(
             Position::RelativeLane { entity, .. } | Position::RelativeWorld { entity, .. } | Position::RelativeObject { entity, .. },
@@ -28,7 +28,7 @@ pub fn teleport_reference(kind: &ActionKind) -> Option<&str> {
 
 /// Reorders `items` (Init private actions in file order) as esmini does; returns whether it gave
 /// up (a circular dependency), as esmini warns then.
-pub fn reorder(items: &mut Vec<InitItem>) -> bool {
+pub(crate) fn reorder(items: &mut Vec<InitItem>) -> bool {
     let max_loops = 2 * items.len();
     let mut counter = 0;
     let mut done = false;

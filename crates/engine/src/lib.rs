@@ -16,6 +16,10 @@
 //! junctions), `positions`, `signals` (traffic signals and their controllers), `dynamics`
 //! (transition shapes), `entities`, `trace` (the output).
 
+// A library returns its warnings as data and never prints (ARCHITECTURE.md, Invariants); its
+// unit tests may.
+#![cfg_attr(not(test), deny(clippy::print_stdout, clippy::print_stderr))]
+
 mod actions;
 mod attitude;
 mod conditions;

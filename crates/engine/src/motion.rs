@@ -13,7 +13,7 @@ const STAND_STILL: f64 = 1e-3;
 
 /// The state before a step, to derive rates from.
 #[derive(Debug, Clone, Copy, Default)]
-pub struct Before {
+pub(crate) struct Before {
     pub x: f64,
     pub y: f64,
     pub h: f64,
@@ -22,7 +22,7 @@ pub struct Before {
 
 impl<'a> Sim<'a> {
     /// Move every entity no action moved this step by speed · dt.
-    pub fn default_controller(&mut self, dt: f64) {
+    pub(crate) fn default_controller(&mut self, dt: f64) {
         let net = self.net;
         let random = &mut self.random;
         for en in &mut self.entities {
@@ -56,7 +56,7 @@ impl<'a> Sim<'a> {
     }
 
     /// Update derived quantities after the moves of a step of length `dt`.
-    pub fn after_move(&mut self, before: &[Before], dt: f64) {
+    pub(crate) fn after_move(&mut self, before: &[Before], dt: f64) {
         let time = self.time;
         for (en, b) in self.entities.iter_mut().zip(before) {
             let (dx, dy) = (en.x - b.x, en.y - b.y);

@@ -20,19 +20,19 @@ thread_local! {
 const MAX_ENTRIES: usize = 256;
 
 /// One run's entries (`crate::run_memos`).
-pub struct Store {
+pub(crate) struct Store {
     routes: Vec<RouteEntry>,
     paths: Vec<PathEntry>,
 }
 
 impl Store {
     /// No entries.
-    pub fn new() -> Store {
+    pub(crate) fn new() -> Store {
         Store { routes: Vec::new(), paths: Vec::new() }
     }
 
     /// Exchange these entries with the thread's.
-    pub fn swap_with_thread(&mut self) {
+    pub(crate) fn swap_with_thread(&mut self) {
         ROUTES.with(|c| std::mem::swap(&mut *c.borrow_mut(), &mut self.routes));
         PATHS.with(|c| std::mem::swap(&mut *c.borrow_mut(), &mut self.paths));
     }
@@ -58,7 +58,7 @@ fn trajectory_is_static(t: &Trajectory) -> bool {
 }
 
 /// The planned route of `model`, from the cache when it can be.
-pub fn route(model: &Route, plan: impl FnOnce() -> Result<routing::Route, String>) -> Result<Arc<routing::Route>, String> {
+pub(crate) fn route(model: &Route, plan: impl FnOnce() -> Result<routing::Route, String>) -> Result<Arc<routing::Route>, String> {
     let key = model as *const Route as usize;
     if let Some(r) = ROUTES.with(|c| c.borrow().iter().find(|e| e.0 == key).map(|e| e.1.clone())) {
         return Ok(r);
@@ -76,7 +76,7 @@ pub fn route(model: &Route, plan: impl FnOnce() -> Result<routing::Route, String
 }
 
 /// The path of `model` for a TrajectoryPosition, from the cache when it can be.
-pub fn path(model: &Trajectory, build: impl FnOnce() -> Result<trajectory::Path, String>) -> Result<Arc<trajectory::Path>, String> {
+pub(crate) fn path(model: &Trajectory, build: impl FnOnce() -> Result<trajectory::Path, String>) -> Result<Arc<trajectory::Path>, String> {
     let key = model as *const Trajectory as usize;
     if let Some(p) = PATHS.with(|c| c.borrow().iter().find(|e| e.0 == key).map(|e| e.1.clone())) {
         return Ok(p);

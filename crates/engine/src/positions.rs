@@ -14,7 +14,7 @@ use std::f64::consts::PI;
 
 /// Where a position puts an entity.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Placement {
+pub(crate) struct Placement {
     pub x: f64,
     pub y: f64,
     pub z: Option<f64>,
@@ -24,10 +24,10 @@ pub struct Placement {
 }
 
 /// Why a position could not be resolved.
-pub type PositionError = String;
+pub(crate) type PositionError = String;
 
 /// Resolve `pos`; `entities` gives the reference entities of relative positions.
-pub fn resolve(pos: &Position, net: Option<&RoadNetwork>, entities: &[Entity]) -> Result<Placement, PositionError> {
+pub(crate) fn resolve(pos: &Position, net: Option<&RoadNetwork>, entities: &[Entity]) -> Result<Placement, PositionError> {
     let find = |name: &str| entities.iter().find(|e| e.name == name).ok_or_else(|| format!("unknown entity `{name}`"));
     match pos {
         Position::World { x, y, z, h, .. } => {
@@ -136,14 +136,14 @@ pub fn resolve(pos: &Position, net: Option<&RoadNetwork>, entities: &[Entity]) -
 /// (ScenarioReader: "if no orientation specified, assume Relative is preferred").
 fn relative_heading(o: Option<&Orientation>) -> Orientation {
     match o {
-        Some(o) if o.h.is_some() => o.clone(),
-        Some(o) => Orientation { h: Some(0.0), ..o.clone() },
+        Some(o) if o.h.is_some() => *o,
+        Some(o) => Orientation { h: Some(0.0), ..*o },
         None => Orientation { h: Some(0.0), reference: Some(ReferenceContext::Relative), ..Default::default() },
     }
 }
 
 /// Lane id `k` lanes from `lane` (positive: towards higher ids), skipping the centre lane 0.
-pub fn step_lane(lane: i32, k: i32) -> i32 {
+pub(crate) fn step_lane(lane: i32, k: i32) -> i32 {
     let mut id = lane.saturating_add(k);
     if lane != 0 && (id == 0 || id.signum() != lane.signum()) {
         id += if k > 0 { 1 } else { -1 };
@@ -163,7 +163,7 @@ fn orient(base: f64, o: Option<&Orientation>) -> f64 {
 }
 
 /// Placement on lane `lane_id` of road `road` at `s` with `offset`.
-pub fn lane_placement(net: &RoadNetwork, road: usize, lane_id: i32, s: f64, offset: f64, o: Option<&Orientation>) -> Result<Placement, PositionError> {
+pub(crate) fn lane_placement(net: &RoadNetwork, road: usize, lane_id: i32, s: f64, offset: f64, o: Option<&Orientation>) -> Result<Placement, PositionError> {
     let r = net.roads.get(road).ok_or("road missing")?;
     let s = s.clamp(0.0, r.length);
     if lane_borders(r, r.section_index_at(s), lane_id, s).is_none() {
@@ -198,7 +198,7 @@ fn turn_from_road_direction(net: &RoadNetwork, p: &mut Placement, h: f64) {
 }
 
 /// Placement at road coordinates (s, t): the lane containing t.
-pub fn road_placement(net: &RoadNetwork, road: usize, s: f64, t: f64, o: Option<&Orientation>) -> Result<Placement, PositionError> {
+pub(crate) fn road_placement(net: &RoadNetwork, road: usize, s: f64, t: f64, o: Option<&Orientation>) -> Result<Placement, PositionError> {
     let r = net.roads.get(road).ok_or("road missing")?;
     let s = s.clamp(0.0, r.length);
     let section = r.section_index_at(s);

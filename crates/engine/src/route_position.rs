@@ -19,13 +19,13 @@ fn strategy(s: RouteStrategy) -> Strategy {
 }
 
 /// A waypoint for a placement on a lane: its road, lane, s and the way it faces.
-pub fn waypoint_of(p: &Placement) -> Option<Waypoint> {
+pub(crate) fn waypoint_of(p: &Placement) -> Option<Waypoint> {
     let lp = p.lane?;
     Some(Waypoint { road: lp.road, lane: lp.lane_id, s: lp.s, along_s: Some(lp.dir > 0.0) })
 }
 
 /// Plan `route`; its waypoints are resolved against `entities` as they are now.
-pub fn plan_route(route: &Route, net: &RoadNetwork, entities: &[Entity]) -> Result<routing::Route, String> {
+pub(crate) fn plan_route(route: &Route, net: &RoadNetwork, entities: &[Entity]) -> Result<routing::Route, String> {
     let mut wps = Vec::with_capacity(route.waypoints.len());
     let mut strategies = Vec::with_capacity(route.waypoints.len());
     for (i, w) in route.waypoints.iter().enumerate() {
@@ -37,7 +37,7 @@ pub fn plan_route(route: &Route, net: &RoadNetwork, entities: &[Entity]) -> Resu
     routing::Route::plan(net, &wps, &strategies, route.closed).map_err(|e| e.to_string())
 }
 
-pub fn route_placement(
+pub(crate) fn route_placement(
     route: &Route,
     in_route: &InRoutePosition,
     orientation: Option<&Orientation>,

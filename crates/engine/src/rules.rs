@@ -4,7 +4,7 @@
 use crate::dynamics::SMALL;
 use openscenario::Rule;
 
-pub fn compare(a: f64, b: f64, rule: Rule) -> bool {
+pub(crate) fn compare(a: f64, b: f64, rule: Rule) -> bool {
     match rule {
         Rule::GreaterThan => a > b + SMALL,
         Rule::GreaterOrEqual => a >= b - SMALL,
@@ -16,7 +16,7 @@ pub fn compare(a: f64, b: f64, rule: Rule) -> bool {
 }
 
 /// Compare two values given as text: numerically when both parse, else as strings.
-pub fn compare_text(a: &str, b: &str, rule: Rule) -> bool {
+pub(crate) fn compare_text(a: &str, b: &str, rule: Rule) -> bool {
     let num = |s: &str| -> Option<f64> {
         match s.trim() {
             "true" => Some(1.0),

@@ -11,7 +11,7 @@ use crate::position_cache;
 use crate::roads::{lane_shape, locate, pose_memo};
 
 /// The memo entries of one run.
-pub struct RunMemos {
+pub(crate) struct RunMemos {
     poses: pose_memo::Store,
     shapes: lane_shape::Store,
     located: locate::Store,
@@ -20,13 +20,13 @@ pub struct RunMemos {
 
 impl RunMemos {
     /// No entries yet (a run starts).
-    pub fn new() -> RunMemos {
+    pub(crate) fn new() -> RunMemos {
         RunMemos { poses: pose_memo::Store::new(), shapes: lane_shape::Store::new(), located: locate::Store::new(), positions: position_cache::Store::new() }
     }
 
     /// This run's entries in the thread's slots until the guard drops (then the slots hold
     /// what they held before).
-    pub fn enter(&mut self) -> Entered<'_> {
+    pub(crate) fn enter(&mut self) -> Entered<'_> {
         self.swap();
         Entered(self)
     }
@@ -40,7 +40,7 @@ impl RunMemos {
 }
 
 /// While alive, the thread's memo slots hold one run's entries.
-pub struct Entered<'m>(&'m mut RunMemos);
+pub(crate) struct Entered<'m>(&'m mut RunMemos);
 
 impl Drop for Entered<'_> {
     fn drop(&mut self) {

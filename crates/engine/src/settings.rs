@@ -28,7 +28,7 @@ pub struct RunControl {
 }
 
 /// Most steps one run may take (hostile settings: a tiny step with a huge cap).
-pub const MAX_STEPS: usize = 10_000_000;
+pub(crate) const MAX_STEPS: usize = 10_000_000;
 
 impl Settings {
     pub(crate) fn check(&self) -> Result<(), crate::Error> {

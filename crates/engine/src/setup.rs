@@ -16,7 +16,7 @@ use openscenario::{Action, ActionKind, Scenario, Trigger};
 
 impl<'a> Sim<'a> {
     /// The run state; `Err` when `external` names an entity the scenario does not have.
-    pub fn new(scenario: &'a Scenario, net: Option<&'a RoadNetwork>, dt: f64, external: &crate::external::External) -> Result<Sim<'a>, String> {
+    pub(crate) fn new(scenario: &'a Scenario, net: Option<&'a RoadNetwork>, dt: f64, external: &crate::external::External) -> Result<Sim<'a>, String> {
         let mut sim = Sim {
             scenario,
             net,

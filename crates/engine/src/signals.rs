@@ -25,7 +25,7 @@ const MIN_CYCLE: f64 = 1e-6;
 
 /// One controller while the scenario runs.
 #[derive(Debug, Clone)]
-pub struct ControllerRt<'a> {
+pub(crate) struct ControllerRt<'a> {
     pub model: &'a TrafficSignalController,
     /// Start time of each phase within a cycle; `starts[n]` is the cycle length.
     starts: Vec<f64>,
@@ -70,14 +70,14 @@ impl<'a> ControllerRt<'a> {
     }
 
     /// The name of the phase in force.
-    pub fn phase_name(&self) -> Option<&str> {
+    pub(crate) fn phase_name(&self) -> Option<&str> {
         self.phase.and_then(|i| self.model.phases.get(i)).map(|p| p.name.as_str())
     }
 }
 
 /// Every signal's state and every controller.
 #[derive(Debug, Clone, Default)]
-pub struct Signals<'a> {
+pub(crate) struct Signals<'a> {
     /// Current state by signal name.
     states: BTreeMap<String, String>,
     pub controllers: Vec<ControllerRt<'a>>,
@@ -89,7 +89,7 @@ pub struct Signals<'a> {
 
 impl<'a> Signals<'a> {
     /// The scenario's controllers, each in the phase it is in at time 0 (whose states are set).
-    pub fn new(scenario: &'a Scenario, net: Option<&opendrive::RoadNetwork>, warnings: &mut Vec<Warning>) -> Self {
+    pub(crate) fn new(scenario: &'a Scenario, net: Option<&opendrive::RoadNetwork>, warnings: &mut Vec<Warning>) -> Self {
         let models = &scenario.road_network.traffic_signal_controllers;
         let origins: Vec<f64> = (0..models.len()).map(|i| origin_of(models, i, warnings)).collect();
         let mut s = Signals {
@@ -112,7 +112,7 @@ impl<'a> Signals<'a> {
 
     /// Move every controller to the phase in force at time `t`, setting the states of each phase
     /// that begins.
-    pub fn advance(&mut self, t: f64) {
+    pub(crate) fn advance(&mut self, t: f64) {
         for i in 0..self.controllers.len() {
             let now = self.controllers[i].phase_at(t);
             if now != self.controllers[i].phase {
@@ -132,12 +132,12 @@ impl<'a> Signals<'a> {
     }
 
     /// Set one signal's state at time `t`.
-    pub fn set_state(&mut self, t: f64, signal: &str, state: &str) {
+    pub(crate) fn set_state(&mut self, t: f64, signal: &str, state: &str) {
         set(&mut self.states, &mut self.log, t, signal, state);
     }
 
     /// Restart controller `name` in phase `phase` at time `t`; Err says what was not found.
-    pub fn set_phase(&mut self, t: f64, name: &str, phase: &str) -> Result<(), String> {
+    pub(crate) fn set_phase(&mut self, t: f64, name: &str, phase: &str) -> Result<(), String> {
         let i = self.controller(name).ok_or_else(|| format!("traffic signal controller `{name}` is not defined in the RoadNetwork"))?;
         let c = &mut self.controllers[i];
         let j = c.model.phases.iter().position(|p| p.name == phase).ok_or_else(|| format!("traffic signal controller `{name}` has no phase `{phase}`"))?;
@@ -148,19 +148,19 @@ impl<'a> Signals<'a> {
     }
 
     /// Index of the controller named `name`.
-    pub fn controller(&self, name: &str) -> Option<usize> {
+    pub(crate) fn controller(&self, name: &str) -> Option<usize> {
         self.controllers.iter().position(|c| c.model.name == name)
     }
 
     /// Whether signal `signal` is in state `state` (compared lamp by lamp, ignoring case and
     /// blanks: "On;off" equals "on; off").
-    pub fn is_in(&self, signal: &str, state: &str) -> bool {
+    pub(crate) fn is_in(&self, signal: &str, state: &str) -> bool {
         self.states.get(signal).is_some_and(|s| same_state(s, state))
     }
 
     /// Whether `signal` is a signal id of the road network (always true without a network's
     /// signals to check against).
-    pub fn is_known(&self, signal: &str) -> bool {
+    pub(crate) fn is_known(&self, signal: &str) -> bool {
         self.known.is_empty() || self.known.contains(signal)
     }
 }

@@ -15,7 +15,7 @@ use crate::Warning;
 use opendrive::RoadNetwork;
 use openscenario::Scenario;
 
-pub struct Sim<'a> {
+pub(crate) struct Sim<'a> {
     pub scenario: &'a Scenario,
     pub net: Option<&'a RoadNetwork>,
     pub dt: f64,
@@ -57,12 +57,12 @@ pub struct Sim<'a> {
 }
 
 impl<'a> Sim<'a> {
-    pub fn entity_index(&self, name: &str) -> Option<usize> {
+    pub(crate) fn entity_index(&self, name: &str) -> Option<usize> {
         self.entities.iter().position(|e| e.name == name)
     }
 
     /// Record a state change of node `id` (event log + condition log).
-    pub fn set_state(&mut self, id: usize, transition: Transition, to: State) {
+    pub(crate) fn set_state(&mut self, id: usize, transition: Transition, to: State) {
         let Some(n) = self.nodes.get_mut(id) else { return };
         let from = n.state;
         if from == to && transition != Transition::Start {

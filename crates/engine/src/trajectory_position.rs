@@ -9,7 +9,7 @@ use opendrive::RoadNetwork;
 use openscenario::{Orientation, ReferenceContext, Trajectory};
 use trajectory::{Path, Pose};
 
-pub fn trajectory_placement(
+pub(crate) fn trajectory_placement(
     traj: &Trajectory,
     s: f64,
     t: Option<f64>,

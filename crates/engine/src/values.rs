@@ -5,21 +5,21 @@ use openscenario::{ModifyKind, ModifyRule, ParameterDeclaration};
 use std::collections::BTreeMap;
 
 #[derive(Debug, Clone, Default)]
-pub struct Values {
+pub(crate) struct Values {
     map: BTreeMap<String, String>,
 }
 
 impl Values {
-    pub fn from_declarations(decls: &[ParameterDeclaration]) -> Values {
+    pub(crate) fn from_declarations(decls: &[ParameterDeclaration]) -> Values {
         Values { map: decls.iter().map(|d| (d.name.clone(), d.value.clone())).collect() }
     }
 
-    pub fn get(&self, name: &str) -> Option<&str> {
+    pub(crate) fn get(&self, name: &str) -> Option<&str> {
         self.map.get(name.trim_start_matches('$')).map(String::as_str)
     }
 
     /// Set a value; false when the name is not declared (the value is still recorded).
-    pub fn set(&mut self, name: &str, value: &str) -> bool {
+    pub(crate) fn set(&mut self, name: &str, value: &str) -> bool {
         let key = name.trim_start_matches('$');
         let known = self.map.contains_key(key);
         self.map.insert(key.to_string(), value.to_string());
@@ -27,7 +27,7 @@ impl Values {
     }
 
     /// Apply a modify rule to a numeric value; false when the value is missing or not a number.
-    pub fn modify(&mut self, name: &str, rule: &ModifyRule) -> bool {
+    pub(crate) fn modify(&mut self, name: &str, rule: &ModifyRule) -> bool {
         let key = name.trim_start_matches('$');
         let Some(v) = self.map.get(key).and_then(|v| v.trim().parse::<f64>().ok()) else { return false };
         let n = match rule.kind {

@@ -1,7 +1,6 @@
 //! Whole-run properties: the time cap, determinism, no panic on odd settings.
 
-mod common;
-use common::*;
+use crate::common::*;
 use engine::Settings;
 
 #[test]

@@ -38,7 +38,7 @@ pub(crate) enum Element {
 
 impl Element {
     /// The CommonRoad type as the XSD spells it.
-    pub fn type_name(self) -> &'static str {
+    pub(crate) fn type_name(self) -> &'static str {
         match self {
             Element::Dynamic(t) => t.as_str(),
             Element::Static(t) => t.as_str(),
@@ -56,7 +56,7 @@ impl Element {
 
     /// Table I backwards. Types OpenSCENARIO has no kind for (taxi, priority vehicle, parked
     /// vehicle) become the nearest kind; the `osc2cr:commonRoadType` property keeps the type.
-    pub fn object(self) -> Object {
+    pub(crate) fn object(self) -> Object {
         use DynamicObstacleType as D;
         use EnvironmentObstacleType as E;
         use StaticObstacleType as S;
@@ -175,7 +175,7 @@ pub const ID_PROPERTY: &str = "osc2cr:commonRoadId";
 
 impl Entity {
     /// The entity of an obstacle: named `<type>_<id>`.
-    pub fn obstacle(id: u64, element: Element, shape: BoxShape, top_speed: f64) -> Self {
+    pub(crate) fn obstacle(id: u64, element: Element, shape: BoxShape, top_speed: f64) -> Self {
         Self {
             name: format!("{}_{id}", element.type_name()),
             object: element.object(),
@@ -197,7 +197,7 @@ impl Entity {
     }
 
     /// The `ScenarioObject`, with an `ObjectController` when one is given.
-    pub fn scenario_object(&self, version: OscVersion, controller: Option<El>) -> El {
+    pub(crate) fn scenario_object(&self, version: OscVersion, controller: Option<El>) -> El {
         let object = match self.object {
             Object::Vehicle(category) => {
                 let mut v = El::new("Vehicle").attr("name", category).attr("vehicleCategory", category);

@@ -1,5 +1,5 @@
 //! The map of a scenario: the one place that calls the road network converter
-//! (`road_export::export`, the seam with the map half of issue 24), and names the OpenDRIVE file
+//! (`road_export::export`, the map half of issue 24), and names the OpenDRIVE file
 //! by its content — `<COUNTRY>_<first 64 bits of the SHA-256 of its bytes, hex>.xodr`, as the
 //! 2024 maps are named — so that every scenario on the same lanelet network refers to one file,
 //! and different networks never share a name. Everything else of the export is independent of
@@ -33,18 +33,18 @@ pub fn map_file(scenario: &Scenario) -> Result<Option<MapFile>, String> {
     if scenario.network.lanelets.is_empty() {
         return Ok(None);
     }
-    // `..Default::default()`: the real map converter's options may have more fields than these
-    #[allow(clippy::needless_update)]
+    let country = scenario.header.benchmark_id.parts().country.to_string();
     let options = road_export::Options {
         // the name is left empty so that the bytes, and so the file's name, depend only on the network
         name: String::new(),
         geo_reference: scenario.location.geo_transformation.as_ref().map(|g| g.geo_reference.clone()).filter(|g| !g.trim().is_empty()),
-        ..Default::default()
+        // signs whose number is not German are read as this country's
+        country: Some(country.clone()),
+        tolerance: None,
     };
     let out = road_export::export(&scenario.network, &options).map_err(|e| format!("map: {e}"))?;
     let digest = Sha256::digest(out.xodr.as_bytes());
     let hash: String = digest.iter().map(|b| format!("{b:02x}")).collect::<String>()[..NAME_HEX_DIGITS].to_string();
-    let country = scenario.header.benchmark_id.parts().country.to_string();
     Ok(Some(MapFile { file_name: format!("{country}_{hash}.xodr"), xodr: out.xodr, warnings: out.warnings.iter().map(ToString::to_string).collect() }))
 }
 

@@ -12,41 +12,41 @@ pub(crate) struct El {
 }
 
 impl El {
-    pub fn new(name: &'static str) -> Self {
+    pub(crate) fn new(name: &'static str) -> Self {
         Self { name, attrs: Vec::new(), children: Vec::new() }
     }
 
     /// Adds an attribute.
-    pub fn attr(mut self, key: &'static str, value: impl Into<String>) -> Self {
+    pub(crate) fn attr(mut self, key: &'static str, value: impl Into<String>) -> Self {
         self.attrs.push((key, value.into()));
         self
     }
 
     /// Adds a numeric attribute.
-    pub fn num(self, key: &'static str, value: f64) -> Self {
+    pub(crate) fn num(self, key: &'static str, value: f64) -> Self {
         self.attr(key, num(value))
     }
 
     /// Adds a child.
-    pub fn child(mut self, c: El) -> Self {
+    pub(crate) fn child(mut self, c: El) -> Self {
         self.children.push(c);
         self
     }
 
     /// Adds a child when there is one.
-    pub fn child_opt(mut self, c: Option<El>) -> Self {
+    pub(crate) fn child_opt(mut self, c: Option<El>) -> Self {
         self.children.extend(c);
         self
     }
 
     /// Adds children.
-    pub fn children(mut self, cs: impl IntoIterator<Item = El>) -> Self {
+    pub(crate) fn children(mut self, cs: impl IntoIterator<Item = El>) -> Self {
         self.children.extend(cs);
         self
     }
 
     /// Adds a child in place.
-    pub fn push(&mut self, c: El) {
+    pub(crate) fn push(&mut self, c: El) {
         self.children.push(c);
     }
 

@@ -49,7 +49,10 @@ fn lanelet_inside(net: &LaneletNetwork, id: commonroad::LaneletId, originals: &[
     let Some(l) = net.lanelets.iter().find(|l| l.id == id) else { return false };
     let n = l.bounds.len();
     let mid = |i: usize| (0.5 * (l.bounds.left()[i].x + l.bounds.right()[i].x), 0.5 * (l.bounds.left()[i].y + l.bounds.right()[i].y));
-    let p = mid(n / 2);
+    // half way between the middle vertices (n ≥ 2): never an end point, which may lie on S's
+    // outline (a straight lanelet the map round trip gives with two points)
+    let (a, b) = (mid(n.saturating_sub(1) / 2), mid(n / 2));
+    let p = (0.5 * (a.0 + b.0), 0.5 * (a.1 + b.1));
     originals.iter().any(|o| {
         let ring: Vec<(f64, f64)> = o.bounds.right().iter().chain(o.bounds.left().iter().rev()).map(|q| (q.x, q.y)).collect();
         let mut inside = false;

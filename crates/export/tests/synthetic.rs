@@ -6,7 +6,7 @@ use std::num::NonZeroU64;
 
 use commonroad::*;
 
-pub struct Built {
+pub(crate) struct Built {
     pub scenario: Scenario,
     pub problems: PlanningProblemSet,
 }
@@ -16,7 +16,7 @@ fn state(t: u64, x: f64, y: f64, v: f64) -> State {
 }
 
 /// States of a road user going east at `v` from `x0` at steps `from..=to`.
-pub fn going_east(from: u64, to: u64, x0: f64, y: f64, v: f64) -> (State, Vec<State>) {
+pub(crate) fn going_east(from: u64, to: u64, x0: f64, y: f64, v: f64) -> (State, Vec<State>) {
     let at = |t: u64| state(t, x0 + v * 0.1 * (t - from) as f64, y, v);
     (at(from), (from + 1..=to).map(at).collect())
 }
@@ -25,7 +25,7 @@ pub fn going_east(from: u64, to: u64, x0: f64, y: f64, v: f64) -> (State, Vec<St
 /// an offset, a car from step 0 to the end (step 100), a truck from step 1 to 60, a pedestrian
 /// (circle) from step 5 to 40, a static parked vehicle and a construction zone (polygon), a
 /// building; one planning problem whose goal is `goal`.
-pub fn scenario(goal: GoalPosition) -> Built {
+pub(crate) fn scenario(goal: GoalPosition) -> Built {
     let header = Header {
         benchmark_id: BenchmarkId::parse("DEU_Synthetic-1_1_T-1").expect("id"),
         date: Date::new(2026, 3, 1).expect("date"),
@@ -106,11 +106,11 @@ pub fn scenario(goal: GoalPosition) -> Built {
 }
 
 /// A goal circle around (x, y).
-pub fn circle(x: f64, y: f64, r: f64) -> GoalPosition {
+pub(crate) fn circle(x: f64, y: f64, r: f64) -> GoalPosition {
     GoalPosition::Circles(vec![PlacedCircle { circle: Circle::new(r).expect("radius"), center: Point::new(x, y) }])
 }
 
 /// The scenario as a source (no reader warnings).
-pub fn source(b: Built) -> export::Source {
+pub(crate) fn source(b: Built) -> export::Source {
     export::Source { scenario: b.scenario, problems: b.problems, warnings: Vec::new() }
 }

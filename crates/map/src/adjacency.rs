@@ -6,7 +6,7 @@ use crate::build::Built;
 use commonroad::{Adjacent, DrivingDir};
 use opendrive::{LaneRef, RoadNetwork};
 
-pub fn adjacent(net: &RoadNetwork, built: &mut Built) {
+pub(crate) fn adjacent(net: &RoadNetwork, built: &mut Built) {
     for (ri, road) in net.roads.iter().enumerate() {
         for (si, sec) in road.lane_sections.iter().enumerate() {
             // lanes from +t to −t, zero-width ones removed

@@ -10,19 +10,19 @@ use opendrive::{CubicRecord, Road};
 /// section's order (id 1, 2, ... outward); then the outer border of each right lane
 /// (id −1, −2, ... outward).
 #[derive(Debug, Clone, PartialEq)]
-pub struct SectionCut {
+pub(crate) struct SectionCut {
     pub t: Vec<f64>,
 }
 
 /// Position of a lane's two borders in [`SectionCut::t`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct BorderIdx {
+pub(crate) struct BorderIdx {
     pub inner: usize,
     pub outer: usize,
 }
 
 /// Border indices of the lane at position `pos` of the left (`left = true`) or right side.
-pub fn border_idx(n_left: usize, left: bool, pos: usize) -> BorderIdx {
+pub(crate) fn border_idx(n_left: usize, left: bool, pos: usize) -> BorderIdx {
     let first = if left { 1 } else { 1 + n_left };
     let outer = first + pos;
     let inner = if pos == 0 { 0 } else { outer - 1 };
@@ -35,7 +35,7 @@ fn record_at(records: &[CubicRecord], s: f64) -> Option<&CubicRecord> {
 }
 
 /// Border t values of section `sec_idx` of `road` at `s` (clamped, see the module doc).
-pub fn section_cut(road: &Road, sec_idx: usize, s: f64) -> SectionCut {
+pub(crate) fn section_cut(road: &Road, sec_idx: usize, s: f64) -> SectionCut {
     let mut t = Vec::new();
     let base = road.lane_offset_at(s);
     t.push(base);

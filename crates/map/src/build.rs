@@ -12,7 +12,7 @@ use opendrive::{drives_along_s, LaneRef, RoadNetwork};
 use std::collections::BTreeMap;
 
 /// A lane narrower than this everywhere in its section is skipped (m).
-pub const ZERO_WIDTH: f64 = 0.01;
+pub(crate) const ZERO_WIDTH: f64 = 0.01;
 
 /// The lanelets made so far and where they came from.
 #[derive(Debug, Default)]
@@ -38,7 +38,7 @@ fn to_point(p: crate::sampling::P2) -> Point {
 }
 
 /// Builds every lanelet of the network.
-pub fn build_lanelets(net: &RoadNetwork, tol: f64, ids: &mut IdAllocator, warn: &mut WarningSink) -> Built {
+pub(crate) fn build_lanelets(net: &RoadNetwork, tol: f64, ids: &mut IdAllocator, warn: &mut WarningSink) -> Built {
     let mut out = Built::default();
     for (ri, road) in net.roads.iter().enumerate() {
         for (si, sec) in road.lane_sections.iter().enumerate() {

@@ -15,6 +15,10 @@
 //! `topology` (successors), `adjacency`, `markings`, `signals` (signs, lights, stop lines),
 //! [`intersections`], [`tags`], [`map_scenario`] (a map-only scenario for `osc2cr map`).
 
+// A library returns its warnings as data and never prints (ARCHITECTURE.md, Invariants); its
+// unit tests may.
+#![cfg_attr(not(test), deny(clippy::print_stdout, clippy::print_stderr))]
+
 mod adjacency;
 mod borders;
 mod build;

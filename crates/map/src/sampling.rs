@@ -20,7 +20,7 @@ pub const MAX_STATIONS: usize = 20_000;
 
 /// A 2-D point.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct P2 {
+pub(crate) struct P2 {
     pub x: f64,
     pub y: f64,
 }
@@ -28,14 +28,14 @@ pub struct P2 {
 /// One station: s, the border t values and their world points (same indexing as
 /// [`SectionCut::t`]).
 #[derive(Debug, Clone, PartialEq)]
-pub struct Station {
+pub(crate) struct Station {
     pub s: f64,
     pub cut: SectionCut,
     pub points: Vec<P2>,
 }
 
 /// The station at `s` of section `sec_idx`.
-pub fn station(road: &Road, sec_idx: usize, s: f64) -> Station {
+pub(crate) fn station(road: &Road, sec_idx: usize, s: f64) -> Station {
     let cut = section_cut(road, sec_idx, s);
     let p = road.reference_pose(s);
     let (sin, cos) = p.hdg.sin_cos();
@@ -145,7 +145,7 @@ impl Refiner<'_> {
 }
 
 /// Stations of section `sec_idx` over `[s0, s1]`; empty for a section of (near) zero length.
-pub fn sample_section(road: &Road, sec_idx: usize, tol: f64) -> Vec<Station> {
+pub(crate) fn sample_section(road: &Road, sec_idx: usize, tol: f64) -> Vec<Station> {
     let Some((s0, s1)) = road.section_range(sec_idx) else { return Vec::new() };
     // also catches NaN lengths
     if (s1 - s0).partial_cmp(&1e-6) != Some(std::cmp::Ordering::Greater) {

@@ -12,10 +12,10 @@ use opendrive::{section_at_end, ContactPoint, LaneRef, RoadNetwork};
 /// A link whose ends are further apart than this (m) is geometric nonsense for CommonRoad
 /// (typically a lane closing to zero width whose OpenDRIVE successor is the lane it merges
 /// into): it is dropped with a warning.
-pub const MAX_LINK_GAP: f64 = 1.0;
+pub(crate) const MAX_LINK_GAP: f64 = 1.0;
 
 /// Distance between the end of `a` and the start of `b` (the larger of left and right).
-pub fn link_gap(a: &Lanelet, b: &Lanelet) -> f64 {
+pub(crate) fn link_gap(a: &Lanelet, b: &Lanelet) -> f64 {
     let d = |p: Option<&commonroad::Point>, q: Option<&commonroad::Point>| match (p, q) {
         (Some(p), Some(q)) => (p.x - q.x).hypot(p.y - q.y),
         _ => f64::INFINITY,
@@ -85,7 +85,7 @@ fn reach(net: &RoadNetwork, built: &Built, lane: LaneRef, end: ContactPoint, dep
 }
 
 /// Fills predecessors and successors of every lanelet.
-pub fn link(net: &RoadNetwork, built: &mut Built, warn: &mut WarningSink) {
+pub(crate) fn link(net: &RoadNetwork, built: &mut Built, warn: &mut WarningSink) {
     let n = built.lanelets.len();
     let mut succ: Vec<Vec<usize>> = vec![Vec::new(); n];
     for i in 0..n {

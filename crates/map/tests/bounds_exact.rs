@@ -2,8 +2,7 @@
 //! stations per lanelet, the exact border point lies within 1 cm of the bound polyline that
 //! should carry it (+t border = left bound when driving along s, right bound otherwise).
 
-mod common;
-use common::*;
+use crate::common::*;
 
 fn check(path: &std::path::Path) -> (usize, f64) {
     let net = load(path);

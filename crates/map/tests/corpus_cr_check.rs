@@ -1,8 +1,7 @@
 //! Every corpus map converts, validates, and its map-only file passes cr_check.py (XSD, both
 //! commonroad-io readers, semantic checks), all 35 in one cr_check call.
 
-mod common;
-use common::*;
+use crate::common::*;
 
 #[test]
 fn every_corpus_map_passes_cr_check() {

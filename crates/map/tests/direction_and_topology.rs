@@ -1,8 +1,7 @@
 //! Driving direction (RHT and LHT), successor/predecessor and adjacency symmetry, link
 //! continuity, zero-width lanes.
 
-mod common;
-use common::*;
+use crate::common::*;
 use commonroad::{DrivingDir, Lanelet, LaneletId};
 use std::collections::BTreeMap;
 

@@ -1,8 +1,7 @@
 //! Traffic signs (German as they are, Swedish translated, others dropped with a warning),
 //! traffic lights, stop lines, and intersections with turns checked by hand against the file.
 
-mod common;
-use common::*;
+use crate::common::*;
 use commonroad::{Lanelet, LaneletId};
 use std::collections::BTreeMap;
 

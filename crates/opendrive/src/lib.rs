@@ -7,12 +7,17 @@
 //! file's own x/y (the header `<offset>` is kept in [`Header`] but not applied, as esmini
 //! does). Errors carry file, line and column; warnings are returned, never printed.
 
+// A library returns its warnings as data and never prints (ARCHITECTURE.md, Invariants); its
+// unit tests may.
+#![cfg_attr(not(test), deny(clippy::print_stdout, clippy::print_stderr))]
+
 pub mod driving_direction;
 pub mod error;
 pub mod geometry;
 pub mod links;
 pub mod model;
 pub mod network;
+pub mod osi_points;
 mod parse;
 pub mod projection;
 pub mod road_geometry;
@@ -30,5 +35,6 @@ pub use model::poly::CubicRecord;
 pub use model::road::{ContactPoint, ElementDir, ElementType, Road, RoadKind, RoadLink, RoadTypeRecord, SpeedLimit, TrafficRule};
 pub use model::signals::{LaneValidity, Signal, SignalOrientation, SignalReference};
 pub use network::{load, parse_str, Loaded, RoadNetwork};
+pub use osi_points::{osi_points, road_osi_points};
 pub use projection::LanePosition;
 pub use road_geometry::{LaneBorders, WorldPose};

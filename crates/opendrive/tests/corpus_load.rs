@@ -1,6 +1,6 @@
 //! Every corpus map loads; geometry continuity is measured and reported.
 
-mod common;
+use crate::common;
 
 #[test]
 fn all_corpus_maps_load() {

@@ -1,6 +1,6 @@
 //! Hostile input: mutated corpus files never make the loader (or the queries) panic.
 
-mod common;
+use crate::common;
 
 use proptest::prelude::*;
 

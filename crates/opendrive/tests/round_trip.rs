@@ -1,7 +1,7 @@
 //! (road, lane, s, offset) → world → (road, lane, s, t) → world on every corpus map, at
 //! seeded random stations: the point comes back within 1 mm.
 
-mod common;
+use crate::common;
 
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;

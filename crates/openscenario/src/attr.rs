@@ -52,34 +52,34 @@ pub(crate) struct Cx<'s> {
 }
 
 impl<'s> Cx<'s> {
-    pub fn new(file: Arc<Path>, scope: &'s Scope<'s>) -> Self {
+    pub(crate) fn new(file: Arc<Path>, scope: &'s Scope<'s>) -> Self {
         Cx { file, scope }
     }
 
-    pub fn loc(&self, pos: Pos) -> Location {
+    pub(crate) fn loc(&self, pos: Pos) -> Location {
         Location { file: self.file.clone(), line: pos.line, col: pos.col }
     }
 
-    pub fn err(&self, kind: ErrorKind, pos: Pos, message: impl Into<String>) -> Error {
+    pub(crate) fn err(&self, kind: ErrorKind, pos: Pos, message: impl Into<String>) -> Error {
         Error::new(kind, self.loc(pos), message)
     }
 
     /// The required child `name` of `e`.
-    pub fn child<'e>(&self, e: &'e Elem, name: &str) -> Result<&'e Elem, Error> {
+    pub(crate) fn child<'e>(&self, e: &'e Elem, name: &str) -> Result<&'e Elem, Error> {
         e.child(name).ok_or_else(|| self.err(ErrorKind::Structure, e.pos, format!("{} needs a child element <{name}>", e.name)))
     }
 
     /// The first child of a schema choice, which must exist.
-    pub fn choice<'e>(&self, e: &'e Elem, what: &str) -> Result<&'e Elem, Error> {
+    pub(crate) fn choice<'e>(&self, e: &'e Elem, what: &str) -> Result<&'e Elem, Error> {
         e.first_child().ok_or_else(|| self.err(ErrorKind::Structure, e.pos, format!("{} needs a child element ({what})", e.name)))
     }
 
-    pub fn unexpected(&self, e: &Elem, parent: &str, expected: &str) -> Error {
+    pub(crate) fn unexpected(&self, e: &Elem, parent: &str, expected: &str) -> Error {
         self.err(ErrorKind::Structure, e.pos, format!("unexpected element <{}> in {parent}, expected one of {expected}", e.name))
     }
 
     /// The resolved value of an optional attribute.
-    pub fn opt_text(&self, e: &Elem, name: &str) -> Result<Option<String>, Error> {
+    pub(crate) fn opt_text(&self, e: &Elem, name: &str) -> Result<Option<String>, Error> {
         match e.attr(name) {
             None => Ok(None),
             Some(a) => resolve_in_scope(&a.value, self.scope).map(Some).map_err(|err| positioned(&self.file, a.pos, err)),
@@ -90,7 +90,7 @@ impl<'s> Cx<'s> {
         self.err(ErrorKind::Structure, e.pos, format!("<{}> needs a '{name}' attribute", e.name))
     }
 
-    pub fn text(&self, e: &Elem, name: &str) -> Result<String, Error> {
+    pub(crate) fn text(&self, e: &Elem, name: &str) -> Result<String, Error> {
         self.opt_text(e, name)?.ok_or_else(|| self.missing(e, name))
     }
 
@@ -104,44 +104,44 @@ impl<'s> Cx<'s> {
         })
     }
 
-    pub fn opt_f64(&self, e: &Elem, name: &str) -> Result<Option<f64>, Error> {
+    pub(crate) fn opt_f64(&self, e: &Elem, name: &str) -> Result<Option<f64>, Error> {
         self.opt_conv(e, name, parse_f64)
     }
-    pub fn f64(&self, e: &Elem, name: &str) -> Result<f64, Error> {
+    pub(crate) fn f64(&self, e: &Elem, name: &str) -> Result<f64, Error> {
         self.opt_f64(e, name)?.ok_or_else(|| self.missing(e, name))
     }
-    pub fn f64_or(&self, e: &Elem, name: &str, default: f64) -> Result<f64, Error> {
+    pub(crate) fn f64_or(&self, e: &Elem, name: &str, default: f64) -> Result<f64, Error> {
         Ok(self.opt_f64(e, name)?.unwrap_or(default))
     }
-    pub fn opt_i64(&self, e: &Elem, name: &str) -> Result<Option<i64>, Error> {
+    pub(crate) fn opt_i64(&self, e: &Elem, name: &str) -> Result<Option<i64>, Error> {
         self.opt_conv(e, name, parse_i64)
     }
-    pub fn i64(&self, e: &Elem, name: &str) -> Result<i64, Error> {
+    pub(crate) fn i64(&self, e: &Elem, name: &str) -> Result<i64, Error> {
         self.opt_i64(e, name)?.ok_or_else(|| self.missing(e, name))
     }
-    pub fn opt_u32(&self, e: &Elem, name: &str) -> Result<Option<u32>, Error> {
+    pub(crate) fn opt_u32(&self, e: &Elem, name: &str) -> Result<Option<u32>, Error> {
         self.opt_conv(e, name, |s| parse_i64(s).and_then(|v| u32::try_from(v).map_err(|_| "an unsigned integer".to_string())))
     }
-    pub fn u32_or(&self, e: &Elem, name: &str, default: u32) -> Result<u32, Error> {
+    pub(crate) fn u32_or(&self, e: &Elem, name: &str, default: u32) -> Result<u32, Error> {
         Ok(self.opt_u32(e, name)?.unwrap_or(default))
     }
-    pub fn opt_bool(&self, e: &Elem, name: &str) -> Result<Option<bool>, Error> {
+    pub(crate) fn opt_bool(&self, e: &Elem, name: &str) -> Result<Option<bool>, Error> {
         self.opt_conv(e, name, parse_bool)
     }
-    pub fn bool(&self, e: &Elem, name: &str) -> Result<bool, Error> {
+    pub(crate) fn bool(&self, e: &Elem, name: &str) -> Result<bool, Error> {
         self.opt_bool(e, name)?.ok_or_else(|| self.missing(e, name))
     }
-    pub fn bool_or(&self, e: &Elem, name: &str, default: bool) -> Result<bool, Error> {
+    pub(crate) fn bool_or(&self, e: &Elem, name: &str, default: bool) -> Result<bool, Error> {
         Ok(self.opt_bool(e, name)?.unwrap_or(default))
     }
-    pub fn opt_enum<T: XmlEnum>(&self, e: &Elem, name: &str) -> Result<Option<T>, Error> {
+    pub(crate) fn opt_enum<T: XmlEnum>(&self, e: &Elem, name: &str) -> Result<Option<T>, Error> {
         self.opt_conv(e, name, |s| parse_enum::<T>(s).ok_or_else(|| format!("one of {}", T::NAMES.join(", "))))
     }
-    pub fn enum_<T: XmlEnum>(&self, e: &Elem, name: &str) -> Result<T, Error> {
+    pub(crate) fn enum_<T: XmlEnum>(&self, e: &Elem, name: &str) -> Result<T, Error> {
         self.opt_enum(e, name)?.ok_or_else(|| self.missing(e, name))
     }
     /// A reference to a named thing; tolerates a leading `$` as esmini does for `parameterRef="$X"`.
-    pub fn name_ref(&self, e: &Elem, name: &str) -> Result<String, Error> {
+    pub(crate) fn name_ref(&self, e: &Elem, name: &str) -> Result<String, Error> {
         let raw = e.attr(name).ok_or_else(|| self.missing(e, name))?;
         Ok(raw.value.trim().trim_start_matches('$').to_string())
     }

@@ -59,7 +59,7 @@ pub(crate) struct Found {
 }
 
 impl Found {
-    pub fn elem(&self) -> Option<&Elem> {
+    pub(crate) fn elem(&self) -> Option<&Elem> {
         self.doc.root.child("Catalog").and_then(|c| c.children().get(self.entry))
     }
 }
@@ -77,7 +77,7 @@ impl CatalogStore {
     /// Registers a CatalogLocations directory. A directory that does not exist falls back to
     /// `<scenario dir>/Catalogs/<last component>` when that exists (esmini finds its bundled
     /// catalogs in such cases); otherwise it is kept and reported.
-    pub fn add_dir(&mut self, kind: CatalogKind, path: PathBuf, scenario_dir: &Path, loc: Location, warnings: &mut Vec<Warning>) {
+    pub(crate) fn add_dir(&mut self, kind: CatalogKind, path: PathBuf, scenario_dir: &Path, loc: Location, warnings: &mut Vec<Warning>) {
         let mut path = path;
         if !path.is_dir() {
             let fallback = path.file_name().map(|n| scenario_dir.join("Catalogs").join(n));
@@ -96,7 +96,7 @@ impl CatalogStore {
     }
 
     /// The catalog files parsed so far, in path order.
-    pub fn documents(&self) -> impl Iterator<Item = &Doc> + '_ {
+    pub(crate) fn documents(&self) -> impl Iterator<Item = &Doc> + '_ {
         self.files.values().filter_map(|d| d.as_deref())
     }
 
@@ -135,7 +135,7 @@ impl CatalogStore {
     /// Finds `entry` of catalog `catalog` for one of `kinds`. Order: directories of the expected
     /// kinds before the others; in each group, files whose Catalog@name matches, then files
     /// named `<catalog>.xosc`.
-    pub fn find(&mut self, kinds: &[CatalogKind], catalog: &str, entry: &str, at: &Location, warnings: &mut Vec<Warning>) -> Result<Found, Error> {
+    pub(crate) fn find(&mut self, kinds: &[CatalogKind], catalog: &str, entry: &str, at: &Location, warnings: &mut Vec<Warning>) -> Result<Found, Error> {
         let mut groups: Vec<Vec<PathBuf>> = vec![Vec::new(), Vec::new()];
         for d in &self.dirs {
             let g = usize::from(!kinds.contains(&d.kind));

@@ -7,6 +7,10 @@
 //! names, does not simulate, and knows nothing of CommonRoad. Errors carry file, line and
 //! column; warnings are returned as data.
 
+// A library returns its warnings as data and never prints (ARCHITECTURE.md, Invariants); its
+// unit tests may.
+#![cfg_attr(not(test), deny(clippy::print_stdout, clippy::print_stderr))]
+
 mod attr;
 mod catalog;
 mod catalog_file;

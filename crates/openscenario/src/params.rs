@@ -58,10 +58,10 @@ pub(crate) struct Scope<'p> {
 }
 
 impl<'p> Scope<'p> {
-    pub fn child(&'p self, params: Vec<ParameterDeclaration>) -> Scope<'p> {
+    pub(crate) fn child(&'p self, params: Vec<ParameterDeclaration>) -> Scope<'p> {
         Scope { params, parent: Some(self) }
     }
-    pub fn get(&self, name: &str) -> Option<&ParameterDeclaration> {
+    pub(crate) fn get(&self, name: &str) -> Option<&ParameterDeclaration> {
         match self.params.iter().rev().find(|p| p.name == name) {
             Some(p) => Some(p),
             None => self.parent.and_then(|s| s.get(name)),

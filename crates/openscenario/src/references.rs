@@ -170,20 +170,20 @@ pub fn unresolved(s: &Scenario) -> Vec<Warning> {
             entity(name, &a.origin, &format!("{what}: entity"), &mut out);
         }
         match &a.kind {
-            ActionKind::Global(GlobalAction::ParameterSet { parameter, .. }) | ActionKind::Global(GlobalAction::ParameterModify { parameter, .. }) => {
-                if s.parameter(parameter).is_none() {
-                    out.push(problem(&a.origin, format!("{what}: parameter `{parameter}` is not declared by the scenario")));
-                }
+            ActionKind::Global(GlobalAction::ParameterSet { parameter, .. }) | ActionKind::Global(GlobalAction::ParameterModify { parameter, .. })
+                if s.parameter(parameter).is_none() =>
+            {
+                out.push(problem(&a.origin, format!("{what}: parameter `{parameter}` is not declared by the scenario")));
             }
-            ActionKind::Global(GlobalAction::VariableSet { variable, .. }) | ActionKind::Global(GlobalAction::VariableModify { variable, .. }) => {
-                if !declares(&s.variables, variable) {
-                    out.push(problem(&a.origin, format!("{what}: variable `{variable}` is not declared by the scenario")));
-                }
+            ActionKind::Global(GlobalAction::VariableSet { variable, .. }) | ActionKind::Global(GlobalAction::VariableModify { variable, .. })
+                if !declares(&s.variables, variable) =>
+            {
+                out.push(problem(&a.origin, format!("{what}: variable `{variable}` is not declared by the scenario")));
             }
-            ActionKind::Global(GlobalAction::TrafficSignalController { controller, .. }) => {
-                if !s.road_network.traffic_signal_controllers.iter().any(|c| &c.name == controller) {
-                    out.push(problem(&a.origin, format!("{what}: traffic signal controller `{controller}` is not declared in the RoadNetwork")));
-                }
+            ActionKind::Global(GlobalAction::TrafficSignalController { controller, .. })
+                if !s.road_network.traffic_signal_controllers.iter().any(|c| &c.name == controller) =>
+            {
+                out.push(problem(&a.origin, format!("{what}: traffic signal controller `{controller}` is not declared in the RoadNetwork")));
             }
             _ => {}
         }

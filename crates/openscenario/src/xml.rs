@@ -46,37 +46,37 @@ pub(crate) struct Doc {
 }
 
 impl Elem {
-    pub fn attr(&self, name: &str) -> Option<&Attr> {
+    pub(crate) fn attr(&self, name: &str) -> Option<&Attr> {
         self.read.set(true);
         let a = self.attrs.iter().find(|a| a.name == name)?;
         a.read.set(true);
         Some(a)
     }
-    pub fn child(&self, name: &str) -> Option<&Elem> {
+    pub(crate) fn child(&self, name: &str) -> Option<&Elem> {
         self.read.set(true);
         let c = self.children.iter().find(|c| c.name == name)?;
         c.read.set(true);
         Some(c)
     }
-    pub fn children_named<'a>(&'a self, name: &'a str) -> impl Iterator<Item = &'a Elem> + 'a {
+    pub(crate) fn children_named<'a>(&'a self, name: &'a str) -> impl Iterator<Item = &'a Elem> + 'a {
         self.read.set(true);
         self.children.iter().filter(move |c| c.name == name).inspect(|c| c.read.set(true))
     }
     /// The first child element (for XSD choices).
-    pub fn first_child(&self) -> Option<&Elem> {
+    pub(crate) fn first_child(&self) -> Option<&Elem> {
         self.read.set(true);
         let c = self.children.first()?;
         c.read.set(true);
         Some(c)
     }
     /// Every child element; a child counts as read only once the reader looks into it.
-    pub fn children(&self) -> &[Elem] {
+    pub(crate) fn children(&self) -> &[Elem] {
         self.read.set(true);
         &self.children
     }
     /// Marks the element and all it holds as read: for content the reader has already warned
     /// about as a whole (an unsupported element), so it is not reported twice.
-    pub fn announce(&self) {
+    pub(crate) fn announce(&self) {
         self.read.set(true);
         for a in &self.attrs {
             a.read.set(true);
@@ -87,7 +87,7 @@ impl Elem {
     }
     /// The children without marking anything read (checks that only look, such as the schema
     /// pass and the report of what was not read).
-    pub fn children_unmarked(&self) -> &[Elem] {
+    pub(crate) fn children_unmarked(&self) -> &[Elem] {
         &self.children
     }
 }

@@ -1,6 +1,6 @@
 //! Parameter value distributions: sizes computed by hand, lazy access, seeded sampling.
 
-mod common;
+use crate::common;
 
 use openscenario::*;
 use std::path::Path;

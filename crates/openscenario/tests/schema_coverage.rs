@@ -16,7 +16,7 @@
 //! difference fails the test (run with `OSC2CR_BLESS=1` to rewrite the file after a change to the
 //! reader, and review the diff: it is the change in coverage).
 
-mod common;
+use crate::common;
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;

@@ -36,7 +36,7 @@ fn recorded_ego(path: &std::path::Path, opts: &ConvertOptions) -> Result<(String
 /// frame 0 are not timed.
 #[pyfunction]
 #[pyo3(signature = (path, runs=5, replay=false, **options))]
-pub fn engine_timing(py: Python<'_>, path: PathBuf, runs: usize, replay: bool, options: Option<&Bound<'_, PyDict>>) -> PyResult<(usize, Vec<f64>)> {
+pub(crate) fn engine_timing(py: Python<'_>, path: PathBuf, runs: usize, replay: bool, options: Option<&Bound<'_, PyDict>>) -> PyResult<(usize, Vec<f64>)> {
     if runs == 0 {
         return Err(PyValueError::new_err("runs must be at least 1"));
     }

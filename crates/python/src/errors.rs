@@ -10,7 +10,7 @@ use pyo3::prelude::*;
 
 /// Where a failure happened, as far as its message says.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Position {
+pub(crate) struct Position {
     pub file: String,
     pub line: Option<u32>,
     pub column: Option<u32>,
@@ -22,7 +22,7 @@ pub struct Position {
 /// the message starts with `fallback` (the file converted); else no file is known from the text
 /// and `fallback` is the file. A strict reading's error lists its problems one a line under a
 /// header: the first line that starts with a position gives it.
-pub fn position(message: &str, fallback: &Path) -> Position {
+pub(crate) fn position(message: &str, fallback: &Path) -> Position {
     for line_text in message.lines() {
         if let Some(p) = line_position(line_text) {
             return p;
@@ -68,7 +68,7 @@ fn digits(s: &str) -> Option<u32> {
 }
 
 /// The Python exception for `failure` of converting `file` (variation `variation`, if any).
-pub fn conversion_error(py: Python<'_>, failure: &Failure, file: &Path, variation: Option<u64>) -> PyErr {
+pub(crate) fn conversion_error(py: Python<'_>, failure: &Failure, file: &Path, variation: Option<u64>) -> PyErr {
     let p = position(&failure.message, file);
     let made = (|| -> PyResult<PyErr> {
         let class = py.import("osc2cr._errors")?.getattr("ConversionError")?;
@@ -79,6 +79,6 @@ pub fn conversion_error(py: Python<'_>, failure: &Failure, file: &Path, variatio
 }
 
 /// A reason given as text (e.g. "not a scenario"), for `file`.
-pub fn message_error(py: Python<'_>, message: String, file: &Path) -> PyErr {
+pub(crate) fn message_error(py: Python<'_>, message: String, file: &Path) -> PyErr {
     conversion_error(py, &Failure { stage: Stage::Load, message }, file, None)
 }

@@ -16,7 +16,7 @@ type Written = (PathBuf, Option<PathBuf>, Vec<String>);
 /// the reason when nothing could be written, `ValueError` for a bad option.
 #[pyfunction]
 #[pyo3(signature = (path, out_dir, osc = "1.3", ego_controller = "default", play_to_end = false))]
-pub fn export_file(py: Python<'_>, path: PathBuf, out_dir: PathBuf, osc: &str, ego_controller: &str, play_to_end: bool) -> PyResult<Written> {
+pub(crate) fn export_file(py: Python<'_>, path: PathBuf, out_dir: PathBuf, osc: &str, ego_controller: &str, play_to_end: bool) -> PyResult<Written> {
     let options = export::ExportOptions {
         osc: osc.parse().map_err(pyo3::exceptions::PyValueError::new_err)?,
         ego_controller: ego_controller.parse().map_err(pyo3::exceptions::PyValueError::new_err)?,

@@ -9,9 +9,9 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
 /// Numbers of a state row: x, y, heading, speed, then optionally z, pitch, roll, yaw rate.
-pub const STATE_WIDTHS: [usize; 2] = [4, 8];
+pub(crate) const STATE_WIDTHS: [usize; 2] = [4, 8];
 /// Numbers of a driver-input row: throttle, brake, steering.
-pub const DRIVER_WIDTH: usize = 3;
+pub(crate) const DRIVER_WIDTH: usize = 3;
 
 /// A CommonRoad state (box centre at `x`, `y`) of an entity whose box centre lies at
 /// `offset` from its reference point. A heading that is not a number leaves the position as
@@ -23,7 +23,7 @@ fn state(x: f64, y: f64, h: f64, speed: f64, optional: [Option<f64>; 4], offset:
 }
 
 /// `(kind, numbers)` from the Python layer → the input of the entity `name`.
-pub fn from_parts(name: &str, kind: &str, v: &[Option<f64>], offset: (f64, f64)) -> PyResult<Input> {
+pub(crate) fn from_parts(name: &str, kind: &str, v: &[Option<f64>], offset: (f64, f64)) -> PyResult<Input> {
     let wrong = |what: &str| PyValueError::new_err(format!("input for `{name}`: {what}"));
     match kind {
         "state" => match v {
@@ -48,7 +48,7 @@ pub fn from_parts(name: &str, kind: &str, v: &[Option<f64>], offset: (f64, f64))
 /// pitch, roll, yaw rate, NaN where not given) or driver input (throttle, brake, steering).
 /// A row whose first number is NaN holds the entity; a NaN elsewhere among the numbers a
 /// state or driver input needs reaches the engine's check, which names it.
-pub fn from_row(row: &[f64], driver: bool, offset: (f64, f64)) -> Input {
+pub(crate) fn from_row(row: &[f64], driver: bool, offset: (f64, f64)) -> Input {
     let at = |i: usize| row.get(i).copied().unwrap_or(f64::NAN);
     if at(0).is_nan() {
         return Input::Hold;

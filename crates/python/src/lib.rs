@@ -15,6 +15,10 @@
 //! returns the 2020a XML text or the 2024 format's three files as `bytes`, by the `format`
 //! option.
 
+// A library returns its warnings as data and never prints (ARCHITECTURE.md, Invariants); its
+// unit tests may.
+#![cfg_attr(not(test), deny(clippy::print_stdout, clippy::print_stderr))]
+
 mod benchmark;
 mod closed_loop;
 mod errors;

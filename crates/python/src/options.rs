@@ -9,7 +9,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyString};
 
 /// Every option name the Python functions accept (documented in `osc2cr/__init__.py`).
-pub const NAMES: &[&str] = &[
+pub(crate) const NAMES: &[&str] = &[
     "dt",
     "step",
     "max_time",
@@ -38,7 +38,7 @@ pub const NAMES: &[&str] = &[
 
 /// Options from keyword arguments; `None` values mean "the default", like an option not given.
 /// Returns the options and `max_variations` (`None`: no cap — a Python caller streams them).
-pub fn from_kwargs(kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<(ConvertOptions, Option<u64>)> {
+pub(crate) fn from_kwargs(kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<(ConvertOptions, Option<u64>)> {
     let mut o = ConvertOptions::default();
     let mut max_variations = None;
     let mut ego_name: Option<String> = None;

@@ -33,7 +33,7 @@ pub struct Variations {
 /// `stop` (exclusive) defaults to the end, capped by the `max_variations` option.
 #[pyfunction]
 #[pyo3(signature = (path, start=1, stop=None, **options))]
-pub fn variations(py: Python<'_>, path: PathBuf, start: u64, stop: Option<u64>, options: Option<&Bound<'_, PyDict>>) -> PyResult<Variations> {
+pub(crate) fn variations(py: Python<'_>, path: PathBuf, start: u64, stop: Option<u64>, options: Option<&Bound<'_, PyDict>>) -> PyResult<Variations> {
     if start == 0 {
         return Err(PyValueError::new_err("start counts from 1"));
     }

@@ -103,7 +103,7 @@ fn encode(frames: &Frames, steps: &[u64], stride: u64, dt: f64, palette: &mut Pa
 
 /// Encodes the animation, doubling the stride until the file is at most `max_bytes` (or only
 /// two frames are left).
-pub fn animate(prepared: &Prepared, max_frames: usize, max_bytes: usize) -> Result<Vec<u8>, RenderError> {
+pub(crate) fn animate(prepared: &Prepared, max_frames: usize, max_bytes: usize) -> Result<Vec<u8>, RenderError> {
     let scenario = prepared.scenario;
     let dt = scenario.header.time_step_size;
     let (first, last) = (first_step(scenario), last_step(scenario));

@@ -20,6 +20,10 @@
 //! # Ok(()) }
 //! ```
 
+// A library returns its warnings as data and never prints (ARCHITECTURE.md, Invariants); its
+// unit tests may.
+#![cfg_attr(not(test), deny(clippy::print_stdout, clippy::print_stderr))]
+
 mod animation;
 mod ego;
 mod error;

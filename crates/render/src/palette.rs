@@ -42,14 +42,14 @@ fn style_colors() -> Vec<[u8; 3]> {
 }
 
 /// The palette and a cache of lookups.
-pub struct Palette {
+pub(crate) struct Palette {
     colors: Vec<[u8; 3]>,
     cache: HashMap<[u8; 3], u8>,
 }
 
 impl Palette {
     /// Style colours, then the most frequent colours of `samples` (RGBA pixel data).
-    pub fn from_samples(samples: &[&[u8]]) -> Self {
+    pub(crate) fn from_samples(samples: &[&[u8]]) -> Self {
         let mut colors = style_colors();
         // BTreeMap: a deterministic order among colours of equal count
         let mut counts: BTreeMap<[u8; 3], u64> = BTreeMap::new();
@@ -72,14 +72,14 @@ impl Palette {
     }
 
     /// `r g b r g b …`, padded to 256 entries.
-    pub fn bytes(&self) -> Vec<u8> {
+    pub(crate) fn bytes(&self) -> Vec<u8> {
         let mut out: Vec<u8> = self.colors.iter().flatten().copied().collect();
         out.resize(256 * 3, 0);
         out
     }
 
     /// Index of the nearest palette colour (squared RGB distance; first on ties).
-    pub fn index(&mut self, rgb: [u8; 3]) -> u8 {
+    pub(crate) fn index(&mut self, rgb: [u8; 3]) -> u8 {
         if let Some(&i) = self.cache.get(&rgb) {
             return i;
         }

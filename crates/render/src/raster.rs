@@ -24,7 +24,7 @@ fn sk_stroke(s: &Stroke) -> SkStroke {
 }
 
 /// A blank pixmap of the background colour.
-pub fn canvas(width: u32, height: u32, background: Rgba) -> Result<Pixmap, RenderError> {
+pub(crate) fn canvas(width: u32, height: u32, background: Rgba) -> Result<Pixmap, RenderError> {
     let mut pm = Pixmap::new(width, height).ok_or_else(|| RenderError::View(format!("cannot allocate a {width} × {height} picture")))?;
     pm.fill(Color::from_rgba8(background.r, background.g, background.b, background.a));
     Ok(pm)
@@ -73,7 +73,7 @@ fn text(pm: &mut Pixmap, x: f64, y: f64, size: f64, color: Rgba, background: Opt
 }
 
 /// Draws `prims` in order onto `pm`.
-pub fn paint_prims(pm: &mut Pixmap, prims: &[Prim]) {
+pub(crate) fn paint_prims(pm: &mut Pixmap, prims: &[Prim]) {
     for prim in prims {
         match prim {
             Prim::Path { points, closed, fill, stroke } => {

@@ -96,7 +96,7 @@ fn prim(out: &mut String, p: &Prim) {
 }
 
 /// The whole scene as an SVG document.
-pub fn to_svg(scene: &Scene) -> String {
+pub(crate) fn to_svg(scene: &Scene) -> String {
     let mut out = String::new();
     let _ = writeln!(
         out,

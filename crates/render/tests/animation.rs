@@ -1,8 +1,6 @@
 //! The animated GIF: frame count and delays match the scenario's time; the size cap thins it.
 
-mod common;
-
-use common::*;
+use crate::common::*;
 use render::{render_gif, render_layout, RenderOptions};
 
 /// (frame count, delays in centiseconds, width, height).

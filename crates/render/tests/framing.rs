@@ -1,11 +1,9 @@
 //! What a picture frames and says: by default the road users at the still's time, large and
 //! labelled; a region, a followed road user, a panning animation; names, events, the sheet.
 
-mod common;
-
 use std::collections::BTreeMap;
 
-use common::*;
+use crate::common::*;
 use render::frame::{Purpose, ViewPlan};
 use render::scene::Prepared;
 use render::{render_layout, render_png, render_sheet_png, render_svg, sheet_times, Frame, Layout, Mark, RenderOptions};

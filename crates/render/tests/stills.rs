@@ -1,8 +1,6 @@
 //! PNG and SVG stills: sizes, the ego where it must be, colours by type, time stamps.
 
-mod common;
-
-use common::*;
+use crate::common::*;
 use render::{render_layout, render_png, render_pngs, render_svg, style, RenderError, RenderOptions};
 
 fn opts(time: f64) -> RenderOptions {

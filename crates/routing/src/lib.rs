@@ -8,6 +8,10 @@
 //! route does at a junction. It only plans routes and answers questions about them
 //! (route s ↔ road s, which road follows at a junction).
 
+// A library returns its warnings as data and never prints (ARCHITECTURE.md, Invariants); its
+// unit tests may.
+#![cfg_attr(not(test), deny(clippy::print_stdout, clippy::print_stderr))]
+
 mod cost;
 mod error;
 mod route;

@@ -1,6 +1,6 @@
 //! Routes on hand-written networks, checked against lengths computed by hand.
 
-mod common;
+use crate::common;
 
 use opendrive::{ContactPoint, RoadNetwork};
 use routing::{NextRoad, Route, RouteError, Strategy, Waypoint};

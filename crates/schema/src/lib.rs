@@ -10,6 +10,10 @@
 //! It checks nothing by itself: [`content::match_children`] and [`simple::check_literal`] are the
 //! two questions a validator asks; the walk over a document lives in `openscenario::validate`.
 
+// A library returns its warnings as data and never prints (ARCHITECTURE.md, Invariants); its
+// unit tests may.
+#![cfg_attr(not(test), deny(clippy::print_stdout, clippy::print_stderr))]
+
 pub mod content;
 mod model;
 mod parse;

@@ -9,6 +9,10 @@
 //! the behaviour follows esmini (corner blending of polyline headings, NURBS sampling and
 //! control-point time interpolation).
 
+// A library returns its warnings as data and never prints (ARCHITECTURE.md, Invariants); its
+// unit tests may.
+#![cfg_attr(not(test), deny(clippy::print_stdout, clippy::print_stderr))]
+
 mod angle;
 mod constructors;
 mod error;

@@ -4,7 +4,7 @@
 use crate::error::TrajectoryError;
 
 /// Highest order accepted: evaluation costs order² per point (hostile input).
-pub const MAX_ORDER: usize = 32;
+pub(crate) const MAX_ORDER: usize = 32;
 
 #[derive(Debug, Clone, PartialEq)]
 pub struct Nurbs {

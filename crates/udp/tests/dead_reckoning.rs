@@ -2,8 +2,7 @@
 //! Ego goes on as esmini's controller step has it: after a state with dead reckoning at that
 //! state's speed and heading, after one without it stays where it is with speed 0.
 
-mod common;
-use common::*;
+use crate::common::*;
 use std::time::Duration;
 use udp::{serve, Outcome, Reason};
 

@@ -2,8 +2,7 @@
 //! by the same mix of driver input and states write identical CommonRoad files, and a run with
 //! one datagram changed does not.
 
-mod common;
-use common::*;
+use crate::common::*;
 use udp::serve;
 
 fn bytes(frames: Vec<Vec<u8>>) -> Vec<u8> {

@@ -6,8 +6,7 @@
 //! osc2cr's run agree at every logged step (the CSV has 6 decimals). Skipped with a notice when
 //! esmini cannot run here (Linux only: the client waits for esmini's port in /proc/net/udp).
 
-mod common;
-use common::*;
+use crate::common::*;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};

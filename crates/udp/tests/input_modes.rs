@@ -4,8 +4,7 @@
 //! esmini's does; step k reads frame k). In asynchronous mode the newest datagram of a step
 //! drives it; the checks there hold whichever step a datagram lands in.
 
-mod common;
-use common::*;
+use crate::common::*;
 use udp::{serve, Outcome, Pace};
 
 const EGO: u32 = 0;

@@ -4,8 +4,7 @@
 //! opens when its controller is activated; a port in use, or a property esmini refuses, stops
 //! the run before it starts, saying which.
 
-mod common;
-use common::*;
+use crate::common::*;
 use std::net::UdpSocket;
 use udp::{serve, Reason, ServeError};
 

@@ -1,6 +1,6 @@
 //! The messages of the CommonRoad 2024 format, one module per protobuf package: prost-build's
 //! output for `proto/commonroad_2024.binpb` (checked in under `generated/`; the test
-//! `tests/protobuf_generated.rs` regenerates it and fails when the two differ).
+//! `tests/protobuf/generated.rs` regenerates it and fails when the two differ).
 
 #![allow(clippy::all, clippy::pedantic, missing_docs)]
 

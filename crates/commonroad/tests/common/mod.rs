@@ -5,7 +5,7 @@ use std::num::NonZeroU64;
 
 use commonroad::*;
 
-pub struct Minimal {
+pub(crate) struct Minimal {
     pub scenario: Scenario,
     pub problems: PlanningProblemSet,
     pub lanelets: [LaneletId; 3],
@@ -18,7 +18,7 @@ fn pts(v: &[(f64, f64)]) -> Vec<Point> {
     v.iter().map(|&(x, y)| Point::new(x, y)).collect()
 }
 
-pub fn header() -> Header {
+pub(crate) fn header() -> Header {
     Header {
         benchmark_id: BenchmarkId::parse("DEU_Example-1_1_T-1").unwrap(),
         date: Date::new(2026, 1, 15).unwrap(),
@@ -29,11 +29,11 @@ pub fn header() -> Header {
     }
 }
 
-pub fn state(t: u64, x: f64, y: f64, v: f64) -> State {
+pub(crate) fn state(t: u64, x: f64, y: f64, v: f64) -> State {
     State { time_step: t, x, y, orientation: 0.0, velocity: v, acceleration: 0.0, yaw_rate: 0.0 }
 }
 
-pub fn minimal() -> Minimal {
+pub(crate) fn minimal() -> Minimal {
     let mut ids = IdAllocator::new();
     let (l1, l2, l3) = (ids.lanelet(), ids.lanelet(), ids.lanelet());
     let sign = ids.traffic_sign();

@@ -8,7 +8,7 @@ use openscenario::{
 };
 use std::path::Path;
 
-pub fn bbox(cx: f64, cy: f64, length: f64, width: f64) -> BoundingBox {
+pub(crate) fn bbox(cx: f64, cy: f64, length: f64, width: f64) -> BoundingBox {
     BoundingBox { center: Vec3 { x: cx, y: cy, z: 0.75 }, width, length, height: 1.5 }
 }
 
@@ -16,7 +16,7 @@ fn origin() -> Location {
     Location::file_only(Path::new("synthetic.xosc"))
 }
 
-pub fn vehicle(name: &str, category: VehicleCategory, bb: BoundingBox) -> Entity {
+pub(crate) fn vehicle(name: &str, category: VehicleCategory, bb: BoundingBox) -> Entity {
     let axle = Axle { max_steering: 0.5, wheel_diameter: 0.6, track_width: 1.6, position_x: 0.0, position_z: 0.3 };
     Entity {
         name: name.into(),
@@ -46,11 +46,11 @@ pub fn vehicle(name: &str, category: VehicleCategory, bb: BoundingBox) -> Entity
     }
 }
 
-pub fn car(name: &str) -> Entity {
+pub(crate) fn car(name: &str) -> Entity {
     vehicle(name, VehicleCategory::Car, bbox(1.4, 0.0, 4.5, 2.0))
 }
 
-pub fn pedestrian(name: &str, category: PedestrianCategory, bb: BoundingBox) -> Entity {
+pub(crate) fn pedestrian(name: &str, category: PedestrianCategory, bb: BoundingBox) -> Entity {
     Entity {
         name: name.into(),
         object: EntityObject::Pedestrian(Pedestrian {
@@ -68,7 +68,7 @@ pub fn pedestrian(name: &str, category: PedestrianCategory, bb: BoundingBox) -> 
     }
 }
 
-pub fn misc(name: &str, category: MiscObjectCategory, bb: BoundingBox) -> Entity {
+pub(crate) fn misc(name: &str, category: MiscObjectCategory, bb: BoundingBox) -> Entity {
     Entity {
         name: name.into(),
         object: EntityObject::MiscObject(MiscObject {
@@ -85,12 +85,12 @@ pub fn misc(name: &str, category: MiscObjectCategory, bb: BoundingBox) -> Entity
     }
 }
 
-pub fn sample(x: f64, y: f64, h: f64, speed: f64) -> Sample {
+pub(crate) fn sample(x: f64, y: f64, h: f64, speed: f64) -> Sample {
     Sample { x, y, z: 0.0, h, speed, acceleration: 0.0, yaw_rate: 0.0, road: None, visible: true }
 }
 
 /// A trace of `len` steps of 0.01 s; `f(k)` gives each entity's sample at step k.
-pub fn trace(len: usize, names: &[&str], f: impl Fn(usize, usize) -> Option<Sample>) -> Trace {
+pub(crate) fn trace(len: usize, names: &[&str], f: impl Fn(usize, usize) -> Option<Sample>) -> Trace {
     Trace {
         start: 0.0,
         step: 0.01,
@@ -104,13 +104,13 @@ pub fn trace(len: usize, names: &[&str], f: impl Fn(usize, usize) -> Option<Samp
 }
 
 /// Straight motion along +x at `v` m/s from `x0`, heading 0.
-pub fn straight(x0: f64, y: f64, v: f64) -> impl Fn(usize) -> Sample {
+pub(crate) fn straight(x0: f64, y: f64, v: f64) -> impl Fn(usize) -> Sample {
     move |k| sample(x0 + v * k as f64 * 0.01, y, 0.0, v)
 }
 
 /// A `<Vehicle>` for scenarios written in tests: 4.5 × 2 m, box centre 1.5 m ahead of the rear
 /// axle.
-pub const CAR: &str = r#"<Vehicle name="car" vehicleCategory="car"><ParameterDeclarations/>
+pub(crate) const CAR: &str = r#"<Vehicle name="car" vehicleCategory="car"><ParameterDeclarations/>
 <Performance maxSpeed="70" maxAcceleration="200" maxDeceleration="200"/>
 <BoundingBox><Center x="1.5" y="0" z="0.9"/><Dimensions width="2.0" length="4.5" height="1.8"/></BoundingBox>
 <Axles><FrontAxle maxSteering="0.5" wheelDiameter="0.6" trackWidth="1.8" positionX="3.1" positionZ="0.3"/>
@@ -118,7 +118,7 @@ pub const CAR: &str = r#"<Vehicle name="car" vehicleCategory="car"><ParameterDec
 <Properties/></Vehicle>"#;
 
 /// A fresh temporary directory for one test's files.
-pub fn fresh_dir(tag: &str) -> std::path::PathBuf {
+pub(crate) fn fresh_dir(tag: &str) -> std::path::PathBuf {
     let dir = std::env::temp_dir().join(format!("osc2cr-{tag}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).expect("temp dir");
@@ -127,7 +127,7 @@ pub fn fresh_dir(tag: &str) -> std::path::PathBuf {
 
 /// Converts `dir/<name>.xosc` with the default options, removes `dir`, and returns what the
 /// conversion reports and the model it built (panics, with the failure, if it failed).
-pub fn convert_and_clean(dir: &Path, name: &str) -> (convert::Conversion, convert::Model) {
+pub(crate) fn convert_and_clean(dir: &Path, name: &str) -> (convert::Conversion, convert::Model) {
     let path = dir.join(format!("{name}.xosc"));
     let request = convert::Request { path: &path, name, config: 1, parameters: &[], source: String::new() };
     let (conversion, model) = convert::convert_scenario_keeping(&request, &convert::ConvertOptions::default(), true);

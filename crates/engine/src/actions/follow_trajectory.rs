@@ -6,7 +6,7 @@
 //! timing) or at the last time stamp, moving on along the final heading by whatever distance
 //! the step had left.
 
-pub mod state;
+pub(crate) mod state;
 
 use state::FollowTrajectoryRt;
 
@@ -55,13 +55,13 @@ fn accel_segments(path: &Path) -> Option<Vec<(f64, f64, f64, f64)>> {
 }
 
 /// The world pose of a position resolved for a trajectory vertex.
-pub fn vertex_pose(pos: &openscenario::Position, net: Option<&opendrive::RoadNetwork>, entities: &[crate::entities::Entity]) -> Option<Pose> {
+pub(crate) fn vertex_pose(pos: &openscenario::Position, net: Option<&opendrive::RoadNetwork>, entities: &[crate::entities::Entity]) -> Option<Pose> {
     let p = resolve(pos, net, entities).ok()?;
     Some(Pose::new(p.x, p.y, p.z.unwrap_or(0.0), p.h))
 }
 
 /// Build a trajectory's path from the current state of the run.
-pub fn build_path(sim: &Sim, traj: &Trajectory, current: Pose) -> Result<Path, String> {
+pub(crate) fn build_path(sim: &Sim, traj: &Trajectory, current: Pose) -> Result<Path, String> {
     let net = sim.net;
     let entities = &sim.entities;
     let resolver = |p: &openscenario::Position| vertex_pose(p, net, entities);

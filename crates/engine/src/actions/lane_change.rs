@@ -4,7 +4,7 @@
 //! step moves the entity by speed·dt split into its lateral and longitudinal parts, turns it
 //! by the slope of the path, and re-attaches it to the lane it is actually in.
 
-pub mod state;
+pub(crate) mod state;
 
 use state::LaneChangeRt;
 
@@ -18,7 +18,7 @@ use opendrive::RoadNetwork;
 use openscenario::{DynamicsDimension, DynamicsShape, LaneChangeTarget, TransitionDynamics};
 
 /// Re-express `lp` in the lane of its road that contains its lateral position.
-pub fn relane(net: &RoadNetwork, lp: &mut LanePos) {
+pub(crate) fn relane(net: &RoadNetwork, lp: &mut LanePos) {
     let Some(road) = net.roads.get(lp.road) else { return };
     let s = lp.s.clamp(0.0, road.length);
     let section = road.section_index_at(s);

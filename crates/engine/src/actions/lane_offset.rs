@@ -2,7 +2,7 @@
 //! absolute target or to an offset relative to another entity; the span follows from the
 //! maximum lateral acceleration. The longitudinal motion stays with the default controller.
 
-pub mod state;
+pub(crate) mod state;
 
 use state::LaneOffsetRt;
 

@@ -13,7 +13,7 @@
 //! action ends when the error is below 0.01 m. The entity coordinate system is not supported
 //! (warning; the action ends).
 
-pub mod state;
+pub(crate) mod state;
 
 use state::{LatDistanceRt, Phase};
 
@@ -34,7 +34,7 @@ const SPRING: f64 = 0.4;
 const THRESHOLD: f64 = 0.01;
 
 /// The lateral action's parameters as the model gives them.
-pub struct LatDistanceSpec<'s> {
+pub(crate) struct LatDistanceSpec<'s> {
     pub entity: &'s str,
     pub distance: Option<f64>,
     pub freespace: bool,

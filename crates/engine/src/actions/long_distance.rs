@@ -8,7 +8,7 @@
 //! maximum speed. "any" displacement keeps the side the actor is on when the action starts. A
 //! non-continuous action ends when the distance is within 0.1 m.
 
-pub mod state;
+pub(crate) mod state;
 
 use state::LongDistanceRt;
 
@@ -24,7 +24,7 @@ const SPRING: f64 = 0.4;
 const THRESHOLD: f64 = 0.1;
 
 /// The longitudinal action's parameters as the model gives them.
-pub struct LongDistanceSpec<'s> {
+pub(crate) struct LongDistanceSpec<'s> {
     pub entity: &'s str,
     pub distance: Option<f64>,
     pub time_gap: Option<f64>,

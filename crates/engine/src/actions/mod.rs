@@ -3,21 +3,22 @@
 //! (longitudinal / lateral), as esmini does; an action node ends when all its instances are
 //! done.
 
-pub mod add_delete_entity;
-pub mod follow_trajectory;
-pub mod global;
-pub mod lane_change;
-pub mod lane_offset;
-pub mod lat_distance;
-pub mod long_distance;
-pub mod routing;
-pub mod speed;
-pub mod speed_profile;
-pub mod state;
-pub mod synchronize;
-pub mod teleport;
-pub mod traffic_signal;
-pub mod trailer;
+pub(crate) mod add_delete_entity;
+pub(crate) mod follow_trajectory;
+pub(crate) mod global;
+pub(crate) mod lane_change;
+pub(crate) mod lane_offset;
+pub(crate) mod lat_distance;
+pub(crate) mod long_distance;
+pub(crate) mod override_controller;
+pub(crate) mod routing;
+pub(crate) mod speed;
+pub(crate) mod speed_profile;
+pub(crate) mod state;
+pub(crate) mod synchronize;
+pub(crate) mod teleport;
+pub(crate) mod traffic_signal;
+pub(crate) mod trailer;
 
 use self::state::{ActionRt, Instance};
 use crate::external::overridden::{overridden, Overridden};
@@ -28,7 +29,7 @@ use openscenario::{ActionKind, PrivateAction};
 
 impl<'a> Sim<'a> {
     /// Warn once about action slot `slot`.
-    pub fn warn_action(&mut self, slot: usize, msg: String) {
+    pub(crate) fn warn_action(&mut self, slot: usize, msg: String) {
         let Some(s) = self.actions.get_mut(slot) else { return };
         if s.warned {
             return;
@@ -39,7 +40,7 @@ impl<'a> Sim<'a> {
     }
 
     /// End the running actions of the same actors whose domains overlap this one's.
-    pub fn end_conflicting_actions(&mut self, slot: usize) {
+    pub(crate) fn end_conflicting_actions(&mut self, slot: usize) {
         let dom = self.actions[slot].domains();
         if dom == 0 {
             return;
@@ -72,7 +73,7 @@ impl<'a> Sim<'a> {
     }
 
     /// Start action slot `slot`: running state, one instance per actor.
-    pub fn start_action(&mut self, slot: usize) {
+    pub(crate) fn start_action(&mut self, slot: usize) {
         if self.entity_action_refused(slot) {
             return;
         }
@@ -207,6 +208,7 @@ impl<'a> Sim<'a> {
                 );
                 ActionRt::Done
             }
+            PrivateAction::OverrideControllerValue(values) => self.start_override(slot, e, values),
             PrivateAction::ConnectTrailer { trailer } => {
                 self.connect_trailer(slot, e, trailer);
                 ActionRt::Done
@@ -223,7 +225,7 @@ impl<'a> Sim<'a> {
     }
 
     /// Step action slot `slot`; end its node when every instance is done.
-    pub fn step_action(&mut self, slot: usize) {
+    pub(crate) fn step_action(&mut self, slot: usize) {
         if !self.actions[slot].running {
             return;
         }

@@ -5,7 +5,7 @@
 //! the reference entity's speed every step (continuous or not); a continuous one never ends.
 //! All of it follows esmini's LongSpeedAction::Start / Step.
 
-pub mod state;
+pub(crate) mod state;
 
 use state::{SpeedRt, Target};
 

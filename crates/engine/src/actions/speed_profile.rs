@@ -5,7 +5,7 @@
 //! (maximum acceleration / deceleration rates), so corners are rounded and vertices reached
 //! late or early. The plan is a list of segments v(t) = v + k·(t − t0) + j·(t − t0)²/2.
 
-pub mod state;
+pub(crate) mod state;
 
 use state::{Segment, SpeedProfileRt};
 

@@ -5,12 +5,12 @@
 use openscenario::{Action, ActionKind, PrivateAction};
 
 /// Control domains an action takes over (bits).
-pub const LONG: u8 = 1;
-pub const LAT: u8 = 2;
+pub(crate) const LONG: u8 = 1;
+pub(crate) const LAT: u8 = 2;
 
 /// What an action instance is doing.
 #[derive(Debug, Clone)]
-pub enum ActionRt {
+pub(crate) enum ActionRt {
     Speed(super::speed::state::SpeedRt),
     LaneChange(super::lane_change::state::LaneChangeRt),
     LaneOffset(super::lane_offset::state::LaneOffsetRt),
@@ -30,13 +30,13 @@ pub enum ActionRt {
 }
 
 #[derive(Debug, Clone)]
-pub struct Instance {
+pub(crate) struct Instance {
     pub entity: Option<usize>,
     pub rt: ActionRt,
 }
 
 #[derive(Debug, Clone)]
-pub struct ActionSlot<'a> {
+pub(crate) struct ActionSlot<'a> {
     pub node: usize,
     pub model: &'a Action,
     pub actors: Vec<usize>,
@@ -46,12 +46,12 @@ pub struct ActionSlot<'a> {
 }
 
 impl<'a> ActionSlot<'a> {
-    pub fn new(node: usize, model: &'a Action, actors: Vec<usize>) -> Self {
+    pub(crate) fn new(node: usize, model: &'a Action, actors: Vec<usize>) -> Self {
         ActionSlot { node, model, actors, instances: Vec::new(), running: false, warned: false }
     }
 
     /// Control domains the action takes over.
-    pub fn domains(&self) -> u8 {
+    pub(crate) fn domains(&self) -> u8 {
         match &self.model.kind {
             ActionKind::Private(p) => match p {
                 PrivateAction::Speed { .. }
@@ -68,6 +68,7 @@ impl<'a> ActionSlot<'a> {
                 // AcquirePositionAction holds the longitudinal one.
                 PrivateAction::Teleport(_) => LONG | LAT,
                 PrivateAction::AcquirePosition(_) => LONG,
+                PrivateAction::OverrideControllerValue(values) => crate::actions::override_controller::state::domains(values),
                 _ => 0,
             },
             _ => 0,

@@ -12,7 +12,7 @@
 //! master is within its tolerance, when either distance starts to grow (a target was passed),
 //! or when the master arrives within the next step; then the actor takes the final speed.
 
-pub mod state;
+pub(crate) mod state;
 
 use state::{Final, Mode, Submode, SynchronizeRt};
 

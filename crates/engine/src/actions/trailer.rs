@@ -4,7 +4,7 @@
 //! and the trailer turns to point from where its reference point was towards the hitch — a
 //! discrete tractrix, which is what a rigid trailer on a non-slipping axle does.
 
-pub mod state;
+pub(crate) mod state;
 
 use state::Trailers;
 
@@ -19,7 +19,7 @@ impl Trailers {
     /// The initial tow links of `scenario`. Inline trailer entities (a vehicle model's
     /// `Trailer` element holding a whole entity) become run entities appended to `entities`,
     /// named after their tow vehicle plus `+` as esmini names them.
-    pub fn build(scenario: &Scenario, entities: &mut Vec<Entity>) -> Trailers {
+    pub(crate) fn build(scenario: &Scenario, entities: &mut Vec<Entity>) -> Trailers {
         let mut t = Trailers::default();
         for e in &scenario.entities {
             let (h, c) = joints(e);
@@ -68,7 +68,7 @@ fn joints(e: &openscenario::Entity) -> (Option<f64>, Option<f64>) {
 
 impl<'a> Sim<'a> {
     /// ConnectTrailerAction: `tow` now pulls `trailer` (both need a hitch/coupler).
-    pub fn connect_trailer(&mut self, slot: usize, tow: usize, trailer_name: &str) {
+    pub(crate) fn connect_trailer(&mut self, slot: usize, tow: usize, trailer_name: &str) {
         let Some(trailer) = self.entity_index(trailer_name) else {
             self.warn_action(slot, format!("ConnectTrailerAction: unknown trailer entity `{trailer_name}`"));
             return;
@@ -89,7 +89,7 @@ impl<'a> Sim<'a> {
     }
 
     /// DisconnectTrailerAction: the trailer stays where it is, standing still.
-    pub fn disconnect_trailer(&mut self, tow: usize) {
+    pub(crate) fn disconnect_trailer(&mut self, tow: usize) {
         if let Some(t) = self.trailers.links.get_mut(tow).and_then(|l| l.take()) {
             if let Some(en) = self.entities.get_mut(t) {
                 en.speed = 0.0;
@@ -102,7 +102,7 @@ impl<'a> Sim<'a> {
     }
 
     /// Keep the default controller off towed trailers: their tow vehicle moves them.
-    pub fn hold_trailers(&mut self) {
+    pub(crate) fn hold_trailers(&mut self) {
         for k in 0..self.trailers.links.len() {
             if let Some(t) = self.trailers.links[k] {
                 if let Some(en) = self.entities.get_mut(t) {
@@ -113,7 +113,7 @@ impl<'a> Sim<'a> {
     }
 
     /// Pull every trailer chain behind its front tow vehicle.
-    pub fn pull_trailers(&mut self) {
+    pub(crate) fn pull_trailers(&mut self) {
         for front in 0..self.trailers.links.len() {
             if self.trailers.links[front].is_none() || self.is_towed(front) {
                 continue;
@@ -128,7 +128,7 @@ impl<'a> Sim<'a> {
     }
 
     /// Put every trailer chain straight behind its front tow vehicle (before the Init actions).
-    pub fn align_trailers(&mut self) {
+    pub(crate) fn align_trailers(&mut self) {
         for front in 0..self.trailers.links.len() {
             if self.trailers.links[front].is_some() && !self.is_towed(front) {
                 self.align_chain(front);
@@ -138,7 +138,7 @@ impl<'a> Sim<'a> {
 
     /// Put the trailers behind `front` straight behind it, moving at its speed (esmini does this
     /// when it places a tow vehicle).
-    pub fn align_chain(&mut self, front: usize) {
+    pub(crate) fn align_chain(&mut self, front: usize) {
         let Some(f) = self.entities.get(front) else { return };
         let (h, speed) = (f.h, f.speed);
         let (c, s) = (h.cos(), h.sin());

@@ -10,7 +10,7 @@ use crate::sim::Sim;
 use opendrive::{Road, RoadNetwork};
 
 /// The parameters of one RelativeClearanceCondition.
-pub struct Clearance<'c> {
+pub(crate) struct Clearance<'c> {
     pub entities: &'c [String],
     pub opposite_lanes: bool,
     pub free_space: bool,

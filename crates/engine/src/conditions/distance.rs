@@ -9,7 +9,7 @@ use opendrive::RoadNetwork;
 use openscenario::{CoordinateSystem, RelativeDistanceType};
 
 /// The four corners of an entity's bounding box in world coordinates.
-pub fn corners(e: &Entity) -> [(f64, f64); 4] {
+pub(crate) fn corners(e: &Entity) -> [(f64, f64); 4] {
     let (s, c) = e.h.sin_cos();
     let (cx, cy) = e.box_center();
     let (hl, hw) = (0.5 * e.bbox[3], 0.5 * e.bbox[4]);
@@ -47,7 +47,7 @@ fn seg_point_dist(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
 }
 
 /// Whether two convex quadrilaterals overlap (separating axis test).
-pub fn boxes_overlap(a: &[(f64, f64); 4], b: &[(f64, f64); 4]) -> bool {
+pub(crate) fn boxes_overlap(a: &[(f64, f64); 4], b: &[(f64, f64); 4]) -> bool {
     for poly in [a, b] {
         for i in 0..4 {
             let (p, q) = (poly[i], poly[(i + 1) % 4]);
@@ -61,7 +61,7 @@ pub fn boxes_overlap(a: &[(f64, f64); 4], b: &[(f64, f64); 4]) -> bool {
 }
 
 /// Shortest distance between two boxes (0 when they overlap).
-pub fn box_distance(a: &[(f64, f64); 4], b: &[(f64, f64); 4]) -> f64 {
+pub(crate) fn box_distance(a: &[(f64, f64); 4], b: &[(f64, f64); 4]) -> f64 {
     if boxes_overlap(a, b) {
         return 0.0;
     }
@@ -105,7 +105,7 @@ fn lane_scale(net: &RoadNetwork, lp: &crate::roads::LanePos) -> f64 {
 }
 
 /// Distance from entity `a` to entity `b`.
-pub fn between(net: Option<&RoadNetwork>, a: &Entity, b: &Entity, cs: CoordinateSystem, kind: RelativeDistanceType, freespace: bool) -> f64 {
+pub(crate) fn between(net: Option<&RoadNetwork>, a: &Entity, b: &Entity, cs: CoordinateSystem, kind: RelativeDistanceType, freespace: bool) -> f64 {
     if matches!(cs, CoordinateSystem::Road | CoordinateSystem::Lane) {
         if let (Some(net), Some(ra), Some(rb)) = (net, net.and_then(|n| road_t(n, a)), net.and_then(|n| road_t(n, b))) {
             let _ = net;
@@ -189,7 +189,7 @@ fn shrink(d: f64, ext_a: f64, ext_b: f64) -> f64 {
 }
 
 /// Distance from entity `a` to the point (x, y).
-pub fn to_point(net: Option<&RoadNetwork>, a: &Entity, x: f64, y: f64, cs: CoordinateSystem, kind: RelativeDistanceType, freespace: bool) -> f64 {
+pub(crate) fn to_point(net: Option<&RoadNetwork>, a: &Entity, x: f64, y: f64, cs: CoordinateSystem, kind: RelativeDistanceType, freespace: bool) -> f64 {
     let mut p = a.clone();
     p.x = x;
     p.y = y;

@@ -3,13 +3,13 @@
 //! evaluating after its first false condition unless a later one has a delay; a rising or
 //! falling edge needs one evaluation before it can fire; a fired trigger re-arms its edges).
 
-pub mod by_entity;
-pub mod by_value;
-pub mod clearance;
-pub mod distance;
-pub mod state;
-pub mod traffic_signal;
-pub mod triggering;
+pub(crate) mod by_entity;
+pub(crate) mod by_value;
+pub(crate) mod clearance;
+pub(crate) mod distance;
+pub(crate) mod state;
+pub(crate) mod traffic_signal;
+pub(crate) mod triggering;
 
 use self::state::{ConditionRt, TriggerRt};
 use crate::sim::Sim;
@@ -17,12 +17,12 @@ use crate::storyboard::{Kind, Node};
 use openscenario::{Condition, ConditionEdge, ConditionKind, EntityCondition, StoryboardElementType, Trigger, ValueCondition};
 
 impl<'a> TriggerRt<'a> {
-    pub fn new(t: &'a Trigger, sim: &Sim) -> TriggerRt<'a> {
+    pub(crate) fn new(t: &'a Trigger, sim: &Sim) -> TriggerRt<'a> {
         let groups = t.groups.iter().map(|g| g.conditions.iter().map(|c| ConditionRt::new(c, sim)).collect()).collect();
         TriggerRt { groups }
     }
 
-    pub fn reset(&mut self) {
+    pub(crate) fn reset(&mut self) {
         for g in &mut self.groups {
             for c in g {
                 c.history.clear();
@@ -31,7 +31,7 @@ impl<'a> TriggerRt<'a> {
         }
     }
 
-    pub fn resolve_elements(&mut self, nodes: &[Node]) {
+    pub(crate) fn resolve_elements(&mut self, nodes: &[Node]) {
         for g in &mut self.groups {
             for c in g {
                 if let ConditionKind::ByValue(ValueCondition::StoryboardElementState { element_type, element, .. }) = &c.model.kind {
@@ -121,7 +121,7 @@ impl<'a> ConditionRt<'a> {
 
 impl<'a> Sim<'a> {
     /// Evaluate trigger `t` at the current time.
-    pub fn eval_trigger(&mut self, t: usize, _start: bool) -> bool {
+    pub(crate) fn eval_trigger(&mut self, t: usize, _start: bool) -> bool {
         let Some(slot) = self.triggers.get_mut(t) else { return false };
         let mut trig = std::mem::take(slot);
         let mut result = false;

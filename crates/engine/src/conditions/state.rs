@@ -7,7 +7,7 @@ use openscenario::Condition;
 
 /// One condition with its evaluation memory.
 #[derive(Debug, Clone)]
-pub struct ConditionRt<'a> {
+pub(crate) struct ConditionRt<'a> {
     pub model: &'a Condition,
     pub(super) last_result: bool,
     /// Evaluated since the trigger last fired (edges need a previous value).
@@ -30,6 +30,6 @@ pub struct ConditionRt<'a> {
 }
 
 #[derive(Debug, Clone, Default)]
-pub struct TriggerRt<'a> {
+pub(crate) struct TriggerRt<'a> {
     pub groups: Vec<Vec<ConditionRt<'a>>>,
 }

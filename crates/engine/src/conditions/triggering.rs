@@ -6,7 +6,7 @@ use super::TriggerRt;
 impl TriggerRt<'_> {
     /// The entities that made the trigger true at its last evaluation, in order of first
     /// mention, without repeats; empty when no true group holds an entity condition.
-    pub fn triggering_entities(&self) -> Vec<usize> {
+    pub(crate) fn triggering_entities(&self) -> Vec<usize> {
         let mut out = Vec::new();
         for g in &self.groups {
             if g.is_empty() || !g.iter().all(|c| c.value) {

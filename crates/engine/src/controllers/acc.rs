@@ -11,7 +11,7 @@
 //! runs after the default controller; before it, `hold_for_override` keeps the default controller off
 //! an entity the controller moves itself (override mode).
 
-pub mod state;
+pub(crate) mod state;
 
 use state::AccRt;
 
@@ -31,11 +31,11 @@ const ACCELERATION_FACTOR: f64 = 0.7;
 impl AccRt {
     /// Active in override mode: it owns the longitudinal domain (esmini's
     /// IsControllerModeOnDomains(MODE_OVERRIDE, DOMAIN_MASK_LONG)).
-    pub fn overrides_longitudinal(&self) -> bool {
+    pub(crate) fn overrides_longitudinal(&self) -> bool {
         self.active && self.override_mode
     }
 
-    pub fn new(c: &Controller) -> AccRt {
+    pub(crate) fn new(c: &Controller) -> AccRt {
         let num = |n: &str| c.properties.get(n).and_then(|v| v.trim().parse::<f64>().ok());
         AccRt {
             active: false,
@@ -49,7 +49,7 @@ impl AccRt {
         }
     }
 
-    pub fn activate(&mut self, speed: f64, longitudinal: bool) {
+    pub(crate) fn activate(&mut self, speed: f64, longitudinal: bool) {
         if !longitudinal {
             return;
         }
@@ -83,7 +83,7 @@ pub(super) fn lane_delta(net: &RoadNetwork, a: LanePos, b: LanePos, max: f64) ->
 
 impl<'a> Sim<'a> {
     /// Step every active ACC (and ALKS) controller by `dt`, after the default controller.
-    pub fn step_acc_controllers(&mut self, dt: f64) {
+    pub(crate) fn step_acc_controllers(&mut self, dt: f64) {
         self.for_each_controller(|sim, e, c| {
             if let super::state::ControllerRt::Acc(a) = c {
                 if a.active {

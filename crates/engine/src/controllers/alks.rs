@@ -10,6 +10,6 @@ use super::acc::state::AccRt;
 use openscenario::Controller;
 
 /// The run-time state of an ALKSController: an ACC controller's.
-pub fn new(c: &Controller) -> AccRt {
+pub(crate) fn new(c: &Controller) -> AccRt {
     AccRt::new(c)
 }

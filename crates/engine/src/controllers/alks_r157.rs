@@ -11,7 +11,7 @@
 //! wandering threshold 0.375 m or `lateralTrigDistance`). RSS and FSM fall back to
 //! ReferenceDriver with a warning. Distances are free space in road coordinates (s, t).
 
-pub mod state;
+pub(crate) mod state;
 
 use state::{AlksR157Rt, Info, Mode, Model, Phase, Scen, Trigger};
 
@@ -49,7 +49,7 @@ struct Frame {
 
 impl AlksR157Rt {
     /// The runtime state, and a note when the model is not one of the two modelled.
-    pub fn new(c: &Controller) -> (AlksR157Rt, Option<String>) {
+    pub(crate) fn new(c: &Controller) -> (AlksR157Rt, Option<String>) {
         let p = |n: &str| c.properties.get(n).map(|s| s.trim().to_string());
         let num = |n: &str| p(n).and_then(|v| v.parse::<f64>().ok());
         let name = p("model").unwrap_or_default();
@@ -99,7 +99,7 @@ impl AlksR157Rt {
         (rt_, note)
     }
 
-    pub fn activate(&mut self, speed: f64, longitudinal: bool) {
+    pub(crate) fn activate(&mut self, speed: f64, longitudinal: bool) {
         self.set_speed = speed;
         if longitudinal {
             self.active = true;

@@ -18,7 +18,7 @@ const STEERING_RETURN: f64 = 4.0;
 const MAX_WHEEL_ANGLE: f64 = std::f64::consts::PI / 3.0;
 
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct AnalogVehicle {
+pub(crate) struct AnalogVehicle {
     /// Pose, speed (limited to `car.max_speed`), length and wheel angle.
     pub car: KinematicVehicle,
     handbrake: bool,
@@ -29,12 +29,12 @@ pub struct AnalogVehicle {
 }
 
 impl AnalogVehicle {
-    pub fn new(car: KinematicVehicle, max_acc: f64, max_dec: f64, steering_rate: f64) -> AnalogVehicle {
+    pub(crate) fn new(car: KinematicVehicle, max_acc: f64, max_dec: f64, steering_rate: f64) -> AnalogVehicle {
         AnalogVehicle { car, handbrake: false, max_acc, max_dec, steering_rate }
     }
 
     /// One step of `dt`: `throttle` in −1..=1 (negative brakes), then `steering`, then the move.
-    pub fn drive(&mut self, dt: f64, throttle: f64, steering: f64) {
+    pub(crate) fn drive(&mut self, dt: f64, throttle: f64, steering: f64) {
         self.drive_speed(dt, throttle);
         let car = &mut self.car;
         let scale = 1.0 / (1.0 + 0.005 * car.speed * car.speed);

@@ -8,7 +8,7 @@
 //! was `headstartTime` minus the look-ahead (in seconds) ago. The body is esmini's kinematic
 //! vehicle (`kinematic_vehicle`) with 10 m/s² and 100 m/s limits.
 
-pub mod state;
+pub(crate) mod state;
 
 use state::{FollowGhostRt, FollowMode};
 
@@ -26,7 +26,7 @@ const MAX_SPEED: f64 = 100.0;
 const MAX_HEADSTART: f64 = 600.0;
 
 impl FollowGhostRt {
-    pub fn new(c: &Controller) -> FollowGhostRt {
+    pub(crate) fn new(c: &Controller) -> FollowGhostRt {
         let num = |n: &str, d: f64| c.properties.get(n).and_then(|v| v.trim().parse::<f64>().ok()).filter(|v| v.is_finite()).unwrap_or(d);
         let mode = match c.properties.get("followMode").map(str::trim) {
             Some("position") => FollowMode::Position,
@@ -49,7 +49,7 @@ impl FollowGhostRt {
     }
 
     /// Switched on: the driver model starts from the entity's pose and speed.
-    pub fn activate(&mut self, en: &Entity) {
+    pub(crate) fn activate(&mut self, en: &Entity) {
         self.active = true;
         self.vehicle = Some(KinematicVehicle::new(en.x, en.y, en.h, en.speed, en.bbox[3], MAX_SPEED));
     }

@@ -8,7 +8,7 @@
 //! longitudinal distance to the reference: −k·dx − 2√k·(v − v_ref). The body is esmini's
 //! kinematic vehicle (`kinematic_vehicle`).
 
-pub mod state;
+pub(crate) mod state;
 
 use state::FollowReferenceRt;
 
@@ -24,7 +24,7 @@ const SMALL: f64 = 1e-10;
 const MAX_YAW_RATE: f64 = 0.5;
 
 impl FollowReferenceRt {
-    pub fn new(c: &Controller) -> FollowReferenceRt {
+    pub(crate) fn new(c: &Controller) -> FollowReferenceRt {
         let num = |n: &str| c.properties.get(n).and_then(|v| v.trim().parse::<f64>().ok()).filter(|v| v.is_finite()).unwrap_or(1.0);
         FollowReferenceRt {
             active: false,
@@ -40,13 +40,13 @@ impl FollowReferenceRt {
     }
 
     /// Whether it needs a ghost (no reference entity named).
-    pub fn uses_ghost(&self) -> bool {
+    pub(crate) fn uses_ghost(&self) -> bool {
         self.reference_name.is_none()
     }
 
     /// Switched on: the body starts from the entity's pose and speed; `wheelbase` is the front
     /// axle's distance ahead of the reference point.
-    pub fn activate(&mut self, en: &Entity, wheelbase: f64) {
+    pub(crate) fn activate(&mut self, en: &Entity, wheelbase: f64) {
         self.active = true;
         self.wheelbase = wheelbase;
         self.vehicle = Some(KinematicVehicle::new(en.x, en.y, en.h, en.speed, en.bbox[3], en.max_speed));
@@ -54,7 +54,7 @@ impl FollowReferenceRt {
 }
 
 /// The front axle's distance ahead of the reference point of scenario entity `e`.
-pub fn wheelbase(scenario: &openscenario::Scenario, e: usize) -> f64 {
+pub(crate) fn wheelbase(scenario: &openscenario::Scenario, e: usize) -> f64 {
     match scenario.entities.get(e).map(|m| &m.object) {
         Some(EntityObject::Vehicle(v)) => v.axles.front.map_or(0.0, |a| a.position_x),
         _ => 0.0,
@@ -64,7 +64,7 @@ pub fn wheelbase(scenario: &openscenario::Scenario, e: usize) -> f64 {
 impl<'a> Sim<'a> {
     /// Warn about FollowReference controllers whose `referenceEntity` does not exist (esmini
     /// quits; here the entity stands still).
-    pub fn check_follow_references(&mut self) {
+    pub(crate) fn check_follow_references(&mut self) {
         for e in 0..self.controllers.len() {
             let Some(Some(super::state::ControllerRt::FollowReference(f))) = self.controllers.get(e) else { continue };
             let Some(name) = f.reference_name.clone() else { continue };

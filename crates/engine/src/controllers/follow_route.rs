@@ -9,7 +9,7 @@
 //! keep acting on the entity. Stepped after the default controller, as esmini steps its
 //! controllers.
 
-pub mod state;
+pub(crate) mod state;
 
 use state::FollowRouteRt;
 
@@ -34,7 +34,7 @@ enum WaypointStatus {
 }
 
 impl FollowRouteRt {
-    pub fn new(c: &Controller) -> Self {
+    pub(crate) fn new(c: &Controller) -> Self {
         // esmini reads the numbers with strtod: text that is no number is 0.
         let num = |n: &str, default: f64| c.properties.get(n).map_or(default, |v| v.trim().parse::<f64>().unwrap_or(0.0));
         FollowRouteRt {
@@ -56,7 +56,7 @@ impl FollowRouteRt {
     }
 
     /// esmini's `Activate`: start over (the path is planned at the next step with a route).
-    pub fn activate(&mut self, longitudinal: bool) {
+    pub(crate) fn activate(&mut self, longitudinal: bool) {
         self.active = true;
         self.longitudinal = longitudinal;
         self.current = 0;
@@ -68,13 +68,13 @@ impl FollowRouteRt {
     }
 
     /// A route was assigned: its scenario waypoints and the roads it passes, in order.
-    pub fn set_route(&mut self, scenario: Vec<(LaneSpot, Strategy)>, route_roads: Vec<usize>) {
+    pub(crate) fn set_route(&mut self, scenario: Vec<(LaneSpot, Strategy)>, route_roads: Vec<usize>) {
         self.scenario = scenario;
         self.route_roads = route_roads;
     }
 
     /// Whether a running lane change holds the entity (esmini's override mode).
-    pub fn holds_entity(&self) -> bool {
+    pub(crate) fn holds_entity(&self) -> bool {
         self.active && self.lane_change.is_some()
     }
 
@@ -82,14 +82,14 @@ impl FollowRouteRt {
     /// in override mode from the start of its lane change to the end (additive otherwise), and
     /// `Object::IsControllerModeOnDomains(MODE_OVERRIDE, DOMAIN_MASK_LONG)` asks for a
     /// controller active on that domain.
-    pub fn overrides_longitudinal(&self) -> bool {
+    pub(crate) fn overrides_longitudinal(&self) -> bool {
         self.holds_entity() && self.longitudinal
     }
 }
 
 /// esmini's detailed route waypoints' roads for `route` through `scenario` waypoints: each
 /// scenario waypoint's road and, between two, each road the planned route passes.
-pub fn route_roads(route: &routing::Route, scenario: &[(LaneSpot, Strategy)]) -> Vec<usize> {
+pub(crate) fn route_roads(route: &routing::Route, scenario: &[(LaneSpot, Strategy)]) -> Vec<usize> {
     let mut out = Vec::new();
     for (i, (w, _)) in scenario.iter().enumerate() {
         if i > 0 {
@@ -196,7 +196,7 @@ impl<'a> Sim<'a> {
     }
 
     /// Step every active FollowRoute controller by `dt`, after the default controller.
-    pub fn step_route_followers(&mut self, dt: f64) {
+    pub(crate) fn step_route_followers(&mut self, dt: f64) {
         self.for_each_controller(|sim, e, c| {
             if let super::state::ControllerRt::FollowRoute(f) = c {
                 if f.active {

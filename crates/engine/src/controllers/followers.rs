@@ -9,7 +9,7 @@ use crate::sim::Sim;
 
 impl<'a> Sim<'a> {
     /// Step every active follower by `dt` (after the default controller).
-    pub fn step_followers(&mut self, dt: f64) {
+    pub(crate) fn step_followers(&mut self, dt: f64) {
         if !self.any_controller {
             return;
         }

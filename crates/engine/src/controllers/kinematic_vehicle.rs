@@ -11,7 +11,7 @@ use std::f64::consts::PI;
 const MAX_WHEEL_ANGLE: f64 = PI / 3.0;
 
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct KinematicVehicle {
+pub(crate) struct KinematicVehicle {
     pub x: f64,
     pub y: f64,
     /// Heading in [0, 2π).
@@ -23,14 +23,14 @@ pub struct KinematicVehicle {
 }
 
 impl KinematicVehicle {
-    pub fn new(x: f64, y: f64, h: f64, speed: f64, length: f64, max_speed: f64) -> KinematicVehicle {
+    pub(crate) fn new(x: f64, y: f64, h: f64, speed: f64, length: f64, max_speed: f64) -> KinematicVehicle {
         KinematicVehicle { x, y, h, speed, length: if length > 0.0 { length } else { 5.0 }, max_speed, wheel_angle: 0.0 }
     }
 
     /// Accelerate towards `target_speed` (gain and limit `max_acc`) and steer the heading error
     /// `heading_to_target`, the wheel angle limited more the faster it goes
     /// (`60° / (1 + steering_scale · speed²)`).
-    pub fn drive_to_target(&mut self, dt: f64, target_speed: f64, heading_to_target: f64, max_acc: f64, steering_scale: f64) {
+    pub(crate) fn drive_to_target(&mut self, dt: f64, target_speed: f64, heading_to_target: f64, max_acc: f64, steering_scale: f64) {
         let acc = (max_acc * (target_speed - self.speed)).clamp(-max_acc, max_acc);
         self.speed = (self.speed + acc * dt).clamp(-self.max_speed, self.max_speed);
         let limit = MAX_WHEEL_ANGLE / (1.0 + steering_scale * self.speed * self.speed);
@@ -39,19 +39,19 @@ impl KinematicVehicle {
     }
 
     /// Apply an acceleration and a wheel angle (limited to 60°).
-    pub fn drive_acc_steer(&mut self, dt: f64, acc: f64, wheel_angle: f64) {
+    pub(crate) fn drive_acc_steer(&mut self, dt: f64, acc: f64, wheel_angle: f64) {
         self.speed = (self.speed + acc * dt).clamp(-self.max_speed, self.max_speed);
         self.wheel_angle = wheel_angle.clamp(-MAX_WHEEL_ANGLE, MAX_WHEEL_ANGLE);
         self.advance(dt);
     }
 
     /// Move one step with the speed and wheel angle as they are (vehicle::Vehicle::Update).
-    pub fn roll(&mut self, dt: f64) {
+    pub(crate) fn roll(&mut self, dt: f64) {
         self.advance(dt);
     }
 
     /// Whether the state is a real pose and speed.
-    pub fn is_finite(&self) -> bool {
+    pub(crate) fn is_finite(&self) -> bool {
         self.x.is_finite() && self.y.is_finite() && self.h.is_finite() && self.speed.is_finite()
     }
 

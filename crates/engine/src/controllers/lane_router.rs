@@ -16,7 +16,7 @@ const DEFAULT_SPEED: f64 = 19.444;
 
 /// A place on a lane: road index, lane id, s.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct LaneSpot {
+pub(crate) struct LaneSpot {
     pub road: usize,
     pub lane: i32,
     pub s: f64,
@@ -26,7 +26,7 @@ pub struct LaneSpot {
 type Link = (usize, ContactPoint);
 
 #[derive(Debug, Clone, Copy)]
-pub struct Node {
+pub(crate) struct Node {
     pub road: usize,
     pub current_lane: i32,
     pub from_lane: i32,
@@ -49,7 +49,7 @@ fn end_section(road: &Road, end: ContactPoint) -> usize {
 
 /// esmini's `RoadCalculations::CalcAverageSpeed`: the mean over the road's type records of
 /// each record's speed, or its type's default speed.
-pub fn average_speed(road: &Road) -> f64 {
+pub(crate) fn average_speed(road: &Road) -> f64 {
     if road.types.is_empty() {
         return DEFAULT_SPEED;
     }
@@ -71,7 +71,7 @@ pub fn average_speed(road: &Road) -> f64 {
 
 /// esmini's `Road::GetConnectingLaneId`: the lane `from_lane` of `road` leads to on
 /// `next_road` across link `link`; 0 for none.
-pub fn connecting_lane_id(net: &RoadNetwork, link: Link, from_lane: i32, next_road: usize) -> i32 {
+pub(crate) fn connecting_lane_id(net: &RoadNetwork, link: Link, from_lane: i32, next_road: usize) -> i32 {
     let Some(road) = net.roads.get(link.0) else { return 0 };
     let Some(rl) = road.link_at(link.1) else { return 0 };
     let Some(lane) = road.lane_sections.get(end_section(road, link.1)).and_then(|s| s.lane(from_lane)) else { return 0 };
@@ -103,7 +103,7 @@ pub fn connecting_lane_id(net: &RoadNetwork, link: Link, from_lane: i32, next_ro
 
 /// Roads a link leads to: the linked road, or every connecting road of the junction whose
 /// incoming road is `road`, in connection order (esmini's `GetNextRoads`).
-pub fn next_roads(net: &RoadNetwork, link: Link) -> Vec<usize> {
+pub(crate) fn next_roads(net: &RoadNetwork, link: Link) -> Vec<usize> {
     let Some(road) = net.roads.get(link.0) else { return Vec::new() };
     let Some(rl) = road.link_at(link.1) else { return Vec::new() };
     match rl.element_type {
@@ -256,7 +256,7 @@ fn valid(net: &RoadNetwork, p: &LaneSpot) -> bool {
 /// esmini's `LaneIndependentRouter::CalculatePath`: the nodes from `start` (driving along s
 /// when `forward`) to `target`; empty when there is none, including when both are on the
 /// same lane of the same road.
-pub fn calculate_path(net: &RoadNetwork, start: LaneSpot, forward: bool, target: LaneSpot, strategy: Strategy) -> Vec<Node> {
+pub(crate) fn calculate_path(net: &RoadNetwork, start: LaneSpot, forward: bool, target: LaneSpot, strategy: Strategy) -> Vec<Node> {
     if !valid(net, &start) || !valid(net, &target) {
         return Vec::new();
     }
@@ -352,7 +352,7 @@ pub fn calculate_path(net: &RoadNetwork, start: LaneSpot, forward: bool, target:
 /// waypoint on the lane that leads on, in the middle of the stretch where that lane is a
 /// driving lane up to the road's end (or at the start when that is further along); then the
 /// target.
-pub fn path_waypoints(net: &RoadNetwork, path: &[Node], start: LaneSpot, target: LaneSpot) -> Vec<LaneSpot> {
+pub(crate) fn path_waypoints(net: &RoadNetwork, path: &[Node], start: LaneSpot, target: LaneSpot) -> Vec<LaneSpot> {
     let mut out = Vec::with_capacity(path.len());
     for (idx, pair) in path.windows(2).enumerate() {
         let (cur, next) = (&pair[0], &pair[1]);

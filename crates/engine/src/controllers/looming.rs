@@ -12,7 +12,7 @@
 //!   at zero throttle, a handbrake when braking through zero; the wheel turned by the steering
 //!   and the kinematic bicycle of `kinematic_vehicle.rs`.
 
-pub mod state;
+pub(crate) mod state;
 
 use state::LoomingRt;
 
@@ -43,12 +43,12 @@ const K1: f64 = 1.3;
 const K2: f64 = 1.5;
 
 /// What the run says about a LoomingController on roads with elevation or superelevation.
-pub const APPROXIMATION: &str = "LoomingController: the OSI points of its far tangent point are esmini's for flat roads; the shorter spacing esmini uses where the road's elevation or superelevation changes is not modelled";
+pub(crate) const APPROXIMATION: &str = "LoomingController: the OSI points of its far tangent point are esmini's for flat roads; the shorter spacing esmini uses where the road's elevation or superelevation changes is not modelled";
 
 impl LoomingRt {
     /// ControllerLooming's constructor: `timeGap` (1.5 s) and `setSpeed` properties; the mode
     /// is esmini's Controller default, override, unless `mode` says additive.
-    pub fn new(c: &Controller) -> LoomingRt {
+    pub(crate) fn new(c: &Controller) -> LoomingRt {
         let num = |n: &str| c.properties.get(n).and_then(|v| v.trim().parse::<f64>().ok());
         LoomingRt {
             active: false,
@@ -69,7 +69,7 @@ impl LoomingRt {
     /// ControllerLooming::Activate: the vehicle model starts at the entity's speed; the set
     /// speed is the entity's speed unless given in override mode. The controller operates on
     /// the longitudinal domain only.
-    pub fn activate(&mut self, en: &crate::entities::Entity, longitudinal: bool) {
+    pub(crate) fn activate(&mut self, en: &crate::entities::Entity, longitudinal: bool) {
         let (speed, max_acc, max_dec) = (en.speed, en.max_acc, en.max_dec);
         if !longitudinal {
             return;
@@ -113,7 +113,7 @@ fn lead_delta(
 impl<'a> Sim<'a> {
     /// Step every active LoomingController by `dt`, after the default controller (esmini steps
     /// its controllers then, in frame 0 too with dt = 0).
-    pub fn step_looming_controllers(&mut self, dt: f64) {
+    pub(crate) fn step_looming_controllers(&mut self, dt: f64) {
         self.for_each_controller(|sim, e, c| {
             if let super::state::ControllerRt::Looming(l) = c {
                 if l.active {
@@ -161,7 +161,7 @@ impl<'a> Sim<'a> {
         if let (Some(net), Some(lp)) = (self.net, me.lane) {
             let h_road = lp.pose(net).map_or(me.h, |p| p.road_heading);
             let forward = lp.dir > 0.0;
-            let t = super::looming_view::far_tangent(net, &mut l.osi, lp, me.x, me.y, h_road, forward, far_dist);
+            let t = super::looming_view::far_tangent(net, &mut l.osi, super::looming_view::Viewpoint { lane: lp, x: me.x, y: me.y, h_road, forward }, far_dist);
             far = t.point;
             intersection = t.intersection;
             searched = t.dist;

@@ -8,21 +8,21 @@
 //! naming it; the ones that need a human or an outside process (Interactive, External, SUMO,
 //! HID, UDP driver) say so.
 
-pub mod acc;
-pub mod alks;
-pub mod alks_r157;
-pub mod analog_vehicle;
-pub mod follow_ghost;
-pub mod follow_reference;
-pub mod follow_route;
-pub mod followers;
-pub mod kinematic_vehicle;
-pub mod lane_router;
-pub mod looming;
-pub mod looming_view;
-pub mod natural_driver;
-pub mod natural_view;
-pub mod state;
+pub(crate) mod acc;
+pub(crate) mod alks;
+pub(crate) mod alks_r157;
+pub(crate) mod analog_vehicle;
+pub(crate) mod follow_ghost;
+pub(crate) mod follow_reference;
+pub(crate) mod follow_route;
+pub(crate) mod followers;
+pub(crate) mod kinematic_vehicle;
+pub(crate) mod lane_router;
+pub(crate) mod looming;
+pub(crate) mod looming_view;
+pub(crate) mod natural_driver;
+pub(crate) mod natural_view;
+pub(crate) mod state;
 
 use self::state::ControllerRt;
 use crate::sim::Sim;
@@ -34,7 +34,7 @@ const OUTSIDE_INPUT: [&str; 6] =
     ["InteractiveController", "ExternalController", "SumoController", "HIDController", "UDPDriverController", "ExternalDriverModel"];
 
 /// The esmini type of a controller.
-pub fn controller_type(c: &Controller) -> &str {
+pub(crate) fn controller_type(c: &Controller) -> &str {
     c.properties.get("esminiController").unwrap_or(c.name.as_str())
 }
 
@@ -59,7 +59,7 @@ impl<'a> Sim<'a> {
     }
 
     /// Assign controller `c` to entity `e`; warns when its type is not modelled.
-    pub fn assign_controller(&mut self, e: usize, c: &Controller) {
+    pub(crate) fn assign_controller(&mut self, e: usize, c: &Controller) {
         if self.named_external(e) {
             let name = self.entities.get(e).map_or("", |en| en.name.as_str());
             self.warnings.push(Warning::at(&c.origin, format!("controller `{}` of `{name}` is not stepped: the entity is driven from outside", c.name)));
@@ -105,7 +105,7 @@ impl<'a> Sim<'a> {
     }
 
     /// ActivateControllerAction on entity `e` for the given domains.
-    pub fn activate_controller(&mut self, e: usize, longitudinal: bool) {
+    pub(crate) fn activate_controller(&mut self, e: usize, longitudinal: bool) {
         let Some(speed) = self.entities.get(e).map(|en| en.speed) else { return };
         match self.controllers.get_mut(e) {
             Some(Some(ControllerRt::Acc(a))) => a.activate(speed, longitudinal),
@@ -147,7 +147,7 @@ impl<'a> Sim<'a> {
     }
 
     /// Step every active controller by `dt` (after the storyboard, before the default controller).
-    pub fn step_controllers(&mut self, dt: f64) {
+    pub(crate) fn step_controllers(&mut self, dt: f64) {
         if !self.any_controller {
             return;
         }

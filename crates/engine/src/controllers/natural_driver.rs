@@ -22,7 +22,7 @@
 //! standing still, and the additive `mode` is driven like `override` (the driver always moves
 //! the entity itself).
 
-pub mod state;
+pub(crate) mod state;
 
 use state::{Mode, NaturalDriverRt, NdParams};
 
@@ -72,7 +72,7 @@ fn strtoi(text: &str) -> i32 {
 }
 
 impl NaturalDriverRt {
-    pub fn new(c: &Controller) -> NaturalDriverRt {
+    pub(crate) fn new(c: &Controller) -> NaturalDriverRt {
         let p = NdParams::from_properties(c);
         let cooldown = p.lane_change_duration + p.lane_change_delay;
         NaturalDriverRt {
@@ -91,7 +91,7 @@ impl NaturalDriverRt {
     }
 
     /// The controller works on the longitudinal domain only.
-    pub fn activate(&mut self, speed: f64, longitudinal: bool) {
+    pub(crate) fn activate(&mut self, speed: f64, longitudinal: bool) {
         if longitudinal {
             self.active = true;
             self.current_speed = speed;
@@ -102,7 +102,7 @@ impl NaturalDriverRt {
 impl<'a> Sim<'a> {
     /// Step every active NaturalDriver by `dt`, after the default controller moved the others
     /// (also at frame 0 with `dt` = 0, as esmini steps its controllers there too).
-    pub fn step_natural_drivers(&mut self, dt: f64) {
+    pub(crate) fn step_natural_drivers(&mut self, dt: f64) {
         self.for_each_controller(|sim, e, c| {
             if let ControllerRt::NaturalDriver(nd) = c {
                 if nd.active {

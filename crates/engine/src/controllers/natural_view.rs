@@ -14,26 +14,26 @@ use crate::sim::Sim;
 use opendrive::RoadNetwork;
 
 /// esmini's SMALL_NUMBER and LARGE_NUMBER.
-pub const SMALL_NUMBER: f64 = 1e-10;
-pub const LARGE_NUMBER: f64 = 1e10;
+pub(crate) const SMALL_NUMBER: f64 = 1e-10;
+pub(crate) const LARGE_NUMBER: f64 = 1e10;
 
 /// Slots of the vehicles of interest.
-pub const LEAD: usize = 0;
-pub const FOLLOWING: usize = 1;
-pub const LEFT_LEAD: usize = 2;
-pub const LEFT_FOLLOW: usize = 3;
-pub const RIGHT_LEAD: usize = 4;
-pub const RIGHT_FOLLOW: usize = 5;
+pub(crate) const LEAD: usize = 0;
+pub(crate) const FOLLOWING: usize = 1;
+pub(crate) const LEFT_LEAD: usize = 2;
+pub(crate) const LEFT_FOLLOW: usize = 3;
+pub(crate) const RIGHT_LEAD: usize = 4;
+pub(crate) const RIGHT_FOLLOW: usize = 5;
 
 /// The closest vehicle of each kind: entity index and signed distance along the road.
-pub type Vois = [Option<(usize, f64)>; 6];
+pub(crate) type Vois = [Option<(usize, f64)>; 6];
 
 /// Road delta from `a` to `b` as esmini's `Position::Delta` has it: signed distance along the
 /// roads (positive ahead of the way `a` faces) and lane difference (positive towards the road
 /// centre as `a` sees it, the centre lane skipped). On one road the distance is the difference
 /// of s whatever its size; across roads the shortest chain within `max`, searched forward and,
 /// when `both`, backward. `None` when no path is found.
-pub fn road_delta(net: &RoadNetwork, a: &LanePos, b: &LanePos, both: bool, max: f64) -> Option<(f64, i32)> {
+pub(crate) fn road_delta(net: &RoadNetwork, a: &LanePos, b: &LanePos, both: bool, max: f64) -> Option<(f64, i32)> {
     let lane_diff = |from: i32, to: i32| {
         let mut d = -from.signum() * (to - from);
         if from.signum() != to.signum() && from != 0 && to != 0 {
@@ -63,7 +63,7 @@ pub fn road_delta(net: &RoadNetwork, a: &LanePos, b: &LanePos, both: bool, max: 
 /// Free space between `follow` and `target` along the road given the reference-point distance
 /// `ds` (esmini's EstimateFreespace): bounding-box overhangs removed when both point roughly the
 /// same way, clipped at 0; the raw distance otherwise.
-pub fn freespace(follow: &Entity, target: &Entity, ds: f64) -> f64 {
+pub(crate) fn freespace(follow: &Entity, target: &Entity, ds: f64) -> f64 {
     if wrap(follow.h - target.h).abs() >= std::f64::consts::FRAC_PI_2 {
         return ds;
     }
@@ -76,14 +76,14 @@ pub fn freespace(follow: &Entity, target: &Entity, ds: f64) -> f64 {
 }
 
 /// IDM desired gap s0 + max(0, v·T + v·Δv / (2·√(a·b))).
-pub fn desired_gap(p: &NdParams, follow_speed: f64, lead_speed: f64) -> f64 {
+pub(crate) fn desired_gap(p: &NdParams, follow_speed: f64, lead_speed: f64) -> f64 {
     let ab = -p.max_acc * p.max_dec;
     p.desired_distance + (follow_speed * p.thw + follow_speed * (follow_speed - lead_speed) / (2.0 * ab.sqrt())).max(0.0)
 }
 
 /// The driving lanes to the left and right of `lp` (0: none), or `None` when its side of the
 /// road has at most one driving lane.
-pub fn adjacent_lanes(net: &RoadNetwork, lp: &LanePos) -> Option<[i32; 2]> {
+pub(crate) fn adjacent_lanes(net: &RoadNetwork, lp: &LanePos) -> Option<[i32; 2]> {
     let road = net.roads.get(lp.road)?;
     let sec = road.lane_sections.get(road.section_index_at(lp.s.clamp(0.0, road.length)))?;
     let cur = lp.lane_id;

@@ -3,7 +3,7 @@
 
 /// A controller's state during a run.
 #[derive(Debug, Clone)]
-pub enum ControllerRt {
+pub(crate) enum ControllerRt {
     Acc(super::acc::state::AccRt),
     AlksR157(Box<super::alks_r157::state::AlksR157Rt>),
     NaturalDriver(Box<super::natural_driver::state::NaturalDriverRt>),

@@ -7,7 +7,7 @@ use super::input::Input;
 use crate::controllers::analog_vehicle::AnalogVehicle;
 
 #[derive(Debug, Clone)]
-pub struct Driven {
+pub(crate) struct Driven {
     pub source: Source,
     /// Driven from outside now.
     pub active: bool,
@@ -33,7 +33,7 @@ pub struct Driven {
 
 /// An entity's pose and speed, with where that is on the road.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Pose {
+pub(crate) struct Pose {
     pub x: f64,
     pub y: f64,
     pub z: f64,
@@ -45,18 +45,18 @@ pub struct Pose {
 }
 
 impl Pose {
-    pub fn of(en: &crate::entities::Entity) -> Pose {
+    pub(crate) fn of(en: &crate::entities::Entity) -> Pose {
         Pose { x: en.x, y: en.y, z: en.z, h: en.h, speed: en.speed, lane: en.lane, on_road: en.on_road, yaw_offset: en.yaw_offset }
     }
 
-    pub fn put(&self, en: &mut crate::entities::Entity) {
+    pub(crate) fn put(&self, en: &mut crate::entities::Entity) {
         (en.x, en.y, en.z, en.h, en.speed, en.lane, en.on_road, en.yaw_offset) =
             (self.x, self.y, self.z, self.h, self.speed, self.lane, self.on_road, self.yaw_offset);
     }
 }
 
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct LastState {
+pub(crate) struct LastState {
     pub speed: f64,
     pub h: f64,
     /// The height was given (kept while dead reckoning) rather than taken from the road.
@@ -64,7 +64,7 @@ pub struct LastState {
 }
 
 impl Driven {
-    pub fn new(source: Source, active: bool) -> Driven {
+    pub(crate) fn new(source: Source, active: bool) -> Driven {
         Driven {
             source,
             active,

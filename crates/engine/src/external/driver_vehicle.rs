@@ -11,6 +11,6 @@ const MAX_DEC: f64 = 20.0;
 const MAX_SPEED: f64 = 30.0;
 const STEERING_RATE: f64 = 5.0;
 
-pub fn udp_driver_vehicle(x: f64, y: f64, h: f64, speed: f64, length: f64) -> AnalogVehicle {
+pub(crate) fn udp_driver_vehicle(x: f64, y: f64, h: f64, speed: f64, length: f64) -> AnalogVehicle {
     AnalogVehicle::new(KinematicVehicle::new(x, y, h, speed, length, MAX_SPEED), MAX_ACC, MAX_DEC, STEERING_RATE)
 }

@@ -8,12 +8,12 @@
 //! effect · `overridden`: what the storyboard's motion actions do to such an entity (esmini's
 //! rules for a controller in override mode).
 
-pub mod apply;
-pub mod choice;
-pub mod driven;
-pub mod driver_vehicle;
-pub mod input;
-pub mod overridden;
+pub(crate) mod apply;
+pub(crate) mod choice;
+pub(crate) mod driven;
+pub(crate) mod driver_vehicle;
+pub(crate) mod input;
+pub(crate) mod overridden;
 
 pub use choice::{Chosen, External, ExternalEntity, ScriptedMotion, Source, OUTSIDE_DRIVERS};
 pub use input::{DriverInput, ExternalState, Input};

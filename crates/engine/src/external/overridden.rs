@@ -10,7 +10,7 @@ use openscenario::PrivateAction;
 
 /// An action's fate on an entity driven from outside.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Overridden {
+pub(crate) enum Overridden {
     /// Runs as usual.
     Runs,
     /// Ends at once without effect (the action's own code handles it: `longitudinal_overridden`).
@@ -22,7 +22,7 @@ pub enum Overridden {
 }
 
 /// The fate of private action `p`.
-pub fn overridden(p: &PrivateAction) -> Overridden {
+pub(crate) fn overridden(p: &PrivateAction) -> Overridden {
     match p {
         PrivateAction::Speed { .. } => Overridden::Ends,
         PrivateAction::LaneChange { .. }
@@ -37,7 +37,7 @@ pub fn overridden(p: &PrivateAction) -> Overridden {
 }
 
 /// The warning for action `element` on entity `entity`, or none when it runs as usual.
-pub fn note(fate: Overridden, element: &str, entity: &str) -> Option<String> {
+pub(crate) fn note(fate: Overridden, element: &str, entity: &str) -> Option<String> {
     let what = match fate {
         Overridden::Runs => return None,
         Overridden::Ends => "ends at once without effect",

@@ -5,7 +5,7 @@
 use crate::ghost_trail::Trail;
 
 #[derive(Debug, Clone)]
-pub struct Ghost {
+pub(crate) struct Ghost {
     /// The ghost entity.
     pub entity: usize,
     /// The entity it runs ahead of (the only one that follows it).
@@ -30,7 +30,7 @@ pub struct Ghost {
 /// its entity, then `Restarting` while the rewound time catches up (the head start before time
 /// 0 is run the same way), else `Normal`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum GhostMode {
+pub(crate) enum GhostMode {
     Normal,
     Restart,
     Restarting,

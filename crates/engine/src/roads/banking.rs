@@ -6,7 +6,7 @@ use opendrive::model::poly::record_at;
 use opendrive::Road;
 
 /// Roll angle (rad) and its rate d(roll)/ds at `s`; (0, 0) on a road without superelevation.
-pub fn roll_at(road: &Road, s: f64) -> (f64, f64) {
+pub(crate) fn roll_at(road: &Road, s: f64) -> (f64, f64) {
     match record_at(&road.superelevation, s) {
         Some(r) => (r.value(s - r.s), r.slope(s - r.s)),
         None => (0.0, 0.0),
@@ -16,7 +16,7 @@ pub fn roll_at(road: &Road, s: f64) -> (f64, f64) {
 /// For a point `t` across the road at `s` on a road of reference curvature `curvature`: the
 /// horizontal offset, the height above the reference line, and the heading added to the
 /// reference heading by the changing roll.
-pub fn banked(road: &Road, s: f64, t: f64, curvature: f64) -> (f64, f64, f64) {
+pub(crate) fn banked(road: &Road, s: f64, t: f64, curvature: f64) -> (f64, f64, f64) {
     if road.superelevation.is_empty() {
         return (t, 0.0, 0.0);
     }

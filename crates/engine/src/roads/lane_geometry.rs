@@ -6,7 +6,7 @@ use opendrive::{Lane, Road};
 
 /// t of the inner and outer border of lane `lane_id` in section `section` at road `s`;
 /// `None` when the lane does not exist. Centre lane: both at the lane offset.
-pub fn lane_borders(road: &Road, section: usize, lane_id: i32, s: f64) -> Option<(f64, f64)> {
+pub(crate) fn lane_borders(road: &Road, section: usize, lane_id: i32, s: f64) -> Option<(f64, f64)> {
     let sec = road.lane_sections.get(section)?;
     let base = road.lane_offset_at(s);
     if lane_id == 0 {
@@ -32,7 +32,7 @@ pub fn lane_borders(road: &Road, section: usize, lane_id: i32, s: f64) -> Option
 }
 
 /// t of the centre of lane `lane_id` at `s` (section looked up).
-pub fn lane_center_t(road: &Road, lane_id: i32, s: f64) -> Option<f64> {
+pub(crate) fn lane_center_t(road: &Road, lane_id: i32, s: f64) -> Option<f64> {
     let (a, b) = lane_borders(road, road.section_index_at(s), lane_id, s)?;
     Some(0.5 * (a + b))
 }

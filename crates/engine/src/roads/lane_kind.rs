@@ -5,7 +5,7 @@
 use opendrive::LaneType;
 
 /// Whether vehicles drive on a lane of this type.
-pub fn is_driving(kind: LaneType) -> bool {
+pub(crate) fn is_driving(kind: LaneType) -> bool {
     matches!(
         kind,
         LaneType::Driving

@@ -5,7 +5,7 @@ use opendrive::RoadNetwork;
 
 /// An entity's place on the road network.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct LanePos {
+pub(crate) struct LanePos {
     /// Index into `RoadNetwork::roads`.
     pub road: usize,
     pub lane_id: i32,
@@ -19,7 +19,7 @@ pub struct LanePos {
 /// World pose of a lane position: x, y, z, reference-line heading, curvature of the reference line,
 /// and t (lateral coordinate from the reference line).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct LanePose {
+pub(crate) struct LanePose {
     pub x: f64,
     pub y: f64,
     pub z: f64,
@@ -32,7 +32,7 @@ pub struct LanePose {
 
 impl LanePos {
     /// World pose; `None` if the road or lane is missing.
-    pub fn pose(&self, net: &RoadNetwork) -> Option<LanePose> {
+    pub(crate) fn pose(&self, net: &RoadNetwork) -> Option<LanePose> {
         let road = net.roads.get(self.road)?;
         let s = self.s.clamp(0.0, road.length);
         let lane = super::pose_memo::lane_borders_at(road, self.lane_id, s);
@@ -46,7 +46,7 @@ impl LanePos {
 
     /// Heading of the driving direction the entity faces (reference heading, turned by π when
     /// it faces -s).
-    pub fn facing_heading(&self, pose: &LanePose) -> f64 {
+    pub(crate) fn facing_heading(&self, pose: &LanePose) -> f64 {
         if self.dir < 0.0 {
             pose.road_heading + std::f64::consts::PI
         } else {

@@ -11,7 +11,7 @@ use std::cell::RefCell;
 
 /// Facts about one lane of one section.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct LaneShape {
+pub(crate) struct LaneShape {
     /// The lane's centre keeps its distance to the reference line throughout the section.
     pub parallel: bool,
     /// The lane's width is constant and positive throughout the section.
@@ -33,7 +33,7 @@ fn constant(records: &[CubicRecord]) -> bool {
 
 /// The facts of lane `lane_id` in section `section` of `road` (a lane that does not exist is
 /// neither parallel nor safe from zero width, so nothing is skipped for it).
-pub fn lane_shape(road: &Road, section: usize, lane_id: i32) -> LaneShape {
+pub(crate) fn lane_shape(road: &Road, section: usize, lane_id: i32) -> LaneShape {
     let k: Key = (road as *const Road as usize, section, lane_id);
     let h = ((k.0 as u64) ^ (k.1 as u64).rotate_left(23) ^ u64::from(lane_id as u32).rotate_left(41)).wrapping_mul(0x9E37_79B9_7F4A_7C15);
     let i = (h >> 56) as usize % SLOTS;
@@ -72,16 +72,16 @@ fn compute(road: &Road, section: usize, lane_id: i32) -> LaneShape {
 }
 
 /// One run's entries (`crate::run_memos`).
-pub struct Store(Vec<Option<(Key, LaneShape)>>);
+pub(crate) struct Store(Vec<Option<(Key, LaneShape)>>);
 
 impl Store {
     /// No entries.
-    pub fn new() -> Store {
+    pub(crate) fn new() -> Store {
         Store(vec![None; SLOTS])
     }
 
     /// Exchange these entries with the thread's.
-    pub fn swap_with_thread(&mut self) {
+    pub(crate) fn swap_with_thread(&mut self) {
         MEMO.with(|m| std::mem::swap(&mut *m.borrow_mut(), &mut self.0));
     }
 }

@@ -10,7 +10,7 @@ use opendrive::{Lane, Road};
 
 /// dt/ds of the centre of lane `lane_id` in section `section` at road `s` (0 for the centre
 /// lane and for a lane that does not exist).
-pub fn lane_center_slope(road: &Road, section: usize, lane_id: i32, s: f64) -> f64 {
+pub(crate) fn lane_center_slope(road: &Road, section: usize, lane_id: i32, s: f64) -> f64 {
     let Some(sec) = road.lane_sections.get(section) else { return 0.0 };
     let base = piecewise_slope(&road.lane_offsets, s);
     if lane_id == 0 {
@@ -37,7 +37,7 @@ pub fn lane_center_slope(road: &Road, section: usize, lane_id: i32, s: f64) -> f
 
 /// The turn of a lane follower's heading away from the road direction: atan of the centre's
 /// sideways slope over the lane's own length scale (1 − κ·t).
-pub fn drift_angle(road: &Road, section: usize, lane_id: i32, s: f64, t: f64, curvature: f64) -> f64 {
+pub(crate) fn drift_angle(road: &Road, section: usize, lane_id: i32, s: f64, t: f64, curvature: f64) -> f64 {
     let slope = lane_center_slope(road, section, lane_id, s);
     if slope == 0.0 {
         return 0.0;

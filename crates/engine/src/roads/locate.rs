@@ -18,7 +18,7 @@ thread_local! {
 }
 
 /// Nearest lane of (x, y); `hint`: the road and s the caller was at.
-pub fn world_to_lane(net: &RoadNetwork, x: f64, y: f64, hint: Option<(usize, f64)>) -> Option<LanePosition> {
+pub(crate) fn world_to_lane(net: &RoadNetwork, x: f64, y: f64, hint: Option<(usize, f64)>) -> Option<LanePosition> {
     if let Some((road, s)) = hint {
         if let Some(p) = net.locate_on_road(road, x, y, s) {
             if p.is_on_road() {
@@ -31,7 +31,7 @@ pub fn world_to_lane(net: &RoadNetwork, x: f64, y: f64, hint: Option<(usize, f64
 
 /// [`world_to_lane`] for points that are asked about again and again (fixed positions): the
 /// hinted road first, then a memo of full searches.
-pub fn world_to_lane_memo(net: &RoadNetwork, x: f64, y: f64, hint: Option<(usize, f64)>) -> Option<LanePosition> {
+pub(crate) fn world_to_lane_memo(net: &RoadNetwork, x: f64, y: f64, hint: Option<(usize, f64)>) -> Option<LanePosition> {
     if let Some((road, s)) = hint {
         if let Some(p) = net.locate_on_road(road, x, y, s) {
             if p.is_on_road() {
@@ -55,16 +55,16 @@ pub fn world_to_lane_memo(net: &RoadNetwork, x: f64, y: f64, hint: Option<(usize
 }
 
 /// One run's entries (`crate::run_memos`).
-pub struct Store(Vec<(Key, Option<LanePosition>)>);
+pub(crate) struct Store(Vec<(Key, Option<LanePosition>)>);
 
 impl Store {
     /// No entries.
-    pub fn new() -> Store {
+    pub(crate) fn new() -> Store {
         Store(Vec::new())
     }
 
     /// Exchange these entries with the thread's.
-    pub fn swap_with_thread(&mut self) {
+    pub(crate) fn swap_with_thread(&mut self) {
         MEMO.with(|m| std::mem::swap(&mut *m.borrow_mut(), &mut self.0));
     }
 }

@@ -1,19 +1,19 @@
 //! The road network as the engine sees it: lane geometry without allocation, a position
 //! attached to a lane, and moving along the lanes through sections, roads and junctions.
 
-pub mod banking;
-pub mod lane_geometry;
-pub mod lane_kind;
-pub mod lane_position;
-pub mod lane_shape;
-pub mod lane_slope;
-pub mod locate;
-pub mod offroad;
-pub mod pose_memo;
-pub mod road_distance;
-pub mod road_follow;
-pub mod road_path;
-pub mod zero_width;
+pub(crate) mod banking;
+pub(crate) mod lane_geometry;
+pub(crate) mod lane_kind;
+pub(crate) mod lane_position;
+pub(crate) mod lane_shape;
+pub(crate) mod lane_slope;
+pub(crate) mod locate;
+pub(crate) mod offroad;
+pub(crate) mod pose_memo;
+pub(crate) mod road_distance;
+pub(crate) mod road_follow;
+pub(crate) mod road_path;
+pub(crate) mod zero_width;
 
-pub use lane_position::LanePos;
-pub use road_follow::{move_along_route, move_along_route_drawing, move_along_s, MoveStatus};
+pub(crate) use lane_position::LanePos;
+pub(crate) use road_follow::{move_along_route, move_along_route_drawing, move_along_s, MoveStatus};

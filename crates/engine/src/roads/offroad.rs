@@ -9,12 +9,12 @@ use super::lane_geometry::lane_borders;
 /// `t` (from the reference line, + left) is further out than the outermost border of a lane that
 /// is not of type `none` on the side `t` lies on. The lane offset is not part of the comparison
 /// (widths are summed from the centre lane), as in esmini.
-pub fn is_off_road(road: &Road, s: f64, t: f64) -> bool {
+pub(crate) fn is_off_road(road: &Road, s: f64, t: f64) -> bool {
     t.abs() > road_width(road, s, t >= 0.0) + 1e-9
 }
 
 /// Distance from the centre lane to the outer border of the outermost non-`none` lane of a side.
-pub fn road_width(road: &Road, s: f64, left: bool) -> f64 {
+pub(crate) fn road_width(road: &Road, s: f64, left: bool) -> f64 {
     let section = road.section_index_at(s);
     let Some(sec) = road.lane_sections.get(section) else { return 0.0 };
     let base = road.lane_offset_at(s);

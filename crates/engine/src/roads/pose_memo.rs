@@ -27,7 +27,7 @@ fn slot(k: &Key) -> usize {
 }
 
 /// `road.reference_pose(s)`, from the memo when it was asked before.
-pub fn reference_pose(road: &Road, s: f64) -> CurvePose {
+pub(crate) fn reference_pose(road: &Road, s: f64) -> CurvePose {
     let k = key(road, s);
     let i = slot(&k);
     if let Some(p) = MEMO.with(|m| m.borrow().get(i).copied().flatten().filter(|e| e.0 == k).map(|e| e.1)) {
@@ -43,19 +43,19 @@ pub fn reference_pose(road: &Road, s: f64) -> CurvePose {
 }
 
 /// One run's entries of both memos (`crate::run_memos`).
-pub struct Store {
+pub(crate) struct Store {
     poses: Vec<Option<(Key, CurvePose)>>,
     lanes: Vec<LaneEntry>,
 }
 
 impl Store {
     /// No entries.
-    pub fn new() -> Store {
+    pub(crate) fn new() -> Store {
         Store { poses: vec![None; SLOTS], lanes: vec![None; SLOTS] }
     }
 
     /// Exchange these entries with the thread's.
-    pub fn swap_with_thread(&mut self) {
+    pub(crate) fn swap_with_thread(&mut self) {
         MEMO.with(|m| std::mem::swap(&mut *m.borrow_mut(), &mut self.poses));
         LANES.with(|m| std::mem::swap(&mut *m.borrow_mut(), &mut self.lanes));
     }
@@ -63,7 +63,7 @@ impl Store {
 
 /// Forget the thread's entries (tests).
 #[cfg(test)]
-pub fn clear() {
+pub(crate) fn clear() {
     Store::new().swap_with_thread();
 }
 
@@ -76,7 +76,7 @@ thread_local! {
 
 /// Borders (inner, outer) of lane `lane_id` at `s` (section looked up), from the memo when it
 /// was asked before: an entity's lane is asked at the s where it was placed when it moves on.
-pub fn lane_borders_at(road: &Road, lane_id: i32, s: f64) -> Option<(f64, f64)> {
+pub(crate) fn lane_borders_at(road: &Road, lane_id: i32, s: f64) -> Option<(f64, f64)> {
     let k: LaneKey = (road as *const Road as usize, lane_id, s.to_bits());
     let h = (k.0 as u64 ^ k.2.rotate_left(17) ^ u64::from(lane_id as u32).rotate_left(29)).wrapping_mul(0x9E37_79B9_7F4A_7C15);
     let i = (h >> 56) as usize % SLOTS;

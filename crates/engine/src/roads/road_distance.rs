@@ -10,14 +10,14 @@ const MAX_SETTLED: usize = 512;
 
 /// Unsigned distance along the roads from (road `a`, s `sa`) to (road `b`, s `sb`); `None` when
 /// no chain of linked roads joins them.
-pub fn road_distance(net: &RoadNetwork, a: usize, sa: f64, b: usize, sb: f64) -> Option<f64> {
+pub(crate) fn road_distance(net: &RoadNetwork, a: usize, sa: f64, b: usize, sb: f64) -> Option<f64> {
     road_distance_within(net, a, sa, b, sb, f64::INFINITY)
 }
 
 /// [`road_distance`] when only distances up to `max` matter: `None` also when the distance
 /// exceeds `max`, found without searching the roads beyond (every road end the search settles
 /// before reaching `b` is no farther than the result).
-pub fn road_distance_within(net: &RoadNetwork, a: usize, sa: f64, b: usize, sb: f64, max: f64) -> Option<f64> {
+pub(crate) fn road_distance_within(net: &RoadNetwork, a: usize, sa: f64, b: usize, sb: f64, max: f64) -> Option<f64> {
     if a == b {
         return Some((sb - sa).abs());
     }

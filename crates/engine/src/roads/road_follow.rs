@@ -18,7 +18,7 @@ use opendrive::{ContactPoint, ElementType, LaneRef, RoadNetwork};
 
 /// What happened during a move.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum MoveStatus {
+pub(crate) enum MoveStatus {
     Ok,
     /// No lane continues the entity's lane: it stopped at the road end.
     EndOfRoad,
@@ -26,7 +26,7 @@ pub enum MoveStatus {
 
 /// Whether `lp` is at the end of its road in the direction it faces, with no road beyond
 /// (esmini's POS_STATUS_END_OF_ROAD after Position::SetInertiaPos).
-pub fn at_dead_end(net: &RoadNetwork, lp: &LanePos) -> bool {
+pub(crate) fn at_dead_end(net: &RoadNetwork, lp: &LanePos) -> bool {
     const SMALL_NUMBER: f64 = 1e-6;
     net.roads.get(lp.road).is_some_and(|r| {
         let end = if lp.dir > 0.0 { lp.s >= r.length - SMALL_NUMBER } else { lp.s <= SMALL_NUMBER };
@@ -41,18 +41,24 @@ const MAX_HOPS: usize = 16;
 const TIE: f64 = 1e-10;
 
 /// Move `pos` by `dist` metres along the direction it faces (negative: backwards).
-pub fn move_along_s(net: &RoadNetwork, pos: &mut LanePos, dist: f64) -> MoveStatus {
+pub(crate) fn move_along_s(net: &RoadNetwork, pos: &mut LanePos, dist: f64) -> MoveStatus {
     move_along_route(net, pos, dist, None)
 }
 
 /// [`move_along_s`], taking at junctions the road an assigned route continues on.
-pub fn move_along_route(net: &RoadNetwork, pos: &mut LanePos, dist: f64, route: Option<&routing::Route>) -> MoveStatus {
+pub(crate) fn move_along_route(net: &RoadNetwork, pos: &mut LanePos, dist: f64, route: Option<&routing::Route>) -> MoveStatus {
     move_along(net, pos, dist, route, None)
 }
 
 /// [`move_along_route`] for an entity's own move by the default controller: a junction tie is
 /// broken by a draw from esmini's generator, as esmini does.
-pub fn move_along_route_drawing(net: &RoadNetwork, pos: &mut LanePos, dist: f64, route: Option<&routing::Route>, random: &mut EsminiRandom) -> MoveStatus {
+pub(crate) fn move_along_route_drawing(
+    net: &RoadNetwork,
+    pos: &mut LanePos,
+    dist: f64,
+    route: Option<&routing::Route>,
+    random: &mut EsminiRandom,
+) -> MoveStatus {
     move_along(net, pos, dist, route, Some(random))
 }
 
@@ -259,7 +265,7 @@ fn follow_section_change(net: &RoadNetwork, pos: &mut LanePos, before: usize, no
 }
 
 /// Angle wrapped to (-π, π].
-pub fn wrap(a: f64) -> f64 {
+pub(crate) fn wrap(a: f64) -> f64 {
     let two_pi = 2.0 * std::f64::consts::PI;
     let mut x = (a + std::f64::consts::PI) % two_pi;
     if x < 0.0 {

@@ -11,7 +11,7 @@ const MAX_SETTLED: usize = 512;
 
 /// The ends of the path from road `a` to another road (see the module doc).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct PathEnds {
+pub(crate) struct PathEnds {
     /// The end of road `a` the path leaves by.
     pub first_exit: ContactPoint,
     /// The end of the last road before the target road that the path leaves by.
@@ -28,7 +28,7 @@ type Reached = (f64, usize, ContactPoint, ContactPoint, ContactPoint, bool);
 /// The path from (road `a`, s `sa`) to road `b` ≠ `a`; `None` when no chain of linked roads
 /// joins them. As esmini's Dijkstra the nearest road end is expanded first, the start of
 /// road `a` before its end on a tie.
-pub fn path_ends(net: &RoadNetwork, a: usize, sa: f64, b: usize) -> Option<PathEnds> {
+pub(crate) fn path_ends(net: &RoadNetwork, a: usize, sa: f64, b: usize) -> Option<PathEnds> {
     if a == b {
         return None;
     }

@@ -18,13 +18,13 @@ fn drivable(kind: LaneType) -> bool {
 
 /// Move `pos` to the centre of the nearest drivable lane of non-zero width when its own lane
 /// has no width at its s. Returns whether it moved.
-pub fn leave_zero_width_lane(net: &RoadNetwork, pos: &mut LanePos) -> bool {
+pub(crate) fn leave_zero_width_lane(net: &RoadNetwork, pos: &mut LanePos) -> bool {
     let Some(road) = net.roads.get(pos.road) else { return false };
     leave_zero_width_lane_in(net, pos, road.section_index_at(pos.s))
 }
 
 /// [`leave_zero_width_lane`] when the caller knows the lane section at `pos.s` already.
-pub fn leave_zero_width_lane_in(net: &RoadNetwork, pos: &mut LanePos, section: usize) -> bool {
+pub(crate) fn leave_zero_width_lane_in(net: &RoadNetwork, pos: &mut LanePos, section: usize) -> bool {
     let Some(road) = net.roads.get(pos.road) else { return false };
     if super::lane_shape::lane_shape(road, section, pos.lane_id).never_zero_width {
         return false;

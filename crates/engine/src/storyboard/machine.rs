@@ -10,7 +10,7 @@ use openscenario::Priority;
 
 impl<'a> Sim<'a> {
     /// Start element `id` (the generic rules; events go through [`Sim::start_event`]).
-    pub fn start_element(&mut self, id: usize) {
+    pub(crate) fn start_element(&mut self, id: usize) {
         let Some(n) = self.nodes.get(id) else { return };
         let (state, has_trigger, kind) = (n.state, n.start_trigger.is_some(), n.kind);
         if state == State::Init && has_trigger {
@@ -35,7 +35,7 @@ impl<'a> Sim<'a> {
     }
 
     /// Start an event, honouring its priority, then start its actions.
-    pub fn start_event(&mut self, id: usize) {
+    pub(crate) fn start_event(&mut self, id: usize) {
         let Some(n) = self.nodes.get(id) else { return };
         let Some(parent) = n.parent else { return };
         // Going from init to standby involves no priority rules.
@@ -85,7 +85,7 @@ impl<'a> Sim<'a> {
     }
 
     /// End element `id`: complete, or standby again while it has executions left.
-    pub fn end_element(&mut self, id: usize) {
+    pub(crate) fn end_element(&mut self, id: usize) {
         let Some(n) = self.nodes.get(id) else { return };
         if n.state == State::Complete {
             return;
@@ -124,7 +124,7 @@ impl<'a> Sim<'a> {
     }
 
     /// Stop element `id` and everything below it.
-    pub fn stop_element(&mut self, id: usize) {
+    pub(crate) fn stop_element(&mut self, id: usize) {
         let children = self.nodes.get(id).map(|n| n.children.clone()).unwrap_or_default();
         for c in children {
             self.stop_element(c);
@@ -172,7 +172,7 @@ impl<'a> Sim<'a> {
     }
 
     /// Evaluate stop and start triggers from `id` down, starting and stopping elements.
-    pub fn eval_triggers(&mut self, id: usize) {
+    pub(crate) fn eval_triggers(&mut self, id: usize) {
         let Some(n) = self.nodes.get(id) else { return };
         if n.state == State::Running {
             if let Some(t) = n.stop_trigger {
@@ -208,7 +208,7 @@ impl<'a> Sim<'a> {
     }
 
     /// Step the running actions below `id`, in document order.
-    pub fn step_tree(&mut self, id: usize) {
+    pub(crate) fn step_tree(&mut self, id: usize) {
         let Some(n) = self.nodes.get(id) else { return };
         if n.state != State::Running {
             return;

@@ -8,7 +8,7 @@ use crate::sim::Sim;
 
 impl Sim<'_> {
     /// Set the actors of maneuver group `mg` (just started) if it selects triggering entities.
-    pub fn select_triggering_actors(&mut self, mg: usize) {
+    pub(crate) fn select_triggering_actors(&mut self, mg: usize) {
         let Some(k) = self.triggering_actors.iter().position(|t| t.group == mg) else { return };
         let act = self.nodes.get(mg).and_then(|n| n.parent).filter(|&a| self.nodes[a].kind == Kind::Act);
         let from_trigger =

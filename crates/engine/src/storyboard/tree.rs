@@ -4,7 +4,7 @@
 use openscenario::Priority;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
-pub enum Kind {
+pub(crate) enum Kind {
     Storyboard,
     Story,
     Act,
@@ -15,7 +15,7 @@ pub enum Kind {
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum State {
+pub(crate) enum State {
     Init,
     Standby,
     Running,
@@ -23,7 +23,7 @@ pub enum State {
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Transition {
+pub(crate) enum Transition {
     InitToStandby,
     Start,
     End,
@@ -32,7 +32,7 @@ pub enum Transition {
 }
 
 impl State {
-    pub fn name(self) -> &'static str {
+    pub(crate) fn name(self) -> &'static str {
         match self {
             State::Init => "init",
             State::Standby => "standby",
@@ -43,7 +43,7 @@ impl State {
 }
 
 impl Transition {
-    pub fn name(self) -> &'static str {
+    pub(crate) fn name(self) -> &'static str {
         match self {
             Transition::InitToStandby => "initToStandby",
             Transition::Start => "start",
@@ -56,7 +56,7 @@ impl Transition {
 
 /// One storyboard element.
 #[derive(Debug, Clone)]
-pub struct Node {
+pub(crate) struct Node {
     pub kind: Kind,
     pub name: String,
     pub parent: Option<usize>,
@@ -75,7 +75,7 @@ pub struct Node {
 }
 
 impl Node {
-    pub fn new(kind: Kind, name: &str, parent: Option<usize>) -> Node {
+    pub(crate) fn new(kind: Kind, name: &str, parent: Option<usize>) -> Node {
         Node {
             kind,
             name: name.to_string(),
@@ -94,7 +94,7 @@ impl Node {
 
 /// A maneuver group whose actors are chosen when it starts.
 #[derive(Debug, Clone)]
-pub struct TriggeringActors {
+pub(crate) struct TriggeringActors {
     /// The maneuver group's node.
     pub group: usize,
     /// The actors its Actors element lists.

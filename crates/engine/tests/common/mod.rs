@@ -7,7 +7,7 @@
 use engine::{Run, Settings};
 use std::path::Path;
 
-pub fn fixtures() -> std::path::PathBuf {
+pub(crate) fn fixtures() -> std::path::PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures")
 }
 
@@ -24,7 +24,7 @@ fn car(name: &str) -> String {
 }
 
 /// A scenario: `init` inside <Actions>, `stories` after </Init>, `stop` the storyboard StopTrigger content.
-pub fn xosc(init: &str, stories: &str, stop: &str) -> String {
+pub(crate) fn xosc(init: &str, stories: &str, stop: &str) -> String {
     format!(
         r#"<?xml version="1.0" encoding="UTF-8"?>
 <OpenSCENARIO>
@@ -44,47 +44,47 @@ pub fn xosc(init: &str, stories: &str, stop: &str) -> String {
     )
 }
 
-pub fn lane_pos(s: f64, lane: i32) -> String {
+pub(crate) fn lane_pos(s: f64, lane: i32) -> String {
     format!(r#"<Position><LanePosition roadId="1" laneId="{lane}" offset="0" s="{s}"/></Position>"#)
 }
 
-pub fn teleport(entity: &str, s: f64, lane: i32) -> String {
+pub(crate) fn teleport(entity: &str, s: f64, lane: i32) -> String {
     format!(r#"<Private entityRef="{entity}"><PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction></Private>"#, lane_pos(s, lane))
 }
 
-pub fn speed_action(shape: &str, dim: &str, value: f64, target: f64) -> String {
+pub(crate) fn speed_action(shape: &str, dim: &str, value: f64, target: f64) -> String {
     format!(
         r#"<PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="{shape}" dynamicsDimension="{dim}" value="{value}"/><SpeedActionTarget><AbsoluteTargetSpeed value="{target}"/></SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction>"#
     )
 }
 
-pub fn init_speed(entity: &str, shape: &str, dim: &str, value: f64, target: f64) -> String {
+pub(crate) fn init_speed(entity: &str, shape: &str, dim: &str, value: f64, target: f64) -> String {
     format!(r#"<Private entityRef="{entity}">{}</Private>"#, speed_action(shape, dim, value, target))
 }
 
-pub fn sim_time(value: f64, rule: &str, edge: &str, delay: f64) -> String {
+pub(crate) fn sim_time(value: f64, rule: &str, edge: &str, delay: f64) -> String {
     format!(
         r#"<Condition name="t" delay="{delay}" conditionEdge="{edge}"><ByValueCondition><SimulationTimeCondition value="{value}" rule="{rule}"/></ByValueCondition></Condition>"#
     )
 }
 
-pub fn trigger(conditions: &str) -> String {
+pub(crate) fn trigger(conditions: &str) -> String {
     format!("<StartTrigger><ConditionGroup>{conditions}</ConditionGroup></StartTrigger>")
 }
 
 /// A story with one act (started at once) whose maneuver group has `actor` and the given events.
-pub fn story(actor: &str, events: &str) -> String {
+pub(crate) fn story(actor: &str, events: &str) -> String {
     format!(
         r#"<Story name="S"><Act name="A"><ManeuverGroup maximumExecutionCount="1" name="G"><Actors selectTriggeringEntities="false"><EntityRef entityRef="{actor}"/></Actors><Maneuver name="M">{events}</Maneuver></ManeuverGroup>{}</Act></Story>"#,
         trigger(&sim_time(0.0, "greaterOrEqual", "none", 0.0))
     )
 }
 
-pub fn event(name: &str, priority: &str, action: &str, start: &str) -> String {
+pub(crate) fn event(name: &str, priority: &str, action: &str, start: &str) -> String {
     format!(r#"<Event name="{name}" priority="{priority}"><Action name="{name}Action">{action}</Action>{start}</Event>"#)
 }
 
-pub fn run_with(text: &str, settings: &Settings) -> Run {
+pub(crate) fn run_with(text: &str, settings: &Settings) -> Run {
     let path = fixtures().join("test.xosc");
     let loaded = openscenario::load_str(&path, text, &Default::default()).expect("test scenario loads");
     let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
@@ -92,35 +92,35 @@ pub fn run_with(text: &str, settings: &Settings) -> Run {
     engine::simulate(&scenario, Some(&net), settings).expect("simulate")
 }
 
-pub fn run(text: &str) -> Run {
+pub(crate) fn run(text: &str) -> Run {
     run_with(text, &Settings { step: 0.01, max_time: 20.0 })
 }
 
 /// Sample of `entity` at time `t` (a run with a ghost's head start begins before 0).
-pub fn at(run: &Run, entity: &str, t: f64) -> engine::Sample {
+pub(crate) fn at(run: &Run, entity: &str, t: f64) -> engine::Sample {
     let e = run.trace.entities.iter().find(|e| e.name == entity).expect("entity in trace");
     let k = ((t - run.trace.start) / run.trace.step).round() as usize;
     e.samples.get(k).copied().flatten().expect("sample exists")
 }
 
 /// Time of the first transition `transition` of element `element`.
-pub fn event_time(run: &Run, element: &str, transition: &str) -> Option<f64> {
+pub(crate) fn event_time(run: &Run, element: &str, transition: &str) -> Option<f64> {
     run.trace.events.iter().find(|e| e.element == element && e.transition == transition).map(|e| e.time)
 }
 
-pub fn close(a: f64, b: f64, tol: f64) -> bool {
+pub(crate) fn close(a: f64, b: f64, tol: f64) -> bool {
     (a - b).abs() <= tol
 }
 
 /// Init of an Ego at s = 50 on lane −1 driving 10 m/s whose controllers are activated (the
 /// FollowGhost tests), followed by `others`.
-pub fn ghost_ego_init(others: &str) -> String {
+pub(crate) fn ghost_ego_init(others: &str) -> String {
     let activate = r#"<Private entityRef="Ego"><PrivateAction><ActivateControllerAction longitudinal="true" lateral="true"/></PrivateAction></Private>"#;
     format!("{}{}{others}{activate}", teleport("Ego", 50.0, -1), init_speed("Ego", "step", "time", 0.0, 10.0))
 }
 
 /// `text` with a FollowGhostController of head start `headstart` s on its first entity (Ego).
-pub fn with_follow_ghost(text: &str, headstart: f64) -> String {
+pub(crate) fn with_follow_ghost(text: &str, headstart: f64) -> String {
     let c = format!(
         r#"<ObjectController><Controller name="driver"><Properties><Property name="esminiController" value="FollowGhostController"/><Property name="headstartTime" value="{headstart}"/></Properties></Controller></ObjectController></ScenarioObject>"#
     );

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 
 /// A fresh folder `target/export-tests/<name>`.
-pub fn fresh_dir(name: &str) -> PathBuf {
+pub(crate) fn fresh_dir(name: &str) -> PathBuf {
     let d = testkit::workspace_root().join("target/export-tests").join(name);
     let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).expect("create the test folder");
@@ -18,7 +18,7 @@ static CORPUS: OnceLock<Vec<PathBuf>> = OnceLock::new();
 /// Every CommonRoad file of the corpus conversions: `../shared/corpus` converted (2020a) by the
 /// `convert` crate into `target/export-tests/corpus-commonroad`, once per test run. Empty when
 /// the shared folder is absent (testkit prints the notice; under CI it fails).
-pub fn corpus_commonroad() -> &'static [PathBuf] {
+pub(crate) fn corpus_commonroad() -> &'static [PathBuf] {
     CORPUS.get_or_init(|| {
         let Some(shared) = testkit::shared_dir() else { return Vec::new() };
         let out = fresh_dir("corpus-commonroad");
@@ -37,7 +37,7 @@ pub fn corpus_commonroad() -> &'static [PathBuf] {
 }
 
 /// Every scenario of `../shared/commonroad-scenarios` (empty when absent).
-pub fn commonroad_scenarios() -> Vec<PathBuf> {
+pub(crate) fn commonroad_scenarios() -> Vec<PathBuf> {
     testkit::shared_dir().map(|s| testkit::files_with_ext(&s.join("commonroad-scenarios"), "xml")).unwrap_or_default()
 }
 
@@ -45,7 +45,7 @@ pub fn commonroad_scenarios() -> Vec<PathBuf> {
 /// all of them with `OSC2CR_EXPORT_FULL=1`, else (the default, and CI's) the first two
 /// variations of each parameter distribution (`NAME_1`, `NAME_2`: the other variations differ
 /// only in parameter values), which halves the set. A notice says which.
-pub fn acceptance_scenarios() -> Vec<PathBuf> {
+pub(crate) fn acceptance_scenarios() -> Vec<PathBuf> {
     let mut v = commonroad_scenarios();
     let corpus = corpus_commonroad();
     let full = std::env::var_os("OSC2CR_EXPORT_FULL").is_some_and(|x| x == "1");
@@ -69,7 +69,7 @@ pub fn acceptance_scenarios() -> Vec<PathBuf> {
 
 /// Exports `inputs` as one batch into `out` (maps shared, names made unique); returns each
 /// input with its `.xosc`, or why it was not exported.
-pub fn export_batch(inputs: &[PathBuf], out: &Path, options: &export::ExportOptions) -> Vec<(PathBuf, Result<PathBuf, String>)> {
+pub(crate) fn export_batch(inputs: &[PathBuf], out: &Path, options: &export::ExportOptions) -> Vec<(PathBuf, Result<PathBuf, String>)> {
     let batch = export::BatchOptions { out_dir: out.to_path_buf(), jobs: 2, export: options.clone() };
     let totals = export::run_batch(inputs, &batch, &mut |_| {}).expect("the batch runs");
     totals
@@ -86,7 +86,7 @@ pub fn export_batch(inputs: &[PathBuf], out: &Path, options: &export::ExportOpti
 }
 
 /// The scenario's path shown in messages: relative to the shared folder or `target/`.
-pub fn short(p: &Path) -> String {
+pub(crate) fn short(p: &Path) -> String {
     let s = p.display().to_string();
     match s.find("commonroad-scenarios/").or_else(|| s.find("corpus-commonroad/")) {
         Some(i) => s[i..].to_string(),
@@ -95,7 +95,7 @@ pub fn short(p: &Path) -> String {
 }
 
 /// esmini 3.6.0 of the shared tools, if it runs here.
-pub fn esmini() -> Option<PathBuf> {
+pub(crate) fn esmini() -> Option<PathBuf> {
     let shared = testkit::shared_dir()?;
     let bin = shared.join("tools/esmini/bin/esmini-3.6.0");
     let runs = std::process::Command::new(&bin).arg("--version").output().is_ok_and(|o| o.status.success() || !o.stdout.is_empty());

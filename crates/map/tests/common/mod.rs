@@ -4,29 +4,29 @@
 use std::path::{Path, PathBuf};
 
 /// The workspace's example road (shipped, always present).
-pub fn example(name: &str) -> PathBuf {
+pub(crate) fn example(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples").join(name)
 }
 
 /// A corpus map by its path under `shared/corpus`, or `None` (test returns early) when the
 /// shared directory is missing and CI is not set.
-pub fn corpus(rel: &str) -> Option<PathBuf> {
+pub(crate) fn corpus(rel: &str) -> Option<PathBuf> {
     testkit::shared_dir().map(|s| s.join("corpus").join(rel))
 }
 
-pub fn load(path: &Path) -> opendrive::RoadNetwork {
+pub(crate) fn load(path: &Path) -> opendrive::RoadNetwork {
     match opendrive::load(path) {
         Ok(l) => l.network,
         Err(e) => panic!("{e}"),
     }
 }
 
-pub fn convert(net: &opendrive::RoadNetwork) -> map::MapResult {
+pub(crate) fn convert(net: &opendrive::RoadNetwork) -> map::MapResult {
     map::convert(net, &map::MapOptions::default())
 }
 
 /// Distance from (x, y) to a polyline.
-pub fn dist_to_polyline(x: f64, y: f64, pts: &[commonroad::Point]) -> f64 {
+pub(crate) fn dist_to_polyline(x: f64, y: f64, pts: &[commonroad::Point]) -> f64 {
     let mut best = f64::INFINITY;
     for w in pts.windows(2) {
         let (a, b) = (w[0], w[1]);

@@ -5,7 +5,7 @@ use crate::error::Error;
 use crate::model::header::{Header, HeaderOffset};
 use roxmltree::Node;
 
-pub fn parse_header(ctx: &mut Ctx, node: Node) -> Result<Header, Error> {
+pub(super) fn parse_header(ctx: &mut Ctx, node: Node) -> Result<Header, Error> {
     let mut h = Header {
         rev_major: ctx.opt_i32(node, "revMajor")?.unwrap_or(1).max(0) as u32,
         rev_minor: ctx.opt_i32(node, "revMinor")?.unwrap_or(4).max(0) as u32,

@@ -9,7 +9,7 @@ use roxmltree::Node;
 /// Hostile-input cap on connections per junction.
 const MAX_CONNECTIONS: usize = 1_000_000;
 
-pub fn parse_junction(ctx: &mut Ctx, node: Node) -> Result<Junction, Error> {
+pub(super) fn parse_junction(ctx: &mut Ctx, node: Node) -> Result<Junction, Error> {
     let kind = match node.attribute("type").map(str::trim) {
         None | Some("default") => JunctionType::Default,
         Some("direct") => JunctionType::Direct,
@@ -61,7 +61,7 @@ pub fn parse_junction(ctx: &mut Ctx, node: Node) -> Result<Junction, Error> {
     Ok(j)
 }
 
-pub fn parse_controller(ctx: &mut Ctx, node: Node) -> Result<Controller, Error> {
+pub(super) fn parse_controller(ctx: &mut Ctx, node: Node) -> Result<Controller, Error> {
     let mut controls = Vec::new();
     for c in children_named(node, "control") {
         controls.push(Control { signal_id: ctx.req_str(c, "signalId")?.to_string(), kind: ctx.opt_string(c, "type") });

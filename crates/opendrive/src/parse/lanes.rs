@@ -11,7 +11,7 @@ const MAX_SECTIONS: usize = 1_000_000;
 const MAX_LANES_PER_SIDE: usize = 1_000;
 
 /// Parse a cubic record whose start attribute is `s_attr` (`s` or `sOffset`).
-pub fn cubic(ctx: &Ctx, node: Node, s_attr: &str) -> Result<CubicRecord, Error> {
+pub(super) fn cubic(ctx: &Ctx, node: Node, s_attr: &str) -> Result<CubicRecord, Error> {
     Ok(CubicRecord {
         s: ctx.req_f64(node, s_attr)?,
         a: ctx.req_f64(node, "a")?,
@@ -21,12 +21,12 @@ pub fn cubic(ctx: &Ctx, node: Node, s_attr: &str) -> Result<CubicRecord, Error> 
     })
 }
 
-pub fn sort_records(v: &mut [CubicRecord]) {
+pub(super) fn sort_records(v: &mut [CubicRecord]) {
     v.sort_by(|a, b| a.s.total_cmp(&b.s));
 }
 
 /// Parse `<lanes>` into (lane offsets, lane sections).
-pub fn parse_lanes(ctx: &mut Ctx, node: Node) -> Result<(Vec<CubicRecord>, Vec<LaneSection>), Error> {
+pub(super) fn parse_lanes(ctx: &mut Ctx, node: Node) -> Result<(Vec<CubicRecord>, Vec<LaneSection>), Error> {
     let mut offsets = Vec::new();
     let mut sections = Vec::new();
     for child in elements(node) {
@@ -101,7 +101,7 @@ fn speed_mps(max_raw: &str, unit: Option<&str>) -> Option<f64> {
 }
 
 /// Speed limit in m/s from `max` and `unit` (m/s when no unit); None for "no limit".
-pub fn parse_speed_value(max_raw: &str, unit: Option<&str>) -> Option<f64> {
+pub(super) fn parse_speed_value(max_raw: &str, unit: Option<&str>) -> Option<f64> {
     speed_mps(max_raw, unit)
 }
 
@@ -183,5 +183,10 @@ fn parse_road_mark(ctx: &mut Ctx, node: Node) -> Result<RoadMark, Error> {
         width: ctx.opt_f64(node, "width")?,
         height: ctx.opt_f64(node, "height")?,
         lane_change,
+        lines: node
+            .children()
+            .filter(|c| c.has_tag_name("type") || c.has_tag_name("explicit"))
+            .map(|c| c.children().filter(|l| l.has_tag_name("line")).count())
+            .sum(),
     })
 }

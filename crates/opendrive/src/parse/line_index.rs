@@ -6,21 +6,21 @@
 use crate::error::SourcePos;
 
 /// Start offsets of every line of one text.
-pub struct LineIndex<'t> {
+pub(super) struct LineIndex<'t> {
     text: &'t str,
     /// Byte offset of the first character of each line; `starts[0] == 0`.
     starts: Vec<usize>,
 }
 
 impl<'t> LineIndex<'t> {
-    pub fn new(text: &'t str) -> LineIndex<'t> {
+    pub(super) fn new(text: &'t str) -> LineIndex<'t> {
         let mut starts = vec![0];
         starts.extend(text.bytes().enumerate().filter(|&(_, b)| b == b'\n').map(|(i, _)| i + 1));
         LineIndex { text, starts }
     }
 
     /// 1-based line and column (in characters) of byte offset `byte` (clamped to the text).
-    pub fn pos(&self, byte: usize) -> SourcePos {
+    pub(super) fn pos(&self, byte: usize) -> SourcePos {
         let byte = byte.min(self.text.len());
         let line = self.starts.partition_point(|&s| s <= byte).max(1);
         let start = self.starts.get(line - 1).copied().unwrap_or(0);

@@ -19,12 +19,12 @@ use std::path::Path;
 use xml::{elements, irrelevant, Ctx};
 
 /// Hostile-input caps: XML nodes in a document, roads, junctions.
-pub const MAX_XML_NODES: u32 = 20_000_000;
-pub const MAX_ROADS: usize = 1_000_000;
-pub const MAX_JUNCTIONS: usize = 1_000_000;
+pub(crate) const MAX_XML_NODES: u32 = 20_000_000;
+pub(crate) const MAX_ROADS: usize = 1_000_000;
+pub(crate) const MAX_JUNCTIONS: usize = 1_000_000;
 
 /// Everything read from the file, before indexing.
-pub struct Parsed {
+pub(crate) struct Parsed {
     pub header: Header,
     pub roads: Vec<Road>,
     pub junctions: Vec<Junction>,
@@ -50,7 +50,7 @@ fn xml_error_position(e: &roxmltree::Error, text: &str) -> (u32, u32) {
 }
 
 /// Parse OpenDRIVE text; `file` is used in messages only.
-pub fn parse_document(text: &str, file: &Path) -> Result<Parsed, Error> {
+pub(crate) fn parse_document(text: &str, file: &Path) -> Result<Parsed, Error> {
     let opts = roxmltree::ParsingOptions { allow_dtd: false, nodes_limit: MAX_XML_NODES, ..Default::default() };
     let doc = roxmltree::Document::parse_with_options(text, opts).map_err(|e| {
         let (line, col) = xml_error_position(&e, text);

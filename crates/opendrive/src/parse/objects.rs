@@ -8,7 +8,7 @@ use roxmltree::Node;
 /// Hostile-input cap on objects per road.
 const MAX_OBJECTS: usize = 1_000_000;
 
-pub fn parse_objects(ctx: &mut Ctx, node: Node, out: &mut Vec<Object>) -> Result<(), Error> {
+pub(super) fn parse_objects(ctx: &mut Ctx, node: Node, out: &mut Vec<Object>) -> Result<(), Error> {
     for child in elements(node) {
         match child.tag_name().name() {
             "object" => {

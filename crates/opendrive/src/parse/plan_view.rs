@@ -8,7 +8,7 @@ use roxmltree::Node;
 /// Hostile-input cap on geometries per road.
 const MAX_GEOMETRIES: usize = 1_000_000;
 
-pub fn parse_plan_view(ctx: &mut Ctx, node: Node) -> Result<Vec<Geometry>, Error> {
+pub(super) fn parse_plan_view(ctx: &mut Ctx, node: Node) -> Result<Vec<Geometry>, Error> {
     let mut out = Vec::new();
     for g in elements(node) {
         match g.tag_name().name() {

@@ -9,7 +9,7 @@ use crate::error::Error;
 use crate::model::road::{ContactPoint, ElementDir, ElementType, Road, RoadKind, RoadLink, RoadTypeRecord, SpeedLimit, TrafficRule};
 use roxmltree::Node;
 
-pub fn contact_point(ctx: &Ctx, node: Node, raw: &str) -> Result<ContactPoint, Error> {
+pub(super) fn contact_point(ctx: &Ctx, node: Node, raw: &str) -> Result<ContactPoint, Error> {
     match raw.trim() {
         "start" => Ok(ContactPoint::Start),
         "end" => Ok(ContactPoint::End),
@@ -44,7 +44,7 @@ fn parse_link(ctx: &mut Ctx, node: Node) -> Result<RoadLink, Error> {
     })
 }
 
-pub fn parse_road(ctx: &mut Ctx, node: Node) -> Result<Road, Error> {
+pub(super) fn parse_road(ctx: &mut Ctx, node: Node) -> Result<Road, Error> {
     let rule = match node.attribute("rule").map(|r| r.trim().to_ascii_uppercase()) {
         None => TrafficRule::RightHand,
         Some(r) if r == "RHT" => TrafficRule::RightHand,

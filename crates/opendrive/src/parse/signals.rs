@@ -12,7 +12,7 @@ fn validities(ctx: &Ctx, node: Node) -> Result<Vec<LaneValidity>, Error> {
     children_named(node, "validity").map(|v| Ok(LaneValidity { from_lane: ctx.req_i32(v, "fromLane")?, to_lane: ctx.req_i32(v, "toLane")? })).collect()
 }
 
-pub fn parse_signals(ctx: &mut Ctx, node: Node, signals: &mut Vec<Signal>, refs: &mut Vec<SignalReference>) -> Result<(), Error> {
+pub(super) fn parse_signals(ctx: &mut Ctx, node: Node, signals: &mut Vec<Signal>, refs: &mut Vec<SignalReference>) -> Result<(), Error> {
     for child in elements(node) {
         match child.tag_name().name() {
             "signal" => {

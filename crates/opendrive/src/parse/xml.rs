@@ -7,40 +7,40 @@ use std::path::Path;
 
 /// Parse state: the file name for messages, the document's line index for positions,
 /// warnings so far.
-pub struct Ctx<'a, 'input> {
+pub(super) struct Ctx<'a, 'input> {
     pub file: &'a Path,
     pub lines: LineIndex<'input>,
     pub warnings: Vec<Warning>,
 }
 
 impl<'a, 'input> Ctx<'a, 'input> {
-    pub fn new(file: &'a Path, doc: &Document<'input>) -> Self {
+    pub(super) fn new(file: &'a Path, doc: &Document<'input>) -> Self {
         Ctx { file, lines: LineIndex::new(doc.input_text()), warnings: Vec::new() }
     }
-    pub fn pos_of(&self, byte: usize) -> SourcePos {
+    pub(super) fn pos_of(&self, byte: usize) -> SourcePos {
         self.lines.pos(byte)
     }
-    pub fn pos(&self, node: Node) -> SourcePos {
+    pub(super) fn pos(&self, node: Node) -> SourcePos {
         self.pos_of(node.range().start)
     }
-    pub fn error_at(&self, byte: usize, message: impl Into<String>) -> Error {
+    pub(super) fn error_at(&self, byte: usize, message: impl Into<String>) -> Error {
         let p = self.pos_of(byte);
         Error::Invalid { file: self.file.to_path_buf(), line: p.line, col: p.col, message: message.into() }
     }
-    pub fn error(&self, node: Node, message: impl Into<String>) -> Error {
+    pub(super) fn error(&self, node: Node, message: impl Into<String>) -> Error {
         self.error_at(node.range().start, message)
     }
-    pub fn warn(&mut self, node: Node, message: impl Into<String>) {
+    pub(super) fn warn(&mut self, node: Node, message: impl Into<String>) {
         let p = self.pos(node);
         self.warnings.push(Warning { file: self.file.to_path_buf(), line: p.line, col: p.col, message: message.into() });
     }
 
     /// A required attribute as text.
-    pub fn req_str<'n>(&self, node: Node<'n, 'input>, name: &str) -> Result<&'n str, Error> {
+    pub(super) fn req_str<'n>(&self, node: Node<'n, 'input>, name: &str) -> Result<&'n str, Error> {
         node.attribute(name).ok_or_else(|| self.error(node, format!("<{}> is missing the required attribute `{name}`", node.tag_name().name())))
     }
     /// An optional attribute as an owned string.
-    pub fn opt_string(&self, node: Node, name: &str) -> Option<String> {
+    pub(super) fn opt_string(&self, node: Node, name: &str) -> Option<String> {
         node.attribute(name).map(str::to_string)
     }
 
@@ -56,19 +56,19 @@ impl<'a, 'input> Ctx<'a, 'input> {
         Ok(value)
     }
     /// A required finite number.
-    pub fn req_f64(&self, node: Node, name: &str) -> Result<f64, Error> {
+    pub(super) fn req_f64(&self, node: Node, name: &str) -> Result<f64, Error> {
         let raw = self.req_str(node, name)?;
         self.number(node, name, raw)
     }
     /// An optional finite number (empty text counts as absent).
-    pub fn opt_f64(&self, node: Node, name: &str) -> Result<Option<f64>, Error> {
+    pub(super) fn opt_f64(&self, node: Node, name: &str) -> Result<Option<f64>, Error> {
         match node.attribute(name) {
             Some(raw) if !raw.trim().is_empty() => self.number(node, name, raw).map(Some),
             _ => Ok(None),
         }
     }
     /// A finite number with a default when absent.
-    pub fn f64_or(&self, node: Node, name: &str, default: f64) -> Result<f64, Error> {
+    pub(super) fn f64_or(&self, node: Node, name: &str, default: f64) -> Result<f64, Error> {
         Ok(self.opt_f64(node, name)?.unwrap_or(default))
     }
 
@@ -82,19 +82,19 @@ impl<'a, 'input> Ctx<'a, 'input> {
             .ok_or_else(|| self.error_at(at, format!("attribute `{name}` of <{}>: expected an integer, found `{raw}`", node.tag_name().name())))
     }
     /// A required integer.
-    pub fn req_i32(&self, node: Node, name: &str) -> Result<i32, Error> {
+    pub(super) fn req_i32(&self, node: Node, name: &str) -> Result<i32, Error> {
         let raw = self.req_str(node, name)?;
         self.integer(node, name, raw)
     }
     /// An optional integer.
-    pub fn opt_i32(&self, node: Node, name: &str) -> Result<Option<i32>, Error> {
+    pub(super) fn opt_i32(&self, node: Node, name: &str) -> Result<Option<i32>, Error> {
         match node.attribute(name) {
             Some(raw) if !raw.trim().is_empty() => self.integer(node, name, raw).map(Some),
             _ => Ok(None),
         }
     }
     /// An optional boolean (`true`/`false`/`1`/`0`); anything else warns and counts as absent.
-    pub fn opt_bool(&mut self, node: Node, name: &str) -> Option<bool> {
+    pub(super) fn opt_bool(&mut self, node: Node, name: &str) -> Option<bool> {
         let raw = node.attribute(name)?;
         match raw.trim().to_ascii_lowercase().as_str() {
             "true" | "1" | "yes" => Some(true),
@@ -107,7 +107,7 @@ impl<'a, 'input> Ctx<'a, 'input> {
     }
 
     /// Check a count against a hostile-input cap.
-    pub fn cap(&self, node: Node, what: &str, count: usize, max: usize) -> Result<(), Error> {
+    pub(super) fn cap(&self, node: Node, what: &str, count: usize, max: usize) -> Result<(), Error> {
         if count > max {
             Err(self.error(node, format!("too many {what}: more than {max}")))
         } else {
@@ -117,16 +117,16 @@ impl<'a, 'input> Ctx<'a, 'input> {
 }
 
 /// Element children of `node` (text and comments skipped).
-pub fn elements<'a, 'input>(node: Node<'a, 'input>) -> impl Iterator<Item = Node<'a, 'input>> {
+pub(super) fn elements<'a, 'input>(node: Node<'a, 'input>) -> impl Iterator<Item = Node<'a, 'input>> {
     node.children().filter(|n| n.is_element())
 }
 
 /// Element children named `name`.
-pub fn children_named<'a, 'input: 'a>(node: Node<'a, 'input>, name: &'a str) -> impl Iterator<Item = Node<'a, 'input>> + 'a {
+pub(super) fn children_named<'a, 'input: 'a>(node: Node<'a, 'input>, name: &'a str) -> impl Iterator<Item = Node<'a, 'input>> + 'a {
     node.children().filter(move |n| n.is_element() && n.tag_name().name() == name)
 }
 
 /// Elements we skip without a word: they carry nothing a converter or the engine uses.
-pub fn irrelevant(name: &str) -> bool {
+pub(super) fn irrelevant(name: &str) -> bool {
     matches!(name, "userData" | "include" | "dataQuality" | "surface" | "access" | "material" | "visibility")
 }

@@ -3,9 +3,9 @@
 
 use std::path::PathBuf;
 
-pub use testkit::shared_dir;
+pub(crate) use testkit::shared_dir;
 
 /// All corpus .xodr files, sorted.
-pub fn corpus_xodr() -> Option<Vec<PathBuf>> {
+pub(crate) fn corpus_xodr() -> Option<Vec<PathBuf>> {
     Some(testkit::files_with_ext(&shared_dir()?.join("corpus"), "xodr"))
 }

@@ -165,6 +165,8 @@ fn single(warnings: &mut Vec<Warning>, problems: &mut Vec<Warning>, cx: &Cx, f: 
 /// Why a stochastic distribution cannot be sampled as written, if it cannot: a negative
 /// variance, an inverted or empty range, weights that are negative or (for a
 /// ProbabilityDistributionSet) do not sum to a positive number.
+// `!(v >= 0.0)` is meant: it holds for NaN too, which cannot be sampled either.
+#[allow(clippy::neg_cmp_op_on_partial_ord)]
 fn unsampleable(d: &Stochastic) -> Option<String> {
     let inverted = |r: &Option<(f64, f64)>| match r {
         Some((lo, hi)) if hi < lo => Some(format!("its Range is inverted (upperLimit {hi} < lowerLimit {lo})")),

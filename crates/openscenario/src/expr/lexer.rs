@@ -25,7 +25,7 @@ pub(crate) enum Tok {
 }
 
 impl Tok {
-    pub fn describe(&self) -> String {
+    pub(super) fn describe(&self) -> String {
         match self {
             Tok::Num(v) => format!("number {v}"),
             Tok::Ident(s) => format!("'{s}'"),

@@ -134,7 +134,14 @@ pub(crate) fn read_private_action(r: &mut Reader, cx: &Cx, wrapper: &Elem) -> Re
                                 Some(x) => Some(x),
                                 None => match cx.opt_f64(v, "number")? {
                                     Some(x) => Some(x),
-                                    None => v.first_child().map(|g| cx.opt_f64(g, "value")).transpose()?.flatten(),
+                                    // 1.2: BrakePercent/BrakeForce `value`, ManualGear `number`,
+                                    // AutomaticGear `gear` (a letter: no number to keep)
+                                    None => match v.first_child() {
+                                        Some(g) if g.name == "ManualGear" => cx.opt_f64(g, "number")?,
+                                        Some(g) if g.name == "AutomaticGear" => cx.opt_text(g, "gear")?.and(None),
+                                        Some(g) => cx.opt_f64(g, "value")?,
+                                        None => None,
+                                    },
                                 },
                             };
                             Ok(OverrideValue { kind: v.name.clone(), active: cx.bool_or(v, "active", false)?, value, max_rate: cx.opt_f64(v, "maxRate")? })

@@ -32,22 +32,22 @@ pub(crate) struct Reader {
 }
 
 impl Reader {
-    pub fn new() -> Self {
+    pub(crate) fn new() -> Self {
         Reader { warnings: Vec::new(), problems: Vec::new(), catalogs: CatalogStore::default(), catalog_depth: 0, go_on_without_catalogs: false }
     }
 
-    pub fn warn(&mut self, location: Location, message: impl Into<String>) {
+    pub(crate) fn warn(&mut self, location: Location, message: impl Into<String>) {
         self.warnings.push(Warning { location, message: message.into() });
     }
 
     /// Records an element the model does not represent yet.
-    pub fn unsupported(&mut self, cx: &Cx, e: &Elem, parent: &str) {
+    pub(crate) fn unsupported(&mut self, cx: &Cx, e: &Elem, parent: &str) {
         e.announce();
         self.warn(cx.loc(e.pos), format!("<{}> in {parent} is not supported yet; it is kept as a placeholder", e.name));
     }
 
     /// Declarations of an entry (Vehicle, Maneuver, ...) resolved with `assignments`.
-    pub fn declarations(&mut self, cx: &Cx, e: &Elem, assignments: &[(String, String)]) -> Result<Vec<ParameterDeclaration>, Error> {
+    pub(crate) fn declarations(&mut self, cx: &Cx, e: &Elem, assignments: &[(String, String)]) -> Result<Vec<ParameterDeclaration>, Error> {
         let decls = read_declarations(e.child("ParameterDeclarations"), cx.scope, assignments, &cx.file, &mut self.warnings)?;
         for (name, _) in assignments {
             if !decls.iter().any(|d| &d.name == name) {
@@ -60,7 +60,7 @@ impl Reader {
     /// Resolves a CatalogReference element and reads the entry with `read`, which receives the
     /// catalog's context (its file, a scope whose parent is the referring scope), the entry
     /// element and the resolved parameter assignments.
-    pub fn catalog_entry<T>(
+    pub(crate) fn catalog_entry<T>(
         &mut self,
         cx: &Cx,
         reference: &Elem,
@@ -108,7 +108,7 @@ impl Reader {
 impl Reader {
     /// [`Reader::catalog_entry`], or — when the catalog or the entry cannot be found and the load
     /// goes on without catalogs — `placeholder(entry name)`, the gap being reported.
-    pub fn catalog_entry_or<T>(
+    pub(crate) fn catalog_entry_or<T>(
         &mut self,
         cx: &Cx,
         reference: &Elem,

@@ -75,7 +75,7 @@ fn validate_doc(doc: &xml::Doc, injected: &[(String, String)]) -> Vec<Finding> {
         w.declare_variables(vars);
     }
     w.element(root, schema, &decl.1.type_name.clone());
-    w.findings.sort_by(|a, b| (a.location.line, a.location.col).cmp(&(b.location.line, b.location.col)));
+    w.findings.sort_by_key(|f| (f.location.line, f.location.col));
     w.findings
 }
 

@@ -31,7 +31,7 @@ pub(super) fn range_rules() -> &'static [RangeRule] {
 }
 
 impl RangeRule {
-    pub fn holds(&self, v: f64) -> bool {
+    pub(super) fn holds(&self, v: f64) -> bool {
         match self.op {
             ">=" => v >= self.bound,
             "<=" => v <= self.bound,

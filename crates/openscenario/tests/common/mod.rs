@@ -4,7 +4,7 @@
 use std::path::{Path, PathBuf};
 
 /// `../shared` (or $OSC2CR_SHARED). None (with a notice) when absent, unless CI is set.
-pub fn shared() -> Option<PathBuf> {
+pub(crate) fn shared() -> Option<PathBuf> {
     let dir = std::env::var_os("OSC2CR_SHARED").map(PathBuf::from).unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared"));
     if dir.join("corpus").is_dir() {
         return Some(dir);
@@ -17,17 +17,17 @@ pub fn shared() -> Option<PathBuf> {
 }
 
 /// Every `.xosc` under `dir`, sorted.
-pub fn xosc_files(dir: &Path) -> Vec<PathBuf> {
+pub(crate) fn xosc_files(dir: &Path) -> Vec<PathBuf> {
     testkit::files_with_ext(dir, "xosc")
 }
 
 /// Path relative to the corpus root, with '/' separators.
-pub fn rel(corpus: &Path, p: &Path) -> String {
+pub(crate) fn rel(corpus: &Path, p: &Path) -> String {
     p.strip_prefix(corpus).unwrap_or(p).to_string_lossy().replace('\\', "/")
 }
 
 /// A fresh directory under the system temp dir for one test.
-pub fn temp_dir(name: &str) -> PathBuf {
+pub(crate) fn temp_dir(name: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("osc2cr-openscenario-{}-{name}", std::process::id()));
     let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).expect("create temp dir");
@@ -35,7 +35,7 @@ pub fn temp_dir(name: &str) -> PathBuf {
 }
 
 /// 1-based (line, column) of the first occurrence of `needle` in `text`.
-pub fn pos_of(text: &str, needle: &str) -> (u32, u32) {
+pub(crate) fn pos_of(text: &str, needle: &str) -> (u32, u32) {
     let at = text.find(needle).unwrap_or_else(|| panic!("'{needle}' not in text"));
     let before = &text[..at];
     let line = before.matches('\n').count() as u32 + 1;
@@ -43,7 +43,7 @@ pub fn pos_of(text: &str, needle: &str) -> (u32, u32) {
     (line, col)
 }
 
-pub const VEHICLE: &str = r#"<Vehicle name="car" vehicleCategory="car">
+pub(crate) const VEHICLE: &str = r#"<Vehicle name="car" vehicleCategory="car">
           <BoundingBox><Center x="1.5" y="0" z="0.9"/><Dimensions width="2" length="4.5" height="1.5"/></BoundingBox>
           <Performance maxSpeed="70" maxAcceleration="5" maxDeceleration="9"/>
           <Axles>
@@ -54,7 +54,7 @@ pub const VEHICLE: &str = r#"<Vehicle name="car" vehicleCategory="car">
         </Vehicle>"#;
 
 /// A minimal scenario with the given parts.
-pub fn scenario(params: &str, catalogs: &str, entities: &str, init: &str, stories: &str) -> String {
+pub(crate) fn scenario(params: &str, catalogs: &str, entities: &str, init: &str, stories: &str) -> String {
     format!(
         r#"<?xml version="1.0" encoding="UTF-8"?>
 <OpenSCENARIO>
@@ -79,12 +79,12 @@ pub fn scenario(params: &str, catalogs: &str, entities: &str, init: &str, storie
 }
 
 /// An entity named `name` with the inline test vehicle.
-pub fn car(name: &str) -> String {
+pub(crate) fn car(name: &str) -> String {
     format!(r#"<ScenarioObject name="{name}">{VEHICLE}</ScenarioObject>"#)
 }
 
 /// A Private init block teleporting `entity` to a world position with the given x attribute text.
-pub fn teleport(entity: &str, x: &str) -> String {
+pub(crate) fn teleport(entity: &str, x: &str) -> String {
     format!(
         r#"<Private entityRef="{entity}"><PrivateAction><TeleportAction><Position><WorldPosition x="{x}" y="0"/></Position></TeleportAction></PrivateAction></Private>"#
     )

@@ -231,22 +231,36 @@ def export(
 
 
 def _write_2020a(scenario: Scenario, problems: Optional[PlanningProblemSet], path: str) -> None:
-    """Writes a commonroad-io scenario as 2020a XML with commonroad-io's writer (2024.x and
-    2026.x), 10 decimals."""
+    """Writes a commonroad-io scenario as 2020a XML with commonroad-io's writer, 10 decimals:
+    2024.x (author and the like on the scenario) and 2026.x (on its ``file_information``, the
+    lanelet network's ``location``, protobuf unless XML is asked for)."""
     try:
         from commonroad.common.file_writer import CommonRoadFileWriter, OverwriteExistingFile
         from commonroad.planning.planning_problem import PlanningProblemSet as _Set
     except ImportError as e:  # pragma: no cover - depends on the environment
         raise ImportError("exporting a commonroad-io Scenario needs commonroad-io (pip install commonroad-io)") from e
     init = inspect.signature(CommonRoadFileWriter.__init__).parameters
+    info = getattr(scenario, "file_information", None) or scenario
+
+    def said(name: str) -> str:
+        return getattr(info, name, None) or ""
+
     options = {
-        "author": scenario.author or "osc2cr",
-        "affiliation": scenario.affiliation or "",
-        "source": scenario.source or "",
-        "tags": set(scenario.tags or ()),
+        "author": said("author") or "osc2cr",
+        "affiliation": said("affiliation"),
+        "source": said("source"),
+        "tags": set(getattr(scenario, "tags", None) or ()),
     }
     if "decimal_precision" in init:
         options["decimal_precision"] = 10
+    if "file_format" in init:
+        from commonroad.common.util import FileFormat
+
+        options["file_format"] = FileFormat.XML
+    if "location" in init:
+        location = getattr(scenario, "location", None) or getattr(scenario.lanelet_network, "location", None)
+        if location is not None:
+            options["location"] = location
     writer = CommonRoadFileWriter(scenario, problems if problems is not None else _Set(), **options)
     write = inspect.signature(writer.write_to_file).parameters
     if "filename_2020a" in write:

@@ -17,7 +17,7 @@ fn goal_prim(view: &View, shape: Placed) -> Prim {
 }
 
 /// Every goal position of every planning problem.
-pub fn goals(problems: &PlanningProblemSet, net: &LaneletNetwork, view: &View, out: &mut Vec<Prim>) {
+pub(super) fn goals(problems: &PlanningProblemSet, net: &LaneletNetwork, view: &View, out: &mut Vec<Prim>) {
     for g in problems.problems.iter().flat_map(|p| &p.goal_states) {
         let shapes: Vec<Placed> = match &g.position {
             Some(GoalPosition::Rectangles(rs)) => rs.iter().map(|r| place_absolute(&AbsoluteShape::Rectangle(*r))).collect(),
@@ -39,7 +39,7 @@ pub fn goals(problems: &PlanningProblemSet, net: &LaneletNetwork, view: &View, o
 }
 
 /// An arrow (4 m long, at least 12 px) at each planning problem's initial state.
-pub fn initial_states(problems: &PlanningProblemSet, view: &View, out: &mut Vec<Prim>) {
+pub(super) fn initial_states(problems: &PlanningProblemSet, view: &View, out: &mut Vec<Prim>) {
     let len = (4.0_f64).max(12.0 / view.scale);
     for p in &problems.problems {
         let s = &p.initial_state;

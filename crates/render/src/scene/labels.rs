@@ -7,7 +7,7 @@ use crate::layout::{Label, PxRect};
 use crate::style;
 
 /// The text of a label.
-pub fn text(id: u64, name: Option<&str>, ego: bool) -> String {
+pub(super) fn text(id: u64, name: Option<&str>, ego: bool) -> String {
     let base = match name {
         Some(n) if !n.trim().is_empty() => format!("{} ({id})", n.trim()),
         _ => format!("id {id}"),
@@ -28,7 +28,7 @@ const RINGS: usize = 3;
 
 /// Where each label goes: `boxes` are the road users' boxes, `texts` their labels (same
 /// order); the labels stay inside `area`.
-pub fn place(boxes: &[PxRect], texts: &[String], size: f64, area: &PxRect) -> Vec<PxRect> {
+pub(super) fn place(boxes: &[PxRect], texts: &[String], size: f64, area: &PxRect) -> Vec<PxRect> {
     let mut placed: Vec<PxRect> = Vec::new();
     for (b, t) in boxes.iter().zip(texts) {
         let (w, h) = font::text_box(t, size);
@@ -80,7 +80,7 @@ fn nearest(r: &PxRect, (x, y): (f64, f64)) -> (f64, f64) {
 
 /// The label prims: each label, and a thin line to its road user's box when it had to sit
 /// away from it.
-pub fn prims(labels: &[(Label, bool, PxRect)], size: f64, out: &mut Vec<Prim>) {
+pub(super) fn prims(labels: &[(Label, bool, PxRect)], size: f64, out: &mut Vec<Prim>) {
     for (l, _, b) in labels {
         let from = nearest(&l.rect, b.center());
         let to = nearest(b, from);

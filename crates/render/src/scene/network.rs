@@ -33,7 +33,7 @@ fn path(points: Vec<(f64, f64)>, stroke: Stroke) -> Prim {
 
 /// Road surface of every lanelet. The fill is also stroked in the road colour so that
 /// anti-aliased seams between neighbouring lanelets do not show the background.
-pub fn surfaces(net: &LaneletNetwork, view: &View, out: &mut Vec<Prim>) {
+pub(super) fn surfaces(net: &LaneletNetwork, view: &View, out: &mut Vec<Prim>) {
     for l in net.lanelets.iter().filter(|l| visible(l, view)) {
         let mut outline = pts(l.bounds.left());
         outline.extend(pts(l.bounds.right()).into_iter().rev());
@@ -73,7 +73,7 @@ fn marking_lines(line: &[(f64, f64)], m: LineMarking, view: &View, out: &mut Vec
 }
 
 /// Thin borders of every lanelet first, then the markings on top (neighbours share bounds).
-pub fn borders_and_markings(net: &LaneletNetwork, view: &View, out: &mut Vec<Prim>) {
+pub(super) fn borders_and_markings(net: &LaneletNetwork, view: &View, out: &mut Vec<Prim>) {
     let border = Stroke::solid(style::BORDER, style::BORDER_WIDTH);
     let shown: Vec<&commonroad::Lanelet> = net.lanelets.iter().filter(|l| visible(l, view)).collect();
     for l in &shown {
@@ -120,7 +120,7 @@ fn positions(net: &LaneletNetwork) -> (BTreeMap<u64, Point>, BTreeMap<u64, Point
 }
 
 /// Traffic signs as small red-rimmed discs.
-pub fn signs(net: &LaneletNetwork, view: &View, out: &mut Vec<Prim>) {
+pub(super) fn signs(net: &LaneletNetwork, view: &View, out: &mut Vec<Prim>) {
     let (fallback, _) = positions(net);
     for s in &net.traffic_signs {
         if let Some(p) = s.position.or_else(|| fallback.get(&s.id.get()).copied()) {
@@ -135,7 +135,7 @@ pub fn signs(net: &LaneletNetwork, view: &View, out: &mut Vec<Prim>) {
 }
 
 /// Traffic lights as discs in the colour they show at `step`.
-pub fn lights(net: &LaneletNetwork, view: &View, step: u64, out: &mut Vec<Prim>) {
+pub(super) fn lights(net: &LaneletNetwork, view: &View, step: u64, out: &mut Vec<Prim>) {
     let (_, fallback) = positions(net);
     for t in &net.traffic_lights {
         if let Some(p) = t.position.or_else(|| fallback.get(&t.id.get()).copied()) {

@@ -13,7 +13,7 @@ use crate::view::View;
 
 /// Obstacles smaller than this on the picture also get a marker disc of this radius, so a
 /// pedestrian on a large map is still visible.
-pub const MIN_MARKER_PX: f64 = 3.0;
+pub(super) const MIN_MARKER_PX: f64 = 3.0;
 
 fn placed_prim(view: &View, shape: &Placed, fill: Rgba, stroke: Stroke) -> Prim {
     match shape {
@@ -34,7 +34,7 @@ fn marker_if_tiny(view: &View, shape: &Shape, x: f64, y: f64, fill: Rgba, out: &
 }
 
 /// Environment obstacles, then static obstacles.
-pub fn still_obstacles(scenario: &Scenario, view: &View, out: &mut Vec<Prim>) {
+pub(super) fn still_obstacles(scenario: &Scenario, view: &View, out: &mut Vec<Prim>) {
     let outline = Stroke::solid(style::OUTLINE, style::OUTLINE_WIDTH);
     for o in &scenario.environment_obstacles {
         let c = style::environment_color(o.obstacle_type);
@@ -49,7 +49,7 @@ pub fn still_obstacles(scenario: &Scenario, view: &View, out: &mut Vec<Prim>) {
 
 /// Each dynamic obstacle's path over the whole scenario, faint (the ego's stronger), so a still
 /// shows where everyone goes.
-pub fn paths(scenario: &Scenario, ego: Option<ObstacleId>, view: &View, out: &mut Vec<Prim>) {
+pub(super) fn paths(scenario: &Scenario, ego: Option<ObstacleId>, view: &View, out: &mut Vec<Prim>) {
     for o in &scenario.dynamic_obstacles {
         let line: Vec<(f64, f64)> = std::iter::once(&o.initial_state).chain(&o.trajectory).map(|s| view.px(s.x, s.y)).collect();
         if line.len() < 2 {
@@ -85,7 +85,7 @@ fn heading_wedge(o: &DynamicObstacle, x: f64, y: f64, h: f64, view: &View) -> Op
 
 /// A road user as drawn (before its label is placed).
 #[derive(Debug, Clone, PartialEq)]
-pub struct Shown {
+pub(super) struct Shown {
     pub id: ObstacleId,
     pub ego: bool,
     pub obstacle_type: &'static str,
@@ -105,7 +105,7 @@ fn length(shape: &Shape) -> f64 {
 
 /// Dynamic obstacles at `step` (those that exist then); the ego last, on top, with a thick
 /// outline. Returns where each was drawn.
-pub fn dynamic_at(scenario: &Scenario, ego: Option<ObstacleId>, step: u64, view: &View, out: &mut Vec<Prim>) -> Vec<Shown> {
+pub(super) fn dynamic_at(scenario: &Scenario, ego: Option<ObstacleId>, step: u64, view: &View, out: &mut Vec<Prim>) -> Vec<Shown> {
     let mut shown = Vec::new();
     let others = scenario.dynamic_obstacles.iter().filter(|o| Some(o.id) != ego);
     let ego_obstacle = scenario.dynamic_obstacles.iter().filter(|o| Some(o.id) == ego);

@@ -8,14 +8,14 @@ use crate::style;
 use crate::timeline::step_of;
 
 /// Height of the bar's strip in a picture `width` wide.
-pub fn height(width: u32) -> f64 {
+pub(super) fn height(width: u32) -> f64 {
     7.0 * style::text_dot(width)
 }
 
 /// The bar with its strip's top at row `y`, for the picture at `step` of a run from `first`
 /// to `last`.
 #[allow(clippy::too_many_arguments)]
-pub fn bar(width: u32, y: f64, first: u64, last: u64, step: u64, dt: f64, marks: &[Mark], out: &mut Vec<Prim>) {
+pub(super) fn bar(width: u32, y: f64, first: u64, last: u64, step: u64, dt: f64, marks: &[Mark], out: &mut Vec<Prim>) {
     let dot = style::text_dot(width);
     let h = height(width);
     let w = f64::from(width);

@@ -9,7 +9,7 @@ use crate::timeline::state_at;
 use crate::view::View;
 
 /// The trails at `step`, `steps` long, of the road users that exist then.
-pub fn trails(scenario: &Scenario, ego: Option<ObstacleId>, step: u64, steps: u64, view: &View, out: &mut Vec<Prim>) {
+pub(super) fn trails(scenario: &Scenario, ego: Option<ObstacleId>, step: u64, steps: u64, view: &View, out: &mut Vec<Prim>) {
     if steps == 0 {
         return;
     }

@@ -5,7 +5,7 @@ use commonroad::*;
 
 /// One straight lanelet (0,0)–(100,0) right, (0,4)–(100,4) left; a car (the ego) from x=20
 /// at 10 m/s for `steps` steps at y=2; a pedestrian; the planning problem starting at the car.
-pub fn straight(steps: u64) -> (Scenario, PlanningProblemSet) {
+pub(crate) fn straight(steps: u64) -> (Scenario, PlanningProblemSet) {
     let header = Header {
         benchmark_id: BenchmarkId::parse("ZAM_Test-1_1_T-1").unwrap(),
         date: Date::new(2026, 1, 1).unwrap(),
@@ -58,12 +58,12 @@ pub fn straight(steps: u64) -> (Scenario, PlanningProblemSet) {
 }
 
 /// Options showing the whole map of [`straight`] at `time`.
-pub fn whole(time: f64) -> render::RenderOptions {
+pub(crate) fn whole(time: f64) -> render::RenderOptions {
     render::RenderOptions { time, frame: render::Frame::WholeMap, ..Default::default() }
 }
 
 /// Where world (x, y) lands in the picture `layout` describes.
-pub fn px_of(layout: &render::Layout, x: f64, y: f64) -> (u32, u32) {
+pub(crate) fn px_of(layout: &render::Layout, x: f64, y: f64) -> (u32, u32) {
     let px = (x - layout.world.min_x) * layout.scale;
     let py = layout.map.y0 + (layout.world.max_y - y) * layout.scale;
     (px as u32, py as u32)
@@ -73,22 +73,22 @@ pub fn px_of(layout: &render::Layout, x: f64, y: f64) -> (u32, u32) {
 /// content spans x 0..100 (margin 2 + 5 % of 100 = 7 m → 114 m wide, 1200/114 px/m) and is
 /// far flatter than the minimal aspect 1/4, so the map area is 300 px high, centred on y = 2,
 /// below the header strip of `header` pixels.
-pub fn straight_px(x: f64, y: f64, header: f64) -> (u32, u32) {
+pub(crate) fn straight_px(x: f64, y: f64, header: f64) -> (u32, u32) {
     let scale = 1200.0 / 114.0;
     let left = 50.0 - 57.0;
     let top = 2.0 + 150.0 / scale;
     (((x - left) * scale) as u32, (header + (top - y) * scale) as u32)
 }
 
-pub fn decode_png(bytes: &[u8]) -> tiny_skia::Pixmap {
+pub(crate) fn decode_png(bytes: &[u8]) -> tiny_skia::Pixmap {
     tiny_skia::Pixmap::decode_png(bytes).expect("a PNG")
 }
 
-pub fn pixel(pm: &tiny_skia::Pixmap, (x, y): (u32, u32)) -> [u8; 3] {
+pub(crate) fn pixel(pm: &tiny_skia::Pixmap, (x, y): (u32, u32)) -> [u8; 3] {
     let c = pm.pixel(x, y).expect("inside").demultiply();
     [c.red(), c.green(), c.blue()]
 }
 
-pub fn rgb(c: render::scene::prim::Rgba) -> [u8; 3] {
+pub(crate) fn rgb(c: render::scene::prim::Rgba) -> [u8; 3] {
     [c.r, c.g, c.b]
 }

@@ -7,9 +7,9 @@ use opendrive::RoadNetwork;
 use std::path::Path;
 
 /// A lane: id, successor lane ids, predecessor lane ids.
-pub struct L(pub i32, pub &'static [i32], pub &'static [i32]);
+pub(crate) struct L(pub i32, pub &'static [i32], pub &'static [i32]);
 
-pub struct R {
+pub(crate) struct R {
     pub id: &'static str,
     pub length: f64,
     pub junction: &'static str,
@@ -40,7 +40,7 @@ fn lane(l: &L) -> String {
     format!("<lane id=\"{}\" type=\"driving\" level=\"false\"><link>{links}</link><width sOffset=\"0\" a=\"3.5\" b=\"0\" c=\"0\" d=\"0\"/></lane>", l.0)
 }
 
-pub fn road(r: &R) -> String {
+pub(crate) fn road(r: &R) -> String {
     let left: Vec<String> = r.lanes.iter().filter(|l| l.0 > 0).map(lane).collect();
     let right: Vec<String> = r.lanes.iter().filter(|l| l.0 < 0).map(lane).collect();
     let speed = r.speed.map(|v| format!("<type s=\"0\" type=\"town\"><speed max=\"{v}\" unit=\"m/s\"/></type>")).unwrap_or_default();
@@ -59,9 +59,9 @@ pub fn road(r: &R) -> String {
 }
 
 /// (id, incoming, connecting, contactPoint, [(from, to)])
-pub struct C(pub &'static str, pub &'static str, pub &'static str, pub &'static str, pub &'static [(i32, i32)]);
+pub(crate) struct C(pub &'static str, pub &'static str, pub &'static str, pub &'static str, pub &'static [(i32, i32)]);
 
-pub fn junction(id: &str, conns: &[C]) -> String {
+pub(crate) fn junction(id: &str, conns: &[C]) -> String {
     let mut out = format!("<junction id=\"{id}\" name=\"j{id}\">");
     for c in conns {
         out += &format!("<connection id=\"{}\" incomingRoad=\"{}\" connectingRoad=\"{}\" contactPoint=\"{}\">", c.0, c.1, c.2, c.3);
@@ -73,7 +73,7 @@ pub fn junction(id: &str, conns: &[C]) -> String {
     out + "</junction>\n"
 }
 
-pub fn network(roads: &[R], junctions: &[String]) -> RoadNetwork {
+pub(crate) fn network(roads: &[R], junctions: &[String]) -> RoadNetwork {
     let mut xml = String::from("<OpenDRIVE><header revMajor=\"1\" revMinor=\"6\"/>\n");
     for r in roads {
         xml += &road(r);
@@ -100,7 +100,7 @@ fn junction_link(id: &'static str) -> Option<(&'static str, &'static str, &'stat
 /// 3 (100 m, ends at the junction, lanes -1 north / 1 south). Connecting roads: 10 (20 m,
 /// 1 ↔ 2 straight, both directions), 12 (15 m, 1 lane -2 → 3 southbound, right turn), 13
 /// (15 m, 3 → 2 eastbound), 14 (25 m, 3 → 1 westbound), 15 (25 m, 2 westbound → 3 southbound).
-pub fn t_junction() -> RoadNetwork {
+pub(crate) fn t_junction() -> RoadNetwork {
     let roads = vec![
         R {
             id: "1",
@@ -152,7 +152,7 @@ pub fn t_junction() -> RoadNetwork {
 /// Two ways from road A to road F, one lane each way (-1 only, one-way roads):
 /// A (100) → J1 → c1 (10) → B (50, 5 m/s) → J2 → c3 (10) → F (100): 2 junctions, short, slow;
 /// A (100) → J1 → c2 (10) → D (500, 100 m/s) → F directly: 1 junction, long, fast.
-pub fn two_ways() -> RoadNetwork {
+pub(crate) fn two_ways() -> RoadNetwork {
     let roads = vec![
         R { id: "A", length: 100.0, junction: "-1", pred: None, succ: junction_link("J1"), lanes: vec![L(-1, &[], &[])], speed: None },
         R {
@@ -192,7 +192,7 @@ pub fn two_ways() -> RoadNetwork {
 }
 
 /// A ring: R1 (100 m) → R2 (50 m) → R1, one lane -1.
-pub fn ring() -> RoadNetwork {
+pub(crate) fn ring() -> RoadNetwork {
     let roads = vec![
         R {
             id: "R1",

@@ -13,14 +13,14 @@ use std::path::{Path, PathBuf};
 
 use udp::{Listening, Observer, Pace, Rejection, ServeOptions};
 
-pub fn fixture(name: &str) -> PathBuf {
+pub(crate) fn fixture(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures").join(name)
 }
 
 /// Serve options: these scenario parameters, as fast as the datagrams come; the run ends at
 /// the time cap `duration` (the scenarios' stop trigger is left far behind: in the frame it
 /// fires a synchronous port is read for nothing, as the engine learns only then that it fired).
-pub fn options(params: &[(&str, String)], duration: f64) -> ServeOptions {
+pub(crate) fn options(params: &[(&str, String)], duration: f64) -> ServeOptions {
     let mut o = ServeOptions { pace: Some(Pace::AsFastAsPossible), ..ServeOptions::default() };
     o.convert.max_time = duration;
     o.convert.parameters = params.iter().map(|(n, v)| (n.to_string(), v.clone())).collect();
@@ -29,12 +29,12 @@ pub fn options(params: &[(&str, String)], duration: f64) -> ServeOptions {
 }
 
 /// A UDP port free on 127.0.0.1 now.
-pub fn free_port() -> u16 {
+pub(crate) fn free_port() -> u16 {
     UdpSocket::bind("127.0.0.1:0").and_then(|s| s.local_addr()).expect("a free port").port()
 }
 
 /// Two consecutive free ports, the first returned.
-pub fn free_port_pair() -> u16 {
+pub(crate) fn free_port_pair() -> u16 {
     loop {
         let a = UdpSocket::bind("127.0.0.1:0").expect("a free port");
         let p = a.local_addr().expect("address").port();
@@ -59,33 +59,33 @@ fn with(mut b: Vec<u8>, doubles: &[f64], flag: Option<u8>) -> Vec<u8> {
 }
 
 /// driverInput (mode 1): throttle, brake, steering angle.
-pub fn driver(object_id: u32, frame: u32, throttle: f64, brake: f64, steering: f64) -> Vec<u8> {
+pub(crate) fn driver(object_id: u32, frame: u32, throttle: f64, brake: f64, steering: f64) -> Vec<u8> {
     with(header(1, object_id, frame), &[throttle, brake, steering], None)
 }
 
 /// stateXYZHPR (mode 2): x, y, z, h, p, r, speed, wheel angle, dead reckoning.
-pub fn xyzhpr(object_id: u32, frame: u32, v: [f64; 8], dead_reckon: u8) -> Vec<u8> {
+pub(crate) fn xyzhpr(object_id: u32, frame: u32, v: [f64; 8], dead_reckon: u8) -> Vec<u8> {
     with(header(2, object_id, frame), &v, Some(dead_reckon))
 }
 
 /// stateXYH (mode 3): x, y, h, speed, wheel angle, dead reckoning.
-pub fn xyh(object_id: u32, frame: u32, x: f64, y: f64, h: f64, speed: f64, dead_reckon: u8) -> Vec<u8> {
+pub(crate) fn xyh(object_id: u32, frame: u32, x: f64, y: f64, h: f64, speed: f64, dead_reckon: u8) -> Vec<u8> {
     with(header(3, object_id, frame), &[x, y, h, speed, 0.0], Some(dead_reckon))
 }
 
 /// stateH (mode 4): h, speed, wheel angle, dead reckoning.
-pub fn state_h(object_id: u32, frame: u32, h: f64, speed: f64, dead_reckon: u8) -> Vec<u8> {
+pub(crate) fn state_h(object_id: u32, frame: u32, h: f64, speed: f64, dead_reckon: u8) -> Vec<u8> {
     with(header(4, object_id, frame), &[h, speed, 0.0], Some(dead_reckon))
 }
 
 /// `b` padded with zeros to `n` bytes (a C struct, or esmini's whole 88-byte DMMessage).
-pub fn padded(mut b: Vec<u8>, n: usize) -> Vec<u8> {
+pub(crate) fn padded(mut b: Vec<u8>, n: usize) -> Vec<u8> {
     b.resize(n, 0);
     b
 }
 
 /// `b` with its 4-byte header field `k` (0 version, 1 inputMode, 2 objectId, 3 frameNumber) set.
-pub fn with_header_field(mut b: Vec<u8>, k: usize, v: u32) -> Vec<u8> {
+pub(crate) fn with_header_field(mut b: Vec<u8>, k: usize, v: u32) -> Vec<u8> {
     b[4 * k..4 * k + 4].copy_from_slice(&v.to_le_bytes());
     b
 }
@@ -95,7 +95,7 @@ pub fn with_header_field(mut b: Vec<u8>, k: usize, v: u32) -> Vec<u8> {
 /// Plays, for each port, a script of frames: the datagrams of frame k are sent just before the
 /// server reads the port for frame k (frame 0 when the port opens with the Init frame, else
 /// after the step that opened it). Records what it is told.
-pub struct Lockstep {
+pub(crate) struct Lockstep {
     client: UdpSocket,
     scripts: BTreeMap<String, Vec<Vec<Vec<u8>>>>,
     cursor: BTreeMap<String, (u16, usize)>,
@@ -108,7 +108,7 @@ pub struct Lockstep {
 
 impl Lockstep {
     /// Scripts by entity name: `frames[k]` are the datagrams of frame k.
-    pub fn new(scripts: Vec<(&str, Vec<Vec<Vec<u8>>>)>) -> Lockstep {
+    pub(crate) fn new(scripts: Vec<(&str, Vec<Vec<Vec<u8>>>)>) -> Lockstep {
         Lockstep {
             client: UdpSocket::bind("127.0.0.1:0").expect("client socket"),
             scripts: scripts.into_iter().map(|(n, s)| (n.to_string(), s)).collect(),
@@ -121,12 +121,12 @@ impl Lockstep {
     }
 
     /// One datagram per frame for `entity`.
-    pub fn one_each(entity: &str, frames: Vec<Vec<u8>>) -> Lockstep {
+    pub(crate) fn one_each(entity: &str, frames: Vec<Vec<u8>>) -> Lockstep {
         Lockstep::new(vec![(entity, frames.into_iter().map(|d| vec![d]).collect())])
     }
 
     /// The frames scripted for `entity`.
-    pub fn script(&self, entity: &str) -> Vec<Vec<Vec<u8>>> {
+    pub(crate) fn script(&self, entity: &str) -> Vec<Vec<Vec<u8>>> {
         self.scripts.get(entity).cloned().unwrap_or_default()
     }
 
@@ -163,11 +163,11 @@ impl Observer for Lockstep {
 }
 
 /// The state of `entity` at time `t` in a served run.
-pub fn at(outcome: &udp::Outcome, entity: &str, t: f64) -> engine::Sample {
+pub(crate) fn at(outcome: &udp::Outcome, entity: &str, t: f64) -> engine::Sample {
     let e = outcome.entity(entity).unwrap_or_else(|| panic!("{entity} was not served"));
     e.states.iter().find(|(time, _)| (time - t).abs() < 1e-9).map(|(_, s)| *s).unwrap_or_else(|| panic!("no state of {entity} at {t}"))
 }
 
-pub fn close(a: f64, b: f64, tol: f64) -> bool {
+pub(crate) fn close(a: f64, b: f64, tol: f64) -> bool {
     (a - b).abs() <= tol
 }

@@ -15,7 +15,7 @@ pub(crate) struct Cursor<'d, 'i> {
 }
 
 impl<'d, 'i> Cursor<'d, 'i> {
-    pub fn new(doc: &'d Document<'i>, path: &'d Path) -> Self {
+    pub(super) fn new(doc: &'d Document<'i>, path: &'d Path) -> Self {
         Self { doc, path, warnings: Vec::new() }
     }
 
@@ -25,34 +25,34 @@ impl<'d, 'i> Cursor<'d, 'i> {
     }
 
     /// An error at `node`.
-    pub fn err(&self, node: Node, message: impl Into<String>) -> ReadError {
+    pub(super) fn err(&self, node: Node, message: impl Into<String>) -> ReadError {
         let (line, column) = self.pos(node);
         ReadError::Invalid { path: self.path.to_path_buf(), line, column, message: message.into() }
     }
 
     /// A warning at `node`.
-    pub fn warn(&mut self, node: Node, message: impl Into<String>) {
+    pub(super) fn warn(&mut self, node: Node, message: impl Into<String>) {
         let (line, column) = self.pos(node);
         self.warnings.push(ReadWarning { path: self.path.to_path_buf(), line, column, message: message.into() });
     }
 
-    pub fn into_warnings(self) -> Vec<ReadWarning> {
+    pub(super) fn into_warnings(self) -> Vec<ReadWarning> {
         self.warnings
     }
 
     /// The trimmed text of `node` (empty if none).
-    pub fn text<'a, 'x>(&self, node: Node<'a, 'x>) -> &'a str {
+    pub(super) fn text<'a, 'x>(&self, node: Node<'a, 'x>) -> &'a str {
         node.text().unwrap_or("").trim()
     }
 
     /// A required child element.
-    pub fn req<'a, 'x>(&self, node: Node<'a, 'x>, name: &str) -> Result<Node<'a, 'x>, ReadError> {
+    pub(super) fn req<'a, 'x>(&self, node: Node<'a, 'x>, name: &str) -> Result<Node<'a, 'x>, ReadError> {
         child(node, name).ok_or_else(|| self.err(node, format!("<{}> needs a <{name}> child", node.tag_name().name())))
     }
 
     /// The text of `node` as a finite number (xs:decimal; an exponent is tolerated like
     /// commonroad-io does).
-    pub fn f64(&self, node: Node) -> Result<f64, ReadError> {
+    pub(super) fn f64(&self, node: Node) -> Result<f64, ReadError> {
         let t = self.text(node);
         match t.parse::<f64>() {
             Ok(v) if v.is_finite() => Ok(v),
@@ -61,18 +61,18 @@ impl<'d, 'i> Cursor<'d, 'i> {
     }
 
     /// The text of `node` as a non-negative integer.
-    pub fn u64(&self, node: Node) -> Result<u64, ReadError> {
+    pub(super) fn u64(&self, node: Node) -> Result<u64, ReadError> {
         let t = self.text(node);
         t.parse::<u64>().map_err(|_| self.err(node, format!("<{}>: expected a non-negative integer, found {t:?}", node.tag_name().name())))
     }
 
     /// The number of the required child `name`.
-    pub fn f64_child(&self, node: Node, name: &str) -> Result<f64, ReadError> {
+    pub(super) fn f64_child(&self, node: Node, name: &str) -> Result<f64, ReadError> {
         self.f64(self.req(node, name)?)
     }
 
     /// `<name><exact>v</exact></name>` (a bare number is accepted too).
-    pub fn exact(&self, node: Node) -> Result<f64, ReadError> {
+    pub(super) fn exact(&self, node: Node) -> Result<f64, ReadError> {
         match child(node, "exact") {
             Some(e) => self.f64(e),
             None if child(node, "intervalStart").is_some() => {
@@ -83,12 +83,12 @@ impl<'d, 'i> Cursor<'d, 'i> {
     }
 
     /// Like [`Cursor::exact`] for an optional child: `None` when the child is absent.
-    pub fn exact_child(&self, node: Node, name: &str) -> Result<Option<f64>, ReadError> {
+    pub(super) fn exact_child(&self, node: Node, name: &str) -> Result<Option<f64>, ReadError> {
         child(node, name).map(|c| self.exact(c)).transpose()
     }
 
     /// `<time><exact>n</exact></time>` as an integer time step.
-    pub fn exact_time(&self, node: Node) -> Result<u64, ReadError> {
+    pub(super) fn exact_time(&self, node: Node) -> Result<u64, ReadError> {
         let t = self.req(node, "time")?;
         match child(t, "exact") {
             Some(e) => self.u64(e),
@@ -97,12 +97,12 @@ impl<'d, 'i> Cursor<'d, 'i> {
     }
 
     /// `(intervalStart, intervalEnd)` numbers.
-    pub fn interval(&self, node: Node) -> Result<(f64, f64), ReadError> {
+    pub(super) fn interval(&self, node: Node) -> Result<(f64, f64), ReadError> {
         Ok((self.f64_child(node, "intervalStart")?, self.f64_child(node, "intervalEnd")?))
     }
 
     /// A point element with `<x>`, `<y>` and optional `<z>`.
-    pub fn point(&self, node: Node) -> Result<Point, ReadError> {
+    pub(super) fn point(&self, node: Node) -> Result<Point, ReadError> {
         let x = self.f64_child(node, "x")?;
         let y = self.f64_child(node, "y")?;
         Ok(match child(node, "z") {
@@ -112,7 +112,7 @@ impl<'d, 'i> Cursor<'d, 'i> {
     }
 
     /// `<position><point>…</point></position>` (exact position).
-    pub fn position_point(&self, node: Node) -> Result<Point, ReadError> {
+    pub(super) fn position_point(&self, node: Node) -> Result<Point, ReadError> {
         let pos = self.req(node, "position")?;
         match child(pos, "point") {
             Some(p) => self.point(p),
@@ -121,7 +121,7 @@ impl<'d, 'i> Cursor<'d, 'i> {
     }
 
     /// An exact value, or the midpoint of an interval (`uncertain` is set then).
-    pub fn exact_or_midpoint(&self, node: Node, uncertain: &mut bool) -> Result<f64, ReadError> {
+    pub(crate) fn exact_or_midpoint(&self, node: Node, uncertain: &mut bool) -> Result<f64, ReadError> {
         if child(node, "intervalStart").is_some() {
             let (a, b) = self.interval(node)?;
             *uncertain = true;
@@ -131,13 +131,13 @@ impl<'d, 'i> Cursor<'d, 'i> {
     }
 
     /// Like [`Cursor::exact_or_midpoint`] for an optional child.
-    pub fn exact_or_midpoint_child(&self, node: Node, name: &str, uncertain: &mut bool) -> Result<Option<f64>, ReadError> {
+    pub(crate) fn exact_or_midpoint_child(&self, node: Node, name: &str, uncertain: &mut bool) -> Result<Option<f64>, ReadError> {
         child(node, name).map(|c| self.exact_or_midpoint(c, uncertain)).transpose()
     }
 
     /// `<position>`'s point, or the centre of the shape it gives instead (a rectangle's or
     /// circle's `center`, a polygon's vertex mean; `uncertain` is set then).
-    pub fn position_point_or_centre(&self, node: Node, uncertain: &mut bool) -> Result<Point, ReadError> {
+    pub(crate) fn position_point_or_centre(&self, node: Node, uncertain: &mut bool) -> Result<Point, ReadError> {
         let pos = self.req(node, "position")?;
         if let Some(p) = child(pos, "point") {
             return self.point(p);
@@ -162,7 +162,7 @@ impl<'d, 'i> Cursor<'d, 'i> {
     }
 
     /// A positive integer attribute (`id` or `ref`).
-    pub fn id_attr(&self, node: Node, attr: &str) -> Result<u64, ReadError> {
+    pub(super) fn id_attr(&self, node: Node, attr: &str) -> Result<u64, ReadError> {
         let raw = node.attribute(attr).ok_or_else(|| self.err(node, format!("<{}> needs an attribute {attr}", node.tag_name().name())))?;
         match raw.trim().parse::<u64>() {
             Ok(v) if v > 0 => Ok(v),
@@ -171,18 +171,18 @@ impl<'d, 'i> Cursor<'d, 'i> {
     }
 
     /// A typed id from an attribute (`new` maps the raw number, which is known to be > 0).
-    pub fn typed<T>(&self, node: Node, attr: &str, new: fn(u64) -> Option<T>) -> Result<T, ReadError> {
+    pub(super) fn typed<T>(&self, node: Node, attr: &str, new: fn(u64) -> Option<T>) -> Result<T, ReadError> {
         let raw = self.id_attr(node, attr)?;
         new(raw).ok_or_else(|| self.err(node, format!("{attr} must be > 0")))
     }
 
     /// The `ref`s of every child named `name`.
-    pub fn refs<T>(&self, node: Node, name: &str, new: fn(u64) -> Option<T>) -> Result<Vec<T>, ReadError> {
+    pub(super) fn refs<T>(&self, node: Node, name: &str, new: fn(u64) -> Option<T>) -> Result<Vec<T>, ReadError> {
         children(node, name).map(|c| self.typed(c, "ref", new)).collect()
     }
 
     /// The value of an enumeration spelled as in the XSD, from the text of `node`.
-    pub fn enum_text<T: Copy>(&self, node: Node, all: &[T], as_str: fn(T) -> &'static str) -> Result<T, ReadError> {
+    pub(super) fn enum_text<T: Copy>(&self, node: Node, all: &[T], as_str: fn(T) -> &'static str) -> Result<T, ReadError> {
         let t = self.text(node);
         all.iter().copied().find(|v| as_str(*v) == t).ok_or_else(|| {
             let allowed: Vec<&str> = all.iter().map(|v| as_str(*v)).collect();

@@ -4,7 +4,7 @@
 use trajectory::{Path, TimeMapping};
 
 #[derive(Debug, Clone)]
-pub struct FollowTrajectoryRt {
+pub(crate) struct FollowTrajectoryRt {
     pub path: Path,
     /// Arc length of the entity along the path.
     pub s: f64,

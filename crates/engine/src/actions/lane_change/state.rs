@@ -5,7 +5,7 @@ use crate::dynamics::Transition;
 use crate::roads::LanePos;
 
 #[derive(Debug, Clone)]
-pub struct LaneChangeRt {
+pub(crate) struct LaneChangeRt {
     pub transition: Transition,
     /// The entity's position expressed in the target lane.
     pub internal: LanePos,

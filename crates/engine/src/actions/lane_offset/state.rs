@@ -3,6 +3,6 @@
 use crate::dynamics::Transition;
 
 #[derive(Debug, Clone)]
-pub struct LaneOffsetRt {
+pub(crate) struct LaneOffsetRt {
     pub transition: Transition,
 }

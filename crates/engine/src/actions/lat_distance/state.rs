@@ -8,7 +8,7 @@ pub(super) enum Phase {
 }
 
 #[derive(Debug, Clone)]
-pub struct LatDistanceRt {
+pub(crate) struct LatDistanceRt {
     /// The action's slot, for its warning.
     pub(super) slot: usize,
     pub(super) target: usize,

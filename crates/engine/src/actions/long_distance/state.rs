@@ -3,7 +3,7 @@
 use openscenario::CoordinateSystem;
 
 #[derive(Debug, Clone)]
-pub struct LongDistanceRt {
+pub(crate) struct LongDistanceRt {
     pub(super) target: usize,
     /// Distance in m, or time gap in s when `time_gap`.
     pub(super) value: f64,

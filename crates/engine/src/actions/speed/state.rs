@@ -4,7 +4,7 @@ use crate::dynamics::Transition;
 use crate::entities::Entity;
 
 #[derive(Debug, Clone)]
-pub enum Target {
+pub(crate) enum Target {
     Absolute(f64),
     Relative { entity: usize, value: f64, factor: bool, continuous: bool },
 }
@@ -36,7 +36,7 @@ impl Target {
 }
 
 #[derive(Debug, Clone)]
-pub struct SpeedRt {
+pub(crate) struct SpeedRt {
     pub transition: Transition,
     pub target: Target,
     pub reached: bool,

@@ -9,7 +9,7 @@ pub(super) struct Segment {
 }
 
 #[derive(Debug, Clone)]
-pub struct SpeedProfileRt {
+pub(crate) struct SpeedProfileRt {
     pub(super) segments: Vec<Segment>,
     pub(super) current: usize,
     pub(super) speed: f64,

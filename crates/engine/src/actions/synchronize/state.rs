@@ -28,7 +28,7 @@ pub(super) enum Final {
 }
 
 #[derive(Debug, Clone)]
-pub struct SynchronizeRt {
+pub(crate) struct SynchronizeRt {
     pub(super) master: usize,
     pub(super) target_master: Placement,
     pub(super) target: Placement,

@@ -3,7 +3,7 @@
 /// Who tows whom, and each entity's hitch and coupler positions (m ahead of its reference
 /// point), indexed like the run's entities (scenario entities, then inline trailers).
 #[derive(Debug, Clone, Default)]
-pub struct Trailers {
+pub(crate) struct Trailers {
     /// `links[tow] = Some(trailer)`.
     pub links: Vec<Option<usize>>,
     pub hitch: Vec<Option<f64>>,

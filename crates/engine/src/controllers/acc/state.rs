@@ -1,7 +1,7 @@
 //! What an ACC controller remembers: set speed, time gap, mode, whether it is active.
 
 #[derive(Debug, Clone)]
-pub struct AccRt {
+pub(crate) struct AccRt {
     pub active: bool,
     pub(super) time_gap: f64,
     pub(super) set_speed: f64,

@@ -2,7 +2,7 @@
 //! the reference driver's phase and timers, the cut-in trigger.
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Model {
+pub(crate) enum Model {
     Regulation,
     ReferenceDriver,
 }
@@ -55,7 +55,7 @@ pub(super) struct Trigger {
 }
 
 #[derive(Debug, Clone)]
-pub struct AlksR157Rt {
+pub(crate) struct AlksR157Rt {
     pub active: bool,
     pub(super) override_mode: bool,
     pub model: Model,

@@ -3,13 +3,13 @@
 use crate::controllers::kinematic_vehicle::KinematicVehicle;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum FollowMode {
+pub(crate) enum FollowMode {
     Time,
     Position,
 }
 
 #[derive(Debug, Clone)]
-pub struct FollowGhostRt {
+pub(crate) struct FollowGhostRt {
     pub active: bool,
     pub headstart: f64,
     pub(super) mode: FollowMode,

@@ -3,7 +3,7 @@
 use crate::controllers::kinematic_vehicle::KinematicVehicle;
 
 #[derive(Debug, Clone)]
-pub struct FollowReferenceRt {
+pub(crate) struct FollowReferenceRt {
     pub active: bool,
     pub(super) cross_track_gain: f64,
     pub(super) speed_stabilizer: f64,

@@ -6,7 +6,7 @@ use crate::controllers::lane_router::LaneSpot;
 use routing::Strategy;
 
 #[derive(Debug, Clone)]
-pub struct FollowRouteRt {
+pub(crate) struct FollowRouteRt {
     pub active: bool,
     /// Activated on the longitudinal domain (ActivateControllerAction's `longitudinal`).
     pub(super) longitudinal: bool,

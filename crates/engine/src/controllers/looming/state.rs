@@ -5,7 +5,7 @@ use crate::controllers::analog_vehicle::AnalogVehicle;
 use crate::controllers::looming_view::OsiMemo;
 
 #[derive(Debug, Clone)]
-pub struct LoomingRt {
+pub(crate) struct LoomingRt {
     pub active: bool,
     pub(super) time_gap: f64,
     pub(super) set_speed: f64,

@@ -4,7 +4,7 @@ use crate::actions::lane_change::state::LaneChangeRt;
 
 /// The driver's parameters (esmini's defaults when a property is missing).
 #[derive(Debug, Clone)]
-pub struct NdParams {
+pub(crate) struct NdParams {
     pub desired_distance: f64,
     pub desired_speed: f64,
     pub lane_change_duration: f64,
@@ -29,7 +29,7 @@ pub(super) enum Mode {
 
 /// A NaturalDriver's state during a run.
 #[derive(Debug, Clone)]
-pub struct NaturalDriverRt {
+pub(crate) struct NaturalDriverRt {
     pub active: bool,
     pub p: NdParams,
     pub(super) current_speed: f64,

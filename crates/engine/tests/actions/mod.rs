@@ -1,0 +1,16 @@
+//! Each action, checked against hand computations or esmini 3.6.0's runs.
+
+mod add_delete_entity;
+mod basic;
+mod lane_change;
+mod lane_offset_relative;
+mod lateral_distance;
+mod longitudinal_distance_and_acc;
+mod override_controller_value;
+mod recorded;
+mod routes;
+mod speed;
+mod synchronize;
+mod teleport;
+mod trailers;
+mod trajectory;

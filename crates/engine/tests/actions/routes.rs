@@ -1,0 +1,58 @@
+//! RoutePosition, AssignRouteAction and AcquirePositionAction on the straight fixture road
+//! (one road along +x; lanes −1 and −2 drive along +s, lane 1 against).
+
+use crate::common::*;
+
+fn lane(s: f64, lane: i32) -> String {
+    format!(r#"<Position><LanePosition roadId="1" laneId="{lane}" offset="0" s="{s}"/></Position>"#)
+}
+
+fn route(waypoints: &[(f64, i32)]) -> String {
+    let w: String = waypoints.iter().map(|(s, l)| format!(r#"<Waypoint routeStrategy="shortest">{}</Waypoint>"#, lane(*s, *l))).collect();
+    format!(r#"<Route name="R" closed="false"><ParameterDeclarations/>{w}</Route>"#)
+}
+
+fn stop_at(t: f64) -> String {
+    format!("<ConditionGroup>{}</ConditionGroup>", sim_time(t, "greaterThan", "none", 0.0))
+}
+
+fn route_position(route: &str, in_route: &str) -> String {
+    format!(r#"<Position><RoutePosition><RouteRef>{route}</RouteRef><InRoutePosition>{in_route}</InRoutePosition></RoutePosition></Position>"#)
+}
+
+#[test]
+fn route_position_in_lane_coordinates() {
+    // The route starts at s = 10 on lane −1: path s 100 is road s 110; lane −2's centre is y = −5.25.
+    let r = route(&[(10.0, -1), (500.0, -1)]);
+    let pos = route_position(&r, r#"<FromLaneCoordinates pathS="100" laneId="-2" laneOffset="0.5"/>"#);
+    let init = format!(r#"<Private entityRef="Ego"><PrivateAction><TeleportAction>{pos}</TeleportAction></PrivateAction></Private>"#);
+    let run = run(&xosc(&init, "", &stop_at(1.0)));
+    let e = at(&run, "Ego", 0.0);
+    assert!(close(e.x, 110.0, 1e-9) && close(e.y, -5.25 + 0.5, 1e-9) && close(e.h, 0.0, 1e-9), "{e:?}");
+}
+
+#[test]
+fn route_position_against_s_faces_the_route_direction() {
+    // Lane 1 drives against s: a route from s = 500 to s = 100 on it; path s 50 is road s 450.
+    let r = route(&[(500.0, 1), (100.0, 1)]);
+    let pos = route_position(&r, r#"<FromRoadCoordinates pathS="50" t="1.75"/>"#);
+    let init = format!(r#"<Private entityRef="Ego"><PrivateAction><TeleportAction>{pos}</TeleportAction></PrivateAction></Private>"#);
+    let run = run(&xosc(&init, "", &stop_at(1.0)));
+    let e = at(&run, "Ego", 0.0);
+    assert!(close(e.x, 450.0, 1e-9) && close(e.y, 1.75, 1e-9) && close(e.h, std::f64::consts::PI, 1e-9), "{e:?}");
+}
+
+#[test]
+fn assign_route_and_acquire_position_complete_at_once_and_warn_about_nothing() {
+    let r = route(&[(10.0, -1), (500.0, -1)]);
+    let assign = format!(r#"<PrivateAction><RoutingAction><AssignRouteAction>{r}</AssignRouteAction></RoutingAction></PrivateAction>"#);
+    let acquire =
+        format!(r#"<PrivateAction><RoutingAction><AcquirePositionAction>{}</AcquirePositionAction></RoutingAction></PrivateAction>"#, lane(300.0, -1));
+    let init = format!(r#"{}<Private entityRef="Ego">{assign}{}</Private>"#, teleport("Ego", 10.0, -1), speed_action("step", "time", 0.0, 10.0));
+    let stories = story("Ego", &event("Acquire", "overwrite", &acquire, &trigger(&sim_time(1.0, "greaterThan", "none", 0.0))));
+    let run = run(&xosc(&init, &stories, &stop_at(3.0)));
+    assert!(run.warnings.is_empty(), "{:?}", run.warnings);
+    assert_eq!(event_time(&run, "AcquireAction", "end"), event_time(&run, "AcquireAction", "start"));
+    // The route changes nothing on a road without junctions: 10 m/s along the lane.
+    assert!(close(at(&run, "Ego", 2.0).x, 30.0, 1e-9));
+}

@@ -1,0 +1,4 @@
+//! SynchronizeAction and its tolerances.
+
+mod basic;
+mod tolerance;

@@ -1,0 +1,4 @@
+//! FollowTrajectoryAction, forwards and backwards.
+
+mod follow;
+mod reverse;

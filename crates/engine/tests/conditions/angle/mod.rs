@@ -1,0 +1,5 @@
+//! AngleCondition: heading, pitch and roll, in every frame.
+
+mod heading;
+mod pitch_roll;
+mod trajectory_frame;

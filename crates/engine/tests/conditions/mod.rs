@@ -1,0 +1,7 @@
+//! Triggers and each condition, checked against hand computations or esmini 3.6.0's runs.
+
+mod angle;
+mod basic;
+mod clearance_across_roads;
+mod clearance_offroad_headway;
+mod directed_speed;

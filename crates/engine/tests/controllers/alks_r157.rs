@@ -1,0 +1,66 @@
+//! ALKS_R157SM_Controller (Regulation model) on the straight fixture road, against hand
+//! computations (see `common`: cars 4.5 m long, box centre 1.5 m ahead of the reference point).
+
+use crate::common::*;
+
+fn stop(t: f64) -> String {
+    format!("<ConditionGroup>{}</ConditionGroup>", sim_time(t, "greaterThan", "none", 0.0))
+}
+
+/// Ego at s = 10 driving 20 m/s with the controller activated at init; Target at `target_s`
+/// (same lane) at `target_speed`.
+fn alks_scenario(target_s: f64, target_speed: f64, cruise: bool) -> String {
+    let text = xosc(
+        &format!(
+            "{}{}{}{}<Private entityRef=\"Ego\"><PrivateAction><ActivateControllerAction longitudinal=\"true\" lateral=\"false\"/></PrivateAction></Private>",
+            teleport("Ego", 10.0, -1),
+            init_speed("Ego", "step", "time", 0.0, 20.0),
+            teleport("Target", target_s, -1),
+            init_speed("Target", "step", "time", 0.0, target_speed)
+        ),
+        "",
+        &stop(12.0),
+    );
+    let controller = format!(
+        r#"<ObjectController><Controller name="ALKS_R157SM_Controller"><Properties><Property name="mode" value="override"/><Property name="model" value="Regulation"/><Property name="cruise" value="{cruise}"/><Property name="fullStop" value="true"/></Properties></Controller></ObjectController></ScenarioObject>"#
+    );
+    text.replacen("</ScenarioObject>", &controller, 1)
+}
+
+#[test]
+fn alks_without_lead_keeps_its_set_speed() {
+    // The Target is behind the Ego: nothing ahead, the cruise control keeps the speed at
+    // activation (20 m/s) and the Ego covers 20 m/s × 10 s.
+    let run = run_with(&alks_scenario(5.0, 20.0, true), &engine::Settings { step: 0.01, max_time: 12.0 });
+    let (a, b) = (at(&run, "Ego", 0.0), at(&run, "Ego", 10.0));
+    assert!(close(b.speed, 20.0, 1e-9), "{}", b.speed);
+    assert!(close(b.x - a.x, 200.0, 1e-6), "{}", b.x - a.x);
+}
+
+#[test]
+fn alks_regulation_brakes_at_six_for_a_standing_target() {
+    // Standing Target at s = 100: free space = 100 + 1.5 - 2.25 - (s_ego + 1.5 + 2.25) =
+    // 95.5 - s_ego. Regulation is critical once TTC = gap / 20 < 20 / 12 + 0.35 + 0.1 s, i.e. gap
+    // < 42.33 m, but the Regulation model only sees 46 m ahead (reference point to reference
+    // point), i.e. gap 41.5 m: it brakes from there at 6 m/s² (0.06 m/s per 10 ms step) to a
+    // full stop, 333 steps covering 0.01 × Σ(20 − 0.06 k) = 33.23 m: stops 8.27 m short.
+    let run = run_with(&alks_scenario(100.0, 0.0, false), &engine::Settings { step: 0.01, max_time: 12.0 });
+    let mut braking_steps = 0;
+    for k in 1..1100 {
+        let (a, b) = (at(&run, "Ego", (k - 1) as f64 * 0.01).speed, at(&run, "Ego", k as f64 * 0.01).speed);
+        if b < a && braking_steps == 0 {
+            // Detection range 46 m between reference points: free space 41.5 m.
+            let (e, g) = (at(&run, "Ego", (k - 1) as f64 * 0.01), at(&run, "Target", 0.0));
+            assert!(close(g.x - e.x - 4.5, 41.5, 1e-6), "{}", g.x - e.x - 4.5);
+        }
+        if b < a {
+            assert!(close(a - b, 0.06, 1e-9) || b == 0.0, "step {k}: {a} -> {b}");
+            braking_steps += 1;
+        }
+    }
+    assert!((333..=334).contains(&braking_steps), "{braking_steps}");
+    let (e, g) = (at(&run, "Ego", 11.0), at(&run, "Target", 11.0));
+    assert_eq!(e.speed, 0.0);
+    let gap = g.x - e.x - 4.5;
+    assert!(close(gap, 8.27, 0.01), "{gap}");
+}

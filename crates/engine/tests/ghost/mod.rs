@@ -1,0 +1,6 @@
+//! The ghost of FollowGhost/FollowReference controllers: its head start, trajectories, restarts.
+
+mod absolute_trajectory;
+mod follow;
+mod head_start_holds_others;
+mod restart;

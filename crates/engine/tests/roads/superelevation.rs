@@ -1,0 +1,62 @@
+//! Road geometry the engine applies to lane positions: superelevation (banking). The fixture
+//! banked.xodr is the straight road (along +x) with a roll growing 0.01 rad per metre of s.
+
+use crate::common::*;
+use engine::Settings;
+
+fn run_banked(text: &str) -> engine::Run {
+    let path = fixtures().join("test.xosc");
+    let loaded = openscenario::load_str(&path, text, &Default::default()).expect("test scenario loads");
+    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
+    let net = opendrive::load(fixtures().join("banked.xodr")).expect("fixture road loads").network;
+    engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 1.0 }).expect("simulate")
+}
+
+#[test]
+fn a_banked_lane_lies_along_the_tilted_surface() {
+    // Lane −1's centre is t = −1.75 along the surface. At s = 50 the roll is 0.5 rad (rate
+    // 0.01 /m): horizontally t·cos 0.5 from the reference line, t·sin 0.5 in height, and the
+    // horizontal offset changing by −t·sin(roll)·rate per metre turns the heading by atan of
+    // it. (A positive roll lowers the right side, t < 0, as in OpenDRIVE.)
+    let stop = format!("<ConditionGroup>{}</ConditionGroup>", sim_time(0.5, "greaterThan", "none", 0.0));
+    let run = run_banked(&xosc(&teleport("Ego", 50.0, -1), "", &stop));
+    let e = at(&run, "Ego", 0.0);
+    let (t, roll, rate) = (-1.75f64, 0.5f64, 0.01f64);
+    assert!(close(e.x, 50.0, 1e-9), "{e:?}");
+    assert!(close(e.y, t * roll.cos(), 1e-9), "{e:?}");
+    assert!(close(e.z, t * roll.sin(), 1e-9), "{e:?}");
+    assert!(close(e.h, (-t * roll.sin() * rate).atan(), 1e-9), "{e:?}");
+}
+
+#[test]
+fn a_lane_change_over_a_distance_counts_distance_along_the_road() {
+    // On the straight fixture road: 10 m/s, a sinusoidal lane change from lane −1 to −2 over
+    // 30 m. esmini measures the 30 m along the road (the path itself is longer by about
+    // (1.75·π)² / (4·30) ≈ 0.26 m), so the car advances 30 m in x while changing lanes.
+    let init = format!("{}{}", teleport("Ego", 100.0, -1), init_speed("Ego", "step", "time", 0.0, 10.0));
+    let action = r#"<PrivateAction><LateralAction><LaneChangeAction><LaneChangeActionDynamics dynamicsShape="sinusoidal" value="30" dynamicsDimension="distance"/><LaneChangeTarget><AbsoluteTargetLane value="-2"/></LaneChangeTarget></LaneChangeAction></LateralAction></PrivateAction>"#;
+    let stories = story("Ego", &event("Change", "overwrite", action, &trigger(&sim_time(1.0, "greaterThan", "none", 0.0))));
+    let stop = format!("<ConditionGroup>{}</ConditionGroup>", sim_time(6.0, "greaterThan", "none", 0.0));
+    let run = run(&xosc(&init, &stories, &stop));
+    let t0 = event_time(&run, "ChangeAction", "start").expect("started");
+    let t1 = event_time(&run, "ChangeAction", "end").expect("ended");
+    let (a, b) = (at(&run, "Ego", t0), at(&run, "Ego", t1));
+    assert!(close(b.x - a.x, 30.0, 0.08), "{a:?} {b:?}");
+    assert!(close(b.y, -5.25, 1e-3), "{b:?}");
+}
+
+#[test]
+fn a_teleported_entity_does_not_move_on_the_step_of_the_teleport() {
+    // Ego drives at 10 m/s; at t > 1 s a story TeleportAction puts it at s = 500 on lane −1. The
+    // row after the teleport shows it exactly there (esmini does not move it that step), the
+    // next one 0.1 m further.
+    let init = format!("{}{}", teleport("Ego", 100.0, -1), init_speed("Ego", "step", "time", 0.0, 10.0));
+    let action = format!("<PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction>", lane_pos(500.0, -1));
+    let stories = story("Ego", &event("Jump", "overwrite", &action, &trigger(&sim_time(1.0, "greaterThan", "none", 0.0))));
+    let stop = format!("<ConditionGroup>{}</ConditionGroup>", sim_time(3.0, "greaterThan", "none", 0.0));
+    let run = run(&xosc(&init, &stories, &stop));
+    let t = event_time(&run, "JumpAction", "start").expect("teleported");
+    let (a, b) = (at(&run, "Ego", t + 0.01), at(&run, "Ego", t + 0.02));
+    assert!(close(a.x, 500.0, 1e-9), "{a:?}");
+    assert!(close(b.x, 500.1, 1e-9), "{b:?}");
+}

@@ -1,0 +1,188 @@
+//! Malformed inputs fail with the right kind, message and location.
+
+use crate::common;
+
+use crate::common::{car, pos_of, scenario, teleport, temp_dir};
+use openscenario::{load, load_str, Error, ErrorKind, LoadOptions};
+use std::path::Path;
+
+fn fail(text: &str) -> Error {
+    match load_str(Path::new("/virtual/test.xosc"), text, &LoadOptions::default()) {
+        Err(e) => e,
+        Ok(_) => panic!("expected an error"),
+    }
+}
+
+fn at(e: &Error) -> (u32, u32) {
+    (e.location.line, e.location.col)
+}
+
+#[test]
+fn unclosed_tag() {
+    let text = scenario("", "", r#"<ScenarioObject name="Ego">"#, "", "");
+    let e = fail(&text);
+    assert_eq!(e.kind, ErrorKind::Xml);
+    assert!(e.message.contains("not well-formed XML"), "{e}");
+    // The parser notices at the closing tag of the parent.
+    assert_eq!(e.location.line, pos_of(&text, "</Entities>").0, "{e}");
+    assert!(e.to_string().starts_with("/virtual/test.xosc:"), "{e}");
+}
+
+#[test]
+fn undeclared_parameter() {
+    let text = scenario("", "", &car("Ego"), &teleport("Ego", "$Missing"), "");
+    let e = fail(&text);
+    assert_eq!(e.kind, ErrorKind::UndeclaredParameter);
+    assert!(e.message.contains("$Missing is not declared"), "{e}");
+    assert_eq!(at(&e), pos_of(&text, "$Missing"));
+}
+
+#[test]
+fn undeclared_parameter_inside_expression() {
+    let text = scenario("", "", &car("Ego"), &teleport("Ego", "${1 + $Nope}"), "");
+    let e = fail(&text);
+    assert_eq!(e.kind, ErrorKind::UndeclaredParameter);
+    assert!(e.message.contains("$Nope"), "{e}");
+    // Column of `$Nope` inside the attribute value.
+    assert_eq!(at(&e), pos_of(&text, "$Nope}"));
+}
+
+#[test]
+fn parameter_cycle() {
+    let params = r#"<ParameterDeclaration name="A" parameterType="double" value="$B"/>
+    <ParameterDeclaration name="B" parameterType="double" value="${$A + 1}"/>"#;
+    let text = scenario(params, "", &car("Ego"), &teleport("Ego", "$A"), "");
+    let e = fail(&text);
+    assert_eq!(e.kind, ErrorKind::ParameterCycle);
+    assert!(e.message.contains("A -> B -> A"), "{e}");
+    assert_eq!(at(&e), pos_of(&text, "$B\""));
+}
+
+#[test]
+fn bad_number() {
+    let text = scenario("", "", &car("Ego"), &teleport("Ego", "12.5.3"), "");
+    let e = fail(&text);
+    assert_eq!(e.kind, ErrorKind::Value);
+    assert!(e.message.contains("attribute 'x' of <WorldPosition>: expected a number, found '12.5.3'"), "{e}");
+    assert_eq!(at(&e), pos_of(&text, "12.5.3"));
+}
+
+#[test]
+fn bad_number_through_a_parameter_names_both() {
+    let params = r#"<ParameterDeclaration name="X" parameterType="string" value="far"/>"#;
+    let text = scenario(params, "", &car("Ego"), &teleport("Ego", "$X"), "");
+    let e = fail(&text);
+    assert_eq!(e.kind, ErrorKind::Value);
+    assert!(e.message.contains("found 'far' (from '$X')"), "{e}");
+    assert_eq!(at(&e), pos_of(&text, "$X\""));
+}
+
+#[test]
+fn expression_error_position() {
+    let text = scenario("", "", &car("Ego"), &teleport("Ego", "${2 * (3 + }"), "");
+    let e = fail(&text);
+    assert_eq!(e.kind, ErrorKind::Expression);
+    let (line, col) = pos_of(&text, "${2 * (3 + }");
+    // The expression body "2 * (3 + " ends at its column 10; the value starts 2 characters
+    // earlier ("${"), so the error is 11 characters after the value's first character.
+    assert_eq!(at(&e), (line, col + 11), "{e}");
+    assert!(e.message.contains("at column 12"), "{e}");
+}
+
+#[test]
+fn bad_enumeration_lists_the_choices() {
+    let text = scenario("", "", &car("Ego").replace("vehicleCategory=\"car\"", "vehicleCategory=\"spaceship\""), "", "");
+    let e = fail(&text);
+    assert_eq!(e.kind, ErrorKind::Value);
+    assert!(e.message.contains("expected one of car, van, truck"), "{e}");
+    assert_eq!(at(&e), pos_of(&text, "spaceship"));
+}
+
+#[test]
+fn missing_required_attribute() {
+    let text = scenario("", "", &car("Ego").replace(" maxSpeed=\"70\"", ""), "", "");
+    let e = fail(&text);
+    assert_eq!(e.kind, ErrorKind::Structure);
+    assert!(e.message.contains("<Performance> needs a 'maxSpeed' attribute"), "{e}");
+    assert_eq!(at(&e), pos_of(&text, "<Performance"));
+}
+
+#[test]
+fn missing_file_names_the_path() {
+    let e = load(Path::new("/nonexistent/dir/scenario.xosc"), &LoadOptions::default()).expect_err("error");
+    assert_eq!(e.kind, ErrorKind::Io);
+    assert!(e.message.contains("/nonexistent/dir/scenario.xosc"), "{e}");
+}
+
+#[test]
+fn wrong_root_element() {
+    let e = fail("<?xml version=\"1.0\"?>\n<NotOpenScenario/>\n");
+    assert_eq!(e.kind, ErrorKind::Structure);
+    assert!(e.message.contains("expected root element <OpenSCENARIO>"), "{e}");
+    assert_eq!(at(&e), (2, 1));
+}
+
+fn write_catalog(dir: &Path) {
+    let cat = format!(
+        r#"<?xml version="1.0"?>
+<OpenSCENARIO>
+  <FileHeader revMajor="1" revMinor="0" date="2020-01-01T00:00:00" description="c" author="c"/>
+  <Catalog name="Cars">
+    {}
+  </Catalog>
+</OpenSCENARIO>
+"#,
+        common::VEHICLE
+    );
+    std::fs::create_dir_all(dir.join("Vehicles")).expect("mkdir");
+    std::fs::write(dir.join("Vehicles/CarCatalog.xosc"), cat).expect("write");
+}
+
+#[test]
+fn missing_catalog_entry() {
+    let dir = temp_dir("missing-entry");
+    write_catalog(&dir);
+    let entity = r#"<ScenarioObject name="Ego"><CatalogReference catalogName="Cars" entryName="truck"/></ScenarioObject>"#;
+    let text = scenario("", r#"<VehicleCatalog><Directory path="Vehicles"/></VehicleCatalog>"#, entity, "", "");
+    std::fs::write(dir.join("s.xosc"), &text).expect("write");
+    let e = load(&dir.join("s.xosc"), &LoadOptions::default()).expect_err("error");
+    assert_eq!(e.kind, ErrorKind::MissingCatalogEntry);
+    assert!(e.message.contains("catalog 'Cars'") && e.message.contains("no entry named 'truck'"), "{e}");
+    assert_eq!(at(&e), pos_of(&text, "<CatalogReference"));
+}
+
+#[test]
+fn missing_catalog_names_the_directories_tried() {
+    let dir = temp_dir("missing-catalog");
+    write_catalog(&dir);
+    let entity = r#"<ScenarioObject name="Ego"><CatalogReference catalogName="Trucks" entryName="car"/></ScenarioObject>"#;
+    let text = scenario("", r#"<VehicleCatalog><Directory path="Vehicles"/></VehicleCatalog>"#, entity, "", "");
+    std::fs::write(dir.join("s.xosc"), &text).expect("write");
+    let e = load(&dir.join("s.xosc"), &LoadOptions::default()).expect_err("error");
+    assert_eq!(e.kind, ErrorKind::MissingCatalog);
+    assert!(e.message.contains("catalog 'Trucks'"), "{e}");
+    assert!(e.message.contains(&dir.join("Vehicles").display().to_string()), "{e}");
+    assert_eq!(at(&e), pos_of(&text, "<CatalogReference"));
+}
+
+#[test]
+fn truncated_documents_fail_cleanly() {
+    let text = scenario("", "", &car("Ego"), &teleport("Ego", "1"), "");
+    for cut in [10, 100, text.len() / 2, text.len() - 20] {
+        let e = fail(&text[..cut]);
+        assert_eq!(e.kind, ErrorKind::Xml, "cut at {cut}: {e}");
+    }
+}
+
+#[test]
+fn a_document_cut_off_is_reported_where_it_ends() {
+    let text = scenario("", "", &car("Ego"), &teleport("Ego", "1"), "");
+    let cut = &text[..text.len() / 2];
+    let e = fail(cut);
+    assert_eq!(e.kind, ErrorKind::Xml, "{e}");
+    // The end of the cut text: the line count and the length of the last line, by hand.
+    let lines: Vec<&str> = cut.split('\n').collect();
+    let want = (lines.len() as u32, lines.last().map_or(0, |l| l.chars().count()) as u32 + 1);
+    assert_eq!(at(&e), want, "{e}");
+    assert_ne!(at(&e), (1, 1), "{e}");
+}

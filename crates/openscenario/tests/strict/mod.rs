@@ -1,0 +1,4 @@
+//! Strict reading: what it rejects, and that it rejects nothing esmini accepts in the corpus.
+
+mod corpus;
+mod problems;
