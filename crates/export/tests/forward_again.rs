@@ -146,9 +146,9 @@ fn forward(input: &Path, exported: &Result<PathBuf, String>) -> Result<Vec<Strin
     }
     let xosc = exported.clone()?;
     let name = export::scenario_name(input);
-    let request = convert::Request { path: &xosc, name: &name, config: 1, parameters: &[], source: "export round trip".into() };
+    let request = convert::Request { source: "export round trip".into(), ..convert::Request::named(&xosc, &name) }.keeping_model();
     let options = convert::ConvertOptions { dt: s.header.time_step_size, ..Default::default() };
-    let (conversion, model) = convert::convert_scenario_keeping(&request, &options, true);
+    let (conversion, model) = convert::convert(&request, &options);
     if let Err(f) = conversion.result {
         return Ok(vec![format!("convert fails: {}", f.message)]);
     }

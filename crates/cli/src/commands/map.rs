@@ -47,7 +47,7 @@ pub(crate) fn run(args: &MapArgs) -> Result<(), Failure> {
     let n_warn = loaded.warnings.len() + result.warnings.len();
     if args.verbose {
         for w in loaded.warnings.iter().chain(&result.warnings) {
-            eprintln!("{w}");
+            eprintln!("{}", w.labelled("warning"));
         }
     }
     let stem = args.file.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();

@@ -3,3 +3,8 @@
 
 mod checker_suite;
 mod findings;
+mod lenient_fallbacks;
+mod mutations;
+mod reference_positions;
+mod second_checker_rules;
+mod valid_inputs;

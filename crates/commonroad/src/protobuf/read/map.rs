@@ -11,7 +11,7 @@ use super::super::signs::sign_country;
 use super::values::{enum_from, occupancy, point};
 use super::Bad;
 use crate::geometry::Point;
-use crate::header::{GeoTransformation, Location};
+use crate::header::{GeoLocation, GeoTransformation};
 use crate::ids::{IncomingId, IntersectionId, LaneletId, ObstacleId, TrafficLightId, TrafficSignId};
 use crate::intersection::{Incoming, Intersection};
 use crate::lanelet::{Adjacent, DrivingDir, Lanelet, LaneletBounds, LaneletType, LineMarking, RoadUser, StopLine};
@@ -19,8 +19,8 @@ use crate::obstacle::{EnvironmentObstacle, EnvironmentObstacleType};
 use crate::scenario::LaneletNetwork;
 use crate::traffic::{CycleElement, TrafficLight, TrafficLightDirection, TrafficSign, TrafficSignElement};
 
-pub(super) fn location(l: &mp::Location) -> Location {
-    Location {
+pub(super) fn location(l: &mp::Location) -> GeoLocation {
+    GeoLocation {
         geo_name_id: i64::from(l.geo_name_id),
         gps_latitude: l.gps_latitude,
         gps_longitude: l.gps_longitude,
