@@ -10,7 +10,7 @@ mod serve_extra;
 mod shared_options;
 
 use clap::{Parser, Subcommand};
-use commands::{check, convert, inspect, map, render, serve, simulate};
+use commands::{check, convert, export, inspect, map, render, serve, simulate};
 use std::process::ExitCode;
 
 /// Convert OpenSCENARIO scenarios (with their OpenDRIVE maps) into CommonRoad scenarios.
@@ -30,6 +30,10 @@ enum Command {
     Convert(Box<convert::ConvertArgs>),
     /// Convert an OpenDRIVE road network (.xodr) into a CommonRoad lanelet network (.xml).
     Map(map::MapArgs),
+    /// The way back: CommonRoad scenarios (2018b/2020a XML, 2024 protobuf) as OpenSCENARIO
+    /// (1.3, or 1.0) and OpenDRIVE, for OpenSCENARIO simulators to replay.
+    #[command(long_about = export::ABOUT)]
+    Export(Box<export::ExportArgs>),
     /// Load an OpenSCENARIO file and show what it resolves to: entities, storyboard,
     /// parameters, warnings.
     Inspect(inspect::InspectArgs),
@@ -65,6 +69,7 @@ fn main() -> ExitCode {
     let result = match &cli.command {
         Command::Convert(args) => convert::run(args),
         Command::Map(args) => map::run(args),
+        Command::Export(args) => export::run(args),
         Command::Inspect(args) => inspect::run(args),
         Command::Simulate(args) => simulate::run(args),
         Command::Render(args) => render::run(args),

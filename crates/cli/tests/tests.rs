@@ -1,5 +1,5 @@
 //! The `osc2cr` binary's tests, one test binary whose modules are its commands: `convert/`,
-//! `check/`, `render/`, `map`, `simulate`, `serve_udp`; then `python_package/` (the wheel as a
+//! `check/`, `render/`, `export/`, `map`, `simulate`, `serve_udp`; then `python_package/` (the wheel as a
 //! user installs it), `evaluation` (the paper's evaluation script), `packaging` (every crate
 //! packs for crates.io) and `workspace` (every test file of the workspace is compiled). `common`
 //! runs the binary and walks the files it writes; inputs that are not in the corpus are in
@@ -10,6 +10,7 @@ mod common;
 mod check;
 mod convert;
 mod evaluation;
+mod export;
 mod map;
 mod packaging;
 mod python_package;

@@ -1,13 +1,16 @@
 //! Steps 3–5 of the paper's algorithm: the lanelet network and the simulated trace become one
 //! CommonRoad scenario with obstacles and the ego's planning problem, checked by
-//! `commonroad::Scenario::validate`.
+//! `commonroad::Scenario::validate`. A scenario whose entities carry CommonRoad planning
+//! problems (`osc2cr export`'s, see `carried.rs`) gets those, and their entities are egos, not
+//! obstacles.
 
 use std::collections::BTreeSet;
 
-use commonroad::{Header, Lanelet, LaneletBounds, LaneletNetwork, LaneletType, PlanningProblemSet, Point, Scenario, State, Tag};
+use commonroad::{Header, Lanelet, LaneletBounds, LaneletNetwork, LaneletType, PlanningProblem, PlanningProblemSet, Point, Scenario, State, Tag};
 use engine::Trace;
 use openscenario::Entity;
 
+use crate::carried::{carried_problems, retarget};
 use crate::ego::choose_ego;
 use crate::goal::planning_problem;
 use crate::obstacles::obstacles;
@@ -42,7 +45,13 @@ pub fn assemble(
     options: &ConvertOptions,
 ) -> Result<Assembled, String> {
     let (tracks, mut warnings) = tracks(trace, entities, options.dt);
-    let ego_index = choose_ego(&tracks, &options.ego)?;
+    // planning problems the scenario carries (an `osc2cr export`): their entities are the egos
+    let carried = carried_problems(entities, &mut warnings);
+    let carried_ego = carried.iter().find_map(|c| tracks.iter().position(|t| t.entity == c.entity));
+    let ego_index = match carried_ego {
+        Some(i) => i,
+        None => choose_ego(&tracks, &options.ego)?,
+    };
     let ego = &tracks[ego_index];
     let (first, last) = match &ego.placement {
         Placement::Moving(runs) => (runs.first().and_then(|r| r.first()).copied(), runs.last().and_then(|r| r.last()).copied()),
@@ -76,8 +85,12 @@ pub fn assemble(
         );
     }
 
-    let skip = options.drop_ego.then_some(ego.entity.as_str());
-    let built = obstacles(&tracks, skip, &mut ids);
+    let skip: Vec<&str> = if carried.is_empty() {
+        options.drop_ego.then_some(ego.entity.as_str()).into_iter().collect()
+    } else {
+        carried.iter().map(|c| c.entity.as_str()).collect()
+    };
+    let built = obstacles(&tracks, &skip, &mut ids);
     warnings.extend(built.warnings);
     let n_obstacles = built.dynamic.len() + built.statics.len() + built.environment.len();
     scenario.dynamic_obstacles = built.dynamic;
@@ -85,9 +98,15 @@ pub fn assemble(
     scenario.environment_obstacles = built.environment;
     let names = built.names;
 
-    let problem =
-        planning_problem(ids.planning_problem(), &first, &last, &options.goal).map_err(|e| format!("planning problem of the ego {:?}: {e}", ego.entity))?;
-    let problems = PlanningProblemSet { problems: vec![problem] };
+    let problems = if carried.is_empty() {
+        let problem =
+            planning_problem(ids.planning_problem(), &first, &last, &options.goal).map_err(|e| format!("planning problem of the ego {:?}: {e}", ego.entity))?;
+        PlanningProblemSet { problems: vec![problem] }
+    } else {
+        let network = (lanelets > 0).then_some(&scenario.network);
+        let problems = carried.iter().map(|c| PlanningProblem { id: ids.planning_problem(), ..retarget(c, network, &mut warnings) }).collect();
+        PlanningProblemSet { problems }
+    };
     let found = scenario.validate(Some(&problems));
     if !found.is_empty() {
         let list: Vec<String> = found.iter().take(5).map(ToString::to_string).collect();

@@ -19,12 +19,12 @@ pub struct Obstacles {
     pub warnings: Vec<String>,
 }
 
-/// Builds the obstacles of `tracks`, leaving out the entity named `skip` (the ego under
-/// `--drop-ego`). Ids come from `ids` in track order.
-pub fn obstacles(tracks: &[Track], skip: Option<&str>, ids: &mut IdAllocator) -> Obstacles {
+/// Builds the obstacles of `tracks`, leaving out the entities named in `skip` (the ego under
+/// `--drop-ego`, the egos of carried planning problems). Ids come from `ids` in track order.
+pub fn obstacles(tracks: &[Track], skip: &[&str], ids: &mut IdAllocator) -> Obstacles {
     let mut out = Obstacles::default();
     for t in tracks {
-        if skip == Some(t.entity.as_str()) {
+        if skip.contains(&t.entity.as_str()) {
             continue;
         }
         match &t.placement {

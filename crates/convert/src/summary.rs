@@ -83,10 +83,10 @@ impl Summary {
 /// The table as aligned text.
 pub fn render(rows: &[FolderSummary]) -> String {
     let header = ["folder", "scenarios", "converted", "success", "mean time", "mean duration"];
-    let cells: Vec<[String; 6]> = rows
+    let cells: Vec<Vec<String>> = rows
         .iter()
         .map(|r| {
-            [
+            vec![
                 r.folder.clone(),
                 r.scenarios.to_string(),
                 r.converted.to_string(),
@@ -96,15 +96,21 @@ pub fn render(rows: &[FolderSummary]) -> String {
             ]
         })
         .collect();
-    let mut width = header.map(str::len);
-    for c in &cells {
+    render_table(&header, &cells)
+}
+
+/// A table as aligned text: the header, a rule, a line per row; the first column left-aligned,
+/// the others right-aligned (`osc2cr export`'s summary is drawn with it too).
+pub fn render_table(header: &[&str], cells: &[Vec<String>]) -> String {
+    let mut width: Vec<usize> = header.iter().map(|h| h.chars().count()).collect();
+    for c in cells {
         for (w, s) in width.iter_mut().zip(c) {
             *w = (*w).max(s.chars().count());
         }
     }
     let mut out = String::new();
     let line = |out: &mut String, c: &[String]| {
-        for (i, (s, w)) in c.iter().zip(width).enumerate() {
+        for (i, (s, w)) in c.iter().zip(&width).enumerate() {
             let pad = w.saturating_sub(s.chars().count());
             if i == 0 {
                 let _ = write!(out, "{s}{}", " ".repeat(pad));
@@ -114,10 +120,10 @@ pub fn render(rows: &[FolderSummary]) -> String {
         }
         out.push('\n');
     };
-    line(&mut out, &header.map(String::from));
+    line(&mut out, &header.iter().map(|h| h.to_string()).collect::<Vec<_>>());
     let rule: Vec<String> = width.iter().map(|w| "-".repeat(*w)).collect();
     line(&mut out, &rule);
-    for c in &cells {
+    for c in cells {
         line(&mut out, c);
     }
     out

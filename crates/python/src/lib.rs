@@ -5,9 +5,11 @@
 //! GIL released, so Python threads (a Dask worker's, for one) convert in parallel.
 //! `closed_loop`: a scenario stepped from Python (`osc2cr.Simulation`), its inputs
 //! (`inputs`), pictures of the run with `render`; `benchmark`: the engine's speed in Rust for
-//! the closed-loop benchmark to compare with.
+//! the closed-loop benchmark to compare with; `export`: the way back (`osc2cr.export`,
+//! CommonRoad to OpenSCENARIO + OpenDRIVE through the `export` crate).
 //!
-//! It owns only the mapping between Python values and the API of `convert` (and `render`):
+//! It owns only the mapping between Python values and the API of `convert` (and `render`,
+//! `export`):
 //! it knows nothing of commonroad-io (the Python side reads the XML, or the 2024 files, and
 //! builds observations with it) and does no conversion or simulation itself. A conversion
 //! returns the 2020a XML text or the 2024 format's three files as `bytes`, by the `format`
@@ -20,6 +22,7 @@
 mod benchmark;
 mod closed_loop;
 mod errors;
+mod export;
 mod inputs;
 mod options;
 mod variations;
@@ -102,6 +105,7 @@ fn _osc2cr(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(convert_variation, m)?)?;
     m.add_function(wrap_pyfunction!(variations::variations, m)?)?;
     m.add_function(wrap_pyfunction!(option_names, m)?)?;
+    m.add_function(wrap_pyfunction!(export::export_file, m)?)?;
     m.add_class::<Variations>()?;
     m.add_class::<Session>()?;
     m.add_function(wrap_pyfunction!(benchmark::engine_timing, m)?)?;

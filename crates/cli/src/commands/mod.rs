@@ -3,6 +3,7 @@
 
 pub(crate) mod check;
 pub(crate) mod convert;
+pub(crate) mod export;
 pub(crate) mod inspect;
 pub(crate) mod map;
 pub(crate) mod render;

@@ -17,6 +17,7 @@ use std::sync::OnceLock;
 
 mod closed_loop;
 mod closed_loop_example;
+mod export;
 mod osi;
 
 /// What the test environment holds besides the package (a change remakes the environment).

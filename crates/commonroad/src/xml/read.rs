@@ -1,5 +1,7 @@
 //! The CommonRoad 2020a XML reader: the inverse of [`super::write_scenario`], for tools that
-//! look at a file (e.g. `osc2cr render`). It is lenient where commonroad-io is lenient
+//! look at a file (e.g. `osc2cr render`, `osc2cr export`). It reads 2018b files too: their
+//! `<obstacle>` elements (static or dynamic by `<role>`) become the 2020a elements, uncertain
+//! state values their midpoints. It is lenient where commonroad-io is lenient
 //! (missing optional state fields become 0.0, unknown elements are skipped with a warning)
 //! and strict where the model is (equal bound point counts, per-element obstacle types).
 //! Every error and warning names the file, line and column.
@@ -14,7 +16,8 @@ use std::path::Path;
 
 use diagnostic::Diagnostic;
 
-use crate::planning::PlanningProblemSet;
+use crate::lanelet::Lanelet;
+use crate::planning::{PlanningProblem, PlanningProblemSet};
 use crate::scenario::Scenario;
 use crate::Error;
 
@@ -64,10 +67,45 @@ pub fn read_scenario_str(text: &str, path: &Path) -> Result<ReadScenario, Error>
                     scenario.dynamic_obstacles.push(o);
                 }
             }
+            "obstacle" => match obstacles::obstacle_2018b(&mut cx, child)? {
+                Some(obstacles::Obstacle2018b::Static(o)) => scenario.static_obstacles.push(o),
+                Some(obstacles::Obstacle2018b::Dynamic(o)) => scenario.dynamic_obstacles.push(o),
+                None => {}
+            },
             "environmentObstacle" => scenario.environment_obstacles.push(obstacles::environment_obstacle(&mut cx, child)?),
             "planningProblem" => problems.problems.push(planning::planning_problem(&mut cx, child)?),
             other => cx.warn(child, format!("element <{other}> is not read; skipped")),
         }
     }
     Ok(ReadScenario { scenario, problems, warnings: cx.into_warnings() })
+}
+
+/// A planning problem read from [`super::write_planning_problem`]'s text, with the lanelets
+/// its goals name as they were in the network it came from.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ReadPlanningProblem {
+    pub problem: PlanningProblem,
+    pub lanelets: Vec<Lanelet>,
+    pub warnings: Vec<Diagnostic>,
+}
+
+/// Reads the text [`super::write_planning_problem`] writes; `path` is only used in messages.
+pub fn read_planning_problem_str(text: &str, path: &Path) -> Result<ReadPlanningProblem, Error> {
+    let doc = roxmltree::Document::parse(text).map_err(|source| Error::Xml { path: path.to_path_buf(), source })?;
+    let mut cx = cursor::Cursor::new(&doc, path);
+    let root = doc.root_element();
+    if root.tag_name().name() != super::PLANNING_PROBLEM_ROOT {
+        return Err(cx.err(root, format!("expected the root element <{}>", super::PLANNING_PROBLEM_ROOT)));
+    }
+    let mut problem = None;
+    let mut lanelets = Vec::new();
+    for child in root.children().filter(|n| n.is_element()) {
+        match child.tag_name().name() {
+            "planningProblem" if problem.is_none() => problem = Some(planning::planning_problem(&mut cx, child)?),
+            "lanelet" => lanelets.push(network::lanelet(&mut cx, child)?),
+            other => cx.warn(child, format!("element <{other}> is not read; skipped")),
+        }
+    }
+    let problem = problem.ok_or_else(|| cx.err(root, "no <planningProblem>"))?;
+    Ok(ReadPlanningProblem { problem, lanelets, warnings: cx.into_warnings() })
 }

@@ -491,3 +491,26 @@ fn planning_problem(e: &mut Emitter, p: &PlanningProblem) -> Result<(), Error> {
     e.close("planningProblem");
     Ok(())
 }
+
+/// The root element of [`write_planning_problem`]'s text.
+pub const PLANNING_PROBLEM_ROOT: &str = "commonRoadPlanningProblem";
+
+/// One planning problem as a self-contained piece of CommonRoad 2020a XML on one line (no
+/// prolog): `<commonRoadPlanningProblem>` holding the `<planningProblem>` element and copies of
+/// the `<lanelet>` elements `lanelets` (those its goals name, so that a reader can find them
+/// again in another network). For carrying a planning problem inside another format
+/// (`osc2cr export` puts it in an OpenSCENARIO property); read back with
+/// [`super::read_planning_problem_str`]. Decimals as in a scenario file (6 digits).
+pub fn write_planning_problem(problem: &PlanningProblem, lanelets: &[&Lanelet]) -> Result<String, Error> {
+    let mut e = Emitter::with_capacity(1024);
+    e.open(PLANNING_PROBLEM_ROOT, &[])?;
+    with_context(&mut e, format!("planningProblem {}", problem.id), |e| planning_problem(e, problem))?;
+    for l in lanelets {
+        with_context(&mut e, format!("lanelet {}", l.id), |e| lanelet(e, l))?;
+    }
+    e.close(PLANNING_PROBLEM_ROOT);
+    let text = String::from_utf8(e.finish()).unwrap_or_default();
+    // one line: the lines' indentation and breaks are whitespace between elements (no element
+    // of the format has mixed content), so joining the trimmed lines keeps the meaning
+    Ok(text.lines().skip(1).map(str::trim).collect())
+}

@@ -4,5 +4,6 @@ mod atomic_write;
 mod cr_check_oracle;
 mod escaping;
 mod number_format;
+mod read_2018b;
 mod read_back;
 mod structure;

@@ -6,6 +6,8 @@
     files = osc2cr.convert_to_protobuf("cut_in.xosc")           # the 2024 format's three files
     for v in osc2cr.variations("cut-in_parameter_set.xosc"):    # lazy: one at a time
         print(v.index, v.parameters, len(v.xml))
+    osc2cr.export("USA_US101-4_1_T-1.xml", "out/")              # the way back: .xosc + .xodr
+    osc2cr.export(scenario, "out/", problems)                   # a commonroad-io Scenario too
 
     sim = osc2cr.Simulation("cut-in.xosc", external=["Ego"])   # closed loop
     obs = sim.reset()                                           # commonroad-io objects
@@ -107,6 +109,8 @@ __all__ = [
     "convert_variation_to_protobuf",
     "convert_variation_to_xml",
     "count_variations",
+    "export",
+    "Exported",
     "output_name",
     "read_protobuf",
     "read_protobuf_files",
@@ -162,6 +166,18 @@ def _write_whole(path: str, data: bytes) -> None:
         raise
 
 
+class Exported(NamedTuple):
+    """What :func:`export` wrote."""
+
+    xosc: str
+    """The OpenSCENARIO file, ``<out_dir>/<name>.xosc``."""
+    xodr: Optional[str]
+    """The OpenDRIVE file of its lanelet network, ``<out_dir>/<COUNTRY>_<hash>.xodr`` (named by its
+    content, shared by every scenario on the same network); None when the network has no lanelet."""
+    warnings: list[str]
+    """What the OpenSCENARIO file says approximately or not at all (also issued as warnings)."""
+
+
 class Variation(NamedTuple):
     """One converted variation of a parameter distribution."""
 
@@ -173,6 +189,84 @@ class Variation(NamedTuple):
     """The CommonRoad 2020a XML text (None with ``format="2024"``)."""
     protobuf: Optional[Protobuf2024] = None
     """The 2024 files (with ``format="2024"``; None otherwise)."""
+
+
+def export(
+    scenario_or_path: Union[PathLike, Scenario],
+    out_dir: PathLike,
+    planning_problems: Optional[PlanningProblemSet] = None,
+    *,
+    osc: str = "1.3",
+    ego_controller: str = "default",
+    play_to_end: bool = False,
+    name: Optional[str] = None,
+) -> Exported:
+    """Exports a CommonRoad scenario as OpenSCENARIO + OpenDRIVE into ``out_dir``, as
+    ``osc2cr export FILE -o OUT_DIR`` does (the way back of :func:`convert`).
+
+    ``scenario_or_path`` is a CommonRoad file (2018b or 2020a XML, or a 2024 scenario file
+    ``NAME-SC.pb`` with its dynamic file and map beside it) or a commonroad-io ``Scenario``, with
+    its ``PlanningProblemSet`` as ``planning_problems`` (each planning problem becomes an ego);
+    a ``Scenario`` is written to 2020a XML with commonroad-io's own writer first (10 decimals),
+    named ``name`` (default: its scenario id). ``osc``: "1.3", or "1.0" for simulators that read
+    only 1.0; ``ego_controller``: "default" (the ego keeps its lane and speed) or "external" (an
+    outside driver, esmini's ExternalController); ``play_to_end``: reaching the goal does not end
+    the run. Raises :class:`ConversionError` when nothing could be written, ``ValueError`` for a
+    bad option; warnings are issued as :class:`ConversionWarning`.
+    """
+    out_dir = os.fspath(out_dir)
+    if isinstance(scenario_or_path, (str, os.PathLike)):
+        if planning_problems is not None:
+            raise TypeError("planning_problems goes with a commonroad-io Scenario; a file holds its own")
+        xosc, xodr, found = _osc2cr.export_file(os.fspath(scenario_or_path), out_dir, osc, ego_controller, play_to_end)
+    else:
+        stem = name or "".join(c for c in str(scenario_or_path.scenario_id) if c.isalnum() or c in "-_") or "scenario"
+        with tempfile.TemporaryDirectory(prefix="osc2cr-export-") as tmp:
+            path = os.path.join(tmp, f"{stem}.xml")
+            _write_2020a(scenario_or_path, planning_problems, path)
+            xosc, xodr, found = _osc2cr.export_file(path, out_dir, osc, ego_controller, play_to_end)
+    for w in found:
+        warnings.warn(w, ConversionWarning, stacklevel=2)
+    return Exported(os.fspath(xosc), None if xodr is None else os.fspath(xodr), list(found))
+
+
+def _write_2020a(scenario: Scenario, problems: Optional[PlanningProblemSet], path: str) -> None:
+    """Writes a commonroad-io scenario as 2020a XML with commonroad-io's writer, 10 decimals:
+    2024.x (author and the like on the scenario) and 2026.x (on its ``file_information``, the
+    lanelet network's ``location``, protobuf unless XML is asked for)."""
+    try:
+        from commonroad.common.file_writer import CommonRoadFileWriter, OverwriteExistingFile
+        from commonroad.planning.planning_problem import PlanningProblemSet as _Set
+    except ImportError as e:  # pragma: no cover - depends on the environment
+        raise ImportError("exporting a commonroad-io Scenario needs commonroad-io (pip install commonroad-io)") from e
+    init = inspect.signature(CommonRoadFileWriter.__init__).parameters
+    info = getattr(scenario, "file_information", None) or scenario
+
+    def said(name: str) -> str:
+        return getattr(info, name, None) or ""
+
+    options = {
+        "author": said("author") or "osc2cr",
+        "affiliation": said("affiliation"),
+        "source": said("source"),
+        "tags": set(getattr(scenario, "tags", None) or ()),
+    }
+    if "decimal_precision" in init:
+        options["decimal_precision"] = 10
+    if "file_format" in init:
+        from commonroad.common.util import FileFormat
+
+        options["file_format"] = FileFormat.XML
+    if "location" in init:
+        location = getattr(scenario, "location", None) or getattr(scenario.lanelet_network, "location", None)
+        if location is not None:
+            options["location"] = location
+    writer = CommonRoadFileWriter(scenario, problems if problems is not None else _Set(), **options)
+    write = inspect.signature(writer.write_to_file).parameters
+    if "filename_2020a" in write:
+        writer.write_to_file(filename_2020a=path, overwrite_existing_file=OverwriteExistingFile.ALWAYS)
+    else:
+        writer.write_to_file(path, OverwriteExistingFile.ALWAYS)
 
 
 def _warn(found: list[tuple[str, str]]) -> None:

@@ -121,6 +121,47 @@ impl<'d, 'i> Cursor<'d, 'i> {
         }
     }
 
+    /// An exact value, or the midpoint of an interval (`uncertain` is set then).
+    pub(crate) fn exact_or_midpoint(&self, node: Node, uncertain: &mut bool) -> Result<f64, Error> {
+        if child(node, "intervalStart").is_some() {
+            let (a, b) = self.interval(node)?;
+            *uncertain = true;
+            return Ok(0.5 * (a + b));
+        }
+        self.exact(node)
+    }
+
+    /// Like [`Cursor::exact_or_midpoint`] for an optional child.
+    pub(crate) fn exact_or_midpoint_child(&self, node: Node, name: &str, uncertain: &mut bool) -> Result<Option<f64>, Error> {
+        child(node, name).map(|c| self.exact_or_midpoint(c, uncertain)).transpose()
+    }
+
+    /// `<position>`'s point, or the centre of the shape it gives instead (a rectangle's or
+    /// circle's `center`, a polygon's vertex mean; `uncertain` is set then).
+    pub(crate) fn position_point_or_centre(&self, node: Node, uncertain: &mut bool) -> Result<Point, Error> {
+        let pos = self.req(node, "position")?;
+        if let Some(p) = child(pos, "point") {
+            return self.point(p);
+        }
+        let shape = pos.children().find(|n| n.is_element()).ok_or_else(|| self.err(pos, "<position> is empty"))?;
+        *uncertain = true;
+        match shape.tag_name().name() {
+            "rectangle" | "circle" => match child(shape, "center") {
+                Some(c) => self.point(c),
+                None => Ok(Point::new(0.0, 0.0)),
+            },
+            "polygon" => {
+                let points = children(shape, "point").map(|p| self.point(p)).collect::<Result<Vec<_>, _>>()?;
+                if points.is_empty() {
+                    return Err(self.err(shape, "<polygon> has no point"));
+                }
+                let n = points.len() as f64;
+                Ok(Point::new(points.iter().map(|p| p.x).sum::<f64>() / n, points.iter().map(|p| p.y).sum::<f64>() / n))
+            }
+            other => Err(self.err(shape, format!("<position>: expected a point or a shape, found <{other}>"))),
+        }
+    }
+
     /// A positive integer attribute (`id` or `ref`).
     pub(super) fn id_attr(&self, node: Node, attr: &str) -> Result<u64, Error> {
         let raw = node.attribute(attr).ok_or_else(|| self.err(node, format!("<{}> needs an attribute {attr}", node.tag_name().name())))?;

@@ -1,0 +1,9 @@
+//! The tests of `export`, one binary: a module per feature. The acceptance tests of issue 24
+//! (`esmini_round_trip`, `forward_again`; the valid-files criterion is in the CLI's tests) read
+//! `../shared` and skip with a notice where it (or esmini) is absent, except under `CI=true`.
+
+mod common;
+mod documents;
+mod esmini_round_trip;
+mod forward_again;
+mod synthetic;
