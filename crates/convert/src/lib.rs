@@ -39,6 +39,7 @@ mod outputs;
 mod picture;
 mod pipeline;
 mod plan;
+pub mod preflight;
 mod report;
 mod report_files;
 mod resample;
@@ -74,6 +75,7 @@ pub use shard::Shard;
 pub use single::{
     batch_name, batch_source, convert_file, convert_file_with, convert_variation, convert_variation_with, load_distribution, output_file_name, output_name,
 };
+pub use stages::map_options;
 pub use story_marks::event_marks;
 pub use summary::{render as render_summary, summarise, Summary};
 pub use tags::scenario_tags;

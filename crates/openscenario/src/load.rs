@@ -17,8 +17,9 @@ pub struct LoadOptions {
     pub seed: Option<u64>,
     /// Read on past a vehicle, pedestrian, object, controller or maneuver whose catalog or
     /// catalog entry cannot be found, with a placeholder (an external object, no controller,
-    /// no maneuver), so that a check reports everything else as well: a missing catalog is then
-    /// a warning, a missing entry a problem ([`Loaded::problems`]). Never for a conversion.
+    /// no maneuver), so that a check reports everything else as well: a missing catalog or entry
+    /// is then a problem ([`Loaded::problems`]), what a conversion stops on. Never for a
+    /// conversion.
     pub go_on_without_catalogs: bool,
 }
 

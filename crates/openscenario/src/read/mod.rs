@@ -119,9 +119,10 @@ impl Reader {
         match self.catalog_entry(cx, reference, kinds, read) {
             Err(e) if self.go_on_without_catalogs && matches!(e.kind, ErrorKind::MissingCatalog | ErrorKind::MissingCatalogEntry) => {
                 reference.announce();
+                // a problem either way: a conversion stops on it (the caller reads it as an error)
                 let gap = Warning { location: e.location.clone(), message: e.message.clone() };
                 if e.kind == ErrorKind::MissingCatalog {
-                    self.warnings.push(Warning { message: format!("{} (what this file takes from the catalog is not checked)", gap.message), ..gap });
+                    self.problems.push(Warning { message: format!("{} (what this file takes from the catalog is not checked)", gap.message), ..gap });
                 } else {
                     self.problems.push(gap);
                 }

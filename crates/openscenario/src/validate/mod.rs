@@ -9,6 +9,7 @@
 //! elements, attributes and literals. An element the declared version does not know but a later
 //! one does is a warning (esmini and our reader accept such mixtures), not an error.
 
+pub mod overrides;
 mod rules;
 mod values;
 
