@@ -11,6 +11,8 @@ use serde::Serialize;
 use crate::shared_options::ParamArgs;
 use crate::Failure;
 
+mod convert_stops;
+
 #[derive(clap::Args)]
 pub(crate) struct CheckArgs {
     /// OpenSCENARIO files or folders (searched for .xosc, recursively; catalogs in a folder are
@@ -93,6 +95,7 @@ fn check_file(path: &Path, params: &[(String, String)]) -> Vec<Finding> {
     let already = |f: &Finding| schema_errors.iter().any(|(file, line, col)| *file == f.file && *line == f.line && (f.severity == "error" || *col == f.column));
     let reader = reader_findings(path, params);
     out.extend(reader.into_iter().filter(|f| !already(f)));
+    convert_stops::hold_to_convert(&mut out, path, params);
     out
 }
 

@@ -67,9 +67,16 @@ const VALID: &[&str] = &[
 /// file refers to and the API's schema reading does not: in the two ALKS files a LanePosition's
 /// `laneId` (a string in the schema) is the bare name of a parameter, `Ego_InitPosition_LaneId`,
 /// which no OpenDRIVE lane can be (lane ids are integers).
+/// And what the suite does not ship: its catalogs, the road networks and scenario files its files
+/// name. Without them `convert` refuses the file, and `check` says so as an error (the same
+/// verdict as `convert`).
 fn beyond_the_schema(file: &str, message: &str) -> bool {
-    file.starts_with("ALKS_Scenario_4.2_1_FullyBlockingTarget_")
-        && message == "attribute 'laneId' of <LanePosition>: expected an integer, found 'Ego_InitPosition_LaneId'"
+    let not_shipped = (message.starts_with("catalog '") && message.contains(" not found"))
+        || (message.starts_with("the road network (LogicFile)") && message.ends_with("no such file"))
+        || message == "no such file";
+    not_shipped
+        || file.starts_with("ALKS_Scenario_4.2_1_FullyBlockingTarget_")
+            && message == "attribute 'laneId' of <LanePosition>: expected an integer, found 'Ego_InitPosition_LaneId'"
 }
 
 struct Expected {
