@@ -215,8 +215,8 @@ except osc2cr.ConversionError as e:
     print("pickled", (e2.file, e2.line, e2.column) == (e.file, e.line, e.column))
 try:
     osc2cr.convert_to_xml(missing)
-except osc2cr.ConversionError as e:
-    print("missing", e.file == missing, e.line, missing in str(e))
+except FileNotFoundError as e:
+    print("missing", isinstance(e, osc2cr.ConversionError), e.file == missing, e.line, missing in str(e), "no such file" in str(e), "schema" in str(e))
 try:
     osc2cr.convert_to_xml(bad, no_such_option=1)
 except TypeError:
@@ -234,7 +234,7 @@ try:
     osc2cr.convert_to_xml(example, params={"EgoSpeeed": 10})
     print("strict: converted")
 except osc2cr.ConversionError as e:
-    print("strict:", "EgoSpeeed" in str(e))
+    print("strict:", "EgoSpeeed" in str(e), "lenient=True" in str(e), "--" in str(e))
 with warnings.catch_warnings(record=True) as caught:
     warnings.simplefilter("always", osc2cr.ConversionWarning)
     xml = osc2cr.convert_to_xml(example, params={"EgoSpeeed": 10}, lenient=True)
@@ -276,7 +276,8 @@ fn errors_carry_file_line_and_column_and_variations_stream() {
     // the mismatch is seen at the closing tag on line 4
     assert_eq!(lines[0], "malformed True 4 True load", "{got}");
     assert_eq!(lines[1], "pickled True");
-    assert_eq!(lines[2], "missing True None True");
+    // a scenario file that is not there: a FileNotFoundError (and a ConversionError), saying so
+    assert_eq!(lines[2], "missing True True None True True False", "{got}");
     assert_eq!(lines[3], "typeerror");
     assert_eq!(lines[4], "valueerror");
     // the distribution: {2 value sets} × {70, 110} × range 1.1..1.5 step 0.2 (3) = 12 runs,
@@ -289,7 +290,8 @@ fn errors_carry_file_line_and_column_and_variations_stream() {
     assert_eq!(lines[8], "last 12 [('EgoSpeed', '110.0'), ('TargetSpeedFactor', '1.5'), ('TargetVehicle', 'van_red')]");
     // strict by default: an override of a parameter the scenario does not declare is an error;
     // lenient=True converts and says so as a ConversionWarning
-    assert_eq!(lines[9], "strict: True", "{got}");
+    // the message names the option as Python spells it, never the command line's --lenient
+    assert_eq!(lines[9], "strict: True True False", "{got}");
     assert_eq!(lines[10], "lenient: True True", "{got}");
 }
 

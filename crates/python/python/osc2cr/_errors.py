@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import errno
+
 
 class ConversionError(Exception):
     """A scenario could not be converted.
@@ -35,6 +37,26 @@ class ConversionError(Exception):
 
     def __str__(self) -> str:
         return self.message
+
+
+class ScenarioNotFoundError(ConversionError, FileNotFoundError):
+    """The scenario file given does not exist: a :class:`ConversionError` (same attributes) that
+    is also the ``FileNotFoundError`` Python raises for a missing file (``errno`` ENOENT,
+    ``filename`` the path)."""
+
+    def __init__(
+        self,
+        message: str,
+        file: str | None = None,
+        line: int | None = None,
+        column: int | None = None,
+        stage: str | None = None,
+        variation: int | None = None,
+    ) -> None:
+        ConversionError.__init__(self, message, file, line, column, stage, variation)
+        self.errno = errno.ENOENT
+        self.strerror = "No such file or directory"
+        self.filename = file
 
 
 class ConversionWarning(UserWarning):
