@@ -16,6 +16,7 @@ mod map;
 mod messages;
 mod packaging;
 mod python_package;
+mod readme;
 mod render;
 mod serve_udp;
 mod simulate;

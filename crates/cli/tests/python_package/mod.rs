@@ -382,12 +382,16 @@ fn the_wheel_installs_without_rust_and_runs_the_readme_example() {
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert!(out.status.success(), "the README example failed:\n{stdout}{}", String::from_utf8_lossy(&out.stderr));
     assert!(stdout.contains("example ran 3 True"), "{stdout}");
-    // the sweep's six variations were written, as `osc2cr convert` names them
+    // the sweep's six variations were written into out/, as `osc2cr convert` names them, and
+    // nothing beside the examples
     for k in 1..=6 {
-        let f = work.join(format!("cut_in_speeds_{k}.xml"));
+        let f = work.join(format!("out/cut_in_speeds_{k}.xml"));
         let text = std::fs::read_to_string(&f).unwrap_or_else(|e| panic!("{}: {e}", f.display()));
         assert!(text.contains("<commonRoad"), "{}", f.display());
     }
+    let mut top: Vec<String> = std::fs::read_dir(&work).expect("work").flatten().map(|e| e.file_name().to_string_lossy().into_owned()).collect();
+    top.sort();
+    assert_eq!(top, ["examples", "out"]);
 }
 
 #[test]
@@ -406,6 +410,6 @@ fn the_readme_closed_loop_example_runs() {
     let printed: Vec<&str> = stdout.split_whitespace().collect();
     assert!(printed.first().and_then(|t| t.parse::<f64>().ok()).is_some_and(|t| t > 0.0), "{stdout}");
     assert_eq!(printed.get(1), Some(&"3"), "{stdout}");
-    let gif = std::fs::read(work.join("run.gif")).expect("run.gif written");
+    let gif = std::fs::read(work.join("out/run.gif")).expect("out/run.gif written");
     assert!(gif.starts_with(b"GIF89a"), "not a GIF");
 }
