@@ -44,19 +44,12 @@ class ScenarioNotFoundError(ConversionError, FileNotFoundError):
     is also the ``FileNotFoundError`` Python raises for a missing file (``errno`` ENOENT,
     ``filename`` the path)."""
 
-    def __init__(
-        self,
-        message: str,
-        file: str | None = None,
-        line: int | None = None,
-        column: int | None = None,
-        stage: str | None = None,
-        variation: int | None = None,
-    ) -> None:
-        ConversionError.__init__(self, message, file, line, column, stage, variation)
+    def __init__(self, *args: object, **kwargs: object) -> None:
+        # ConversionError's arguments; the OSError attributes follow from them
+        ConversionError.__init__(self, *args, **kwargs)  # type: ignore[arg-type]
         self.errno = errno.ENOENT
         self.strerror = "No such file or directory"
-        self.filename = file
+        self.filename = self.file
 
 
 class ConversionWarning(UserWarning):
