@@ -76,7 +76,8 @@ fn serve_drives_the_example_over_udp_and_writes_the_run() {
     assert!(stdout.starts_with(&format!("served {}: 40 steps to 2.00 s (as fast as possible)", example().display())), "{stdout}");
     // (41 datagrams read when the Init frame's read catches the first, else 40)
     assert!(
-        stdout.contains(&format!("  Ego  127.0.0.1:{port}  synchronous  datagrams ")) && stdout.contains("superseded 0  rejected 2  steps without a message 2"),
+        stdout.contains(&format!("  Ego  127.0.0.1:{port}  synchronous  datagrams "))
+            && stdout.contains("superseded 0  rejected 2  clamped 0  steps without a message 2"),
         "{stdout}"
     );
 

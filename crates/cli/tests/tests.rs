@@ -18,6 +18,7 @@ mod packaging;
 mod python_package;
 mod readme;
 mod render;
+mod serve_osi;
 mod serve_udp;
 mod simulate;
 mod workspace;

@@ -165,6 +165,11 @@ impl ClosedLoop {
         &self.session.borrow_owner().scenario
     }
 
+    /// The scenario's road network (`None` without one).
+    pub fn road(&self) -> Option<&opendrive::RoadNetwork> {
+        self.session.borrow_owner().road()
+    }
+
     /// The lanelet network of the scenario's map (`None` without a road network).
     pub fn lanelets(&self) -> Option<&commonroad::LaneletNetwork> {
         self.session.borrow_owner().lanelets.as_ref()

@@ -49,6 +49,7 @@ mod stages;
 mod story_marks;
 mod summary;
 mod tags;
+mod trace_of;
 mod tracks;
 
 pub use angle::{lerp_angle, wrap_angle};
@@ -65,7 +66,7 @@ pub use header::{benchmark_id, check_country, date_prefix, fallback_date, parse_
 pub use obstacle_type::{cr_type, CrType};
 pub use obstacles::{obstacles, Obstacles};
 pub use options::{ConvertOptions, OutputFormat};
-pub use outputs::OutputPaths;
+pub use outputs::{write_output, MapFiles, OutputPaths, Written};
 pub use picture::{picture_path, write_picture};
 pub use pipeline::{convert_scenario, convert_scenario_keeping, convert_scenario_with, Conversion, Facts, Model, Output, Prepared, Protobuf2024, Request};
 pub use report::{BatchReport, Failure, FolderSummary, ScenarioReport, Skipped, Stage, StageWarning, Status, Timings, Variation};
@@ -79,4 +80,5 @@ pub use stages::map_options;
 pub use story_marks::event_marks;
 pub use summary::{render as render_summary, summarise, Summary};
 pub use tags::scenario_tags;
+pub use trace_of::trace_of;
 pub use tracks::{tracks, Placement, Track, MIN_BOX_SIDE};

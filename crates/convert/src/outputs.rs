@@ -44,14 +44,14 @@ impl OutputPaths {
 }
 
 /// Maps written (or found) by this batch, by file name, so each is written once.
-pub(crate) struct MapFiles {
+pub struct MapFiles {
     dir: PathBuf,
     known: Mutex<BTreeMap<String, Result<PathBuf, String>>>,
 }
 
 impl MapFiles {
     /// Maps go to the top of the output folder `dir`.
-    pub(crate) fn new(dir: &Path) -> Self {
+    pub fn new(dir: &Path) -> Self {
         MapFiles { dir: dir.to_path_buf(), known: Mutex::new(BTreeMap::new()) }
     }
 
@@ -81,7 +81,7 @@ impl MapFiles {
 
 /// The files written for one conversion.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
-pub(crate) struct Written {
+pub struct Written {
     pub main: Option<PathBuf>,
     pub dynamic: Option<PathBuf>,
     pub map: Option<PathBuf>,
@@ -95,7 +95,7 @@ fn create_parent(path: &Path) -> Result<(), String> {
 }
 
 /// Writes a conversion's output files.
-pub(crate) fn write_output(paths: &OutputPaths, output: &Output, maps: &MapFiles) -> Result<Written, String> {
+pub fn write_output(paths: &OutputPaths, output: &Output, maps: &MapFiles) -> Result<Written, String> {
     create_parent(&paths.main)?;
     match output {
         Output::Xml(bytes) => {

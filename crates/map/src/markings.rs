@@ -48,7 +48,18 @@ mod tests {
     use super::*;
 
     fn mark(s: f64, kind: RoadMarkType) -> RoadMark {
-        RoadMark { s_offset: s, kind, type_raw: String::new(), weight: None, color: None, material: None, width: None, height: None, lane_change: None }
+        RoadMark {
+            s_offset: s,
+            kind,
+            type_raw: String::new(),
+            weight: None,
+            color: None,
+            material: None,
+            width: None,
+            height: None,
+            lane_change: None,
+            lines: 0,
+        }
     }
 
     #[test]

@@ -54,6 +54,8 @@ pub struct Session {
     inputs: Vec<(usize, Input)>,
     /// The numbers of `step_array`, reused.
     numbers: Vec<f64>,
+    /// The OSI reporter, made at the first `osi_ground_truth`.
+    osi: Option<osi::Reporter>,
 }
 
 fn motion(text: &str) -> PyResult<ScriptedMotion> {
@@ -230,6 +232,7 @@ impl Session {
             step: opts.step,
             inputs: Vec::new(),
             numbers: Vec::new(),
+            osi: None,
         })
     }
 
@@ -313,6 +316,26 @@ impl Session {
         self.numbers = numbers;
         result?;
         self.advance(py)
+    }
+
+    /// The ASAM OSI 3.5 GroundTruth of the run's current frame, serialized, as esmini 3.6.0
+    /// would report it (osc2cr's `osi` crate), whole: the static part (version, host vehicle,
+    /// lanes, lane boundaries) in every message. Velocities and accelerations are the changes
+    /// since the previous call (the first call: the speed along the heading).
+    fn osi_ground_truth<'py>(&mut self, py: Python<'py>) -> Bound<'py, PyBytes> {
+        use prost::Message;
+        let run = self.run.get_mut().unwrap_or_else(std::sync::PoisonError::into_inner);
+        let reporter = self.osi.get_or_insert_with(|| osi::Reporter::new(run.scenario(), run.road(), &self.names));
+        let states: Vec<_> = (0..self.names.len()).map(|i| run.state(i)).collect();
+        let mut gt = reporter.frame(run.road(), run.time(), &states);
+        if gt.version.is_none() {
+            let s = reporter.static_part();
+            gt.version = s.version;
+            gt.host_vehicle_id = s.host_vehicle_id;
+            gt.lane = s.lane.clone();
+            gt.lane_boundary = s.lane_boundary.clone();
+        }
+        PyBytes::new(py, &gt.encode_to_vec())
     }
 
     /// Every entity's state now as float64 bytes, `STATE_COLUMNS` per entity in the order of

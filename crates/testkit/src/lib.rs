@@ -12,10 +12,12 @@
 
 mod compare_2024;
 mod cr_check;
+mod generated;
 mod python;
 mod shared;
 
 pub use compare_2024::{compare_2024, Case2024, Comparison2024};
 pub use cr_check::{cr_check, CrCheckResult, Finding};
+pub use generated::{assert_generated, rs_files};
 pub use python::{python_envs, PyEnvs};
 pub use shared::{compared_scenarios, corpus_files, files_with_ext, shared_dir, workspace_root};

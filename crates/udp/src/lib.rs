@@ -5,7 +5,8 @@
 //! controller's properties (`object_ids`, `controller_properties`), what one step reads from a
 //! port in asynchronous and synchronous mode (`receive`), the translation of messages into the
 //! engine's inputs following esmini's controller step (`translate`), the pace against the wall
-//! clock (`pacing`), and the server loop over a `convert::ClosedLoop` (`serve`) with what it
+//! clock (`pacing`), the OSI GroundTruth sent to esmini's OSI clients and told to the observer
+//! (`osi_out`), and the server loop over a `convert::ClosedLoop` (`serve`) with what it
 //! hands back (`outcome`).
 //!
 //! It does not know how the run becomes CommonRoad (`convert` does that), how the engine moves
@@ -20,6 +21,7 @@ pub mod controller_properties;
 pub mod frame_order;
 pub mod message;
 pub mod object_ids;
+pub mod osi_out;
 pub mod outcome;
 pub mod pacing;
 pub mod receive;

@@ -30,6 +30,9 @@ pub struct EntityReport {
     /// Good messages a newer one of the same step replaced (asynchronous mode).
     pub superseded: usize,
     pub rejected: usize,
+    /// Good messages whose driver input was outside esmini's documented ranges (a negative
+    /// throttle, …) and was clamped as esmini's vehicle takes it (`validate::clamp`).
+    pub clamped: usize,
     /// Steps it was driven from outside without a new message.
     pub steps_without_message: usize,
     /// Its state after each frame from the one that activated its controller on (the Init
@@ -56,6 +59,11 @@ pub struct Outcome {
     /// What the server could not do as asked (an outside driver it does not serve, a property
     /// read only in part).
     pub notes: Vec<String>,
+    /// The run was ended from outside (Ctrl-C) before its stop trigger or time cap: what is
+    /// converted is the run so far.
+    pub interrupted: bool,
+    /// OSI GroundTruth messages composed (one per frame when asked for).
+    pub osi_frames: usize,
     /// The conversion's warnings, and why it failed if it did.
     pub warnings: Vec<StageWarning>,
     pub failure: Option<Failure>,

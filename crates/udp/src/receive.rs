@@ -42,6 +42,8 @@ pub struct Arrival {
     pub rejected: Vec<Reason>,
     /// Datagrams read.
     pub datagrams: usize,
+    /// Good messages whose driver input was clamped (`validate::clamp`).
+    pub clamped: usize,
 }
 
 impl Endpoint {
@@ -70,7 +72,8 @@ impl Endpoint {
                 Ok(n) => {
                     arrival.datagrams += 1;
                     match accept(buffer.get(..n).unwrap_or(&buffer), object_id, order) {
-                        Ok(m) => {
+                        Ok((m, clamped)) => {
+                            arrival.clamped += usize::from(clamped);
                             if arrival.message.replace(m).is_some() {
                                 arrival.superseded += 1;
                             }

@@ -22,8 +22,6 @@ pub enum Reason {
     ObjectId { got: u32, expected: u32 },
     /// A number that is NaN or infinite.
     NotFinite { field: &'static str, value: f64 },
-    /// A pedal outside 0..=1 or a steering angle outside −π/2..=π/2.
-    OutOfRange { field: &'static str, value: f64, min: f64, max: f64 },
     /// A frame number older than one already accepted for this object.
     OutOfOrder { frame: u32, newest: u32 },
     /// The socket failed to deliver (the text of the error).
@@ -57,10 +55,6 @@ impl fmt::Display for Reason {
             }
             Reason::ObjectId { got, expected } => write!(f, "objectId {got}, expected {expected}"),
             Reason::NotFinite { field, value } => write!(f, "{field} is {value}, not a finite number"),
-            Reason::OutOfRange { field, value, min, max } if *max == std::f64::consts::FRAC_PI_2 && *min == -max => {
-                write!(f, "{field} is {value}, outside -pi/2..=pi/2")
-            }
-            Reason::OutOfRange { field, value, min, max } => write!(f, "{field} is {value}, outside {min}..={max}"),
             Reason::OutOfOrder { frame, newest } => write!(f, "frameNumber {frame} is older than frame {newest}, already accepted: out of order"),
             Reason::Receive { error } => write!(f, "the socket failed: {error}"),
         }

@@ -11,6 +11,8 @@ use std::collections::BTreeMap;
 use std::fmt;
 use std::net::{IpAddr, Ipv4Addr, SocketAddr};
 use std::path::Path;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
 use std::time::Duration;
 
 use convert::{ClosedLoop, ConvertOptions, Failure};
@@ -20,6 +22,7 @@ use openscenario::Controller;
 use crate::controller_properties::{base_port, is_udp_driver, port, read_properties, udp_drivers, ExecMode};
 use crate::frame_order::FrameOrder;
 use crate::object_ids::{object_id, object_ids};
+use crate::osi_out::OsiOut;
 use crate::outcome::{EntityReport, Outcome, MAX_KEPT_REJECTIONS};
 use crate::pacing::{Clock, Pace};
 use crate::receive::{Arrival, Endpoint, SYNCHRONOUS_TIMEOUT};
@@ -27,7 +30,7 @@ use crate::rejection::Rejection;
 use crate::translate::Driving;
 
 /// How to serve a scenario.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct ServeOptions {
     /// The conversion's options (step, time cap, ego, parameters, …).
     pub convert: ConvertOptions,
@@ -39,6 +42,13 @@ pub struct ServeOptions {
     pub pace: Option<Pace>,
     /// How long a synchronous port waits for its datagram each step (esmini: 500 ms).
     pub synchronous_timeout: Duration,
+    /// Compose an OSI GroundTruth message per frame (told to `Observer::osi_frame`).
+    pub osi: bool,
+    /// Send each message there too, as esmini's `--osi_receiver_ip` sends it.
+    pub osi_receiver: Option<SocketAddr>,
+    /// Set from elsewhere (Ctrl-C) to end the run after the current step; the run so far is
+    /// converted and the outcome says it was interrupted.
+    pub stop: Option<Arc<AtomicBool>>,
 }
 
 impl Default for ServeOptions {
@@ -49,6 +59,9 @@ impl Default for ServeOptions {
             base_port: None,
             pace: None,
             synchronous_timeout: SYNCHRONOUS_TIMEOUT,
+            osi: false,
+            osi_receiver: None,
+            stop: None,
         }
     }
 }
@@ -74,6 +87,8 @@ pub trait Observer {
     /// A frame was run (the Init frame too, once its ports were read); `time` is the
     /// simulated time it reached. The next step reads the ports next.
     fn stepped(&mut self, _time: f64) {}
+    /// The OSI GroundTruth message of the frame just run (when `ServeOptions::osi`).
+    fn osi_frame(&mut self, _message: &[u8]) {}
 }
 
 /// An observer that is told nothing.
@@ -91,13 +106,15 @@ pub enum ServeError {
     Bind(String),
     /// A step failed.
     Step(Failure),
+    /// The OSI receiver could not be reached.
+    Osi(String),
 }
 
 impl fmt::Display for ServeError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             ServeError::Start(e) | ServeError::Step(e) => write!(f, "{:?} stage: {}", e.stage, e.message),
-            ServeError::Setup(m) | ServeError::Bind(m) => f.write_str(m),
+            ServeError::Setup(m) | ServeError::Bind(m) | ServeError::Osi(m) => f.write_str(m),
         }
     }
 }
@@ -137,6 +154,11 @@ pub fn serve(path: &Path, options: &ServeOptions, observer: &mut dyn Observer) -
     let mut server =
         Server { options, observer, ids, base, links: BTreeMap::new(), unserved: Vec::new(), notes, rejections: Vec::new(), rejections_not_kept: 0 };
     let dt = options.convert.step;
+    let mut osi = match options.osi || options.osi_receiver.is_some() {
+        true => Some(OsiOut::new(&session, options.osi_receiver).map_err(|e| ServeError::Osi(format!("cannot send OSI messages: {e}")))?),
+        false => None,
+    };
+    let stopped = || options.stop.as_ref().is_some_and(|s| s.load(Ordering::SeqCst));
 
     // the Init frame: ports of controllers it activated open, and their first datagram is read
     server.follow_activations(&session, true)?;
@@ -152,10 +174,18 @@ pub fn serve(path: &Path, options: &ServeOptions, observer: &mut dyn Observer) -
         }
     }
     server.observer.stepped(session.time());
+    if let Some(o) = &mut osi {
+        o.frame(&session, server.observer);
+    }
 
     let clock = Clock::start(pace);
     let t0 = session.time();
+    let mut interrupted = false;
     while !session.is_over() {
+        if stopped() {
+            interrupted = true;
+            break;
+        }
         let t = session.time() + dt;
         clock.wait_until(t - t0);
         let (inputs, without_message) = server.inputs(&session, t, dt);
@@ -176,6 +206,12 @@ pub fn serve(path: &Path, options: &ServeOptions, observer: &mut dyn Observer) -
             }
         }
         server.observer.stepped(session.time());
+        if let (Some(o), true) = (&mut osi, session.time() > before) {
+            o.frame(&session, server.observer);
+        }
+    }
+    if let Some(o) = &osi {
+        server.notes.extend(o.notes());
     }
 
     let (conversion, _) = session.finish();
@@ -193,6 +229,8 @@ pub fn serve(path: &Path, options: &ServeOptions, observer: &mut dyn Observer) -
         rejections: server.rejections,
         rejections_not_kept: server.rejections_not_kept,
         notes: server.notes,
+        interrupted,
+        osi_frames: osi.as_ref().map_or(0, |o| o.frames),
         warnings: conversion.warnings.clone(),
         failure: conversion.result.as_ref().err().cloned(),
         conversion,
@@ -214,6 +252,7 @@ fn tally(
     r.superseded += arrival.superseded;
     r.rejected += arrival.rejected.len();
     r.accepted += usize::from(arrival.message.is_some());
+    r.clamped += arrival.clamped;
     for reason in &arrival.rejected {
         let port = link.endpoint.as_ref().map_or(0, |e| e.address.port());
         let rejection = Rejection { entity: r.name.clone(), object_id: r.object_id, port, time, reason: reason.clone() };
@@ -261,6 +300,7 @@ impl Server<'_> {
                     accepted: 0,
                     superseded: 0,
                     rejected: 0,
+                    clamped: 0,
                     steps_without_message: 0,
                     states: Vec::new(),
                 },

@@ -1,8 +1,14 @@
 //! The checks a decoded message must pass before it drives anything: it is for the object the
 //! port serves (esmini would steer whatever object the id names; osc2cr keeps each client to
-//! its own entity), every number is finite, the pedals are within 0..=1 and the steering angle
-//! within −π/2..=π/2 (the ranges `ControllerUDPDriver.hpp` gives), and its frame is not older
-//! than one already accepted (`frame_order`). `accept` runs them all on a datagram.
+//! its own entity), every number is finite, and its frame is not older than one already
+//! accepted (`frame_order`). `accept` runs them all on a datagram.
+//!
+//! Driver input outside the ranges `ControllerUDPDriver.hpp` gives (pedals 0..=1, steering angle
+//! −π/2..=π/2) is taken, as esmini takes it, not turned away: esmini's vehicle model is driven by
+//! the one pedal `throttle − brake` (`Vehicle::DrivingControlAnalog`), so a negative throttle —
+//! esmini's own `testUDPDriver-follow-trajectory.py` sends one — brakes. Such a message is
+//! re-expressed as the pedals the engine takes, `throttle − brake` clamped to −1..=1 (esmini does
+//! not clamp beyond that) and the steering angle to ±π/2, and counted (`clamp`).
 
 use std::f64::consts::FRAC_PI_2;
 
@@ -20,22 +26,30 @@ pub fn validate(m: &Message, object_id: u32) -> Result<(), Reason> {
             return Err(Reason::NotFinite { field, value });
         }
     }
-    if let Body::DriverInput { throttle, brake, steering_angle } = m.body {
-        for (field, value, min, max) in [("throttle", throttle, 0.0, 1.0), ("brake", brake, 0.0, 1.0), ("steeringAngle", steering_angle, -FRAC_PI_2, FRAC_PI_2)]
-        {
-            if !(min..=max).contains(&value) {
-                return Err(Reason::OutOfRange { field, value, min, max });
-            }
-        }
-    }
     Ok(())
 }
 
-/// Datagram `bytes`, arrived on the port of object `object_id`, as a message that may drive it;
-/// its frame becomes the newest accepted in `order`. `Err` names the first thing wrong.
-pub fn accept(bytes: &[u8], object_id: u32, order: &mut FrameOrder) -> Result<Message, Reason> {
-    let m = decode(bytes)?;
+/// Driver input with a pedal outside 0..=1 or a steering angle outside ±π/2 made one the engine
+/// takes with esmini's effect (the pedal `throttle − brake`, clamped to −1..=1; the steering
+/// clamped); whether it was. Other messages are left alone.
+pub fn clamp(body: &mut Body) -> bool {
+    let Body::DriverInput { throttle, brake, steering_angle } = *body else { return false };
+    let in_range = (0.0..=1.0).contains(&throttle) && (0.0..=1.0).contains(&brake) && (-FRAC_PI_2..=FRAC_PI_2).contains(&steering_angle);
+    if in_range {
+        return false;
+    }
+    let pedal = (throttle - brake).clamp(-1.0, 1.0);
+    *body = Body::DriverInput { throttle: pedal.max(0.0), brake: (-pedal).max(0.0), steering_angle: steering_angle.clamp(-FRAC_PI_2, FRAC_PI_2) };
+    true
+}
+
+/// Datagram `bytes`, arrived on the port of object `object_id`, as a message that may drive it,
+/// and whether its driver input was clamped; its frame becomes the newest accepted in `order`.
+/// `Err` names the first thing wrong.
+pub fn accept(bytes: &[u8], object_id: u32, order: &mut FrameOrder) -> Result<(Message, bool), Reason> {
+    let mut m = decode(bytes)?;
     validate(&m, object_id)?;
     order.admit(m.header.frame_number)?;
-    Ok(m)
+    let clamped = clamp(&mut m.body);
+    Ok((m, clamped))
 }

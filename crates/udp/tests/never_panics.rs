@@ -9,7 +9,7 @@ use udp::{accept, serve, InputMode};
 
 fn check(bytes: &[u8]) {
     let mut order = FrameOrder::default();
-    if let Ok(m) = accept(bytes, 0, &mut order) {
+    if let Ok((m, _)) = accept(bytes, 0, &mut order) {
         assert_eq!((m.header.version, m.header.object_id), (1, 0));
         assert!(m.mode.accepted_sizes().contains(&bytes.len()));
         assert!(m.body.numbers().iter().all(|(_, v)| v.is_finite()));

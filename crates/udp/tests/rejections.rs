@@ -35,9 +35,6 @@ fn wrong(k: u32) -> Vec<(Vec<u8>, &'static str)> {
         (xyh(0, k, 60.0, -1.75, 0.0, 5.0, 0)[..50].to_vec(), "a stateXYH message of 50 bytes; expected 57 (packed), 64 (C struct), 88"),
         (driver(0, k, f64::NAN, 0.0, 0.0), "throttle is NaN, not a finite number"),
         (xyh(0, k, f64::INFINITY, -1.75, 0.0, 5.0, 0), "x is inf, not a finite number"),
-        (driver(0, k, 1.5, 0.0, 0.0), "throttle is 1.5, outside 0..=1"),
-        (driver(0, k, THROTTLE, -0.1, 0.0), "brake is -0.1, outside 0..=1"),
-        (driver(0, k, THROTTLE, 0.0, 2.0), "steeringAngle is 2, outside -pi/2..=pi/2"),
         (driver(0, 3, THROTTLE, 0.0, 0.0), "frameNumber 3 is older than frame"),
     ]
 }

@@ -119,6 +119,11 @@ pub(crate) struct ConvertArgs {
     /// Print every warning on stderr.
     #[arg(short, long)]
     pub verbose: bool,
+    /// Also write each run as an OSI trace file (ASAM OSI 3.5 GroundTruth per frame, as esmini's
+    /// --osi_file writes it): FILE for one scenario file, else `<FILE stem>_<output name>.osi`
+    /// beside FILE, one per scenario or variation.
+    #[arg(long, value_name = "FILE")]
+    pub osi_file: Option<PathBuf>,
 }
 
 fn options(args: &ConvertArgs) -> ConvertOptions {
@@ -201,7 +206,14 @@ pub(crate) fn run(args: &ConvertArgs) -> Result<(), Failure> {
     let mut table = args.table.as_deref().map(Table::create).transpose().map_err(Failure::input)?;
     let mut report_error: Option<String> = None;
     let bar = bar();
+    let traces = args.osi_file.as_deref().map(|file| crate::osi_file::ConvertTraces { file, single: args.inputs.len() == 1 && args.inputs[0].is_file() });
     let mut sink = |position: usize, r: ScenarioReport| {
+        if let (Some(t), true) = (&traces, r.failure.is_none() && r.output.is_some()) {
+            if let Err(e) = t.write(&r, &options) {
+                bar.0.suspend(|| eprintln!("failed {}: OSI trace: {e}", describe(&r)));
+                report_error.get_or_insert(e);
+            }
+        }
         if let Some(f) = &r.failure {
             bar.0.suspend(|| eprintln!("failed {}: {} stage: {}", describe(&r), stage_name(f.stage), f.message));
         }

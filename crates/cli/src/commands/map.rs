@@ -27,6 +27,10 @@ pub(crate) struct MapArgs {
     /// Print the conversion warnings on stderr.
     #[arg(short, long)]
     pub verbose: bool,
+    /// CommonRoad format: 2020a (XML) or 2024 (the protobuf map file commonroad-io 2026's
+    /// three-file reader takes; its map id is printed).
+    #[arg(long, default_value = "2020a", value_name = "2020a|2024")]
+    pub format: convert::OutputFormat,
 }
 
 pub(crate) fn run(args: &MapArgs) -> Result<(), Failure> {
@@ -56,8 +60,23 @@ pub(crate) fn run(args: &MapArgs) -> Result<(), Failure> {
     if let Some(p) = problems.first() {
         return Err(Failure { message: format!("{}: converted map is invalid ({} problems), first: {p}", args.file.display(), problems.len()), status: 1 });
     }
-    let bytes = commonroad::xml::write_map(&scenario).map_err(|e| Failure { message: format!("{}: {e}", args.output.display()), status: 1 })?;
+    let write_error = |e: &dyn std::fmt::Display| Failure { message: format!("{}: {e}", args.output.display()), status: 1 };
+    let (bytes, map_id) = match args.format {
+        convert::OutputFormat::Xml2020a => (commonroad::xml::write_map(&scenario).map_err(|e| write_error(&e))?, None),
+        convert::OutputFormat::Protobuf2024 => {
+            let map = commonroad::protobuf::encode_map(&scenario).map_err(|e| write_error(&e))?;
+            if args.verbose {
+                for w in &map.warnings {
+                    eprintln!("{w}");
+                }
+            }
+            (map.bytes, Some(map.id))
+        }
+    };
     commonroad::xml::write_atomic(&args.output, &bytes).map_err(|e| Failure { message: format!("{}: {e}", args.output.display()), status: 1 })?;
+    if let Some(id) = map_id {
+        println!("{id}");
+    }
     eprintln!(
         "{}: {} lanelets, {} warnings{} -> {}",
         args.file.display(),

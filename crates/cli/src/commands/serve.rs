@@ -23,7 +23,7 @@ fields as 64-bit floats: 1 driverInput (throttle 0..1, brake 0..1, steering angl
 3 stateXYH (x, y, h, speed, wheel angle, dead-reckoning byte), 4 stateH (h, speed, wheel angle, \
 dead-reckoning byte). Packed as Python's struct.pack packs them, as esmini's C structs, or as \
 its whole 88-byte DMMessage: each length is accepted. A datagram with another version, an \
-unknown mode or length, another object's id, a number that is not finite, a value out of range, \
+unknown mode or length, another object's id, a number that is not finite, \
 or a frameNumber older than one already accepted for the entity is rejected with a message on \
 stderr and counts as none; the run goes on.
 
@@ -42,8 +42,17 @@ reckoning moves on at its speed and heading, any other state stays where it is.
 Pacing: with an asynchronous port the run goes in real time (--realtime-factor F scales it), \
 otherwise as fast as the datagrams come (lockstep); --fast never waits.
 
-The run ends at the scenario's stop trigger or --max-time; OUT_DIR/<scenario stem>.xml is then \
-written (whole or not at all). Ctrl-C stops without writing.";
+Driver inputs outside esmini's documented ranges (a negative throttle, as esmini's \
+testUDPDriver-follow-trajectory.py sends) are taken as esmini's vehicle takes them — the pedal \
+throttle minus brake, clamped to -1..1, the steering angle to -pi/2..pi/2 — and counted per entity.
+
+OSI: --osi-receiver HOST[:PORT] sends each frame's ASAM OSI 3.5 GroundTruth (port 48198 by \
+default) as esmini's --osi_receiver_ip does, so esmini's OSI clients (udp_osi_common.py) read it \
+unchanged; --osi-file FILE writes the same messages as an OSI trace file.
+
+The run ends at the scenario's stop trigger or --max-time; OUT_DIR/<scenario stem>.xml (or, with \
+--format 2024, the three 2024 files) is then written, whole or not at all. Ctrl-C ends the run \
+after the current step and writes what has run so far; the summary says it was interrupted.";
 
 #[derive(clap::Args)]
 pub(crate) struct ServeArgs {
@@ -90,6 +99,8 @@ pub(crate) struct ServeArgs {
     /// Print every warning of the conversion on stderr.
     #[arg(short, long)]
     pub verbose: bool,
+    #[command(flatten)]
+    pub osi: crate::serve_extra::ServeOsiArgs,
 }
 
 /// Tells on stderr what the server does.
@@ -117,6 +128,7 @@ fn options(args: &ServeArgs) -> Result<ServeOptions, Failure> {
         },
         drop_ego: args.drop_ego,
         date: args.date,
+        format: args.osi.format,
         ..args.run.convert_options()
     };
     convert.check().map_err(Failure::input)?;
@@ -126,15 +138,22 @@ fn options(args: &ServeArgs) -> Result<ServeOptions, Failure> {
         (None, true) => Some(Pace::AsFastAsPossible),
         (None, false) => None,
     };
-    Ok(ServeOptions { convert, bind: args.bind, base_port: args.base_port, pace, ..ServeOptions::default() })
+    let osi_receiver = args.osi.osi_receiver.as_deref().map(osi::receiver_address).transpose().map_err(Failure::input)?;
+    Ok(ServeOptions { convert, bind: args.bind, base_port: args.base_port, pace, osi: args.osi.osi_file.is_some(), osi_receiver, ..ServeOptions::default() })
 }
 
 pub(crate) fn run(args: &ServeArgs) -> Result<(), Failure> {
     if !args.udp {
         return Err(Failure::input("say which protocol to serve: --udp (esmini's UDPDriverController)"));
     }
-    let options = options(args)?;
-    let outcome = udp::serve(&args.scenario, &options, &mut Stderr).map_err(|e| {
+    let mut options = options(args)?;
+    options.stop = Some(crate::serve_extra::interrupt_flag()?);
+    let trace = args.osi.osi_file.as_deref().map(osi::TraceWriter::create).transpose().map_err(|m| Failure { message: m, status: 1 })?;
+    let mut observer = crate::serve_extra::WithTrace { inner: &mut Stderr, trace, error: None };
+    let served = udp::serve(&args.scenario, &options, &mut observer);
+    // a run that did not start writes no trace file (the writer's temporary file goes)
+    let osi_file = if served.is_ok() { crate::serve_extra::finish_trace(observer)? } else { None };
+    let outcome = served.map_err(|e| {
         let status = match &e {
             ServeError::Start(f) if matches!(f.stage, Stage::Load | Stage::RoadNetwork) => 2,
             ServeError::Setup(_) | ServeError::Bind(_) => 2,
@@ -151,10 +170,11 @@ pub(crate) fn run(args: &ServeArgs) -> Result<(), Failure> {
             eprintln!("warning: {:?}: {}", w.stage, w.message);
         }
     }
-    println!("served {}: {} steps to {:.2} s ({})", args.scenario.display(), outcome.steps, outcome.time, outcome.pace);
+    let interrupted = if outcome.interrupted { ", interrupted (Ctrl-C): the run so far" } else { "" };
+    println!("served {}: {} steps to {:.2} s ({}){interrupted}", args.scenario.display(), outcome.steps, outcome.time, outcome.pace);
     for e in &outcome.entities {
         println!(
-            "  {}  {}  {}  datagrams {}  accepted {}  superseded {}  rejected {}  steps without a message {}",
+            "  {}  {}  {}  datagrams {}  accepted {}  superseded {}  rejected {}  clamped {}  steps without a message {}",
             e.name,
             e.address.as_deref().unwrap_or("(never activated)"),
             e.exec.name(),
@@ -162,6 +182,7 @@ pub(crate) fn run(args: &ServeArgs) -> Result<(), Failure> {
             e.accepted,
             e.superseded,
             e.rejected,
+            e.clamped,
             e.steps_without_message
         );
     }
@@ -172,13 +193,16 @@ pub(crate) fn run(args: &ServeArgs) -> Result<(), Failure> {
         let json = serde_json::to_vec_pretty(&outcome).map_err(|e| Failure::input(format!("report: {e}")))?;
         commonroad::xml::write_atomic(path, &json).map_err(|e| Failure { message: e.to_string(), status: 1 })?;
     }
-    let Some(bytes) = outcome.bytes() else {
-        let why = outcome.failure.as_ref().map_or_else(String::new, |f| format!("{:?} stage: {}", f.stage, f.message));
-        return Err(Failure { message: format!("{}: the run was not converted: {why}", args.scenario.display()), status: 1 });
-    };
-    std::fs::create_dir_all(&args.output).map_err(|e| Failure { message: format!("cannot create output folder {}: {e}", args.output.display()), status: 1 })?;
-    let path = args.output.join(&outcome.output_name);
-    commonroad::xml::write_atomic(&path, bytes).map_err(|e| Failure { message: e.to_string(), status: 1 })?;
+    for e in outcome.entities.iter().filter(|e| e.clamped > 0) {
+        eprintln!(
+            "warning: `{}`: {} messages had driver input outside esmini's ranges (pedals 0..1, steering -pi/2..pi/2): taken as esmini's vehicle takes them, throttle - brake clamped to -1..1",
+            e.name, e.clamped
+        );
+    }
+    if let Some(p) = &osi_file {
+        eprintln!("wrote {} ({} OSI GroundTruth messages)", p.display(), outcome.osi_frames);
+    }
+    let path = crate::serve_extra::write_commonroad(&outcome, &args.output, args.osi.format)?;
     let warnings = outcome.warnings.len();
     eprintln!("wrote {}{}", path.display(), if warnings > 0 && !args.verbose { format!(" ({warnings} warnings, -v lists them)") } else { String::new() });
     Ok(())

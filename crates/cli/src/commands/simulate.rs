@@ -26,6 +26,10 @@ pub(crate) struct SimulateArgs {
     /// (its kind and name), from, transition, to (the states and the transition between them).
     #[arg(long, value_name = "OUT.csv")]
     pub events: Option<PathBuf>,
+    /// Also write the run as an OSI trace file (ASAM OSI 3.5 GroundTruth per frame, as esmini's
+    /// --osi_file writes it).
+    #[arg(long, value_name = "FILE")]
+    pub osi_file: Option<PathBuf>,
     /// Print the warnings on stderr.
     #[arg(short, long)]
     pub verbose: bool,
@@ -72,6 +76,9 @@ pub(crate) fn run(args: &SimulateArgs) -> Result<(), Failure> {
             let _ = writeln!(text, "{:.3},{},{},{},{}", e.time, e.element, e.from, e.transition, e.to);
         }
         write_file(ev, &text)?;
+    }
+    if let Some(path) = &args.osi_file {
+        load_warnings.extend(crate::osi_file::write_trace(path, &scenario, roads.as_ref(), &run.trace)?);
     }
     let n_warn = load_warnings.len() + road_warnings.len() + run.warnings.len();
     if args.verbose {

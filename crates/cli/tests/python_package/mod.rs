@@ -17,6 +17,7 @@ use std::sync::OnceLock;
 
 mod closed_loop;
 mod closed_loop_example;
+mod osi;
 
 /// What the test environment holds besides the package (a change remakes the environment).
 const REQUIREMENTS: &str = "maturin>=1.7,<2\ncommonroad-io==2024.3\ndask==2026.8.0\ndistributed==2026.8.0\ngymnasium==1.4.0\n";

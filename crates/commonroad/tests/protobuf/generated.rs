@@ -26,36 +26,13 @@ fn generate(out: &Path) {
         .expect("prost-build generates the types");
 }
 
-fn rs_files(dir: &Path) -> Vec<(String, Vec<u8>)> {
-    let mut v: Vec<(String, Vec<u8>)> = std::fs::read_dir(dir)
-        .expect("read dir")
-        .flatten()
-        .map(|e| e.path())
-        .filter(|p| p.extension().is_some_and(|x| x == "rs"))
-        .map(|p| (p.file_name().unwrap_or_default().to_string_lossy().into_owned(), std::fs::read(&p).expect("read")))
-        .collect();
-    v.sort();
-    v
-}
-
 #[test]
 fn the_checked_in_types_are_prost_builds_output_for_the_descriptor_set() {
     let fresh = std::env::temp_dir().join(format!("osc2cr-protobuf-gen-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&fresh);
     generate(&fresh);
-    let checked_in = crate_dir().join("src/protobuf/generated");
-    if std::env::var_os("OSC2CR_BLESS").is_some() {
-        for (name, bytes) in rs_files(&fresh) {
-            std::fs::write(checked_in.join(name), bytes).expect("bless");
-        }
-    }
-    let (want, have) = (rs_files(&fresh), rs_files(&checked_in));
-    let names = |v: &[(String, Vec<u8>)]| v.iter().map(|(n, _)| n.clone()).collect::<Vec<_>>();
-    assert_eq!(names(&have), names(&want), "generated files (OSC2CR_BLESS=1 regenerates them)");
+    let names = testkit::assert_generated(&fresh, &crate_dir().join("src/protobuf/generated"));
     // the four packages of the three files and their imports
-    assert_eq!(names(&want), ["commonroad_common.rs", "commonroad_dynamic.rs", "commonroad_map.rs", "commonroad_scenario.rs"]);
-    for ((name, a), (_, b)) in want.iter().zip(&have) {
-        assert!(a == b, "src/protobuf/generated/{name} is not prost-build's output (OSC2CR_BLESS=1 regenerates it)");
-    }
+    assert_eq!(names, ["commonroad_common.rs", "commonroad_dynamic.rs", "commonroad_map.rs", "commonroad_scenario.rs"]);
     let _ = std::fs::remove_dir_all(&fresh);
 }

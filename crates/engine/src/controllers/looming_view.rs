@@ -10,13 +10,6 @@ use opendrive::{ContactPoint, ElementType, Road, RoadNetwork};
 use std::collections::HashMap;
 
 const SMALL_NUMBER: f64 = 1e-6;
-/// RoadManager.cpp: OSI_POINT_CALC_STEPSIZE, OSI_TANGENT_LINE_TOLERANCE.
-const CALC_STEP: f64 = 1.0;
-const TANGENT_TOL: f64 = 0.01;
-/// CommonMini.hpp: OSI_MAX_LONGITUDINAL_DISTANCE, OSI_MAX_LATERAL_DEVIATION.
-const MAX_SEGMENT: f64 = 50.0;
-const MAX_LATERAL_DEVIATION: f64 = 0.05;
-const MIN_SEGMENT: f64 = 0.2;
 
 /// One OSI point of a lane centre: s, x, y, road heading.
 #[derive(Debug, Clone, Copy)]
@@ -39,101 +32,13 @@ fn centre(net: &RoadNetwork, road: usize, lane_id: i32, s: f64) -> Option<OsiPoi
     Some(OsiPoint { s, x: p.x, y: p.y, h: p.road_heading })
 }
 
-/// The three points (s − 1 cm, s, s + 1 cm) whose tangent lines esmini compares.
-fn triple(net: &RoadNetwork, road: usize, lane_id: i32, s: f64, s_end: f64) -> Option<[(f64, f64); 3]> {
-    let a = centre(net, road, lane_id, (s - TANGENT_TOL).max(0.0))?;
-    let b = centre(net, road, lane_id, s)?;
-    let c = centre(net, road, lane_id, (s + TANGENT_TOL).min(s_end))?;
-    Some([(a.x, a.y), (b.x, b.y), (c.x, c.y)])
-}
-
-fn project_distance(px: f64, py: f64, (x1, y1): (f64, f64), (x2, y2): (f64, f64)) -> f64 {
-    let (dx, dy) = (x2 - x1, y2 - y1);
-    let len2 = dx * dx + dy * dy;
-    if len2 < 1e-300 {
-        return (px - x1).hypot(py - y1);
-    }
-    let t = ((px - x1) * dx + (py - y1) * dy) / len2;
-    let (qx, qy) = (x1 + t * dx, y1 + t * dy);
-    (px - qx).hypot(py - qy)
-}
-
-/// OpenDrive::CheckLaneOSIRequirement.
-fn requirement(p0: &[(f64, f64); 3], p1: &[(f64, f64); 3]) -> bool {
-    let (ax, ay) = (p0[2].0 - p0[0].0, p0[2].1 - p0[0].1);
-    let (bx, by) = (p1[2].0 - p1[0].0, p1[2].1 - p1[0].1);
-    let angle = (ax * by - ay * bx).atan2(ax * bx + ay * by).abs();
-    if angle > 0.5 {
-        return false;
-    }
-    // GetIntersectionOfTwoLineSegments (lines through the tolerance points)
-    let (ax1, ay1, ax2, ay2) = (p0[0].0, p0[0].1, p0[2].0, p0[2].1);
-    let (bx1, by1, bx2, by2) = (p1[0].0, p1[0].1, p1[2].0, p1[2].1);
-    let den = (ax1 - ax2) * (by1 - by2) - (ay1 - ay2) * (bx1 - bx2);
-    if den.abs() < SMALL_NUMBER {
-        return project_distance(bx1, by1, p0[0], p0[2]) < 0.1;
-    }
-    let t = ((ax1 - bx1) * (by1 - by2) - (ay1 - by1) * (bx1 - bx2)) / den;
-    let (ix, iy) = (ax1 + t * (ax2 - ax1), ay1 + t * (ay2 - ay1));
-    let error = project_distance(ix, iy, p0[1], p1[1]);
-    error < MAX_LATERAL_DEVIATION || error.is_nan()
-}
-
-/// OpenDrive::SetLaneOSIPoints for one lane of one lane section (flat roads: no elevation
-/// limit on the segment length).
+/// OpenDrive::SetLaneOSIPoints for one lane of one lane section (`opendrive::osi_points`).
 pub(crate) fn lane_osi_points(net: &RoadNetwork, road_idx: usize, j: usize, lane_id: i32) -> Vec<OsiPoint> {
     let Some(road) = net.roads.get(road_idx) else { return Vec::new() };
     let Some(lsec) = road.lane_sections.get(j) else { return Vec::new() };
     let s_end = section_end(road, j);
-    let Some(mut pivot) = centre(net, road_idx, lane_id, lsec.s) else { return Vec::new() };
-    let mut points = vec![pivot];
-    let Some(mut x0) = triple(net, road_idx, lane_id, lsec.s, s_end) else { return points };
-    let mut last_ok = pivot;
-    let mut cand = pivot;
-    let mut x_last_ok = x0;
-    let mut insert = false;
-    let mut step = CALC_STEP.min(s_end - lsec.s);
-    // A bound on the iterations for hostile input (esmini loops until the section end).
-    for _ in 0..1_000_000 {
-        let s = (cand.s + step).min(s_end - SMALL_NUMBER / 2.0);
-        let (Some(c), Some(x1)) = (centre(net, road_idx, lane_id, s), triple(net, road_idx, lane_id, s, s_end)) else { break };
-        cand = c;
-        // OpenDrive::CheckAndAddOSIPoint
-        let mut req = requirement(&x0, &x1);
-        if req && MAX_SEGMENT < cand.s - pivot.s - SMALL_NUMBER {
-            req = false;
-        }
-        if (req && cand.s + SMALL_NUMBER > s_end - SMALL_NUMBER)
-            || step.abs() < MIN_SEGMENT + SMALL_NUMBER
-            || (req && cand.s - pivot.s > MAX_SEGMENT - SMALL_NUMBER)
-        {
-            let last_s = points.last().map_or(f64::NEG_INFINITY, |p| p.s);
-            let p = if !req && step.abs() < MIN_SEGMENT + SMALL_NUMBER && last_ok.s > last_s + SMALL_NUMBER {
-                last_ok
-            } else {
-                last_ok = cand;
-                x_last_ok = x1;
-                cand
-            };
-            points.push(p);
-            insert = false;
-            if p.s + SMALL_NUMBER > s_end - SMALL_NUMBER {
-                break;
-            }
-            step = CALC_STEP.min(s_end - p.s).min(2.0 * (p.s - pivot.s)).abs();
-            pivot = last_ok;
-            x0 = x_last_ok;
-            cand = pivot;
-        } else if !req {
-            insert = true;
-            step = -step.abs() / 2.0;
-        } else {
-            step = if insert { step.abs() / 2.0 } else { CALC_STEP };
-            last_ok = cand;
-            x_last_ok = x1;
-        }
-    }
-    points
+    let xy = |s: f64| centre(net, road_idx, lane_id, s).map(|p| (p.x, p.y));
+    opendrive::osi_points(lsec.s, s_end, xy).into_iter().filter_map(|s| centre(net, road_idx, lane_id, s)).collect()
 }
 
 pub(crate) fn angle_pi(a: f64) -> f64 {
@@ -169,10 +74,19 @@ fn sign(x: f64) -> i32 {
     }
 }
 
-/// The tangent-point search of ControllerLooming::Step. `me`: the entity's lane position,
-/// (x, y), its road heading and whether it faces along the road.
-#[allow(clippy::too_many_arguments)] // the inputs of esmini's search, each a different quantity
-pub(crate) fn far_tangent(net: &RoadNetwork, memo: &mut OsiMemo, me: LanePos, x: f64, y: f64, h_road: f64, forward: bool, far_dist: f64) -> FarTangent {
+/// Where the looming driver stands: its lane position, (x, y), its road heading and whether it
+/// faces along the road.
+pub(crate) struct Viewpoint {
+    pub(crate) lane: LanePos,
+    pub(crate) x: f64,
+    pub(crate) y: f64,
+    pub(crate) h_road: f64,
+    pub(crate) forward: bool,
+}
+
+/// The tangent-point search of ControllerLooming::Step, up to `far_dist` ahead of `view`.
+pub(crate) fn far_tangent(net: &RoadNetwork, memo: &mut OsiMemo, view: Viewpoint, far_dist: f64) -> FarTangent {
+    let Viewpoint { lane: me, x, y, h_road, forward } = view;
     let mut out = FarTangent { point: None, intersection: false, dist: 0.0 };
     let Some(road0) = net.roads.get(me.road) else { return out };
     let half_pi = std::f64::consts::FRAC_PI_2;

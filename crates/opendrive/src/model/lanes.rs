@@ -140,6 +140,8 @@ pub struct RoadMark {
     pub width: Option<f64>,
     pub height: Option<f64>,
     pub lane_change: Option<LaneChange>,
+    /// Lines its `<type>` and `<explicit>` children define (0: none, the type's stand-in lines).
+    pub lines: usize,
 }
 
 /// `<lane><speed>`.

@@ -183,5 +183,10 @@ fn parse_road_mark(ctx: &mut Ctx, node: Node) -> Result<RoadMark, Error> {
         width: ctx.opt_f64(node, "width")?,
         height: ctx.opt_f64(node, "height")?,
         lane_change,
+        lines: node
+            .children()
+            .filter(|c| c.has_tag_name("type") || c.has_tag_name("explicit"))
+            .map(|c| c.children().filter(|l| l.has_tag_name("line")).count())
+            .sum(),
     })
 }

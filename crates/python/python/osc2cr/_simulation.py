@@ -432,6 +432,13 @@ class Simulation:
         entity does not exist)."""
         return self.states_view().copy()
 
+    def osi_ground_truth(self) -> bytes:
+        """The current frame as an ASAM OSI 3.5 GroundTruth message, serialized, as esmini 3.6.0
+        reports it (esmini's OSI ids; box centres in the OpenDRIVE frame; the lanes and lane
+        boundaries in every message): ``osi3.osi_groundtruth_pb2.GroundTruth.FromString(...)``
+        reads it (``pip install osi-python``). Velocities are the change since the previous call."""
+        return self._session.osi_ground_truth()
+
     def states_bytes(self) -> bytes:
         """:meth:`states_array` as raw float64 bytes (native byte order), without numpy."""
         return self._session.states()

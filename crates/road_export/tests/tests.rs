@@ -1,0 +1,9 @@
+//! The road_export tests, one binary: modules by feature.
+
+mod common;
+
+mod esmini_load;
+mod hostile;
+mod layout;
+mod map_round_trip;
+mod schema;
