@@ -34,11 +34,11 @@ fuzz_target!(|data: &[u8]| {
     }
     let options =
         convert::ConvertOptions { max_time: 10.0, deadline: Some(std::time::Instant::now() + std::time::Duration::from_secs(2)), ..Default::default() };
-    let request = convert::Request { path: &path, name: "fuzz", config: 1, parameters: &[], source: String::new() };
-    let _ = convert::convert_scenario(&request, &options);
+    let request = convert::Request::named(&path, "fuzz");
+    let _ = convert::convert(&request, &options);
     let options = convert::ConvertOptions { lenient: true, ..options };
-    let _ = convert::convert_scenario(&request, &options);
+    let _ = convert::convert(&request, &options);
     // the same in the 2024 format: the protobuf writer sees whatever the model can hold
     let options = convert::ConvertOptions { format: convert::OutputFormat::Protobuf2024, ..options };
-    let _ = convert::convert_scenario(&request, &options);
+    let _ = convert::convert(&request, &options);
 });

@@ -4,6 +4,7 @@
 //! Exit status: 0 success, 1 some files of a batch failed, 2 bad usage or bad input.
 
 mod commands;
+mod grouped;
 mod osi_file;
 mod scenario_input;
 mod serve_extra;

@@ -46,7 +46,7 @@ impl ConvertTraces<'_> {
         let scenario_file = r.variation.as_ref().map_or(r.input.as_path(), |v| v.scenario_file.as_path());
         let parameters = r.variation.as_ref().map_or(&[][..], |v| v.parameters.as_slice());
         let name = convert::batch_name(scenario_file);
-        let request = convert::Request { path: scenario_file, name: &name, config: 1, parameters, source: String::new() };
+        let request = convert::Request { path: scenario_file, name, config: 1, parameters, source: String::new(), keep_model: false, caches: None };
         let (prepared, trace) = convert::trace_of(&request, options).map_err(|f| f.message)?;
         let (frames, _) = osi::trace_frames(&prepared.scenario, prepared.road(), &trace);
         osi::trace_file::write(&path, &frames).map(Some)

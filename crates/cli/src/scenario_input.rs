@@ -7,16 +7,15 @@ use std::path::Path;
 
 use crate::Failure;
 
-/// `openscenario::load`, failing with the cause of a failure when there is one to name.
+/// `openscenario::load`, failing with the cause of a failure when there is one to name (a
+/// `--param` value that does not fit is one even where the reader reads past it, as esmini
+/// would, to a problem of the attribute that uses it).
 pub(crate) fn load(path: &Path, options: &openscenario::LoadOptions) -> Result<openscenario::Loaded, Failure> {
-    openscenario::load(path, options).map_err(|e| {
-        let causes = convert::preflight::cause(path, &options.parameters, &[]);
-        if causes.is_empty() {
-            Failure::input(e.to_string())
-        } else {
-            Failure::input(causes.iter().map(ToString::to_string).collect::<Vec<_>>().join("\n"))
-        }
-    })
+    let causes = convert::preflight::cause(path, &options.parameters, &[]);
+    if !causes.is_empty() {
+        return Err(Failure::input(causes.iter().map(ToString::to_string).collect::<Vec<_>>().join("\n")));
+    }
+    openscenario::load(path, options).map_err(|e| Failure::input(e.to_string()))
 }
 
 /// The road network `scenario` names, if any, with its warnings.

@@ -1,8 +1,9 @@
 //! The options several commands share, each defined once and flattened into the commands'
 //! arguments (`#[command(flatten)]`), so that it is named, parsed and explained the same way
-//! everywhere: `--param` (convert, simulate, serve, inspect, check) and the options of the
+//! everywhere: `--param` (convert, simulate, serve, inspect, check), the options of the
 //! commands that run a scenario, `--step`, `--max-time`, `--engine-seed`, `--lenient` (convert,
-//! simulate, serve).
+//! simulate, serve), and those of the commands that write the run as CommonRoad, `--dt`,
+//! `--drop-ego`, `--date` (convert, serve).
 
 /// `--param NAME=VALUE`, repeatable.
 #[derive(clap::Args)]
@@ -58,6 +59,21 @@ impl RunArgs {
 /// its message instead of being read as an unknown option `-1`.
 pub(crate) fn whole<T: std::str::FromStr>(s: &str) -> Result<T, String> {
     s.trim().parse::<T>().map_err(|_| format!("expected a whole number of at least 0 (and not too large), got {s:?}"))
+}
+
+/// The CommonRoad file a run becomes.
+#[derive(clap::Args)]
+pub(crate) struct CommonRoadArgs {
+    /// CommonRoad time step, s.
+    #[arg(long, default_value_t = 0.1, allow_negative_numbers = true)]
+    pub(crate) dt: f64,
+    /// Leave the ego out of the obstacles (for motion-planning benchmarks).
+    #[arg(long)]
+    pub(crate) drop_ego: bool,
+    /// Date attribute, YYYY-MM-DD (default: the OpenSCENARIO FileHeader's date, else
+    /// 1970-01-01 — never today, so the same input gives the same bytes), as for map.
+    #[arg(long, value_parser = convert::parse_date)]
+    pub(crate) date: Option<commonroad::Date>,
 }
 
 /// `NAME=VALUE`, the name trimmed and without a leading `$` (a parameter is declared and

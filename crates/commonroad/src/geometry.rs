@@ -4,7 +4,7 @@
 //! `center` into an obstacle shape is read differently by commonroad-io 2024.3 (applies it) and
 //! 2026.1 (ignores it).
 
-use crate::error::{finite, positive, ModelError};
+use crate::error::{finite, positive, Error};
 
 /// A point in metres; `z` is optional (written only when present).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -38,7 +38,7 @@ pub struct Rectangle {
 
 impl Rectangle {
     /// Fails unless both are finite and > 0.
-    pub fn new(length: f64, width: f64) -> Result<Self, ModelError> {
+    pub fn new(length: f64, width: f64) -> Result<Self, Error> {
         Ok(Self { length: positive("rectangle length", length)?, width: positive("rectangle width", width)? })
     }
     pub fn length(&self) -> f64 {
@@ -57,7 +57,7 @@ pub struct Circle {
 
 impl Circle {
     /// Fails unless the radius is finite and > 0.
-    pub fn new(radius: f64) -> Result<Self, ModelError> {
+    pub fn new(radius: f64) -> Result<Self, Error> {
         Ok(Self { radius: positive("circle radius", radius)? })
     }
     pub fn radius(&self) -> f64 {
@@ -73,9 +73,9 @@ pub struct Polygon {
 
 impl Polygon {
     /// Fails with fewer than 3 points or a non-finite coordinate.
-    pub fn new(points: Vec<Point>) -> Result<Self, ModelError> {
+    pub fn new(points: Vec<Point>) -> Result<Self, Error> {
         if points.len() < 3 {
-            return Err(ModelError::TooFewPolygonPoints { got: points.len() });
+            return Err(Error::TooFewPolygonPoints { got: points.len() });
         }
         for p in &points {
             finite("polygon x", p.x)?;
@@ -101,11 +101,11 @@ pub enum Shape {
 
 impl Shape {
     /// A `length` × `width` box (fails unless both > 0).
-    pub fn rectangle(length: f64, width: f64) -> Result<Self, ModelError> {
+    pub fn rectangle(length: f64, width: f64) -> Result<Self, Error> {
         Rectangle::new(length, width).map(Shape::Rectangle)
     }
     /// A circle (fails unless `radius` > 0).
-    pub fn circle(radius: f64) -> Result<Self, ModelError> {
+    pub fn circle(radius: f64) -> Result<Self, Error> {
         Circle::new(radius).map(Shape::Circle)
     }
 }

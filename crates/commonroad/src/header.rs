@@ -2,7 +2,7 @@
 
 use std::fmt;
 
-use crate::error::ModelError;
+use crate::error::Error;
 
 /// The attributes of `<commonRoad>` (besides the fixed `commonRoadVersion="2020a"`).
 #[derive(Debug, Clone, PartialEq)]
@@ -27,15 +27,15 @@ pub struct BenchmarkId(String);
 
 impl BenchmarkId {
     /// Checks the reader's pattern (full match).
-    pub fn parse(id: &str) -> Result<Self, ModelError> {
+    pub fn parse(id: &str) -> Result<Self, Error> {
         match check_benchmark_id(id) {
             Ok(()) => Ok(Self(id.to_string())),
-            Err(why) => Err(ModelError::InvalidBenchmarkId { id: id.to_string(), why }),
+            Err(why) => Err(Error::InvalidBenchmarkId { id: id.to_string(), why }),
         }
     }
 
     /// `CCC_<name reduced to ASCII letters and digits>-1_1_T-1`, the id of a converted scenario.
-    pub fn for_converted(country: &str, name: &str) -> Result<Self, ModelError> {
+    pub fn for_converted(country: &str, name: &str) -> Result<Self, Error> {
         let map_name: String = name.chars().filter(char::is_ascii_alphanumeric).collect();
         Self::parse(&format!("{country}_{map_name}-1_1_T-1"))
     }
@@ -142,7 +142,7 @@ pub struct Date {
 
 impl Date {
     /// Fails for a day that does not exist (Gregorian calendar, years 1–9999).
-    pub fn new(year: u16, month: u8, day: u8) -> Result<Self, ModelError> {
+    pub fn new(year: u16, month: u8, day: u8) -> Result<Self, Error> {
         let leap = (year.is_multiple_of(4) && !year.is_multiple_of(100)) || year.is_multiple_of(400);
         let days = match month {
             1 | 3 | 5 | 7 | 8 | 10 | 12 => 31,
@@ -152,7 +152,7 @@ impl Date {
             _ => 0,
         };
         if year == 0 || year > 9999 || day == 0 || day > days {
-            return Err(ModelError::InvalidDate { year, month, day });
+            return Err(Error::InvalidDate { year, month, day });
         }
         Ok(Self { year, month, day })
     }
@@ -173,17 +173,18 @@ impl fmt::Display for Date {
     }
 }
 
-/// `<location>`. The default is what commonroad-io writes for "unknown": -999 / 999 / 999.
+/// `<location>`: where on Earth the scenario is (not to be confused with `diagnostic::Location`,
+/// a place in a file). The default is what commonroad-io writes for "unknown": -999 / 999 / 999.
 /// `<environment>` is deliberately absent: the XSD's enums do not match the readers' enums.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Location {
+pub struct GeoLocation {
     pub geo_name_id: i64,
     pub gps_latitude: f64,
     pub gps_longitude: f64,
     pub geo_transformation: Option<GeoTransformation>,
 }
 
-impl Default for Location {
+impl Default for GeoLocation {
     fn default() -> Self {
         Self { geo_name_id: -999, gps_latitude: 999.0, gps_longitude: 999.0, geo_transformation: None }
     }

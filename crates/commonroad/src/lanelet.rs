@@ -1,7 +1,7 @@
 //! Lanelets: two bounds with equal point counts (enforced by [`LaneletBounds`]), topology,
 //! stop line, types, users and traffic-control references.
 
-use crate::error::{finite, ModelError};
+use crate::error::{finite, Error};
 use crate::geometry::Point;
 use crate::ids::{LaneletId, TrafficLightId, TrafficSignId};
 use crate::str_enum::str_enum;
@@ -85,12 +85,12 @@ pub struct LaneletBounds {
 
 impl LaneletBounds {
     /// Fails if the counts differ, a side has fewer than 2 points, or a coordinate is not finite.
-    pub fn new(left: Vec<Point>, right: Vec<Point>) -> Result<Self, ModelError> {
+    pub fn new(left: Vec<Point>, right: Vec<Point>) -> Result<Self, Error> {
         if left.len() != right.len() {
-            return Err(ModelError::BoundPointCountMismatch { left: left.len(), right: right.len() });
+            return Err(Error::BoundPointCountMismatch { left: left.len(), right: right.len() });
         }
         if left.len() < 2 {
-            return Err(ModelError::TooFewBoundPoints { got: left.len() });
+            return Err(Error::TooFewBoundPoints { got: left.len() });
         }
         for p in left.iter().chain(&right) {
             finite("bound point x", p.x)?;

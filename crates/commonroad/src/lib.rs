@@ -92,9 +92,9 @@ mod traffic;
 mod validate;
 pub mod xml;
 
-pub use error::ModelError;
+pub use error::Error;
 pub use geometry::{AbsoluteShape, Circle, PlacedCircle, PlacedRectangle, Point, Polygon, Rectangle, Shape};
-pub use header::{BenchmarkId, BenchmarkIdParts, Date, GeoTransformation, Header, Location};
+pub use header::{BenchmarkId, BenchmarkIdParts, Date, GeoLocation, GeoTransformation, Header};
 pub use ids::{IdAllocator, IncomingId, IntersectionId, LaneletId, ObstacleId, PlanningProblemId, TrafficLightId, TrafficSignId};
 pub use intersection::{Incoming, Intersection};
 pub use lanelet::{Adjacent, DrivingDir, Lanelet, LaneletBounds, LaneletType, LineMarking, RoadUser, StopLine};
@@ -105,3 +105,8 @@ pub use sign_ids::{is_xsd_traffic_sign_id, XSD_TRAFFIC_SIGN_IDS};
 pub use tags::Tag;
 pub use traffic::{CycleElement, TrafficLight, TrafficLightColor, TrafficLightDirection, TrafficSign, TrafficSignElement};
 pub use validate::{ElementKind, Problem, ProblemKind};
+
+// The README's example is compiled (and run, where it needs no file) with the doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

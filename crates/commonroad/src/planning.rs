@@ -1,6 +1,6 @@
 //! Planning problems: an exact initial state and goal regions with interval bounds.
 
-use crate::error::{finite, ModelError};
+use crate::error::{finite, Error};
 use crate::geometry::{PlacedCircle, PlacedRectangle, Polygon};
 use crate::ids::{LaneletId, PlanningProblemId};
 
@@ -26,11 +26,11 @@ pub struct Interval {
 }
 
 impl Interval {
-    pub fn new(start: f64, end: f64) -> Result<Self, ModelError> {
+    pub fn new(start: f64, end: f64) -> Result<Self, Error> {
         finite("interval start", start)?;
         finite("interval end", end)?;
         if start > end {
-            return Err(ModelError::ReversedInterval { start, end });
+            return Err(Error::ReversedInterval { start, end });
         }
         Ok(Self { start, end })
     }
@@ -51,9 +51,9 @@ pub struct TimeInterval {
 }
 
 impl TimeInterval {
-    pub fn new(start: u64, end: u64) -> Result<Self, ModelError> {
+    pub fn new(start: u64, end: u64) -> Result<Self, Error> {
         if end == 0 || start > end {
-            return Err(ModelError::BadTimeInterval { start, end });
+            return Err(Error::BadTimeInterval { start, end });
         }
         Ok(Self { start, end })
     }

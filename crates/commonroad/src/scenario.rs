@@ -3,7 +3,7 @@
 
 use std::collections::BTreeSet;
 
-use crate::header::{Header, Location};
+use crate::header::{GeoLocation, Header};
 use crate::ids::IdAllocator;
 use crate::intersection::Intersection;
 use crate::lanelet::Lanelet;
@@ -37,7 +37,7 @@ impl LaneletNetwork {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Scenario {
     pub header: Header,
-    pub location: Location,
+    pub location: GeoLocation,
     pub tags: BTreeSet<Tag>,
     pub network: LaneletNetwork,
     pub static_obstacles: Vec<StaticObstacle>,
@@ -50,7 +50,7 @@ impl Scenario {
     pub fn new(header: Header) -> Self {
         Self {
             header,
-            location: Location::default(),
+            location: GeoLocation::default(),
             tags: BTreeSet::new(),
             network: LaneletNetwork::default(),
             static_obstacles: Vec::new(),

@@ -22,7 +22,7 @@ use crate::discover::discover;
 use crate::options::ConvertOptions;
 use crate::outputs::{complete, write_output, MapFiles, OutputPaths, Written};
 use crate::picture::write_picture;
-use crate::pipeline::{convert_scenario_with, Conversion, Model, Request};
+use crate::pipeline::{convert, Conversion, Model, Request};
 use crate::plan::{Job, Plan, Work};
 use crate::report::{BatchReport, Failure, FolderSummary, ScenarioReport, Skipped, Stage, StageWarning, Status, Timings, Variation};
 use crate::shard::Shard;
@@ -197,16 +197,17 @@ fn convert_limited(job: &Job, parameters: Vec<(String, String)>, shared: &Shared
     let config = job.variation.as_ref().map_or(1, |(k, _)| *k);
     let source = batch_source(&job.input, job.variation.as_ref().map(|(k, _)| *k));
     let Some(limit) = shared.batch.timeout else {
-        let request = Request { path: &job.scenario, name: &job.name, config, parameters: &parameters, source };
-        return convert_scenario_with(&request, &shared.options, keep, &shared.caches);
+        let request =
+            Request { config, parameters: &parameters, source, keep_model: keep, ..Request::named(&job.scenario, &job.name).with_caches(&shared.caches) };
+        return convert(&request, &shared.options);
     };
     let (tx, rx) = mpsc::channel();
     let (path, name) = (job.scenario.clone(), job.name.clone());
     let opts = Arc::new(ConvertOptions { deadline: Some(std::time::Instant::now() + limit), ..ConvertOptions::clone(&shared.options) });
     let caches = shared.caches.clone();
     let spawned = std::thread::Builder::new().spawn(move || {
-        let request = Request { path: &path, name: &name, config, parameters: &parameters, source };
-        let _ = tx.send(convert_scenario_with(&request, &opts, keep, &caches));
+        let request = Request { config, parameters: &parameters, source, keep_model: keep, ..Request::named(&path, &name).with_caches(&caches) };
+        let _ = tx.send(convert(&request, &opts));
     });
     let timed_out = |msg: String| Conversion {
         result: Err(Failure { stage: Stage::Timeout, message: msg }),

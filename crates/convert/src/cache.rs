@@ -15,7 +15,7 @@ use std::sync::{Arc, Mutex, OnceLock};
 use std::time::{Instant, SystemTime};
 
 use commonroad::protobuf::{encode_map, MapFile};
-use commonroad::{EnvironmentObstacle, LaneletNetwork, Location, Scenario};
+use commonroad::{EnvironmentObstacle, GeoLocation, LaneletNetwork, Scenario};
 
 use crate::options::ConvertOptions;
 use crate::stages::{run_map, MapOutput};
@@ -40,7 +40,7 @@ pub struct Road {
 #[derive(PartialEq)]
 struct MapContent {
     country: String,
-    location: Location,
+    location: GeoLocation,
     network: LaneletNetwork,
     environment: Vec<EnvironmentObstacle>,
 }
@@ -65,7 +65,7 @@ impl MapContent {
 
 impl Road {
     /// The 2024 map of `scenario` (made of this road), encoded once per distinct content.
-    pub fn map_file(&self, scenario: &Scenario) -> Result<Arc<MapFile>, commonroad::protobuf::WriteError> {
+    pub fn map_file(&self, scenario: &Scenario) -> Result<Arc<MapFile>, commonroad::Error> {
         if let Some((_, file)) = lock(&self.maps).iter().find(|(c, _)| c.is_of(scenario)) {
             return Ok(file.clone());
         }
@@ -166,7 +166,8 @@ fn load_road(path: &Path, options: &ConvertOptions) -> Result<Arc<Road>, String>
     let t = Instant::now();
     let map = run_map(&loaded.network, options);
     Ok(Arc::new(Road {
-        warnings: loaded.warnings.iter().map(ToString::to_string).collect(),
+        // the OpenDRIVE reader's warnings have always said so
+        warnings: loaded.warnings.iter().map(|w| w.labelled("warning").to_string()).collect(),
         network: loaded.network,
         map,
         load_ms,

@@ -19,7 +19,6 @@ use crate::held_input::substep;
 use crate::options::ConvertOptions;
 use crate::pipeline::{finish, prepare, Conversion, Facts, Model, Prepared, Request};
 use crate::report::{Failure, Stage, StageWarning, Timings};
-use crate::single::{batch_name, batch_source};
 use crate::stages::run_engine;
 
 self_cell::self_cell!(
@@ -51,8 +50,7 @@ impl ClosedLoop {
     pub fn start(path: &Path, options: &ConvertOptions, external: &External) -> Result<ClosedLoop, Failure> {
         let mut warnings = Vec::new();
         let mut timings = Timings::default();
-        let name = batch_name(path);
-        let request = Request { path, name: &name, config: 1, parameters: &[], source: batch_source(path, None) };
+        let request = Request::file(path);
         let prepared = prepare(&request, options, &Caches::with_capacity(1), &mut warnings, &mut timings)?;
         let started = Instant::now();
         let settings = Settings { step: options.step, max_time: options.max_time };
@@ -191,8 +189,7 @@ impl ClosedLoop {
         let mut facts = Facts::default();
         warnings.extend(engine_warnings.into_iter().map(|message| StageWarning { stage: Stage::Engine, message }));
         let prepared = self.session.borrow_owner();
-        let name = batch_name(&self.path);
-        let request = Request { path: &self.path, name: &name, config: 1, parameters: &[], source: batch_source(&self.path, None) };
+        let request = Request::file(&self.path);
         let built = finish(prepared, prepared.lanelets.clone(), &request, &self.options, trace, started, &mut warnings, &mut timings, &mut facts);
         let mut model = None;
         let result = built.map(|(output, m)| {

@@ -4,8 +4,7 @@
 //! (never below 0).
 
 use commonroad::{
-    GoalPosition, GoalState, Interval, ModelError, PlacedRectangle, PlanningInitialState, PlanningProblem, PlanningProblemId, Point, Rectangle, State,
-    TimeInterval,
+    GoalPosition, GoalState, Interval, PlacedRectangle, PlanningInitialState, PlanningProblem, PlanningProblemId, Point, Rectangle, State, TimeInterval,
 };
 use serde::Serialize;
 
@@ -31,7 +30,7 @@ impl Default for GoalOptions {
 }
 
 /// The planning problem of an ego whose first state is `first` and last state `last`.
-pub fn planning_problem(id: PlanningProblemId, first: &State, last: &State, options: &GoalOptions) -> Result<PlanningProblem, ModelError> {
+pub fn planning_problem(id: PlanningProblemId, first: &State, last: &State, options: &GoalOptions) -> Result<PlanningProblem, commonroad::Error> {
     let initial_state = PlanningInitialState {
         x: first.x,
         y: first.y,

@@ -3,13 +3,13 @@
 //! OpenSCENARIO FileHeader's date, else 1970-01-01. Never "today": the same input must give
 //! the same bytes on any day.
 
-use commonroad::{BenchmarkId, Date, ModelError};
+use commonroad::{BenchmarkId, Date};
 
 /// Name used when nothing of the scenario name survives the reduction to letters and digits.
 const FALLBACK_NAME: &str = "Scenario";
 
 /// `country_<alnum name>-1_<config>_T-1`. `config` 0 is written as 1.
-pub fn benchmark_id(country: &str, name: &str, config: u64) -> Result<BenchmarkId, ModelError> {
+pub fn benchmark_id(country: &str, name: &str, config: u64) -> Result<BenchmarkId, commonroad::Error> {
     let mut map_name: String = name.chars().filter(char::is_ascii_alphanumeric).collect();
     if map_name.is_empty() {
         map_name = FALLBACK_NAME.to_string();

@@ -68,17 +68,20 @@ pub use obstacles::{obstacles, Obstacles};
 pub use options::{ConvertOptions, OutputFormat};
 pub use outputs::{write_output, MapFiles, OutputPaths, Written};
 pub use picture::{picture_path, write_picture};
-pub use pipeline::{convert_scenario, convert_scenario_keeping, convert_scenario_with, Conversion, Facts, Model, Output, Prepared, Protobuf2024, Request};
+pub use pipeline::{convert, Conversion, Facts, Model, Output, Prepared, Protobuf2024, Request};
 pub use report::{BatchReport, Failure, FolderSummary, ScenarioReport, Skipped, Stage, StageWarning, Status, Timings, Variation};
 pub use report_files::{JsonReport, Table, TABLE_COLUMNS};
 pub use resample::{cr_step_count, resample, whole_multiple, Pose};
 pub use shard::Shard;
-pub use single::{
-    batch_name, batch_source, convert_file, convert_file_with, convert_variation, convert_variation_with, load_distribution, output_file_name, output_name,
-};
+pub use single::{batch_name, batch_source, convert_variation, convert_variation_with, load_distribution, output_file_name, output_name};
 pub use stages::map_options;
 pub use story_marks::event_marks;
 pub use summary::{render as render_summary, summarise, Summary};
 pub use tags::scenario_tags;
 pub use trace_of::trace_of;
 pub use tracks::{tracks, Placement, Track, MIN_BOX_SIDE};
+
+// The README's example is compiled (and run, where it needs no file) with the doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

@@ -77,19 +77,59 @@ pub struct Conversion {
     pub facts: Facts,
 }
 
-/// Which scenario to convert and how to name it.
-#[derive(Debug, Clone, PartialEq)]
+/// Which scenario to convert, how to name it, and what to keep: the one way in to a
+/// conversion ([`convert`]). [`Request::file`] names a file as `osc2cr convert` does.
+#[derive(Clone)]
 pub struct Request<'a> {
     /// The OpenSCENARIO scenario file.
     pub path: &'a Path,
     /// The name in the benchmark id (reduced to letters and digits there).
-    pub name: &'a str,
+    pub name: String,
     /// Configuration id of the benchmark id: the variation index, 1 without variations.
     pub config: u64,
     /// Parameter values of a variation, applied after `ConvertOptions::parameters`.
     pub parameters: &'a [(String, String)],
     /// Source text for the header when `ConvertOptions::source` is not set.
     pub source: String,
+    /// Also return the model a successful conversion serialised (e.g. to draw it); off by
+    /// default: a batch of large maps should not hold every model.
+    pub keep_model: bool,
+    /// The road networks shared with other conversions (a batch passes the one its workers
+    /// share); `None`: a cache of this conversion's own.
+    pub caches: Option<&'a Caches>,
+}
+
+impl<'a> Request<'a> {
+    /// The scenario file `path` under the benchmark name `name`: configuration 1, no
+    /// parameters, an empty header source (the default of [`ConvertOptions::source`] applies),
+    /// no model kept, a cache of its own. [`Request::file`] names it as a batch does.
+    pub fn named(path: &'a Path, name: &str) -> Request<'a> {
+        Request { path, name: name.to_string(), config: 1, parameters: &[], source: String::new(), keep_model: false, caches: None }
+    }
+
+    /// This request, keeping the model ([`Request::keep_model`]).
+    pub fn keeping_model(self) -> Request<'a> {
+        Request { keep_model: true, ..self }
+    }
+
+    /// This request, reading road networks through `caches` ([`Request::caches`]).
+    pub fn with_caches(self, caches: &'a Caches) -> Request<'a> {
+        Request { caches: Some(caches), ..self }
+    }
+}
+
+impl std::fmt::Debug for Request<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Request")
+            .field("path", &self.path)
+            .field("name", &self.name)
+            .field("config", &self.config)
+            .field("parameters", &self.parameters)
+            .field("source", &self.source)
+            .field("keep_model", &self.keep_model)
+            .field("shared_caches", &self.caches.is_some())
+            .finish()
+    }
 }
 
 fn ms(t: Instant) -> f64 {
@@ -108,20 +148,17 @@ pub struct Model {
 }
 
 /// Converts one scenario file into CommonRoad bytes in the options' format (nothing is
-/// written).
-pub fn convert_scenario(request: &Request<'_>, options: &ConvertOptions) -> Conversion {
-    convert_scenario_keeping(request, options, false).0
-}
-
-/// Like [`convert_scenario`]; with `keep`, a successful conversion also returns the model it
-/// serialised (not kept otherwise: a batch of large maps should not hold every model).
-pub fn convert_scenario_keeping(request: &Request<'_>, options: &ConvertOptions, keep: bool) -> (Conversion, Option<Model>) {
-    convert_scenario_with(request, options, keep, &Caches::with_capacity(1))
-}
-
-/// Like [`convert_scenario_keeping`], reading road networks through `caches` (a batch passes
-/// the one its conversions share).
-pub fn convert_scenario_with(request: &Request<'_>, options: &ConvertOptions, keep: bool, caches: &Caches) -> (Conversion, Option<Model>) {
+/// written); with [`Request::keep_model`], a successful conversion also returns the model it
+/// serialised.
+pub fn convert(request: &Request<'_>, options: &ConvertOptions) -> (Conversion, Option<Model>) {
+    let own;
+    let caches = match request.caches {
+        Some(c) => c,
+        None => {
+            own = Caches::with_capacity(1);
+            &own
+        }
+    };
     let start = Instant::now();
     let mut c = Conversion {
         result: Err(Failure { stage: Stage::Load, message: String::new() }),
@@ -131,7 +168,7 @@ pub fn convert_scenario_with(request: &Request<'_>, options: &ConvertOptions, ke
     };
     let mut model = None;
     c.result = run(request, options, caches, &mut c.warnings, &mut c.timings, &mut c.facts).map(|(output, m)| {
-        model = keep.then_some(m);
+        model = request.keep_model.then_some(m);
         output
     });
     c.timings.total_ms = ms(start);
@@ -239,7 +276,10 @@ pub(crate) fn prepare(
     let load_options = LoadOptions { parameters, seed: options.seed, ..Default::default() };
     // The schema pass first (the same as `osc2cr check`): what is wrong with the file itself,
     // all of it. Its warnings (deprecations, version mixtures) are `check`'s to list.
-    let schema_errors: Vec<String> = openscenario::validate::validate_file(request.path, &load_options.parameters)
+    // A file that is missing, empty or not well-formed XML stops here as what it is: it is not a
+    // schema error `--lenient` could read past.
+    let schema_errors: Vec<String> = openscenario::validate::validate_readable_file(request.path, &load_options.parameters)
+        .map_err(|e| fail(Stage::Load, e.to_string()))?
         .into_iter()
         .filter(|f| f.severity == openscenario::validate::Severity::Error)
         .map(|f| format!("{}: {}", f.location, f.message))
@@ -345,7 +385,7 @@ pub(crate) fn finish(
             Output::Xml(commonroad::xml::write_scenario(&built.scenario, &built.problems).map_err(|e| fail(Stage::Write, e.to_string()))?)
         }
         OutputFormat::Protobuf2024 => {
-            let write_error = |e: commonroad::protobuf::WriteError| fail(Stage::Write, e.to_string());
+            let write_error = |e: commonroad::Error| fail(Stage::Write, e.to_string());
             // the map of a cached road is encoded once for all its scenarios
             let map = match &prepared.cached {
                 Some(road) => road.map_file(&built.scenario).map_err(write_error)?,
@@ -364,7 +404,7 @@ pub(crate) fn finish(
 }
 
 fn header(request: &Request<'_>, scenario: &Scenario, options: &ConvertOptions) -> Result<Header, String> {
-    let benchmark_id = benchmark_id(&options.country, request.name, request.config).map_err(|e| e.to_string())?;
+    let benchmark_id = benchmark_id(&options.country, &request.name, request.config).map_err(|e| e.to_string())?;
     let date = options.date.or_else(|| date_prefix(&scenario.header.date)).unwrap_or_else(fallback_date);
     let author = match &options.author {
         Some(a) => a.clone(),

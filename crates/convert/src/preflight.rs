@@ -11,26 +11,15 @@
 //!   scenario (besides the schema pass, which a checker runs itself), collected instead of
 //!   stopping at the first, each positioned: what `osc2cr check` adds to its own findings.
 
-use std::fmt;
 use std::path::Path;
 
-use openscenario::{Content, ErrorKind, LoadOptions, Location, Scenario};
+use openscenario::{Content, Diagnostic, ErrorKind, LoadOptions, Location, Scenario};
 
 /// A problem a conversion stops on, where it is.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Stop {
-    pub location: Location,
-    pub message: String,
-}
-
-impl fmt::Display for Stop {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}: {}", self.location, self.message)
-    }
-}
+pub type Stop = Diagnostic;
 
 fn stop(location: Location, message: impl Into<String>) -> Stop {
-    Stop { location, message: message.into() }
+    Diagnostic::new(location, message)
 }
 
 /// Why `path` cannot be used at all, if that is the case: no such file (or a folder, or
@@ -93,12 +82,18 @@ fn stops_with(path: &Path, params: &[(String, String)], variation: &[(String, St
     }
     let mut parameters = params.to_vec();
     parameters.extend(variation.iter().cloned());
-    // past a missing catalog (a problem, what convert stops on) to what follows it
+    // past a missing catalog (what convert stops on) to what follows it
     let loaded = match openscenario::load(path, &LoadOptions { parameters, go_on_without_catalogs: true, ..Default::default() }) {
         Ok(l) => l,
         Err(e) => return vec![stop(e.location, e.message)],
     };
-    let mut out: Vec<Stop> = loaded.problems.iter().map(|p| stop(p.location.clone(), p.message.clone())).collect();
+    // a catalog whose directories are not there is a warning of that reading: each reference
+    // to it is where a conversion's reading would stop
+    let gaps = loaded.warnings.iter().filter_map(|w| {
+        let message = w.message.strip_suffix(openscenario::CATALOG_NOT_CHECKED)?;
+        Some(stop(w.location.clone(), message.trim_end()))
+    });
+    let mut out: Vec<Stop> = loaded.problems.iter().cloned().chain(gaps).collect();
     match &loaded.content {
         Content::Scenario(s) => {
             out.extend(road_stops(s));
@@ -127,7 +122,4 @@ fn road_stops(s: &Scenario) -> Vec<Stop> {
         None => None,
     };
     engine::road_references(s, road.as_ref())
-        .into_iter()
-        .map(|p| stop(Location { file: p.file.clone(), line: p.line, col: p.col }, p.message.clone()))
-        .collect()
 }

@@ -8,7 +8,7 @@ use openscenario::{Content, Distribution, LoadOptions};
 
 use crate::cache::Caches;
 use crate::options::ConvertOptions;
-use crate::pipeline::{convert_scenario_with, Conversion, Request};
+use crate::pipeline::{convert, Conversion, Request};
 use crate::report::{Failure, Stage};
 
 /// Header source of a batch conversion: `input` is the file given (scenario or distribution),
@@ -45,16 +45,12 @@ fn file_name(p: &Path) -> String {
     p.file_name().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default()
 }
 
-/// Converts the scenario file `path` as `osc2cr convert path` does (no file is written).
-pub fn convert_file(path: &Path, options: &ConvertOptions) -> Conversion {
-    convert_file_with(path, options, &Caches::with_capacity(1))
-}
-
-/// Like [`convert_file`], reading the road network through `caches`.
-pub fn convert_file_with(path: &Path, options: &ConvertOptions, caches: &Caches) -> Conversion {
-    let name = batch_name(path);
-    let request = Request { path, name: &name, config: 1, parameters: &[], source: batch_source(path, None) };
-    convert_scenario_with(&request, options, false, caches).0
+impl<'a> Request<'a> {
+    /// The scenario file `path` named as `osc2cr convert path` names it (benchmark name, header
+    /// source): [`Request::named`] with [`batch_name`] and [`batch_source`].
+    pub fn file(path: &'a Path) -> Request<'a> {
+        Request { source: batch_source(path, None), ..Request::named(path, &batch_name(path)) }
+    }
 }
 
 /// Loads the parameter distribution file `path` with the options' global parameters and seed,
@@ -96,7 +92,11 @@ pub fn convert_variation_with(path: &Path, dist: &Distribution, index: u64, opti
             facts: Default::default(),
         };
     };
-    let name = batch_name(path);
-    let request = Request { path: &dist.scenario_file, name: &name, config: index, parameters: &parameters, source: batch_source(path, Some(index)) };
-    convert_scenario_with(&request, options, false, caches).0
+    let request = Request {
+        config: index,
+        parameters: &parameters,
+        source: batch_source(path, Some(index)),
+        ..Request::named(&dist.scenario_file, &batch_name(path)).with_caches(caches)
+    };
+    convert(&request, options).0
 }

@@ -30,7 +30,8 @@ pub(crate) fn run_map(road: &opendrive::RoadNetwork, options: &ConvertOptions) -
     let result = map::convert(road, &map_options(&options.country, options.map_tolerance));
     MapOutput {
         tags: map::derived_tags(&result.network),
-        warnings: result.warnings.iter().map(ToString::to_string).collect(),
+        // the map converter's warnings have always said so
+        warnings: result.warnings.iter().map(|w| w.labelled("warning").to_string()).collect(),
         light_of_signal: result.light_of_signal,
         network: result.network,
     }

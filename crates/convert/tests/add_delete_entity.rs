@@ -92,10 +92,10 @@ fn an_entity_deleted_and_added_back_is_one_obstacle_per_appearance() {
 fn a_passed_deadline_is_a_timeout_failure_not_an_engine_failure() {
     let dir = workdir("part3-entities-deadline");
     let path = dir.join("delete_add.xosc");
-    let request = convert::Request { path: &path, name: "delete_add", config: 1, parameters: &[], source: String::new() };
+    let request = convert::Request::named(&path, "delete_add");
     // The 7 s run takes 700 steps; the engine looks at the clock at step 256 and stops there.
     let options = convert::ConvertOptions { deadline: Some(std::time::Instant::now()), ..Default::default() };
-    let conversion = convert::convert_scenario(&request, &options);
+    let (conversion, _) = convert::convert(&request, &options);
     let _ = std::fs::remove_dir_all(&dir);
     match conversion.result {
         Err(f) => {

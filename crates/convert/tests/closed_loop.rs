@@ -6,7 +6,7 @@
 //! state is reached at the end (fed its states every 0.1 s, cut-in's ego drives as in the
 //! batch), an entity taken over in between dead-reckons; `open_loop` is the batch conversion.
 
-use convert::{batch_name, batch_source, convert_scenario_keeping, ClosedLoop, ConvertOptions, Model, Request};
+use convert::{convert, ClosedLoop, ConvertOptions, Model, Request};
 use engine::{External, ExternalState, Input, ScriptedMotion};
 
 /// The largest difference between two models' obstacle states (infinite when their
@@ -49,9 +49,7 @@ fn a_session_converts_as_the_batch_and_a_replayed_ego_changes_nothing() {
     let files = testkit::compared_scenarios(&shared);
     assert!(files.len() > 100);
     for path in &files {
-        let name = batch_name(path);
-        let request = Request { path, name: &name, config: 1, parameters: &[], source: batch_source(path, None) };
-        let (batch, batch_model) = convert_scenario_keeping(&request, &options, true);
+        let (batch, batch_model) = convert(&Request::file(path).keeping_model(), &options);
         let (Ok(bytes), Some(batch_model)) = (batch.result, batch_model) else { continue };
         let ego_name = batch.facts.ego.clone().expect("an ego");
 
@@ -114,7 +112,7 @@ fn the_same_inputs_give_the_same_bytes() {
     let (a, b) = (drive(), drive());
     assert_eq!(a, b);
     // and it is not the open-loop conversion: the ego drove itself
-    let open = convert::convert_file(&path, &ConvertOptions::default()).result.expect("converts");
+    let open = convert(&Request::file(&path), &ConvertOptions::default()).0.result.expect("converts");
     assert_ne!(a, open);
 }
 
@@ -129,7 +127,7 @@ fn the_open_loop_conversion_of_a_session_is_the_batch_conversion() {
     let Some(shared) = testkit::shared_dir() else { return };
     let path = shared.join("corpus/esmini/xosc/cut-in.xosc");
     let options = ConvertOptions::default();
-    let batch = convert::convert_file(&path, &options).result.expect("converts");
+    let batch = convert(&Request::file(&path), &options).0.result.expect("converts");
     for external in [External::none(), External::named(["Ego"])] {
         let mut session = ClosedLoop::start(&path, &options, &external).expect("starts");
         let (open, model) = session.open_loop();

@@ -6,7 +6,7 @@
 use std::collections::BTreeSet;
 
 use commonroad::DynamicObstacleType;
-use convert::{convert_scenario_keeping, ConvertOptions, Request};
+use convert::{convert, ConvertOptions, Request};
 
 const SCENARIOS: &[&str] = &["trailers", "truck_with_rotating_axle", "lane_change", "parking_lot", "cut-in_cr"];
 
@@ -22,8 +22,7 @@ fn implicit_trailers_become_truck_obstacles() {
         assert!(!trailers.is_empty(), "{name}: the corpus scenario is expected to have an implicit trailer");
         let road_users = run.trace.entities.iter().filter(|e| !run.trace.ghosts.contains(&e.name)).count();
 
-        let request = Request { path: &path, name, config: 1, parameters: &[], source: String::new() };
-        let (conversion, model) = convert_scenario_keeping(&request, &ConvertOptions::default(), true);
+        let (conversion, model) = convert(&Request::named(&path, name).keeping_model(), &ConvertOptions::default());
         conversion.result.as_ref().unwrap_or_else(|f| panic!("{name}: {f:?}"));
         assert!(
             !conversion.warnings.iter().any(|w| w.message.contains("not declared in the scenario")),

@@ -10,7 +10,8 @@
 //! state built from a scenario) · the behaviours that change the state: `storyboard` (element
 //! states and transitions), `conditions` (triggers, edges, delays, each condition), `actions`
 //! (one file per action), `controllers` (the driver models), `motion` (default controller),
-//! `external` (entities driven from outside: closed loop), `ghost*` · `sim` (the run state,
+//! `external` (entities driven from outside: closed loop), `ghost` (the ghost the follow
+//! controllers run ahead: setup, trail, restarts) · `sim` (the run state,
 //! data only; each behaviour keeps what it remembers in its own `state` module, which names no
 //! behaviour: `tests/layering.rs`) · below them `roads` (lane geometry, following lanes through
 //! junctions), `positions`, `signals` (traffic signals and their controllers), `dynamics`
@@ -29,8 +30,6 @@ mod entities;
 pub mod esmini_random;
 mod external;
 mod ghost;
-mod ghost_restart;
-mod ghost_trail;
 mod init_order;
 mod motion;
 mod position_cache;
@@ -52,6 +51,7 @@ mod trajectory_position;
 mod values;
 mod warning;
 
+pub use diagnostic::Diagnostic;
 pub use entities::bounding_boxes;
 pub use external::{Chosen, DriverInput, External, ExternalEntity, ExternalState, Input, ScriptedMotion, Source, OUTSIDE_DRIVERS};
 pub use recorded::{EnvironmentChange, LightChange};
@@ -59,4 +59,9 @@ pub use road_references::road_references;
 pub use run::{simulate, simulate_with, Run, Simulation};
 pub use settings::{RunControl, Settings};
 pub use trace::{EntityTrace, RoadPos, Sample, SignalState, StoryboardEvent, Trace};
-pub use warning::{Error, Warning};
+pub use warning::Error;
+
+// The README's example is compiled (and run, where it needs no file) with the doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

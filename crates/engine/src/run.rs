@@ -17,7 +17,7 @@ use crate::run_memos::RunMemos;
 use crate::sim::Sim;
 use crate::storyboard::{State, Transition};
 use crate::trace::{EntityTrace, Replay, RoadPos, Sample, StoryboardEvent, Trace};
-use crate::{Error, RunControl, Settings, Warning};
+use crate::{Diagnostic, Error, RunControl, Settings};
 use opendrive::RoadNetwork;
 use openscenario::Scenario;
 
@@ -25,7 +25,7 @@ use openscenario::Scenario;
 #[derive(Debug, Clone, PartialEq)]
 pub struct Run {
     pub trace: Trace,
-    pub warnings: Vec<Warning>,
+    pub warnings: Vec<Diagnostic>,
     /// Light states LightStateActions asked for, in the order asked (not simulated).
     pub lights: Vec<crate::LightChange>,
     /// Environments EnvironmentActions set, in the order set (not simulated).
@@ -93,7 +93,7 @@ impl<'a> Simulation<'a> {
         let dt = settings.step;
         let mut sim = Sim::new(scenario, roads, dt, external).map_err(Error::Input)?;
         sim.random = crate::esmini_random::EsminiRandom::new(control.seed);
-        // A ghost's head start runs before time 0 (ghost.rs); otherwise t0 = 0.
+        // A ghost's head start runs before time 0 (ghost/); otherwise t0 = 0.
         let t0 = sim.time_origin();
         let steps = ((settings.max_time - t0) / dt + 1e-9).floor() as usize;
         let trace = Trace {
@@ -179,7 +179,7 @@ impl<'a> Simulation<'a> {
     }
 
     /// Warnings so far.
-    pub fn warnings(&self) -> &[Warning] {
+    pub fn warnings(&self) -> &[Diagnostic] {
         &self.sim.warnings
     }
 
@@ -214,7 +214,7 @@ impl<'a> Simulation<'a> {
         self.k = k;
         record(sim, trace);
         if sim.update_ghost_mode() {
-            // A ghost restart (ghost_restart.rs): the clock goes back by the head start and
+            // A ghost restart (ghost/restart.rs): the clock goes back by the head start and
             // runs up to `t` again, only the ghost moving (esmini's ScenarioPlayer::Frame runs
             // these frames before the next one).
             let headstart = sim.ghost.as_ref().map_or(0.0, |g| g.headstart);

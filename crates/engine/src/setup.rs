@@ -10,7 +10,7 @@ use crate::entities::Entity;
 use crate::sim::Sim;
 use crate::storyboard::{Kind, Node};
 use crate::values::Values;
-use crate::Warning;
+use crate::Diagnostic;
 use opendrive::RoadNetwork;
 use openscenario::{Action, ActionKind, Scenario, Trigger};
 
@@ -108,7 +108,7 @@ impl<'a> Sim<'a> {
         let mut actions = Vec::new();
         for p in &sb.init.private {
             let Some(entity) = self.entity_index(&p.entity) else {
-                self.warnings.push(Warning::at(
+                self.warnings.push(Diagnostic::at(
                     &sc.entities.first().map(|e| e.origin.clone()).unwrap_or_else(|| sb_origin(sc)),
                     format!("Init actions for unknown entity `{}` ignored", p.entity),
                 ));
@@ -121,7 +121,7 @@ impl<'a> Sim<'a> {
             }
         }
         if crate::init_order::reorder(&mut items) {
-            self.warnings.push(Warning::at(
+            self.warnings.push(Diagnostic::at(
                 &sb_origin(sc),
                 "Init actions: teleports relative to each other in a circle; esmini gives up reordering them after 2n passes, and so does osc2cr",
             ));
@@ -153,7 +153,7 @@ impl<'a> Sim<'a> {
                                 let expanded = self.selection_members(a);
                                 if expanded.is_empty() {
                                     self.warnings
-                                        .push(Warning::at(&mg.origin, format!("actor `{a}` of maneuver group `{}` is not an entity; ignored", mg.name)));
+                                        .push(Diagnostic::at(&mg.origin, format!("actor `{a}` of maneuver group `{}` is not an entity; ignored", mg.name)));
                                 }
                                 actors.extend(expanded);
                             }

@@ -12,7 +12,7 @@
 //! signal's state is logged for the trace (`trace::SignalState`).
 
 use crate::trace::SignalState;
-use crate::Warning;
+use crate::Diagnostic;
 use openscenario::{Scenario, TrafficSignalController};
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -89,7 +89,7 @@ pub(crate) struct Signals<'a> {
 
 impl<'a> Signals<'a> {
     /// The scenario's controllers, each in the phase it is in at time 0 (whose states are set).
-    pub(crate) fn new(scenario: &'a Scenario, net: Option<&opendrive::RoadNetwork>, warnings: &mut Vec<Warning>) -> Self {
+    pub(crate) fn new(scenario: &'a Scenario, net: Option<&opendrive::RoadNetwork>, warnings: &mut Vec<Diagnostic>) -> Self {
         let models = &scenario.road_network.traffic_signal_controllers;
         let origins: Vec<f64> = (0..models.len()).map(|i| origin_of(models, i, warnings)).collect();
         let mut s = Signals {
@@ -100,7 +100,7 @@ impl<'a> Signals<'a> {
         };
         for c in &s.controllers {
             if !c.model.phases.is_empty() && c.cycle() < MIN_CYCLE {
-                warnings.push(Warning::at(
+                warnings.push(Diagnostic::at(
                     &c.model.origin,
                     format!("traffic signal controller `{}`: its phases last no time; it stays in its first phase", c.model.name),
                 ));
@@ -187,7 +187,7 @@ fn same_state(a: &str, b: &str) -> bool {
 
 /// When controller `i`'s first phase starts: its delay after its reference's start (following
 /// references; an unknown or circular reference counts from time 0, with a warning).
-fn origin_of(models: &[TrafficSignalController], i: usize, warnings: &mut Vec<Warning>) -> f64 {
+fn origin_of(models: &[TrafficSignalController], i: usize, warnings: &mut Vec<Diagnostic>) -> f64 {
     let mut origin = 0.0;
     let mut cur = i;
     let mut seen = vec![false; models.len()];
@@ -199,7 +199,7 @@ fn origin_of(models: &[TrafficSignalController], i: usize, warnings: &mut Vec<Wa
         match models.iter().position(|m| m.name == r) {
             Some(next) if !seen[next] => cur = next,
             Some(_) => {
-                warnings.push(Warning::at(
+                warnings.push(Diagnostic::at(
                     &models[i].origin,
                     format!("traffic signal controller `{}`: its references go round in a circle; only the delays up to `{r}` count", models[i].name),
                 ));
@@ -207,7 +207,7 @@ fn origin_of(models: &[TrafficSignalController], i: usize, warnings: &mut Vec<Wa
             }
             None => {
                 if cur == i {
-                    warnings.push(Warning::at(
+                    warnings.push(Diagnostic::at(
                         &c.origin,
                         format!("traffic signal controller `{}`: reference `{r}` is not a controller; its delay counts from time 0", c.name),
                     ));

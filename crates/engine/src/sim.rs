@@ -11,7 +11,7 @@ use crate::entities::Entity;
 use crate::storyboard::{Node, State, Transition};
 use crate::trace::StoryboardEvent;
 use crate::values::Values;
-use crate::Warning;
+use crate::Diagnostic;
 use opendrive::RoadNetwork;
 use openscenario::Scenario;
 
@@ -32,7 +32,7 @@ pub(crate) struct Sim<'a> {
     pub events: Vec<StoryboardEvent>,
     /// Every state change (node, new state, transition), read by StoryboardElementState conditions.
     pub state_log: Vec<(usize, State, Transition)>,
-    pub warnings: Vec<Warning>,
+    pub warnings: Vec<Diagnostic>,
     /// Each entity's assigned controller (None: the default controller).
     pub controllers: Vec<Option<crate::controllers::state::ControllerRt>>,
     /// Some entity has a modelled controller: without one the controller steps of a frame are
@@ -40,7 +40,7 @@ pub(crate) struct Sim<'a> {
     pub any_controller: bool,
     /// Who pulls whom (actions/trailer.rs).
     pub trailers: crate::actions::trailer::state::Trailers,
-    /// The ghost of a FollowGhost / FollowReference controller (ghost.rs).
+    /// The ghost of a FollowGhost / FollowReference controller (ghost/).
     pub ghost: Option<crate::ghost::state::Ghost>,
     /// Maneuver groups with `selectTriggeringEntities` (storyboard/select_triggering.rs).
     pub triggering_actors: Vec<crate::storyboard::tree::TriggeringActors>,

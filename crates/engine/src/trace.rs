@@ -67,7 +67,7 @@ pub struct SignalState {
 /// Everything a run produced.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Trace {
-    /// Time of the first step, s: 0, or −head start when a ghost runs ahead (`ghost.rs`).
+    /// Time of the first step, s: 0, or −head start when a ghost runs ahead (`ghost/`).
     pub start: f64,
     /// Engine step, s.
     pub step: f64,
@@ -81,7 +81,7 @@ pub struct Trace {
     /// Entities that are ghosts (FollowGhost/FollowReference run them ahead of their entity):
     /// part of the run, not road users.
     pub ghosts: Vec<String>,
-    /// Steps run again after a ghost restart (`ghost_restart.rs`): time went back by the head
+    /// Steps run again after a ghost restart (`ghost/restart.rs`): time went back by the head
     /// start and only the ghost moved. Not part of `entities` (whose samples keep each time
     /// once, the first pass); the CSV lists them where esmini's log has them.
     pub replays: Vec<Replay>,

@@ -141,7 +141,7 @@ fn unknown_controller_or_phase_is_a_warning() {
     let text: Vec<String> = run.warnings.iter().map(|w| w.message.clone()).collect();
     assert!(text.iter().any(|m| m.contains("`C9` is not defined")), "{text:?}");
     assert!(text.iter().any(|m| m.contains("no phase `dance`")), "{text:?}");
-    assert!(run.warnings.iter().all(|w| w.line > 0), "positioned");
+    assert!(run.warnings.iter().all(|w| w.location.line > 0), "positioned");
     // Nothing changed: C1 is still in "go" (it would turn yellow at 3 s, after the end).
     assert_changes(&run, "1", &[(0.0, GREEN)]);
 }

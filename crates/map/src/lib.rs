@@ -34,7 +34,6 @@ mod topology;
 mod warn;
 
 pub use map_scenario::{map_scenario, map_scenario_id, map_scenario_id_in};
-pub use opendrive::Warning;
 pub use options::{LaneletOrigin, MapOptions, MapResult};
 pub use sampling::MAX_STATIONS;
 pub use tags::derived_tags;
@@ -65,3 +64,8 @@ pub fn convert_with_ids(net: &RoadNetwork, opts: &MapOptions, ids: &mut IdAlloca
         warnings: warn.finish(),
     }
 }
+
+// The README's example is compiled (and run, where it needs no file) with the doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

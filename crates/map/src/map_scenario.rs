@@ -3,16 +3,16 @@
 
 use crate::options::MapResult;
 use crate::tags::derived_tags;
-use commonroad::{BenchmarkId, Date, GeoTransformation, Header, ModelError, Scenario};
+use commonroad::{BenchmarkId, Date, GeoTransformation, Header, Scenario};
 use opendrive::RoadNetwork;
 
 /// `ZAM_<name>-1` from a file stem (letters and digits only; `Map` if none are left).
-pub fn map_scenario_id(stem: &str) -> Result<BenchmarkId, ModelError> {
+pub fn map_scenario_id(stem: &str) -> Result<BenchmarkId, commonroad::Error> {
     map_scenario_id_in("ZAM", stem)
 }
 
 /// `<country>_<name>-1`: [`map_scenario_id`] with another country code.
-pub fn map_scenario_id_in(country: &str, stem: &str) -> Result<BenchmarkId, ModelError> {
+pub fn map_scenario_id_in(country: &str, stem: &str) -> Result<BenchmarkId, commonroad::Error> {
     let mut name: String = stem.chars().filter(char::is_ascii_alphanumeric).collect();
     if name.is_empty() {
         name = "Map".into();
@@ -21,7 +21,7 @@ pub fn map_scenario_id_in(country: &str, stem: &str) -> Result<BenchmarkId, Mode
 }
 
 /// The scenario of a converted map. `date` is given (never "today") so output is reproducible.
-pub fn map_scenario(net: &RoadNetwork, map: MapResult, name: &str, date: Date) -> Result<Scenario, ModelError> {
+pub fn map_scenario(net: &RoadNetwork, map: MapResult, name: &str, date: Date) -> Result<Scenario, commonroad::Error> {
     let header = Header {
         benchmark_id: map_scenario_id(name)?,
         date,

@@ -1,7 +1,8 @@
 //! What the caller can tune, and what a conversion returns.
 
 use commonroad::{LaneletId, LaneletNetwork, TrafficLightId};
-use opendrive::{LaneRef, Warning};
+use diagnostic::Diagnostic;
+use opendrive::LaneRef;
 use std::collections::BTreeMap;
 
 /// Conversion settings.
@@ -42,5 +43,5 @@ pub struct MapResult {
     pub lanelet_of: BTreeMap<LaneRef, LaneletId>,
     /// The traffic light made of each OpenDRIVE signal id (dropped signals are absent).
     pub light_of_signal: BTreeMap<String, TrafficLightId>,
-    pub warnings: Vec<Warning>,
+    pub warnings: Vec<Diagnostic>,
 }

@@ -1,31 +1,13 @@
-//! Errors and warnings of loading an OpenDRIVE file. Both carry file, line and column.
+//! Errors of loading an OpenDRIVE file, with file, line and column. Its warnings are
+//! `diagnostic::Diagnostic`s, positioned the same way.
 
 use std::path::PathBuf;
 
-/// A position in the source file (1-based line and column).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Default)]
-pub struct SourcePos {
-    pub line: u32,
-    pub col: u32,
-}
-
-/// Something in the file that was not modelled or looked suspicious; loading went on.
-#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord)]
-pub struct Warning {
-    pub file: PathBuf,
-    pub line: u32,
-    pub col: u32,
-    pub message: String,
-}
-
-impl std::fmt::Display for Warning {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{}:{}:{}: warning: {}", self.file.display(), self.line, self.col, self.message)
-    }
-}
+use diagnostic::LineCol;
 
 /// Why a file could not be loaded.
 #[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
 pub enum Error {
     /// The file could not be read; `path` is the path tried.
     #[error("{}: cannot read OpenDRIVE file: {source}", path.display())]
@@ -44,10 +26,10 @@ pub enum Error {
 
 impl Error {
     /// Line and column of the error, if it has one (I/O errors have none).
-    pub fn position(&self) -> Option<SourcePos> {
+    pub fn position(&self) -> Option<LineCol> {
         match self {
             Error::Io { .. } => None,
-            Error::Xml { line, col, .. } | Error::Invalid { line, col, .. } => Some(SourcePos { line: *line, col: *col }),
+            Error::Xml { line, col, .. } | Error::Invalid { line, col, .. } => Some(LineCol { line: *line, col: *col }),
         }
     }
 }

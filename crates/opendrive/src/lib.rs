@@ -23,8 +23,9 @@ pub mod projection;
 pub mod road_geometry;
 pub mod spatial_index;
 
+pub use diagnostic::{Diagnostic, LineCol};
 pub use driving_direction::{drives_along_s, driving_heading};
-pub use error::{Error, SourcePos, Warning};
+pub use error::Error;
 pub use geometry::{CurvePose, Geometry, PRange, Shape};
 pub use links::{section_at_end, LaneRef, RoadEnd};
 pub use model::header::{Header, HeaderOffset};
@@ -38,3 +39,8 @@ pub use network::{load, parse_str, Loaded, RoadNetwork};
 pub use osi_points::{osi_points, road_osi_points};
 pub use projection::LanePosition;
 pub use road_geometry::{LaneBorders, WorldPose};
+
+// The README's example is compiled (and run, where it needs no file) with the doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

@@ -1,12 +1,13 @@
 //! The loaded road network: model + id indexes + spatial index, and (road, lane, s) → world.
 
-use crate::error::{Error, Warning};
+use crate::error::Error;
 use crate::model::header::Header;
 use crate::model::junction::{Controller, Junction};
 use crate::model::road::Road;
 use crate::parse::parse_document;
 use crate::road_geometry::WorldPose;
 use crate::spatial_index::SpatialIndex;
+use diagnostic::{Diagnostic, Location};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
@@ -31,7 +32,7 @@ pub struct RoadNetwork {
 #[derive(Debug, Clone)]
 pub struct Loaded {
     pub network: RoadNetwork,
-    pub warnings: Vec<Warning>,
+    pub warnings: Vec<Diagnostic>,
 }
 
 /// Read and parse an OpenDRIVE file.
@@ -68,17 +69,15 @@ pub fn parse_str(text: &str, file: &Path) -> Result<Loaded, Error> {
     let (index, coarse) = SpatialIndex::build(&parsed.roads);
     let mut warnings = parsed.warnings;
     for r in coarse.iter().filter_map(|&i| parsed.roads.get(i)) {
-        warnings.push(Warning {
-            file: file.to_path_buf(),
-            line: r.pos.line,
-            col: r.pos.col,
-            message: format!(
+        warnings.push(Diagnostic::new(
+            Location::new(file, r.pos.line, r.pos.col),
+            format!(
                 "road `{}`: its reference line is too long or too tightly curved for the spatial index (more than {} samples per road, {} per network); sampled coarser, so finding a position near it is slower and less exact",
                 r.id,
                 crate::spatial_index::MAX_SAMPLES_PER_ROAD,
                 crate::spatial_index::MAX_SEGMENTS
             ),
-        });
+        ));
     }
     let network = RoadNetwork {
         file: file.to_path_buf(),
@@ -134,7 +133,7 @@ impl RoadNetwork {
     }
 
     /// Warnings for links that point nowhere (kept, not fatal: esmini also loads such maps).
-    fn check_references(&self) -> Vec<Warning> {
+    fn check_references(&self) -> Vec<Diagnostic> {
         let mut out = Vec::new();
         for r in &self.roads {
             for link in [&r.predecessor, &r.successor].into_iter().flatten() {
@@ -143,12 +142,10 @@ impl RoadNetwork {
                     crate::model::road::ElementType::Junction => self.junction_index(&link.element_id).is_some(),
                 };
                 if !found {
-                    out.push(Warning {
-                        file: self.file.clone(),
-                        line: r.pos.line,
-                        col: r.pos.col,
-                        message: format!("road `{}` links to missing {:?} `{}`", r.id, link.element_type, link.element_id),
-                    });
+                    out.push(Diagnostic::new(
+                        Location::new(&self.file, r.pos.line, r.pos.col),
+                        format!("road `{}` links to missing {:?} `{}`", r.id, link.element_type, link.element_id),
+                    ));
                 }
             }
         }

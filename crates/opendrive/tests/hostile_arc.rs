@@ -53,5 +53,5 @@ fn a_100_km_arc_is_sampled_coarser_with_a_warning() {
     // release: ~0.15 s; debug stays within a few seconds
     assert!(t < Duration::from_secs(8), "took {t:?}");
     let w = loaded.warnings.iter().find(|w| w.message.contains("sampled coarser")).expect("a warning");
-    assert_eq!((w.line, w.col), (2, 7), "{w}");
+    assert_eq!((w.location.line, w.location.col), (2, 7), "{w}");
 }

@@ -1,8 +1,11 @@
 //! Typed, parameter-resolved access to the attributes and children of an element.
 
-use crate::error::{Error, ErrorKind, Location};
+use crate::error::{Diagnostic, Error, ErrorKind, Location};
+use crate::esmini_fallback;
 use crate::params::{positioned, resolve_in_scope, Scope};
+use crate::references::ReferenceSite;
 use crate::xml::{Elem, Pos};
+use std::cell::RefCell;
 use std::path::Path;
 use std::sync::Arc;
 
@@ -45,15 +48,39 @@ macro_rules! xml_enum {
     };
 }
 
-/// Where we are: the file being read and the parameters in scope.
+/// What a reading records beside the model: where each reference was written (so that a
+/// name that refers to nothing is reported at its own attribute) and the values the standard
+/// forbids but esmini reads in its own way (problems: errors unless `--lenient`).
+#[derive(Default)]
+pub(crate) struct Record {
+    pub sites: RefCell<Vec<ReferenceSite>>,
+    pub problems: RefCell<Vec<Diagnostic>>,
+}
+
+/// Where we are: the file being read, the parameters in scope and the reading's record.
 pub(crate) struct Cx<'s> {
     pub file: Arc<Path>,
     pub scope: &'s Scope<'s>,
+    pub record: &'s Record,
 }
 
 impl<'s> Cx<'s> {
-    pub(crate) fn new(file: Arc<Path>, scope: &'s Scope<'s>) -> Self {
-        Cx { file, scope }
+    pub(crate) fn new(file: Arc<Path>, scope: &'s Scope<'s>, record: &'s Record) -> Self {
+        Cx { file, scope, record }
+    }
+
+    /// The same file and record with the parameters of `scope` (an entry's own declarations).
+    pub(crate) fn scoped<'a>(&'a self, scope: &'a Scope<'a>) -> Cx<'a> {
+        Cx { file: self.file.clone(), scope, record: self.record }
+    }
+
+    /// Another file (a catalog's) with `scope`, recording into the same record.
+    pub(crate) fn in_file<'a>(&'a self, file: Arc<Path>, scope: &'a Scope<'a>) -> Cx<'a> {
+        Cx { file, scope, record: self.record }
+    }
+
+    fn problem(&self, pos: Pos, message: String) {
+        self.record.problems.borrow_mut().push(Diagnostic { location: self.loc(pos), message });
     }
 
     pub(crate) fn loc(&self, pos: Pos) -> Location {
@@ -96,16 +123,51 @@ impl<'s> Cx<'s> {
 
     /// An optional attribute resolved and converted by `conv` (message says what was expected).
     fn opt_conv<T>(&self, e: &Elem, name: &str, conv: impl Fn(&str) -> Result<T, String>) -> Result<Option<T>, Error> {
+        self.opt_conv_or(e, name, conv, |_| None)
+    }
+
+    /// Like [`Cx::opt_conv`]; where `conv` fails, `fallback` may give what esmini reads instead
+    /// (its value and how to say it), which is then a problem rather than an error.
+    fn opt_conv_or<T>(
+        &self,
+        e: &Elem,
+        name: &str,
+        conv: impl Fn(&str) -> Result<T, String>,
+        fallback: impl Fn(&str) -> Option<(T, String)>,
+    ) -> Result<Option<T>, Error> {
         let Some(a) = e.attr(name) else { return Ok(None) };
         let text = resolve_in_scope(&a.value, self.scope).map_err(|err| positioned(&self.file, a.pos, err))?;
-        conv(&text).map(Some).map_err(|expected| {
-            let shown = if text == a.value { format!("'{text}'") } else { format!("'{text}' (from '{}')", a.value) };
-            self.err(ErrorKind::Value, a.pos, format!("attribute '{name}' of <{}>: expected {expected}, found {shown}", e.name))
+        match conv(&text) {
+            Ok(v) => Ok(Some(v)),
+            Err(expected) => {
+                let shown = if text == a.value { format!("'{text}'") } else { format!("'{text}' (from '{}')", a.value) };
+                let message = format!("attribute '{name}' of <{}>: expected {expected}, found {shown}", e.name);
+                // An expression's text is not what esmini converts (it stops on an expression it
+                // cannot evaluate), so only a literal or a parameter's value falls back.
+                match fallback(&text).filter(|_| !a.value.trim_start().starts_with("${")) {
+                    Some((v, read_as)) => {
+                        self.problem(a.pos, format!("{message}; esmini reads it as {read_as}"));
+                        Ok(Some(v))
+                    }
+                    None => Err(self.err(ErrorKind::Value, a.pos, message)),
+                }
+            }
+        }
+    }
+
+    /// A number; text that is not one is read as esmini reads it (C's `atof`: its leading
+    /// number, else 0), a problem.
+    pub(crate) fn opt_f64(&self, e: &Elem, name: &str) -> Result<Option<f64>, Error> {
+        self.opt_conv_or(e, name, parse_f64, |t| {
+            let v = esmini_fallback::atof(t);
+            // an infinite or NaN reading is nothing a run can go on with: it stays an error
+            v.is_finite().then(|| (v, format!("{v}")))
         })
     }
 
-    pub(crate) fn opt_f64(&self, e: &Elem, name: &str) -> Result<Option<f64>, Error> {
-        self.opt_conv(e, name, parse_f64)
+    /// A number esmini reads with `std::stof`, which stops on text that is not one: no fallback.
+    pub(crate) fn f64_exact(&self, e: &Elem, name: &str) -> Result<f64, Error> {
+        self.opt_conv(e, name, parse_f64)?.ok_or_else(|| self.missing(e, name))
     }
     pub(crate) fn f64(&self, e: &Elem, name: &str) -> Result<f64, Error> {
         self.opt_f64(e, name)?.ok_or_else(|| self.missing(e, name))
@@ -113,14 +175,23 @@ impl<'s> Cx<'s> {
     pub(crate) fn f64_or(&self, e: &Elem, name: &str, default: f64) -> Result<f64, Error> {
         Ok(self.opt_f64(e, name)?.unwrap_or(default))
     }
+    /// An integer; text that is not one is read as esmini reads it (C's `atoi`), a problem.
     pub(crate) fn opt_i64(&self, e: &Elem, name: &str) -> Result<Option<i64>, Error> {
-        self.opt_conv(e, name, parse_i64)
+        self.opt_conv_or(e, name, parse_i64, |t| {
+            let v = esmini_fallback::atoi(t);
+            Some((v, v.to_string()))
+        })
     }
     pub(crate) fn i64(&self, e: &Elem, name: &str) -> Result<i64, Error> {
         self.opt_i64(e, name)?.ok_or_else(|| self.missing(e, name))
     }
     pub(crate) fn opt_u32(&self, e: &Elem, name: &str) -> Result<Option<u32>, Error> {
-        self.opt_conv(e, name, |s| parse_i64(s).and_then(|v| u32::try_from(v).map_err(|_| "an unsigned integer".to_string())))
+        self.opt_conv_or(
+            e,
+            name,
+            |s| parse_i64(s).and_then(|v| u32::try_from(v).map_err(|_| "an unsigned integer".to_string())),
+            |t| u32::try_from(esmini_fallback::atoi(t)).ok().map(|v| (v, v.to_string())),
+        )
     }
     pub(crate) fn u32_or(&self, e: &Elem, name: &str, default: u32) -> Result<u32, Error> {
         Ok(self.opt_u32(e, name)?.unwrap_or(default))
@@ -143,7 +214,53 @@ impl<'s> Cx<'s> {
     /// A reference to a named thing; tolerates a leading `$` as esmini does for `parameterRef="$X"`.
     pub(crate) fn name_ref(&self, e: &Elem, name: &str) -> Result<String, Error> {
         let raw = e.attr(name).ok_or_else(|| self.missing(e, name))?;
-        Ok(raw.value.trim().trim_start_matches('$').to_string())
+        let value = raw.value.trim().trim_start_matches('$').to_string();
+        self.site(name, &value, raw.pos);
+        Ok(value)
+    }
+
+    /// The resolved value of a required attribute that names something elsewhere (an entity, a
+    /// road, a storyboard element, …), its position kept for the checks of what it names.
+    pub(crate) fn reference(&self, e: &Elem, name: &str) -> Result<String, Error> {
+        self.opt_reference(e, name)?.ok_or_else(|| self.missing(e, name))
+    }
+
+    /// Like [`Cx::reference`] for an optional attribute.
+    pub(crate) fn opt_reference(&self, e: &Elem, name: &str) -> Result<Option<String>, Error> {
+        let value = self.opt_text(e, name)?;
+        if let (Some(v), Some(a)) = (&value, e.attr(name)) {
+            self.site(name, v, a.pos);
+        }
+        Ok(value)
+    }
+
+    /// Keeps where `attribute` (a reference whose resolved value is `value`) was written.
+    pub(crate) fn site(&self, attribute: &str, value: &str, pos: Pos) {
+        self.record.sites.borrow_mut().push(ReferenceSite { attribute: attribute.to_string(), value: value.to_string(), location: self.loc(pos) });
+    }
+
+    /// An enumeration value that esmini compares exactly and replaces by `default` when it does
+    /// not know it (vehicle and pedestrian categories): such a value is a problem, read as esmini
+    /// reads it.
+    pub(crate) fn enum_or_esmini_default<T: XmlEnum>(&self, e: &Elem, name: &str, default: T) -> Result<T, Error> {
+        let a = e.attr(name).ok_or_else(|| self.missing(e, name))?;
+        let text = resolve_in_scope(&a.value, self.scope).map_err(|err| positioned(&self.file, a.pos, err))?;
+        match T::from_xml(text.trim()) {
+            Some(v) => Ok(v),
+            None => {
+                let shown = if text == a.value { format!("'{text}'") } else { format!("'{text}' (from '{}')", a.value) };
+                self.problem(
+                    a.pos,
+                    format!(
+                        "attribute '{name}' of <{}>: expected one of {}, found {shown}; esmini reads it as its default, {}",
+                        e.name,
+                        T::NAMES.join(", "),
+                        default.xml_name()
+                    ),
+                );
+                Ok(default)
+            }
+        }
     }
 }
 

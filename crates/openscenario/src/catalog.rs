@@ -1,7 +1,7 @@
 //! Catalogs: directories from CatalogLocations, lookup of a catalog by its `name` or (as esmini
 //! does) by file name `<catalogName>.xosc`, and a per-load cache of parsed catalog files.
 
-use crate::error::{Error, ErrorKind, Location, Warning};
+use crate::error::{Diagnostic, Error, ErrorKind, Location};
 use crate::xml::{read_file, Doc, Elem};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -77,22 +77,28 @@ impl CatalogStore {
     /// Registers a CatalogLocations directory. A directory that does not exist falls back to
     /// `<scenario dir>/Catalogs/<last component>` when that exists (esmini finds its bundled
     /// catalogs in such cases); otherwise it is kept and reported.
-    pub(crate) fn add_dir(&mut self, kind: CatalogKind, path: PathBuf, scenario_dir: &Path, loc: Location, warnings: &mut Vec<Warning>) {
+    pub(crate) fn add_dir(&mut self, kind: CatalogKind, path: PathBuf, scenario_dir: &Path, loc: Location, warnings: &mut Vec<Diagnostic>) {
         let mut path = path;
         if !path.is_dir() {
             let fallback = path.file_name().map(|n| scenario_dir.join("Catalogs").join(n));
             match fallback.filter(|f| f.is_dir()) {
                 Some(f) => {
-                    warnings.push(Warning {
+                    warnings.push(Diagnostic {
                         location: loc,
                         message: format!("catalog directory {} does not exist; using {} instead", path.display(), f.display()),
                     });
                     path = f;
                 }
-                None => warnings.push(Warning { location: loc, message: format!("catalog directory {} does not exist", path.display()) }),
+                None => warnings.push(Diagnostic { location: loc, message: format!("catalog directory {} does not exist", path.display()) }),
             }
         }
         self.dirs.push(Dir { kind, path });
+    }
+
+    /// Whether every registered catalog directory exists (so a catalog not found in them is
+    /// named wrongly rather than not shipped).
+    pub(crate) fn all_directories_exist(&self) -> bool {
+        !self.dirs.is_empty() && self.dirs.iter().all(|d| d.path.is_dir())
     }
 
     /// The catalog files parsed so far, in path order.
@@ -113,7 +119,7 @@ impl CatalogStore {
         files
     }
 
-    fn file(&mut self, path: &Path, warnings: &mut Vec<Warning>) -> Result<Option<Rc<Doc>>, Error> {
+    fn file(&mut self, path: &Path, warnings: &mut Vec<Diagnostic>) -> Result<Option<Rc<Doc>>, Error> {
         if let Some(d) = self.files.get(path) {
             return Ok(d.clone());
         }
@@ -124,7 +130,7 @@ impl CatalogStore {
             Ok(d) if d.root.child("Catalog").is_some() => Some(Rc::new(d)),
             Ok(_) => None,
             Err(e) => {
-                warnings.push(Warning { location: e.location.clone(), message: format!("catalog file skipped: {}", e.message) });
+                warnings.push(Diagnostic { location: e.location.clone(), message: format!("catalog file skipped: {}", e.message) });
                 None
             }
         };
@@ -135,7 +141,15 @@ impl CatalogStore {
     /// Finds `entry` of catalog `catalog` for one of `kinds`. Order: directories of the expected
     /// kinds before the others; in each group, files whose Catalog@name matches, then files
     /// named `<catalog>.xosc`.
-    pub(crate) fn find(&mut self, kinds: &[CatalogKind], catalog: &str, entry: &str, at: &Location, warnings: &mut Vec<Warning>) -> Result<Found, Error> {
+    /// `at`: where the reference names the catalog and the entry (for the errors).
+    pub(crate) fn find(
+        &mut self,
+        kinds: &[CatalogKind],
+        catalog: &str,
+        entry: &str,
+        at: (&Location, &Location),
+        warnings: &mut Vec<Diagnostic>,
+    ) -> Result<Found, Error> {
         let mut groups: Vec<Vec<PathBuf>> = vec![Vec::new(), Vec::new()];
         for d in &self.dirs {
             let g = usize::from(!kinds.contains(&d.kind));
@@ -177,7 +191,7 @@ impl CatalogStore {
         }
         match catalog_found {
             Some(f) => {
-                Err(Error::new(ErrorKind::MissingCatalogEntry, at.clone(), format!("catalog '{catalog}' ({}) has no entry named '{entry}'", f.display())))
+                Err(Error::new(ErrorKind::MissingCatalogEntry, at.1.clone(), format!("catalog '{catalog}' ({}) has no entry named '{entry}'", f.display())))
             }
             None => {
                 let tried: Vec<String> = self
@@ -187,7 +201,7 @@ impl CatalogStore {
                     .collect();
                 Err(Error::new(
                     ErrorKind::MissingCatalog,
-                    at.clone(),
+                    at.0.clone(),
                     format!(
                         "catalog '{catalog}' (for entry '{entry}') not found; looked in {}",
                         if tried.is_empty() { "no catalog directories (CatalogLocations is empty)".to_string() } else { tried.join(", ") }

@@ -1,36 +1,14 @@
-//! Errors and warnings, each positioned in a source file.
+//! Errors, positioned in a source file; warnings are `diagnostic::Diagnostic`s (the loader
+//! accepted something the user should know about: data, never printed).
 
 use serde::Serialize;
-use std::fmt;
+
+pub use diagnostic::{Diagnostic, Location};
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
-
-/// A place in a source file: 1-based line and column (line 0 means "the file as a whole").
-#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord, Serialize)]
-pub struct Location {
-    pub file: Arc<Path>,
-    pub line: u32,
-    pub col: u32,
-}
-
-impl Location {
-    pub fn file_only(file: &Path) -> Self {
-        Location { file: Arc::from(file), line: 0, col: 0 }
-    }
-}
-
-impl fmt::Display for Location {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if self.line == 0 {
-            write!(f, "{}", self.file.display())
-        } else {
-            write!(f, "{}:{}:{}", self.file.display(), self.line, self.col)
-        }
-    }
-}
 
 /// What went wrong, for callers that branch on the kind (tests, exit codes).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[non_exhaustive]
 pub enum ErrorKind {
     /// A file could not be read (the message names the path tried).
     Io,
@@ -70,19 +48,6 @@ impl Error {
 
     pub fn io(path: &Path, err: &std::io::Error) -> Self {
         Error::new(ErrorKind::Io, Location::file_only(path), format!("cannot read file {}: {err}", path.display()))
-    }
-}
-
-/// Something the loader accepted but that the user should know about (data, never printed).
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Warning {
-    pub location: Location,
-    pub message: String,
-}
-
-impl fmt::Display for Warning {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}: {}", self.location, self.message)
     }
 }
 

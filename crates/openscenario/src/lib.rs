@@ -16,6 +16,7 @@ mod catalog;
 mod catalog_file;
 pub mod distribution;
 mod error;
+mod esmini_fallback;
 pub mod expr;
 mod load;
 pub mod model;
@@ -30,8 +31,13 @@ pub use attr::XmlEnum;
 pub use catalog::CatalogKind;
 pub use catalog_file::{CatalogEntry, CatalogFile};
 pub use distribution::{Distribution, ParameterSet};
-pub use error::{Error, ErrorKind, Location, Warning};
-pub use load::{load, load_scenario, load_str, Content, LoadOptions, Loaded};
+pub use error::{Diagnostic, Error, ErrorKind, Location};
+pub use load::{load, load_scenario, load_str, Content, LoadOptions, Loaded, CATALOG_NOT_CHECKED};
 pub use model::*;
 pub use params::{ParameterDeclaration, ParameterType};
 pub use unread::NO_BEARING;
+
+// The README's example is compiled (and run, where it needs no file) with the doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

@@ -1,8 +1,9 @@
 //! Entry points: load a file (scenario, parameter distribution or catalog) into the model.
 
+use crate::attr::Record;
 use crate::catalog_file::{read_catalog_file, CatalogFile};
 use crate::distribution::{read_distribution, Distribution};
-use crate::error::{absolute, Error, ErrorKind, Location, Warning};
+use crate::error::{absolute, Diagnostic, Error, ErrorKind, Location};
 use crate::model::Scenario;
 use crate::read::{read_scenario, Reader};
 use crate::xml::{parse_str, read_file, Doc};
@@ -17,11 +18,17 @@ pub struct LoadOptions {
     pub seed: Option<u64>,
     /// Read on past a vehicle, pedestrian, object, controller or maneuver whose catalog or
     /// catalog entry cannot be found, with a placeholder (an external object, no controller,
-    /// no maneuver), so that a check reports everything else as well: a missing catalog or entry
-    /// is then a problem ([`Loaded::problems`]), what a conversion stops on. Never for a
+    /// no maneuver), so that a check reports everything else as well: a catalog whose
+    /// directories are not all there is then a warning (a conversion stops on it all the same),
+    /// any other missing catalog or entry a problem ([`Loaded::problems`]). Never for a
     /// conversion.
     pub go_on_without_catalogs: bool,
 }
+
+/// How a reading past a missing catalog ([`LoadOptions::go_on_without_catalogs`]) ends the
+/// warning about a catalog whose directories are not there: what the file takes from it is not
+/// checked (and a conversion, which never reads past it, stops there).
+pub const CATALOG_NOT_CHECKED: &str = "(what this file takes from the catalog is not checked)";
 
 /// What a file turned out to be.
 #[derive(Debug, Clone)]
@@ -35,13 +42,13 @@ pub enum Content {
 #[derive(Debug, Clone)]
 pub struct Loaded {
     pub content: Content,
-    pub warnings: Vec<Warning>,
+    pub warnings: Vec<Diagnostic>,
     /// What a strict reading rejects: names that refer to nothing the scenario declares
     /// (entities, storyboard elements, parameters, variables — see [`crate::references`]),
     /// parameter overrides the scenario does not declare, distributions that cannot be sampled.
     /// The file was read as if they were absent; the caller decides whether they stop it
     /// (osc2cr's default) or are reported as warnings (`--lenient`).
-    pub problems: Vec<Warning>,
+    pub problems: Vec<Diagnostic>,
 }
 
 /// Loads an OpenSCENARIO file: a scenario (parameters and catalogs resolved), a
@@ -59,7 +66,7 @@ pub fn load_str(path: &Path, text: &str, options: &LoadOptions) -> Result<Loaded
 
 /// Loads a file that must be a scenario, leniently: its [`Loaded::problems`] are returned among
 /// the warnings (use [`load`] to treat them as errors).
-pub fn load_scenario(path: &Path, options: &LoadOptions) -> Result<(Scenario, Vec<Warning>), Error> {
+pub fn load_scenario(path: &Path, options: &LoadOptions) -> Result<(Scenario, Vec<Diagnostic>), Error> {
     let loaded = load(path, options)?;
     let mut warnings = loaded.warnings;
     warnings.extend(loaded.problems);
@@ -85,14 +92,20 @@ fn load_doc(path: &Path, doc: Doc, options: &LoadOptions) -> Result<Loaded, Erro
     }
     let mut reader = Reader::new();
     reader.go_on_without_catalogs = options.go_on_without_catalogs;
+    let record = Record::default();
     let content = if root.child("Storyboard").is_some() {
-        let scenario = read_scenario(&mut reader, &abs, &doc.file, root, &options.parameters)?;
+        let mut scenario = read_scenario(&mut reader, &record, &abs, &doc.file, root, &options.parameters)?;
+        scenario.reference_sites = record.sites.take();
+        reader.problems.append(&mut record.problems.take());
         reader.problems.extend(crate::references::unresolved(&scenario));
+        reader.warnings.extend(crate::references::ambiguous(&scenario));
         Content::Scenario(Box::new(scenario))
     } else if let Some(d) = root.child("ParameterValueDistribution") {
         Content::Distribution(read_distribution(&mut reader.warnings, &mut reader.problems, &abs, &doc.file, root, d, options.seed)?)
     } else if let Some(c) = root.child("Catalog") {
-        Content::Catalog(read_catalog_file(&mut reader, &doc.file, c)?)
+        let catalog = read_catalog_file(&mut reader, &record, &doc.file, c)?;
+        reader.problems.append(&mut record.problems.take());
+        Content::Catalog(catalog)
     } else {
         return Err(Error::new(
             ErrorKind::Structure,

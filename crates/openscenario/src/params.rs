@@ -4,7 +4,7 @@
 //! we. Declarations keep their final values in the model because actions and conditions
 //! (ParameterSetAction, ParameterCondition, ...) work on them at run time.
 
-use crate::error::{Error, ErrorKind, Location, Warning};
+use crate::error::{Diagnostic, Error, ErrorKind, Location};
 use crate::expr::{self, ExprValue};
 use crate::xml::{Elem, Pos};
 use serde::Serialize;
@@ -164,7 +164,7 @@ pub(crate) fn read_declarations(
     parent: &Scope,
     assignments: &[(String, String)],
     file: &Arc<Path>,
-    warnings: &mut Vec<Warning>,
+    warnings: &mut Vec<Diagnostic>,
 ) -> Result<Vec<ParameterDeclaration>, Error> {
     let mut raws: Vec<RawDecl> = Vec::new();
     if let Some(el) = el {
@@ -186,7 +186,7 @@ pub(crate) fn read_declarations(
                 .ok_or_else(|| positioned_value_error::<ParameterType>(file, ty_attr.pos, &ty_attr.value, type_attr))?;
             let val = d.attr("value").ok_or_else(|| Error::new(ErrorKind::Structure, loc.clone(), format!("{} '{name}' needs a 'value' attribute", d.name)))?;
             if let Some(prev) = raws.iter().position(|r| r.name == name) {
-                warnings.push(Warning {
+                warnings.push(Diagnostic {
                     location: loc.clone(),
                     message: format!("parameter '{name}' is declared twice (first at line {}); the later declaration wins", raws[prev].pos.line),
                 });
@@ -208,15 +208,24 @@ pub(crate) fn read_declarations(
     for i in 0..raws.len() {
         resolver.resolve(i)?;
     }
+    let values: Vec<String> = state.into_iter().map(Option::unwrap_or_default).collect();
+    // a constraint's bound may be a parameter or an expression over the block and the scopes
+    // around it, evaluated as any attribute is
+    let mut bound_lookup = |name: &str| -> Result<Option<String>, ResolveError> {
+        Ok(match raws.iter().rposition(|r| r.name == name) {
+            Some(j) => values.get(j).cloned(),
+            None => parent.get(name).map(|p| p.value.clone()),
+        })
+    };
     let mut out = Vec::with_capacity(raws.len());
-    for (r, v) in raws.iter().zip(state) {
-        let value = v.unwrap_or_default();
-        if let Some(msg) = violated_constraints(r.elem, &value) {
-            warnings.push(Warning { location: location(file, r.pos), message: format!("parameter '{}' = '{value}' violates its constraints ({msg})", r.name) });
+    for (r, value) in raws.iter().zip(values.iter().cloned()) {
+        if let Some(msg) = violated_constraints(r.elem, &value, &mut bound_lookup) {
+            warnings
+                .push(Diagnostic { location: location(file, r.pos), message: format!("parameter '{}' = '{value}' violates its constraints ({msg})", r.name) });
         }
         // esmini does not check declared types; a mismatch is worth a warning, not a failure.
         if let Err(msg) = check_type(r.ty, &value) {
-            warnings.push(Warning {
+            warnings.push(Diagnostic {
                 location: location(file, if r.value_pos.line > 0 { r.value_pos } else { r.pos }),
                 message: format!("parameter '{}' is declared {}: {msg}", r.name, r.ty),
             });
@@ -308,7 +317,7 @@ fn check_type(ty: ParameterType, value: &str) -> Result<(), String> {
 
 /// Checks the ConstraintGroups (1.1+) of a declaration: satisfied when every ValueConstraint of
 /// at least one group holds. Returns a description of the failed groups, or None.
-fn violated_constraints(decl: &Elem, value: &str) -> Option<String> {
+fn violated_constraints(decl: &Elem, value: &str, lookup: &mut dyn FnMut(&str) -> Result<Option<String>, ResolveError>) -> Option<String> {
     let groups: Vec<&Elem> = decl.children_named("ConstraintGroup").collect();
     if groups.is_empty() {
         return None;
@@ -318,7 +327,10 @@ fn violated_constraints(decl: &Elem, value: &str) -> Option<String> {
         let mut all = true;
         for c in g.children_named("ValueConstraint") {
             let rule = c.attr("rule").map(|a| a.value.as_str()).unwrap_or("");
-            let bound = c.attr("value").map(|a| a.value.as_str()).unwrap_or("");
+            let raw = c.attr("value").map(|a| a.value.as_str()).unwrap_or("");
+            // a bound that cannot be evaluated is the schema pass's to report; it holds here
+            let Ok(bound) = resolve_raw(raw, lookup) else { continue };
+            let bound = bound.as_str();
             let holds = match (value.trim().parse::<f64>(), bound.trim().parse::<f64>()) {
                 (Ok(a), Ok(b)) => crate::attr::parse_enum::<crate::model::Rule>(rule).is_none_or(|r| r.compare(a, b)),
                 _ => match rule {

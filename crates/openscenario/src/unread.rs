@@ -9,7 +9,7 @@
 //! `tests/data/schema_coverage_1_3.tsv`, checked against the schema and this mechanism by
 //! `tests/schema_coverage.rs`.
 
-use crate::error::{Location, Warning};
+use crate::error::{Diagnostic, Location};
 use crate::xml::{Doc, Elem};
 use std::collections::BTreeMap;
 
@@ -50,7 +50,7 @@ struct Finding {
 
 /// The warnings for what the reader left unread in `doc` (all of it) — one per kind of
 /// content and file, at its first occurrence, with the number of further occurrences.
-pub(crate) fn report_document(doc: &Doc) -> Vec<Warning> {
+pub(crate) fn report_document(doc: &Doc) -> Vec<Diagnostic> {
     let mut found = BTreeMap::new();
     walk(&doc.root, &mut found);
     warnings(doc, found)
@@ -58,7 +58,7 @@ pub(crate) fn report_document(doc: &Doc) -> Vec<Warning> {
 
 /// Like [`report_document`] for a catalog file: only the entries a scenario used are looked at
 /// (an entry nobody referred to is not read, and that is not a loss).
-pub(crate) fn report_catalog(doc: &Doc) -> Vec<Warning> {
+pub(crate) fn report_catalog(doc: &Doc) -> Vec<Diagnostic> {
     let mut found = BTreeMap::new();
     for catalog in doc.root.children_unmarked().iter().filter(|c| c.name == "Catalog") {
         for entry in catalog.children_unmarked().iter().filter(|e| e.read.get()) {
@@ -91,8 +91,8 @@ fn note(found: &mut Found, parent: &str, member: String, pos: crate::xml::Pos) {
     found.entry((parent.to_string(), member)).and_modify(|f| f.count += 1).or_insert(Finding { first: pos, count: 1 });
 }
 
-fn warnings(doc: &Doc, found: Found) -> Vec<Warning> {
-    let mut out: Vec<(crate::xml::Pos, Warning)> = found
+fn warnings(doc: &Doc, found: Found) -> Vec<Diagnostic> {
+    let mut out: Vec<(crate::xml::Pos, Diagnostic)> = found
         .into_iter()
         .map(|((parent, member), f)| {
             let more = match f.count {
@@ -101,7 +101,7 @@ fn warnings(doc: &Doc, found: Found) -> Vec<Warning> {
             };
             let location = Location { file: doc.file.clone(), line: f.first.line, col: f.first.col };
             let message = format!("{member} of <{parent}> is not read by osc2cr and has no effect{more}");
-            (f.first, Warning { location, message })
+            (f.first, Diagnostic { location, message })
         })
         .collect();
     out.sort_by_key(|(p, _)| (p.line, p.col));

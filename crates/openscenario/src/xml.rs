@@ -137,10 +137,19 @@ pub(crate) fn read_file(path: &Path) -> Result<Doc, Error> {
 
 pub(crate) fn parse_str(path: &Path, text: &str) -> Result<Doc, Error> {
     let file: Arc<Path> = Arc::from(path);
+    if text.trim_start_matches('\u{feff}').trim().is_empty() {
+        return Err(Error::new(ErrorKind::Xml, Location::file_only(path), "the file is empty: there is no XML document in it"));
+    }
     let options = roxmltree::ParsingOptions { allow_dtd: true, ..Default::default() };
     let doc = roxmltree::Document::parse_with_options(text, options).map_err(|e| {
         let (line, col) = xml_error_position(&e, text);
-        Error::new(ErrorKind::Xml, Location { file: file.clone(), line, col }, format!("not well-formed XML: {e}"))
+        let message = match e {
+            roxmltree::Error::UnexpectedEndOfStream | roxmltree::Error::UnclosedRootNode => {
+                format!("not well-formed XML: the file ends before its document does (cut off?): {e}")
+            }
+            _ => format!("not well-formed XML: {e}"),
+        };
+        Error::new(ErrorKind::Xml, Location { file: file.clone(), line, col }, message)
     })?;
     let mut counter = LineCounter { text, offset: 0, line: 1, col: 1 };
     let root = convert(doc.root_element(), &mut counter, 0, &file)?;

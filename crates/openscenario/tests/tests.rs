@@ -8,6 +8,7 @@ mod common;
 
 mod distributions;
 mod expressions;
+mod expressions_where_allowed;
 mod load;
 mod schema_coverage;
 mod strict;

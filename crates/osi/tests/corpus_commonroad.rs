@@ -16,7 +16,7 @@ fn a_corpus_trace_matches_the_commonroad_output_at_every_commonroad_step() {
     let dir = work_dir("corpus_commonroad");
     let trace = dir.join("acc-test.osi");
     let frames = write_trace(&xosc, &trace);
-    let conversion = convert::convert_file(&xosc, &convert::ConvertOptions::default());
+    let (conversion, _) = convert::convert(&convert::Request::file(&xosc), &convert::ConvertOptions::default());
     let xml = conversion.result.as_ref().ok().and_then(convert::Output::xml).expect("the conversion");
     let xml_path = dir.join("acc-test.xml");
     std::fs::write(&xml_path, xml).expect("written");

@@ -403,7 +403,7 @@ impl Session {
                 "gif" => render::render_gif(&model.scenario, problems, &options),
                 "png" => render::render_png(&model.scenario, problems, &options),
                 "svg" => render::render_svg(&model.scenario, problems, &options).map(String::into_bytes),
-                other => Err(render::RenderError::Option(format!("format must be gif, png or svg, got {other:?}"))),
+                other => Err(render::Error::Option(format!("format must be gif, png or svg, got {other:?}"))),
             })
             .map_err(|e| PyValueError::new_err(e.to_string()))?;
         Ok(PyBytes::new(py, &bytes))

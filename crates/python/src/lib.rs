@@ -67,7 +67,7 @@ fn finish<'py>(py: Python<'py>, c: Conversion, file: &std::path::Path, variation
 #[pyo3(signature = (path, **options))]
 fn convert_file<'py>(py: Python<'py>, path: PathBuf, options: Option<&Bound<'py, pyo3::types::PyDict>>) -> PyResult<Converted<'py>> {
     let (opts, _) = options::from_kwargs(options)?;
-    let c = py.detach(|| convert::convert_file(&path, &opts));
+    let c = py.detach(|| convert::convert(&convert::Request::file(&path), &opts).0);
     if c.result.is_err() && convert::classify(&path) == FileKind::Distribution {
         return Err(errors::message_error(
             py,

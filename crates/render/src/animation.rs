@@ -7,7 +7,7 @@ use std::borrow::Cow;
 use gif::{DisposalMethod, Encoder, Frame, Repeat};
 use tiny_skia::Pixmap;
 
-use crate::error::RenderError;
+use crate::error::Error;
 use crate::palette::Palette;
 use crate::raster::{canvas, paint_prims};
 use crate::scene::Prepared;
@@ -18,8 +18,8 @@ use crate::timeline::{first_step, last_step};
 /// at least this long (the stride grows for very small time steps).
 const MIN_DELAY_S: f64 = 0.02;
 
-fn encode_error(e: impl std::fmt::Display) -> RenderError {
-    RenderError::Encode { format: "GIF", message: e.to_string() }
+fn encode_error(e: impl std::fmt::Display) -> Error {
+    Error::Encode { format: "GIF", message: e.to_string() }
 }
 
 /// The smallest rectangle (x, y, w, h) in which `a` and `b` differ, or `None`.
@@ -54,11 +54,11 @@ impl Frames<'_, '_> {
     }
 }
 
-fn to_u16(v: usize) -> Result<u16, RenderError> {
+fn to_u16(v: usize) -> Result<u16, Error> {
     u16::try_from(v).map_err(|_| encode_error(format!("{v} pixels is too large for a GIF")))
 }
 
-fn encode(frames: &Frames, steps: &[u64], stride: u64, dt: f64, palette: &mut Palette) -> Result<Vec<u8>, RenderError> {
+fn encode(frames: &Frames, steps: &[u64], stride: u64, dt: f64, palette: &mut Palette) -> Result<Vec<u8>, Error> {
     let (w, h) = (frames.base.width() as usize, frames.base.height() as usize);
     let mut out = Vec::new();
     {
@@ -103,7 +103,7 @@ fn encode(frames: &Frames, steps: &[u64], stride: u64, dt: f64, palette: &mut Pa
 
 /// Encodes the animation, doubling the stride until the file is at most `max_bytes` (or only
 /// two frames are left).
-pub(crate) fn animate(prepared: &Prepared, max_frames: usize, max_bytes: usize) -> Result<Vec<u8>, RenderError> {
+pub(crate) fn animate(prepared: &Prepared, max_frames: usize, max_bytes: usize) -> Result<Vec<u8>, Error> {
     let scenario = prepared.scenario;
     let dt = scenario.header.time_step_size;
     let (first, last) = (first_step(scenario), last_step(scenario));

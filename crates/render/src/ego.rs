@@ -4,7 +4,7 @@
 
 use commonroad::{DynamicObstacle, ObstacleId, PlanningProblemSet, Scenario};
 
-use crate::error::RenderError;
+use crate::error::Error;
 
 /// How far (m) the obstacle's initial position may be from the planning problem's (files hold
 /// 4–6 decimals, so equal positions differ by far less).
@@ -12,9 +12,9 @@ pub const SAME_POSITION_M: f64 = 0.01;
 
 /// The ego's id: `chosen` if given (it must exist), else the obstacle at the planning
 /// problem's initial position at time step 0 (nearest first, then smallest id), else none.
-pub fn find_ego(scenario: &Scenario, problems: Option<&PlanningProblemSet>, chosen: Option<u64>) -> Result<Option<ObstacleId>, RenderError> {
+pub fn find_ego(scenario: &Scenario, problems: Option<&PlanningProblemSet>, chosen: Option<u64>) -> Result<Option<ObstacleId>, Error> {
     if let Some(id) = chosen {
-        return scenario.dynamic_obstacles.iter().find(|o| o.id.get() == id).map(|o| Some(o.id)).ok_or(RenderError::UnknownEgo(id));
+        return scenario.dynamic_obstacles.iter().find(|o| o.id.get() == id).map(|o| Some(o.id)).ok_or(Error::UnknownEgo(id));
     }
     let Some(start) = problems.and_then(|p| p.problems.first()) else {
         return Ok(None);

@@ -2,7 +2,8 @@
 
 /// A rendering failure; the message says which option or which part of the scenario.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum RenderError {
+#[non_exhaustive]
+pub enum Error {
     /// An option out of range (the message names it).
     #[error("{0}")]
     Option(String),

@@ -6,7 +6,7 @@ use std::collections::BTreeMap;
 
 use commonroad::{DynamicObstacle, ObstacleId, PlanningProblemSet, Scenario};
 
-use crate::error::RenderError;
+use crate::error::Error;
 use crate::options::{Frame, FOLLOW_SPAN_M};
 use crate::timeline::{first_step, last_step, state_at, step_of};
 use crate::view::{content_bounds, shape_radius, Bounds, Fit, View};
@@ -149,7 +149,7 @@ fn mean_filter(v: &[f64], w: usize) -> Vec<f64> {
 /// zoomed to hold them — the scale the smallest within [`ZOOM_WINDOW_S`] either side, then
 /// averaged over the same window, so the zoom is smooth and never cuts anyone off. `None` when
 /// it would not show them on average [`PAN_GAIN`] times larger than `fixed`.
-fn pan(scenario: &Scenario, fixed: &View, width: u32, y0: f64) -> Result<Option<ViewPlan>, RenderError> {
+fn pan(scenario: &Scenario, fixed: &View, width: u32, y0: f64) -> Result<Option<ViewPlan>, Error> {
     let fit = Fit { aspect: (PAN_ASPECT, PAN_ASPECT), ..Fit::ACTION };
     let mut steps = Vec::new();
     let mut centres = Vec::new();
@@ -187,7 +187,7 @@ pub fn plan(
     width: u32,
     top_px: f64,
     aspect: Option<f64>,
-) -> Result<ViewPlan, RenderError> {
+) -> Result<ViewPlan, Error> {
     let with_aspect = |fit: Fit| match aspect {
         Some(a) => Fit { aspect: (a, a), ..fit },
         None => fit,
@@ -228,7 +228,7 @@ pub fn plan(
         }
         Frame::Follow(id) => {
             let Some(o) = scenario.dynamic_obstacles.iter().find(|o| o.id.get() == *id) else {
-                return Err(RenderError::Option(format!("--follow: the scenario has no dynamic obstacle with id {id}")));
+                return Err(Error::Option(format!("--follow: the scenario has no dynamic obstacle with id {id}")));
             };
             let a = aspect.unwrap_or(FOLLOW_ASPECT);
             let half = 0.5 * FOLLOW_SPAN_M;
@@ -252,7 +252,7 @@ fn near_ego(
     fit: &Fit,
     top_px: f64,
     all: &View,
-) -> Result<Option<View>, RenderError> {
+) -> Result<Option<View>, Error> {
     // each road user there at `step`: where it is, its box over the framed trail, its size
     let mut users: Vec<(ObstacleId, (f64, f64), Bounds, f64)> = Vec::new();
     for o in &scenario.dynamic_obstacles {

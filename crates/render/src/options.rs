@@ -2,7 +2,7 @@
 
 use std::collections::BTreeMap;
 
-use crate::error::RenderError;
+use crate::error::Error;
 
 /// Which part of the world a picture shows.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -77,23 +77,23 @@ pub const MAX_WIDTH: u32 = 8192;
 
 impl RenderOptions {
     /// Checks values no picture could use; the message names the option.
-    pub fn check(&self) -> Result<(), RenderError> {
+    pub fn check(&self) -> Result<(), Error> {
         if !(MIN_WIDTH..=MAX_WIDTH).contains(&self.width) {
-            return Err(RenderError::Option(format!("--width must be between {MIN_WIDTH} and {MAX_WIDTH} pixels, got {}", self.width)));
+            return Err(Error::Option(format!("--width must be between {MIN_WIDTH} and {MAX_WIDTH} pixels, got {}", self.width)));
         }
         if !(self.time.is_finite() && self.time >= 0.0) {
-            return Err(RenderError::Option(format!("--time must be a finite number of seconds >= 0, got {}", self.time)));
+            return Err(Error::Option(format!("--time must be a finite number of seconds >= 0, got {}", self.time)));
         }
         if self.gif_max_frames < 2 {
-            return Err(RenderError::Option("an animation needs at least 2 frames".to_string()));
+            return Err(Error::Option("an animation needs at least 2 frames".to_string()));
         }
         if !(self.trail.is_finite() && self.trail >= 0.0) {
-            return Err(RenderError::Option(format!("--trail must be a finite number of seconds >= 0, got {}", self.trail)));
+            return Err(Error::Option(format!("--trail must be a finite number of seconds >= 0, got {}", self.trail)));
         }
         if let Frame::Region([x0, y0, x1, y1]) = self.frame {
             let finite = [x0, y0, x1, y1].iter().all(|v| v.is_finite());
             if !(finite && x1 > x0 && y1 > y0) {
-                return Err(RenderError::Option(format!("--region must be X0,Y0,X1,Y1 with X0 < X1 and Y0 < Y1 (metres), got {x0},{y0},{x1},{y1}")));
+                return Err(Error::Option(format!("--region must be X0,Y0,X1,Y1 with X0 < X1 and Y0 < Y1 (metres), got {x0},{y0},{x1},{y1}")));
             }
         }
         Ok(())

@@ -2,7 +2,7 @@
 
 use tiny_skia::{Color, FillRule, LineCap, LineJoin, Paint, PathBuilder, Pixmap, Rect, Stroke as SkStroke, StrokeDash, Transform};
 
-use crate::error::RenderError;
+use crate::error::Error;
 use crate::font;
 use crate::scene::prim::{Prim, Rgba, Stroke};
 
@@ -24,8 +24,8 @@ fn sk_stroke(s: &Stroke) -> SkStroke {
 }
 
 /// A blank pixmap of the background colour.
-pub(crate) fn canvas(width: u32, height: u32, background: Rgba) -> Result<Pixmap, RenderError> {
-    let mut pm = Pixmap::new(width, height).ok_or_else(|| RenderError::View(format!("cannot allocate a {width} × {height} picture")))?;
+pub(crate) fn canvas(width: u32, height: u32, background: Rgba) -> Result<Pixmap, Error> {
+    let mut pm = Pixmap::new(width, height).ok_or_else(|| Error::View(format!("cannot allocate a {width} × {height} picture")))?;
     pm.fill(Color::from_rgba8(background.r, background.g, background.b, background.a));
     Ok(pm)
 }

@@ -4,7 +4,7 @@
 use commonroad::{PlanningProblemSet, Scenario};
 use tiny_skia::{Pixmap, PixmapPaint, Transform};
 
-use crate::error::RenderError;
+use crate::error::Error;
 use crate::frame::Purpose;
 use crate::options::RenderOptions;
 use crate::raster::{canvas, paint_prims};
@@ -46,7 +46,7 @@ pub fn sheet_times(scenario: &Scenario, marks: &[crate::options::Mark]) -> Vec<u
 }
 
 /// The sheet as PNG bytes, `options.width` wide: panels in up to 3 columns.
-pub fn render_sheet_png(scenario: &Scenario, problems: Option<&PlanningProblemSet>, options: &RenderOptions) -> Result<Vec<u8>, RenderError> {
+pub fn render_sheet_png(scenario: &Scenario, problems: Option<&PlanningProblemSet>, options: &RenderOptions) -> Result<Vec<u8>, Error> {
     options.check()?;
     let steps = sheet_times(scenario, &options.marks);
     let n = steps.len() as u32;
@@ -99,5 +99,5 @@ pub fn render_sheet_png(scenario: &Scenario, problems: Option<&PlanningProblemSe
         });
     }
     paint_prims(&mut sheet, &legend_prims);
-    sheet.encode_png().map_err(|e| RenderError::Encode { format: "PNG", message: e.to_string() })
+    sheet.encode_png().map_err(|e| Error::Encode { format: "PNG", message: e.to_string() })
 }

@@ -4,7 +4,7 @@
 
 use commonroad::{AbsoluteShape, GoalPosition, PlanningProblemSet, Point, Scenario, Shape};
 
-use crate::error::RenderError;
+use crate::error::Error;
 
 /// Height / width of the picture is kept within these (a long straight road would otherwise
 /// give a picture a few pixels high); the world rectangle is widened to match.
@@ -137,9 +137,9 @@ pub struct View {
 
 impl View {
     /// Fits `b` with `fit`'s margin into a map area `width` pixels wide starting at row `y0`.
-    pub fn fit(b: Bounds, width: u32, fit: &Fit, y0: f64) -> Result<View, RenderError> {
+    pub fn fit(b: Bounds, width: u32, fit: &Fit, y0: f64) -> Result<View, Error> {
         if !b.is_valid() {
-            return Err(RenderError::View("the scenario has no lanelet, obstacle or goal region".to_string()));
+            return Err(Error::View("the scenario has no lanelet, obstacle or goal region".to_string()));
         }
         let mut w = b.max_x - b.min_x;
         let mut h = b.max_y - b.min_y;
@@ -155,7 +155,7 @@ impl View {
         let (w, h) = if h / w < aspect { (w, w * aspect) } else { (h / aspect, h) };
         let scale = f64::from(width) / w;
         if !(w.is_finite() && h.is_finite() && scale.is_finite() && scale > 0.0) {
-            return Err(RenderError::View(format!("coordinates out of range (extent {w} m × {h} m)")));
+            return Err(Error::View(format!("coordinates out of range (extent {w} m × {h} m)")));
         }
         let cx = 0.5 * (b.min_x + b.max_x);
         let cy = 0.5 * (b.min_y + b.max_y);

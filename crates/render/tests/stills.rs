@@ -1,7 +1,7 @@
 //! PNG and SVG stills: sizes, the ego where it must be, colours by type, time stamps.
 
 use crate::common::*;
-use render::{render_layout, render_png, render_pngs, render_svg, style, RenderError, RenderOptions};
+use render::{render_layout, render_png, render_pngs, render_svg, style, Error, RenderOptions};
 
 fn opts(time: f64) -> RenderOptions {
     whole(time)
@@ -100,12 +100,12 @@ fn svg_parses_and_has_the_time_stamp() {
 fn bad_options_and_empty_scenarios_are_errors() {
     let (s, p) = straight(5);
     let e = render_png(&s, Some(&p), &RenderOptions { ego: Some(999), ..opts(0.0) }).unwrap_err();
-    assert_eq!(e, RenderError::UnknownEgo(999));
+    assert_eq!(e, Error::UnknownEgo(999));
     let e = render_png(&s, Some(&p), &RenderOptions { width: 10, ..opts(0.0) }).unwrap_err();
     assert!(e.to_string().contains("--width"), "{e}");
     assert!(render_png(&s, Some(&p), &opts(f64::NAN)).is_err());
     let empty = commonroad::Scenario::new(s.header.clone());
-    assert!(matches!(render_png(&empty, None, &opts(0.0)), Err(RenderError::View(_))));
+    assert!(matches!(render_png(&empty, None, &opts(0.0)), Err(Error::View(_))));
 }
 
 #[test]

@@ -24,8 +24,8 @@ fn main() {
         // an OpenSCENARIO file: osc2cr's conversion of it, in-process (full precision)
         let network = if f.extension().is_some_and(|e| e == "xosc") {
             let name = stem(f);
-            let request = convert::Request { path: f, name: &name, config: 1, parameters: &[], source: String::new() };
-            match convert::convert_scenario_keeping(&request, &convert::ConvertOptions::default(), true).1 {
+            let request = convert::Request::named(f, &name).keeping_model();
+            match convert::convert(&request, &convert::ConvertOptions::default()).1 {
                 Some(m) => m.scenario.network,
                 None => {
                     println!("{}: does not convert", f.display());

@@ -3,7 +3,8 @@
 use thiserror::Error;
 
 #[derive(Debug, Clone, PartialEq, Error)]
-pub enum RouteError {
+#[non_exhaustive]
+pub enum Error {
     #[error("a route needs at least 2 waypoints, found {found}")]
     TooFewWaypoints { found: usize },
     #[error("a route may have at most {max} waypoints, found {found}")]

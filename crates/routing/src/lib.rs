@@ -18,7 +18,7 @@ mod route;
 mod search;
 mod waypoint;
 
-pub use error::RouteError;
+pub use error::Error;
 pub use route::{Leg, NextRoad, Route, RoutePoint};
 pub use waypoint::{Strategy, Waypoint};
 
@@ -26,3 +26,8 @@ pub use waypoint::{Strategy, Waypoint};
 pub const MAX_WAYPOINTS: usize = 10_000;
 /// Extra cost of one lane change, in metres of driving (shortest) or its time (fastest).
 pub const LANE_CHANGE_COST_M: f64 = 30.0;
+
+// The README's example is compiled (and run, where it needs no file) with the doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

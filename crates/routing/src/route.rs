@@ -1,6 +1,6 @@
 //! A planned route: the lanes driven, in order, and queries in route coordinates.
 
-use crate::error::RouteError;
+use crate::error::Error;
 use crate::search::{Point, Rules, Search, Step};
 use crate::waypoint::{Strategy, Waypoint};
 use crate::MAX_WAYPOINTS;
@@ -62,8 +62,8 @@ pub struct Route {
     pub warnings: Vec<String>,
 }
 
-fn check_waypoint(net: &RoadNetwork, i: usize, w: &Waypoint) -> Result<Point, RouteError> {
-    let bad = |reason: String| RouteError::BadWaypoint { index: i, reason };
+fn check_waypoint(net: &RoadNetwork, i: usize, w: &Waypoint) -> Result<Point, Error> {
+    let bad = |reason: String| Error::BadWaypoint { index: i, reason };
     let r = net.roads.get(w.road).ok_or_else(|| bad(format!("no road with index {}", w.road)))?;
     if !w.s.is_finite() {
         return Err(bad(format!("s = {} is not a finite number", w.s)));
@@ -83,12 +83,12 @@ impl Route {
     /// from the last waypoint to the first. If no leg obeys driving directions and the
     /// target lane, the search retries with any lane of the target's road and then
     /// without driving directions, with a warning.
-    pub fn plan(net: &RoadNetwork, waypoints: &[Waypoint], strategies: &[Strategy], closed: bool) -> Result<Route, RouteError> {
+    pub fn plan(net: &RoadNetwork, waypoints: &[Waypoint], strategies: &[Strategy], closed: bool) -> Result<Route, Error> {
         if waypoints.len() > MAX_WAYPOINTS {
-            return Err(RouteError::TooManyWaypoints { max: MAX_WAYPOINTS, found: waypoints.len() });
+            return Err(Error::TooManyWaypoints { max: MAX_WAYPOINTS, found: waypoints.len() });
         }
         if waypoints.len() < 2 {
-            return Err(RouteError::TooFewWaypoints { found: waypoints.len() });
+            return Err(Error::TooFewWaypoints { found: waypoints.len() });
         }
         let points = waypoints.iter().enumerate().map(|(i, w)| check_waypoint(net, i, w)).collect::<Result<Vec<_>, _>>()?;
         let p0 = points[0];
@@ -126,7 +126,7 @@ impl Route {
             }
             let road_id = |p: &Point| net.roads.get(p.lane.road).map(|r| r.id.clone()).unwrap_or_default();
             let Some((steps, s_goal)) = found else {
-                return Err(RouteError::NoPath { from: from_i, to: to_i, from_road: road_id(&at), to_road: road_id(&target) });
+                return Err(Error::NoPath { from: from_i, to: to_i, from_road: road_id(&at), to_road: road_id(&target) });
             };
             route.append(net, &steps, s_goal);
             if let Some(last) = steps.last() {

@@ -3,7 +3,7 @@
 use crate::common;
 
 use opendrive::{ContactPoint, RoadNetwork};
-use routing::{NextRoad, Route, RouteError, Strategy, Waypoint};
+use routing::{Error, NextRoad, Route, Strategy, Waypoint};
 
 fn idx(net: &RoadNetwork, id: &str) -> usize {
     net.road_index(id).unwrap_or(usize::MAX)
@@ -77,7 +77,7 @@ fn westbound_main_road_turns_left_into_the_minor_road() {
 fn no_u_turns_means_no_route_back() {
     let net = common::t_junction();
     let e = Route::plan(&net, &[wp(&net, "1", -1, 50.0), wp(&net, "1", -1, 10.0)], &[], false).unwrap_err();
-    assert!(matches!(e, RouteError::NoPath { from: 0, to: 1, .. }), "{e:?}");
+    assert!(matches!(e, Error::NoPath { from: 0, to: 1, .. }), "{e:?}");
 }
 
 #[test]
@@ -91,13 +91,13 @@ fn same_lane_ahead_is_a_single_leg() {
 #[test]
 fn bad_waypoints_are_errors() {
     let net = common::t_junction();
-    assert!(matches!(Route::plan(&net, &[wp(&net, "1", -1, 10.0)], &[], false), Err(RouteError::TooFewWaypoints { found: 1 })));
+    assert!(matches!(Route::plan(&net, &[wp(&net, "1", -1, 10.0)], &[], false), Err(Error::TooFewWaypoints { found: 1 })));
     let e = Route::plan(&net, &[wp(&net, "1", -3, 10.0), wp(&net, "2", -1, 10.0)], &[], false).unwrap_err();
-    assert!(matches!(e, RouteError::BadWaypoint { index: 0, .. }));
+    assert!(matches!(e, Error::BadWaypoint { index: 0, .. }));
     let bad_road = Waypoint { road: 999, lane: -1, s: 0.0, along_s: None };
-    assert!(matches!(Route::plan(&net, &[wp(&net, "1", -1, 10.0), bad_road], &[], false), Err(RouteError::BadWaypoint { index: 1, .. })));
+    assert!(matches!(Route::plan(&net, &[wp(&net, "1", -1, 10.0), bad_road], &[], false), Err(Error::BadWaypoint { index: 1, .. })));
     let nan = Waypoint { s: f64::NAN, ..wp(&net, "1", -1, 0.0) };
-    assert!(matches!(Route::plan(&net, &[nan, wp(&net, "2", -1, 10.0)], &[], false), Err(RouteError::BadWaypoint { index: 0, .. })));
+    assert!(matches!(Route::plan(&net, &[nan, wp(&net, "2", -1, 10.0)], &[], false), Err(Error::BadWaypoint { index: 0, .. })));
 }
 
 #[test]

@@ -63,7 +63,7 @@ impl Matcher<'_> {
             return;
         }
         let mut reps = 0u32;
-        while p.max.map_or(true, |m| reps < m) {
+        while p.max.is_none_or(|m| reps < m) {
             let Some(next) = self.next() else { break };
             if !self.first(&p.term, depth).contains(&next) {
                 break;
@@ -97,7 +97,7 @@ impl Matcher<'_> {
             Term::All(items) => {
                 let mut counts = vec![0u32; items.len()];
                 while let Some(next) = self.next() {
-                    let found = items.iter().enumerate().find(|(k, i)| i.max.map_or(true, |m| counts[*k] < m) && self.first(&i.term, depth).contains(&next));
+                    let found = items.iter().enumerate().find(|(k, i)| i.max.is_none_or(|m| counts[*k] < m) && self.first(&i.term, depth).contains(&next));
                     let Some((k, item)) = found else { break };
                     let before = self.pos;
                     self.term(&item.term, depth + 1);
@@ -187,7 +187,7 @@ impl Matcher<'_> {
             Term::Element(_) => false,
             Term::Sequence(items) | Term::All(items) => items.iter().all(nullable),
             Term::Choice(items) => items.iter().any(nullable),
-            Term::Group(name) => self.schema.group(name).map_or(true, nullable),
+            Term::Group(name) => self.schema.group(name).is_none_or(nullable),
         }
     }
 }

@@ -40,3 +40,8 @@ pub fn for_minor(minor: u16) -> Option<&'static Schema> {
 
 /// The newest schema this crate has (used when a file declares a later minor version).
 pub const NEWEST_MINOR: u16 = 3;
+
+// The README's example is compiled (and run, where it needs no file) with the doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

@@ -1,6 +1,6 @@
 //! Paths from already-resolved world poses, one constructor per shape.
 
-use crate::error::TrajectoryError;
+use crate::error::Error;
 use crate::nurbs::Nurbs;
 use crate::nurbs_path::NurbsPath;
 use crate::path::{Curve, Path};
@@ -27,39 +27,39 @@ pub struct SplineSegment {
     pub time_start: Option<f64>,
 }
 
-fn check_count(shape: &'static str, what: &'static str, found: usize, needed: usize) -> Result<(), TrajectoryError> {
+fn check_count(shape: &'static str, what: &'static str, found: usize, needed: usize) -> Result<(), Error> {
     if found > MAX_ITEMS {
-        return Err(TrajectoryError::TooMany { shape, what, max: MAX_ITEMS, found });
+        return Err(Error::TooMany { shape, what, max: MAX_ITEMS, found });
     }
     if found < needed {
-        return Err(TrajectoryError::TooFew { shape, what, needed, found });
+        return Err(Error::TooFew { shape, what, needed, found });
     }
     Ok(())
 }
 
-fn check_num(shape: &'static str, what: impl Into<String>, v: f64) -> Result<f64, TrajectoryError> {
+fn check_num(shape: &'static str, what: impl Into<String>, v: f64) -> Result<f64, Error> {
     if v.is_finite() {
         Ok(v)
     } else {
-        Err(TrajectoryError::BadNumber { shape, what: what.into(), constraint: "", value: v })
+        Err(Error::BadNumber { shape, what: what.into(), constraint: "", value: v })
     }
 }
 
-fn check_pose(shape: &'static str, what: impl Into<String>, p: &Pose) -> Result<(), TrajectoryError> {
+fn check_pose(shape: &'static str, what: impl Into<String>, p: &Pose) -> Result<(), Error> {
     if p.is_finite() {
         Ok(())
     } else {
         let v = [p.x, p.y, p.z, p.heading].into_iter().find(|v| !v.is_finite()).unwrap_or(f64::NAN);
-        Err(TrajectoryError::BadNumber { shape, what: what.into(), constraint: "", value: v })
+        Err(Error::BadNumber { shape, what: what.into(), constraint: "", value: v })
     }
 }
 
-fn check_length(shape: &'static str, length: f64) -> Result<(), TrajectoryError> {
+fn check_length(shape: &'static str, length: f64) -> Result<(), Error> {
     if length.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
-        return Err(TrajectoryError::ZeroLength { shape });
+        return Err(Error::ZeroLength { shape });
     }
     if length > MAX_LENGTH {
-        return Err(TrajectoryError::BadNumber { shape, what: "the total length".into(), constraint: " ≤ 1e6 m", value: length });
+        return Err(Error::BadNumber { shape, what: "the total length".into(), constraint: " ≤ 1e6 m", value: length });
     }
     Ok(())
 }
@@ -80,7 +80,7 @@ impl Path {
     /// A polyline through `vertices` (pose, optional time). Repeated vertices are dropped
     /// from the geometry (their time stamps stay: the entity waits there); a closed
     /// polyline gets a segment back to its first vertex.
-    pub fn polyline(vertices: &[(Pose, Option<f64>)], closed: bool) -> Result<Path, TrajectoryError> {
+    pub fn polyline(vertices: &[(Pose, Option<f64>)], closed: bool) -> Result<Path, Error> {
         const SHAPE: &str = "Polyline";
         check_count(SHAPE, "vertices", vertices.len(), 2)?;
         let mut warnings = Vec::new();
@@ -105,7 +105,7 @@ impl Path {
             stamps.push((s, *t));
         }
         if xyz.len() < 2 {
-            return Err(TrajectoryError::ZeroLength { shape: SHAPE });
+            return Err(Error::ZeroLength { shape: SHAPE });
         }
         if closed {
             if let (Some(first), Some(last)) = (xyz.first().copied(), xyz.last()) {
@@ -132,14 +132,7 @@ impl Path {
 
     /// One clothoid from `start`: curvature κ + κ'·s for s in [0, length]; `time` is
     /// (startTime, stopTime), spread linearly over the length.
-    pub fn clothoid(
-        start: Pose,
-        curvature: f64,
-        curvature_prime: f64,
-        length: f64,
-        time: (Option<f64>, Option<f64>),
-        closed: bool,
-    ) -> Result<Path, TrajectoryError> {
+    pub fn clothoid(start: Pose, curvature: f64, curvature_prime: f64, length: f64, time: (Option<f64>, Option<f64>), closed: bool) -> Result<Path, Error> {
         let seg = SplineSegment {
             start: Some(start),
             curvature_start: curvature,
@@ -158,7 +151,7 @@ impl Path {
     /// Clothoid segments one after the other; `time_end` is the time at the end of the last.
     /// Zero-length segments are skipped with a warning. The path is esmini's one-metre polyline
     /// of the segments (see `sampled.rs`).
-    pub fn clothoid_spline(start: Pose, segments: &[SplineSegment], time_end: Option<f64>, closed: bool) -> Result<Path, TrajectoryError> {
+    pub fn clothoid_spline(start: Pose, segments: &[SplineSegment], time_end: Option<f64>, closed: bool) -> Result<Path, Error> {
         let exact = Path::spirals(start, segments, time_end, closed)?;
         if exact.length < 1.0 {
             return Ok(exact);
@@ -170,7 +163,7 @@ impl Path {
     }
 
     /// The exact clothoid segments (a Clothoid shape; the base of a ClothoidSpline).
-    fn spirals(start: Pose, segments: &[SplineSegment], time_end: Option<f64>, closed: bool) -> Result<Path, TrajectoryError> {
+    fn spirals(start: Pose, segments: &[SplineSegment], time_end: Option<f64>, closed: bool) -> Result<Path, Error> {
         const SHAPE: &str = "ClothoidSpline";
         check_count(SHAPE, "segments", segments.len(), 1)?;
         check_pose(SHAPE, "the start pose", &start)?;
@@ -188,7 +181,7 @@ impl Path {
                 check_num(SHAPE, format!("timeStart of segment {i}"), t)?;
             }
             if len < 0.0 {
-                return Err(TrajectoryError::BadNumber { shape: SHAPE, what: format!("length of segment {i}"), constraint: " ≥ 0", value: len });
+                return Err(Error::BadNumber { shape: SHAPE, what: format!("length of segment {i}"), constraint: " ≥ 0", value: len });
             }
             if let Some(p) = seg.start {
                 check_pose(SHAPE, format!("start of segment {i}"), &p)?;
@@ -201,7 +194,7 @@ impl Path {
                 continue;
             }
             if s + len > MAX_LENGTH {
-                return Err(TrajectoryError::BadNumber { shape: SHAPE, what: "the total length".into(), constraint: " ≤ 1e6 m", value: s + len });
+                return Err(Error::BadNumber { shape: SHAPE, what: "the total length".into(), constraint: " ≤ 1e6 m", value: s + len });
             }
             let sp = Spiral::new(at, k0, (k1 - k0) / len, len);
             at = sp.end_pose();
@@ -223,7 +216,7 @@ impl Path {
 
     /// A NURBS curve: control points (pose, weight, optional time), knots. Only x, y, z of
     /// the poses count (esmini ignores control-point orientations too).
-    pub fn nurbs(order: u32, control_points: &[(Pose, Option<f64>, Option<f64>)], knots: &[f64], closed: bool) -> Result<Path, TrajectoryError> {
+    pub fn nurbs(order: u32, control_points: &[(Pose, Option<f64>, Option<f64>)], knots: &[f64], closed: bool) -> Result<Path, Error> {
         const SHAPE: &str = "NURBS";
         check_count(SHAPE, "control points", control_points.len(), 2)?;
         check_count(SHAPE, "knots", knots.len(), 0)?;
@@ -244,7 +237,7 @@ impl Path {
         let times = match all_or_none(SHAPE, &times, &mut warnings) {
             Some(ts) => {
                 if let Some(i) = ts.windows(2).position(|w| matches!(w, [a, b] if b < a)) {
-                    return Err(TrajectoryError::NotMonotone { shape: SHAPE, what: "control point times", index: i + 1 });
+                    return Err(Error::NotMonotone { shape: SHAPE, what: "control point times", index: i + 1 });
                 }
                 Some(TimeTable::new(SHAPE, np.time_stamps(&ts))?)
             }

@@ -3,7 +3,8 @@
 use thiserror::Error;
 
 #[derive(Debug, Clone, PartialEq, Error)]
-pub enum TrajectoryError {
+#[non_exhaustive]
+pub enum Error {
     #[error("{shape}: the position of {what} could not be resolved to a world pose")]
     Unresolved { shape: &'static str, what: String },
     #[error("{shape}: expected at least {needed} {what}, found {found}")]

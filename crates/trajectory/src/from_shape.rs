@@ -1,7 +1,7 @@
 //! Paths from the OpenSCENARIO model: positions resolved through the engine's closure.
 
 use crate::constructors::SplineSegment;
-use crate::error::TrajectoryError;
+use crate::error::Error;
 use crate::path::Path;
 use crate::pose::Pose;
 use openscenario::model::{Position, Shape, Trajectory};
@@ -9,20 +9,20 @@ use openscenario::model::{Position, Shape, Trajectory};
 /// The engine's position resolver: world pose of a position, None if it cannot be placed.
 pub type Resolver<'a> = &'a dyn Fn(&Position) -> Option<Pose>;
 
-fn resolve(shape: &'static str, what: String, resolver: Resolver, p: &Position) -> Result<Pose, TrajectoryError> {
-    resolver(p).ok_or(TrajectoryError::Unresolved { shape, what })
+fn resolve(shape: &'static str, what: String, resolver: Resolver, p: &Position) -> Result<Pose, Error> {
+    resolver(p).ok_or(Error::Unresolved { shape, what })
 }
 
 impl Path {
     /// [`Path::from_shape`] with the trajectory's own `closed` flag.
-    pub fn from_trajectory(trajectory: &Trajectory, current: Pose, resolver: Resolver) -> Result<Path, TrajectoryError> {
+    pub fn from_trajectory(trajectory: &Trajectory, current: Pose, resolver: Resolver) -> Result<Path, Error> {
         Path::from_shape(&trajectory.shape, trajectory.closed, current, resolver)
     }
 
     /// Build the path of a shape. `current` is the entity's pose when the action starts: the
     /// start of a Clothoid without a Position and of a ClothoidSpline whose first segment
     /// has no PositionStart. Positions are resolved in document order.
-    pub fn from_shape(shape: &Shape, closed: bool, current: Pose, resolver: Resolver) -> Result<Path, TrajectoryError> {
+    pub fn from_shape(shape: &Shape, closed: bool, current: Pose, resolver: Resolver) -> Result<Path, Error> {
         match shape {
             Shape::Polyline(vertices) => {
                 let mut v = Vec::with_capacity(vertices.len().min(crate::MAX_ITEMS + 1));

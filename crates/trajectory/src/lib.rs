@@ -28,7 +28,7 @@ mod time_mapping;
 mod time_table;
 
 pub use constructors::SplineSegment;
-pub use error::TrajectoryError;
+pub use error::Error;
 pub use from_shape::Resolver;
 pub use nurbs::Nurbs;
 pub use path::Path;
@@ -40,3 +40,8 @@ pub use time_table::TimeTable;
 pub const MAX_ITEMS: usize = 100_000;
 /// Upper bound on a trajectory's length in metres (hostile input).
 pub const MAX_LENGTH: f64 = 1.0e6;
+
+// The README's example is compiled (and run, where it needs no file) with the doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

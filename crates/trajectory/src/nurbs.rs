@@ -1,7 +1,7 @@
 //! A rational B-spline curve: validation and evaluation with de Boor's algorithm in
 //! homogeneous coordinates (w·x, w·y, w·z, w).
 
-use crate::error::TrajectoryError;
+use crate::error::Error;
 
 /// Highest order accepted: evaluation costs order² per point (hostile input).
 pub(crate) const MAX_ORDER: usize = 32;
@@ -18,35 +18,35 @@ pub struct Nurbs {
 impl Nurbs {
     /// `points` are (x, y, z, weight). Knots must number points + order, be finite and
     /// non-decreasing, and span a non-empty domain [knot[order-1], knot[points]].
-    pub fn new(order: u32, points: Vec<[f64; 4]>, knots: Vec<f64>) -> Result<Nurbs, TrajectoryError> {
+    pub fn new(order: u32, points: Vec<[f64; 4]>, knots: Vec<f64>) -> Result<Nurbs, Error> {
         let n = points.len();
         let k = order as usize;
         if k < 2 || k > n {
-            return Err(TrajectoryError::BadOrder { order, control_points: n });
+            return Err(Error::BadOrder { order, control_points: n });
         }
         if k > MAX_ORDER {
-            return Err(TrajectoryError::TooMany { shape: "NURBS", what: "as order", max: MAX_ORDER, found: k });
+            return Err(Error::TooMany { shape: "NURBS", what: "as order", max: MAX_ORDER, found: k });
         }
         if knots.len() != n + k {
-            return Err(TrajectoryError::KnotCount { expected: n + k, found: knots.len() });
+            return Err(Error::KnotCount { expected: n + k, found: knots.len() });
         }
         for (i, &u) in knots.iter().enumerate() {
             if !u.is_finite() {
-                return Err(TrajectoryError::BadNumber { shape: "NURBS", what: format!("knot {i}"), constraint: "", value: u });
+                return Err(Error::BadNumber { shape: "NURBS", what: format!("knot {i}"), constraint: "", value: u });
             }
         }
         if let Some(i) = knots.windows(2).position(|w| matches!(w, [a, b] if b < a)) {
-            return Err(TrajectoryError::NotMonotone { shape: "NURBS", what: "knots", index: i + 1 });
+            return Err(Error::NotMonotone { shape: "NURBS", what: "knots", index: i + 1 });
         }
         for (i, p) in points.iter().enumerate() {
             if !(p[3].is_finite() && p[3] > 0.0) {
-                return Err(TrajectoryError::BadNumber { shape: "NURBS", what: format!("weight of control point {i}"), constraint: " > 0", value: p[3] });
+                return Err(Error::BadNumber { shape: "NURBS", what: format!("weight of control point {i}"), constraint: " > 0", value: p[3] });
             }
         }
         let nurbs = Nurbs { order: k, points, knots };
         let (a, b) = nurbs.domain();
         if b.partial_cmp(&a) != Some(std::cmp::Ordering::Greater) {
-            return Err(TrajectoryError::EmptyDomain);
+            return Err(Error::EmptyDomain);
         }
         Ok(nurbs)
     }

@@ -6,7 +6,7 @@
 //! the samples, so a finer sampling would move the entity differently in time.
 
 use crate::angle;
-use crate::error::TrajectoryError;
+use crate::error::Error;
 use crate::nurbs::Nurbs;
 use crate::pose::PathPoint;
 
@@ -29,7 +29,7 @@ pub(crate) struct NurbsPath {
 }
 
 impl NurbsPath {
-    pub(crate) fn new(curve: Nurbs) -> Result<NurbsPath, TrajectoryError> {
+    pub(crate) fn new(curve: Nurbs) -> Result<NurbsPath, Error> {
         let pts = curve.control_points();
         let polygon: f64 = pts
             .windows(2)
@@ -39,10 +39,10 @@ impl NurbsPath {
             })
             .sum();
         if !polygon.is_finite() {
-            return Err(TrajectoryError::BadNumber { shape: "NURBS", what: "control polygon length".into(), constraint: "", value: polygon });
+            return Err(Error::BadNumber { shape: "NURBS", what: "control polygon length".into(), constraint: "", value: polygon });
         }
         if polygon <= 0.0 {
-            return Err(TrajectoryError::ZeroLength { shape: "NURBS" });
+            return Err(Error::ZeroLength { shape: "NURBS" });
         }
         let wanted = (1.0 + polygon / STEP_LENGTH).floor();
         let n = if wanted < MAX_SAMPLES as f64 { (wanted as usize).max(1) } else { MAX_SAMPLES };
@@ -80,7 +80,7 @@ impl NurbsPath {
             prev = Some(p);
         }
         if !(s.is_finite() && s > 0.0) {
-            return Err(TrajectoryError::ZeroLength { shape: "NURBS" });
+            return Err(Error::ZeroLength { shape: "NURBS" });
         }
         // Missing headings (start, or a start on coincident points) come from the successor.
         if let Some(last) = samples.last_mut() {

@@ -39,26 +39,15 @@ impl Polyline {
         self.pts.last().map_or(0.0, |p| p[3])
     }
 
-    fn heading(&self, i: Option<usize>) -> Option<f64> {
-        i.and_then(|i| self.headings.get(i)).copied()
-    }
-
-    /// Pitch of segment `i`: −atan2(dz, horizontal length), nose down positive (esmini's
-    /// PolyLineShape::CalculatePolyLine).
-    fn segment_pitch(&self, i: usize) -> Option<f64> {
-        let (a, b) = (self.pts.get(i)?, self.pts.get(i + 1)?);
-        Some(-(b[2] - a[2]).atan2(b[3] - a[3]))
-    }
-
-    /// Pitch at `s`, blended across corners as the heading is (esmini interpolates a
-    /// trajectory's pitch with the same corner weights).
-    pub(crate) fn pitch(&self, s: f64) -> f64 {
+    /// The segment that holds `s` (the last one at and past the end).
+    fn segment_at(&self, s: f64) -> usize {
         let nseg = self.headings.len();
-        let i = self.pts.partition_point(|p| p[3] <= s).saturating_sub(1).min(nseg.saturating_sub(1));
-        let (Some(a), Some(b), Some(p)) = (self.pts.get(i), self.pts.get(i + 1), self.segment_pitch(i)) else { return 0.0 };
-        let len = b[3] - a[3];
-        let local = (s - a[3]).clamp(0.0, len);
-        let r = CORNER_RADIUS.min(len / 2.0);
+        self.pts.partition_point(|p| p[3] <= s).saturating_sub(1).min(nseg.saturating_sub(1))
+    }
+
+    /// The segments before and after segment `i` (across the end of a closed polyline).
+    fn neighbours(&self, i: usize) -> (Option<usize>, Option<usize>) {
+        let nseg = self.headings.len();
         let prev = if i > 0 {
             Some(i - 1)
         } else if self.closed {
@@ -73,6 +62,29 @@ impl Polyline {
         } else {
             None
         };
+        (prev, next)
+    }
+
+    fn heading(&self, i: Option<usize>) -> Option<f64> {
+        i.and_then(|i| self.headings.get(i)).copied()
+    }
+
+    /// Pitch of segment `i`: −atan2(dz, horizontal length), nose down positive (esmini's
+    /// PolyLineShape::CalculatePolyLine).
+    fn segment_pitch(&self, i: usize) -> Option<f64> {
+        let (a, b) = (self.pts.get(i)?, self.pts.get(i + 1)?);
+        Some(-(b[2] - a[2]).atan2(b[3] - a[3]))
+    }
+
+    /// Pitch at `s`, blended across corners as the heading is (esmini interpolates a
+    /// trajectory's pitch with the same corner weights).
+    pub(crate) fn pitch(&self, s: f64) -> f64 {
+        let i = self.segment_at(s);
+        let (Some(a), Some(b), Some(p)) = (self.pts.get(i), self.pts.get(i + 1), self.segment_pitch(i)) else { return 0.0 };
+        let len = b[3] - a[3];
+        let local = (s - a[3]).clamp(0.0, len);
+        let r = CORNER_RADIUS.min(len / 2.0);
+        let (prev, next) = self.neighbours(i);
         if r > 0.0 && local < r {
             if let Some(pp) = prev.and_then(|j| self.segment_pitch(j)) {
                 return pp + (r + local) / (2.0 * r) * angle::diff(p, pp);
@@ -88,14 +100,12 @@ impl Polyline {
 
     /// Heading of the segment that holds `s` (the last one at and past the end).
     pub(crate) fn segment_heading(&self, s: f64) -> f64 {
-        let nseg = self.headings.len();
-        let i = self.pts.partition_point(|p| p[3] <= s).saturating_sub(1).min(nseg.saturating_sub(1));
+        let i = self.segment_at(s);
         self.heading(Some(i)).unwrap_or(0.0)
     }
 
     pub(crate) fn eval(&self, s: f64) -> PathPoint {
-        let nseg = self.headings.len();
-        let i = self.pts.partition_point(|p| p[3] <= s).saturating_sub(1).min(nseg.saturating_sub(1));
+        let i = self.segment_at(s);
         let (Some(a), Some(b), Some(h)) = (self.pts.get(i), self.pts.get(i + 1), self.heading(Some(i))) else {
             let p = self.pts.first().copied().unwrap_or([0.0; 4]);
             return PathPoint { s, x: p[0], y: p[1], z: p[2], heading: 0.0, curvature: 0.0 };
@@ -105,20 +115,7 @@ impl Polyline {
         let u = if len > 0.0 { local / len } else { 0.0 };
         let lerp = |k: usize| a[k] + u * (b[k] - a[k]);
         let r = CORNER_RADIUS.min(len / 2.0);
-        let prev = if i > 0 {
-            Some(i - 1)
-        } else if self.closed {
-            Some(nseg - 1)
-        } else {
-            None
-        };
-        let next = if i + 1 < nseg {
-            Some(i + 1)
-        } else if self.closed {
-            Some(0)
-        } else {
-            None
-        };
+        let (prev, next) = self.neighbours(i);
         // Same precedence as esmini: the corner at the start wins when both overlap.
         let (heading, curvature) = if r > 0.0 && local < r {
             match self.heading(prev) {

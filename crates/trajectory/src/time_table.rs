@@ -1,6 +1,6 @@
 //! Time stamps along a path: piecewise-linear s ↔ t, both non-decreasing.
 
-use crate::error::TrajectoryError;
+use crate::error::Error;
 
 /// (s, t) pairs with s and t non-decreasing. Equal s with rising t is a stop (the entity
 /// waits at that point); equal t with rising s would be a jump and is kept as given.
@@ -11,25 +11,25 @@ pub struct TimeTable {
 
 impl TimeTable {
     /// Build from (s, t) pairs; `shape` names the shape in errors.
-    pub fn new(shape: &'static str, points: Vec<(f64, f64)>) -> Result<TimeTable, TrajectoryError> {
+    pub fn new(shape: &'static str, points: Vec<(f64, f64)>) -> Result<TimeTable, Error> {
         if points.is_empty() {
-            return Err(TrajectoryError::TooFew { shape, what: "time stamps", needed: 1, found: 0 });
+            return Err(Error::TooFew { shape, what: "time stamps", needed: 1, found: 0 });
         }
         for (i, &(s, t)) in points.iter().enumerate() {
             if !t.is_finite() {
-                return Err(TrajectoryError::BadNumber { shape, what: format!("time stamp {i}"), constraint: "", value: t });
+                return Err(Error::BadNumber { shape, what: format!("time stamp {i}"), constraint: "", value: t });
             }
             if !s.is_finite() {
-                return Err(TrajectoryError::BadNumber { shape, what: format!("arc length {i}"), constraint: "", value: s });
+                return Err(Error::BadNumber { shape, what: format!("arc length {i}"), constraint: "", value: s });
             }
         }
         for (i, w) in points.windows(2).enumerate() {
             if let [a, b] = w {
                 if b.1 < a.1 {
-                    return Err(TrajectoryError::NotMonotone { shape, what: "time stamps", index: i + 1 });
+                    return Err(Error::NotMonotone { shape, what: "time stamps", index: i + 1 });
                 }
                 if b.0 < a.0 {
-                    return Err(TrajectoryError::NotMonotone { shape, what: "arc lengths", index: i + 1 });
+                    return Err(Error::NotMonotone { shape, what: "arc lengths", index: i + 1 });
                 }
             }
         }

@@ -2,7 +2,7 @@
 
 use openscenario::model::{ControlPoint, Position, Shape, Vertex};
 use proptest::prelude::*;
-use trajectory::{Path, Pose, TimeDomain, TimeMapping, TrajectoryError};
+use trajectory::{Error, Path, Pose, TimeDomain, TimeMapping};
 
 fn p(x: f64, y: f64) -> Pose {
     Pose::new(x, y, 0.0, 0.0)
@@ -10,40 +10,40 @@ fn p(x: f64, y: f64) -> Pose {
 
 #[test]
 fn too_few_and_coincident_vertices_are_errors() {
-    assert!(matches!(Path::polyline(&[(p(0.0, 0.0), None)], false), Err(TrajectoryError::TooFew { .. })));
-    assert_eq!(Path::polyline(&[(p(1.0, 1.0), None), (p(1.0, 1.0), None)], false), Err(TrajectoryError::ZeroLength { shape: "Polyline" }));
-    assert!(matches!(Path::polyline(&[(p(0.0, 0.0), None), (p(f64::NAN, 1.0), None)], false), Err(TrajectoryError::BadNumber { .. })));
+    assert!(matches!(Path::polyline(&[(p(0.0, 0.0), None)], false), Err(Error::TooFew { .. })));
+    assert_eq!(Path::polyline(&[(p(1.0, 1.0), None), (p(1.0, 1.0), None)], false), Err(Error::ZeroLength { shape: "Polyline" }));
+    assert!(matches!(Path::polyline(&[(p(0.0, 0.0), None), (p(f64::NAN, 1.0), None)], false), Err(Error::BadNumber { .. })));
 }
 
 #[test]
 fn decreasing_times_are_an_error() {
     let r = Path::polyline(&[(p(0.0, 0.0), Some(2.0)), (p(1.0, 0.0), Some(1.0))], false);
-    assert!(matches!(r, Err(TrajectoryError::NotMonotone { index: 1, .. })), "{r:?}");
+    assert!(matches!(r, Err(Error::NotMonotone { index: 1, .. })), "{r:?}");
 }
 
 #[test]
 fn clothoid_bad_numbers_are_errors() {
-    assert!(matches!(Path::clothoid(p(0.0, 0.0), 0.1, 0.0, 0.0, (None, None), false), Err(TrajectoryError::ZeroLength { .. })));
-    assert!(matches!(Path::clothoid(p(0.0, 0.0), 0.1, 0.0, -5.0, (None, None), false), Err(TrajectoryError::BadNumber { .. })));
-    assert!(matches!(Path::clothoid(p(0.0, 0.0), f64::INFINITY, 0.0, 5.0, (None, None), false), Err(TrajectoryError::BadNumber { .. })));
-    assert!(matches!(Path::clothoid(p(0.0, 0.0), 0.0, 0.0, 1e9, (None, None), false), Err(TrajectoryError::BadNumber { .. })));
+    assert!(matches!(Path::clothoid(p(0.0, 0.0), 0.1, 0.0, 0.0, (None, None), false), Err(Error::ZeroLength { .. })));
+    assert!(matches!(Path::clothoid(p(0.0, 0.0), 0.1, 0.0, -5.0, (None, None), false), Err(Error::BadNumber { .. })));
+    assert!(matches!(Path::clothoid(p(0.0, 0.0), f64::INFINITY, 0.0, 5.0, (None, None), false), Err(Error::BadNumber { .. })));
+    assert!(matches!(Path::clothoid(p(0.0, 0.0), 0.0, 0.0, 1e9, (None, None), false), Err(Error::BadNumber { .. })));
     // stop before start
-    assert!(matches!(Path::clothoid(p(0.0, 0.0), 0.0, 0.0, 5.0, (Some(3.0), Some(1.0)), false), Err(TrajectoryError::NotMonotone { .. })));
+    assert!(matches!(Path::clothoid(p(0.0, 0.0), 0.0, 0.0, 5.0, (Some(3.0), Some(1.0)), false), Err(Error::NotMonotone { .. })));
 }
 
 #[test]
 fn nurbs_structural_errors() {
     let cps = [(p(0.0, 0.0), None, None), (p(1.0, 0.0), None, None), (p(2.0, 1.0), None, None)];
-    assert_eq!(Path::nurbs(3, &cps, &[0.0, 0.0, 0.0, 1.0, 1.0], false), Err(TrajectoryError::KnotCount { expected: 6, found: 5 }));
-    assert!(matches!(Path::nurbs(3, &cps, &[0.0, 0.0, 1.0, 0.5, 1.0, 1.0], false), Err(TrajectoryError::NotMonotone { .. })));
-    assert!(matches!(Path::nurbs(4, &cps, &[0.0; 7], false), Err(TrajectoryError::BadOrder { .. })));
-    assert!(matches!(Path::nurbs(1, &cps, &[0.0, 1.0, 2.0, 3.0], false), Err(TrajectoryError::BadOrder { .. })));
-    assert_eq!(Path::nurbs(3, &cps, &[1.0; 6], false), Err(TrajectoryError::EmptyDomain));
+    assert_eq!(Path::nurbs(3, &cps, &[0.0, 0.0, 0.0, 1.0, 1.0], false), Err(Error::KnotCount { expected: 6, found: 5 }));
+    assert!(matches!(Path::nurbs(3, &cps, &[0.0, 0.0, 1.0, 0.5, 1.0, 1.0], false), Err(Error::NotMonotone { .. })));
+    assert!(matches!(Path::nurbs(4, &cps, &[0.0; 7], false), Err(Error::BadOrder { .. })));
+    assert!(matches!(Path::nurbs(1, &cps, &[0.0, 1.0, 2.0, 3.0], false), Err(Error::BadOrder { .. })));
+    assert_eq!(Path::nurbs(3, &cps, &[1.0; 6], false), Err(Error::EmptyDomain));
     let bad_w = [(p(0.0, 0.0), Some(0.0), None), (p(1.0, 0.0), None, None), (p(2.0, 1.0), None, None)];
-    assert!(matches!(Path::nurbs(3, &bad_w, &[0.0, 0.0, 0.0, 1.0, 1.0, 1.0], false), Err(TrajectoryError::BadNumber { .. })));
+    assert!(matches!(Path::nurbs(3, &bad_w, &[0.0, 0.0, 0.0, 1.0, 1.0, 1.0], false), Err(Error::BadNumber { .. })));
     let same = [(p(1.0, 1.0), None, None), (p(1.0, 1.0), None, None), (p(1.0, 1.0), None, None)];
-    assert_eq!(Path::nurbs(3, &same, &[0.0, 0.0, 0.0, 1.0, 1.0, 1.0], false), Err(TrajectoryError::ZeroLength { shape: "NURBS" }));
-    assert!(matches!(Path::nurbs(2, &cps[..1], &[0.0, 0.0, 1.0], false), Err(TrajectoryError::TooFew { .. })));
+    assert_eq!(Path::nurbs(3, &same, &[0.0, 0.0, 0.0, 1.0, 1.0, 1.0], false), Err(Error::ZeroLength { shape: "NURBS" }));
+    assert!(matches!(Path::nurbs(2, &cps[..1], &[0.0, 0.0, 1.0], false), Err(Error::TooFew { .. })));
 }
 
 fn world(x: f64, y: f64) -> Position {
@@ -64,7 +64,7 @@ fn from_shape_resolves_through_the_closure_and_reports_failures() {
     assert!((path.length() - 10.0).abs() < 1e-12);
     assert!((path.s_at_time(1.0).unwrap() - 5.0).abs() < 1e-12);
     let bad = Shape::Polyline(vec![Vertex { time: None, position: world(0.0, 0.0) }, Vertex { time: None, position: world(-1.0, 0.0) }]);
-    assert_eq!(Path::from_shape(&bad, false, Pose::default(), &resolver), Err(TrajectoryError::Unresolved { shape: "Polyline", what: "vertex 1".into() }));
+    assert_eq!(Path::from_shape(&bad, false, Pose::default(), &resolver), Err(Error::Unresolved { shape: "Polyline", what: "vertex 1".into() }));
     // a clothoid without position starts at the entity's pose
     let cl = Shape::Clothoid { curvature: 0.0, curvature_prime: 0.0, length: 5.0, start_time: None, stop_time: None, position: None };
     let path = Path::from_shape(&cl, false, Pose::new(1.0, 2.0, 0.0, std::f64::consts::FRAC_PI_2), &resolver).unwrap();

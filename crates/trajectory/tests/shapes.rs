@@ -1,7 +1,7 @@
 //! Each shape against closed forms.
 
 use std::f64::consts::{FRAC_PI_2, PI, SQRT_2};
-use trajectory::{Path, Pose, SplineSegment, TrajectoryError};
+use trajectory::{Error, Path, Pose, SplineSegment};
 
 fn p(x: f64, y: f64) -> Pose {
     Pose::new(x, y, 0.0, 0.0)
@@ -162,7 +162,7 @@ fn clothoid_spline_zero_length_segment_is_skipped_with_warning() {
     assert_eq!(path.warnings.len(), 1);
     assert!(close(path.pose_at(3.0).x, 4.0, 1e-12));
     let only_zero = [segs[0]];
-    assert_eq!(Path::clothoid_spline(p(0.0, 0.0), &only_zero, None, false), Err(TrajectoryError::ZeroLength { shape: "ClothoidSpline" }));
+    assert_eq!(Path::clothoid_spline(p(0.0, 0.0), &only_zero, None, false), Err(Error::ZeroLength { shape: "ClothoidSpline" }));
 }
 
 /// Quarter circle as a rational quadratic: (r,0), (r,r) with weight √2/2, (0,r).

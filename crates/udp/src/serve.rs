@@ -97,7 +97,8 @@ impl Observer for Silent {}
 
 /// Why a scenario could not be served.
 #[derive(Debug, Clone, PartialEq)]
-pub enum ServeError {
+#[non_exhaustive]
+pub enum Error {
     /// Loading the scenario, its map, or the first frame failed.
     Start(Failure),
     /// A UDPDriverController's properties are wrong (esmini stops on them too).
@@ -110,14 +111,16 @@ pub enum ServeError {
     Osi(String),
 }
 
-impl fmt::Display for ServeError {
+impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            ServeError::Start(e) | ServeError::Step(e) => write!(f, "{:?} stage: {}", e.stage, e.message),
-            ServeError::Setup(m) | ServeError::Bind(m) | ServeError::Osi(m) => f.write_str(m),
+            Error::Start(e) | Error::Step(e) => write!(f, "{:?} stage: {}", e.stage, e.message),
+            Error::Setup(m) | Error::Bind(m) | Error::Osi(m) => f.write_str(m),
         }
     }
 }
+
+impl std::error::Error for Error {}
 
 /// One entity served over UDP.
 struct Link {
@@ -144,10 +147,10 @@ struct Server<'o> {
 
 /// Runs the scenario file `path`, serving its UDP drivers, to its end (its stop trigger or the
 /// time cap); the observer is told of ports, rejections and steps as they happen.
-pub fn serve(path: &Path, options: &ServeOptions, observer: &mut dyn Observer) -> Result<Outcome, ServeError> {
-    let mut session = ClosedLoop::start(path, &options.convert, &External::controllers()).map_err(ServeError::Start)?;
+pub fn serve(path: &Path, options: &ServeOptions, observer: &mut dyn Observer) -> Result<Outcome, Error> {
+    let mut session = ClosedLoop::start(path, &options.convert, &External::controllers()).map_err(Error::Start)?;
     let mut notes = Vec::new();
-    let base = base_port(session.scenario(), options.base_port, &mut notes).map_err(ServeError::Setup)?;
+    let base = base_port(session.scenario(), options.base_port, &mut notes).map_err(Error::Setup)?;
     let any_asynchronous = udp_drivers(session.scenario()).iter().any(|c| read_properties(c, &mut Vec::new()).is_ok_and(|p| p.exec == ExecMode::Asynchronous));
     let pace = options.pace.unwrap_or(if any_asynchronous { Pace::RealTime(1.0) } else { Pace::AsFastAsPossible });
     let ids = object_ids(session.scenario());
@@ -155,7 +158,7 @@ pub fn serve(path: &Path, options: &ServeOptions, observer: &mut dyn Observer) -
         Server { options, observer, ids, base, links: BTreeMap::new(), unserved: Vec::new(), notes, rejections: Vec::new(), rejections_not_kept: 0 };
     let dt = options.convert.step;
     let mut osi = match options.osi || options.osi_receiver.is_some() {
-        true => Some(OsiOut::new(&session, options.osi_receiver).map_err(|e| ServeError::Osi(format!("cannot send OSI messages: {e}")))?),
+        true => Some(OsiOut::new(&session, options.osi_receiver).map_err(|e| Error::Osi(format!("cannot send OSI messages: {e}")))?),
         false => None,
     };
     let stopped = || options.stop.as_ref().is_some_and(|s| s.load(Ordering::SeqCst));
@@ -190,7 +193,7 @@ pub fn serve(path: &Path, options: &ServeOptions, observer: &mut dyn Observer) -
         clock.wait_until(t - t0);
         let (inputs, without_message) = server.inputs(&session, t, dt);
         let before = session.time();
-        session.step_with(&inputs).map_err(ServeError::Step)?;
+        session.step_with(&inputs).map_err(Error::Step)?;
         // the frame in which the stop trigger fires records nothing: it was no step
         if session.time() > before {
             for index in without_message {
@@ -269,7 +272,7 @@ fn tally(
 impl Server<'_> {
     /// Links the entities whose controller is a UDP driver, and opens the port of each whose
     /// controller is active (again with its port if a new controller was assigned).
-    fn follow_activations(&mut self, session: &ClosedLoop, at_init: bool) -> Result<(), ServeError> {
+    fn follow_activations(&mut self, session: &ClosedLoop, at_init: bool) -> Result<(), Error> {
         for ext in session.external() {
             let Source::Controller(c) = &ext.source else { continue };
             if !is_udp_driver(c) {
@@ -284,8 +287,8 @@ impl Server<'_> {
                 continue;
             }
             // (its notes were taken when the base port was read from every UDP driver)
-            let props = read_properties(c, &mut Vec::new()).map_err(ServeError::Setup)?;
-            let object_id = object_id(&self.ids, &ext.name).ok_or_else(|| ServeError::Setup(format!("`{}` has no esmini object id", ext.name)))?;
+            let props = read_properties(c, &mut Vec::new()).map_err(Error::Setup)?;
+            let object_id = object_id(&self.ids, &ext.name).ok_or_else(|| Error::Setup(format!("`{}` has no esmini object id", ext.name)))?;
             let link = self.links.entry(ext.index).or_insert_with(|| Link {
                 controller: c.clone(),
                 endpoint: None,
@@ -315,7 +318,7 @@ impl Server<'_> {
             if !ext.active {
                 continue;
             }
-            let port = port(&props, self.base, object_id).map_err(|m| ServeError::Setup(format!("`{}`: {m}", ext.name)))?;
+            let port = port(&props, self.base, object_id).map_err(|m| Error::Setup(format!("`{}`: {m}", ext.name)))?;
             let address = SocketAddr::new(self.options.bind, port);
             if link.endpoint.as_ref().is_some_and(|e| e.address == address && e.exec == props.exec) {
                 continue;
@@ -323,7 +326,7 @@ impl Server<'_> {
             // the old port closes before the new one opens (it may be the same number)
             link.endpoint = None;
             let endpoint = Endpoint::bind(address, props.exec, self.options.synchronous_timeout)
-                .map_err(|e| ServeError::Bind(format!("cannot listen on {address} for `{}`: {e}", ext.name)))?;
+                .map_err(|e| Error::Bind(format!("cannot listen on {address} for `{}`: {e}", ext.name)))?;
             let listening = Listening { entity: ext.name.clone(), object_id, address: endpoint.address, exec: props.exec, at_init };
             link.report.address = Some(endpoint.address.to_string());
             link.endpoint = Some(endpoint);

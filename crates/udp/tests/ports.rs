@@ -6,7 +6,7 @@
 
 use crate::common::*;
 use std::net::UdpSocket;
-use udp::{serve, Reason, ServeError};
+use udp::{serve, Error, Reason};
 
 /// `two_cars.xosc` with these parameters; each car is put at x by XYH states (Car0 at x0 on
 /// lane -1, Car1 at x1 on lane -2); the client sends Car1's object id to both ports at frame 5.
@@ -84,18 +84,18 @@ fn a_port_in_use_or_a_property_esmini_refuses_stops_the_run_before_it_starts() {
     let port = taken.local_addr().expect("address").port();
     let o = options(&[("Port", port.to_string()), ("ExecMode", "synchronous".into())], 1.0);
     match serve(&fixture("one_car.xosc"), &o, &mut udp::Silent) {
-        Err(ServeError::Bind(m)) => assert!(m.contains(&format!("cannot listen on 127.0.0.1:{port} for `Ego`")), "{m}"),
+        Err(Error::Bind(m)) => assert!(m.contains(&format!("cannot listen on 127.0.0.1:{port} for `Ego`")), "{m}"),
         other => panic!("expected a bind error, got {other:?}"),
     }
     let o = options(&[("ExecMode", "lockstep".into())], 1.0);
     match serve(&fixture("one_car.xosc"), &o, &mut udp::Silent) {
-        Err(ServeError::Setup(m)) => {
+        Err(Error::Setup(m)) => {
             assert!(m.contains("one_car.xosc:") && m.contains(r#"execMode "lockstep" is neither "asynchronous" nor "synchronous""#), "{m}")
         }
         other => panic!("expected a setup error, got {other:?}"),
     }
     let o = options(&[("Port", "70000".into())], 1.0);
-    assert!(matches!(serve(&fixture("one_car.xosc"), &o, &mut udp::Silent), Err(ServeError::Setup(m)) if m.contains(r#"port "70000" is outside 0..=65535"#)));
+    assert!(matches!(serve(&fixture("one_car.xosc"), &o, &mut udp::Silent), Err(Error::Setup(m)) if m.contains(r#"port "70000" is outside 0..=65535"#)));
 }
 
 #[test]

@@ -22,9 +22,11 @@ pub(crate) struct CheckArgs {
     /// Print the findings as JSON (an array of {file, line, column, severity, message}).
     #[arg(long)]
     pub json: bool,
-    /// Also list warnings (by default only errors and a count of warnings are printed).
-    #[arg(short, long)]
-    pub verbose: bool,
+    /// Also list warnings (by default only errors and a count of warnings are printed). A finding
+    /// repeated in one file is listed once, at its first position, with how many more there
+    /// are; `-vv` lists every one (as `--json` does).
+    #[arg(short, long, action = clap::ArgAction::Count)]
+    pub verbose: u8,
     #[command(flatten)]
     pub params: ParamArgs,
 }
@@ -40,6 +42,10 @@ struct Finding {
 
 fn finding(severity: &'static str, file: &Path, line: u32, column: u32, message: impl Into<String>) -> Finding {
     Finding { file: file.display().to_string(), line, column, severity, message: message.into() }
+}
+
+fn diagnostic_finding(severity: &'static str, d: &diagnostic::Diagnostic) -> Finding {
+    finding(severity, &d.location.file, d.location.line, d.location.col, d.message.clone())
 }
 
 fn xosc_files(inputs: &[PathBuf]) -> Result<Vec<PathBuf>, Failure> {
@@ -89,10 +95,13 @@ fn check_file(path: &Path, params: &[(String, String)]) -> Vec<Finding> {
             finding(severity, &f.location.file, f.location.line, f.location.col, f.message)
         })
         .collect();
-    let schema_errors: Vec<(String, u32, u32)> = out.iter().filter(|f| f.severity == "error").map(|f| (f.file.clone(), f.line, f.column)).collect();
+    let schema: Vec<(String, u32, u32, bool)> = out.iter().map(|f| (f.file.clone(), f.line, f.column, f.severity == "error")).collect();
     // The reader's error on a line the schema pass found wrong is the same problem seen again;
-    // so is its warning at the very place of a schema error (an unknown attribute is also unread).
-    let already = |f: &Finding| schema_errors.iter().any(|(file, line, col)| *file == f.file && *line == f.line && (f.severity == "error" || *col == f.column));
+    // so is any finding of the reader at the very place of one of the schema pass (an unknown
+    // attribute is also unread; a catalog's undeclared parameter also stops its entry).
+    let already = |f: &Finding| {
+        schema.iter().any(|(file, line, col, error)| *file == f.file && *line == f.line && ((*error && f.severity == "error") || *col == f.column))
+    };
     let reader = reader_findings(path, params);
     out.extend(reader.into_iter().filter(|f| !already(f)));
     convert_stops::hold_to_convert(&mut out, path, params);
@@ -109,27 +118,18 @@ fn reader_findings(path: &Path, params: &[(String, String)]) -> Vec<Finding> {
             // A catalog that is not there is a gap in what was given, not a fault of this file:
             // the file's own problems are all reported by the schema pass above.
             let severity = if e.kind == openscenario::ErrorKind::MissingCatalog { "warning" } else { "error" };
-            let message =
-                if severity == "warning" { format!("{} (what this file takes from the catalog is not checked)", e.message) } else { e.message.clone() };
+            let message = if severity == "warning" { format!("{} {}", e.message, openscenario::CATALOG_NOT_CHECKED) } else { e.message.clone() };
             out.push(finding(severity, &l.file, l.line, l.col, message));
             return out;
         }
     };
-    for w in &loaded.warnings {
-        let l = &w.location;
-        out.push(finding("warning", &l.file, l.line, l.col, w.message.clone()));
-    }
-    for p in &loaded.problems {
-        let l = &p.location;
-        out.push(finding("error", &l.file, l.line, l.col, p.message.clone()));
-    }
+    out.extend(loaded.warnings.iter().map(|w| diagnostic_finding("warning", w)));
+    out.extend(loaded.problems.iter().map(|p| diagnostic_finding("error", p)));
     if let openscenario::Content::Scenario(s) = &loaded.content {
         let road = match &s.road_network.logic_file {
             Some(f) => match opendrive::load(f) {
                 Ok(r) => {
-                    for w in &r.warnings {
-                        out.push(finding("warning", &w.file, w.line, w.col, w.message.clone()));
-                    }
+                    out.extend(r.warnings.iter().map(|w| diagnostic_finding("warning", w)));
                     Some(r.network)
                 }
                 // the reader has said where the scenario names it; say what follows from it
@@ -147,9 +147,7 @@ fn reader_findings(path: &Path, params: &[(String, String)]) -> Vec<Finding> {
             None => None,
         };
         if road.is_some() {
-            for p in engine::road_references(s, road.as_ref()) {
-                out.push(finding("error", &p.file, p.line, p.col, p.message.clone()));
-            }
+            out.extend(engine::road_references(s, road.as_ref()).iter().map(|p| diagnostic_finding("error", p)));
         }
     }
     out
@@ -167,11 +165,18 @@ pub(crate) fn run(args: &CheckArgs) -> Result<(), Failure> {
         let json = serde_json::to_string_pretty(&findings).map_err(|e| Failure::input(e.to_string()))?;
         println!("{json}");
     } else {
-        for f in findings.iter().filter(|f| args.verbose || f.severity == "error") {
+        let shown: Vec<&Finding> = findings.iter().filter(|f| args.verbose > 0 || f.severity == "error").collect();
+        let lines: Vec<(&&Finding, usize)> = if args.verbose > 1 {
+            shown.iter().map(|f| (f, 0)).collect()
+        } else {
+            crate::grouped::by_kind(&shown, |f| (f.file.clone(), f.severity, crate::grouped::kind(&f.message)))
+        };
+        for (f, more) in lines {
+            let more = crate::grouped::more(more);
             if f.line == 0 {
-                println!("{}: {}: {}", f.file, f.severity, f.message);
+                println!("{}: {}: {}{more}", f.file, f.severity, f.message);
             } else {
-                println!("{}:{}:{}: {}: {}", f.file, f.line, f.column, f.severity, f.message);
+                println!("{}:{}:{}: {}: {}{more}", f.file, f.line, f.column, f.severity, f.message);
             }
         }
         eprintln!(
@@ -180,7 +185,7 @@ pub(crate) fn run(args: &CheckArgs) -> Result<(), Failure> {
             if files.len() == 1 { "" } else { "s" },
             if errors == 1 { "" } else { "s" },
             if warnings == 1 { "" } else { "s" },
-            if args.verbose || warnings == 0 { "" } else { " (-v lists them)" }
+            if args.verbose > 0 || warnings == 0 { "" } else { " (-v lists them)" }
         );
     }
     if errors > 0 {

@@ -10,7 +10,7 @@ use std::time::Duration;
 
 use convert::{BatchOptions, ConvertOptions, EgoChoice, GoalOptions, JsonReport, OutputFormat, ScenarioReport, Stage, Table};
 
-use crate::shared_options::RunArgs;
+use crate::shared_options::{CommonRoadArgs, RunArgs};
 use crate::Failure;
 
 #[derive(clap::Args)]
@@ -27,20 +27,16 @@ pub(crate) struct ConvertArgs {
     /// lanelet network, OUT_DIR/<map id>.pb, written once and shared — for parameter sweeps).
     #[arg(long, default_value = "2020a", value_name = "2020a|2024")]
     pub format: OutputFormat,
-    /// CommonRoad time step, s.
-    #[arg(long, default_value_t = 0.1, allow_negative_numbers = true)]
-    pub dt: f64,
     #[command(flatten)]
     pub run: RunArgs,
+    #[command(flatten)]
+    pub output_file: CommonRoadArgs,
     /// The ego entity, by exact name (default: first by name containing --ego-pattern).
     #[arg(long, value_name = "NAME")]
     pub ego: Option<String>,
     /// Text the ego's name contains (case-insensitive); else the first moving entity is the ego.
     #[arg(long, default_value = "ego", value_name = "TEXT")]
     pub ego_pattern: String,
-    /// Leave the ego out of the obstacles (for motion-planning benchmarks).
-    #[arg(long)]
-    pub drop_ego: bool,
     /// Goal rectangle length along the ego's last heading, m.
     #[arg(long, default_value_t = 50.0, allow_negative_numbers = true)]
     pub goal_length: f64,
@@ -73,10 +69,6 @@ pub(crate) struct ConvertArgs {
     /// Source attribute (default: "OpenSCENARIO <file>, converted by osc2cr").
     #[arg(long)]
     pub source: Option<String>,
-    /// Date attribute, YYYY-MM-DD (default: the OpenSCENARIO FileHeader's date, else
-    /// 1970-01-01 — never today, so the same input gives the same bytes), as for map.
-    #[arg(long, value_parser = convert::parse_date)]
-    pub date: Option<commonroad::Date>,
     /// Most variations converted per parameter distribution file (for a whole sweep, its
     /// number of variations or more).
     #[arg(long, default_value_t = 100, allow_negative_numbers = true, value_parser = crate::shared_options::whole::<u64>)]
@@ -116,9 +108,10 @@ pub(crate) struct ConvertArgs {
     /// left are removed. The result is the files of an uninterrupted run.
     #[arg(long)]
     pub resume: bool,
-    /// Print every warning on stderr.
-    #[arg(short, long)]
-    pub verbose: bool,
+    /// Print the warnings on stderr: a warning repeated in one file once, at its first position,
+    /// with how many more there are; `-vv` prints every one (the JSON report keeps them all).
+    #[arg(short, long, action = clap::ArgAction::Count)]
+    pub verbose: u8,
     /// Also write each run as an OSI trace file (ASAM OSI 3.5 GroundTruth per frame, as esmini's
     /// --osi_file writes it): FILE for one scenario file, else `<FILE stem>_<output name>.osi`
     /// beside FILE, one per scenario or variation.
@@ -128,12 +121,12 @@ pub(crate) struct ConvertArgs {
 
 fn options(args: &ConvertArgs) -> ConvertOptions {
     ConvertOptions {
-        dt: args.dt,
+        dt: args.output_file.dt,
         ego: match &args.ego {
             Some(n) => EgoChoice::Name(n.clone()),
             None => EgoChoice::Pattern(args.ego_pattern.clone()),
         },
-        drop_ego: args.drop_ego,
+        drop_ego: args.output_file.drop_ego,
         goal: GoalOptions {
             length: args.goal_length,
             width: args.goal_width,
@@ -145,7 +138,7 @@ fn options(args: &ConvertArgs) -> ConvertOptions {
         author: args.author.clone(),
         affiliation: args.affiliation.clone(),
         source: args.source.clone(),
-        date: args.date,
+        date: args.output_file.date,
         seed: args.seed,
         max_variations: args.max_variations,
         map_tolerance: args.map_tolerance,
@@ -217,9 +210,17 @@ pub(crate) fn run(args: &ConvertArgs) -> Result<(), Failure> {
         if let Some(f) = &r.failure {
             bar.0.suspend(|| eprintln!("failed {}: {} stage: {}", describe(&r), stage_name(f.stage), f.message));
         }
-        if args.verbose {
+        if args.verbose > 1 {
             for w in &r.warnings {
                 bar.0.suspend(|| eprintln!("warning {}: {}: {}", describe(&r), stage_name(w.stage), w.message));
+            }
+        } else if args.verbose == 1 {
+            let kinds = crate::grouped::by_kind(&r.warnings, |w| {
+                let (file, kind) = crate::grouped::split_position(&w.message);
+                (w.stage.as_str(), file.to_string(), crate::grouped::kind(kind))
+            });
+            for (w, more) in kinds {
+                bar.0.suspend(|| eprintln!("warning {}: {}: {}{}", describe(&r), stage_name(w.stage), w.message, crate::grouped::more(more)));
             }
         }
         let written = json.as_mut().map_or(Ok(()), |j| j.add(&r)).and_then(|()| table.as_mut().map_or(Ok(()), |t| t.add(position, &r)));
@@ -253,7 +254,7 @@ pub(crate) fn run(args: &ConvertArgs) -> Result<(), Failure> {
         totals.failed,
         totals.skipped.len(),
         totals.warnings,
-        if args.verbose || totals.warnings == 0 { "" } else { " (-v lists them)" },
+        if args.verbose > 0 || totals.warnings == 0 { "" } else { " (-v lists them)" },
         args.output.display()
     );
     if totals.planned == 0 {
@@ -273,15 +274,7 @@ pub(crate) fn run(args: &ConvertArgs) -> Result<(), Failure> {
     Ok(())
 }
 
-pub(crate) fn stage_name(s: Stage) -> &'static str {
-    match s {
-        Stage::Load => "load",
-        Stage::RoadNetwork => "road network",
-        Stage::Map => "map",
-        Stage::Engine => "engine",
-        Stage::Build => "build",
-        Stage::Write => "write",
-        Stage::Timeout => "timeout",
-        Stage::Render => "render",
-    }
+/// A stage as messages name it: the report's name with spaces (`road network`).
+pub(crate) fn stage_name(s: Stage) -> String {
+    s.as_str().replace('_', " ")
 }

@@ -5,7 +5,7 @@
 use crate::shared_options::ParamArgs;
 use crate::Failure;
 use openscenario::{
-    Action, CatalogEntry, CatalogFile, Condition, ConditionKind, Content, Distribution, Entity, EntityObject, LoadOptions, Scenario, Trigger, Warning,
+    Action, CatalogEntry, CatalogFile, Condition, ConditionKind, Content, Diagnostic, Distribution, Entity, EntityObject, LoadOptions, Scenario, Trigger,
 };
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -35,7 +35,7 @@ pub(crate) fn run(args: &InspectArgs) -> Result<(), Failure> {
     Ok(())
 }
 
-fn json(args: &InspectArgs, content: &Content, warnings: &[Warning]) -> Result<String, Failure> {
+fn json(args: &InspectArgs, content: &Content, warnings: &[Diagnostic]) -> Result<String, Failure> {
     let file = args.file.display().to_string();
     let value = match content {
         Content::Scenario(s) => serde_json::json!({ "file": file, "kind": "scenario", "scenario": s, "warnings": warnings }),
@@ -53,7 +53,7 @@ fn json(args: &InspectArgs, content: &Content, warnings: &[Warning]) -> Result<S
     Ok(s)
 }
 
-fn text(args: &InspectArgs, content: &Content, warnings: &[Warning]) -> String {
+fn text(args: &InspectArgs, content: &Content, warnings: &[Diagnostic]) -> String {
     let mut o = String::new();
     let _ = writeln!(o, "file: {}", args.file.display());
     match content {

@@ -48,12 +48,12 @@ pub(crate) fn run(args: &MapArgs) -> Result<(), Failure> {
     let n_warn = loaded.warnings.len() + result.warnings.len();
     if args.verbose {
         for w in loaded.warnings.iter().chain(&result.warnings) {
-            eprintln!("{w}");
+            eprintln!("{}", w.labelled("warning"));
         }
     }
     let stem = args.file.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
     let n_lanelets = result.network.lanelets.len();
-    let invalid = |e: commonroad::ModelError| Failure::input(format!("{}: {e}", args.file.display()));
+    let invalid = |e: commonroad::Error| Failure::input(format!("{}: {e}", args.file.display()));
     let mut scenario = map::map_scenario(&loaded.network, result, &stem, date).map_err(invalid)?;
     scenario.header.benchmark_id = map::map_scenario_id_in(&args.country, &stem).map_err(invalid)?;
     let problems = scenario.validate(None);

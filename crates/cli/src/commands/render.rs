@@ -104,11 +104,10 @@ fn load(path: &Path, run: &RunArgs, verbose: bool) -> Result<Input, Failure> {
     }
     let is_xosc = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("xosc"));
     if is_xosc {
-        let name = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
-        let request = convert::Request { path, name: &name, config: 1, parameters: &[], source: String::new() };
+        let request = convert::Request::named(path, &convert::batch_name(path)).keeping_model();
         let options = run.convert_options();
         options.check().map_err(Failure::input)?;
-        let (conversion, model) = convert::convert_scenario_keeping(&request, &options, true);
+        let (conversion, model) = convert::convert(&request, &options);
         if verbose {
             for w in &conversion.warnings {
                 eprintln!("{}: warning: {}", path.display(), w.message);
@@ -128,7 +127,7 @@ fn load(path: &Path, run: &RunArgs, verbose: bool) -> Result<Input, Failure> {
     let read = commonroad::xml::read_scenario_file(path).map_err(|e| Failure::input(e.to_string()))?;
     if verbose {
         for w in &read.warnings {
-            eprintln!("{w}");
+            eprintln!("{}", w.labelled("warning"));
         }
     }
     Ok(Input { scenario: read.scenario, problems: read.problems, names: BTreeMap::new(), marks: Vec::new() })
@@ -223,7 +222,7 @@ pub(crate) fn run(args: &RenderArgs) -> Result<(), Failure> {
         ..Default::default()
     };
     let scenario = &input.scenario;
-    let fail = |e: render::RenderError| Failure::input(format!("{}: {e}", args.file.display()));
+    let fail = |e: render::Error| Failure::input(format!("{}: {e}", args.file.display()));
     let mut written = Vec::new();
     match format {
         Format::Gif => {

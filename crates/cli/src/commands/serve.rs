@@ -7,9 +7,9 @@ use std::net::IpAddr;
 use std::path::PathBuf;
 
 use convert::{ConvertOptions, EgoChoice, Stage};
-use udp::{Listening, Observer, Pace, Rejection, ServeError, ServeOptions};
+use udp::{Listening, Observer, Pace, Rejection, ServeOptions};
 
-use crate::shared_options::RunArgs;
+use crate::shared_options::{CommonRoadArgs, RunArgs};
 use crate::Failure;
 
 pub(crate) const ABOUT: &str = "\
@@ -79,20 +79,13 @@ pub(crate) struct ServeArgs {
     /// Never wait for the wall clock (synchronous ports still wait for their datagrams).
     #[arg(long)]
     pub fast: bool,
-    /// CommonRoad time step, s.
-    #[arg(long, default_value_t = 0.1, allow_negative_numbers = true)]
-    pub dt: f64,
     #[command(flatten)]
     pub run: RunArgs,
+    #[command(flatten)]
+    pub output_file: CommonRoadArgs,
     /// The ego entity, by exact name (default: the first entity driven over UDP).
     #[arg(long, value_name = "NAME")]
     pub ego: Option<String>,
-    /// Leave the ego out of the obstacles.
-    #[arg(long)]
-    pub drop_ego: bool,
-    /// Date attribute, YYYY-MM-DD (default: the FileHeader's date, else 1970-01-01).
-    #[arg(long, value_parser = convert::parse_date)]
-    pub date: Option<commonroad::Date>,
     /// Write a JSON report: ports, datagrams per entity, every rejection, warnings.
     #[arg(long, value_name = "FILE")]
     pub report: Option<PathBuf>,
@@ -121,13 +114,13 @@ impl Observer for Stderr {
 
 fn options(args: &ServeArgs) -> Result<ServeOptions, Failure> {
     let convert = ConvertOptions {
-        dt: args.dt,
+        dt: args.output_file.dt,
         ego: match &args.ego {
             Some(n) => EgoChoice::Name(n.clone()),
             None => ConvertOptions::default().ego,
         },
-        drop_ego: args.drop_ego,
-        date: args.date,
+        drop_ego: args.output_file.drop_ego,
+        date: args.output_file.date,
         format: args.osi.format,
         ..args.run.convert_options()
     };
@@ -155,8 +148,8 @@ pub(crate) fn run(args: &ServeArgs) -> Result<(), Failure> {
     let osi_file = if served.is_ok() { crate::serve_extra::finish_trace(observer)? } else { None };
     let outcome = served.map_err(|e| {
         let status = match &e {
-            ServeError::Start(f) if matches!(f.stage, Stage::Load | Stage::RoadNetwork) => 2,
-            ServeError::Setup(_) | ServeError::Bind(_) => 2,
+            udp::Error::Start(f) if matches!(f.stage, Stage::Load | Stage::RoadNetwork) => 2,
+            udp::Error::Setup(_) | udp::Error::Bind(_) => 2,
             _ => 1,
         };
         Failure { message: format!("{}: {e}", args.scenario.display()), status }

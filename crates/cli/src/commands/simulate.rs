@@ -86,7 +86,7 @@ pub(crate) fn run(args: &SimulateArgs) -> Result<(), Failure> {
             eprintln!("{w}");
         }
         for w in &road_warnings {
-            eprintln!("{w}");
+            eprintln!("{}", w.labelled("warning"));
         }
         for w in &run.warnings {
             eprintln!("{w}");

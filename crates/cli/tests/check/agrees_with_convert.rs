@@ -288,8 +288,18 @@ fn the_issues_two_cases_fail_in_check_with_convert_s_cause() {
     let (check, convert) = both(removed, &dir.join("out"));
     let said = String::from_utf8_lossy(&check.stdout);
     assert_eq!((check.status.code(), convert.status.code()), (Some(2), Some(2)), "{said}");
-    assert_eq!(said.matches("error: LanePosition on road `1`, but the scenario has no road network").count(), 3, "{said}");
+    assert!(said.contains("error: LanePosition on road `1`, but the scenario has no road network"), "{said}");
     assert!(String::from_utf8_lossy(&check.stderr).contains("3 errors"), "{}", String::from_utf8_lossy(&check.stderr));
+    // listed once with how many more; each at its own position in the JSON
+    let json: serde_json::Value = serde_json::from_slice(&osc2cr(&["check", s(&removed.file), "--json"]).stdout).expect("json");
+    let lines: Vec<u64> = json
+        .as_array()
+        .expect("array")
+        .iter()
+        .filter(|f| f["severity"] == "error" && f["message"].as_str().is_some_and(|m| m.contains("but the scenario has no road network")))
+        .filter_map(|f| f["line"].as_u64())
+        .collect();
+    assert_eq!(lines.len(), 3, "{json:#}");
 }
 
 #[test]

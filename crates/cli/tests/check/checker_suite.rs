@@ -37,48 +37,6 @@ fn is_test_specific(tests: &str) -> bool {
     tests.contains("VersionChecker")
 }
 
-/// Files the API's tests read expecting no error. The `writerApiExports/` files are not among
-/// them: they are outputs of an old API writer with element names swapped
-/// (`<ParameterDeclaration>` holding `<ParameterDeclarations>`), schema-invalid as written.
-const VALID: &[&str] = &[
-    "DoubleLaneChanger-utf8-BOM.xosc",
-    "DoubleLaneChanger.xosc",
-    "DoubleLaneChanger1_1.xosc",
-    "DoubleLaneChanger1_2.xosc",
-    "DoubleLaneChanger1_3.xosc",
-    "DoubleLaneChangerDefaultValues.xosc",
-    "DoubleLaneChangerDeprecated.xosc",
-    "DoubleLaneChangerDeprecated1_2.xosc",
-    "DoubleLaneChangerDeprecated1_3.xosc",
-    "DoubleLaneChangerExpressions.xosc",
-    "DoubleLaneChangerParams.xosc",
-    "DoubleLaneChangerUnicode.xosc",
-    "DoubleLaneChangerVariables1_2.xosc",
-    "DoubleLaneChangerVariables1_3.xosc",
-    "MultiChoice.xosc",
-    "ALKS_Scenario_4.2_1_FullyBlockingTarget_ParameterValidation.xosc",
-    "ALKS_Scenario_4.2_1_FullyBlockingTarget_VariableValidation.xosc",
-    "simpleImport/simpleImport.xosc",
-    "simpleImportWithExpressions/simpleImportWithExpressions.xosc",
-    "simpleImportWithParameters/importWithParameters.xosc",
-];
-
-/// What osc2cr finds wrong in a file the API reads without error, because osc2cr checks what the
-/// file refers to and the API's schema reading does not: in the two ALKS files a LanePosition's
-/// `laneId` (a string in the schema) is the bare name of a parameter, `Ego_InitPosition_LaneId`,
-/// which no OpenDRIVE lane can be (lane ids are integers).
-/// And what the suite does not ship: its catalogs, the road networks and scenario files its files
-/// name. Without them `convert` refuses the file, and `check` says so as an error (the same
-/// verdict as `convert`).
-fn beyond_the_schema(file: &str, message: &str) -> bool {
-    let not_shipped = (message.starts_with("catalog '") && message.contains(" not found"))
-        || (message.starts_with("the road network (LogicFile)") && message.ends_with("no such file"))
-        || message == "no such file";
-    not_shipped
-        || file.starts_with("ALKS_Scenario_4.2_1_FullyBlockingTarget_")
-            && message == "attribute 'laneId' of <LanePosition>: expected an integer, found 'Ego_InitPosition_LaneId'"
-}
-
 struct Expected {
     severity: &'static str,
     line: u64,
@@ -172,11 +130,11 @@ fn check_finds_the_api_expected_messages_at_their_lines() {
 fn files_the_api_reads_without_error_give_no_error() {
     let Some(shared) = testkit::shared_dir() else { return };
     let suite = shared.join("checker-suite");
-    for file in VALID {
+    for file in checker_suite_valid::VALID {
         let errors: Vec<String> = check_json(&suite.join(file), &[])
             .iter()
             .filter(|f| f["severity"] == "error")
-            .filter(|f| !beyond_the_schema(file, f["message"].as_str().unwrap_or("")))
+            .filter(|f| !checker_suite_valid::beyond_the_schema(file, f["message"].as_str().unwrap_or("")))
             .map(|f| format!("{}:{}: {}", f["file"], f["line"], f["message"]))
             .collect();
         assert!(errors.is_empty(), "{file}:\n{}", errors.join("\n"));

@@ -4,3 +4,8 @@
 mod agrees_with_convert;
 mod checker_suite;
 mod findings;
+mod lenient_fallbacks;
+mod mutations;
+mod reference_positions;
+mod second_checker_rules;
+mod valid_inputs;

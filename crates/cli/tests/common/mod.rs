@@ -2,6 +2,7 @@
 //! shipped example (tests only).
 #![allow(dead_code)]
 
+pub(crate) mod checker_suite_valid;
 pub(crate) mod png;
 
 use std::path::{Path, PathBuf};

@@ -40,20 +40,23 @@ fn library(name: &str) -> PathBuf {
     lib
 }
 
+/// Converts `lib` into `out` with `options` and, if given, `--shard K/N`; the files written.
+fn convert_shard(lib: &Path, options: &[&str], out: &Path, shard: Option<&str>) -> BTreeMap<PathBuf, Vec<u8>> {
+    let mut args = vec!["convert", s(lib), "-o", s(out)];
+    args.extend(options);
+    if let Some(k) = shard {
+        args.extend(["--shard", k]);
+    }
+    let r = osc2cr(&args);
+    assert!(r.status.success(), "{:?}: {}", shard, String::from_utf8_lossy(&r.stderr));
+    contents(out)
+}
+
 #[test]
 fn three_shards_write_exactly_the_unsharded_files() {
     let lib = library("lib");
     let common = ["--max-variations", "7", "-j", "2"];
-    let run = |out: &Path, shard: Option<&str>| {
-        let mut args = vec!["convert", s(&lib), "-o", s(out)];
-        args.extend(common);
-        if let Some(k) = shard {
-            args.extend(["--shard", k]);
-        }
-        let r = osc2cr(&args);
-        assert!(r.status.success(), "{:?}: {}", shard, String::from_utf8_lossy(&r.stderr));
-        contents(out)
-    };
+    let run = |out: &Path, shard: Option<&str>| convert_shard(&lib, &common, out, shard);
     let whole = run(&tmp("convert_shard", "whole"), None);
 
     // names by the CLI's rule: files in sorted order (cut_in, speeds, speeds_1, sub/cut_in),
@@ -86,16 +89,7 @@ fn three_shards_write_exactly_the_unsharded_files() {
 fn three_shards_write_exactly_the_unsharded_files_in_the_2024_format() {
     let lib = library("lib-2024");
     let common = ["--max-variations", "7", "-j", "2", "--format", "2024"];
-    let run = |out: &Path, shard: Option<&str>| {
-        let mut args = vec!["convert", s(&lib), "-o", s(out)];
-        args.extend(common);
-        if let Some(k) = shard {
-            args.extend(["--shard", k]);
-        }
-        let r = osc2cr(&args);
-        assert!(r.status.success(), "{:?}: {}", shard, String::from_utf8_lossy(&r.stderr));
-        contents(out)
-    };
+    let run = |out: &Path, shard: Option<&str>| convert_shard(&lib, &common, out, shard);
     let whole = run(&tmp("convert_shard", "whole-2024"), None);
     // the same names as in 2020a, as a scenario and a dynamic file each, and one map for the
     // one lanelet network of the library (shared by all ten)

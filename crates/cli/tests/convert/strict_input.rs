@@ -1,9 +1,8 @@
 //! Strict by default: a file that refers to what does not exist, or a distribution that cannot
 //! be sampled, stops with an error naming file:line:col — exit 2, no output file — and
 //! `--lenient` converts it anyway with the problem as a warning. Each case is the shipped
-//! example with one reference broken (lines of examples/cut_in.xosc, counted in the file). A
-//! problem is placed at the element that holds the broken name: the action (its
-//! `<PrivateAction>`) or the `<Condition>`.
+//! example with one reference broken (lines and columns of examples/cut_in.xosc, counted in the
+//! file). A problem is placed at the value of the attribute that holds the broken name.
 
 use crate::common::*;
 
@@ -53,13 +52,13 @@ fn rejected_then_lenient(name: &str, from: &str, to: &str, at: &str, what: &str)
 
 #[test]
 fn an_init_action_on_an_undeclared_entity() {
-    // line 70: <Private entityRef="Walker"> — renamed to an entity nobody declared; its first
-    // PrivateAction is at line 71, column 11
+    // line 70: <Private entityRef="Walker"> — renamed to an entity nobody declared; the value
+    // starts at column 29
     rejected_then_lenient(
         "init_entity",
         r#"<Private entityRef="Walker">"#,
         r#"<Private entityRef="Walkr">"#,
-        "init_entity.xosc:71:11",
+        "init_entity.xosc:70:29",
         "`Walkr` is not an entity",
     );
 }
@@ -67,37 +66,37 @@ fn an_init_action_on_an_undeclared_entity() {
 #[test]
 fn an_action_relative_to_an_undeclared_entity() {
     // line 138: the DistanceCondition's position is relative to an entity that does not exist;
-    // its Condition element is at line 134, column 17
+    // its entityRef's value is at column 68
     rejected_then_lenient(
         "condition_entity",
         r#"<RelativeObjectPosition entityRef="Ego" dx="0" dy="0"/>"#,
         r#"<RelativeObjectPosition entityRef="Eg0" dx="0" dy="0"/>"#,
-        "condition_entity.xosc:134:17",
+        "condition_entity.xosc:138:68",
         "`Eg0` is not an entity",
     );
 }
 
 #[test]
 fn a_position_on_a_road_the_map_does_not_have() {
-    // line 61: the Overtaker starts on road 7 (two_lane_curve.xodr has only road 1); its Init
-    // PrivateAction is at line 60, column 11
+    // line 61: the Overtaker starts on road 7 (two_lane_curve.xodr has only road 1); the roadId's
+    // value is at column 61
     rejected_then_lenient(
         "missing_road",
         r#"<LanePosition roadId="1" laneId="-1" s="5" offset="0"/>"#,
         r#"<LanePosition roadId="7" laneId="-1" s="5" offset="0"/>"#,
-        "missing_road.xosc:60:11",
+        "missing_road.xosc:61:61",
         "road `7` is not in the road network",
     );
 }
 
 #[test]
 fn a_position_in_a_lane_the_road_does_not_have() {
-    // line 72: the Walker's lane -2 becomes -5 (the road has lanes 1, -1, -2); PrivateAction at 71:11
+    // line 72: the Walker's lane -2 becomes -5 (the road has lanes 1, -1, -2); laneId's value at 72:72
     rejected_then_lenient(
         "missing_lane",
         r#"<LanePosition roadId="1" laneId="-2" s="200" offset="0"/>"#,
         r#"<LanePosition roadId="1" laneId="-5" s="200" offset="0"/>"#,
-        "missing_lane.xosc:71:11",
+        "missing_lane.xosc:72:72",
         "has no lane -5",
     );
 }

@@ -9,14 +9,15 @@
 //! missing ones with 0, and the 2024 reader stops filling at the first missing one); trajectory
 //! states have exactly the 2020a file's fields.
 
-use super::error::{finite, fits_u32, WriteError};
+use super::error::{finite, fits_u32};
 use super::messages::{commonroad_common as pb, commonroad_dynamic as dynamic};
 use super::values::{enum_value, exact, shape, state, time_exact, StateFields};
 use crate::obstacle::{DynamicObstacle, State, StaticObstacle};
 use crate::scenario::Scenario;
 use crate::traffic::TrafficLight;
+use crate::Error;
 
-pub(super) fn dynamic_message(scenario: &Scenario, meta: pb::ScenarioMetaInformation) -> Result<dynamic::CommonRoadDynamic, WriteError> {
+pub(super) fn dynamic_message(scenario: &Scenario, meta: pb::ScenarioMetaInformation) -> Result<dynamic::CommonRoadDynamic, Error> {
     Ok(dynamic::CommonRoadDynamic {
         dynamic_meta_information: meta,
         environment: dynamic::Environment::default(),
@@ -28,7 +29,7 @@ pub(super) fn dynamic_message(scenario: &Scenario, meta: pb::ScenarioMetaInforma
     })
 }
 
-fn light_cycle(t: &TrafficLight) -> Result<dynamic::TrafficLightCycle, WriteError> {
+fn light_cycle(t: &TrafficLight) -> Result<dynamic::TrafficLightCycle, Error> {
     use pb::traffic_light_state_enum::TrafficLightState;
     let ctx = || format!("trafficLight {} cycle", t.id);
     Ok(dynamic::TrafficLightCycle {
@@ -42,23 +43,23 @@ fn light_cycle(t: &TrafficLight) -> Result<dynamic::TrafficLightCycle, WriteErro
                     color: enum_value("traffic light color", c.color.as_str(), TrafficLightState::from_str_name)?,
                 })
             })
-            .collect::<Result<_, WriteError>>()?,
+            .collect::<Result<_, Error>>()?,
         time_offset: Some(fits_u32(ctx, t.time_offset)?),
         // 2024 keeps "active" on the cycle; the light reads it from there (2020a: default true)
         active: Some(t.active.unwrap_or(true)),
     })
 }
 
-fn obstacle_type(xsd: &str) -> Result<i32, WriteError> {
+fn obstacle_type(xsd: &str) -> Result<i32, Error> {
     enum_value("obstacle type", xsd, dynamic::obstacle_type_enum::ObstacleType::from_str_name)
 }
 
-fn position(x: f64, y: f64, ctx: &dyn Fn() -> String) -> Result<Option<pb::state::Position>, WriteError> {
+fn position(x: f64, y: f64, ctx: &dyn Fn() -> String) -> Result<Option<pb::state::Position>, Error> {
     let p = pb::Point { x: finite(|| format!("{} x", ctx()), x)?, y: finite(|| format!("{} y", ctx()), y)?, z: None };
     Ok(Some(pb::state::Position::Point(p)))
 }
 
-fn static_obstacle(o: &StaticObstacle) -> Result<dynamic::StaticObstacle, WriteError> {
+fn static_obstacle(o: &StaticObstacle) -> Result<dynamic::StaticObstacle, Error> {
     let ctx = || format!("staticObstacle {}", o.id);
     let zero = |what: &'static str| exact(0.0, move || what.to_string());
     let initial = StateFields {
@@ -81,7 +82,7 @@ fn static_obstacle(o: &StaticObstacle) -> Result<dynamic::StaticObstacle, WriteE
 }
 
 /// A trajectory state: the fields the 2020a file has for it.
-fn trajectory_state(s: &State, ctx: &dyn Fn() -> String) -> Result<pb::State, WriteError> {
+fn trajectory_state(s: &State, ctx: &dyn Fn() -> String) -> Result<pb::State, Error> {
     let at = || format!("{} time step {}", ctx(), s.time_step);
     Ok(state(StateFields {
         position: position(s.x, s.y, &at)?,
@@ -94,7 +95,7 @@ fn trajectory_state(s: &State, ctx: &dyn Fn() -> String) -> Result<pb::State, Wr
     }))
 }
 
-fn dynamic_obstacle(o: &DynamicObstacle) -> Result<dynamic::DynamicObstacle, WriteError> {
+fn dynamic_obstacle(o: &DynamicObstacle) -> Result<dynamic::DynamicObstacle, Error> {
     let ctx = || format!("dynamicObstacle {}", o.id);
     let mut initial = trajectory_state(&o.initial_state, &ctx)?;
     // an initial state has all of InitialState's fields (2020a readers: slip angle 0)

@@ -11,20 +11,21 @@
 use prost::Message;
 use sha2::{Digest, Sha256};
 
-use super::error::{finite, fits_i32, fits_u32, WriteError};
+use super::error::{finite, fits_i32, fits_u32};
 use super::messages::{commonroad_common as pb, commonroad_map as map};
 use super::meta::file_information;
 use super::signs::{element, sign_country};
 use super::values::{absolute_shape, enum_value, point};
 use super::FIRST_MAP_PART_ID;
 use crate::geometry::Point;
-use crate::header::Location;
+use crate::header::GeoLocation;
 use crate::ids::LaneletId;
 use crate::intersection::Intersection;
 use crate::lanelet::{DrivingDir, Lanelet, LineMarking};
 use crate::obstacle::EnvironmentObstacle;
 use crate::scenario::{LaneletNetwork, Scenario};
 use crate::traffic::{TrafficLight, TrafficSign};
+use crate::Error;
 
 /// The map's file information: it belongs to no scenario in particular (many share it), so it
 /// names the tool and no date (commonroad-io reads a missing date as 2022-01-01).
@@ -53,7 +54,7 @@ impl MapFile {
 }
 
 /// The map of `scenario`: its country, location, lanelet network and environment obstacles.
-pub fn encode_map(scenario: &Scenario) -> Result<MapFile, WriteError> {
+pub fn encode_map(scenario: &Scenario) -> Result<MapFile, Error> {
     let country = sign_country(scenario.header.benchmark_id.parts().country);
     let mut warnings = Vec::new();
     let message = map_message(country, scenario, &mut warnings)?;
@@ -82,7 +83,7 @@ struct PartIds {
 }
 
 impl PartIds {
-    fn take(&mut self, what: &str) -> Result<u64, WriteError> {
+    fn take(&mut self, what: &str) -> Result<u64, Error> {
         let id = self.next;
         // bound ids are int32 in the messages
         fits_i32(|| format!("{what} id"), id)?;
@@ -91,7 +92,7 @@ impl PartIds {
     }
 }
 
-fn map_message(country: &str, scenario: &Scenario, warnings: &mut Vec<String>) -> Result<map::CommonRoadMap, WriteError> {
+fn map_message(country: &str, scenario: &Scenario, warnings: &mut Vec<String>) -> Result<map::CommonRoadMap, Error> {
     let net = &scenario.network;
     check_ids_below_parts(net, &scenario.environment_obstacles)?;
     let mut parts = PartIds { next: FIRST_MAP_PART_ID };
@@ -157,11 +158,11 @@ fn map_message(country: &str, scenario: &Scenario, warnings: &mut Vec<String>) -
 }
 
 /// Every id of the map below the range of its parts' ids.
-fn check_ids_below_parts(net: &LaneletNetwork, environment: &[EnvironmentObstacle]) -> Result<(), WriteError> {
+fn check_ids_below_parts(net: &LaneletNetwork, environment: &[EnvironmentObstacle]) -> Result<(), Error> {
     let env_max = environment.iter().map(|o| o.id.get()).max().unwrap_or(0);
     let max = net.max_id().max(env_max);
     if max >= FIRST_MAP_PART_ID {
-        return Err(WriteError::IdInMapPartRange { context: "the lanelet network".into(), id: max });
+        return Err(Error::IdInMapPartRange { context: "the lanelet network".into(), id: max, first: FIRST_MAP_PART_ID });
     }
     Ok(())
 }
@@ -170,14 +171,14 @@ fn last(points: &[Point]) -> Point {
     points.last().copied().unwrap_or(Point::new(0.0, 0.0))
 }
 
-fn line_marking(m: Option<LineMarking>) -> Result<i32, WriteError> {
+fn line_marking(m: Option<LineMarking>) -> Result<i32, Error> {
     // no marking in the model is "unknown" (what the 2020a readers make of a missing one);
     // the 2024 field must be set, its default would read as "dashed"
     let xsd = m.map_or("unknown", LineMarking::as_str);
     enum_value("line marking", xsd, map::line_marking_enum::LineMarking::from_str_name)
 }
 
-fn bound(id: u64, points: &[Point], marking: Option<LineMarking>, ctx: &dyn Fn() -> String) -> Result<map::Bound, WriteError> {
+fn bound(id: u64, points: &[Point], marking: Option<LineMarking>, ctx: &dyn Fn() -> String) -> Result<map::Bound, Error> {
     Ok(map::Bound {
         boundary_id: fits_i32(ctx, id)?,
         points: points.iter().map(|p| point(p, ctx)).collect::<Result<_, _>>()?,
@@ -185,11 +186,11 @@ fn bound(id: u64, points: &[Point], marking: Option<LineMarking>, ctx: &dyn Fn()
     })
 }
 
-fn ids(v: &[LaneletId], ctx: &dyn Fn() -> String) -> Result<Vec<u32>, WriteError> {
+fn ids(v: &[LaneletId], ctx: &dyn Fn() -> String) -> Result<Vec<u32>, Error> {
     v.iter().map(|r| fits_u32(ctx, r.get())).collect()
 }
 
-fn lanelet(l: &Lanelet, left: u64, right: u64) -> Result<map::Lanelet, WriteError> {
+fn lanelet(l: &Lanelet, left: u64, right: u64) -> Result<map::Lanelet, Error> {
     let ctx = || format!("lanelet {}", l.id);
     let opposite = |d: DrivingDir| d == DrivingDir::Opposite;
     Ok(map::Lanelet {
@@ -264,7 +265,7 @@ fn placed(what: &str, given: Option<Point>, net: &LaneletNetwork, refers: impl F
     }
 }
 
-fn traffic_sign(s: &TrafficSign, country: &str, net: &LaneletNetwork, warnings: &mut Vec<String>) -> Result<map::TrafficSign, WriteError> {
+fn traffic_sign(s: &TrafficSign, country: &str, net: &LaneletNetwork, warnings: &mut Vec<String>) -> Result<map::TrafficSign, Error> {
     let ctx = || format!("trafficSign {}", s.id);
     let position = placed(&ctx(), s.position, net, |l| l.traffic_sign_refs.contains(&s.id), warnings);
     Ok(map::TrafficSign {
@@ -275,7 +276,7 @@ fn traffic_sign(s: &TrafficSign, country: &str, net: &LaneletNetwork, warnings: 
     })
 }
 
-fn traffic_light(t: &TrafficLight, net: &LaneletNetwork, warnings: &mut Vec<String>) -> Result<map::TrafficLight, WriteError> {
+fn traffic_light(t: &TrafficLight, net: &LaneletNetwork, warnings: &mut Vec<String>) -> Result<map::TrafficLight, Error> {
     use pb::traffic_light_state_enum::TrafficLightState;
     let ctx = || format!("trafficLight {}", t.id);
     let position = placed(&ctx(), t.position, net, |l| l.traffic_light_refs.contains(&t.id), warnings);
@@ -292,7 +293,7 @@ fn traffic_light(t: &TrafficLight, net: &LaneletNetwork, warnings: &mut Vec<Stri
     })
 }
 
-fn intersection(i: &Intersection, parts: &mut PartIds, warnings: &mut Vec<String>) -> Result<map::Intersection, WriteError> {
+fn intersection(i: &Intersection, parts: &mut PartIds, warnings: &mut Vec<String>) -> Result<map::Intersection, Error> {
     let ctx = || format!("intersection {}", i.id);
     let left_of: Vec<String> = i.incomings.iter().filter_map(|inc| inc.is_left_of.map(|l| format!("{} isLeftOf {l}", inc.id))).collect();
     if !left_of.is_empty() {
@@ -316,7 +317,7 @@ fn intersection(i: &Intersection, parts: &mut PartIds, warnings: &mut Vec<String
                 outgoing_left: ids(&inc.successors_left, &ctx)?,
             })
         })
-        .collect::<Result<Vec<_>, WriteError>>()?;
+        .collect::<Result<Vec<_>, Error>>()?;
     let crossings = i
         .crossings
         .iter()
@@ -328,11 +329,11 @@ fn intersection(i: &Intersection, parts: &mut PartIds, warnings: &mut Vec<String
                 outgoing_group_id: None,
             })
         })
-        .collect::<Result<Vec<_>, WriteError>>()?;
+        .collect::<Result<Vec<_>, Error>>()?;
     Ok(map::Intersection { intersection_id: fits_u32(ctx, i.id.get())?, incomings, outgoings: Vec::new(), crossings })
 }
 
-fn environment_obstacle(o: &EnvironmentObstacle) -> Result<map::EnvironmentObstacle, WriteError> {
+fn environment_obstacle(o: &EnvironmentObstacle) -> Result<map::EnvironmentObstacle, Error> {
     let ctx = || format!("environmentObstacle {}", o.id);
     Ok(map::EnvironmentObstacle {
         environment_obstacle_id: fits_u32(ctx, o.id.get())?,
@@ -345,8 +346,8 @@ fn environment_obstacle(o: &EnvironmentObstacle) -> Result<map::EnvironmentObsta
     })
 }
 
-fn location(l: &Location) -> Result<map::Location, WriteError> {
-    let geo_name_id = i32::try_from(l.geo_name_id).map_err(|_| WriteError::OutOfRange {
+fn location(l: &GeoLocation) -> Result<map::Location, Error> {
+    let geo_name_id = i32::try_from(l.geo_name_id).map_err(|_| Error::OutOfRange {
         context: "location geoNameId".into(),
         value: l.geo_name_id.unsigned_abs(),
         max: i32::MAX as u64,

@@ -1,9 +1,10 @@
 //! Meta information: the benchmark id as a `ScenarioID`, the file information, the time step —
 //! written alike into the scenario and the dynamic file, as commonroad-io's writer does.
 
-use super::error::{finite, WriteError};
+use super::error::finite;
 use super::messages::commonroad_common as pb;
 use crate::header::{Date, Header};
+use crate::Error;
 
 /// commonroad-io 2026.1 accepts only its XML versions as `scenario_version` (it asserts
 /// `scenario_version in {"2018b", "2020a"}` when it builds the id), and writes "2020a".
@@ -33,7 +34,7 @@ pub(super) fn file_information(date: Option<&Date>, author: &str, affiliation: &
 /// The header's benchmark id, date, author, affiliation, source and time step. Warnings for
 /// what the `ScenarioID` message cannot hold (it has one prediction id and needs a
 /// configuration id).
-pub(super) fn scenario_meta(header: &Header, warnings: &mut Vec<String>) -> Result<pb::ScenarioMetaInformation, WriteError> {
+pub(super) fn scenario_meta(header: &Header, warnings: &mut Vec<String>) -> Result<pb::ScenarioMetaInformation, Error> {
     let id = &header.benchmark_id;
     let parts = id.parts();
     let configuration_id = parts.configuration_id.unwrap_or_else(|| {

@@ -41,11 +41,11 @@ mod values;
 
 use prost::Message;
 
-pub use error::WriteError;
 pub use map::{encode_map, MapFile};
 
 use crate::planning::PlanningProblemSet;
 use crate::scenario::Scenario;
+use crate::Error;
 
 /// The first id of a map's own parts (bounds, stop lines, crossings; see `map.rs`). The
 /// scenario's ids must lie below it: the readers register all of them in one id space.
@@ -73,7 +73,7 @@ pub struct Files2024 {
 }
 
 /// The three files of `scenario`; at least one planning problem is needed.
-pub fn write(scenario: &Scenario, problems: &PlanningProblemSet) -> Result<Files2024, WriteError> {
+pub fn write(scenario: &Scenario, problems: &PlanningProblemSet) -> Result<Files2024, Error> {
     let map = encode_map(scenario)?;
     let files = encode_scenario(scenario, problems, &map.id)?;
     let mut warnings = map.warnings.clone();
@@ -83,10 +83,10 @@ pub fn write(scenario: &Scenario, problems: &PlanningProblemSet) -> Result<Files
 
 /// The scenario and dynamic files of `scenario`, referring to the map `map_id` (the
 /// [`MapFile::id`] of [`encode_map`] for the same scenario).
-pub fn encode_scenario(scenario: &Scenario, problems: &PlanningProblemSet, map_id: &str) -> Result<ScenarioFiles, WriteError> {
+pub fn encode_scenario(scenario: &Scenario, problems: &PlanningProblemSet, map_id: &str) -> Result<ScenarioFiles, Error> {
     let highest = scenario.max_id().max(problems.max_id());
     if highest >= FIRST_MAP_PART_ID {
-        return Err(WriteError::IdInMapPartRange { context: "the scenario".into(), id: highest });
+        return Err(Error::IdInMapPartRange { context: "the scenario".into(), id: highest, first: FIRST_MAP_PART_ID });
     }
     let mut warnings = Vec::new();
     let meta = meta::scenario_meta(&scenario.header, &mut warnings)?;

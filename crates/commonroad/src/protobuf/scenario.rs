@@ -3,7 +3,7 @@
 //! dynamic file (`dynamic_id`, the benchmark id, as commonroad-io's writer sets it). In 2024 the
 //! scenario tags travel with each planning problem.
 
-use super::error::{fits_u32, WriteError};
+use super::error::fits_u32;
 use super::messages::{commonroad_common as pb, commonroad_scenario as sc};
 use super::values::{
     enum_value, exact, interval, occupancy_of, placed_circle, placed_rectangle, point, polygon_occupancy, state, time_exact, time_interval, StateFields,
@@ -11,15 +11,16 @@ use super::values::{
 use crate::geometry::Point;
 use crate::planning::{GoalPosition, GoalState, PlanningProblem, PlanningProblemSet};
 use crate::scenario::{LaneletNetwork, Scenario};
+use crate::Error;
 
 pub(super) fn scenario_message(
     scenario: &Scenario,
     problems: &PlanningProblemSet,
     meta: pb::ScenarioMetaInformation,
     map_id: &str,
-) -> Result<sc::CommonRoadScenario, WriteError> {
+) -> Result<sc::CommonRoadScenario, Error> {
     if problems.problems.is_empty() {
-        return Err(WriteError::NoPlanningProblem);
+        return Err(Error::NoPlanningProblem { hint: "" });
     }
     let tags = sc::ScenarioTags {
         tags: scenario.tags.iter().map(|t| enum_value("scenario tag", t.as_str(), sc::tag_enum::Tag::from_str_name)).collect::<Result<_, _>>()?,
@@ -33,7 +34,7 @@ pub(super) fn scenario_message(
     })
 }
 
-fn planning_problem(p: &PlanningProblem, net: &LaneletNetwork, tags: &sc::ScenarioTags) -> Result<sc::PlanningProblem, WriteError> {
+fn planning_problem(p: &PlanningProblem, net: &LaneletNetwork, tags: &sc::ScenarioTags) -> Result<sc::PlanningProblem, Error> {
     let ctx = || format!("planningProblem {}", p.id);
     let s = &p.initial_state;
     let field = |what: &'static str, v: f64| exact(v, move || format!("planningProblem {} initial {what}", p.id));
@@ -57,15 +58,15 @@ fn planning_problem(p: &PlanningProblem, net: &LaneletNetwork, tags: &sc::Scenar
 }
 
 /// A lanelet's outline as the readers make it: the right bound, then the left bound backwards.
-fn lanelet_outline(net: &LaneletNetwork, id: u64, ctx: &dyn Fn() -> String) -> Result<pb::Occupancy, WriteError> {
+fn lanelet_outline(net: &LaneletNetwork, id: u64, ctx: &dyn Fn() -> String) -> Result<pb::Occupancy, Error> {
     let Some(l) = net.lanelets.iter().find(|l| l.id.get() == id) else {
-        return Err(WriteError::UnknownLanelet { context: ctx(), id });
+        return Err(Error::UnknownLanelet { context: ctx(), id });
     };
     let points = l.bounds.right().iter().chain(l.bounds.left().iter().rev()).map(|q| point(q, ctx)).collect::<Result<_, _>>()?;
     Ok(polygon_occupancy(points))
 }
 
-fn goal_state(g: &GoalState, net: &LaneletNetwork, ctx: &dyn Fn() -> String) -> Result<sc::GoalState, WriteError> {
+fn goal_state(g: &GoalState, net: &LaneletNetwork, ctx: &dyn Fn() -> String) -> Result<sc::GoalState, Error> {
     let mut goal_lanelets = Vec::new();
     let position = match &g.position {
         None => None,
@@ -76,7 +77,7 @@ fn goal_state(g: &GoalState, net: &LaneletNetwork, ctx: &dyn Fn() -> String) -> 
                 GoalPosition::Polygons(ps) => ps
                     .iter()
                     .map(|p| Ok(polygon_occupancy(p.points().iter().map(|q| point(q, ctx)).collect::<Result<_, _>>()?)))
-                    .collect::<Result<Vec<_>, WriteError>>()?,
+                    .collect::<Result<Vec<_>, Error>>()?,
                 GoalPosition::Lanelets(ls) => {
                     goal_lanelets = ls.iter().map(|l| fits_u32(ctx, l.get())).collect::<Result<_, _>>()?;
                     // the readers make a group of the lanelets' outlines, even of one lanelet

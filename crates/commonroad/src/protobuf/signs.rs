@@ -4,10 +4,10 @@
 //! table up by the map's country and fails for others), so a map of another country is written
 //! as `ZAM`, whose table the 2020a readers use for such countries too.
 
-use super::error::WriteError;
 use super::messages::commonroad_common as pb;
 use super::sign_names::SIGN_NAMES;
 use crate::traffic::TrafficSignElement;
+use crate::Error;
 
 /// The country whose sign table a map of `country` uses: itself if commonroad-io has a table
 /// for it, else `ZAM`.
@@ -33,7 +33,7 @@ pub(super) fn element(
     country: &str,
     context: &dyn Fn() -> String,
     warnings: &mut Vec<String>,
-) -> Result<pb::TrafficSignElement, WriteError> {
+) -> Result<pb::TrafficSignElement, Error> {
     use pb::traffic_sign_id_enum::TrafficSignId;
     let id = match member_name(country, &el.sign_id) {
         Some(name) => match TrafficSignId::from_str_name(name) {

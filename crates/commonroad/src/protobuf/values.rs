@@ -2,12 +2,13 @@
 //! obstacle shapes (in the obstacle's frame), occupancies (placed in the world), states, and the
 //! enumerations (the model's XSD spellings become the messages' UPPER_SNAKE names).
 
-use super::error::{finite, WriteError};
+use super::error::finite;
 use super::messages::commonroad_common as pb;
 use crate::geometry::{AbsoluteShape, PlacedCircle, PlacedRectangle, Point, Polygon, Shape};
 use crate::planning::{Interval, TimeInterval};
+use crate::Error;
 
-pub(super) fn point(p: &Point, context: &dyn Fn() -> String) -> Result<pb::Point, WriteError> {
+pub(super) fn point(p: &Point, context: &dyn Fn() -> String) -> Result<pb::Point, Error> {
     Ok(pb::Point {
         x: finite(|| format!("{} x", context()), p.x)?,
         y: finite(|| format!("{} y", context()), p.y)?,
@@ -15,7 +16,7 @@ pub(super) fn point(p: &Point, context: &dyn Fn() -> String) -> Result<pb::Point
     })
 }
 
-pub(super) fn exact(v: f64, context: impl FnOnce() -> String) -> Result<pb::FloatExactOrInterval, WriteError> {
+pub(super) fn exact(v: f64, context: impl FnOnce() -> String) -> Result<pb::FloatExactOrInterval, Error> {
     use pb::float_exact_or_interval::ExactOrInterval;
     Ok(pb::FloatExactOrInterval { exact_or_interval: Some(ExactOrInterval::Exact(finite(context, v)?)) })
 }
@@ -26,27 +27,27 @@ pub(super) fn interval(i: &Interval) -> pb::FloatExactOrInterval {
     pb::FloatExactOrInterval { exact_or_interval: Some(ExactOrInterval::Interval(pb::FloatInterval { start: i.start(), end: i.end() })) }
 }
 
-fn time_step(t: u64, context: impl FnOnce() -> String) -> Result<i32, WriteError> {
+fn time_step(t: u64, context: impl FnOnce() -> String) -> Result<i32, Error> {
     super::error::fits_i32(context, t)
 }
 
-pub(super) fn time_exact(t: u64, context: impl FnOnce() -> String) -> Result<pb::IntegerExactOrInterval, WriteError> {
+pub(super) fn time_exact(t: u64, context: impl FnOnce() -> String) -> Result<pb::IntegerExactOrInterval, Error> {
     use pb::integer_exact_or_interval::ExactOrInterval;
     Ok(pb::IntegerExactOrInterval { exact_or_interval: Some(ExactOrInterval::Exact(time_step(t, context)?)) })
 }
 
-pub(super) fn time_interval(i: &TimeInterval, context: &dyn Fn() -> String) -> Result<pb::IntegerExactOrInterval, WriteError> {
+pub(super) fn time_interval(i: &TimeInterval, context: &dyn Fn() -> String) -> Result<pb::IntegerExactOrInterval, Error> {
     use pb::integer_exact_or_interval::ExactOrInterval;
     let interval = pb::IntegerInterval { start: time_step(i.start(), context)?, end: time_step(i.end(), context)? };
     Ok(pb::IntegerExactOrInterval { exact_or_interval: Some(ExactOrInterval::Interval(interval)) })
 }
 
-fn polygon_points(p: &Polygon, context: &dyn Fn() -> String) -> Result<Vec<pb::Point>, WriteError> {
+fn polygon_points(p: &Polygon, context: &dyn Fn() -> String) -> Result<Vec<pb::Point>, Error> {
     p.points().iter().map(|pt| point(pt, context)).collect()
 }
 
 /// An obstacle's shape, in its own frame (no centre, no orientation: the state places it).
-pub(super) fn shape(s: &Shape, context: &dyn Fn() -> String) -> Result<pb::Shape, WriteError> {
+pub(super) fn shape(s: &Shape, context: &dyn Fn() -> String) -> Result<pb::Shape, Error> {
     use pb::shape::Shape as Kind;
     let kind = match s {
         Shape::Rectangle(r) => Kind::Rectangle(pb::Rect { length: r.length(), width: r.width() }),
@@ -56,7 +57,7 @@ pub(super) fn shape(s: &Shape, context: &dyn Fn() -> String) -> Result<pb::Shape
     Ok(pb::Shape { shape: Some(kind) })
 }
 
-pub(super) fn placed_rectangle(r: &PlacedRectangle, context: &dyn Fn() -> String) -> Result<pb::Occupancy, WriteError> {
+pub(super) fn placed_rectangle(r: &PlacedRectangle, context: &dyn Fn() -> String) -> Result<pb::Occupancy, Error> {
     let rect = pb::RectOccupancy {
         length: r.rectangle.length(),
         width: r.rectangle.width(),
@@ -66,7 +67,7 @@ pub(super) fn placed_rectangle(r: &PlacedRectangle, context: &dyn Fn() -> String
     Ok(pb::Occupancy { shape: Some(pb::occupancy::Shape::Rectangle(rect)) })
 }
 
-pub(super) fn placed_circle(c: &PlacedCircle, context: &dyn Fn() -> String) -> Result<pb::Occupancy, WriteError> {
+pub(super) fn placed_circle(c: &PlacedCircle, context: &dyn Fn() -> String) -> Result<pb::Occupancy, Error> {
     let circle = pb::CircleOccupancy { radius: c.circle.radius(), center: Some(point(&c.center, context)?) };
     Ok(pb::Occupancy { shape: Some(pb::occupancy::Shape::Circle(circle)) })
 }
@@ -75,7 +76,7 @@ pub(super) fn polygon_occupancy(points: Vec<pb::Point>) -> pb::Occupancy {
     pb::Occupancy { shape: Some(pb::occupancy::Shape::Polygon(pb::PolygonOccupancy { vertices: points })) }
 }
 
-pub(super) fn absolute_shape(s: &AbsoluteShape, context: &dyn Fn() -> String) -> Result<pb::Occupancy, WriteError> {
+pub(super) fn absolute_shape(s: &AbsoluteShape, context: &dyn Fn() -> String) -> Result<pb::Occupancy, Error> {
     match s {
         AbsoluteShape::Rectangle(r) => placed_rectangle(r, context),
         AbsoluteShape::Circle(c) => placed_circle(c, context),
@@ -132,9 +133,9 @@ pub(super) fn upper_snake(xsd: &str) -> String {
 }
 
 /// The enumeration value named like the XSD spelling `xsd` (`from_str_name` of a generated enum).
-pub(super) fn enum_value<E: Into<i32>>(what: &'static str, xsd: &str, from_str_name: fn(&str) -> Option<E>) -> Result<i32, WriteError> {
+pub(super) fn enum_value<E: Into<i32>>(what: &'static str, xsd: &str, from_str_name: fn(&str) -> Option<E>) -> Result<i32, Error> {
     let name = upper_snake(xsd);
-    from_str_name(&name).map(Into::into).ok_or(WriteError::NoEnumValue { what, name })
+    from_str_name(&name).map(Into::into).ok_or(Error::NoEnumValue { what, name })
 }
 
 #[cfg(test)]

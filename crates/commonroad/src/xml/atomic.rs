@@ -18,20 +18,21 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
 
-use super::error::WriteError;
+use crate::Error;
 
 /// Distinguishes temporary files of parallel writers within one process.
 static COUNTER: AtomicU64 = AtomicU64::new(0);
 
 /// Writes `bytes` to `path` atomically (temp file in the same directory + rename).
-pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
+pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), Error> {
     let io_err = |p: &Path| {
         let p = p.to_path_buf();
-        move |source| WriteError::Io { path: p, source }
+        move |source| Error::WriteFile { path: p, source: std::sync::Arc::new(source) }
     };
-    let file_name = path
-        .file_name()
-        .ok_or_else(|| WriteError::Io { path: path.to_path_buf(), source: std::io::Error::new(std::io::ErrorKind::InvalidInput, "the path names no file") })?;
+    let file_name = path.file_name().ok_or_else(|| Error::WriteFile {
+        path: path.to_path_buf(),
+        source: std::sync::Arc::new(std::io::Error::new(std::io::ErrorKind::InvalidInput, "the path names no file")),
+    })?;
     let dir = match path.parent() {
         Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
         _ => PathBuf::from("."),

@@ -7,9 +7,9 @@
 //! the writing time. Error contexts are built only when an error happens. If writing fails
 //! the buffer is dropped, so a half-written line never escapes.
 
-use super::error::WriteError;
 use super::escape::escape_into;
-use super::number::{is_written_positive, push_decimal};
+use super::number::{is_written_positive, push_decimal, DECIMALS};
+use crate::Error;
 use std::fmt::Display;
 use std::fmt::Write;
 
@@ -71,39 +71,39 @@ impl Emitter {
     }
 
     /// A decimal; `name` (built only on error) says what it was, e.g. "point/x".
-    pub(crate) fn push_decimal(&mut self, v: f64, name: impl FnOnce() -> String) -> Result<(), WriteError> {
+    pub(crate) fn push_decimal(&mut self, v: f64, name: impl FnOnce() -> String) -> Result<(), Error> {
         if push_decimal(&mut self.out, v) {
             Ok(())
         } else {
-            Err(WriteError::NonFinite { context: self.where_(&name()), value: v })
+            Err(Error::WriteNonFinite { context: self.where_(&name()), value: v })
         }
     }
 
     /// A decimal as a `String` (for attribute values).
-    pub(crate) fn decimal(&self, name: &str, v: f64) -> Result<String, WriteError> {
+    pub(crate) fn decimal(&self, name: &str, v: f64) -> Result<String, Error> {
         let mut s = String::new();
         if push_decimal(&mut s, v) {
             Ok(s)
         } else {
-            Err(WriteError::NonFinite { context: self.where_(name), value: v })
+            Err(Error::WriteNonFinite { context: self.where_(name), value: v })
         }
     }
 
     /// A `positiveDecimal`: must still be > 0 after rounding.
-    pub(crate) fn push_positive(&mut self, v: f64, name: &str) -> Result<(), WriteError> {
+    pub(crate) fn push_positive(&mut self, v: f64, name: &str) -> Result<(), Error> {
         if v.is_finite() && !is_written_positive(v) {
-            return Err(WriteError::NotPositive { context: self.where_(name), value: v });
+            return Err(Error::WriteNotPositive { context: self.where_(name), value: v, decimals: DECIMALS });
         }
         self.push_decimal(v, || name.to_string())
     }
 
     /// Escaped text; `name` (built only on error) says where it goes.
-    pub(crate) fn push_escaped(&mut self, s: &str, name: impl FnOnce() -> String) -> Result<(), WriteError> {
-        escape_into(&mut self.out, s).map_err(|ch| WriteError::InvalidChar { context: self.where_(&name()), ch })
+    pub(crate) fn push_escaped(&mut self, s: &str, name: impl FnOnce() -> String) -> Result<(), Error> {
+        escape_into(&mut self.out, s).map_err(|ch| Error::InvalidChar { context: self.where_(&name()), ch })
     }
 
     /// ` k="v"` for each attribute, values escaped.
-    fn attributes(&mut self, name: &str, attrs: &[(&str, &dyn Display)]) -> Result<(), WriteError> {
+    fn attributes(&mut self, name: &str, attrs: &[(&str, &dyn Display)]) -> Result<(), Error> {
         let mut value = String::new();
         for (k, v) in attrs {
             self.out.push(' ');
@@ -118,7 +118,7 @@ impl Emitter {
     }
 
     /// `<name attrs>` on its own line; nesting deepens.
-    pub(crate) fn open(&mut self, name: &str, attrs: &[(&str, &dyn Display)]) -> Result<(), WriteError> {
+    pub(crate) fn open(&mut self, name: &str, attrs: &[(&str, &dyn Display)]) -> Result<(), Error> {
         self.begin_line();
         self.out.push('<');
         self.out.push_str(name);
@@ -137,7 +137,7 @@ impl Emitter {
     }
 
     /// `<name attrs/>`.
-    pub(crate) fn empty(&mut self, name: &str, attrs: &[(&str, &dyn Display)]) -> Result<(), WriteError> {
+    pub(crate) fn empty(&mut self, name: &str, attrs: &[(&str, &dyn Display)]) -> Result<(), Error> {
         self.begin_line();
         self.out.push('<');
         self.out.push_str(name);
@@ -167,7 +167,7 @@ impl Emitter {
     }
 
     /// `<name>text</name>` with `text` escaped.
-    pub(crate) fn text(&mut self, name: &str, text: &str) -> Result<(), WriteError> {
+    pub(crate) fn text(&mut self, name: &str, text: &str) -> Result<(), Error> {
         self.open_tag(name);
         self.push_escaped(text, || name.to_string())?;
         self.close_tag(name);
@@ -175,7 +175,7 @@ impl Emitter {
     }
 
     /// `<name>decimal</name>`.
-    pub(crate) fn num(&mut self, name: &str, v: f64) -> Result<(), WriteError> {
+    pub(crate) fn num(&mut self, name: &str, v: f64) -> Result<(), Error> {
         self.open_tag(name);
         self.push_decimal(v, || name.to_string())?;
         self.close_tag(name);
@@ -183,7 +183,7 @@ impl Emitter {
     }
 
     /// `<name>positive decimal</name>`.
-    pub(crate) fn positive_num(&mut self, name: &str, v: f64) -> Result<(), WriteError> {
+    pub(crate) fn positive_num(&mut self, name: &str, v: f64) -> Result<(), Error> {
         self.open_tag(name);
         self.push_positive(v, name)?;
         self.close_tag(name);

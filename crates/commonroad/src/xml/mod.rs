@@ -3,15 +3,13 @@
 
 mod atomic;
 mod emitter;
-mod error;
 mod escape;
 mod number;
 mod read;
 mod write;
 
 pub use atomic::{remove_stale_temporaries, write_atomic};
-pub use error::WriteError;
 pub use escape::escape;
 pub use number::{format_decimal, is_written_positive, DECIMALS};
-pub use read::{read_scenario_file, read_scenario_str, ReadError, ReadScenario, ReadWarning, MAX_FILE_BYTES};
+pub use read::{read_scenario_file, read_scenario_str, ReadScenario, MAX_FILE_BYTES};
 pub use write::{write_map, write_scenario};

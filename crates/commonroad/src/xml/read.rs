@@ -5,7 +5,6 @@
 //! Every error and warning names the file, line and column.
 
 mod cursor;
-mod error;
 mod header;
 mod network;
 mod obstacles;
@@ -13,10 +12,11 @@ mod planning;
 
 use std::path::Path;
 
+use diagnostic::Diagnostic;
+
 use crate::planning::PlanningProblemSet;
 use crate::scenario::Scenario;
-
-pub use error::{ReadError, ReadWarning};
+use crate::Error;
 
 /// Largest file the reader loads (a converted scenario is a few MB; this bounds memory).
 pub const MAX_FILE_BYTES: u64 = 512 * 1024 * 1024;
@@ -26,23 +26,23 @@ pub const MAX_FILE_BYTES: u64 = 512 * 1024 * 1024;
 pub struct ReadScenario {
     pub scenario: Scenario,
     pub problems: PlanningProblemSet,
-    pub warnings: Vec<ReadWarning>,
+    pub warnings: Vec<Diagnostic>,
 }
 
 /// Reads a CommonRoad 2020a file. A missing file names the path tried.
-pub fn read_scenario_file(path: &Path) -> Result<ReadScenario, ReadError> {
-    let io = |source| ReadError::Io { path: path.to_path_buf(), source };
+pub fn read_scenario_file(path: &Path) -> Result<ReadScenario, Error> {
+    let io = |source| Error::ReadFile { path: path.to_path_buf(), source: std::sync::Arc::new(source) };
     let len = std::fs::metadata(path).map_err(io)?.len();
     if len > MAX_FILE_BYTES {
-        return Err(ReadError::TooLarge { path: path.to_path_buf(), bytes: len });
+        return Err(Error::TooLarge { path: path.to_path_buf(), bytes: len, max: MAX_FILE_BYTES });
     }
     let text = std::fs::read_to_string(path).map_err(io)?;
     read_scenario_str(&text, path)
 }
 
 /// Reads CommonRoad 2020a XML text; `path` is only used in messages.
-pub fn read_scenario_str(text: &str, path: &Path) -> Result<ReadScenario, ReadError> {
-    let doc = roxmltree::Document::parse(text).map_err(|source| ReadError::Xml { path: path.to_path_buf(), source })?;
+pub fn read_scenario_str(text: &str, path: &Path) -> Result<ReadScenario, Error> {
+    let doc = roxmltree::Document::parse(text).map_err(|source| Error::Xml { path: path.to_path_buf(), source })?;
     let mut cx = cursor::Cursor::new(&doc, path);
     let root = doc.root_element();
     if root.tag_name().name() != "commonRoad" {

@@ -2,7 +2,6 @@
 //! XSD (`xs:sequence` everywhere it matters; `xs:all` state elements in declaration order).
 
 use super::emitter::Emitter;
-use super::error::WriteError;
 use crate::geometry::{AbsoluteShape, PlacedCircle, PlacedRectangle, Point, Polygon, Shape};
 use crate::intersection::Intersection;
 use crate::lanelet::{Adjacent, Lanelet, LineMarking};
@@ -10,22 +9,23 @@ use crate::obstacle::{DynamicObstacle, EnvironmentObstacle, State, StaticObstacl
 use crate::planning::{GoalPosition, GoalState, Interval, PlanningProblem, PlanningProblemSet};
 use crate::scenario::Scenario;
 use crate::traffic::{TrafficLight, TrafficSign};
+use crate::Error;
 
 /// Writes a scenario file: the scenario and at least one planning problem.
-pub fn write_scenario(scenario: &Scenario, problems: &PlanningProblemSet) -> Result<Vec<u8>, WriteError> {
+pub fn write_scenario(scenario: &Scenario, problems: &PlanningProblemSet) -> Result<Vec<u8>, Error> {
     if problems.problems.is_empty() {
-        return Err(WriteError::NoPlanningProblem);
+        return Err(Error::NoPlanningProblem { hint: " (write a map instead)" });
     }
     write(scenario, &problems.problems)
 }
 
 /// Writes a map file (`osc2cr map`): the scenario without planning problems. The 2020a XSD
 /// requires a planning problem, so such a file is checked with `cr_check.py --map-only`.
-pub fn write_map(scenario: &Scenario) -> Result<Vec<u8>, WriteError> {
+pub fn write_map(scenario: &Scenario) -> Result<Vec<u8>, Error> {
     write(scenario, &[])
 }
 
-fn write(scenario: &Scenario, problems: &[PlanningProblem]) -> Result<Vec<u8>, WriteError> {
+fn write(scenario: &Scenario, problems: &[PlanningProblem]) -> Result<Vec<u8>, Error> {
     let mut e = Emitter::with_capacity(estimated_size(scenario, problems));
     let h = &scenario.header;
     let step = e.decimal("timeStepSize", h.time_step_size)?;
@@ -90,7 +90,7 @@ fn estimated_size(scenario: &Scenario, problems: &[PlanningProblem]) -> usize {
     4096 + 64 * points + 450 * states + 400 * (others + scenario.static_obstacles.len() + problems.len())
 }
 
-fn with_context(e: &mut Emitter, label: String, f: impl FnOnce(&mut Emitter) -> Result<(), WriteError>) -> Result<(), WriteError> {
+fn with_context(e: &mut Emitter, label: String, f: impl FnOnce(&mut Emitter) -> Result<(), Error>) -> Result<(), Error> {
     e.push_context(label);
     let r = f(e);
     e.pop_context();
@@ -106,7 +106,7 @@ fn ref_attr(id: &dyn std::fmt::Display) -> [(&'static str, &dyn std::fmt::Displa
 }
 
 /// `<tag><x>…</x><y>…</y>[<z>…</z>]</tag>` (no indentation, no line end).
-fn point_markup(e: &mut Emitter, tag: &str, p: &Point) -> Result<(), WriteError> {
+fn point_markup(e: &mut Emitter, tag: &str, p: &Point) -> Result<(), Error> {
     e.push("<");
     e.push(tag);
     e.push("><x>");
@@ -126,7 +126,7 @@ fn point_markup(e: &mut Emitter, tag: &str, p: &Point) -> Result<(), WriteError>
 }
 
 /// A point element on its own line.
-fn point(e: &mut Emitter, tag: &str, p: &Point) -> Result<(), WriteError> {
+fn point(e: &mut Emitter, tag: &str, p: &Point) -> Result<(), Error> {
     e.begin_line();
     point_markup(e, tag, p)?;
     e.end_line();
@@ -134,7 +134,7 @@ fn point(e: &mut Emitter, tag: &str, p: &Point) -> Result<(), WriteError> {
 }
 
 /// `<position><point>…</point></position>` on one line.
-fn position(e: &mut Emitter, p: &Point) -> Result<(), WriteError> {
+fn position(e: &mut Emitter, p: &Point) -> Result<(), Error> {
     e.begin_line();
     e.push("<position>");
     point_markup(e, "point", p)?;
@@ -143,7 +143,7 @@ fn position(e: &mut Emitter, p: &Point) -> Result<(), WriteError> {
     Ok(())
 }
 
-fn exact(e: &mut Emitter, tag: &str, v: f64) -> Result<(), WriteError> {
+fn exact(e: &mut Emitter, tag: &str, v: f64) -> Result<(), Error> {
     e.begin_line();
     e.push("<");
     e.push(tag);
@@ -168,7 +168,7 @@ fn exact_int(e: &mut Emitter, tag: &str, v: u64) {
     e.end_line();
 }
 
-fn interval(e: &mut Emitter, tag: &str, i: &Interval) -> Result<(), WriteError> {
+fn interval(e: &mut Emitter, tag: &str, i: &Interval) -> Result<(), Error> {
     e.begin_line();
     e.push("<");
     e.push(tag);
@@ -183,7 +183,7 @@ fn interval(e: &mut Emitter, tag: &str, i: &Interval) -> Result<(), WriteError> 
     Ok(())
 }
 
-fn location(e: &mut Emitter, s: &Scenario) -> Result<(), WriteError> {
+fn location(e: &mut Emitter, s: &Scenario) -> Result<(), Error> {
     let l = &s.location;
     e.open("location", &[])?;
     e.int("geoNameId", l.geo_name_id);
@@ -204,7 +204,7 @@ fn location(e: &mut Emitter, s: &Scenario) -> Result<(), WriteError> {
     Ok(())
 }
 
-fn bound(e: &mut Emitter, tag: &str, points: &[Point], marking: Option<LineMarking>) -> Result<(), WriteError> {
+fn bound(e: &mut Emitter, tag: &str, points: &[Point], marking: Option<LineMarking>) -> Result<(), Error> {
     e.open(tag, &[])?;
     for p in points {
         point(e, "point", p)?;
@@ -216,14 +216,14 @@ fn bound(e: &mut Emitter, tag: &str, points: &[Point], marking: Option<LineMarki
     Ok(())
 }
 
-fn adjacent(e: &mut Emitter, tag: &str, a: &Option<Adjacent>) -> Result<(), WriteError> {
+fn adjacent(e: &mut Emitter, tag: &str, a: &Option<Adjacent>) -> Result<(), Error> {
     if let Some(a) = a {
         e.empty(tag, &[("ref", &a.lanelet), ("drivingDir", &a.driving_dir.as_str())])?;
     }
     Ok(())
 }
 
-fn lanelet(e: &mut Emitter, l: &Lanelet) -> Result<(), WriteError> {
+fn lanelet(e: &mut Emitter, l: &Lanelet) -> Result<(), Error> {
     e.open("lanelet", &id_attr(&l.id))?;
     bound(e, "leftBound", l.bounds.left(), l.left_marking)?;
     bound(e, "rightBound", l.bounds.right(), l.right_marking)?;
@@ -268,7 +268,7 @@ fn lanelet(e: &mut Emitter, l: &Lanelet) -> Result<(), WriteError> {
     Ok(())
 }
 
-fn traffic_sign(e: &mut Emitter, s: &TrafficSign) -> Result<(), WriteError> {
+fn traffic_sign(e: &mut Emitter, s: &TrafficSign) -> Result<(), Error> {
     e.open("trafficSign", &id_attr(&s.id))?;
     for el in &s.elements {
         e.open("trafficSignElement", &[])?;
@@ -286,7 +286,7 @@ fn traffic_sign(e: &mut Emitter, s: &TrafficSign) -> Result<(), WriteError> {
     Ok(())
 }
 
-fn traffic_light(e: &mut Emitter, t: &TrafficLight) -> Result<(), WriteError> {
+fn traffic_light(e: &mut Emitter, t: &TrafficLight) -> Result<(), Error> {
     e.open("trafficLight", &id_attr(&t.id))?;
     e.open("cycle", &[])?;
     for c in &t.cycle {
@@ -309,7 +309,7 @@ fn traffic_light(e: &mut Emitter, t: &TrafficLight) -> Result<(), WriteError> {
     Ok(())
 }
 
-fn intersection(e: &mut Emitter, i: &Intersection) -> Result<(), WriteError> {
+fn intersection(e: &mut Emitter, i: &Intersection) -> Result<(), Error> {
     e.open("intersection", &id_attr(&i.id))?;
     for inc in &i.incomings {
         e.open("incoming", &id_attr(&inc.id))?;
@@ -340,7 +340,7 @@ fn intersection(e: &mut Emitter, i: &Intersection) -> Result<(), WriteError> {
     Ok(())
 }
 
-fn polygon(e: &mut Emitter, p: &Polygon) -> Result<(), WriteError> {
+fn polygon(e: &mut Emitter, p: &Polygon) -> Result<(), Error> {
     e.open("polygon", &[])?;
     for pt in p.points() {
         point(e, "point", pt)?;
@@ -349,7 +349,7 @@ fn polygon(e: &mut Emitter, p: &Polygon) -> Result<(), WriteError> {
     Ok(())
 }
 
-fn placed_rectangle(e: &mut Emitter, r: &PlacedRectangle) -> Result<(), WriteError> {
+fn placed_rectangle(e: &mut Emitter, r: &PlacedRectangle) -> Result<(), Error> {
     e.open("rectangle", &[])?;
     e.positive_num("length", r.rectangle.length())?;
     e.positive_num("width", r.rectangle.width())?;
@@ -359,7 +359,7 @@ fn placed_rectangle(e: &mut Emitter, r: &PlacedRectangle) -> Result<(), WriteErr
     Ok(())
 }
 
-fn placed_circle(e: &mut Emitter, c: &PlacedCircle) -> Result<(), WriteError> {
+fn placed_circle(e: &mut Emitter, c: &PlacedCircle) -> Result<(), Error> {
     e.open("circle", &[])?;
     e.positive_num("radius", c.circle.radius())?;
     point(e, "center", &c.center)?;
@@ -368,7 +368,7 @@ fn placed_circle(e: &mut Emitter, c: &PlacedCircle) -> Result<(), WriteError> {
 }
 
 /// An obstacle shape: no centre or orientation (see `geometry.rs` for why).
-fn shape(e: &mut Emitter, s: &Shape) -> Result<(), WriteError> {
+fn shape(e: &mut Emitter, s: &Shape) -> Result<(), Error> {
     e.open("shape", &[])?;
     match s {
         Shape::Rectangle(r) => {
@@ -390,7 +390,7 @@ fn shape(e: &mut Emitter, s: &Shape) -> Result<(), WriteError> {
 
 /// A dynamic obstacle's state; the same fields for the initial state and every trajectory
 /// state, so the readers see one state class.
-fn state(e: &mut Emitter, tag: &str, s: &State) -> Result<(), WriteError> {
+fn state(e: &mut Emitter, tag: &str, s: &State) -> Result<(), Error> {
     e.push_context(format!("time step {}", s.time_step));
     let r = (|| {
         e.open(tag, &[])?;
@@ -407,7 +407,7 @@ fn state(e: &mut Emitter, tag: &str, s: &State) -> Result<(), WriteError> {
     r
 }
 
-fn static_obstacle(e: &mut Emitter, o: &StaticObstacle) -> Result<(), WriteError> {
+fn static_obstacle(e: &mut Emitter, o: &StaticObstacle) -> Result<(), Error> {
     e.open("staticObstacle", &id_attr(&o.id))?;
     e.text("type", o.obstacle_type.as_str())?;
     shape(e, &o.shape)?;
@@ -420,7 +420,7 @@ fn static_obstacle(e: &mut Emitter, o: &StaticObstacle) -> Result<(), WriteError
     Ok(())
 }
 
-fn dynamic_obstacle(e: &mut Emitter, o: &DynamicObstacle) -> Result<(), WriteError> {
+fn dynamic_obstacle(e: &mut Emitter, o: &DynamicObstacle) -> Result<(), Error> {
     e.open("dynamicObstacle", &id_attr(&o.id))?;
     e.text("type", o.obstacle_type.as_str())?;
     shape(e, &o.shape)?;
@@ -434,7 +434,7 @@ fn dynamic_obstacle(e: &mut Emitter, o: &DynamicObstacle) -> Result<(), WriteErr
     Ok(())
 }
 
-fn environment_obstacle(e: &mut Emitter, o: &EnvironmentObstacle) -> Result<(), WriteError> {
+fn environment_obstacle(e: &mut Emitter, o: &EnvironmentObstacle) -> Result<(), Error> {
     e.open("environmentObstacle", &id_attr(&o.id))?;
     e.text("type", o.obstacle_type.as_str())?;
     e.open("shape", &[])?;
@@ -448,7 +448,7 @@ fn environment_obstacle(e: &mut Emitter, o: &EnvironmentObstacle) -> Result<(), 
     Ok(())
 }
 
-fn goal_state(e: &mut Emitter, g: &GoalState) -> Result<(), WriteError> {
+fn goal_state(e: &mut Emitter, g: &GoalState) -> Result<(), Error> {
     e.open("goalState", &[])?;
     e.raw_line(&format!("<time><intervalStart>{}</intervalStart><intervalEnd>{}</intervalEnd></time>", g.time.start(), g.time.end()));
     if let Some(pos) = &g.position {
@@ -471,7 +471,7 @@ fn goal_state(e: &mut Emitter, g: &GoalState) -> Result<(), WriteError> {
     Ok(())
 }
 
-fn planning_problem(e: &mut Emitter, p: &PlanningProblem) -> Result<(), WriteError> {
+fn planning_problem(e: &mut Emitter, p: &PlanningProblem) -> Result<(), Error> {
     e.open("planningProblem", &id_attr(&p.id))?;
     let s = &p.initial_state;
     e.open("initialState", &[])?;

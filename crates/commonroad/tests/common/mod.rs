@@ -129,3 +129,16 @@ pub(crate) fn minimal() -> Minimal {
     };
     Minimal { scenario, problems, lanelets: [l1, l2, l3], sign, light, car }
 }
+
+/// An intersection's incoming: the lanelets entering it from `from`, its successors to the right,
+/// straight on and to the left, and the incoming it is left of.
+pub(crate) fn incoming(id: IncomingId, from: LaneletId, [right, straight, left]: [&[LaneletId]; 3], is_left_of: Option<IncomingId>) -> Incoming {
+    Incoming {
+        id,
+        incoming_lanelets: vec![from],
+        successors_right: right.to_vec(),
+        successors_straight: straight.to_vec(),
+        successors_left: left.to_vec(),
+        is_left_of,
+    }
+}

@@ -70,14 +70,7 @@ fn rich() -> (Scenario, PlanningProblemSet) {
     let inc = ids.incoming();
     scenario.network.intersections.push(Intersection {
         id: ids.intersection(),
-        incomings: vec![Incoming {
-            id: inc,
-            incoming_lanelets: vec![l1],
-            successors_right: vec![],
-            successors_straight: vec![l3],
-            successors_left: vec![],
-            is_left_of: None,
-        }],
+        incomings: vec![common::incoming(inc, l1, [&[], &[l3], &[]], None)],
         crossings: vec![vec![l3]],
     });
     scenario.static_obstacles.push(StaticObstacle {
@@ -211,5 +204,5 @@ fn ids_in_the_range_of_the_maps_parts_are_refused() {
     s.dynamic_obstacles[0].trajectory[1].x = f64::NAN;
     let e = protobuf::write(&s, &m.problems).expect_err("refused");
     assert!(e.to_string().contains("dynamicObstacle") && e.to_string().contains("time step 2"), "{e}");
-    assert!(matches!(protobuf::write(&m.scenario, &PlanningProblemSet::default()), Err(protobuf::WriteError::NoPlanningProblem)));
+    assert!(matches!(protobuf::write(&m.scenario, &PlanningProblemSet::default()), Err(commonroad::Error::NoPlanningProblem { .. })));
 }

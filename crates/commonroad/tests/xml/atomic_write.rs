@@ -3,7 +3,8 @@
 
 use std::path::PathBuf;
 
-use commonroad::xml::{write_atomic, WriteError};
+use commonroad::xml::write_atomic;
+use commonroad::Error;
 
 fn fresh_dir(name: &str) -> PathBuf {
     let d = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("atomic").join(name);
@@ -42,7 +43,7 @@ fn missing_directory_is_an_error_naming_a_path_and_creates_nothing() {
     let d = fresh_dir("missing");
     let p = d.join("no/such/dir/out.xml");
     match write_atomic(&p, b"x") {
-        Err(WriteError::Io { path, .. }) => assert!(path.starts_with(d.join("no/such/dir")), "{}", path.display()),
+        Err(Error::WriteFile { path, .. }) => assert!(path.starts_with(d.join("no/such/dir")), "{}", path.display()),
         other => panic!("expected Io error, got {other:?}"),
     }
     assert!(entries(&d).is_empty());
@@ -78,5 +79,5 @@ fn concurrent_writers_leave_one_complete_version() {
 
 #[test]
 fn a_path_without_file_name_is_an_error() {
-    assert!(matches!(write_atomic(std::path::Path::new("/"), b"x"), Err(WriteError::Io { .. })));
+    assert!(matches!(write_atomic(std::path::Path::new("/"), b"x"), Err(Error::WriteFile { .. })));
 }

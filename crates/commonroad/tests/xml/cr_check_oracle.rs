@@ -150,24 +150,7 @@ fn kitchen_sink() -> (Scenario, PlanningProblemSet) {
     let inc2 = ids.incoming();
     s.network.intersections.push(Intersection {
         id: ids.intersection(),
-        incomings: vec![
-            Incoming {
-                id: inc1,
-                incoming_lanelets: vec![m.lanelets[0]],
-                successors_right: vec![],
-                successors_straight: vec![l3],
-                successors_left: vec![],
-                is_left_of: Some(inc2),
-            },
-            Incoming {
-                id: inc2,
-                incoming_lanelets: vec![m.lanelets[1]],
-                successors_right: vec![l4],
-                successors_straight: vec![],
-                successors_left: vec![l3],
-                is_left_of: None,
-            },
-        ],
+        incomings: vec![common::incoming(inc1, m.lanelets[0], [&[], &[l3], &[]], Some(inc2)), common::incoming(inc2, m.lanelets[1], [&[l4], &[], &[l3]], None)],
         crossings: vec![vec![l4]],
     });
     s.dynamic_obstacles.push(DynamicObstacle {

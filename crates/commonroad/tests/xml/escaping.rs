@@ -2,7 +2,8 @@
 
 use crate::common;
 
-use commonroad::xml::{escape, write_scenario, WriteError};
+use commonroad::xml::{escape, write_scenario};
+use commonroad::Error;
 
 #[test]
 fn markup_characters_become_entities() {
@@ -42,7 +43,7 @@ fn writing_an_unrepresentable_character_is_an_error_naming_the_place() {
     let mut m = common::minimal();
     m.scenario.header.source = "bad\u{7}bell".into();
     match write_scenario(&m.scenario, &m.problems) {
-        Err(WriteError::InvalidChar { context, ch }) => {
+        Err(Error::InvalidChar { context, ch }) => {
             assert_eq!(ch, '\u{7}');
             assert!(context.contains("source"), "{context}");
         }

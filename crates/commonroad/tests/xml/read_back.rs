@@ -7,7 +7,7 @@ use crate::common;
 use std::num::NonZeroU64;
 use std::path::Path;
 
-use commonroad::xml::{read_scenario_file, read_scenario_str, write_map, write_scenario, ReadError};
+use commonroad::xml::{read_scenario_file, read_scenario_str, write_map, write_scenario};
 use commonroad::*;
 
 fn p(x: f64, y: f64) -> Point {
@@ -47,24 +47,7 @@ fn rich() -> (Scenario, PlanningProblemSet) {
     let inc2 = ids.incoming();
     s.network.intersections.push(Intersection {
         id: ids.intersection(),
-        incomings: vec![
-            Incoming {
-                id: inc1,
-                incoming_lanelets: vec![l1],
-                successors_right: vec![l3],
-                successors_straight: vec![],
-                successors_left: vec![l2],
-                is_left_of: Some(inc2),
-            },
-            Incoming {
-                id: inc2,
-                incoming_lanelets: vec![l2],
-                successors_right: vec![],
-                successors_straight: vec![l3],
-                successors_left: vec![],
-                is_left_of: None,
-            },
-        ],
+        incomings: vec![common::incoming(inc1, l1, [&[l3], &[], &[l2]], Some(inc2)), common::incoming(inc2, l2, [&[], &[l3], &[]], None)],
         crossings: vec![vec![l3]],
     });
     s.environment_obstacles.push(EnvironmentObstacle {
@@ -207,7 +190,7 @@ fn shared_minimal_example_reads_as_its_text_says() {
 
 fn invalid_at(text: &str) -> (u32, u32, String) {
     match read_scenario_str(text, Path::new("bad.xml")) {
-        Err(ReadError::Invalid { line, column, message, .. }) => (line, column, message),
+        Err(Error::Invalid { location, message }) => (location.line, location.col, message),
         other => panic!("expected Invalid, got {other:?}"),
     }
 }
@@ -237,7 +220,7 @@ fn errors_name_line_column_and_expectation() {
     let (_, _, msg) = invalid_at(&text);
     assert!(msg.contains("finite decimal"), "{msg}");
 
-    assert!(matches!(read_scenario_str("<a><b></a>", Path::new("x.xml")), Err(ReadError::Xml { .. })));
+    assert!(matches!(read_scenario_str("<a><b></a>", Path::new("x.xml")), Err(Error::Xml { .. })));
     let (_, _, msg) = invalid_at("<scenario/>");
     assert!(msg.contains("<commonRoad>"));
 }

@@ -5,7 +5,8 @@ use crate::common;
 
 use std::collections::BTreeMap;
 
-use commonroad::xml::{write_map, write_scenario, WriteError};
+use commonroad::xml::{write_map, write_scenario};
+use commonroad::Error;
 use commonroad::*;
 use roxmltree::{Document, Node};
 
@@ -203,7 +204,7 @@ fn tags_are_written_in_xsd_order_whatever_the_insertion_order() {
 #[test]
 fn scenario_without_planning_problem_is_refused() {
     let m = common::minimal();
-    assert!(matches!(write_scenario(&m.scenario, &PlanningProblemSet::default()), Err(WriteError::NoPlanningProblem)));
+    assert!(matches!(write_scenario(&m.scenario, &PlanningProblemSet::default()), Err(Error::NoPlanningProblem { .. })));
 }
 
 #[test]
@@ -211,7 +212,7 @@ fn non_finite_number_is_an_error_naming_the_element() {
     let mut m = common::minimal();
     m.scenario.dynamic_obstacles[0].trajectory[1].velocity = f64::NAN;
     match write_scenario(&m.scenario, &m.problems) {
-        Err(WriteError::NonFinite { context, .. }) => {
+        Err(Error::WriteNonFinite { context, .. }) => {
             assert!(context.contains(&format!("dynamicObstacle {}", m.car)), "{context}");
             assert!(context.contains("time step 2"), "{context}");
             assert!(context.ends_with("velocity"), "{context}");
@@ -220,14 +221,14 @@ fn non_finite_number_is_an_error_naming_the_element() {
     }
     let mut m = common::minimal();
     m.scenario.header.time_step_size = f64::INFINITY;
-    assert!(matches!(write_map(&m.scenario), Err(WriteError::NonFinite { .. })));
+    assert!(matches!(write_map(&m.scenario), Err(Error::WriteNonFinite { .. })));
 }
 
 #[test]
 fn size_that_rounds_to_zero_is_an_error() {
     let mut m = common::minimal();
     m.scenario.static_obstacles[0].shape = Shape::circle(1e-8).unwrap();
-    assert!(matches!(write_map(&m.scenario), Err(WriteError::NotPositive { .. })));
+    assert!(matches!(write_map(&m.scenario), Err(Error::WriteNotPositive { .. })));
 }
 
 #[test]

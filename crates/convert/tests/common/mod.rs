@@ -18,9 +18,9 @@ fn origin() -> Location {
 
 pub(crate) fn vehicle(name: &str, category: VehicleCategory, bb: BoundingBox) -> Entity {
     let axle = Axle { max_steering: 0.5, wheel_diameter: 0.6, track_width: 1.6, position_x: 0.0, position_z: 0.3 };
-    Entity {
-        name: name.into(),
-        object: EntityObject::Vehicle(Vehicle {
+    entity(
+        name,
+        EntityObject::Vehicle(Vehicle {
             name: name.into(),
             category,
             role: None,
@@ -41,48 +41,36 @@ pub(crate) fn vehicle(name: &str, category: VehicleCategory, bb: BoundingBox) ->
             trailer_coupler: None,
             trailer: None,
         }),
-        controllers: Vec::new(),
-        origin: origin(),
-    }
+    )
 }
 
 pub(crate) fn car(name: &str) -> Entity {
     vehicle(name, VehicleCategory::Car, bbox(1.4, 0.0, 4.5, 2.0))
 }
 
+/// An entity without controllers, at the synthetic origin.
+fn entity(name: &str, object: EntityObject) -> Entity {
+    Entity { name: name.into(), object, controllers: Vec::new(), origin: origin() }
+}
+
 pub(crate) fn pedestrian(name: &str, category: PedestrianCategory, bb: BoundingBox) -> Entity {
-    Entity {
+    let pedestrian = Pedestrian {
         name: name.into(),
-        object: EntityObject::Pedestrian(Pedestrian {
-            name: name.into(),
-            category,
-            role: None,
-            mass: 80.0,
-            model3d: None,
-            parameters: Vec::new(),
-            bounding_box: bb,
-            properties: Properties::default(),
-        }),
-        controllers: Vec::new(),
-        origin: origin(),
-    }
+        category,
+        role: None,
+        mass: 80.0,
+        model3d: None,
+        parameters: Vec::new(),
+        bounding_box: bb,
+        properties: Properties::default(),
+    };
+    entity(name, EntityObject::Pedestrian(pedestrian))
 }
 
 pub(crate) fn misc(name: &str, category: MiscObjectCategory, bb: BoundingBox) -> Entity {
-    Entity {
-        name: name.into(),
-        object: EntityObject::MiscObject(MiscObject {
-            name: name.into(),
-            category,
-            mass: 100.0,
-            model3d: None,
-            parameters: Vec::new(),
-            bounding_box: bb,
-            properties: Properties::default(),
-        }),
-        controllers: Vec::new(),
-        origin: origin(),
-    }
+    let misc =
+        MiscObject { name: name.into(), category, mass: 100.0, model3d: None, parameters: Vec::new(), bounding_box: bb, properties: Properties::default() };
+    entity(name, EntityObject::MiscObject(misc))
 }
 
 pub(crate) fn sample(x: f64, y: f64, h: f64, speed: f64) -> Sample {
@@ -129,8 +117,8 @@ pub(crate) fn fresh_dir(tag: &str) -> std::path::PathBuf {
 /// conversion reports and the model it built (panics, with the failure, if it failed).
 pub(crate) fn convert_and_clean(dir: &Path, name: &str) -> (convert::Conversion, convert::Model) {
     let path = dir.join(format!("{name}.xosc"));
-    let request = convert::Request { path: &path, name, config: 1, parameters: &[], source: String::new() };
-    let (conversion, model) = convert::convert_scenario_keeping(&request, &convert::ConvertOptions::default(), true);
+    let request = convert::Request::named(&path, name).keeping_model();
+    let (conversion, model) = convert::convert(&request, &convert::ConvertOptions::default());
     let _ = std::fs::remove_dir_all(dir);
     assert!(conversion.result.is_ok(), "{:?}", conversion.result.err());
     (conversion, model.expect("model kept"))

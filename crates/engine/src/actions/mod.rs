@@ -24,7 +24,7 @@ use self::state::{ActionRt, Instance};
 use crate::external::overridden::{overridden, Overridden};
 use crate::sim::Sim;
 use crate::storyboard::{State, Transition};
-use crate::Warning;
+use crate::Diagnostic;
 use openscenario::{ActionKind, PrivateAction};
 
 impl<'a> Sim<'a> {
@@ -35,7 +35,7 @@ impl<'a> Sim<'a> {
             return;
         }
         s.warned = true;
-        let w = Warning::at(&s.model.origin, msg);
+        let w = Diagnostic::at(&s.model.origin, msg);
         self.warnings.push(w);
     }
 
@@ -230,7 +230,7 @@ impl<'a> Sim<'a> {
             return;
         }
         let mut all_done = true;
-        // While the ghost runs ahead only its actions step (ghost.rs, `steps_during_restart`).
+        // While the ghost runs ahead only its actions step (ghost/, `steps_during_restart`).
         let held = self.ghost_restarting();
         for k in 0..self.actions[slot].instances.len() {
             let Some(e) = self.actions[slot].instances[k].entity else { continue };

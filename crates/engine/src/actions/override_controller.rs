@@ -10,7 +10,7 @@ pub(crate) mod state;
 use self::state::kind_index;
 use crate::actions::state::ActionRt;
 use crate::sim::Sim;
-use crate::Warning;
+use crate::Diagnostic;
 use openscenario::OverrideValue;
 
 impl<'a> Sim<'a> {
@@ -37,12 +37,12 @@ impl<'a> Sim<'a> {
         ActionRt::Done
     }
 
-    fn override_restart_note(&self, slot: usize, e: usize, kind: &str) -> Warning {
+    fn override_restart_note(&self, slot: usize, e: usize, kind: &str) -> Diagnostic {
         let name = self.entities.get(e).map_or("", |en| en.name.as_str());
         let action = &self.nodes[self.actions[slot].node].name;
         let msg = format!(
             "action `{action}` releases the active {kind} override of `{name}`, where esmini restarts its ghost from it: time rewinds by the head start and the rewound steps are logged again (the trace CSV repeats those times, as esmini's log does; the CommonRoad conversion keeps the first pass)"
         );
-        Warning::at(&self.actions[slot].model.origin, msg)
+        Diagnostic::at(&self.actions[slot].model.origin, msg)
     }
 }

@@ -51,7 +51,7 @@ impl<'a> Sim<'a> {
     pub(super) fn warn_once(&mut self, c: &mut ConditionRt<'a>, msg: String) -> bool {
         if !c.warned {
             c.warned = true;
-            self.warnings.push(crate::Warning::at(&c.model.origin, format!("condition `{}`: {msg}", c.model.name)));
+            self.warnings.push(crate::Diagnostic::at(&c.model.origin, format!("condition `{}`: {msg}", c.model.name)));
         }
         false
     }

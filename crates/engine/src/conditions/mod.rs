@@ -174,7 +174,7 @@ impl<'a> Sim<'a> {
             ConditionKind::Unsupported { element } => {
                 if !c.warned {
                     c.warned = true;
-                    let w = crate::Warning::at(&c.model.origin, format!("condition `{}`: {element} is not supported; it never becomes true", c.model.name));
+                    let w = crate::Diagnostic::at(&c.model.origin, format!("condition `{}`: {element} is not supported; it never becomes true", c.model.name));
                     self.warnings.push(w);
                 }
                 false

@@ -16,7 +16,7 @@ pub(crate) struct ConditionRt<'a> {
     /// (time, edge-filtered value) at each change, for delays.
     pub(super) history: Vec<(f64, bool)>,
     pub triggering: Vec<usize>,
-    /// Seconds a SimulationTime condition fires early (a ghost's head start, `ghost.rs`).
+    /// Seconds a SimulationTime condition fires early (a ghost's head start, `ghost/`).
     pub time_shift: f64,
     /// The triggering entities for which the condition held when it was last true (read by
     /// `selectTriggeringEntities`), and the scratch list of the evaluation in progress.

@@ -10,7 +10,7 @@ impl<'a> Sim<'a> {
         if !self.signals.is_known(name) && !c.warned {
             c.warned = true;
             let msg = format!("condition `{}`: `{name}` is not a signal id of the road network", c.model.name);
-            self.warnings.push(crate::Warning::at(&c.model.origin, msg));
+            self.warnings.push(crate::Diagnostic::at(&c.model.origin, msg));
         }
         self.signals.is_in(name, state)
     }

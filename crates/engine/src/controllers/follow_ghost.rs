@@ -14,7 +14,7 @@ use state::{FollowGhostRt, FollowMode};
 
 use super::kinematic_vehicle::KinematicVehicle;
 use crate::entities::Entity;
-use crate::ghost_trail::TrailPoint;
+use crate::ghost::trail::TrailPoint;
 use crate::sim::Sim;
 use openscenario::Controller;
 

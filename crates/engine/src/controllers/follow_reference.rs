@@ -71,7 +71,7 @@ impl<'a> Sim<'a> {
             if self.entity_index(&name).is_none() {
                 if let Some(m) = self.scenario.entities.get(e) {
                     let msg = format!("entity `{}`: FollowReferenceController's reference entity `{name}` does not exist; the entity stands still", m.name);
-                    self.warnings.push(crate::Warning::at(&m.origin, msg));
+                    self.warnings.push(crate::Diagnostic::at(&m.origin, msg));
                 }
             }
         }

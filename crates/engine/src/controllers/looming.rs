@@ -5,7 +5,7 @@
 //!   (1 − distFactor)·dvMin`, without one `setSpeed − speed`, clamped to ±1;
 //! - steering: `(1.8·near + 1.3·near' + 1.5·far') / (π/4)`, clamped to ±1, from the angle to
 //!   the near point (lane centre 10 m ahead) and to the far point: the tangent point of the
-//!   lane's inner edge within 80 m (`looming_view.rs`), else the lead vehicle within 80 m
+//!   lane's inner edge within 80 m (`looming/view.rs`), else the lead vehicle within 80 m
 //!   (esmini's angle from the lead to the entity), else the lane centre 80 m ahead;
 //! - esmini's vehicle model (vehicle::Vehicle::DrivingControlAnalog) moves the entity: speed
 //!   by max acceleration or deceleration times the throttle, an engine drag of 0.1 % per step
@@ -13,6 +13,7 @@
 //!   and the kinematic bicycle of `kinematic_vehicle.rs`.
 
 pub(crate) mod state;
+pub(crate) mod view;
 
 use state::LoomingRt;
 
@@ -161,7 +162,7 @@ impl<'a> Sim<'a> {
         if let (Some(net), Some(lp)) = (self.net, me.lane) {
             let h_road = lp.pose(net).map_or(me.h, |p| p.road_heading);
             let forward = lp.dir > 0.0;
-            let t = super::looming_view::far_tangent(net, &mut l.osi, super::looming_view::Viewpoint { lane: lp, x: me.x, y: me.y, h_road, forward }, far_dist);
+            let t = view::far_tangent(net, &mut l.osi, view::Viewpoint { lane: lp, x: me.x, y: me.y, h_road, forward }, far_dist);
             far = t.point;
             intersection = t.intersection;
             searched = t.dist;
@@ -197,7 +198,7 @@ impl<'a> Sim<'a> {
                         break;
                     }
                     has_lead_far = true;
-                    far_angle = super::looming_view::angle_pi((me.y - p.y).atan2(me.x - p.x) - me.h);
+                    far_angle = view::angle_pi((me.y - p.y).atan2(me.x - p.x) - me.h);
                 }
             }
         }

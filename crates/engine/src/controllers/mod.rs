@@ -19,14 +19,12 @@ pub(crate) mod followers;
 pub(crate) mod kinematic_vehicle;
 pub(crate) mod lane_router;
 pub(crate) mod looming;
-pub(crate) mod looming_view;
 pub(crate) mod natural_driver;
-pub(crate) mod natural_view;
 pub(crate) mod state;
 
 use self::state::ControllerRt;
 use crate::sim::Sim;
-use crate::Warning;
+use crate::Diagnostic;
 use openscenario::Controller;
 
 /// Types that need a driver or a co-simulator outside osc2cr.
@@ -62,7 +60,7 @@ impl<'a> Sim<'a> {
     pub(crate) fn assign_controller(&mut self, e: usize, c: &Controller) {
         if self.named_external(e) {
             let name = self.entities.get(e).map_or("", |en| en.name.as_str());
-            self.warnings.push(Warning::at(&c.origin, format!("controller `{}` of `{name}` is not stepped: the entity is driven from outside", c.name)));
+            self.warnings.push(Diagnostic::at(&c.origin, format!("controller `{}` of `{name}` is not stepped: the entity is driven from outside", c.name)));
             return;
         }
         let kind = controller_type(c);
@@ -72,7 +70,7 @@ impl<'a> Sim<'a> {
             "ALKS_R157SM_Controller" => {
                 let (rt, note) = alks_r157::state::AlksR157Rt::new(c);
                 if let Some(n) = note {
-                    self.warnings.push(Warning::at(&c.origin, n));
+                    self.warnings.push(Diagnostic::at(&c.origin, n));
                 }
                 Some(ControllerRt::AlksR157(Box::new(rt)))
             }
@@ -83,7 +81,7 @@ impl<'a> Sim<'a> {
             "LoomingController" => {
                 if self.net.is_some_and(|n| n.roads.iter().any(|r| r.elevation.iter().chain(&r.superelevation).any(|c| c.b != 0.0 || c.c != 0.0 || c.d != 0.0)))
                 {
-                    self.warnings.push(Warning::at(&c.origin, looming::APPROXIMATION.to_string()));
+                    self.warnings.push(Diagnostic::at(&c.origin, looming::APPROXIMATION.to_string()));
                 }
                 Some(ControllerRt::Looming(looming::state::LoomingRt::new(c)))
             }
@@ -93,7 +91,7 @@ impl<'a> Sim<'a> {
             self.await_outside_driver(e, c);
         } else if rt.is_none() {
             let why = if OUTSIDE_INPUT.contains(&kind) { "needs a driver or a process outside osc2cr" } else { "is not modelled" };
-            self.warnings.push(Warning::at(
+            self.warnings.push(Diagnostic::at(
                 &c.origin,
                 format!("controller `{}` ({kind}) {why}; the default controller drives and the storyboard's actions apply", c.name),
             ));

@@ -23,10 +23,11 @@
 //! the entity itself).
 
 pub(crate) mod state;
+mod view;
 
 use state::{Mode, NaturalDriverRt, NdParams};
 
-use super::natural_view::{adjacent_lanes, desired_gap, freespace, Vois, FOLLOWING, LEAD, LEFT_FOLLOW, LEFT_LEAD, RIGHT_FOLLOW, RIGHT_LEAD, SMALL_NUMBER};
+use self::view::{adjacent_lanes, desired_gap, freespace, Vois, FOLLOWING, LEAD, LEFT_FOLLOW, LEFT_LEAD, RIGHT_FOLLOW, RIGHT_LEAD, SMALL_NUMBER};
 use super::state::ControllerRt;
 use crate::actions::lane_change::state::LaneChangeRt;
 use crate::dynamics::{sign, Transition};

@@ -15,7 +15,7 @@ use crate::entities::Entity;
 use crate::roads::move_along_s;
 use crate::roads::road_follow::at_dead_end;
 use crate::sim::Sim;
-use crate::Warning;
+use crate::Diagnostic;
 use opendrive::RoadNetwork;
 
 impl<'a> Sim<'a> {
@@ -207,7 +207,7 @@ impl<'a> Sim<'a> {
         for e in ends {
             if let (Some(en), Some(model)) = (self.entities.get(e), self.scenario.entities.get(e)) {
                 let note = format!("`{}`, driven from outside, reached the end of its road at {:.2} s: its EndOfRoad status is seen one step later than for an entity the engine moves (esmini reads it before the outside places the entity)", en.name, self.time);
-                self.warnings.push(Warning::at(&model.origin, note));
+                self.warnings.push(Diagnostic::at(&model.origin, note));
             }
         }
     }

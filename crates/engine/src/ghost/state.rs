@@ -1,8 +1,8 @@
 //! What a ghost is during a run: the entity it runs ahead of, its head start, its trail and
-//! esmini's ghost mode and clock. Data only: `ghost.rs`, `ghost_trail.rs` and
-//! `ghost_restart.rs` change it.
+//! esmini's ghost mode and clock. Data only: `ghost/mod.rs`, `trail.rs` and
+//! `restart.rs` change it.
 
-use crate::ghost_trail::Trail;
+use crate::ghost::trail::Trail;
 
 #[derive(Debug, Clone)]
 pub(crate) struct Ghost {
@@ -20,7 +20,7 @@ pub(crate) struct Ghost {
     pub mode: GhostMode,
     /// Events that teleport the ghost back to its entity when they start (esmini's
     /// `AddedGhostTeleport`), each with the condition that made it one.
-    pub restart_events: Vec<(usize, crate::Warning)>,
+    pub restart_events: Vec<(usize, crate::Diagnostic)>,
     /// While the actions of an event start after its added teleport: how much earlier they
     /// start (esmini's `Event::Start` passes them the time less the head start).
     pub start_shift: f64,

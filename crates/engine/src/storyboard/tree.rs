@@ -67,7 +67,7 @@ pub(crate) struct Node {
     pub stop_trigger: Option<usize>,
     /// `maximumExecutionCount` of maneuver groups and events (others: 1).
     pub max_executions: u32,
-    /// Signed: esmini's `ResetEvents` can drive it below zero (`ghost_restart.rs`).
+    /// Signed: esmini's `ResetEvents` can drive it below zero (`ghost/restart.rs`).
     pub executions: i64,
     pub priority: Priority,
     /// Index into the run's action slots (action nodes only).

@@ -139,5 +139,5 @@ fn unsupported_action_is_a_positioned_warning() {
     let init = format!("{}<Private entityRef=\"Ego\">{traj}</Private>", teleport("Ego", 10.0, -1));
     let run = run(&xosc(&init, "", &trigger_stop(1.0)));
     let w = run.warnings.iter().find(|w| w.message.contains("RandomRouteAction")).expect("warning");
-    assert!(w.line > 0 && w.col > 0);
+    assert!(w.location.line > 0 && w.location.col > 0);
 }

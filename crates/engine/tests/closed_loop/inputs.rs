@@ -280,7 +280,7 @@ fn esmini_overrides_the_actions_of_an_entity_driven_from_outside() {
     // the Init's teleport and speed, done before the activation, are not said to be overridden
     let told = |element: &str| run.warnings.iter().any(|w| w.message.starts_with(&format!("{element} on `Ego`")));
     assert!(told("SpeedAction") && told("LaneChangeAction") && told("TeleportAction"), "{:?}", run.warnings);
-    let init = |w: &&engine::Warning| w.message.contains("driven from outside") && w.line == 21;
+    let init = |w: &&engine::Diagnostic| w.message.contains("driven from outside") && w.location.line == 21;
     assert_eq!(run.warnings.iter().filter(init).count(), 0, "{:?}", run.warnings);
 }
 

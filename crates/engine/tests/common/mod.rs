@@ -12,6 +12,11 @@ pub(crate) fn fixtures() -> std::path::PathBuf {
 }
 
 fn car(name: &str) -> String {
+    car_with(name, "")
+}
+
+/// A car as in every scenario here, followed by `controller` (an ObjectController, or nothing).
+pub(crate) fn car_with(name: &str, controller: &str) -> String {
     format!(
         r#"<ScenarioObject name="{name}"><Vehicle name="car" vehicleCategory="car">
   <ParameterDeclarations/>
@@ -19,7 +24,7 @@ fn car(name: &str) -> String {
   <BoundingBox><Center x="1.5" y="0" z="0.9"/><Dimensions width="2.0" length="4.5" height="1.8"/></BoundingBox>
   <Axles><FrontAxle maxSteering="0.5" wheelDiameter="0.6" trackWidth="1.8" positionX="3.1" positionZ="0.3"/>
   <RearAxle maxSteering="0" wheelDiameter="0.6" trackWidth="1.8" positionX="0" positionZ="0.3"/></Axles>
-  <Properties/></Vehicle></ScenarioObject>"#
+  <Properties/></Vehicle>{controller}</ScenarioObject>"#
     )
 }
 

@@ -5,7 +5,7 @@
 //! The driver: desired speed 20 m/s, desired distance 5 m, time headway 1.5 s, maxAcc 2 m/s²,
 //! maxDec -4 m/s², lane change over 3 s, route lane -1 (unless a test says otherwise).
 
-use crate::common::{at, close, event_time, fixtures};
+use crate::common::{at, car_with, close, event_time, fixtures};
 use engine::{Run, Settings};
 
 const DT: f64 = 0.01;
@@ -16,18 +16,6 @@ const S0: f64 = 5.0;
 const T: f64 = 1.5;
 /// Follower overhang ahead of its reference point plus leader overhang behind its own.
 const OVERHANG: f64 = 3.75 + 0.75;
-
-fn car(name: &str, controller: &str) -> String {
-    format!(
-        r#"<ScenarioObject name="{name}"><Vehicle name="car" vehicleCategory="car">
-  <ParameterDeclarations/>
-  <Performance maxSpeed="70" maxAcceleration="200" maxDeceleration="200"/>
-  <BoundingBox><Center x="1.5" y="0" z="0.9"/><Dimensions width="2.0" length="4.5" height="1.8"/></BoundingBox>
-  <Axles><FrontAxle maxSteering="0.5" wheelDiameter="0.6" trackWidth="1.8" positionX="3.1" positionZ="0.3"/>
-  <RearAxle maxSteering="0" wheelDiameter="0.6" trackWidth="1.8" positionX="0" positionZ="0.3"/></Axles>
-  <Properties/></Vehicle>{controller}</ScenarioObject>"#
-    )
-}
 
 fn natural_driver(extra: &str) -> String {
     let props: String = [
@@ -71,9 +59,9 @@ fn scenario(extra: &str, init: &str, stop: f64) -> String {
 <StopTrigger><ConditionGroup><Condition name="end" delay="0" conditionEdge="none"><ByValueCondition><SimulationTimeCondition value="{stop}" rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup></StopTrigger>
 </Storyboard>
 </OpenSCENARIO>"#,
-        car("Ego", &natural_driver(extra)),
-        car("Target", ""),
-        car("Blocker", "")
+        car_with("Ego", &natural_driver(extra)),
+        car_with("Target", ""),
+        car_with("Blocker", "")
     )
 }
 

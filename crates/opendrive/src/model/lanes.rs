@@ -1,7 +1,7 @@
 //! Lane sections, lanes and their records (width, border, road mark, speed).
 
 use super::poly::CubicRecord;
-use crate::error::SourcePos;
+use diagnostic::LineCol;
 
 /// Lane types of OpenDRIVE 1.4–1.8; the raw string is kept in [`Lane::type_raw`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -172,7 +172,7 @@ pub struct Lane {
     pub borders: Vec<CubicRecord>,
     pub road_marks: Vec<RoadMark>,
     pub speeds: Vec<LaneSpeed>,
-    pub pos: SourcePos,
+    pub pos: LineCol,
 }
 
 /// A lane section: lanes valid from `s` to the next section (or the road end).
@@ -186,7 +186,7 @@ pub struct LaneSection {
     pub center: Option<Lane>,
     /// Right lanes sorted by id descending (-1, -2, ... outward).
     pub right: Vec<Lane>,
-    pub pos: SourcePos,
+    pub pos: LineCol,
 }
 
 impl LaneSection {

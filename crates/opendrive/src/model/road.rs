@@ -4,8 +4,8 @@ use super::lanes::LaneSection;
 use super::objects::Object;
 use super::poly::CubicRecord;
 use super::signals::{Signal, SignalReference};
-use crate::error::SourcePos;
 use crate::geometry::Geometry;
+use diagnostic::LineCol;
 
 /// Traffic rule of a road (`rule` attribute); right-hand traffic when absent.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Default)]
@@ -146,7 +146,7 @@ pub struct Road {
     pub signals: Vec<Signal>,
     pub signal_references: Vec<SignalReference>,
     /// Where `<road>` starts in the file.
-    pub pos: SourcePos,
+    pub pos: LineCol,
 }
 
 impl Road {

@@ -3,7 +3,7 @@
 //! and lane: on a 0.5 MB map that quadratic rescan was three quarters of the load time.
 //! Columns are counted in characters, as roxmltree counts them, so positions are unchanged.
 
-use crate::error::SourcePos;
+use diagnostic::LineCol;
 
 /// Start offsets of every line of one text.
 pub(super) struct LineIndex<'t> {
@@ -20,7 +20,7 @@ impl<'t> LineIndex<'t> {
     }
 
     /// 1-based line and column (in characters) of byte offset `byte` (clamped to the text).
-    pub(super) fn pos(&self, byte: usize) -> SourcePos {
+    pub(super) fn pos(&self, byte: usize) -> LineCol {
         let byte = byte.min(self.text.len());
         let line = self.starts.partition_point(|&s| s <= byte).max(1);
         let start = self.starts.get(line - 1).copied().unwrap_or(0);
@@ -29,7 +29,7 @@ impl<'t> LineIndex<'t> {
             // not on a character boundary (never for node offsets): count bytes
             None => byte - start,
         };
-        SourcePos { line: u32::try_from(line).unwrap_or(u32::MAX), col: u32::try_from(col + 1).unwrap_or(u32::MAX) }
+        LineCol { line: u32::try_from(line).unwrap_or(u32::MAX), col: u32::try_from(col + 1).unwrap_or(u32::MAX) }
     }
 }
 
@@ -44,7 +44,7 @@ mod tests {
         let idx = LineIndex::new(text);
         for (byte, _) in text.char_indices().chain([(text.len(), ' ')]) {
             let want = doc.text_pos_at(byte);
-            assert_eq!(idx.pos(byte), SourcePos { line: want.row, col: want.col }, "byte {byte}");
+            assert_eq!(idx.pos(byte), LineCol { line: want.row, col: want.col }, "byte {byte}");
         }
     }
 }

@@ -11,10 +11,11 @@ mod road;
 mod signals;
 mod xml;
 
-use crate::error::{Error, Warning};
+use crate::error::Error;
 use crate::model::header::Header;
 use crate::model::junction::{Controller, Junction};
 use crate::model::road::Road;
+use diagnostic::Diagnostic;
 use std::path::Path;
 use xml::{elements, irrelevant, Ctx};
 
@@ -29,7 +30,7 @@ pub(crate) struct Parsed {
     pub roads: Vec<Road>,
     pub junctions: Vec<Junction>,
     pub controllers: Vec<Controller>,
-    pub warnings: Vec<Warning>,
+    pub warnings: Vec<Diagnostic>,
 }
 
 /// Where a parse error is. roxmltree puts "the file ended too early" errors at 1:1; the place

@@ -1,7 +1,8 @@
 //! Attribute reading with positioned errors and warnings; the context of one parse.
 
 use super::line_index::LineIndex;
-use crate::error::{Error, SourcePos, Warning};
+use crate::error::Error;
+use diagnostic::{Diagnostic, LineCol, Location};
 use roxmltree::{Document, Node};
 use std::path::Path;
 
@@ -10,17 +11,17 @@ use std::path::Path;
 pub(super) struct Ctx<'a, 'input> {
     pub file: &'a Path,
     pub lines: LineIndex<'input>,
-    pub warnings: Vec<Warning>,
+    pub warnings: Vec<Diagnostic>,
 }
 
 impl<'a, 'input> Ctx<'a, 'input> {
     pub(super) fn new(file: &'a Path, doc: &Document<'input>) -> Self {
         Ctx { file, lines: LineIndex::new(doc.input_text()), warnings: Vec::new() }
     }
-    pub(super) fn pos_of(&self, byte: usize) -> SourcePos {
+    pub(super) fn pos_of(&self, byte: usize) -> LineCol {
         self.lines.pos(byte)
     }
-    pub(super) fn pos(&self, node: Node) -> SourcePos {
+    pub(super) fn pos(&self, node: Node) -> LineCol {
         self.pos_of(node.range().start)
     }
     pub(super) fn error_at(&self, byte: usize, message: impl Into<String>) -> Error {
@@ -32,7 +33,7 @@ impl<'a, 'input> Ctx<'a, 'input> {
     }
     pub(super) fn warn(&mut self, node: Node, message: impl Into<String>) {
         let p = self.pos(node);
-        self.warnings.push(Warning { file: self.file.to_path_buf(), line: p.line, col: p.col, message: message.into() });
+        self.warnings.push(Diagnostic::new(Location::new(self.file, p.line, p.col), message));
     }
 
     /// A required attribute as text.

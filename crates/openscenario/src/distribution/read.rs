@@ -1,8 +1,8 @@
 //! Reading a ParameterValueDistribution element.
 
 use super::{Distribution, DistributionKind, Factor, ParameterSet, Stochastic};
-use crate::attr::Cx;
-use crate::error::{Error, ErrorKind, Warning};
+use crate::attr::{Cx, Record};
+use crate::error::{Diagnostic, Error, ErrorKind};
 use crate::params::Scope;
 use crate::xml::Elem;
 use std::path::Path;
@@ -12,8 +12,8 @@ use std::sync::Arc;
 const MAX_RANGE_VALUES: u64 = 1 << 40;
 
 pub(crate) fn read_distribution(
-    warnings: &mut Vec<Warning>,
-    problems: &mut Vec<Warning>,
+    warnings: &mut Vec<Diagnostic>,
+    problems: &mut Vec<Diagnostic>,
     path: &Path,
     file: &Arc<Path>,
     root: &Elem,
@@ -21,12 +21,13 @@ pub(crate) fn read_distribution(
     seed_override: Option<u64>,
 ) -> Result<Distribution, Error> {
     let scope = Scope::default();
-    let cx = Cx::new(file.clone(), &scope);
+    let record = Record::default();
+    let cx = Cx::new(file.clone(), &scope, &record);
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
     let sf = cx.child(d, "ScenarioFile")?;
     let scenario_file = crate::error::absolute(&dir.join(cx.text(sf, "filepath")?));
     if !scenario_file.is_file() {
-        warnings.push(Warning { location: cx.loc(sf.pos), message: format!("scenario file {} not found", scenario_file.display()) });
+        warnings.push(Diagnostic { location: cx.loc(sf.pos), message: format!("scenario file {} not found", scenario_file.display()) });
     }
     let _ = root;
     let kind = if let Some(det) = d.child("Deterministic") {
@@ -44,7 +45,7 @@ pub(crate) fn read_distribution(
                         sets.push(set);
                     }
                     if sets.is_empty() {
-                        problems.push(Warning {
+                        problems.push(Diagnostic {
                             location: cx.loc(vsd.pos),
                             message: "ValueSetDistribution has no ParameterValueSet: the distribution has no run".into(),
                         });
@@ -52,7 +53,7 @@ pub(crate) fn read_distribution(
                     factors.push(Factor::ValueSets(sets));
                 }
                 "DeterministicSingleParameterDistribution" => factors.push(single(warnings, problems, &cx, f)?),
-                _ => warnings.push(Warning { location: cx.loc(f.pos), message: format!("<{}> in Deterministic is not supported yet; ignored", f.name) }),
+                _ => warnings.push(Diagnostic { location: cx.loc(f.pos), message: format!("<{}> in Deterministic is not supported yet; ignored", f.name) }),
             }
         }
         let dist = DistributionKind::Deterministic(factors);
@@ -97,7 +98,7 @@ pub(crate) fn read_distribution(
                     Stochastic::Set(c.children_named("Element").map(|e| Ok((cx.text(e, "value")?, cx.f64(e, "weight")?))).collect::<Result<_, Error>>()?)
                 }
                 _ => {
-                    warnings.push(Warning {
+                    warnings.push(Diagnostic {
                         location: cx.loc(c.pos),
                         message: format!("<{}> is not supported yet; parameter '{name}' keeps its scenario value", c.name),
                     });
@@ -105,7 +106,7 @@ pub(crate) fn read_distribution(
                 }
             };
             if let Some(why) = unsampleable(&dist) {
-                problems.push(Warning { location: cx.loc(c.pos), message: format!("<{}> of parameter '{name}' cannot be sampled: {why}", c.name) });
+                problems.push(Diagnostic { location: cx.loc(c.pos), message: format!("<{}> of parameter '{name}' cannot be sampled: {why}", c.name) });
             }
             parameters.push((name, dist));
         }
@@ -113,17 +114,18 @@ pub(crate) fn read_distribution(
     } else {
         return Err(cx.err(ErrorKind::Structure, d.pos, "ParameterValueDistribution needs a Deterministic or Stochastic child"));
     };
+    problems.append(&mut record.problems.take());
     Ok(Distribution { scenario_file, kind })
 }
 
-fn single(warnings: &mut Vec<Warning>, problems: &mut Vec<Warning>, cx: &Cx, f: &Elem) -> Result<Factor, Error> {
+fn single(warnings: &mut Vec<Diagnostic>, problems: &mut Vec<Diagnostic>, cx: &Cx, f: &Elem) -> Result<Factor, Error> {
     let parameter = cx.name_ref(f, "parameterName")?;
     let c = cx.choice(f, "DistributionSet, DistributionRange or UserDefinedDistribution")?;
     match c.name.as_str() {
         "DistributionSet" => {
             let values: Vec<String> = c.children_named("Element").map(|e| cx.text(e, "value")).collect::<Result<_, _>>()?;
             if values.is_empty() {
-                problems.push(Warning {
+                problems.push(Diagnostic {
                     location: cx.loc(c.pos),
                     message: format!("DistributionSet of parameter '{parameter}' has no Element: the distribution has no run"),
                 });
@@ -142,7 +144,7 @@ fn single(warnings: &mut Vec<Warning>, problems: &mut Vec<Warning>, cx: &Cx, f: 
             let steps = ((upper - lower) / step + 1e-9).floor();
             let count = if steps < 0.0 { 0 } else { steps as u64 + 1 };
             if upper < lower {
-                problems.push(Warning {
+                problems.push(Diagnostic {
                     location: cx.loc(r.pos),
                     message: format!("DistributionRange of parameter '{parameter}': upperLimit {upper} is below lowerLimit {lower}, so the range is empty"),
                 });
@@ -153,7 +155,7 @@ fn single(warnings: &mut Vec<Warning>, problems: &mut Vec<Warning>, cx: &Cx, f: 
             Ok(Factor::Range { parameter, lower, step, count })
         }
         _ => {
-            warnings.push(Warning {
+            warnings.push(Diagnostic {
                 location: cx.loc(c.pos),
                 message: format!("<{}> is not supported yet; parameter '{parameter}' keeps its scenario value", c.name),
             });

@@ -7,8 +7,10 @@
 mod functions;
 mod lexer;
 mod parser;
+mod standard;
 
 pub use parser::{concatenate, evaluate};
+pub use standard::beyond_the_standard;
 
 /// The value of an expression or of a parameter inside one.
 #[derive(Debug, Clone, Copy, PartialEq)]

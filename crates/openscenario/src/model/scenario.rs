@@ -18,6 +18,11 @@ pub struct Scenario {
     pub entities: Vec<Entity>,
     pub entity_selections: Vec<EntitySelection>,
     pub storyboard: Storyboard,
+    /// Where each name that refers to something else was written (entities, roads, lanes,
+    /// storyboard elements, …), in reading order: a check that finds such a name refers to
+    /// nothing reports it at its own attribute ([`Scenario::reference_site`]).
+    #[serde(skip)]
+    pub reference_sites: Vec<crate::references::ReferenceSite>,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -62,6 +67,18 @@ pub struct Phase {
 }
 
 impl Scenario {
+    /// Where the attribute `attribute` whose value `matches` was written within the element at
+    /// `within` (an action, condition, maneuver group, route, …, that holds it): the first such
+    /// site at or after the element's start in its file, else `within` itself.
+    pub fn reference_site<'a>(&'a self, within: &'a crate::Location, attribute: &str, matches: impl Fn(&str) -> bool) -> &'a crate::Location {
+        self.reference_sites
+            .iter()
+            .filter(|s| s.attribute == attribute && s.location.file == within.file && (s.location.line, s.location.col) >= (within.line, within.col))
+            .filter(|s| matches(&s.value))
+            .min_by_key(|s| (s.location.line, s.location.col))
+            .map_or(within, |s| &s.location)
+    }
+
     /// The entity named `name`.
     pub fn entity(&self, name: &str) -> Option<&super::Entity> {
         self.entities.iter().find(|e| e.name == name)

@@ -22,6 +22,8 @@ pub struct Init {
 pub struct InitPrivate {
     pub entity: String,
     pub actions: Vec<Action>,
+    /// The `Private` element.
+    pub origin: Origin,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize)]

@@ -46,7 +46,7 @@ pub(crate) fn read_private_action(r: &mut Reader, cx: &Cx, wrapper: &Elem) -> Re
             match c.name.as_str() {
                 "SpeedAction" => speed_action(cx, c)?,
                 "LongitudinalDistanceAction" => PrivateAction::LongitudinalDistance {
-                    entity: cx.text(c, "entityRef")?,
+                    entity: cx.reference(c, "entityRef")?,
                     distance: cx.opt_f64(c, "distance")?,
                     time_gap: cx.opt_f64(c, "timeGap")?,
                     freespace: cx.bool_or(c, "freespace", false)?,
@@ -56,7 +56,7 @@ pub(crate) fn read_private_action(r: &mut Reader, cx: &Cx, wrapper: &Elem) -> Re
                     constraints: constraints(cx, c)?,
                 },
                 "SpeedProfileAction" => PrivateAction::SpeedProfile {
-                    entity: cx.opt_text(c, "entityRef")?,
+                    entity: cx.opt_reference(c, "entityRef")?,
                     following_mode: cx.opt_enum(c, "followingMode")?.unwrap_or(FollowingMode::Follow),
                     constraints: constraints(cx, c)?,
                     entries: c
@@ -75,7 +75,7 @@ pub(crate) fn read_private_action(r: &mut Reader, cx: &Cx, wrapper: &Elem) -> Re
                     let d = cx.child(c, "LaneOffsetActionDynamics")?;
                     let t = cx.choice(cx.child(c, "LaneOffsetTarget")?, "RelativeTargetLaneOffset or AbsoluteTargetLaneOffset")?;
                     let target = match t.name.as_str() {
-                        "RelativeTargetLaneOffset" => LaneOffsetTarget::Relative { entity: cx.text(t, "entityRef")?, value: cx.f64(t, "value")? },
+                        "RelativeTargetLaneOffset" => LaneOffsetTarget::Relative { entity: cx.reference(t, "entityRef")?, value: cx.f64(t, "value")? },
                         "AbsoluteTargetLaneOffset" => LaneOffsetTarget::Absolute { value: cx.f64(t, "value")? },
                         _ => return Err(cx.unexpected(t, "LaneOffsetTarget", "RelativeTargetLaneOffset, AbsoluteTargetLaneOffset")),
                     };
@@ -87,7 +87,7 @@ pub(crate) fn read_private_action(r: &mut Reader, cx: &Cx, wrapper: &Elem) -> Re
                     }
                 }
                 "LateralDistanceAction" => PrivateAction::LateralDistance {
-                    entity: cx.text(c, "entityRef")?,
+                    entity: cx.reference(c, "entityRef")?,
                     distance: cx.opt_f64(c, "distance")?,
                     freespace: cx.bool_or(c, "freespace", false)?,
                     continuous: cx.bool_or(c, "continuous", false)?,
@@ -189,7 +189,7 @@ pub(crate) fn read_private_action(r: &mut Reader, cx: &Cx, wrapper: &Elem) -> Re
         "TrailerAction" => {
             let c = cx.choice(e, "ConnectTrailerAction or DisconnectTrailerAction")?;
             match c.name.as_str() {
-                "ConnectTrailerAction" => PrivateAction::ConnectTrailer { trailer: cx.text(c, "trailerRef")? },
+                "ConnectTrailerAction" => PrivateAction::ConnectTrailer { trailer: cx.reference(c, "trailerRef")? },
                 "DisconnectTrailerAction" => PrivateAction::DisconnectTrailer,
                 _ => return Ok(unsupported(r, cx, c, "TrailerAction")),
             }
@@ -228,7 +228,7 @@ fn speed_action(cx: &Cx, c: &Elem) -> Result<PrivateAction, Error> {
     let target = match t.name.as_str() {
         "AbsoluteTargetSpeed" => SpeedTarget::Absolute { value: cx.f64(t, "value")? },
         "RelativeTargetSpeed" => SpeedTarget::Relative {
-            entity: cx.text(t, "entityRef")?,
+            entity: cx.reference(t, "entityRef")?,
             value: cx.f64(t, "value")?,
             value_type: cx.enum_(t, "speedTargetValueType")?,
             continuous: cx.bool_or(t, "continuous", false)?,
@@ -242,7 +242,7 @@ fn lane_change(cx: &Cx, c: &Elem) -> Result<PrivateAction, Error> {
     let dynamics = transition_dynamics(cx, cx.child(c, "LaneChangeActionDynamics")?)?;
     let t = cx.choice(cx.child(c, "LaneChangeTarget")?, "RelativeTargetLane or AbsoluteTargetLane")?;
     let target = match t.name.as_str() {
-        "RelativeTargetLane" => LaneChangeTarget::Relative { entity: cx.text(t, "entityRef")?, value: lane_id(cx, t, "value")? },
+        "RelativeTargetLane" => LaneChangeTarget::Relative { entity: cx.reference(t, "entityRef")?, value: lane_id(cx, t, "value")? },
         "AbsoluteTargetLane" => LaneChangeTarget::Absolute { lane_id: lane_id(cx, t, "value")? },
         _ => return Err(cx.unexpected(t, "LaneChangeTarget", "RelativeTargetLane, AbsoluteTargetLane")),
     };
@@ -255,7 +255,7 @@ fn activate_controller(cx: &Cx, e: &Elem) -> Result<PrivateAction, Error> {
         longitudinal: cx.opt_bool(e, "longitudinal")?,
         lighting: cx.opt_bool(e, "lighting")?,
         animation: cx.opt_bool(e, "animation")?,
-        controller_ref: cx.opt_text(e, "controllerRef")?,
+        controller_ref: cx.opt_reference(e, "controllerRef")?,
     })
 }
 
@@ -285,7 +285,7 @@ fn synchronize(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<PrivateAction, Error
     let tpm = cx.child(e, "TargetPositionMaster")?;
     let tp = cx.child(e, "TargetPosition")?;
     Ok(PrivateAction::Synchronize {
-        master: cx.text(e, "masterEntityRef")?,
+        master: cx.reference(e, "masterEntityRef")?,
         target_position_master: read_position_kind(r, cx, cx.choice(tpm, "a position")?)?,
         target_position: read_position_kind(r, cx, cx.choice(tp, "a position")?)?,
         final_speed,

@@ -53,7 +53,7 @@ fn options(cx: &Cx, e: &Elem) -> Result<DistanceOptions, Error> {
 fn by_entity(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<ConditionKind, Error> {
     let te = cx.child(e, "TriggeringEntities")?;
     let rule = cx.opt_enum(te, "triggeringEntitiesRule")?.unwrap_or(TriggeringEntitiesRule::Any);
-    let entities = te.children_named("EntityRef").map(|x| cx.text(x, "entityRef")).collect::<Result<Vec<_>, _>>()?;
+    let entities = te.children_named("EntityRef").map(|x| cx.reference(x, "entityRef")).collect::<Result<Vec<_>, _>>()?;
     let ec = cx.child(e, "EntityCondition")?;
     let c = cx.choice(ec, "an entity condition")?;
     let condition = match c.name.as_str() {
@@ -63,19 +63,22 @@ fn by_entity(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<ConditionKind, Error> 
         "CollisionCondition" => {
             let t = cx.choice(c, "EntityRef or ByType")?;
             let target = match t.name.as_str() {
-                "EntityRef" => CollisionTarget::Entity(cx.text(t, "entityRef")?),
+                "EntityRef" => CollisionTarget::Entity(cx.reference(t, "entityRef")?),
                 "ByType" => CollisionTarget::ByType(cx.enum_(t, "type")?),
                 _ => return Err(cx.unexpected(t, "CollisionCondition", "EntityRef, ByType")),
             };
             EntityCondition::Collision { target }
         }
-        "TimeHeadwayCondition" => {
-            EntityCondition::TimeHeadway { entity: cx.text(c, "entityRef")?, value: cx.f64(c, "value")?, rule: cx.enum_(c, "rule")?, options: options(cx, c)? }
-        }
+        "TimeHeadwayCondition" => EntityCondition::TimeHeadway {
+            entity: cx.reference(c, "entityRef")?,
+            value: cx.f64(c, "value")?,
+            rule: cx.enum_(c, "rule")?,
+            options: options(cx, c)?,
+        },
         "TimeToCollisionCondition" => {
             let t = cx.choice(cx.child(c, "TimeToCollisionConditionTarget")?, "Position or EntityRef")?;
             let target = match t.name.as_str() {
-                "EntityRef" => TtcTarget::Entity(cx.text(t, "entityRef")?),
+                "EntityRef" => TtcTarget::Entity(cx.reference(t, "entityRef")?),
                 "Position" => TtcTarget::Position(read_position(r, cx, t)?),
                 _ => return Err(cx.unexpected(t, "TimeToCollisionConditionTarget", "Position, EntityRef")),
             };
@@ -86,7 +89,7 @@ fn by_entity(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<ConditionKind, Error> 
         }
         "SpeedCondition" => EntityCondition::Speed { value: cx.f64(c, "value")?, rule: cx.enum_(c, "rule")?, direction: cx.opt_enum(c, "direction")? },
         "RelativeSpeedCondition" => EntityCondition::RelativeSpeed {
-            entity: cx.text(c, "entityRef")?,
+            entity: cx.reference(c, "entityRef")?,
             value: cx.f64(c, "value")?,
             rule: cx.enum_(c, "rule")?,
             direction: cx.opt_enum(c, "direction")?,
@@ -102,13 +105,13 @@ fn by_entity(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<ConditionKind, Error> 
             options: options(cx, c)?,
         },
         "RelativeDistanceCondition" => EntityCondition::RelativeDistance {
-            entity: cx.text(c, "entityRef")?,
+            entity: cx.reference(c, "entityRef")?,
             value: cx.f64(c, "value")?,
             rule: cx.enum_(c, "rule")?,
             options: options(cx, c)?,
         },
         "RelativeClearanceCondition" => EntityCondition::RelativeClearance {
-            entities: c.children_named("EntityRef").map(|x| cx.text(x, "entityRef")).collect::<Result<_, _>>()?,
+            entities: c.children_named("EntityRef").map(|x| cx.reference(x, "entityRef")).collect::<Result<_, _>>()?,
             opposite_lanes: cx.bool_or(c, "oppositeLanes", false)?,
             free_space: cx.bool_or(c, "freeSpace", false)?,
             distance_forward: cx.opt_f64(c, "distanceForward")?,
@@ -128,7 +131,7 @@ fn by_entity(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<ConditionKind, Error> 
             coordinate_system: cx.opt_enum(c, "coordinateSystem")?,
         },
         "RelativeAngleCondition" => EntityCondition::RelativeAngle {
-            entity: cx.text(c, "entityRef")?,
+            entity: cx.reference(c, "entityRef")?,
             angle_type: cx.enum_(c, "angleType")?,
             angle: cx.f64(c, "angle")?,
             tolerance: cx.f64(c, "angleTolerance")?,
@@ -153,13 +156,13 @@ fn by_value(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<ConditionKind, Error> {
         "SimulationTimeCondition" => ValueCondition::SimulationTime { value: cx.f64(c, "value")?, rule: cx.enum_(c, "rule")? },
         "StoryboardElementStateCondition" => ValueCondition::StoryboardElementState {
             element_type: cx.enum_(c, "storyboardElementType")?,
-            element: cx.text(c, "storyboardElementRef")?,
+            element: cx.reference(c, "storyboardElementRef")?,
             state: cx.enum_(c, "state")?,
         },
         "UserDefinedValueCondition" => ValueCondition::UserDefinedValue { name: cx.text(c, "name")?, value: cx.text(c, "value")?, rule: cx.enum_(c, "rule")? },
-        "TrafficSignalCondition" => ValueCondition::TrafficSignal { name: cx.text(c, "name")?, state: cx.text(c, "state")? },
+        "TrafficSignalCondition" => ValueCondition::TrafficSignal { name: cx.reference(c, "name")?, state: cx.text(c, "state")? },
         "TrafficSignalControllerCondition" => {
-            ValueCondition::TrafficSignalController { controller: cx.text(c, "trafficSignalControllerRef")?, phase: cx.text(c, "phase")? }
+            ValueCondition::TrafficSignalController { controller: cx.reference(c, "trafficSignalControllerRef")?, phase: cx.text(c, "phase")? }
         }
         _ => {
             r.unsupported(cx, c, "ByValueCondition");

@@ -76,22 +76,23 @@ pub(crate) fn read_entity_object_entry(r: &mut Reader, cx: &Cx, e: &Elem, asg: &
 fn read_vehicle(r: &mut Reader, cx: &Cx, e: &Elem, asg: &[(String, String)]) -> Result<Vehicle, Error> {
     let parameters = r.declarations(cx, e, asg)?;
     let scope = cx.scope.child(parameters.clone());
-    let cx = Cx::new(cx.file.clone(), &scope);
+    let cx = cx.scoped(&scope);
     let perf = cx.child(e, "Performance")?;
     let axles = cx.child(e, "Axles")?;
     let trailer = match e.child("Trailer") {
         None => None,
         Some(t) => match t.first_child() {
-            Some(c) if c.name == "TrailerRef" => Some(Trailer::Ref(cx.text(c, "entityRef")?)),
+            Some(c) if c.name == "TrailerRef" => Some(Trailer::Ref(cx.reference(c, "entityRef")?)),
             Some(c) if c.name == "Trailer" => Some(Trailer::Entity(Box::new(read_scenario_object(r, &cx, c)?))),
-            Some(c) if c.name == "EntityRef" => Some(Trailer::Ref(cx.text(c, "entityRef")?)),
+            Some(c) if c.name == "EntityRef" => Some(Trailer::Ref(cx.reference(c, "entityRef")?)),
             Some(c) => return Err(cx.unexpected(c, "Trailer", "Trailer, TrailerRef")),
             None => None,
         },
     };
     Ok(Vehicle {
         name: cx.text(e, "name")?,
-        category: cx.enum_(e, "vehicleCategory")?,
+        // esmini compares the category exactly and keeps its default, car, for any other text
+        category: cx.enum_or_esmini_default(e, "vehicleCategory", VehicleCategory::Car)?,
         role: cx.opt_enum(e, "role")?,
         mass: cx.opt_f64(e, "mass")?,
         model3d: cx.opt_text(e, "model3d")?,
@@ -119,10 +120,11 @@ fn read_vehicle(r: &mut Reader, cx: &Cx, e: &Elem, asg: &[(String, String)]) -> 
 fn read_pedestrian(r: &mut Reader, cx: &Cx, e: &Elem, asg: &[(String, String)]) -> Result<Pedestrian, Error> {
     let parameters = r.declarations(cx, e, asg)?;
     let scope = cx.scope.child(parameters.clone());
-    let cx = Cx::new(cx.file.clone(), &scope);
+    let cx = cx.scoped(&scope);
     Ok(Pedestrian {
         name: cx.text(e, "name")?,
-        category: cx.enum_(e, "pedestrianCategory")?,
+        // as for vehicles: esmini's default is pedestrian
+        category: cx.enum_or_esmini_default(e, "pedestrianCategory", PedestrianCategory::Pedestrian)?,
         role: cx.opt_enum(e, "role")?,
         mass: cx.f64_or(e, "mass", 0.0)?,
         // `model` is the 1.0 spelling of `model3d`.
@@ -139,7 +141,7 @@ fn read_pedestrian(r: &mut Reader, cx: &Cx, e: &Elem, asg: &[(String, String)]) 
 fn read_misc_object(r: &mut Reader, cx: &Cx, e: &Elem, asg: &[(String, String)]) -> Result<MiscObject, Error> {
     let parameters = r.declarations(cx, e, asg)?;
     let scope = cx.scope.child(parameters.clone());
-    let cx = Cx::new(cx.file.clone(), &scope);
+    let cx = cx.scoped(&scope);
     Ok(MiscObject {
         name: cx.text(e, "name")?,
         category: cx.enum_(e, "miscObjectCategory")?,
@@ -151,24 +153,26 @@ fn read_misc_object(r: &mut Reader, cx: &Cx, e: &Elem, asg: &[(String, String)])
     })
 }
 
+/// esmini reads a bounding box and the axles with `std::stof`, which stops the run on text that
+/// is not a number: no `--lenient` reading of such text here (`f64_exact`).
 pub(crate) fn read_bounding_box(cx: &Cx, e: &Elem) -> Result<BoundingBox, Error> {
     let c = cx.child(e, "Center")?;
     let d = cx.child(e, "Dimensions")?;
     Ok(BoundingBox {
-        center: Vec3 { x: cx.f64(c, "x")?, y: cx.f64(c, "y")?, z: cx.f64(c, "z")? },
-        width: cx.f64(d, "width")?,
-        length: cx.f64(d, "length")?,
-        height: cx.f64(d, "height")?,
+        center: Vec3 { x: cx.f64_exact(c, "x")?, y: cx.f64_exact(c, "y")?, z: cx.f64_exact(c, "z")? },
+        width: cx.f64_exact(d, "width")?,
+        length: cx.f64_exact(d, "length")?,
+        height: cx.f64_exact(d, "height")?,
     })
 }
 
 fn read_axle(cx: &Cx, e: &Elem) -> Result<Axle, Error> {
     Ok(Axle {
-        max_steering: cx.f64(e, "maxSteering")?,
-        wheel_diameter: cx.f64(e, "wheelDiameter")?,
-        track_width: cx.f64(e, "trackWidth")?,
-        position_x: cx.f64(e, "positionX")?,
-        position_z: cx.f64(e, "positionZ")?,
+        max_steering: cx.f64_exact(e, "maxSteering")?,
+        wheel_diameter: cx.f64_exact(e, "wheelDiameter")?,
+        track_width: cx.f64_exact(e, "trackWidth")?,
+        position_x: cx.f64_exact(e, "positionX")?,
+        position_z: cx.f64_exact(e, "positionZ")?,
     })
 }
 
@@ -189,7 +193,7 @@ pub(crate) fn read_properties(cx: &Cx, e: Option<&Elem>) -> Result<Properties, E
 pub(crate) fn read_controller(r: &mut Reader, cx: &Cx, e: &Elem, asg: &[(String, String)]) -> Result<Controller, Error> {
     let parameters = r.declarations(cx, e, asg)?;
     let scope = cx.scope.child(parameters.clone());
-    let cx = Cx::new(cx.file.clone(), &scope);
+    let cx = cx.scoped(&scope);
     Ok(Controller {
         name: cx.text(e, "name")?,
         controller_type: cx.opt_enum(e, "controllerType")?,
@@ -215,7 +219,7 @@ fn read_selection(cx: &Cx, e: &Elem) -> Result<EntitySelection, Error> {
     if let Some(m) = e.child("Members") {
         for c in m.children() {
             match c.name.as_str() {
-                "EntityRef" => members.push(SelectionMember::Entity(cx.text(c, "entityRef")?)),
+                "EntityRef" => members.push(SelectionMember::Entity(cx.reference(c, "entityRef")?)),
                 "ByType" => members.push(SelectionMember::ByType(cx.enum_(c, "objectType")?)),
                 _ => return Err(cx.unexpected(c, "Members", "EntityRef, ByType")),
             }

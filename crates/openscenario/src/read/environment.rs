@@ -21,7 +21,7 @@ pub(crate) fn read_environment_ref(r: &mut Reader, cx: &Cx, wrapper: &Elem) -> R
 pub(crate) fn read_environment(r: &mut Reader, cx: &Cx, e: &Elem, asg: &[(String, String)]) -> Result<Environment, Error> {
     let parameters = r.declarations(cx, e, asg)?;
     let scope = cx.scope.child(parameters.clone());
-    let cx = Cx::new(cx.file.clone(), &scope);
+    let cx = cx.scoped(&scope);
     let time_of_day = e
         .child("TimeOfDay")
         .map(|t| Ok::<_, Error>(TimeOfDay { animation: cx.bool_or(t, "animation", false)?, date_time: cx.text(t, "dateTime")? }))

@@ -39,7 +39,7 @@ pub(crate) fn read_global_action(r: &mut Reader, cx: &Cx, wrapper: &Elem) -> Res
     let a = match e.name.as_str() {
         "EnvironmentAction" => GlobalAction::Environment(read_environment_ref(r, cx, e)?),
         "EntityAction" => {
-            let entity = cx.text(e, "entityRef")?;
+            let entity = cx.reference(e, "entityRef")?;
             let c = cx.choice(e, "AddEntityAction or DeleteEntityAction")?;
             match c.name.as_str() {
                 "AddEntityAction" => GlobalAction::AddEntity { entity, position: read_position(r, cx, cx.child(c, "Position")?)? },
@@ -63,9 +63,9 @@ pub(crate) fn read_global_action(r: &mut Reader, cx: &Cx, wrapper: &Elem) -> Res
             let tsa = cx.child(e, "TrafficSignalAction")?;
             let c = cx.choice(tsa, "TrafficSignalControllerAction or TrafficSignalStateAction")?;
             match c.name.as_str() {
-                "TrafficSignalStateAction" => GlobalAction::TrafficSignalState { name: cx.text(c, "name")?, state: cx.text(c, "state")? },
+                "TrafficSignalStateAction" => GlobalAction::TrafficSignalState { name: cx.reference(c, "name")?, state: cx.text(c, "state")? },
                 "TrafficSignalControllerAction" => {
-                    GlobalAction::TrafficSignalController { controller: cx.text(c, "trafficSignalControllerRef")?, phase: cx.text(c, "phase")? }
+                    GlobalAction::TrafficSignalController { controller: cx.reference(c, "trafficSignalControllerRef")?, phase: cx.text(c, "phase")? }
                 }
                 _ => return Ok(unsupported(r, cx, c, "TrafficSignalAction")),
             }
@@ -87,7 +87,7 @@ pub(crate) fn read_global_action(r: &mut Reader, cx: &Cx, wrapper: &Elem) -> Res
                     definition: traffic_definition(r, cx, c)?,
                 },
                 "TrafficSwarmAction" => GlobalAction::TrafficSwarm {
-                    central_entity: cx.text(cx.child(c, "CentralObject")?, "entityRef")?,
+                    central_entity: cx.reference(cx.child(c, "CentralObject")?, "entityRef")?,
                     inner_radius: cx.f64(c, "innerRadius")?,
                     semi_major_axis: cx.f64(c, "semiMajorAxis")?,
                     semi_minor_axis: cx.f64(c, "semiMinorAxis")?,

@@ -14,7 +14,7 @@ pub(crate) use scenario::read_scenario;
 
 use crate::attr::Cx;
 use crate::catalog::{CatalogKind, CatalogStore};
-use crate::error::{Error, ErrorKind, Location, Warning};
+use crate::error::{Diagnostic, Error, ErrorKind, Location};
 use crate::params::{read_declarations, ParameterDeclaration, Scope};
 use crate::xml::Elem;
 
@@ -22,9 +22,9 @@ use crate::xml::Elem;
 const MAX_CATALOG_DEPTH: usize = 16;
 
 pub(crate) struct Reader {
-    pub warnings: Vec<Warning>,
+    pub warnings: Vec<Diagnostic>,
     /// What a strict reading rejects (see `Loaded::problems`).
-    pub problems: Vec<Warning>,
+    pub problems: Vec<Diagnostic>,
     pub catalogs: CatalogStore,
     catalog_depth: usize,
     /// `LoadOptions::go_on_without_catalogs`.
@@ -37,7 +37,7 @@ impl Reader {
     }
 
     pub(crate) fn warn(&mut self, location: Location, message: impl Into<String>) {
-        self.warnings.push(Warning { location, message: message.into() });
+        self.warnings.push(Diagnostic { location, message: message.into() });
     }
 
     /// Records an element the model does not represent yet.
@@ -48,13 +48,8 @@ impl Reader {
 
     /// Declarations of an entry (Vehicle, Maneuver, ...) resolved with `assignments`.
     pub(crate) fn declarations(&mut self, cx: &Cx, e: &Elem, assignments: &[(String, String)]) -> Result<Vec<ParameterDeclaration>, Error> {
-        let decls = read_declarations(e.child("ParameterDeclarations"), cx.scope, assignments, &cx.file, &mut self.warnings)?;
-        for (name, _) in assignments {
-            if !decls.iter().any(|d| &d.name == name) {
-                self.warn(cx.loc(e.pos), format!("parameter assignment '{name}' does not match any parameter declared by <{}>", e.name));
-            }
-        }
-        Ok(decls)
+        // an assignment that matches no declaration is said where it is written (`catalog_entry`)
+        read_declarations(e.child("ParameterDeclarations"), cx.scope, assignments, &cx.file, &mut self.warnings)
     }
 
     /// Resolves a CatalogReference element and reads the entry with `read`, which receives the
@@ -67,13 +62,15 @@ impl Reader {
         kinds: &[CatalogKind],
         read: impl FnOnce(&mut Reader, &Cx, &Elem, &[(String, String)]) -> Result<T, Error>,
     ) -> Result<T, Error> {
-        let catalog = cx.text(reference, "catalogName")?;
-        let entry = cx.text(reference, "entryName")?;
+        let catalog = cx.reference(reference, "catalogName")?;
+        let entry = cx.reference(reference, "entryName")?;
         let mut assignments = Vec::new();
+        let mut assigned_at = Vec::new();
         if let Some(pa) = reference.child("ParameterAssignments") {
             for a in pa.children_named("ParameterAssignment") {
                 let name = cx.name_ref(a, "parameterRef")?;
                 let value = cx.text(a, "value")?;
+                assigned_at.push((name.clone(), a.attr("parameterRef").map_or(a.pos, |r| r.pos)));
                 match assignments.iter_mut().find(|(n, _): &&mut (String, String)| n == &name) {
                     Some(slot) => slot.1 = value,
                     None => assignments.push((name, value)),
@@ -84,7 +81,9 @@ impl Reader {
         if self.catalog_depth >= MAX_CATALOG_DEPTH {
             return Err(Error::new(ErrorKind::Limit, at, format!("catalog references nested deeper than {MAX_CATALOG_DEPTH}")));
         }
-        let found = self.catalogs.find(kinds, &catalog, &entry, &at, &mut self.warnings)?;
+        // a catalog that cannot be found is said at its name, a missing entry at the entry's
+        let attr_at = |name: &str| cx.loc(reference.attr(name).map_or(reference.pos, |a| a.pos));
+        let found = self.catalogs.find(kinds, &catalog, &entry, (&attr_at("catalogName"), &attr_at("entryName")), &mut self.warnings)?;
         let Some(elem) = found.elem() else {
             return Err(Error::new(ErrorKind::MissingCatalogEntry, at, format!("catalog entry '{entry}' vanished")));
         };
@@ -96,8 +95,23 @@ impl Reader {
                 format!("catalog entry '{entry}' of catalog '{catalog}' is a <{}>, expected {}", elem.name, expected.join(" or ")),
             ));
         }
+        let declared: Vec<&str> = elem
+            .children_unmarked()
+            .iter()
+            .filter(|d| d.name == "ParameterDeclarations")
+            .flat_map(|d| d.children_unmarked())
+            .filter_map(|p| p.attrs.iter().find(|a| a.name == "name").map(|a| a.value.trim().trim_start_matches('$')))
+            .collect();
+        for (name, pos) in &assigned_at {
+            if !declared.contains(&name.as_str()) {
+                self.warn(
+                    cx.loc(*pos),
+                    format!("parameter assignment '{name}' does not match any parameter declared by <{}> '{entry}' of catalog '{catalog}'", elem.name),
+                );
+            }
+        }
         let scope = Scope { params: Vec::new(), parent: Some(cx.scope) };
-        let entry_cx = Cx::new(found.doc.file.clone(), &scope);
+        let entry_cx = cx.in_file(found.doc.file.clone(), &scope);
         self.catalog_depth += 1;
         let result = read(self, &entry_cx, elem, &assignments);
         self.catalog_depth -= 1;
@@ -119,10 +133,10 @@ impl Reader {
         match self.catalog_entry(cx, reference, kinds, read) {
             Err(e) if self.go_on_without_catalogs && matches!(e.kind, ErrorKind::MissingCatalog | ErrorKind::MissingCatalogEntry) => {
                 reference.announce();
-                // a problem either way: a conversion stops on it (the caller reads it as an error)
-                let gap = Warning { location: e.location.clone(), message: e.message.clone() };
-                if e.kind == ErrorKind::MissingCatalog {
-                    self.problems.push(Warning { message: format!("{} (what this file takes from the catalog is not checked)", gap.message), ..gap });
+                let gap = Diagnostic { location: e.location.clone(), message: e.message.clone() };
+                // a catalog missing from directories that are all there is a wrong name, not a gap
+                if e.kind == ErrorKind::MissingCatalog && !self.catalogs.all_directories_exist() {
+                    self.warnings.push(Diagnostic { message: format!("{} {}", gap.message, crate::CATALOG_NOT_CHECKED), ..gap });
                 } else {
                     self.problems.push(gap);
                 }

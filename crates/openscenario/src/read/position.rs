@@ -21,6 +21,9 @@ fn orientation(cx: &Cx, e: &Elem) -> Result<Option<Orientation>, Error> {
 
 pub(crate) fn lane_id(cx: &Cx, e: &Elem, name: &str) -> Result<i32, Error> {
     let v = cx.i64(e, name)?;
+    if let Some(a) = e.attr(name) {
+        cx.site(name, &v.to_string(), a.pos);
+    }
     i32::try_from(v).map_err(|_| cx.err(ErrorKind::Value, e.pos, format!("lane id {v} is out of range")))
 }
 
@@ -35,25 +38,25 @@ pub(crate) fn read_position_kind(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<Po
             r: cx.opt_f64(e, "r")?,
         },
         "RelativeWorldPosition" => Position::RelativeWorld {
-            entity: cx.text(e, "entityRef")?,
+            entity: cx.reference(e, "entityRef")?,
             dx: cx.f64(e, "dx")?,
             dy: cx.f64(e, "dy")?,
             dz: cx.opt_f64(e, "dz")?,
             orientation: orientation(cx, e)?,
         },
         "RelativeObjectPosition" => Position::RelativeObject {
-            entity: cx.text(e, "entityRef")?,
+            entity: cx.reference(e, "entityRef")?,
             dx: cx.f64(e, "dx")?,
             dy: cx.f64(e, "dy")?,
             dz: cx.opt_f64(e, "dz")?,
             orientation: orientation(cx, e)?,
         },
-        "RoadPosition" => Position::Road { road_id: cx.text(e, "roadId")?, s: cx.f64(e, "s")?, t: cx.f64(e, "t")?, orientation: orientation(cx, e)? },
+        "RoadPosition" => Position::Road { road_id: cx.reference(e, "roadId")?, s: cx.f64(e, "s")?, t: cx.f64(e, "t")?, orientation: orientation(cx, e)? },
         "RelativeRoadPosition" => {
-            Position::RelativeRoad { entity: cx.text(e, "entityRef")?, ds: cx.f64(e, "ds")?, dt: cx.f64(e, "dt")?, orientation: orientation(cx, e)? }
+            Position::RelativeRoad { entity: cx.reference(e, "entityRef")?, ds: cx.f64(e, "ds")?, dt: cx.f64(e, "dt")?, orientation: orientation(cx, e)? }
         }
         "LanePosition" => Position::Lane {
-            road_id: cx.text(e, "roadId")?,
+            road_id: cx.reference(e, "roadId")?,
             lane_id: lane_id(cx, e, "laneId")?,
             s: cx.f64(e, "s")?,
             offset: cx.f64_or(e, "offset", 0.0)?,
@@ -63,7 +66,7 @@ pub(crate) fn read_position_kind(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<Po
             let ds = cx.opt_f64(e, "ds")?;
             let ds_lane = cx.opt_f64(e, "dsLane")?;
             Position::RelativeLane {
-                entity: cx.text(e, "entityRef")?,
+                entity: cx.reference(e, "entityRef")?,
                 d_lane: i32::try_from(cx.i64(e, "dLane")?).map_err(|_| cx.err(ErrorKind::Value, e.pos, "dLane is out of range"))?,
                 ds: if ds.is_none() && ds_lane.is_none() { Some(0.0) } else { ds },
                 ds_lane,
@@ -76,7 +79,7 @@ pub(crate) fn read_position_kind(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<Po
             let irp = cx.child(e, "InRoutePosition")?;
             let c = cx.choice(irp, "FromCurrentEntity, FromRoadCoordinates or FromLaneCoordinates")?;
             let in_route = match c.name.as_str() {
-                "FromCurrentEntity" | "PositionOfCurrentEntity" => InRoutePosition::FromCurrentEntity { entity: cx.text(c, "entityRef")? },
+                "FromCurrentEntity" | "PositionOfCurrentEntity" => InRoutePosition::FromCurrentEntity { entity: cx.reference(c, "entityRef")? },
                 "FromRoadCoordinates" | "PositionInRoadCoordinates" => InRoutePosition::FromRoadCoordinates { path_s: cx.f64(c, "pathS")?, t: cx.f64(c, "t")? },
                 "FromLaneCoordinates" | "PositionInLaneCoordinates" => InRoutePosition::FromLaneCoordinates {
                     path_s: cx.f64(c, "pathS")?,

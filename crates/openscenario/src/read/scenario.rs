@@ -3,9 +3,9 @@
 use super::entity::read_entities;
 use super::storyboard::read_storyboard;
 use super::Reader;
-use crate::attr::Cx;
+use crate::attr::{Cx, Record};
 use crate::catalog::CatalogKind;
-use crate::error::{Error, Warning};
+use crate::error::{Diagnostic, Error};
 use crate::model::*;
 use crate::params::{read_declarations, ParameterDeclaration, Scope};
 use crate::xml::Elem;
@@ -13,21 +13,28 @@ use std::path::{Path, PathBuf};
 
 /// Reads a scenario root (`OpenSCENARIO` with a Storyboard). `overrides` replace the values
 /// of global parameters.
-pub(crate) fn read_scenario(r: &mut Reader, path: &Path, file: &std::sync::Arc<Path>, root: &Elem, overrides: &[(String, String)]) -> Result<Scenario, Error> {
+pub(crate) fn read_scenario(
+    r: &mut Reader,
+    record: &Record,
+    path: &Path,
+    file: &std::sync::Arc<Path>,
+    root: &Elem,
+    overrides: &[(String, String)],
+) -> Result<Scenario, Error> {
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
     let empty = Scope::default();
     let decls = root.child("ParameterDeclarations");
     let parameters = read_declarations(decls, &empty, overrides, file, &mut r.warnings)?;
     for (name, _) in overrides {
         if !parameters.iter().any(|p| &p.name == name) {
-            r.problems.push(Warning {
+            r.problems.push(Diagnostic {
                 location: crate::error::Location::file_only(path),
                 message: format!("parameter '{name}' given as an override (a distribution's run or --param) is not declared by the scenario"),
             });
         }
     }
     let scope = Scope { params: parameters.clone(), parent: None };
-    let cx = Cx::new(file.clone(), &scope);
+    let cx = Cx::new(file.clone(), &scope, record);
     let variables: Vec<ParameterDeclaration> = read_declarations(root.child("VariableDeclarations"), &scope, &[], file, &mut r.warnings)?;
 
     if let Some(cl) = root.child("CatalogLocations") {
@@ -72,7 +79,7 @@ pub(crate) fn read_scenario(r: &mut Reader, path: &Path, file: &std::sync::Arc<P
             r.unsupported(&cx, c, "OpenSCENARIO");
         }
     }
-    Ok(Scenario { path: path.to_path_buf(), header, parameters, variables, road_network, entities, entity_selections, storyboard })
+    Ok(Scenario { path: path.to_path_buf(), header, parameters, variables, road_network, entities, entity_selections, storyboard, reference_sites: Vec::new() })
 }
 
 fn read_road_network(r: &mut Reader, cx: &Cx, e: Option<&Elem>, dir: &Path) -> Result<RoadNetwork, Error> {
@@ -109,7 +116,7 @@ fn read_road_network(r: &mut Reader, cx: &Cx, e: Option<&Elem>, dir: &Path) -> R
                     duration: cx.f64(p, "duration")?,
                     states: p
                         .children_named("TrafficSignalState")
-                        .map(|s| Ok((cx.text(s, "trafficSignalId")?, cx.text(s, "state")?)))
+                        .map(|s| Ok((cx.reference(s, "trafficSignalId")?, cx.text(s, "state")?)))
                         .collect::<Result<_, Error>>()?,
                     group_state: p.child("TrafficSignalGroupState").map(|g| cx.text(g, "state")).transpose()?,
                 });
@@ -117,7 +124,7 @@ fn read_road_network(r: &mut Reader, cx: &Cx, e: Option<&Elem>, dir: &Path) -> R
             rn.traffic_signal_controllers.push(TrafficSignalController {
                 name: cx.text(c, "name")?,
                 delay: cx.opt_f64(c, "delay")?,
-                reference: cx.opt_text(c, "reference")?,
+                reference: cx.opt_reference(c, "reference")?,
                 phases,
                 origin: cx.loc(c.pos),
             });

@@ -18,7 +18,7 @@ pub(crate) fn read_storyboard(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<Story
                     init.global.push(Action { name: String::new(), kind: read_action_kind(r, cx, a)?, origin: cx.loc(a.pos) })
                 }
                 "Private" => {
-                    let entity = cx.text(a, "entityRef")?;
+                    let entity = cx.reference(a, "entityRef")?;
                     let mut list = Vec::new();
                     for p in a.children() {
                         if p.name == "PrivateAction" {
@@ -27,7 +27,7 @@ pub(crate) fn read_storyboard(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<Story
                             r.unsupported(cx, p, "Private");
                         }
                     }
-                    init.private.push(InitPrivate { entity, actions: list });
+                    init.private.push(InitPrivate { entity, actions: list, origin: cx.loc(a.pos) });
                 }
                 _ => r.unsupported(cx, a, "Init/Actions"),
             }
@@ -44,7 +44,7 @@ pub(crate) fn read_storyboard(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<Story
 fn read_story(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<Story, Error> {
     let parameters = r.declarations(cx, e, &[])?;
     let scope = cx.scope.child(parameters.clone());
-    let cx = Cx::new(cx.file.clone(), &scope);
+    let cx = cx.scoped(&scope);
     let mut acts = Vec::new();
     for a in e.children_named("Act") {
         let mut groups = Vec::new();
@@ -64,9 +64,10 @@ fn read_story(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<Story, Error> {
 
 fn read_group(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<ManeuverGroup, Error> {
     let (select, actors) = match e.child("Actors") {
-        Some(a) => {
-            (cx.bool_or(a, "selectTriggeringEntities", false)?, a.children_named("EntityRef").map(|x| cx.text(x, "entityRef")).collect::<Result<Vec<_>, _>>()?)
-        }
+        Some(a) => (
+            cx.bool_or(a, "selectTriggeringEntities", false)?,
+            a.children_named("EntityRef").map(|x| cx.reference(x, "entityRef")).collect::<Result<Vec<_>, _>>()?,
+        ),
         None => (false, Vec::new()),
     };
     let mut maneuvers = Vec::new();
@@ -93,7 +94,7 @@ fn read_group(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<ManeuverGroup, Error>
 pub(crate) fn read_maneuver(r: &mut Reader, cx: &Cx, e: &Elem, asg: &[(String, String)]) -> Result<Maneuver, Error> {
     let parameters = r.declarations(cx, e, asg)?;
     let scope = cx.scope.child(parameters.clone());
-    let cx = Cx::new(cx.file.clone(), &scope);
+    let cx = cx.scoped(&scope);
     let mut events = Vec::new();
     for ev in e.children_named("Event") {
         // An Action with no child is outside the schema, but esmini reads it as no action at all

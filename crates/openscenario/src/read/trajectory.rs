@@ -22,7 +22,7 @@ pub(crate) fn read_trajectory_ref(r: &mut Reader, cx: &Cx, wrapper: &Elem) -> Re
 pub(crate) fn read_trajectory(r: &mut Reader, cx: &Cx, e: &Elem, asg: &[(String, String)]) -> Result<Trajectory, Error> {
     let parameters = r.declarations(cx, e, asg)?;
     let scope = cx.scope.child(parameters.clone());
-    let cx = Cx::new(cx.file.clone(), &scope);
+    let cx = cx.scoped(&scope);
     let shape_el = cx.child(e, "Shape")?;
     let s = cx.choice(shape_el, "Polyline, Clothoid, ClothoidSpline or Nurbs")?;
     let shape = match s.name.as_str() {
@@ -91,7 +91,7 @@ pub(crate) fn read_route_ref(r: &mut Reader, cx: &Cx, wrapper: &Elem) -> Result<
 pub(crate) fn read_route(r: &mut Reader, cx: &Cx, e: &Elem, asg: &[(String, String)]) -> Result<Route, Error> {
     let parameters = r.declarations(cx, e, asg)?;
     let scope = cx.scope.child(parameters.clone());
-    let cx = Cx::new(cx.file.clone(), &scope);
+    let cx = cx.scoped(&scope);
     let waypoints = e
         .children_named("Waypoint")
         .map(|w| Ok(Waypoint { strategy: cx.enum_(w, "routeStrategy")?, position: read_position(r, &cx, cx.child(w, "Position")?)? }))

@@ -9,6 +9,9 @@
 //! elements, attributes and literals. An element the declared version does not know but a later
 //! one does is a warning (esmini and our reader accept such mixtures), not an error.
 
+mod declarations;
+mod names;
+mod operators;
 pub mod overrides;
 mod rules;
 mod values;
@@ -45,10 +48,14 @@ pub struct Finding {
 /// Validates one file. Never fails: an unreadable or malformed file is itself a finding.
 /// `injected` are `--param NAME=VALUE` overrides of global parameters, checked as such.
 pub fn validate_file(path: &Path, injected: &[(String, String)]) -> Vec<Finding> {
-    match xml::read_file(path) {
-        Ok(doc) => validate_doc(&doc, injected),
-        Err(e) => vec![Finding { severity: Severity::Error, location: e.location, message: e.message }],
-    }
+    validate_readable_file(path, injected).unwrap_or_else(|e| vec![Finding { severity: Severity::Error, location: e.location, message: e.message }])
+}
+
+/// Like [`validate_file`], but a file that cannot be read or is not well-formed XML (empty,
+/// cut off, too large) is the `Err`: no reading, lenient or not, can go on from it, so a caller
+/// that lets `--lenient` pass the schema's findings says it as what it is.
+pub fn validate_readable_file(path: &Path, injected: &[(String, String)]) -> Result<Vec<Finding>, crate::Error> {
+    xml::read_file(path).map(|doc| validate_doc(&doc, injected))
 }
 
 /// Validates text as if it were the file `path`.
@@ -61,20 +68,28 @@ pub fn validate_str(path: &Path, text: &str, injected: &[(String, String)]) -> V
 
 fn validate_doc(doc: &xml::Doc, injected: &[(String, String)]) -> Vec<Finding> {
     let (minor, version_note) = declared_minor(&doc.root);
-    let mut w =
-        Walker { file: doc.file.clone(), findings: Vec::new(), scopes: Vec::new(), variables: Vec::new(), declared: minor, injected: injected.to_vec() };
+    let in_catalog = doc.root.children_unmarked().iter().any(|c| c.name == "Catalog");
+    let mut w = Walker {
+        file: doc.file.clone(),
+        findings: Vec::new(),
+        scopes: Vec::new(),
+        variables: Vec::new(),
+        declared: minor,
+        injected: injected.to_vec(),
+        in_catalog,
+        at_root: true,
+    };
     if let Some((pos, note)) = version_note {
         w.push(Severity::Warning, pos, note);
     }
     let Some(schema) = schema::for_minor(minor) else { return w.findings };
     let root = &doc.root;
-    let Some(decl) = all_schemas(minor).find_map(|s| s.roots.iter().find(|r| r.name == root.name).map(|r| (s, r))) else {
+    // the schemas also declare a global <OpenScenario>, but a document's root is <OpenSCENARIO>
+    let decl = all_schemas(minor).find_map(|s| s.roots.iter().find(|r| r.name == root.name).map(|r| (s, r))).filter(|_| root.name == "OpenSCENARIO");
+    let Some(decl) = decl else {
         w.push(Severity::Error, root.pos, format!("<{}> is not an OpenSCENARIO document (its root element must be <OpenSCENARIO>)", root.name));
         return w.findings;
     };
-    if let Some(vars) = root.child("VariableDeclarations") {
-        w.declare_variables(vars);
-    }
     w.element(root, schema, &decl.1.type_name.clone());
     w.findings.sort_by_key(|f| (f.location.line, f.location.col));
     w.findings
@@ -118,6 +133,11 @@ struct Walker {
     declared: u16,
     /// Overrides of global parameters, applied (and then cleared) at the document element.
     injected: Vec<(String, String)>,
+    /// The file is a catalog: its entries may use parameters of the scenarios that refer to
+    /// them, so a parameter it does not declare is a warning, not an error.
+    in_catalog: bool,
+    /// The walk is at the document element (until it has been entered).
+    at_root: bool,
 }
 
 impl Walker {
@@ -144,8 +164,15 @@ impl Walker {
             let at = el.child("ParameterDeclarations").map_or(el.pos, |b| b.pos);
             self.inject(at);
         }
+        // variables are declared after the global parameters, whose values they may use
+        if std::mem::take(&mut self.at_root) {
+            if let Some(vars) = el.child("VariableDeclarations") {
+                self.declare_variables(vars);
+            }
+        }
         self.attributes(el, schema, type_name);
         self.cross_attribute_rules(el, type_name);
+        self.unique_names(el);
         if matches!(el.name.as_str(), "VariableAction" | "VariableCondition") {
             self.variable_use(el);
         }
@@ -294,7 +321,7 @@ impl Walker {
             LiteralCheck::Parameter => {
                 let name = attr.value.trim().trim_start_matches('$');
                 let Some(d) = self.lookup(name).cloned() else {
-                    self.push(Severity::Error, attr.pos, format!("{}: parameter '${name}' is not declared", what()));
+                    self.undeclared(attr.pos, &format!("{}: parameter '${name}'", what()));
                     return None;
                 };
                 let Some(value) = d.value else {
@@ -322,8 +349,9 @@ impl Walker {
                         Some(value)
                     }
                     Err(why) => {
+                        // in a catalog the value is a default the referring scenario may replace
                         self.push(
-                            Severity::Error,
+                            if self.in_catalog { Severity::Warning } else { Severity::Error },
                             attr.pos,
                             format!("{}: parameter '${name}' (declared {}): {why}", what(), values::parameter_type_name(d.primitive)),
                         );
@@ -336,7 +364,12 @@ impl Walker {
                     Ok(v) => v,
                     Err(e) => {
                         let col = attr.pos.col + u32::try_from(e.column).unwrap_or(0);
-                        self.push(Severity::Error, xml::Pos { line: attr.pos.line, col }, format!("{}: {}", what(), e.message));
+                        let at = xml::Pos { line: attr.pos.line, col };
+                        if e.kind == ErrorKind::UndeclaredParameter && self.in_catalog {
+                            self.undeclared(at, &format!("{}: {}", what(), e.message.trim_end_matches(" is not declared")));
+                        } else {
+                            self.push(Severity::Error, at, format!("{}: {}", what(), e.message));
+                        }
                         return None;
                     }
                 };
@@ -352,6 +385,7 @@ impl Walker {
                     );
                     return None;
                 }
+                self.expression_extensions(&el.name, attr);
                 match self.fits(kind, &value) {
                     Ok(()) => Some(value),
                     Err(why) => {
@@ -360,6 +394,23 @@ impl Walker {
                     }
                 }
             }
+        }
+    }
+
+    /// A parameter that no scope declares: an error, except in a catalog read alone, whose
+    /// entries may take parameters from the scenario that uses them (esmini resolves them so).
+    fn undeclared(&mut self, pos: xml::Pos, what: &str) {
+        if self.in_catalog {
+            self.push(
+                Severity::Warning,
+                pos,
+                format!(
+                    "{what} is not declared in this catalog: it resolves only in a scenario that declares it (the standard asks a catalog to declare \
+                     each parameter it uses, with a default value)"
+                ),
+            );
+        } else {
+            self.push(Severity::Error, pos, format!("{what} is not declared"));
         }
     }
 
@@ -424,151 +475,6 @@ impl Walker {
                     format!("<{}> has both the deprecated attribute '{deprecated}' and {clash}, which replaces it: keep only the latter", el.name),
                 );
             }
-        }
-    }
-
-    /// Applies `--param` overrides to the global scope: a value must be of the declared type, and
-    /// only a declared global parameter can be overridden.
-    fn inject(&mut self, block_pos: xml::Pos) {
-        for (name, value) in std::mem::take(&mut self.injected) {
-            let global = if self.scopes.len() == 1 { self.scopes.first_mut() } else { None };
-            let Some(d) = global.and_then(|s| s.iter_mut().rev().find(|d| d.name == name)) else {
-                self.push(
-                    Severity::Warning,
-                    block_pos,
-                    format!("--param {name}={value}: there is no global parameter '{name}' to override; the value is ignored"),
-                );
-                continue;
-            };
-            match values::fits_declared_type(d.primitive, &value) {
-                Ok(()) => d.value = Some(value),
-                Err(why) => {
-                    let (line, ty) = (d.line, values::parameter_type_name(d.primitive));
-                    self.push(
-                        Severity::Error,
-                        xml::Pos { line, col: 1 },
-                        format!("--param {name}={value}: parameter '{name}' is declared {ty} here, and {why}; the declared value is kept"),
-                    );
-                }
-            }
-        }
-    }
-
-    /// Reads a ParameterDeclarations block into the innermost scope, checking each declaration.
-    fn declare_parameters(&mut self, block: &Elem) {
-        for d in block.children_named("ParameterDeclaration") {
-            let declared = self.declaration(d, "parameterType", "parameter");
-            if let Some(declared) = declared {
-                if let Some(scope) = self.scopes.last_mut() {
-                    scope.push(declared);
-                }
-            }
-        }
-    }
-
-    fn declare_variables(&mut self, block: &Elem) {
-        self.scopes.push(Vec::new());
-        for d in block.children_named("VariableDeclaration") {
-            if let Some(v) = self.declaration(d, "variableType", "variable") {
-                self.variables.push(v);
-            }
-        }
-        self.scopes.pop();
-    }
-
-    fn declaration(&mut self, d: &Elem, type_attr: &str, noun: &str) -> Option<Declared> {
-        let name = d.attr("name")?.value.trim().trim_start_matches('$').to_string();
-        let primitive = values::primitive_of_parameter_type(d.attr(type_attr)?.value.trim())?;
-        let raw = d.attr("value")?;
-        let mut value = if raw.value.starts_with('$') {
-            match self.evaluate(&raw.value) {
-                Ok(v) => Some(v),
-                Err(e) => {
-                    self.push(Severity::Error, raw.pos, format!("{noun} '{name}': {}", e.message));
-                    None
-                }
-            }
-        } else {
-            Some(raw.value.clone())
-        };
-        if let Some(v) = &value {
-            if let Err(why) = values::fits_declared_type(primitive, v) {
-                self.push(Severity::Error, raw.pos, format!("{noun} '{name}' is declared {}, but its value {why}", values::parameter_type_name(primitive)));
-                value = None;
-            }
-        }
-        if let Some(v) = &value {
-            self.constraints(d, &name, primitive, v);
-        }
-        Some(Declared { name, primitive, value, line: d.pos.line })
-    }
-
-    /// ConstraintGroups: the value must satisfy every ValueConstraint of at least one group.
-    fn constraints(&mut self, d: &Elem, name: &str, primitive: Primitive, value: &str) {
-        let groups: Vec<&Elem> = d.children_named("ConstraintGroup").collect();
-        if groups.is_empty() {
-            return;
-        }
-        let Some(v) = values::ordered(primitive, value) else { return };
-        let mut any_group_holds = false;
-        for g in &groups {
-            let mut all = true;
-            for c in g.children_named("ValueConstraint") {
-                let (Some(rule), Some(bound)) = (c.attr("rule"), c.attr("value")) else { continue };
-                let Some(b) = values::ordered(primitive, &bound.value) else {
-                    self.push(
-                        Severity::Error,
-                        bound.pos,
-                        format!("parameter '{name}': the constraint value '{}' is not a {}", bound.value, values::parameter_type_name(primitive)),
-                    );
-                    all = false;
-                    continue;
-                };
-                if values::holds(&rule.value, &v, &b) != Some(true) {
-                    all = false;
-                }
-            }
-            any_group_holds |= all;
-        }
-        if !any_group_holds {
-            self.push(Severity::Error, d.pos, format!("parameter '{name}' = '{value}' satisfies none of its constraint groups"));
-        }
-    }
-
-    fn variable_use(&mut self, el: &Elem) {
-        let Some(r) = el.attr("variableRef") else { return };
-        let name = r.value.trim();
-        if name.starts_with('$') {
-            return;
-        }
-        let Some(var) = self.variables.iter().find(|v| v.name == name).cloned() else {
-            self.push(Severity::Error, r.pos, format!("<{}>: variable '{name}' is not declared", el.name));
-            return;
-        };
-        if el.name == "VariableCondition" {
-            if let Some(v) = el.attr("value") {
-                if let Err(why) = values::fits_declared_type(var.primitive, &v.value) {
-                    self.push(Severity::Error, v.pos, format!("variable '{name}' is {}: {why}", values::parameter_type_name(var.primitive)));
-                }
-            }
-            return;
-        }
-        if let Some(set) = el.child("SetAction") {
-            if let Some(v) = set.attr("value") {
-                if !v.value.starts_with('$') {
-                    if let Err(why) = values::fits_declared_type(var.primitive, &v.value) {
-                        self.push(Severity::Error, v.pos, format!("variable '{name}' is {}: {why}", values::parameter_type_name(var.primitive)));
-                    }
-                }
-            }
-        }
-        let modify = el.child("ModifyAction");
-        if let Some(modify) = modify.filter(|_| matches!(var.primitive, Primitive::Boolean | Primitive::String | Primitive::DateTime)) {
-            self.push(
-                Severity::Error,
-                modify.pos,
-                format!("variable '{name}' is {}; a ModifyAction (add or multiply) needs a numeric variable", values::parameter_type_name(var.primitive)),
-            );
         }
     }
 }

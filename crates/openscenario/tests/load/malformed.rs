@@ -17,6 +17,17 @@ fn at(e: &Error) -> (u32, u32) {
     (e.location.line, e.location.col)
 }
 
+/// The one problem of a file that loads (what esmini reads its own way: an error unless lenient).
+fn problem(text: &str) -> openscenario::Diagnostic {
+    match load_str(Path::new("/virtual/test.xosc"), text, &LoadOptions::default()) {
+        Ok(l) => {
+            assert_eq!(l.problems.len(), 1, "{:?}", l.problems);
+            l.problems[0].clone()
+        }
+        Err(e) => panic!("expected a problem, not an error: {e}"),
+    }
+}
+
 #[test]
 fn unclosed_tag() {
     let text = scenario("", "", r#"<ScenarioObject name="Ego">"#, "", "");
@@ -60,21 +71,29 @@ fn parameter_cycle() {
 
 #[test]
 fn bad_number() {
+    // a problem, read as esmini reads it (C's atof: the leading number)
     let text = scenario("", "", &car("Ego"), &teleport("Ego", "12.5.3"), "");
-    let e = fail(&text);
-    assert_eq!(e.kind, ErrorKind::Value);
-    assert!(e.message.contains("attribute 'x' of <WorldPosition>: expected a number, found '12.5.3'"), "{e}");
-    assert_eq!(at(&e), pos_of(&text, "12.5.3"));
+    let p = problem(&text);
+    assert!(p.message.contains("attribute 'x' of <WorldPosition>: expected a number, found '12.5.3'; esmini reads it as 12.5"), "{p}");
+    assert_eq!((p.location.line, p.location.col), pos_of(&text, "12.5.3"));
 }
 
 #[test]
 fn bad_number_through_a_parameter_names_both() {
     let params = r#"<ParameterDeclaration name="X" parameterType="string" value="far"/>"#;
     let text = scenario(params, "", &car("Ego"), &teleport("Ego", "$X"), "");
+    let p = problem(&text);
+    assert!(p.message.contains("found 'far' (from '$X'); esmini reads it as 0"), "{p}");
+    assert_eq!((p.location.line, p.location.col), pos_of(&text, "$X\""));
+}
+
+#[test]
+fn bad_number_where_esmini_stops_is_an_error() {
+    // esmini reads a bounding box with std::stof, which throws on text: no fallback
+    let text = scenario("", "", &car("Ego").replace(r#"width="2""#, r#"width="wide""#), "", "");
     let e = fail(&text);
     assert_eq!(e.kind, ErrorKind::Value);
-    assert!(e.message.contains("found 'far' (from '$X')"), "{e}");
-    assert_eq!(at(&e), pos_of(&text, "$X\""));
+    assert!(e.message.contains("attribute 'width' of <Dimensions>: expected a number, found 'wide'"), "{e}");
 }
 
 #[test]
@@ -91,11 +110,20 @@ fn expression_error_position() {
 
 #[test]
 fn bad_enumeration_lists_the_choices() {
-    let text = scenario("", "", &car("Ego").replace("vehicleCategory=\"car\"", "vehicleCategory=\"spaceship\""), "", "");
+    let init = r#"<Private entityRef="Ego"><PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="spaceship" value="1" dynamicsDimension="time"/><SpeedActionTarget><AbsoluteTargetSpeed value="1"/></SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction></Private>"#;
+    let text = scenario("", "", &car("Ego"), init, "");
     let e = fail(&text);
     assert_eq!(e.kind, ErrorKind::Value);
-    assert!(e.message.contains("expected one of car, van, truck"), "{e}");
+    assert!(e.message.contains("expected one of linear, cubic"), "{e}");
     assert_eq!(at(&e), pos_of(&text, "spaceship"));
+}
+
+#[test]
+fn an_unknown_vehicle_category_is_esmini_s_default() {
+    let text = scenario("", "", &car("Ego").replace("vehicleCategory=\"car\"", "vehicleCategory=\"spaceship\""), "", "");
+    let p = problem(&text);
+    assert!(p.message.contains("expected one of car, van, truck") && p.message.ends_with("esmini reads it as its default, car"), "{p}");
+    assert_eq!((p.location.line, p.location.col), pos_of(&text, "spaceship"));
 }
 
 #[test]
@@ -148,7 +176,8 @@ fn missing_catalog_entry() {
     let e = load(&dir.join("s.xosc"), &LoadOptions::default()).expect_err("error");
     assert_eq!(e.kind, ErrorKind::MissingCatalogEntry);
     assert!(e.message.contains("catalog 'Cars'") && e.message.contains("no entry named 'truck'"), "{e}");
-    assert_eq!(at(&e), pos_of(&text, "<CatalogReference"));
+    // at the entry's name
+    assert_eq!(at(&e), pos_of(&text, "truck\""));
 }
 
 #[test]
@@ -162,7 +191,8 @@ fn missing_catalog_names_the_directories_tried() {
     assert_eq!(e.kind, ErrorKind::MissingCatalog);
     assert!(e.message.contains("catalog 'Trucks'"), "{e}");
     assert!(e.message.contains(&dir.join("Vehicles").display().to_string()), "{e}");
-    assert_eq!(at(&e), pos_of(&text, "<CatalogReference"));
+    // at the catalog's name
+    assert_eq!(at(&e), pos_of(&text, "Trucks\""));
 }
 
 #[test]

@@ -6,7 +6,7 @@ use crate::common::{car, scenario, teleport, temp_dir};
 use openscenario::*;
 use std::path::Path;
 
-fn ok(text: &str, options: &LoadOptions) -> (Scenario, Vec<Warning>) {
+fn ok(text: &str, options: &LoadOptions) -> (Scenario, Vec<Diagnostic>) {
     match load_str(Path::new("/virtual/test.xosc"), text, options) {
         // The test scenarios name a road network that does not exist: that warning is expected.
         // Problems a strict reading rejects are returned with the warnings here (lenient view).

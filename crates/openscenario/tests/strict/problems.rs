@@ -5,7 +5,7 @@
 use openscenario::*;
 use std::path::Path;
 
-fn problems(text: &str, overrides: &[(&str, &str)]) -> Vec<Warning> {
+fn problems(text: &str, overrides: &[(&str, &str)]) -> Vec<Diagnostic> {
     let options = LoadOptions { parameters: overrides.iter().map(|(a, b)| (a.to_string(), b.to_string())).collect(), seed: None, ..Default::default() };
     match load_str(Path::new("/virtual/strict.xosc"), text, &options) {
         Ok(l) => l.problems,
@@ -51,7 +51,7 @@ fn story(actor: &str, action: &str, condition: &str) -> String {
 const SIM_TIME: &str = r#"<ByValueCondition><SimulationTimeCondition value="1" rule="greaterThan"/></ByValueCondition>"#;
 const SPEED: &str = r#"<PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="step" value="0" dynamicsDimension="time"/><SpeedActionTarget><AbsoluteTargetSpeed value="1"/></SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction>"#;
 
-fn one(found: &[Warning]) -> &Warning {
+fn one(found: &[Diagnostic]) -> &Diagnostic {
     assert_eq!(found.len(), 1, "{found:?}");
     &found[0]
 }
@@ -65,9 +65,9 @@ fn a_valid_scenario_has_no_problem() {
 fn init_actions_for_an_undeclared_entity() {
     let found = problems(&scenario(&teleport("Nobody"), ""), &[]);
     let p = one(&found);
-    // line 9 holds the Init private; `<Private entityRef="Nobody">` is 28 characters, so its
-    // PrivateAction starts at column 29
-    assert_eq!((p.location.line, p.location.col), (9, 29), "{p}");
+    // line 9 holds the Init private; the value of its entityRef starts at column 21, after
+    // `<Private entityRef="` (20 characters)
+    assert_eq!((p.location.line, p.location.col), (9, 21), "{p}");
     assert!(p.message.contains("`Nobody` is not an entity"), "{p}");
 }
 
@@ -97,10 +97,14 @@ fn a_condition_on_what_does_not_exist() {
         (r#"<ByValueCondition><VariableCondition variableRef="NoVar" value="1" rule="equalTo"/></ByValueCondition>"#, "variable `NoVar`"),
     ];
     for (condition, expected) in cases {
-        let found = problems(&scenario(&teleport("Ego"), &story("Ego", SPEED, condition)), &[]);
+        let text = scenario(&teleport("Ego"), &story("Ego", SPEED, condition));
+        let found = problems(&text, &[]);
         let p = one(&found);
         assert!(p.message.contains(expected), "{p}");
-        assert_eq!((p.location.line, p.location.col), (14, 1), "{p}");
+        // at the value of the attribute that names it (the condition is on line 14)
+        let name = expected.trim_start_matches("parameter ").trim_start_matches("variable ").trim_matches('`');
+        let column = text.lines().nth(13).and_then(|l| l.find(&format!("\"{name}\""))).expect("the name on line 14") + 2;
+        assert_eq!((p.location.line, p.location.col), (14, column as u32), "{p}");
     }
     // an element of the right type and name is found, also by a `::` path
     let path = r#"<ByValueCondition><StoryboardElementStateCondition storyboardElementType="event" storyboardElementRef="S::A::G::M::E" state="endTransition"/></ByValueCondition>"#;

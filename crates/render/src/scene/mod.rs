@@ -18,7 +18,7 @@ use std::collections::BTreeMap;
 use commonroad::{ObstacleId, PlanningProblemSet, Scenario};
 
 use crate::ego::find_ego;
-use crate::error::RenderError;
+use crate::error::Error;
 use crate::frame::{plan, Purpose, ViewPlan};
 use crate::layout::{DrawnObstacle, Label, Layout, PxRect};
 use crate::options::{Mark, RenderOptions};
@@ -58,7 +58,7 @@ impl<'a> Prepared<'a> {
         purpose: Purpose,
         aspect: Option<f64>,
         legend: bool,
-    ) -> Result<Self, RenderError> {
+    ) -> Result<Self, Error> {
         options.check()?;
         let ego = find_ego(scenario, problems, options.ego)?;
         let timed = !(scenario.dynamic_obstacles.is_empty() && scenario.network.traffic_lights.is_empty());
@@ -93,7 +93,7 @@ impl<'a> Prepared<'a> {
     }
 
     /// A still at `step` (framed at that time, with its trails).
-    pub fn still_at(scenario: &'a Scenario, problems: Option<&'a PlanningProblemSet>, options: &RenderOptions, step: u64) -> Result<Self, RenderError> {
+    pub fn still_at(scenario: &'a Scenario, problems: Option<&'a PlanningProblemSet>, options: &RenderOptions, step: u64) -> Result<Self, Error> {
         let trail_steps = step_of(options.trail, scenario.header.time_step_size);
         Self::new(scenario, problems, options, Purpose::Still { step, trail_steps }, None, true)
     }

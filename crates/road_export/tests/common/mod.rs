@@ -35,8 +35,8 @@ pub(crate) fn corpus_maps(shared: &Path) -> Vec<Map> {
     let mut out: Vec<Map> = Vec::new();
     for f in testkit::files_with_ext(&corpus, "xosc") {
         let name = f.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
-        let request = convert::Request { path: &f, name: &name, config: 1, parameters: &[], source: String::new() };
-        let (_conversion, model) = convert::convert_scenario_keeping(&request, &options, true);
+        let request = convert::Request::named(&f, &name).keeping_model();
+        let (_conversion, model) = convert::convert(&request, &options);
         let Some(model) = model else { continue };
         let network = model.scenario.network;
         if network.lanelets.is_empty() || out.iter().any(|m| m.network.lanelets == network.lanelets) {

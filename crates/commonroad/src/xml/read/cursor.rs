@@ -5,13 +5,14 @@ use std::path::Path;
 
 use roxmltree::{Document, Node};
 
-use super::error::{ReadError, ReadWarning};
 use crate::geometry::Point;
+use crate::Error;
+use diagnostic::{Diagnostic, Location};
 
 pub(crate) struct Cursor<'d, 'i> {
     doc: &'d Document<'i>,
     path: &'d Path,
-    warnings: Vec<ReadWarning>,
+    warnings: Vec<Diagnostic>,
 }
 
 impl<'d, 'i> Cursor<'d, 'i> {
@@ -25,18 +26,18 @@ impl<'d, 'i> Cursor<'d, 'i> {
     }
 
     /// An error at `node`.
-    pub(super) fn err(&self, node: Node, message: impl Into<String>) -> ReadError {
+    pub(super) fn err(&self, node: Node, message: impl Into<String>) -> Error {
         let (line, column) = self.pos(node);
-        ReadError::Invalid { path: self.path.to_path_buf(), line, column, message: message.into() }
+        Error::Invalid { location: Location::new(self.path, line, column), message: message.into() }
     }
 
     /// A warning at `node`.
     pub(super) fn warn(&mut self, node: Node, message: impl Into<String>) {
         let (line, column) = self.pos(node);
-        self.warnings.push(ReadWarning { path: self.path.to_path_buf(), line, column, message: message.into() });
+        self.warnings.push(Diagnostic::new(Location::new(self.path, line, column), message));
     }
 
-    pub(super) fn into_warnings(self) -> Vec<ReadWarning> {
+    pub(super) fn into_warnings(self) -> Vec<Diagnostic> {
         self.warnings
     }
 
@@ -46,13 +47,13 @@ impl<'d, 'i> Cursor<'d, 'i> {
     }
 
     /// A required child element.
-    pub(super) fn req<'a, 'x>(&self, node: Node<'a, 'x>, name: &str) -> Result<Node<'a, 'x>, ReadError> {
+    pub(super) fn req<'a, 'x>(&self, node: Node<'a, 'x>, name: &str) -> Result<Node<'a, 'x>, Error> {
         child(node, name).ok_or_else(|| self.err(node, format!("<{}> needs a <{name}> child", node.tag_name().name())))
     }
 
     /// The text of `node` as a finite number (xs:decimal; an exponent is tolerated like
     /// commonroad-io does).
-    pub(super) fn f64(&self, node: Node) -> Result<f64, ReadError> {
+    pub(super) fn f64(&self, node: Node) -> Result<f64, Error> {
         let t = self.text(node);
         match t.parse::<f64>() {
             Ok(v) if v.is_finite() => Ok(v),
@@ -61,18 +62,18 @@ impl<'d, 'i> Cursor<'d, 'i> {
     }
 
     /// The text of `node` as a non-negative integer.
-    pub(super) fn u64(&self, node: Node) -> Result<u64, ReadError> {
+    pub(super) fn u64(&self, node: Node) -> Result<u64, Error> {
         let t = self.text(node);
         t.parse::<u64>().map_err(|_| self.err(node, format!("<{}>: expected a non-negative integer, found {t:?}", node.tag_name().name())))
     }
 
     /// The number of the required child `name`.
-    pub(super) fn f64_child(&self, node: Node, name: &str) -> Result<f64, ReadError> {
+    pub(super) fn f64_child(&self, node: Node, name: &str) -> Result<f64, Error> {
         self.f64(self.req(node, name)?)
     }
 
     /// `<name><exact>v</exact></name>` (a bare number is accepted too).
-    pub(super) fn exact(&self, node: Node) -> Result<f64, ReadError> {
+    pub(super) fn exact(&self, node: Node) -> Result<f64, Error> {
         match child(node, "exact") {
             Some(e) => self.f64(e),
             None if child(node, "intervalStart").is_some() => {
@@ -83,12 +84,12 @@ impl<'d, 'i> Cursor<'d, 'i> {
     }
 
     /// Like [`Cursor::exact`] for an optional child: `None` when the child is absent.
-    pub(super) fn exact_child(&self, node: Node, name: &str) -> Result<Option<f64>, ReadError> {
+    pub(super) fn exact_child(&self, node: Node, name: &str) -> Result<Option<f64>, Error> {
         child(node, name).map(|c| self.exact(c)).transpose()
     }
 
     /// `<time><exact>n</exact></time>` as an integer time step.
-    pub(super) fn exact_time(&self, node: Node) -> Result<u64, ReadError> {
+    pub(super) fn exact_time(&self, node: Node) -> Result<u64, Error> {
         let t = self.req(node, "time")?;
         match child(t, "exact") {
             Some(e) => self.u64(e),
@@ -97,12 +98,12 @@ impl<'d, 'i> Cursor<'d, 'i> {
     }
 
     /// `(intervalStart, intervalEnd)` numbers.
-    pub(super) fn interval(&self, node: Node) -> Result<(f64, f64), ReadError> {
+    pub(super) fn interval(&self, node: Node) -> Result<(f64, f64), Error> {
         Ok((self.f64_child(node, "intervalStart")?, self.f64_child(node, "intervalEnd")?))
     }
 
     /// A point element with `<x>`, `<y>` and optional `<z>`.
-    pub(super) fn point(&self, node: Node) -> Result<Point, ReadError> {
+    pub(super) fn point(&self, node: Node) -> Result<Point, Error> {
         let x = self.f64_child(node, "x")?;
         let y = self.f64_child(node, "y")?;
         Ok(match child(node, "z") {
@@ -112,7 +113,7 @@ impl<'d, 'i> Cursor<'d, 'i> {
     }
 
     /// `<position><point>…</point></position>` (exact position).
-    pub(super) fn position_point(&self, node: Node) -> Result<Point, ReadError> {
+    pub(super) fn position_point(&self, node: Node) -> Result<Point, Error> {
         let pos = self.req(node, "position")?;
         match child(pos, "point") {
             Some(p) => self.point(p),
@@ -121,7 +122,7 @@ impl<'d, 'i> Cursor<'d, 'i> {
     }
 
     /// A positive integer attribute (`id` or `ref`).
-    pub(super) fn id_attr(&self, node: Node, attr: &str) -> Result<u64, ReadError> {
+    pub(super) fn id_attr(&self, node: Node, attr: &str) -> Result<u64, Error> {
         let raw = node.attribute(attr).ok_or_else(|| self.err(node, format!("<{}> needs an attribute {attr}", node.tag_name().name())))?;
         match raw.trim().parse::<u64>() {
             Ok(v) if v > 0 => Ok(v),
@@ -130,18 +131,18 @@ impl<'d, 'i> Cursor<'d, 'i> {
     }
 
     /// A typed id from an attribute (`new` maps the raw number, which is known to be > 0).
-    pub(super) fn typed<T>(&self, node: Node, attr: &str, new: fn(u64) -> Option<T>) -> Result<T, ReadError> {
+    pub(super) fn typed<T>(&self, node: Node, attr: &str, new: fn(u64) -> Option<T>) -> Result<T, Error> {
         let raw = self.id_attr(node, attr)?;
         new(raw).ok_or_else(|| self.err(node, format!("{attr} must be > 0")))
     }
 
     /// The `ref`s of every child named `name`.
-    pub(super) fn refs<T>(&self, node: Node, name: &str, new: fn(u64) -> Option<T>) -> Result<Vec<T>, ReadError> {
+    pub(super) fn refs<T>(&self, node: Node, name: &str, new: fn(u64) -> Option<T>) -> Result<Vec<T>, Error> {
         children(node, name).map(|c| self.typed(c, "ref", new)).collect()
     }
 
     /// The value of an enumeration spelled as in the XSD, from the text of `node`.
-    pub(super) fn enum_text<T: Copy>(&self, node: Node, all: &[T], as_str: fn(T) -> &'static str) -> Result<T, ReadError> {
+    pub(super) fn enum_text<T: Copy>(&self, node: Node, all: &[T], as_str: fn(T) -> &'static str) -> Result<T, Error> {
         let t = self.text(node);
         all.iter().copied().find(|v| as_str(*v) == t).ok_or_else(|| {
             let allowed: Vec<&str> = all.iter().map(|v| as_str(*v)).collect();

@@ -3,10 +3,10 @@
 use roxmltree::Node;
 
 use super::cursor::{child, Cursor};
-use super::error::ReadError;
-use crate::header::{BenchmarkId, Date, GeoTransformation, Header, Location};
+use crate::header::{BenchmarkId, Date, GeoLocation, GeoTransformation, Header};
 use crate::scenario::Scenario;
 use crate::tags::Tag;
+use crate::Error;
 
 fn parse_date(s: &str) -> Option<Date> {
     let mut it = s.trim().splitn(3, '-');
@@ -16,7 +16,7 @@ fn parse_date(s: &str) -> Option<Date> {
     Date::new(y, m, d).ok()
 }
 
-pub(crate) fn header(cx: &mut Cursor, root: Node) -> Result<Header, ReadError> {
+pub(crate) fn header(cx: &mut Cursor, root: Node) -> Result<Header, Error> {
     match root.attribute("commonRoadVersion") {
         Some("2020a") => {}
         other => cx.warn(root, format!("commonRoadVersion {other:?} is not \"2020a\"; reading it as 2020a")),
@@ -47,7 +47,7 @@ pub(crate) fn header(cx: &mut Cursor, root: Node) -> Result<Header, ReadError> {
     Ok(Header { benchmark_id, date, author: attr("author"), affiliation: attr("affiliation"), source: attr("source"), time_step_size })
 }
 
-pub(crate) fn location_and_tags(cx: &mut Cursor, root: Node, scenario: &mut Scenario) -> Result<(), ReadError> {
+pub(crate) fn location_and_tags(cx: &mut Cursor, root: Node, scenario: &mut Scenario) -> Result<(), Error> {
     if let Some(loc) = child(root, "location") {
         scenario.location = location(cx, loc)?;
     }
@@ -65,8 +65,8 @@ pub(crate) fn location_and_tags(cx: &mut Cursor, root: Node, scenario: &mut Scen
     Ok(())
 }
 
-fn location(cx: &mut Cursor, loc: Node) -> Result<Location, ReadError> {
-    let mut out = Location::default();
+fn location(cx: &mut Cursor, loc: Node) -> Result<GeoLocation, Error> {
+    let mut out = GeoLocation::default();
     if let Some(n) = child(loc, "geoNameId") {
         let t = cx.text(n);
         out.geo_name_id = t.parse().map_err(|_| cx.err(n, format!("<geoNameId>: expected an integer, found {t:?}")))?;

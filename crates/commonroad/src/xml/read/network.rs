@@ -5,14 +5,14 @@ use std::num::NonZeroU64;
 use roxmltree::Node;
 
 use super::cursor::{child, children, Cursor};
-use super::error::ReadError;
 use crate::geometry::Point;
 use crate::ids::{IncomingId, IntersectionId, LaneletId, TrafficLightId, TrafficSignId};
 use crate::intersection::{Incoming, Intersection};
 use crate::lanelet::{Adjacent, DrivingDir, Lanelet, LaneletBounds, LaneletType, LineMarking, RoadUser, StopLine};
 use crate::traffic::{CycleElement, TrafficLight, TrafficLightColor, TrafficLightDirection, TrafficSign, TrafficSignElement};
+use crate::Error;
 
-fn bound(cx: &Cursor, node: Node) -> Result<(Vec<Point>, Option<LineMarking>), ReadError> {
+fn bound(cx: &Cursor, node: Node) -> Result<(Vec<Point>, Option<LineMarking>), Error> {
     let points = children(node, "point").map(|p| cx.point(p)).collect::<Result<Vec<_>, _>>()?;
     let marking = child(node, "lineMarking").map(|m| cx.enum_text(m, LineMarking::ALL, LineMarking::as_str)).transpose()?;
     // The writer leaves out `unknown` (the readers' default), so reading it back as None
@@ -20,7 +20,7 @@ fn bound(cx: &Cursor, node: Node) -> Result<(Vec<Point>, Option<LineMarking>), R
     Ok((points, marking.filter(|m| *m != LineMarking::Unknown)))
 }
 
-fn adjacent(cx: &Cursor, node: Node, name: &str) -> Result<Option<Adjacent>, ReadError> {
+fn adjacent(cx: &Cursor, node: Node, name: &str) -> Result<Option<Adjacent>, Error> {
     let Some(a) = child(node, name) else {
         return Ok(None);
     };
@@ -31,7 +31,7 @@ fn adjacent(cx: &Cursor, node: Node, name: &str) -> Result<Option<Adjacent>, Rea
     Ok(Some(Adjacent { lanelet, driving_dir }))
 }
 
-fn stop_line(cx: &Cursor, node: Node) -> Result<StopLine, ReadError> {
+fn stop_line(cx: &Cursor, node: Node) -> Result<StopLine, Error> {
     let pts = children(node, "point").map(|p| cx.point(p)).collect::<Result<Vec<_>, _>>()?;
     let points = match pts.as_slice() {
         [] => None,
@@ -50,7 +50,7 @@ fn stop_line(cx: &Cursor, node: Node) -> Result<StopLine, ReadError> {
     })
 }
 
-pub(crate) fn lanelet(cx: &mut Cursor, node: Node) -> Result<Lanelet, ReadError> {
+pub(crate) fn lanelet(cx: &mut Cursor, node: Node) -> Result<Lanelet, Error> {
     let id = cx.typed(node, "id", LaneletId::new)?;
     let (left, left_marking) = bound(cx, cx.req(node, "leftBound")?)?;
     let (right, right_marking) = bound(cx, cx.req(node, "rightBound")?)?;
@@ -65,7 +65,7 @@ pub(crate) fn lanelet(cx: &mut Cursor, node: Node) -> Result<Lanelet, ReadError>
     l.adjacent_left = adjacent(cx, node, "adjacentLeft")?;
     l.adjacent_right = adjacent(cx, node, "adjacentRight")?;
     l.stop_line = child(node, "stopLine").map(|s| stop_line(cx, s)).transpose()?;
-    let users = |name| -> Result<Vec<RoadUser>, ReadError> { children(node, name).map(|u| cx.enum_text(u, RoadUser::ALL, RoadUser::as_str)).collect() };
+    let users = |name| -> Result<Vec<RoadUser>, Error> { children(node, name).map(|u| cx.enum_text(u, RoadUser::ALL, RoadUser::as_str)).collect() };
     l.user_one_way = users("userOneWay")?;
     l.user_bidirectional = users("userBidirectional")?;
     l.traffic_sign_refs = cx.refs(node, "trafficSignRef", TrafficSignId::new)?;
@@ -73,7 +73,7 @@ pub(crate) fn lanelet(cx: &mut Cursor, node: Node) -> Result<Lanelet, ReadError>
     Ok(l)
 }
 
-fn bool_text(cx: &Cursor, node: Node) -> Result<bool, ReadError> {
+fn bool_text(cx: &Cursor, node: Node) -> Result<bool, Error> {
     match cx.text(node) {
         "true" | "1" => Ok(true),
         "false" | "0" => Ok(false),
@@ -81,7 +81,7 @@ fn bool_text(cx: &Cursor, node: Node) -> Result<bool, ReadError> {
     }
 }
 
-pub(crate) fn traffic_sign(cx: &mut Cursor, node: Node) -> Result<TrafficSign, ReadError> {
+pub(crate) fn traffic_sign(cx: &mut Cursor, node: Node) -> Result<TrafficSign, Error> {
     let id = cx.typed(node, "id", TrafficSignId::new)?;
     let elements = children(node, "trafficSignElement")
         .map(|e| {
@@ -90,13 +90,13 @@ pub(crate) fn traffic_sign(cx: &mut Cursor, node: Node) -> Result<TrafficSign, R
                 additional_values: children(e, "additionalValue").map(|v| cx.text(v).to_string()).collect(),
             })
         })
-        .collect::<Result<Vec<_>, ReadError>>()?;
+        .collect::<Result<Vec<_>, Error>>()?;
     let position = child(node, "position").map(|_| cx.position_point(node)).transpose()?;
     let is_virtual = child(node, "virtual").map(|v| bool_text(cx, v)).transpose()?.unwrap_or(false);
     Ok(TrafficSign { id, elements, position, is_virtual })
 }
 
-pub(crate) fn traffic_light(cx: &mut Cursor, node: Node) -> Result<TrafficLight, ReadError> {
+pub(crate) fn traffic_light(cx: &mut Cursor, node: Node) -> Result<TrafficLight, Error> {
     let id = cx.typed(node, "id", TrafficLightId::new)?;
     let cycle_node = cx.req(node, "cycle")?;
     let cycle = children(cycle_node, "cycleElement")
@@ -106,7 +106,7 @@ pub(crate) fn traffic_light(cx: &mut Cursor, node: Node) -> Result<TrafficLight,
             let color = cx.enum_text(cx.req(c, "color")?, TrafficLightColor::ALL, TrafficLightColor::as_str)?;
             Ok(CycleElement { duration, color })
         })
-        .collect::<Result<Vec<_>, ReadError>>()?;
+        .collect::<Result<Vec<_>, Error>>()?;
     let time_offset = child(cycle_node, "timeOffset").map(|t| cx.u64(t)).transpose()?.unwrap_or(0);
     let position = child(node, "position").map(|_| cx.position_point(node)).transpose()?;
     let direction = child(node, "direction").map(|d| cx.enum_text(d, TrafficLightDirection::ALL, TrafficLightDirection::as_str)).transpose()?;
@@ -114,7 +114,7 @@ pub(crate) fn traffic_light(cx: &mut Cursor, node: Node) -> Result<TrafficLight,
     Ok(TrafficLight { id, cycle, time_offset, position, direction, active })
 }
 
-pub(crate) fn intersection(cx: &mut Cursor, node: Node) -> Result<Intersection, ReadError> {
+pub(crate) fn intersection(cx: &mut Cursor, node: Node) -> Result<Intersection, Error> {
     let id = cx.typed(node, "id", IntersectionId::new)?;
     let incomings = children(node, "incoming")
         .map(|inc| {
@@ -127,7 +127,7 @@ pub(crate) fn intersection(cx: &mut Cursor, node: Node) -> Result<Intersection, 
                 is_left_of: child(inc, "isLeftOf").map(|n| cx.typed(n, "ref", IncomingId::new)).transpose()?,
             })
         })
-        .collect::<Result<Vec<_>, ReadError>>()?;
+        .collect::<Result<Vec<_>, Error>>()?;
     let crossings = children(node, "crossing").map(|c| cx.refs(c, "crossingLanelet", LaneletId::new)).collect::<Result<Vec<_>, _>>()?;
     Ok(Intersection { id, incomings, crossings })
 }

@@ -3,13 +3,13 @@
 use roxmltree::Node;
 
 use super::cursor::{child, children, Cursor};
-use super::error::ReadError;
 use crate::geometry::{AbsoluteShape, Circle, PlacedCircle, PlacedRectangle, Polygon, Rectangle, Shape};
 use crate::ids::ObstacleId;
 use crate::obstacle::{DynamicObstacle, DynamicObstacleType, EnvironmentObstacle, EnvironmentObstacleType, State, StaticObstacle, StaticObstacleType};
+use crate::Error;
 
 /// The single shape element inside `<shape>` (a shape group keeps its first member).
-fn shape_element<'a, 'i>(cx: &mut Cursor, obstacle: Node<'a, 'i>) -> Result<Node<'a, 'i>, ReadError> {
+fn shape_element<'a, 'i>(cx: &mut Cursor, obstacle: Node<'a, 'i>) -> Result<Node<'a, 'i>, Error> {
     let shape = cx.req(obstacle, "shape")?;
     let mut elements = shape.children().filter(|n| n.is_element());
     let first = elements.next().ok_or_else(|| cx.err(shape, "<shape> needs a rectangle, circle or polygon"))?;
@@ -19,21 +19,21 @@ fn shape_element<'a, 'i>(cx: &mut Cursor, obstacle: Node<'a, 'i>) -> Result<Node
     Ok(first)
 }
 
-pub(crate) fn polygon(cx: &Cursor, node: Node) -> Result<Polygon, ReadError> {
+pub(crate) fn polygon(cx: &Cursor, node: Node) -> Result<Polygon, Error> {
     let points = children(node, "point").map(|p| cx.point(p)).collect::<Result<Vec<_>, _>>()?;
     Polygon::new(points).map_err(|e| cx.err(node, e.to_string()))
 }
 
-pub(crate) fn rectangle(cx: &Cursor, node: Node) -> Result<Rectangle, ReadError> {
+pub(crate) fn rectangle(cx: &Cursor, node: Node) -> Result<Rectangle, Error> {
     Rectangle::new(cx.f64_child(node, "length")?, cx.f64_child(node, "width")?).map_err(|e| cx.err(node, e.to_string()))
 }
 
-pub(crate) fn circle(cx: &Cursor, node: Node) -> Result<Circle, ReadError> {
+pub(crate) fn circle(cx: &Cursor, node: Node) -> Result<Circle, Error> {
     Circle::new(cx.f64_child(node, "radius")?).map_err(|e| cx.err(node, e.to_string()))
 }
 
 /// A rectangle placed in the world (`center` and `orientation` default to 0).
-pub(crate) fn placed_rectangle(cx: &Cursor, node: Node) -> Result<PlacedRectangle, ReadError> {
+pub(crate) fn placed_rectangle(cx: &Cursor, node: Node) -> Result<PlacedRectangle, Error> {
     Ok(PlacedRectangle {
         rectangle: rectangle(cx, node)?,
         center: child(node, "center").map(|c| cx.point(c)).transpose()?.unwrap_or(crate::geometry::Point::new(0.0, 0.0)),
@@ -41,7 +41,7 @@ pub(crate) fn placed_rectangle(cx: &Cursor, node: Node) -> Result<PlacedRectangl
     })
 }
 
-pub(crate) fn placed_circle(cx: &Cursor, node: Node) -> Result<PlacedCircle, ReadError> {
+pub(crate) fn placed_circle(cx: &Cursor, node: Node) -> Result<PlacedCircle, Error> {
     Ok(PlacedCircle {
         circle: circle(cx, node)?,
         center: child(node, "center").map(|c| cx.point(c)).transpose()?.unwrap_or(crate::geometry::Point::new(0.0, 0.0)),
@@ -49,7 +49,7 @@ pub(crate) fn placed_circle(cx: &Cursor, node: Node) -> Result<PlacedCircle, Rea
 }
 
 /// An obstacle's own-frame shape.
-fn shape(cx: &mut Cursor, obstacle: Node) -> Result<Shape, ReadError> {
+fn shape(cx: &mut Cursor, obstacle: Node) -> Result<Shape, Error> {
     let s = shape_element(cx, obstacle)?;
     let name = s.tag_name().name();
     if matches!(name, "rectangle" | "circle") && (child(s, "center").is_some() || child(s, "orientation").is_some()) {
@@ -63,7 +63,7 @@ fn shape(cx: &mut Cursor, obstacle: Node) -> Result<Shape, ReadError> {
     }
 }
 
-fn absolute_shape(cx: &mut Cursor, obstacle: Node) -> Result<AbsoluteShape, ReadError> {
+fn absolute_shape(cx: &mut Cursor, obstacle: Node) -> Result<AbsoluteShape, Error> {
     let s = shape_element(cx, obstacle)?;
     match s.tag_name().name() {
         "rectangle" => Ok(AbsoluteShape::Rectangle(placed_rectangle(cx, s)?)),
@@ -73,11 +73,11 @@ fn absolute_shape(cx: &mut Cursor, obstacle: Node) -> Result<AbsoluteShape, Read
     }
 }
 
-fn obstacle_type<T: Copy>(cx: &Cursor, node: Node, all: &[T], as_str: fn(T) -> &'static str) -> Result<T, ReadError> {
+fn obstacle_type<T: Copy>(cx: &Cursor, node: Node, all: &[T], as_str: fn(T) -> &'static str) -> Result<T, Error> {
     cx.enum_text(cx.req(node, "type")?, all, as_str)
 }
 
-pub(crate) fn static_obstacle(cx: &mut Cursor, node: Node) -> Result<StaticObstacle, ReadError> {
+pub(crate) fn static_obstacle(cx: &mut Cursor, node: Node) -> Result<StaticObstacle, Error> {
     let id = cx.typed(node, "id", ObstacleId::new)?;
     let obstacle_type = obstacle_type(cx, node, StaticObstacleType::ALL, StaticObstacleType::as_str)?;
     let shape = shape(cx, node)?;
@@ -87,7 +87,7 @@ pub(crate) fn static_obstacle(cx: &mut Cursor, node: Node) -> Result<StaticObsta
 }
 
 /// A state; fields commonroad-io fills with 0.0 when missing are 0.0 here too.
-fn state(cx: &Cursor, node: Node) -> Result<State, ReadError> {
+fn state(cx: &Cursor, node: Node) -> Result<State, Error> {
     let p = cx.position_point(node)?;
     Ok(State {
         time_step: cx.exact_time(node)?,
@@ -102,7 +102,7 @@ fn state(cx: &Cursor, node: Node) -> Result<State, ReadError> {
 
 /// `None` (with a warning) for an obstacle whose prediction is an occupancy set: the model
 /// only holds trajectories.
-pub(crate) fn dynamic_obstacle(cx: &mut Cursor, node: Node) -> Result<Option<DynamicObstacle>, ReadError> {
+pub(crate) fn dynamic_obstacle(cx: &mut Cursor, node: Node) -> Result<Option<DynamicObstacle>, Error> {
     let id = cx.typed(node, "id", ObstacleId::new)?;
     let obstacle_type = obstacle_type(cx, node, DynamicObstacleType::ALL, DynamicObstacleType::as_str)?;
     let shape = shape(cx, node)?;
@@ -118,7 +118,7 @@ pub(crate) fn dynamic_obstacle(cx: &mut Cursor, node: Node) -> Result<Option<Dyn
     Ok(Some(DynamicObstacle { id, obstacle_type, shape, initial_state, trajectory }))
 }
 
-pub(crate) fn environment_obstacle(cx: &mut Cursor, node: Node) -> Result<EnvironmentObstacle, ReadError> {
+pub(crate) fn environment_obstacle(cx: &mut Cursor, node: Node) -> Result<EnvironmentObstacle, Error> {
     Ok(EnvironmentObstacle {
         id: cx.typed(node, "id", ObstacleId::new)?,
         obstacle_type: obstacle_type(cx, node, EnvironmentObstacleType::ALL, EnvironmentObstacleType::as_str)?,

@@ -3,24 +3,24 @@
 use roxmltree::Node;
 
 use super::cursor::{child, children, Cursor};
-use super::error::ReadError;
 use super::obstacles::{placed_circle, placed_rectangle, polygon};
 use crate::ids::{LaneletId, PlanningProblemId};
 use crate::planning::{GoalPosition, GoalState, Interval, PlanningInitialState, PlanningProblem, TimeInterval};
+use crate::Error;
 
-fn interval(cx: &Cursor, node: Node) -> Result<Interval, ReadError> {
+fn interval(cx: &Cursor, node: Node) -> Result<Interval, Error> {
     let (a, b) = cx.interval(node)?;
     Interval::new(a, b).map_err(|e| cx.err(node, e.to_string()))
 }
 
-fn time_interval(cx: &Cursor, goal: Node) -> Result<TimeInterval, ReadError> {
+fn time_interval(cx: &Cursor, goal: Node) -> Result<TimeInterval, Error> {
     let t = cx.req(goal, "time")?;
     let start = cx.u64(cx.req(t, "intervalStart")?)?;
     let end = cx.u64(cx.req(t, "intervalEnd")?)?;
     TimeInterval::new(start, end).map_err(|e| cx.err(t, e.to_string()))
 }
 
-fn goal_position(cx: &Cursor, pos: Node) -> Result<GoalPosition, ReadError> {
+fn goal_position(cx: &Cursor, pos: Node) -> Result<GoalPosition, Error> {
     let first = pos.children().find(|n| n.is_element()).ok_or_else(|| cx.err(pos, "goal <position> is empty"))?;
     let kind = first.tag_name().name();
     let all = children(pos, kind);
@@ -33,7 +33,7 @@ fn goal_position(cx: &Cursor, pos: Node) -> Result<GoalPosition, ReadError> {
     })
 }
 
-fn goal_state(cx: &Cursor, node: Node) -> Result<GoalState, ReadError> {
+fn goal_state(cx: &Cursor, node: Node) -> Result<GoalState, Error> {
     Ok(GoalState {
         time: time_interval(cx, node)?,
         position: child(node, "position").map(|p| goal_position(cx, p)).transpose()?,
@@ -42,7 +42,7 @@ fn goal_state(cx: &Cursor, node: Node) -> Result<GoalState, ReadError> {
     })
 }
 
-pub(crate) fn planning_problem(cx: &mut Cursor, node: Node) -> Result<PlanningProblem, ReadError> {
+pub(crate) fn planning_problem(cx: &mut Cursor, node: Node) -> Result<PlanningProblem, Error> {
     let id = cx.typed(node, "id", PlanningProblemId::new)?;
     let init = cx.req(node, "initialState")?;
     let p = cx.position_point(init)?;

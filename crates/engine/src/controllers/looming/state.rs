@@ -2,7 +2,7 @@
 //! previous steering angles, the OSI points it has looked at.
 
 use crate::controllers::analog_vehicle::AnalogVehicle;
-use crate::controllers::looming_view::OsiMemo;
+use crate::controllers::looming::view::OsiMemo;
 
 #[derive(Debug, Clone)]
 pub(crate) struct LoomingRt {

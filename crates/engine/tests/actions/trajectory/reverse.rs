@@ -122,5 +122,5 @@ fn reversing_along_vertices_with_explicit_headings_is_a_positioned_warning() {
     let run = run(&xosc(&init, "", &stop_at(2.0)));
     let w: Vec<_> = run.warnings.iter().filter(|w| w.message.contains("explicit vertex headings")).collect();
     assert_eq!(w.len(), 1, "{:?}", run.warnings);
-    assert!(w[0].line > 0 && w[0].col > 0, "{}", w[0]);
+    assert!(w[0].location.line > 0 && w[0].location.col > 0, "{}", w[0]);
 }

@@ -10,7 +10,7 @@
 
 use crate::dynamics::ESMINI_SMALL_NUMBER;
 use crate::ghost::state::GhostMode;
-use crate::ghost_trail::Trail;
+use crate::ghost::trail::Trail;
 use crate::sim::Sim;
 use crate::storyboard::{Kind, State};
 use crate::trace::StoryboardEvent;
@@ -36,7 +36,7 @@ impl<'a> Sim<'a> {
     /// front of the event's actions and started at once — outside `Event::Start`, so no running
     /// action of the ghost is ended — and stays there, so the event restarts the ghost whenever
     /// it starts again and counts as one with a teleport for `ResetEvents`.
-    pub(crate) fn inject_ghost_restart(&mut self, ev: usize, note: crate::Warning) {
+    pub(crate) fn inject_ghost_restart(&mut self, ev: usize, note: crate::Diagnostic) {
         let Some(g) = self.ghost.as_mut() else { return };
         if !g.restart_events.iter().any(|(e, _)| *e == ev) {
             g.restart_events.push((ev, note.clone()));
@@ -46,7 +46,7 @@ impl<'a> Sim<'a> {
 
     /// The added teleport's run: `TeleportAction::Start` of the ghost onto its entity (a restart
     /// once the clock is past 0), after ending the running actions of `ending` if given.
-    fn run_added_teleport(&mut self, note: crate::Warning, ending: Option<usize>) {
+    fn run_added_teleport(&mut self, note: crate::Diagnostic, ending: Option<usize>) {
         let Some(g) = self.ghost.as_ref() else { return };
         let (ghost, owner) = (g.entity, g.owner);
         self.log_added_teleport("init", "start", "running");
@@ -123,7 +123,7 @@ impl<'a> Sim<'a> {
     pub(crate) fn warn_endless_restarts(&mut self, t: f64) {
         let Some((_, w)) = self.ghost.as_ref().and_then(|g| g.restart_events.first()) else { return };
         let message = format!("the ghost restarts kept rewinding time (over ten rewound steps per step of the run, or a million); the run ends at {t:.2} s");
-        let w = crate::Warning { message, ..w.clone() };
+        let w = crate::Diagnostic { message, ..w.clone() };
         self.warnings.push(w);
     }
 

@@ -4,7 +4,7 @@
 //! lanes to the left and right), the driving lanes next to it, and the IDM acceleration it
 //! predicts for any follower/leader pair.
 
-use super::natural_driver::state::NdParams;
+use super::state::NdParams;
 use crate::entities::Entity;
 use crate::roads::lane_kind::is_driving;
 use crate::roads::road_distance::road_distance_within;

@@ -11,19 +11,21 @@
 //! acceleration / end-of-road / off-road / stand-still conditions watch the ghost instead.
 //! esmini also gives an event whose trigger depends on anything else a teleport of the ghost
 //! back to the entity; when it fires after time 0 esmini restarts the ghost (rewinds time by
-//! the head start, freezes the entity, logs the rewound steps again): `ghost_restart.rs`.
+//! the head start, freezes the entity, logs the rewound steps again): `restart.rs`.
 //!
 //! The run then starts at −headstart: until time 0 only the ghost moves (the default
 //! controller leaves every other entity alone, no controller steps, and only the ghost's
-//! actions step: others start but wait), so at 0 the ghost leads by the head start. After every step the ghost's trail is sampled (`ghost_trail`) on
+//! actions step: others start but wait), so at 0 the ghost leads by the head start. After every step the ghost's trail is sampled (`trail.rs`) on
 //! esmini's accumulated clock, whose rounding decides which steps are sampled.
 
+mod restart;
 pub(crate) mod state;
+pub(crate) mod trail;
 
 use self::state::{Ghost, GhostMode};
 use crate::actions::state::ActionSlot;
 use crate::controllers::state::ControllerRt;
-use crate::ghost_trail::Trail;
+use crate::ghost::trail::Trail;
 use crate::sim::Sim;
 use crate::storyboard::{Kind, Node};
 use openscenario::{ActionKind, ConditionKind, EntityCondition, PrivateAction, ValueCondition};
@@ -149,7 +151,7 @@ impl<'a> Sim<'a> {
                     "entity `{}`: only the first entity with a ghost-following controller gets a ghost (esmini); its controller leaves it standing",
                     m.name
                 );
-                self.warnings.push(crate::Warning::at(&m.origin, msg));
+                self.warnings.push(crate::Diagnostic::at(&m.origin, msg));
             }
         }
     }
@@ -239,9 +241,9 @@ impl<'a> Sim<'a> {
     /// entity condition other than a ghost-watched one on the entity itself, or one of its
     /// by-value conditions other than SimulationTime (Parameter, Variable, TrafficSignal; a
     /// StoryboardElementState condition is a kind of its own there) an `AddedGhostTeleport`
-    /// (`ghost_restart.rs`): these events, each with the note (at its first such condition)
+    /// (`restart.rs`): these events, each with the note (at its first such condition)
     /// given when it restarts the ghost.
-    fn ghost_restart_events(&self, owner: usize, events: &[usize]) -> Vec<(usize, crate::Warning)> {
+    fn ghost_restart_events(&self, owner: usize, events: &[usize]) -> Vec<(usize, crate::Diagnostic)> {
         let mut out = Vec::new();
         for &ev in events {
             let Some(t) = self.nodes[ev].start_trigger else { continue };
@@ -259,7 +261,7 @@ impl<'a> Sim<'a> {
                 "condition `{}`: event `{}` started after time 0, where esmini restarts the ghost from its entity: time rewinds by the head start and the rewound steps are logged again (the trace CSV repeats those times, as esmini's log does; the CommonRoad conversion keeps the first pass)",
                 c.model.name, self.nodes[ev].name
             );
-            out.push((ev, crate::Warning::at(&c.model.origin, msg)));
+            out.push((ev, crate::Diagnostic::at(&c.model.origin, msg)));
         }
         out
     }

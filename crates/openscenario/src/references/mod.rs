@@ -3,12 +3,16 @@
 //! signal controllers. A name that refers to nothing is a *problem*: the caller decides whether
 //! it stops the file (osc2cr's default) or is reported and passed over (`--lenient`).
 //!
-//! Roads and lanes are checked where the road network is loaded (`engine::road_references`);
-//! catalogs, catalog entries and `$parameter` expressions are resolved, and fail, while reading.
+//! Roads, lanes and traffic signals are checked where the road network is loaded
+//! (`engine::road_references`); catalogs, catalog entries and `$parameter` expressions are
+//! resolved, and fail, while reading. Each problem is put at the attribute that holds the name
+//! (the reader keeps where every reference was written: [`ReferenceSite`]).
+
+mod storyboard;
 
 use std::collections::BTreeSet;
 
-use crate::error::{Location, Warning};
+use crate::error::{Diagnostic, Location};
 use crate::model::*;
 
 /// Every position of the scenario with the origin of the element that holds it (Init and
@@ -132,8 +136,18 @@ fn trajectory_positions<'a>(t: &'a Trajectory, o: &'a Location, out: &mut Vec<(&
     }
 }
 
-/// Every name of the scenario that refers to nothing it declares, as a positioned problem.
-pub fn unresolved(s: &Scenario) -> Vec<Warning> {
+/// Where a reference was written: the attribute (`entityRef`, `roadId`, `laneId`,
+/// `storyboardElementRef`, …), its resolved value and the position of the value.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ReferenceSite {
+    pub attribute: String,
+    pub value: String,
+    pub location: Location,
+}
+
+/// Every name of the scenario that refers to nothing it declares, as a problem at the attribute
+/// that holds the name.
+pub fn unresolved(s: &Scenario) -> Vec<Diagnostic> {
     let mut entities = BTreeSet::new();
     for e in &s.entities {
         declare_entity(e, &mut entities, 0);
@@ -141,49 +155,57 @@ pub fn unresolved(s: &Scenario) -> Vec<Warning> {
     for sel in &s.entity_selections {
         entities.insert(sel.name.as_str());
     }
-    let elements = storyboard_elements(s);
+    let elements = storyboard::Elements::of(s);
     let mut out = Vec::new();
-    let entity = |name: &str, at: &Location, what: &str, out: &mut Vec<Warning>| {
+    // `within`: the element holding the attribute; the problem is put at the attribute itself
+    let at = |within: &'_ Location, attribute: &str, value: &str| -> Location { s.reference_site(within, attribute, |v| v == value).clone() };
+    let entity = |name: &str, within: &Location, attribute: &str, what: &str, out: &mut Vec<Diagnostic>| {
         if !entities.contains(name) {
-            out.push(problem(at, format!("{what} `{name}` is not an entity of the scenario")));
+            out.push(problem(&at(within, attribute, name), format!("{what} `{name}` is not an entity of the scenario")));
+        }
+    };
+    let signal_controller = |name: &str, within: &Location, attribute: &str, what: &str, out: &mut Vec<Diagnostic>| {
+        if !s.road_network.traffic_signal_controllers.iter().any(|c| c.name == name) {
+            out.push(problem(&at(within, attribute, name), format!("{what}: traffic signal controller `{name}` is not declared in the RoadNetwork")));
         }
     };
 
     for p in &s.storyboard.init.private {
-        let at = p.actions.first().map(|a| &a.origin);
-        if let Some(at) = at {
-            entity(&p.entity, at, "Init actions for entity", &mut out);
+        entity(&p.entity, &p.origin, "entityRef", "Init actions for entity", &mut out);
+    }
+    for c in &s.road_network.traffic_signal_controllers {
+        if let Some(r) = &c.reference {
+            signal_controller(r, &c.origin, "reference", &format!("TrafficSignalController `{}`", c.name), &mut out);
         }
     }
     for story in &s.storyboard.stories {
         for act in &story.acts {
             for mg in &act.maneuver_groups {
                 for a in &mg.actors {
-                    entity(a, &mg.origin, &format!("actor of maneuver group `{}`:", mg.name), &mut out);
+                    entity(a, &mg.origin, "entityRef", &format!("actor of maneuver group `{}`:", mg.name), &mut out);
                 }
+                out.extend(actorless_private_actions(mg));
             }
         }
     }
     for_each_action(s, |a, _| {
         let what = a.kind.element_name();
-        for name in action_entities(&a.kind) {
-            entity(name, &a.origin, &format!("{what}: entity"), &mut out);
+        for (attribute, name) in action_entities(&a.kind) {
+            entity(name, &a.origin, attribute, &format!("{what}: entity"), &mut out);
         }
         match &a.kind {
             ActionKind::Global(GlobalAction::ParameterSet { parameter, .. }) | ActionKind::Global(GlobalAction::ParameterModify { parameter, .. })
                 if s.parameter(parameter).is_none() =>
             {
-                out.push(problem(&a.origin, format!("{what}: parameter `{parameter}` is not declared by the scenario")));
+                out.push(problem(&at(&a.origin, "parameterRef", parameter), format!("{what}: parameter `{parameter}` is not declared by the scenario")));
             }
             ActionKind::Global(GlobalAction::VariableSet { variable, .. }) | ActionKind::Global(GlobalAction::VariableModify { variable, .. })
                 if !declares(&s.variables, variable) =>
             {
-                out.push(problem(&a.origin, format!("{what}: variable `{variable}` is not declared by the scenario")));
+                out.push(problem(&at(&a.origin, "variableRef", variable), format!("{what}: variable `{variable}` is not declared by the scenario")));
             }
-            ActionKind::Global(GlobalAction::TrafficSignalController { controller, .. })
-                if !s.road_network.traffic_signal_controllers.iter().any(|c| &c.name == controller) =>
-            {
-                out.push(problem(&a.origin, format!("{what}: traffic signal controller `{controller}` is not declared in the RoadNetwork")));
+            ActionKind::Global(GlobalAction::TrafficSignalController { controller, .. }) => {
+                signal_controller(controller, &a.origin, "trafficSignalControllerRef", what, &mut out);
             }
             _ => {}
         }
@@ -193,49 +215,82 @@ pub fn unresolved(s: &Scenario) -> Vec<Warning> {
         match &c.kind {
             ConditionKind::ByEntity { entities: triggering, condition, .. } => {
                 for name in triggering {
-                    entity(name, &c.origin, &format!("{what}: triggering entity"), &mut out);
+                    entity(name, &c.origin, "entityRef", &format!("{what}: triggering entity"), &mut out);
                 }
                 for name in condition_entities(condition) {
-                    entity(name, &c.origin, &format!("{what}: entity"), &mut out);
+                    entity(name, &c.origin, "entityRef", &format!("{what}: entity"), &mut out);
                 }
             }
             ConditionKind::ByValue(v) => match v {
                 ValueCondition::Parameter { parameter, .. } if s.parameter(parameter).is_none() => {
-                    out.push(problem(&c.origin, format!("{what}: parameter `{parameter}` is not declared by the scenario")));
+                    out.push(problem(&at(&c.origin, "parameterRef", parameter), format!("{what}: parameter `{parameter}` is not declared by the scenario")));
                 }
                 ValueCondition::Variable { variable, .. } if !declares(&s.variables, variable) => {
-                    out.push(problem(&c.origin, format!("{what}: variable `{variable}` is not declared by the scenario")));
+                    out.push(problem(&at(&c.origin, "variableRef", variable), format!("{what}: variable `{variable}` is not declared by the scenario")));
                 }
                 ValueCondition::StoryboardElementState { element_type, element, .. } => {
-                    // esmini finds an element by its own name or by a `::`-separated path
-                    let own = element.rsplit("::").next().unwrap_or(element);
-                    if !elements.contains(&(*element_type, own)) {
-                        out.push(problem(&c.origin, format!("{what}: there is no {} named `{element}` in the storyboard", element_type)));
+                    if let Err(storyboard::Unresolved::None(message)) = elements.resolve(*element_type, element) {
+                        out.push(problem(&at(&c.origin, "storyboardElementRef", element), format!("{what}: {message}")));
                     }
                 }
-                ValueCondition::TrafficSignalController { controller, .. }
-                    if !s.road_network.traffic_signal_controllers.iter().any(|t| &t.name == controller) =>
-                {
-                    out.push(problem(&c.origin, format!("{what}: traffic signal controller `{controller}` is not declared in the RoadNetwork")));
+                ValueCondition::TrafficSignalController { controller, .. } => {
+                    signal_controller(controller, &c.origin, "trafficSignalControllerRef", what, &mut out);
                 }
                 _ => {}
             },
             ConditionKind::Unsupported { .. } => {}
         }
     });
-    for (p, at) in positions(s) {
+    for (p, within) in positions(s) {
         if let Some(name) = p.reference_entity() {
-            entity(name, at, "position relative to entity", &mut out);
+            entity(name, within, "entityRef", "position relative to entity", &mut out);
         }
         if let Position::Route { in_route: InRoutePosition::FromCurrentEntity { entity: name }, .. } = p {
-            entity(name, at, "route position of entity", &mut out);
+            entity(name, within, "entityRef", "route position of entity", &mut out);
         }
     }
     out
 }
 
-fn problem(at: &Location, message: String) -> Warning {
-    Warning { location: at.clone(), message }
+/// Storyboard element references that name several elements (esmini takes the first), as
+/// warnings at their attributes, each place once.
+pub fn ambiguous(s: &Scenario) -> Vec<Diagnostic> {
+    let elements = storyboard::Elements::of(s);
+    let mut out: Vec<Diagnostic> = Vec::new();
+    for_each_condition(s, |c| {
+        if let ConditionKind::ByValue(ValueCondition::StoryboardElementState { element_type, element, .. }) = &c.kind {
+            if let Err(storyboard::Unresolved::Several(message)) = elements.resolve(*element_type, element) {
+                let w = problem(s.reference_site(&c.origin, "storyboardElementRef", |v| v == element), format!("{}: {message}", c.kind.element_name()));
+                if !out.contains(&w) {
+                    out.push(w);
+                }
+            }
+        }
+    });
+    out
+}
+
+/// A maneuver group whose maneuvers hold private actions but that names no actor (and does not
+/// take the triggering entities as its actors): those actions act on nothing. The standard makes
+/// the actors of a maneuver group the entities its private actions act on.
+fn actorless_private_actions(mg: &ManeuverGroup) -> Option<Diagnostic> {
+    if !mg.actors.is_empty() || mg.select_triggering_entities {
+        return None;
+    }
+    let first = mg.maneuvers.iter().flat_map(|m| &m.events).flat_map(|e| &e.actions).find(|a| matches!(a.kind, ActionKind::Private(_)))?;
+    Some(problem(
+        &mg.origin,
+        format!(
+            "maneuver group `{}` has private actions (the first, {}, at line {}) but no actor: they act on no entity",
+            mg.name,
+            first.kind.element_name(),
+            first.origin.line
+        ),
+    ))
+}
+
+fn problem(at: &Location, message: String) -> Diagnostic {
+    Diagnostic { location: at.clone(), message }
 }
 
 fn declares(decls: &[crate::ParameterDeclaration], name: &str) -> bool {
@@ -253,23 +308,23 @@ fn declare_entity<'a>(e: &'a Entity, names: &mut BTreeSet<&'a str>, depth: usize
     }
 }
 
-/// Entities an action names besides its actors.
-fn action_entities(kind: &ActionKind) -> Vec<&str> {
+/// Entities an action names besides its actors, with the attribute that names each.
+fn action_entities(kind: &ActionKind) -> Vec<(&'static str, &str)> {
     match kind {
         ActionKind::Private(p) => match p {
             PrivateAction::Speed { target: SpeedTarget::Relative { entity, .. }, .. }
             | PrivateAction::LongitudinalDistance { entity, .. }
             | PrivateAction::LateralDistance { entity, .. }
             | PrivateAction::LaneChange { target: LaneChangeTarget::Relative { entity, .. }, .. }
-            | PrivateAction::LaneOffset { target: LaneOffsetTarget::Relative { entity, .. }, .. } => vec![entity],
-            PrivateAction::SpeedProfile { entity: Some(entity), .. } => vec![entity],
-            PrivateAction::Synchronize { master, .. } => vec![master],
-            PrivateAction::ConnectTrailer { trailer } => vec![trailer],
+            | PrivateAction::LaneOffset { target: LaneOffsetTarget::Relative { entity, .. }, .. } => vec![("entityRef", entity)],
+            PrivateAction::SpeedProfile { entity: Some(entity), .. } => vec![("entityRef", entity)],
+            PrivateAction::Synchronize { master, .. } => vec![("masterEntityRef", master)],
+            PrivateAction::ConnectTrailer { trailer } => vec![("trailerRef", trailer)],
             _ => vec![],
         },
         ActionKind::Global(g) => match g {
-            GlobalAction::AddEntity { entity, .. } | GlobalAction::DeleteEntity { entity } => vec![entity],
-            GlobalAction::TrafficSwarm { central_entity, .. } => vec![central_entity],
+            GlobalAction::AddEntity { entity, .. } | GlobalAction::DeleteEntity { entity } => vec![("entityRef", entity)],
+            GlobalAction::TrafficSwarm { central_entity, .. } => vec![("entityRef", central_entity)],
             _ => vec![],
         },
         _ => vec![],
@@ -288,29 +343,4 @@ fn condition_entities(c: &EntityCondition) -> Vec<&str> {
         EntityCondition::RelativeClearance { entities, .. } => entities.iter().map(String::as_str).collect(),
         _ => vec![],
     }
-}
-
-/// (type, name) of every named storyboard element.
-fn storyboard_elements(s: &Scenario) -> BTreeSet<(StoryboardElementType, &str)> {
-    use StoryboardElementType as T;
-    let mut out = BTreeSet::new();
-    for story in &s.storyboard.stories {
-        out.insert((T::Story, story.name.as_str()));
-        for act in &story.acts {
-            out.insert((T::Act, act.name.as_str()));
-            for mg in &act.maneuver_groups {
-                out.insert((T::ManeuverGroup, mg.name.as_str()));
-                for m in &mg.maneuvers {
-                    out.insert((T::Maneuver, m.name.as_str()));
-                    for e in &m.events {
-                        out.insert((T::Event, e.name.as_str()));
-                        for a in &e.actions {
-                            out.insert((T::Action, a.name.as_str()));
-                        }
-                    }
-                }
-            }
-        }
-    }
-    out
 }
