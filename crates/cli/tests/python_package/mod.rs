@@ -217,7 +217,7 @@ except osc2cr.ConversionError as e:
 try:
     osc2cr.convert_to_xml(missing)
 except FileNotFoundError as e:
-    print("missing", isinstance(e, osc2cr.ConversionError), e.file == missing, e.line, missing in str(e), "no such file" in str(e), "schema" in str(e))
+    print("missing", isinstance(e, osc2cr.ConversionError), e.file == missing, e.line, missing in str(e), "no such file" in str(e).lower(), "schema" in str(e))
 try:
     osc2cr.convert_to_xml(bad, no_such_option=1)
 except TypeError:
