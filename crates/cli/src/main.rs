@@ -6,6 +6,7 @@
 mod commands;
 mod grouped;
 mod osi_file;
+mod scenario_input;
 mod serve_extra;
 mod shared_options;
 
@@ -37,7 +38,9 @@ enum Command {
     /// Load an OpenSCENARIO file and show what it resolves to: entities, storyboard,
     /// parameters, warnings.
     Inspect(inspect::InspectArgs),
-    /// Run a scenario with the engine and write its trace as CSV (the format of conformance.py).
+    /// Run a scenario with the engine and write its trace as CSV: one row per entity and engine
+    /// step with its position, heading, speed, bounding box and lane (the columns are in
+    /// --trace's help).
     Simulate(simulate::SimulateArgs),
     /// Draw a scenario (.xml, or .xosc converted first) as PNG/SVG stills, an animated GIF or a
     /// sheet of stills at the storyboard events: road users labelled, the events marked.

@@ -18,17 +18,17 @@ pub(crate) struct ParamArgs {
 #[derive(clap::Args)]
 pub(crate) struct RunArgs {
     /// Engine step, s.
-    #[arg(long, default_value_t = 0.01)]
+    #[arg(long, default_value_t = 0.01, allow_negative_numbers = true)]
     pub(crate) step: f64,
     /// Simulated time after which a run stops, s.
-    #[arg(long, default_value_t = 60.0)]
+    #[arg(long, default_value_t = 60.0, allow_negative_numbers = true)]
     pub(crate) max_time: f64,
     #[command(flatten)]
     pub(crate) params: ParamArgs,
     /// Seed of esmini's random generator in the engine (esmini's --seed; 0 as in the reference
     /// traces). It decides what esmini leaves to chance, e.g. which of two equally turning
     /// junction arms an entity takes.
-    #[arg(long, default_value_t = 0, value_name = "N")]
+    #[arg(long, default_value_t = 0, value_name = "N", allow_negative_numbers = true, value_parser = whole::<u32>)]
     pub(crate) engine_seed: u32,
     /// Read references to what does not exist (an undeclared entity, storyboard element,
     /// parameter or variable; a road or lane the map does not have; a parameter override the
@@ -39,17 +39,39 @@ pub(crate) struct RunArgs {
     pub(crate) lenient: bool,
 }
 
+impl RunArgs {
+    /// `convert`'s options with these set, the others at their defaults.
+    pub(crate) fn convert_options(&self) -> convert::ConvertOptions {
+        convert::ConvertOptions {
+            step: self.step,
+            max_time: self.max_time,
+            parameters: self.params.values.clone(),
+            engine_seed: self.engine_seed,
+            lenient: self.lenient,
+            ..Default::default()
+        }
+    }
+}
+
+/// A whole number of at least 0, for the options that count (their type's own parser would
+/// answer `-1` with "invalid digit found in string"). Numeric options take negative numbers as
+/// values (`allow_negative_numbers`), so that `--dt -1` reaches the option's own check and
+/// its message instead of being read as an unknown option `-1`.
+pub(crate) fn whole<T: std::str::FromStr>(s: &str) -> Result<T, String> {
+    s.trim().parse::<T>().map_err(|_| format!("expected a whole number of at least 0 (and not too large), got {s:?}"))
+}
+
 /// The CommonRoad file a run becomes.
 #[derive(clap::Args)]
 pub(crate) struct CommonRoadArgs {
     /// CommonRoad time step, s.
-    #[arg(long, default_value_t = 0.1)]
+    #[arg(long, default_value_t = 0.1, allow_negative_numbers = true)]
     pub(crate) dt: f64,
     /// Leave the ego out of the obstacles (for motion-planning benchmarks).
     #[arg(long)]
     pub(crate) drop_ego: bool,
-    /// Date attribute, YYYY-MM-DD (default: the FileHeader's date, else 1970-01-01 — never
-    /// today, so the same input gives the same bytes).
+    /// Date attribute, YYYY-MM-DD (default: the OpenSCENARIO FileHeader's date, else
+    /// 1970-01-01 — never today, so the same input gives the same bytes), as for map.
     #[arg(long, value_parser = convert::parse_date)]
     pub(crate) date: Option<commonroad::Date>,
 }
@@ -65,7 +87,7 @@ fn parse_param(s: &str) -> Result<(String, String), String> {
 
 #[cfg(test)]
 mod tests {
-    use super::parse_param;
+    use super::{parse_param, whole};
 
     #[test]
     fn a_parameter_is_a_name_and_a_value() {
@@ -74,6 +96,15 @@ mod tests {
         assert_eq!(parse_param("Name="), Ok(("Name".into(), String::new())));
         for bad in ["novalue", "=1", " =1", "$=1"] {
             assert!(parse_param(bad).is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn a_count_is_a_whole_number_of_at_least_zero() {
+        assert_eq!(whole::<u64>(" 12"), Ok(12));
+        for bad in ["-1", "1.5", "", "x", "99999999999999999999999"] {
+            let e = whole::<u64>(bad).expect_err(bad);
+            assert!(e.contains("whole number of at least 0") && e.contains(&format!("{bad:?}")), "{e}");
         }
     }
 }

@@ -92,9 +92,11 @@ pub fn run_batch_streaming(
     sink: &mut dyn FnMut(usize, ScenarioReport),
 ) -> Result<BatchSummary, String> {
     options.check()?;
+    // the inputs first: a batch whose input does not exist leaves no output folder behind
+    let found = discover(inputs)?;
     std::fs::create_dir_all(&batch.out_dir).map_err(|e| format!("cannot create output folder {}: {e}", batch.out_dir.display()))?;
     let removed_temporaries = if batch.resume { commonroad::xml::remove_stale_temporaries(&batch.out_dir) } else { Vec::new() };
-    let plan = Plan::new(discover(inputs)?, options);
+    let plan = Plan::new(found, options);
     let planned = plan.planned;
     let mut skipped = plan.skipped.clone();
     // skipped files are reported once, by the first shard, so that the shards' reports together

@@ -50,7 +50,7 @@ pub fn discover(inputs: &[PathBuf]) -> Result<Vec<Found>, String> {
                 out.push(Found { output_stem: sub.join(stem(&f)), path: f, folder, kind });
             }
         } else if input.is_file() {
-            let folder = input.parent().map(label).unwrap_or_else(|| ".".into());
+            let folder = input.parent().map_or_else(|| ".".into(), label);
             out.push(Found { output_stem: PathBuf::from(stem(input)), path: input.clone(), folder, kind: classify(input) });
         } else {
             return Err(format!("{}: no such file or directory", input.display()));
@@ -62,9 +62,12 @@ pub fn discover(inputs: &[PathBuf]) -> Result<Vec<Found>, String> {
     Ok(out)
 }
 
+/// A folder's name in the summary table: its last component, or the path itself (`..`); the
+/// current folder (a file given without one) is `.`, never an empty cell.
 fn label(dir: &Path) -> String {
     match dir.file_name() {
         Some(n) => n.to_string_lossy().into_owned(),
+        None if dir.as_os_str().is_empty() => ".".into(),
         None => dir.display().to_string(),
     }
 }

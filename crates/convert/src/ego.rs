@@ -4,6 +4,9 @@
 
 use crate::tracks::{Placement, Track};
 
+/// Why a scenario without entities cannot be converted (`preflight` says it before a run).
+pub(crate) const NO_EGO: &str = "the scenario has no entity that could be the ego of the planning problem";
+
 /// How the ego is chosen.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum EgoChoice {
@@ -58,7 +61,7 @@ pub fn choose_ego(tracks: &[Track], choice: &EgoChoice) -> Result<usize, String>
                 .or_else(|| tracks.iter().position(dynamic))
                 .or_else(fixed_by_pattern)
                 .or_else(|| (!tracks.is_empty()).then_some(0))
-                .ok_or_else(|| "the scenario has no entity that could be the ego of the planning problem".to_string())
+                .ok_or_else(|| NO_EGO.to_string())
         }
     }
 }

@@ -127,8 +127,10 @@ impl ConvertOptions {
             return Err(format!("--max-time must be > 0 s, got {}", self.max_time));
         }
         let g = &self.goal;
-        if !(g.length.is_finite() && g.length > 0.0 && g.width.is_finite() && g.width > 0.0) {
-            return Err(format!("goal length and width must be > 0 m, got {} × {}", g.length, g.width));
+        for (name, v) in [("--goal-length", g.length), ("--goal-width", g.width)] {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(format!("{name} must be > 0 m, got {v}"));
+            }
         }
         for (name, v) in [("--goal-speed-margin", g.speed_margin), ("--goal-orientation-margin", g.orientation_margin)] {
             if let Some(v) = v {

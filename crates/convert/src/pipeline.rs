@@ -284,6 +284,14 @@ pub(crate) fn prepare(
         .filter(|f| f.severity == openscenario::validate::Severity::Error)
         .map(|f| format!("{}: {}", f.location, f.message))
         .collect();
+    if !schema_errors.is_empty() {
+        // a file that cannot be read, or an override that does not fit its parameter, is said
+        // as what it is: --lenient changes nothing about it
+        let causes = crate::preflight::cause(request.path, &options.parameters, request.parameters);
+        if !causes.is_empty() {
+            return Err(fail(Stage::Load, causes.iter().map(ToString::to_string).collect::<Vec<_>>().join("\n")));
+        }
+    }
     strict(&schema_errors, Problems::Schema, Stage::Load, options, warnings)?;
     let loaded = openscenario::load(request.path, &load_options).map_err(|e| fail(Stage::Load, e.to_string()))?;
     warn(warnings, Stage::Load, &loaded.warnings);
@@ -302,7 +310,7 @@ pub(crate) fn prepare(
     let cached = match &scenario.road_network.logic_file {
         Some(path) => {
             let (road, fresh) = caches.road(path, options);
-            let road = road.map_err(|e| fail(Stage::RoadNetwork, e))?;
+            let road = road.map_err(|e| fail(Stage::RoadNetwork, crate::preflight::road_failure(&scenario, path, &e).to_string()))?;
             warn(warnings, Stage::RoadNetwork, &road.warnings);
             if fresh {
                 timings.road_network_ms = road.load_ms;

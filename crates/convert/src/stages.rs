@@ -27,13 +27,7 @@ pub(crate) struct EngineOutput {
 /// Lanelets of `road`. Signals that name no country are read as the benchmark's country when
 /// one is given (ZAM: the map converter's default).
 pub(crate) fn run_map(road: &opendrive::RoadNetwork, options: &ConvertOptions) -> MapOutput {
-    let defaults = map::MapOptions::default();
-    let map_options = map::MapOptions {
-        default_country: (options.country != "ZAM").then(|| options.country.clone()),
-        tolerance: options.map_tolerance.unwrap_or(defaults.tolerance),
-        ..defaults
-    };
-    let result = map::convert(road, &map_options);
+    let result = map::convert(road, &map_options(&options.country, options.map_tolerance));
     MapOutput {
         tags: map::derived_tags(&result.network),
         // the map converter's warnings have always said so
@@ -53,4 +47,14 @@ pub(crate) fn run_engine(
     let control = engine::RunControl { seed: options.engine_seed, deadline: options.deadline };
     let run = engine::simulate_with(scenario, road, &settings, &control)?;
     Ok(EngineOutput { trace: run.trace, warnings: run.warnings.iter().map(ToString::to_string).collect() })
+}
+
+/// The map converter's options for a scenario of `country` (the benchmark id's code, `ZAM` or
+/// ISO 3166 alpha-3), which is also the country of the signals that name none (ZAM: the map
+/// converter's default, the German catalogue of the OpenDRIVE annex), and a bound `tolerance`
+/// (`None`: the converter's default). `osc2cr map` and `convert` share it, so that `--country`
+/// means one thing in both.
+pub fn map_options(country: &str, tolerance: Option<f64>) -> map::MapOptions {
+    let defaults = map::MapOptions::default();
+    map::MapOptions { default_country: (country != "ZAM").then(|| country.to_string()), tolerance: tolerance.unwrap_or(defaults.tolerance), ..defaults }
 }

@@ -1,5 +1,6 @@
 //! The summary table, per folder, like the paper's Table II: how many scenarios, success rate,
-//! mean conversion time, mean simulated duration.
+//! mean conversion time (wall clock, per converted scenario), mean simulated time (how long the
+//! converted scenarios run).
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -82,7 +83,8 @@ impl Summary {
 
 /// The table as aligned text.
 pub fn render(rows: &[FolderSummary]) -> String {
-    let header = ["folder", "scenarios", "converted", "success", "mean time", "mean duration"];
+    // the conversion's wall-clock time, and how long the scenario runs in simulated time
+    let header = ["folder", "scenarios", "converted", "success", "mean conversion time", "mean simulated time"];
     let cells: Vec<Vec<String>> = rows
         .iter()
         .map(|r| {

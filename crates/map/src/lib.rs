@@ -33,7 +33,7 @@ pub mod tags;
 mod topology;
 mod warn;
 
-pub use map_scenario::{map_scenario, map_scenario_id};
+pub use map_scenario::{map_scenario, map_scenario_id, map_scenario_id_in};
 pub use options::{LaneletOrigin, MapOptions, MapResult};
 pub use sampling::MAX_STATIONS;
 pub use tags::derived_tags;

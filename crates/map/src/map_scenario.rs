@@ -8,11 +8,16 @@ use opendrive::RoadNetwork;
 
 /// `ZAM_<name>-1` from a file stem (letters and digits only; `Map` if none are left).
 pub fn map_scenario_id(stem: &str) -> Result<BenchmarkId, commonroad::Error> {
+    map_scenario_id_in("ZAM", stem)
+}
+
+/// `<country>_<name>-1`: [`map_scenario_id`] with another country code.
+pub fn map_scenario_id_in(country: &str, stem: &str) -> Result<BenchmarkId, commonroad::Error> {
     let mut name: String = stem.chars().filter(char::is_ascii_alphanumeric).collect();
     if name.is_empty() {
         name = "Map".into();
     }
-    BenchmarkId::parse(&format!("ZAM_{name}-1"))
+    BenchmarkId::parse(&format!("{country}_{name}-1"))
 }
 
 /// The scenario of a converted map. `date` is given (never "today") so output is reproducible.

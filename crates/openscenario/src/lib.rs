@@ -32,7 +32,7 @@ pub use catalog::CatalogKind;
 pub use catalog_file::{CatalogEntry, CatalogFile};
 pub use distribution::{Distribution, ParameterSet};
 pub use error::{Diagnostic, Error, ErrorKind, Location};
-pub use load::{load, load_scenario, load_str, Content, LoadOptions, Loaded};
+pub use load::{load, load_scenario, load_str, Content, LoadOptions, Loaded, CATALOG_NOT_CHECKED};
 pub use model::*;
 pub use params::{ParameterDeclaration, ParameterType};
 pub use unread::NO_BEARING;

@@ -18,10 +18,17 @@ pub struct LoadOptions {
     pub seed: Option<u64>,
     /// Read on past a vehicle, pedestrian, object, controller or maneuver whose catalog or
     /// catalog entry cannot be found, with a placeholder (an external object, no controller,
-    /// no maneuver), so that a check reports everything else as well: a missing catalog is then
-    /// a warning, a missing entry a problem ([`Loaded::problems`]). Never for a conversion.
+    /// no maneuver), so that a check reports everything else as well: a catalog whose
+    /// directories are not all there is then a warning (a conversion stops on it all the same),
+    /// any other missing catalog or entry a problem ([`Loaded::problems`]). Never for a
+    /// conversion.
     pub go_on_without_catalogs: bool,
 }
+
+/// How a reading past a missing catalog ([`LoadOptions::go_on_without_catalogs`]) ends the
+/// warning about a catalog whose directories are not there: what the file takes from it is not
+/// checked (and a conversion, which never reads past it, stops there).
+pub const CATALOG_NOT_CHECKED: &str = "(what this file takes from the catalog is not checked)";
 
 /// What a file turned out to be.
 #[derive(Debug, Clone)]

@@ -15,7 +15,7 @@ use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyByteArray, PyBytes, PyDict};
 
-use crate::errors::conversion_error;
+use crate::errors::{conversion_error, pythonic, warnings_of};
 use crate::inputs::{from_parts, from_row, DRIVER_WIDTH, STATE_WIDTHS};
 use crate::options::from_kwargs;
 
@@ -68,11 +68,7 @@ fn motion(text: &str) -> PyResult<ScriptedMotion> {
 
 /// A failed step: the engine's message (a wrong input) as `ValueError`.
 fn step_error(f: Failure) -> PyErr {
-    PyValueError::new_err(f.message)
-}
-
-fn warnings_of(list: &[convert::StageWarning]) -> Warnings {
-    list.iter().map(|w| (w.stage.as_str(), w.message.clone())).collect()
+    PyValueError::new_err(pythonic(&f.message))
 }
 
 impl Session {
@@ -215,7 +211,7 @@ impl Session {
         let started = py.detach(|| ClosedLoop::start(&path, &opts, &choice));
         let mut run = started.map_err(|f| match f.stage {
             // the external choice or the settings the engine refused: the caller's mistake
-            Stage::Engine => PyValueError::new_err(f.message),
+            Stage::Engine => PyValueError::new_err(pythonic(&f.message)),
             _ => conversion_error(py, &f, &path, None),
         })?;
         // a ghost's head start runs before CommonRoad time 0

@@ -67,18 +67,63 @@ fn digits(s: &str) -> Option<u32> {
     s.parse().ok()
 }
 
-/// The Python exception for `failure` of converting `file` (variation `variation`, if any).
+/// The Python exception for `failure` of converting `file` (variation `variation`, if any):
+/// `ScenarioNotFoundError` (a `ConversionError` and a `FileNotFoundError`) when `file` is not
+/// there, else `ConversionError`; the message names options as Python spells them
+/// ([`pythonic`]).
 pub(crate) fn conversion_error(py: Python<'_>, failure: &Failure, file: &Path, variation: Option<u64>) -> PyErr {
-    let p = position(&failure.message, file);
+    let message = pythonic(&failure.message);
+    let p = position(&message, file);
+    let class_name = if failure.stage == Stage::Load && !file.exists() { "ScenarioNotFoundError" } else { "ConversionError" };
     let made = (|| -> PyResult<PyErr> {
-        let class = py.import("osc2cr._errors")?.getattr("ConversionError")?;
-        let value = class.call1((failure.message.clone(), p.file, p.line, p.column, failure.stage.as_str(), variation))?;
+        let class = py.import("osc2cr._errors")?.getattr(class_name)?;
+        let value = class.call1((message.clone(), p.file, p.line, p.column, failure.stage.as_str(), variation))?;
         Ok(PyErr::from_value(value))
     })();
     made.unwrap_or_else(|e| e)
 }
 
+/// `message` with the command line's option names (`--lenient`, `--param`, `--max-variations`,
+/// …), which the library's messages use, as the Python keyword arguments that set the same
+/// thing (`lenient=True`, `params`, `max_variations`, …). Names Python has no keyword for are
+/// left as they are.
+pub(crate) fn pythonic(message: &str) -> String {
+    let mut out = String::with_capacity(message.len());
+    let mut rest = message;
+    while let Some(at) = rest.find("--") {
+        let (before, from) = rest.split_at(at);
+        out.push_str(before);
+        let after = &from[2..];
+        let len = after.find(|c: char| !(c.is_ascii_lowercase() || c.is_ascii_digit() || c == '-')).unwrap_or(after.len());
+        let name = &after[..len];
+        let word_start = !before.ends_with(|c: char| c.is_alphanumeric() || c == '-' || c == '_') && name.starts_with(|c: char| c.is_ascii_lowercase());
+        let keyword = match name {
+            "lenient" => Some("lenient=True".to_string()),
+            "param" => Some("params".to_string()),
+            "no-goal-velocity" => Some("goal_velocity=False".to_string()),
+            _ => Some(name.replace('-', "_")).filter(|k| crate::options::NAMES.contains(&k.as_str())),
+        };
+        match keyword.filter(|_| word_start) {
+            Some(k) => {
+                out.push_str(&k);
+                rest = &after[len..];
+            }
+            None => {
+                out.push_str("--");
+                rest = after;
+            }
+        }
+    }
+    out.push_str(rest);
+    out
+}
+
 /// A reason given as text (e.g. "not a scenario"), for `file`.
 pub(crate) fn message_error(py: Python<'_>, message: String, file: &Path) -> PyErr {
     conversion_error(py, &Failure { stage: Stage::Load, message }, file, None)
+}
+
+/// A conversion's warnings as (stage, message) pairs for Python, the messages [`pythonic`].
+pub(crate) fn warnings_of(list: &[convert::StageWarning]) -> Vec<(&'static str, String)> {
+    list.iter().map(|w| (w.stage.as_str(), pythonic(&w.message))).collect()
 }

@@ -56,7 +56,7 @@ fn payload(py: Python<'_>, output: Output) -> Payload<'_> {
 }
 
 fn finish<'py>(py: Python<'py>, c: Conversion, file: &std::path::Path, variation: Option<u64>) -> PyResult<Converted<'py>> {
-    let warnings = c.warnings.iter().map(|w| (w.stage.as_str(), w.message.clone())).collect();
+    let warnings = errors::warnings_of(&c.warnings);
     match c.result {
         Ok(output) => Ok((payload(py, output), warnings)),
         Err(f) => Err(errors::conversion_error(py, &f, file, variation)),

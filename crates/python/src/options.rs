@@ -98,7 +98,7 @@ pub(crate) fn from_kwargs(kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<(Conve
     if let Some(n) = max_variations {
         o.max_variations = n;
     }
-    o.check().map_err(PyValueError::new_err)?;
+    o.check().map_err(|m| PyValueError::new_err(crate::errors::pythonic(&m)))?;
     Ok((o, max_variations))
 }
 

@@ -66,7 +66,7 @@ impl Variations {
         let this = &*slf;
         let parameters = this.dist.get(k - 1).unwrap_or_default();
         let c = py.detach(|| convert::convert_variation_with(&this.path, &this.dist, k, &this.options, &this.caches));
-        let warnings = c.warnings.iter().map(|w| (w.stage.as_str(), w.message.clone())).collect();
+        let warnings = crate::errors::warnings_of(&c.warnings);
         match c.result {
             Ok(output) => Ok(Some((k, parameters, crate::payload(py, output), warnings))),
             Err(f) => Err(conversion_error(py, &f, &this.path, Some(k))),

@@ -20,10 +20,19 @@ pub const FRAMED_TRAIL_S: f64 = 1.0;
 pub enum Purpose {
     /// A still at this step, with trails of `trail_steps` before it.
     Still { step: u64, trail_steps: u64 },
+    /// A panel of a sheet: a still at this step whose road users are drawn large enough to
+    /// see at a glance — when framing them all would draw the largest shorter than
+    /// [`MIN_PANEL_USER_SHARE`] of the panel, the panel frames `ego` (else the largest road
+    /// user) and the road users nearest it that fit, the others being seen in other panels.
+    Panel { step: u64, trail_steps: u64, ego: Option<ObstacleId> },
     /// An animation over the whole run: one view of it all, or a camera that pans with the
     /// road users when that shows them much larger.
     Animation,
 }
+
+/// The largest road user of a sheet's panel is drawn at least this share of the panel's width
+/// long (a car 12 px in a panel of 390 px).
+pub const MIN_PANEL_USER_SHARE: f64 = 1.0 / 32.0;
 
 /// Height / width of a following window.
 pub const FOLLOW_ASPECT: f64 = 0.5;
@@ -193,7 +202,7 @@ pub fn plan(
         Frame::Action => {
             let framed_trail = step_of(FRAMED_TRAIL_S, scenario.header.time_step_size);
             let still = match purpose {
-                Purpose::Still { step, trail_steps } => Some((step, trail_steps.min(framed_trail))),
+                Purpose::Still { step, trail_steps } | Purpose::Panel { step, trail_steps, .. } => Some((step, trail_steps.min(framed_trail))),
                 Purpose::Animation => None,
             };
             let mut b = road_users(scenario, still);
@@ -204,7 +213,12 @@ pub fn plan(
             if !b.is_valid() {
                 return whole().map(ViewPlan::Fixed);
             }
-            let fixed = View::fit(b, width, &with_aspect(Fit::ACTION), top_px)?;
+            let mut fixed = View::fit(b, width, &with_aspect(Fit::ACTION), top_px)?;
+            if let (Purpose::Panel { ego, .. }, Some((step, trail))) = (purpose, still) {
+                if let Some(near) = near_ego(scenario, step, trail, ego, width, &with_aspect(Fit::ACTION), top_px, &fixed)? {
+                    fixed = near;
+                }
+            }
             if purpose == Purpose::Animation && aspect.is_none() {
                 if let Some(p) = pan(scenario, &fixed, width, top_px)? {
                     return Ok(p);
@@ -223,4 +237,51 @@ pub fn plan(
             Ok(ViewPlan::Follow { view, id: o.id })
         }
     }
+}
+
+/// The view of a panel at `step` (trails of `trail` steps) on `ego` (else the largest road user)
+/// and the road users nearest it, as many as keep the largest road user
+/// [`MIN_PANEL_USER_SHARE`] of the width long; `None` when `all` (every road user) does so.
+#[allow(clippy::too_many_arguments)]
+fn near_ego(
+    scenario: &Scenario,
+    step: u64,
+    trail: u64,
+    ego: Option<ObstacleId>,
+    width: u32,
+    fit: &Fit,
+    top_px: f64,
+    all: &View,
+) -> Result<Option<View>, Error> {
+    // each road user there at `step`: where it is, its box over the framed trail, its size
+    let mut users: Vec<(ObstacleId, (f64, f64), Bounds, f64)> = Vec::new();
+    for o in &scenario.dynamic_obstacles {
+        let Some(now) = state_at(o, step) else { continue };
+        let r = shape_radius(&o.shape);
+        let mut b = Bounds::empty();
+        let from = step.saturating_sub(trail);
+        std::iter::once(&o.initial_state).chain(&o.trajectory).filter(|s| (from..=step).contains(&s.time_step)).for_each(|s| b.add(s.x, s.y, r));
+        users.push((o.id, (now.x, now.y), b, 2.0 * r));
+    }
+    let largest = users.iter().map(|u| u.3).fold(0.0, f64::max);
+    let min_scale = MIN_PANEL_USER_SHARE * f64::from(width) / largest.max(f64::MIN_POSITIVE);
+    if all.scale >= min_scale {
+        return Ok(None);
+    }
+    let anchor = users.iter().find(|u| Some(u.0) == ego).or_else(|| users.iter().max_by(|a, b| a.3.total_cmp(&b.3).then(b.0.cmp(&a.0))));
+    let Some(&(_, (ax, ay), anchor_box, _)) = anchor else { return Ok(None) };
+    users.sort_by(|a, b| (a.1 .0 - ax).hypot(a.1 .1 - ay).total_cmp(&(b.1 .0 - ax).hypot(b.1 .1 - ay)).then(a.0.cmp(&b.0)));
+    let mut framed = anchor_box;
+    let mut view = View::fit(framed, width, fit, top_px)?;
+    for (_, _, b, _) in &users {
+        let mut wider = framed;
+        wider.add(b.min_x, b.min_y, 0.0);
+        wider.add(b.max_x, b.max_y, 0.0);
+        let v = View::fit(wider, width, fit, top_px)?;
+        if v.scale < min_scale {
+            break;
+        }
+        (framed, view) = (wider, v);
+    }
+    Ok(Some(view))
 }

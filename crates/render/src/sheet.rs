@@ -59,9 +59,10 @@ pub fn render_sheet_png(scenario: &Scenario, problems: Option<&PlanningProblemSe
     let panel_w = (options.width.saturating_sub((cols + 1) * GAP) / cols).max(crate::MIN_WIDTH);
     let panel_options = RenderOptions { width: panel_w, ..options.clone() };
     let trail_steps = step_of(options.trail, scenario.header.time_step_size);
+    let ego = crate::find_ego(scenario, problems, options.ego)?;
     let mut panels: Vec<Pixmap> = Vec::new();
     for &step in &steps {
-        let p = Prepared::new(scenario, problems, &panel_options, Purpose::Still { step, trail_steps }, Some(PANEL_ASPECT), false)?;
+        let p = Prepared::new(scenario, problems, &panel_options, Purpose::Panel { step, trail_steps, ego }, Some(PANEL_ASPECT), false)?;
         let mut pm = canvas(p.width, p.height, style::BACKGROUND)?;
         paint_prims(&mut pm, &p.base(step));
         paint_prims(&mut pm, &p.moving(step));
@@ -69,8 +70,7 @@ pub fn render_sheet_png(scenario: &Scenario, problems: Option<&PlanningProblemSe
     }
     let panel_h = panels.iter().map(Pixmap::height).max().unwrap_or(1);
     let width = cols * panel_w + (cols + 1) * GAP;
-    let ego = crate::find_ego(scenario, problems, options.ego)?;
-    let legend = footer::entries(scenario, problems, ego);
+    let legend = footer::entries(scenario, problems, ego, trail_steps > 0);
     let legend_h = footer::height(width, &legend, false).round() as u32;
     let height = rows * panel_h + (rows + 1) * GAP + legend_h;
     let mut sheet = canvas(width, height, style::STRIP_LINE)?;

@@ -25,6 +25,11 @@ pub const BORDER_WIDTH: f64 = 0.8;
 pub const MARKING_WIDTH: f64 = 1.5;
 pub const OUTLINE_WIDTH: f64 = 1.0;
 pub const EGO_OUTLINE_WIDTH: f64 = 2.0;
+/// The ego's path over the whole run (and its legend entry): dashes (on, off) and width in
+/// pixels, opacity.
+pub const EGO_PATH_DASH: (f64, f64) = (6.0, 4.0);
+pub const EGO_PATH_WIDTH: f64 = 2.0;
+pub const EGO_PATH_ALPHA: u8 = 200;
 
 /// Dashes of a dashed marking, metres (on, off), drawn at least this many pixels long.
 pub const DASH_M: (f64, f64) = (3.0, 3.0);

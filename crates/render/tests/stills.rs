@@ -89,7 +89,7 @@ fn svg_parses_and_has_the_time_stamp() {
     assert_eq!(root.attribute("height"), Some(l.height.to_string().as_str()));
     let texts: Vec<&str> = doc.descendants().filter(|n| n.has_tag_name("text")).filter_map(|n| n.text()).collect();
     // labels, the time, the scale and the legend
-    assert_eq!(texts, vec!["id 3", "id 2 ego", "t = 5.5 s", "5 m", "ego", "pedestrian", "goal"]);
+    assert_eq!(texts, vec!["id 3", "id 2 ego", "t = 5.5 s", "5 m", "ego", "pedestrian", "goal", "ego path"]);
     // the ego's fill colour appears twice without trails: the ego's box, its legend swatch
     let ego = style::EGO.hex();
     let n = doc.descendants().filter(|n| n.attribute("fill") == Some(ego.as_str())).count();

@@ -1,7 +1,9 @@
-//! The renderer's tests, one binary: stills (PNG, SVG), what a picture frames, animations.
+//! The renderer's tests, one binary: stills (PNG, SVG), what a picture frames, what its legend,
+//! time bar and header say, animations.
 
 mod common;
 
 mod animation;
 mod framing;
+mod legend_and_time;
 mod stills;

@@ -11,6 +11,8 @@ use serde::Serialize;
 use crate::shared_options::ParamArgs;
 use crate::Failure;
 
+mod convert_stops;
+
 #[derive(clap::Args)]
 pub(crate) struct CheckArgs {
     /// OpenSCENARIO files or folders (searched for .xosc, recursively; catalogs in a folder are
@@ -102,6 +104,7 @@ fn check_file(path: &Path, params: &[(String, String)]) -> Vec<Finding> {
     };
     let reader = reader_findings(path, params);
     out.extend(reader.into_iter().filter(|f| !already(f)));
+    convert_stops::hold_to_convert(&mut out, path, params);
     out
 }
 
@@ -115,8 +118,7 @@ fn reader_findings(path: &Path, params: &[(String, String)]) -> Vec<Finding> {
             // A catalog that is not there is a gap in what was given, not a fault of this file:
             // the file's own problems are all reported by the schema pass above.
             let severity = if e.kind == openscenario::ErrorKind::MissingCatalog { "warning" } else { "error" };
-            let message =
-                if severity == "warning" { format!("{} (what this file takes from the catalog is not checked)", e.message) } else { e.message.clone() };
+            let message = if severity == "warning" { format!("{} {}", e.message, openscenario::CATALOG_NOT_CHECKED) } else { e.message.clone() };
             out.push(finding(severity, &l.file, l.line, l.col, message));
             return out;
         }

@@ -38,25 +38,27 @@ pub(crate) struct ConvertArgs {
     #[arg(long, default_value = "ego", value_name = "TEXT")]
     pub ego_pattern: String,
     /// Goal rectangle length along the ego's last heading, m.
-    #[arg(long, default_value_t = 50.0)]
+    #[arg(long, default_value_t = 50.0, allow_negative_numbers = true)]
     pub goal_length: f64,
     /// Goal rectangle width, m.
-    #[arg(long, default_value_t = 10.0)]
+    #[arg(long, default_value_t = 10.0, allow_negative_numbers = true)]
     pub goal_width: f64,
     /// Goal time interval: this many steps before the ego's last step up to it.
-    #[arg(long, default_value_t = 10)]
+    #[arg(long, default_value_t = 10, allow_negative_numbers = true, value_parser = crate::shared_options::whole::<u64>)]
     pub goal_time_window: u64,
     /// Goal velocity interval: the ego's last speed ± this, m/s (clamped at 0).
-    #[arg(long, default_value_t = 5.0)]
+    #[arg(long, default_value_t = 5.0, allow_negative_numbers = true)]
     pub goal_speed_margin: f64,
     /// No velocity interval in the goal.
     #[arg(long, conflicts_with = "goal_speed_margin")]
     pub no_goal_velocity: bool,
     /// Goal orientation interval: the ego's last heading ± this, rad (default: none).
-    #[arg(long, value_name = "RAD")]
+    #[arg(long, value_name = "RAD", allow_negative_numbers = true)]
     pub goal_orientation_margin: Option<f64>,
-    /// Country code of the benchmark id: ZAM or an ISO 3166 alpha-3 code (e.g. DEU).
-    #[arg(long, default_value = "ZAM")]
+    /// Country code of the benchmark id, ZAM or an ISO 3166 alpha-3 code (e.g. DEU, SWE); also
+    /// the country of signals that name none (ZAM: the German catalogue of the OpenDRIVE
+    /// annex), as for map.
+    #[arg(long, default_value = "ZAM", value_name = "CODE")]
     pub country: String,
     /// Author attribute (default: the OpenSCENARIO FileHeader's author).
     #[arg(long)]
@@ -69,20 +71,20 @@ pub(crate) struct ConvertArgs {
     pub source: Option<String>,
     /// Most variations converted per parameter distribution file (for a whole sweep, its
     /// number of variations or more).
-    #[arg(long, default_value_t = 100)]
+    #[arg(long, default_value_t = 100, allow_negative_numbers = true, value_parser = crate::shared_options::whole::<u64>)]
     pub max_variations: u64,
     /// Largest distance between a lanelet bound and the exact lane border, m (default: the
     /// map converter's, 0.005); coarser gives fewer points and smaller files.
-    #[arg(long, value_name = "METRES")]
+    #[arg(long, value_name = "METRES", allow_negative_numbers = true)]
     pub map_tolerance: Option<f64>,
     /// Seed for stochastic parameter distributions (default: the file's own).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true, value_parser = crate::shared_options::whole::<u64>)]
     pub seed: Option<u64>,
     /// Scenarios converted in parallel (default: the number of CPUs).
-    #[arg(short = 'j', long = "jobs")]
+    #[arg(short = 'j', long = "jobs", allow_negative_numbers = true, value_parser = crate::shared_options::whole::<usize>)]
     pub jobs: Option<usize>,
     /// Wall-clock limit per scenario, s.
-    #[arg(long, default_value_t = 60.0, value_name = "SECS")]
+    #[arg(long, default_value_t = 60.0, value_name = "SECS", allow_negative_numbers = true)]
     pub timeout: f64,
     /// Convert only part K of N of the work (scenarios and variations, in a fixed order; K from
     /// 1): the N shards together write exactly the files of one run without --shard.
@@ -120,8 +122,6 @@ pub(crate) struct ConvertArgs {
 fn options(args: &ConvertArgs) -> ConvertOptions {
     ConvertOptions {
         dt: args.output_file.dt,
-        step: args.run.step,
-        max_time: args.run.max_time,
         ego: match &args.ego {
             Some(n) => EgoChoice::Name(n.clone()),
             None => EgoChoice::Pattern(args.ego_pattern.clone()),
@@ -139,14 +139,12 @@ fn options(args: &ConvertArgs) -> ConvertOptions {
         affiliation: args.affiliation.clone(),
         source: args.source.clone(),
         date: args.output_file.date,
-        parameters: args.run.params.values.clone(),
         seed: args.seed,
         max_variations: args.max_variations,
         map_tolerance: args.map_tolerance,
-        engine_seed: args.run.engine_seed,
         deadline: None,
-        lenient: args.run.lenient,
         format: args.format,
+        ..args.run.convert_options()
     }
 }
 
@@ -245,7 +243,10 @@ pub(crate) fn run(args: &ConvertArgs) -> Result<(), Failure> {
     if !totals.removed_temporaries.is_empty() {
         eprintln!("removed {} temporary file(s) an interrupted run left", totals.removed_temporaries.len());
     }
-    print!("{}", convert::render_summary(&totals.summary));
+    // a table of nothing but failures says no more than the failures above and the line below
+    if totals.converted + totals.complete > 0 {
+        print!("{}", convert::render_summary(&totals.summary));
+    }
     let complete = if totals.complete > 0 { format!(", {} already complete (--resume)", totals.complete) } else { String::new() };
     eprintln!(
         "{} converted{complete}, {} failed, {} skipped, {} warnings{} -> {}",
@@ -274,6 +275,6 @@ pub(crate) fn run(args: &ConvertArgs) -> Result<(), Failure> {
 }
 
 /// A stage as messages name it: the report's name with spaces (`road network`).
-fn stage_name(s: Stage) -> String {
+pub(crate) fn stage_name(s: Stage) -> String {
     s.as_str().replace('_', " ")
 }

@@ -5,7 +5,7 @@
 use crate::shared_options::ParamArgs;
 use crate::Failure;
 use openscenario::{
-    load, Action, CatalogEntry, CatalogFile, Condition, ConditionKind, Content, Diagnostic, Distribution, Entity, EntityObject, LoadOptions, Scenario, Trigger,
+    Action, CatalogEntry, CatalogFile, Condition, ConditionKind, Content, Diagnostic, Distribution, Entity, EntityObject, LoadOptions, Scenario, Trigger,
 };
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -23,13 +23,13 @@ pub(crate) struct InspectArgs {
     #[command(flatten)]
     pub params: ParamArgs,
     /// Seed for stochastic parameter distributions (default: the file's randomSeed).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true, value_parser = crate::shared_options::whole::<u64>)]
     pub seed: Option<u64>,
 }
 
 pub(crate) fn run(args: &InspectArgs) -> Result<(), Failure> {
     let options = LoadOptions { parameters: args.params.values.clone(), seed: args.seed, ..Default::default() };
-    let loaded = load(&args.file, &options).map_err(|e| Failure::input(e.to_string()))?;
+    let loaded = crate::scenario_input::load(&args.file, &options)?;
     let out = if args.json { json(args, &loaded.content, &loaded.warnings)? } else { text(args, &loaded.content, &loaded.warnings) };
     print!("{out}");
     Ok(())

@@ -1,4 +1,6 @@
 //! `osc2cr map`: an OpenDRIVE file in, a CommonRoad lanelet network out (written atomically).
+//! `--country` and `--date` mean what they mean to `convert`: the scenario's country (benchmark
+//! id and the sign catalogue of signals that name none) and the header's date.
 
 use crate::Failure;
 use std::path::PathBuf;
@@ -10,15 +12,18 @@ pub(crate) struct MapArgs {
     /// Where to write the CommonRoad XML.
     #[arg(short, long)]
     pub output: PathBuf,
-    /// Country of signals that name none (e.g. DE, SE); default Germany.
-    #[arg(long)]
-    pub country: Option<String>,
+    /// Country code of the benchmark id, ZAM or an ISO 3166 alpha-3 code (e.g. DEU, SWE); also
+    /// the country of signals that name none (ZAM: the German catalogue of the OpenDRIVE annex),
+    /// as for convert.
+    #[arg(long, default_value = "ZAM", value_name = "CODE")]
+    pub country: String,
     /// Largest distance (m) between a lanelet bound and the exact lane border.
-    #[arg(long, default_value_t = 0.005)]
+    #[arg(long, default_value_t = 0.005, allow_negative_numbers = true)]
     pub tolerance: f64,
-    /// The scenario date written into the file (YYYY-MM-DD); fixed so output is reproducible.
-    #[arg(long, default_value = "2026-01-01")]
-    pub date: String,
+    /// Date attribute, YYYY-MM-DD (default: the OpenDRIVE header's date, else 1970-01-01 — never
+    /// today, so the same input gives the same bytes), as for convert.
+    #[arg(long, value_parser = convert::parse_date)]
+    pub date: Option<commonroad::Date>,
     /// Print the conversion warnings on stderr.
     #[arg(short, long)]
     pub verbose: bool,
@@ -28,21 +33,17 @@ pub(crate) struct MapArgs {
     pub format: convert::OutputFormat,
 }
 
-fn parse_date(s: &str) -> Option<commonroad::Date> {
-    let mut it = s.trim().splitn(3, '-');
-    let y = it.next()?.parse().ok()?;
-    let m = it.next()?.parse().ok()?;
-    let d = it.next()?.parse().ok()?;
-    commonroad::Date::new(y, m, d).ok()
-}
-
 pub(crate) fn run(args: &MapArgs) -> Result<(), Failure> {
     if !(args.tolerance.is_finite() && args.tolerance > 0.0) {
         return Err(Failure::input(format!("--tolerance {} must be a positive number of metres", args.tolerance)));
     }
-    let date = parse_date(&args.date).ok_or_else(|| Failure::input(format!("--date `{}` is not a date YYYY-MM-DD", args.date)))?;
+    convert::check_country(&args.country).map_err(|e| Failure::input(format!("--country: {e}")))?;
+    if !args.file.exists() {
+        return Err(Failure::input(format!("{}: no such file", args.file.display())));
+    }
     let loaded = opendrive::load(&args.file).map_err(|e| Failure::input(e.to_string()))?;
-    let opts = map::MapOptions { tolerance: args.tolerance, default_country: args.country.clone(), ..Default::default() };
+    let date = args.date.or_else(|| loaded.network.header.date.as_deref().and_then(convert::date_prefix)).unwrap_or_else(convert::fallback_date);
+    let opts = convert::map_options(&args.country, Some(args.tolerance));
     let result = map::convert(&loaded.network, &opts);
     let n_warn = loaded.warnings.len() + result.warnings.len();
     if args.verbose {
@@ -52,7 +53,9 @@ pub(crate) fn run(args: &MapArgs) -> Result<(), Failure> {
     }
     let stem = args.file.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
     let n_lanelets = result.network.lanelets.len();
-    let scenario = map::map_scenario(&loaded.network, result, &stem, date).map_err(|e| Failure::input(format!("{}: {e}", args.file.display())))?;
+    let invalid = |e: commonroad::Error| Failure::input(format!("{}: {e}", args.file.display()));
+    let mut scenario = map::map_scenario(&loaded.network, result, &stem, date).map_err(invalid)?;
+    scenario.header.benchmark_id = map::map_scenario_id_in(&args.country, &stem).map_err(invalid)?;
     let problems = scenario.validate(None);
     if let Some(p) = problems.first() {
         return Err(Failure { message: format!("{}: converted map is invalid ({} problems), first: {p}", args.file.display(), problems.len()), status: 1 });

@@ -5,6 +5,7 @@
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
+use crate::shared_options::RunArgs;
 use crate::Failure;
 
 #[derive(clap::Args)]
@@ -16,14 +17,14 @@ pub(crate) struct RenderArgs {
     #[arg(short, long)]
     pub output: PathBuf,
     /// Time of a still, s (repeatable: several stills are written as OUT_t<T>.png).
-    #[arg(long = "time", value_name = "T")]
+    #[arg(long = "time", value_name = "T", allow_negative_numbers = true)]
     pub times: Vec<f64>,
     /// Picture width in pixels; the height follows from the content.
-    #[arg(long, default_value_t = 1200)]
+    #[arg(long, default_value_t = 1200, allow_negative_numbers = true, value_parser = crate::shared_options::whole::<u32>)]
     pub width: u32,
     /// Id of the dynamic obstacle to highlight as the ego (default: the one starting at the
     /// planning problem's initial state).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true, value_parser = crate::shared_options::whole::<u64>)]
     pub ego: Option<u64>,
     /// Keep this road user in the centre (a window 100 m wide): its OpenSCENARIO name or its
     /// CommonRoad obstacle id. By default a still shows where the road users are at its time,
@@ -44,12 +45,15 @@ pub(crate) struct RenderArgs {
     #[arg(long, conflicts_with = "times")]
     pub sheet: bool,
     /// Seconds of past positions drawn behind each road user (0: none).
-    #[arg(long, default_value_t = 3.0, value_name = "S")]
+    #[arg(long, default_value_t = 3.0, value_name = "S", allow_negative_numbers = true)]
     pub trail: f64,
     /// Also write where each road user and its label are on the still, in pixels, as JSON
     /// (one still only).
     #[arg(long, value_name = "FILE.json")]
     pub layout: Option<PathBuf>,
+    /// How an OpenSCENARIO file is run before it is drawn (ignored for a CommonRoad file).
+    #[command(flatten)]
+    pub run: RunArgs,
     /// Print the reader's and converter's warnings on stderr.
     #[arg(short, long)]
     pub verbose: bool,
@@ -92,18 +96,26 @@ struct Input {
     marks: Vec<render::Mark>,
 }
 
-/// The scenario from a CommonRoad file, or from an OpenSCENARIO file converted with defaults.
-fn load(path: &Path, verbose: bool) -> Result<Input, Failure> {
+/// The scenario from a CommonRoad file, or from an OpenSCENARIO file converted with `run`'s
+/// options (the other options of `convert` at their defaults).
+fn load(path: &Path, run: &RunArgs, verbose: bool) -> Result<Input, Failure> {
+    if !path.exists() {
+        return Err(Failure::input(format!("{}: no such file", path.display())));
+    }
     let is_xosc = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("xosc"));
     if is_xosc {
         let request = convert::Request::named(path, &convert::batch_name(path)).keeping_model();
-        let (conversion, model) = convert::convert(&request, &convert::ConvertOptions::default());
+        let options = run.convert_options();
+        options.check().map_err(Failure::input)?;
+        let (conversion, model) = convert::convert(&request, &options);
         if verbose {
             for w in &conversion.warnings {
                 eprintln!("{}: warning: {}", path.display(), w.message);
             }
         }
-        conversion.result.map_err(|f| Failure::input(format!("{}: conversion failed: {}", path.display(), f.message)))?;
+        conversion
+            .result
+            .map_err(|f| Failure::input(format!("{} cannot be drawn: {} stage: {}", path.display(), super::convert::stage_name(f.stage), f.message)))?;
         let model = model.ok_or_else(|| Failure { message: format!("{}: the conversion kept no model", path.display()), status: 1 })?;
         return Ok(Input {
             scenario: model.scenario,
@@ -121,8 +133,13 @@ fn load(path: &Path, verbose: bool) -> Result<Input, Failure> {
     Ok(Input { scenario: read.scenario, problems: read.problems, names: BTreeMap::new(), marks: Vec::new() })
 }
 
+/// Writes a picture (or its layout) whole, making its folder if it is not there yet.
 fn write(path: &Path, bytes: &[u8]) -> Result<(), Failure> {
-    commonroad::xml::write_atomic(path, bytes).map_err(|e| Failure { message: e.to_string(), status: 1 })
+    let failed = |message: String| Failure { message, status: 1 };
+    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir).map_err(|e| failed(format!("cannot create folder {}: {e}", dir.display())))?;
+    }
+    commonroad::xml::write_atomic(path, bytes).map_err(|e| failed(e.to_string()))
 }
 
 /// `X0,Y0,X1,Y1` as four numbers.
@@ -193,7 +210,7 @@ pub(crate) fn run(args: &RenderArgs) -> Result<(), Failure> {
     if args.layout.is_some() && (format == Format::Gif || args.sheet || args.times.len() > 1) {
         return Err(Failure::input("--layout describes one still: give at most one --time and a .png or .svg output"));
     }
-    let input = load(&args.file, args.verbose)?;
+    let input = load(&args.file, &args.run, args.verbose)?;
     let problems = (!input.problems.problems.is_empty()).then_some(&input.problems);
     let options = render::RenderOptions {
         width: args.width,

@@ -70,11 +70,11 @@ pub(crate) struct ServeArgs {
     pub bind: IpAddr,
     /// Base port: an entity without a `port` property listens on it plus its esmini object id
     /// (default: the scenario's `basePort`, else 49950).
-    #[arg(long, value_name = "PORT")]
+    #[arg(long, value_name = "PORT", allow_negative_numbers = true, value_parser = crate::shared_options::whole::<u16>)]
     pub base_port: Option<u16>,
     /// Simulated seconds per wall-clock second (default: 1 when a port is asynchronous, else
     /// as fast as the datagrams come).
-    #[arg(long, value_name = "F", conflicts_with = "fast")]
+    #[arg(long, value_name = "F", conflicts_with = "fast", allow_negative_numbers = true)]
     pub realtime_factor: Option<f64>,
     /// Never wait for the wall clock (synchronous ports still wait for their datagrams).
     #[arg(long)]
@@ -115,19 +115,14 @@ impl Observer for Stderr {
 fn options(args: &ServeArgs) -> Result<ServeOptions, Failure> {
     let convert = ConvertOptions {
         dt: args.output_file.dt,
-        step: args.run.step,
-        max_time: args.run.max_time,
         ego: match &args.ego {
             Some(n) => EgoChoice::Name(n.clone()),
             None => ConvertOptions::default().ego,
         },
         drop_ego: args.output_file.drop_ego,
-        parameters: args.run.params.values.clone(),
-        engine_seed: args.run.engine_seed,
         date: args.output_file.date,
-        lenient: args.run.lenient,
         format: args.osi.format,
-        ..ConvertOptions::default()
+        ..args.run.convert_options()
     };
     convert.check().map_err(Failure::input)?;
     let pace = match (args.realtime_factor, args.fast) {

@@ -1,5 +1,6 @@
-//! `osc2cr simulate`: run a scenario with the engine and write its trace (the CSV format of
-//! `conformance.py`), optionally the storyboard events; warnings go to stderr with -v.
+//! `osc2cr simulate`: run a scenario with the engine and write its trace as CSV (the columns are
+//! in `--trace`'s help; esmini's `--csv_logger` has the same quantities), optionally the
+//! storyboard events; warnings go to stderr with -v.
 
 use crate::shared_options::RunArgs;
 use crate::Failure;
@@ -10,13 +11,20 @@ use std::path::PathBuf;
 pub(crate) struct SimulateArgs {
     /// The OpenSCENARIO file (.xosc).
     pub file: PathBuf,
-    /// Where to write the trace (CSV: time,entity,x,y,z,h,speed,...).
-    #[arg(long)]
+    /// Where to write the trace: CSV, one row per entity and engine step, with the columns
+    /// time (s), entity (its name), x, y, z (m: the entity's reference point, its OpenSCENARIO
+    /// position, in the map's coordinates), h (heading, rad), speed (m/s), bb_cx, bb_cy, bb_cz
+    /// (the bounding box's centre relative to the reference point, m), length, width, height
+    /// (m), lane_id, lane_offset (m), s (m along the road; the last three empty off the road).
+    /// An entity added later or deleted has no rows while it is absent; where a ghost restarts,
+    /// the rows of the rewound time follow and the time goes back.
+    #[arg(long, value_name = "OUT.csv")]
     pub trace: PathBuf,
     #[command(flatten)]
     pub run: RunArgs,
-    /// Also write the storyboard state transitions (time,element,from,transition,to).
-    #[arg(long)]
+    /// Also write the storyboard's state transitions as CSV with the columns time (s), element
+    /// (its kind and name), from, transition, to (the states and the transition between them).
+    #[arg(long, value_name = "OUT.csv")]
     pub events: Option<PathBuf>,
     /// Also write the run as an OSI trace file (ASAM OSI 3.5 GroundTruth per frame, as esmini's
     /// --osi_file writes it).
@@ -46,18 +54,15 @@ fn write_file(path: &std::path::Path, text: &str) -> Result<(), Failure> {
 
 pub(crate) fn run(args: &SimulateArgs) -> Result<(), Failure> {
     let options = openscenario::LoadOptions { parameters: args.run.params.values.clone(), seed: None, ..Default::default() };
-    let loaded = openscenario::load(&args.file, &options).map_err(|e| Failure::input(e.to_string()))?;
+    let loaded = crate::scenario_input::load(&args.file, &options)?;
     let mut load_warnings: Vec<String> = loaded.warnings.iter().map(ToString::to_string).collect();
     strict(loaded.problems, args.run.lenient, &mut load_warnings)?;
     let scenario = match loaded.content {
         openscenario::Content::Scenario(s) => *s,
         _ => return Err(Failure::input(format!("{}: not a scenario (a distribution or catalog file)", args.file.display()))),
     };
-    let (roads, road_warnings) = match &scenario.road_network.logic_file {
-        Some(p) => {
-            let l = opendrive::load(p).map_err(|e| Failure::input(e.to_string()))?;
-            (Some(l.network), l.warnings)
-        }
+    let (roads, road_warnings) = match crate::scenario_input::road_network(&scenario)? {
+        Some(l) => (Some(l.network), l.warnings),
         None => (None, Vec::new()),
     };
     strict(engine::road_references(&scenario, roads.as_ref()), args.run.lenient, &mut load_warnings)?;

@@ -1,6 +1,7 @@
 //! `osc2cr check`: findings with severity and position, against the ASAM OpenSCENARIO API's own
-//! expectations.
+//! expectations, and the same verdict as `convert` on every failing input.
 
+mod agrees_with_convert;
 mod checker_suite;
 mod findings;
 mod lenient_fallbacks;

@@ -217,8 +217,8 @@ except osc2cr.ConversionError as e:
     print("pickled", (e2.file, e2.line, e2.column) == (e.file, e.line, e.column))
 try:
     osc2cr.convert_to_xml(missing)
-except osc2cr.ConversionError as e:
-    print("missing", e.file == missing, e.line, missing in str(e))
+except FileNotFoundError as e:
+    print("missing", isinstance(e, osc2cr.ConversionError), e.file == missing, e.line, missing in str(e), "no such file" in str(e).lower(), "schema" in str(e))
 try:
     osc2cr.convert_to_xml(bad, no_such_option=1)
 except TypeError:
@@ -236,7 +236,7 @@ try:
     osc2cr.convert_to_xml(example, params={"EgoSpeeed": 10})
     print("strict: converted")
 except osc2cr.ConversionError as e:
-    print("strict:", "EgoSpeeed" in str(e))
+    print("strict:", "EgoSpeeed" in str(e), "lenient=True" in str(e), "--" in str(e))
 with warnings.catch_warnings(record=True) as caught:
     warnings.simplefilter("always", osc2cr.ConversionWarning)
     xml = osc2cr.convert_to_xml(example, params={"EgoSpeeed": 10}, lenient=True)
@@ -278,7 +278,8 @@ fn errors_carry_file_line_and_column_and_variations_stream() {
     // the mismatch is seen at the closing tag on line 4
     assert_eq!(lines[0], "malformed True 4 True load", "{got}");
     assert_eq!(lines[1], "pickled True");
-    assert_eq!(lines[2], "missing True None True");
+    // a scenario file that is not there: a FileNotFoundError (and a ConversionError), saying so
+    assert_eq!(lines[2], "missing True True None True True False", "{got}");
     assert_eq!(lines[3], "typeerror");
     assert_eq!(lines[4], "valueerror");
     // the distribution: {2 value sets} × {70, 110} × range 1.1..1.5 step 0.2 (3) = 12 runs,
@@ -291,7 +292,8 @@ fn errors_carry_file_line_and_column_and_variations_stream() {
     assert_eq!(lines[8], "last 12 [('EgoSpeed', '110.0'), ('TargetSpeedFactor', '1.5'), ('TargetVehicle', 'van_red')]");
     // strict by default: an override of a parameter the scenario does not declare is an error;
     // lenient=True converts and says so as a ConversionWarning
-    assert_eq!(lines[9], "strict: True", "{got}");
+    // the message names the option as Python spells it, never the command line's --lenient
+    assert_eq!(lines[9], "strict: True True False", "{got}");
     assert_eq!(lines[10], "lenient: True True", "{got}");
 }
 
@@ -382,12 +384,16 @@ fn the_wheel_installs_without_rust_and_runs_the_readme_example() {
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert!(out.status.success(), "the README example failed:\n{stdout}{}", String::from_utf8_lossy(&out.stderr));
     assert!(stdout.contains("example ran 3 True"), "{stdout}");
-    // the sweep's six variations were written, as `osc2cr convert` names them
+    // the sweep's six variations were written into out/, as `osc2cr convert` names them, and
+    // nothing beside the examples
     for k in 1..=6 {
-        let f = work.join(format!("cut_in_speeds_{k}.xml"));
+        let f = work.join(format!("out/cut_in_speeds_{k}.xml"));
         let text = std::fs::read_to_string(&f).unwrap_or_else(|e| panic!("{}: {e}", f.display()));
         assert!(text.contains("<commonRoad"), "{}", f.display());
     }
+    let mut top: Vec<String> = std::fs::read_dir(&work).expect("work").flatten().map(|e| e.file_name().to_string_lossy().into_owned()).collect();
+    top.sort();
+    assert_eq!(top, ["examples", "out"]);
 }
 
 #[test]
@@ -406,6 +412,6 @@ fn the_readme_closed_loop_example_runs() {
     let printed: Vec<&str> = stdout.split_whitespace().collect();
     assert!(printed.first().and_then(|t| t.parse::<f64>().ok()).is_some_and(|t| t > 0.0), "{stdout}");
     assert_eq!(printed.get(1), Some(&"3"), "{stdout}");
-    let gif = std::fs::read(work.join("run.gif")).expect("run.gif written");
+    let gif = std::fs::read(work.join("out/run.gif")).expect("out/run.gif written");
     assert!(gif.starts_with(b"GIF89a"), "not a GIF");
 }

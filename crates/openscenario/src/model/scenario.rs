@@ -38,6 +38,9 @@ pub struct FileHeader {
 pub struct RoadNetwork {
     /// The OpenDRIVE file, resolved relative to the scenario file (not loaded here).
     pub logic_file: Option<PathBuf>,
+    /// Where the scenario names it (its `<LogicFile>`), for messages about the file.
+    #[serde(skip)]
+    pub logic_file_at: Option<crate::Location>,
     pub scene_graph_file: Option<PathBuf>,
     pub traffic_signal_controllers: Vec<TrafficSignalController>,
     /// UsedArea corner points (x, y) in world coordinates.

@@ -136,7 +136,7 @@ impl Reader {
                 let gap = Diagnostic { location: e.location.clone(), message: e.message.clone() };
                 // a catalog missing from directories that are all there is a wrong name, not a gap
                 if e.kind == ErrorKind::MissingCatalog && !self.catalogs.all_directories_exist() {
-                    self.warnings.push(Diagnostic { message: format!("{} (what this file takes from the catalog is not checked)", gap.message), ..gap });
+                    self.warnings.push(Diagnostic { message: format!("{} {}", gap.message, crate::CATALOG_NOT_CHECKED), ..gap });
                 } else {
                     self.problems.push(gap);
                 }

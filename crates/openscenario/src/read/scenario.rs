@@ -83,10 +83,11 @@ pub(crate) fn read_scenario(
 }
 
 fn read_road_network(r: &mut Reader, cx: &Cx, e: Option<&Elem>, dir: &Path) -> Result<RoadNetwork, Error> {
-    let mut rn = RoadNetwork { logic_file: None, scene_graph_file: None, traffic_signal_controllers: Vec::new(), used_area: Vec::new() };
+    let mut rn = RoadNetwork { logic_file: None, logic_file_at: None, scene_graph_file: None, traffic_signal_controllers: Vec::new(), used_area: Vec::new() };
     let Some(e) = e else { return Ok(rn) };
     if let Some(f) = e.child("LogicFile") {
         let raw = cx.text(f, "filepath")?;
+        rn.logic_file_at = Some(cx.loc(f.pos));
         let p = crate::error::absolute(&dir.join(&raw));
         rn.logic_file = Some(if p.is_file() {
             p

@@ -12,6 +12,7 @@
 mod declarations;
 mod names;
 mod operators;
+pub mod overrides;
 mod rules;
 mod values;
 

@@ -39,7 +39,9 @@ and options. With ``format="2024"``, :func:`convert` and :func:`convert_variatio
 three files with commonroad-io's three-file reader (commonroad-io 2026.x), :func:`variations`
 yields them as ``Variation.protobuf``, and :func:`convert_to_xml` refuses (use
 :func:`convert_to_protobuf`). Failures raise :class:`ConversionError` (with ``file``, ``line``,
-``column``); warnings are issued as :class:`ConversionWarning`.
+``column``) — for a scenario file that does not exist :class:`ScenarioNotFoundError`, which is
+also a ``FileNotFoundError``; warnings are issued as :class:`ConversionWarning`. Messages name
+options as these keywords (``lenient=True``, ``params``), not as the command line's.
 """
 
 from __future__ import annotations
@@ -52,7 +54,7 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING, NamedTuple, Optional, Union
 
 from . import _osc2cr
-from ._errors import ConversionError, ConversionWarning
+from ._errors import ConversionError, ConversionWarning, ScenarioNotFoundError
 from ._simulation import STATE_COLUMNS, DriverInput, EntityState, Event, Observation, Simulation
 
 if TYPE_CHECKING:
@@ -94,6 +96,7 @@ if TYPE_CHECKING:
 __all__ = [
     "STATE_COLUMNS",
     "ConversionError",
+    "ScenarioNotFoundError",
     "ConversionWarning",
     "DriverInput",
     "EntityState",

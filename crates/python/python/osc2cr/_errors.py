@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import errno
+
 
 class ConversionError(Exception):
     """A scenario could not be converted.
@@ -35,6 +37,19 @@ class ConversionError(Exception):
 
     def __str__(self) -> str:
         return self.message
+
+
+class ScenarioNotFoundError(ConversionError, FileNotFoundError):
+    """The scenario file given does not exist: a :class:`ConversionError` (same attributes) that
+    is also the ``FileNotFoundError`` Python raises for a missing file (``errno`` ENOENT,
+    ``filename`` the path)."""
+
+    def __init__(self, *args: object, **kwargs: object) -> None:
+        # ConversionError's arguments; the OSError attributes follow from them
+        ConversionError.__init__(self, *args, **kwargs)  # type: ignore[arg-type]
+        self.errno = errno.ENOENT
+        self.strerror = "No such file or directory"
+        self.filename = self.file
 
 
 class ConversionWarning(UserWarning):

@@ -1,5 +1,6 @@
 //! The footer strip: a scale bar and the legend (the ego, each obstacle type shown, the goal
-//! region), wrapped onto as many lines as the width needs.
+//! region, and the lines drawn over the map: the ego's dashed path, the trails with a dot per
+//! second), wrapped onto as many lines as the width needs.
 
 use commonroad::{ObstacleId, PlanningProblemSet, Scenario};
 
@@ -13,15 +14,26 @@ use crate::view::View;
 #[derive(Debug, Clone, PartialEq)]
 pub struct Entry {
     pub name: String,
-    pub fill: Rgba,
-    pub stroke: Rgba,
+    pub swatch: Swatch,
+}
+
+/// What a legend entry shows before its name.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Swatch {
+    /// A filled square, as the obstacles and the goal region are drawn.
+    Box { fill: Rgba, stroke: Rgba },
+    /// A dashed line, as the ego's path is drawn.
+    Dashed(Rgba),
+    /// A line with dots, as a trail is drawn (a dot per second back).
+    Dots(Rgba),
 }
 
 /// The entries for a scenario: the ego, the types of the other dynamic, static and
-/// environment obstacles (each once, in the order of the type lists), the goal region.
-pub fn entries(scenario: &Scenario, problems: Option<&PlanningProblemSet>, ego: Option<ObstacleId>) -> Vec<Entry> {
+/// environment obstacles (each once, in the order of the type lists), the goal region; then
+/// the ego's path (dashed over the whole run) and, with `trails`, the trails.
+pub fn entries(scenario: &Scenario, problems: Option<&PlanningProblemSet>, ego: Option<ObstacleId>, trails: bool) -> Vec<Entry> {
     use commonroad::{DynamicObstacleType as D, EnvironmentObstacleType as E, StaticObstacleType as S};
-    let entry = |name: &str, fill: Rgba| Entry { name: name.to_string(), fill, stroke: style::OUTLINE };
+    let entry = |name: &str, fill: Rgba| Entry { name: name.to_string(), swatch: Swatch::Box { fill, stroke: style::OUTLINE } };
     let mut out = Vec::new();
     if ego.is_some() {
         out.push(entry("ego", style::EGO));
@@ -43,9 +55,26 @@ pub fn entries(scenario: &Scenario, problems: Option<&PlanningProblemSet>, ego: 
     }
     let goal = problems.iter().flat_map(|p| &p.problems).flat_map(|p| &p.goal_states).any(|g| g.position.is_some());
     if goal {
-        out.push(Entry { name: "goal".into(), fill: style::GOAL_FILL, stroke: style::GOAL });
+        out.push(Entry { name: "goal".into(), swatch: Swatch::Box { fill: style::GOAL_FILL, stroke: style::GOAL } });
+    }
+    // what obstacles::paths and trails::trails draw
+    let ego_path = ego.and_then(|id| scenario.dynamic_obstacles.iter().find(|o| o.id == id)).is_some_and(|o| !o.trajectory.is_empty());
+    if ego_path {
+        out.push(Entry { name: "ego path".into(), swatch: Swatch::Dashed(style::EGO) });
+    }
+    if trails && !scenario.dynamic_obstacles.is_empty() {
+        out.push(Entry { name: "trail, a dot per s".into(), swatch: Swatch::Dots(style::MUTED) });
     }
     out
+}
+
+/// Width of an entry's swatch, for a text `size` high: a square, or a line long enough to show
+/// its dashes or dots.
+fn swatch_width(swatch: &Swatch, size: f64) -> f64 {
+    match swatch {
+        Swatch::Box { .. } => size,
+        Swatch::Dashed(_) | Swatch::Dots(_) => 2.5 * size,
+    }
 }
 
 /// Width reserved for the scale bar and its text, in font dots.
@@ -63,7 +92,7 @@ fn arrange(width: u32, entries: &[Entry], scale: bool) -> (Vec<(f64, usize)>, us
     let mut line = 0;
     let mut at = Vec::new();
     for e in entries {
-        let w = size + dot * 2.0 + font::text_box(&e.name, size).0;
+        let w = swatch_width(&e.swatch, size) + dot * 2.0 + font::text_box(&e.name, size).0;
         if x + w > right && x > pad {
             line += 1;
             x = pad;
@@ -136,13 +165,34 @@ pub fn footer(view: Option<&View>, width: u32, y: f64, entries: &[Entry], out: &
         let top = y + pad + line as f64 * lh;
         let s = size;
         let sy = top + 0.5 * (text_h - s);
-        out.push(Prim::Path {
-            points: vec![(x, sy), (x + s, sy), (x + s, sy + s), (x, sy + s)],
+        let sw = swatch_width(&e.swatch, s);
+        swatch(&e.swatch, x, sy, sw, s, out);
+        out.push(Prim::Text { x: x + sw + 0.5 * dot, y: top, size, color: style::TEXT, background: None, text: e.name.clone() });
+    }
+}
+
+/// A swatch `w` × `s` pixels with its top-left at (x, y).
+fn swatch(kind: &Swatch, x: f64, y: f64, w: f64, s: f64, out: &mut Vec<Prim>) {
+    let ym = y + 0.5 * s;
+    match *kind {
+        Swatch::Box { fill, stroke } => out.push(Prim::Path {
+            points: vec![(x, y), (x + w, y), (x + w, y + s), (x, y + s)],
             closed: true,
-            fill: Some(e.fill),
-            stroke: Some(Stroke::solid(e.stroke, 1.0)),
-        });
-        out.push(Prim::Text { x: x + s + 0.5 * dot, y: top, size, color: style::TEXT, background: None, text: e.name.clone() });
+            fill: Some(fill),
+            stroke: Some(Stroke::solid(stroke, 1.0)),
+        }),
+        Swatch::Dashed(color) => {
+            let (on, off) = style::EGO_PATH_DASH;
+            let stroke = Stroke::dashed(color.with_alpha(style::EGO_PATH_ALPHA), style::EGO_PATH_WIDTH, on, off);
+            out.push(Prim::Path { points: vec![(x, ym), (x + w, ym)], closed: false, fill: None, stroke: Some(stroke) });
+        }
+        Swatch::Dots(color) => {
+            let width = 0.3 * s;
+            out.push(Prim::Path { points: vec![(x, ym), (x + w, ym)], closed: false, fill: None, stroke: Some(Stroke::solid(color.with_alpha(120), width)) });
+            for cx in [x + 0.25 * w, x + 0.75 * w] {
+                out.push(Prim::Circle { center: (cx, ym), radius: 0.8 * width, fill: Some(color), stroke: Some(Stroke::solid(style::STRIP, 1.0)) });
+            }
+        }
     }
 }
 

@@ -1,7 +1,7 @@
 //! The header strip: the time, and the storyboard events that have happened by then — those of
-//! one time step together, with their time unless it is the header's, the newest on the right
-//! (cut short if it alone is too long), highlighted for [`style::MARK_HIGHLIGHT_S`] after it
-//! happens.
+//! one time step together, each group with its start time (also those starting at the header's
+//! time), the newest on the right (cut short if it alone is too long), highlighted for
+//! [`style::MARK_HIGHLIGHT_S`] after it happens.
 
 use super::prim::{Prim, Rgba, Stroke};
 use super::time_label;
@@ -74,8 +74,8 @@ pub fn header(width: u32, step: u64, dt: f64, marks: &[Mark], out: &mut Vec<Prim
     let mut shown: Vec<(String, bool, f64)> = Vec::new();
     let mut used = 0.0;
     for (i, (k, text)) in groups.iter().rev().enumerate() {
-        // at its own step the time is the header's already
-        let mut s = if *k == step { text.clone() } else { mark_text(&Mark { time: *k as f64 * dt, text: text.clone() }, dt) };
+        // each with its start time, the events of this very step too
+        let mut s = mark_text(&Mark { time: *k as f64 * dt, text: text.clone() }, dt);
         let mut w = font::text_box(&s, size).0;
         if i == 0 && w > room {
             let chars = ((room - 3.0 * dot) / (font::ADVANCE as f64 * dot)).floor().max(0.0) as usize;

@@ -64,13 +64,13 @@ impl<'a> Prepared<'a> {
         let timed = !(scenario.dynamic_obstacles.is_empty() && scenario.network.traffic_lights.is_empty());
         let header_h = if timed { header::height(options.width) } else { 0.0 };
         let plan = plan(scenario, problems, &options.frame, purpose, options.width, header_h, aspect)?;
-        let legend = if legend { footer::entries(scenario, problems, ego) } else { Vec::new() };
+        let trail_steps = step_of(options.trail, scenario.header.time_step_size);
+        let legend = if legend { footer::entries(scenario, problems, ego, timed && trail_steps > 0) } else { Vec::new() };
         let view = plan.any();
         let time_bar = timed && !options.marks.is_empty();
         let bar_h = if time_bar { timebar::height(options.width) } else { 0.0 };
         let footer_h = footer::height(options.width, &legend, true);
         let height = (header_h + f64::from(view.height) + bar_h + footer_h).round() as u32;
-        let dt = scenario.header.time_step_size;
         let mut p = Self {
             scenario,
             problems,
@@ -84,7 +84,7 @@ impl<'a> Prepared<'a> {
             still: None,
             names: options.names.clone(),
             marks: options.marks.clone(),
-            trail_steps: step_of(options.trail, dt),
+            trail_steps,
         };
         if let ViewPlan::Fixed(v) = &p.plan {
             p.still = Some(p.still_layer(v));

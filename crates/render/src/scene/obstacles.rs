@@ -56,7 +56,7 @@ pub(super) fn paths(scenario: &Scenario, ego: Option<ObstacleId>, view: &View, o
             continue;
         }
         let stroke = if Some(o.id) == ego {
-            Stroke::dashed(style::EGO.with_alpha(200), 2.0, 6.0, 4.0)
+            Stroke::dashed(style::EGO.with_alpha(style::EGO_PATH_ALPHA), style::EGO_PATH_WIDTH, style::EGO_PATH_DASH.0, style::EGO_PATH_DASH.1)
         } else {
             Stroke::solid(style::dynamic_color(o.obstacle_type).with_alpha(90), 1.0)
         };

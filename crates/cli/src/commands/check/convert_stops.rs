@@ -1,0 +1,31 @@
+//! What `convert` stops on, held against `check`'s own findings so that the two agree: a file
+//! `check` passes converts, and a file `convert` refuses has an error in `check` at the place
+//! `convert` names. Each of `convert::preflight::stops` (the reader's strict errors, a catalog
+//! or road network that cannot be read, positions on roads the map does not have, positions on
+//! roads without a map, …) either is a finding already — an error on its line, or the reader's
+//! warning of that very problem, which becomes the error it is for `convert` — or is added as
+//! an error.
+
+use std::path::Path;
+
+use super::Finding;
+
+/// Raises or adds to `findings` (those of `path`, checked with the overrides `params`) every
+/// problem `convert` stops on.
+pub(super) fn hold_to_convert(findings: &mut Vec<Finding>, path: &Path, params: &[(String, String)]) {
+    for stop in convert::preflight::stops(path, params) {
+        let l = &stop.location;
+        let file = l.file.display().to_string();
+        // the reader's warning of this very problem (a catalog it read on without)
+        let told = |f: &Finding| f.file == file && f.line == l.line && f.column == l.col && f.message.starts_with(&stop.message);
+        if let Some(f) = findings.iter_mut().find(|f| told(f)) {
+            f.severity = "error";
+            continue;
+        }
+        // the same problem seen by another pass on the same line (the schema's, the reader's)
+        if findings.iter().any(|f| f.file == file && f.line == l.line && f.severity == "error") {
+            continue;
+        }
+        findings.push(super::finding("error", &l.file, l.line, l.col, stop.message));
+    }
+}
