@@ -5,7 +5,7 @@
 use crate::tracks::{Placement, Track};
 
 /// Why a scenario without entities cannot be converted (`preflight` says it before a run).
-pub(crate) const NO_EGO: &str = "the scenario has no entity that could be the ego of the planning problem";
+pub const NO_EGO: &str = "the scenario has no entity that could be the ego of the planning problem";
 
 /// How the ego is chosen.
 #[derive(Debug, Clone, PartialEq, Eq)]

@@ -62,6 +62,7 @@ pub use cache::{Caches, Road};
 pub use carried::{carried_problems, retarget, Carried, PLANNING_PROBLEM_PROPERTY};
 pub use closed_loop::ClosedLoop;
 pub use discover::{classify, discover, FileKind, Found};
+pub use ego::NO_EGO;
 pub use ego::{choose_ego, EgoChoice};
 pub use goal::{planning_problem, GoalOptions};
 pub use header::{benchmark_id, check_country, date_prefix, fallback_date, parse_date};

@@ -234,7 +234,10 @@ fn disagreements(cases: &[Case], out: &Path) -> (Vec<String>, Vec<String>) {
                 if check.status.success() && convert.status.success() {
                     passed.lock().expect("lock").push(case.name.clone());
                 }
-                if verdict(&check) != verdict(&convert) {
+                // the one accepted difference: a valid scenario without entities, which check
+                // warns of and convert cannot write (no ego, no planning problem)
+                let no_ego = check.status.success() && String::from_utf8_lossy(&convert.stderr).contains(convert::NO_EGO);
+                if verdict(&check) != verdict(&convert) && !no_ego {
                     let said = format!(
                         "{}: check {} ({:?}), convert {} ({:?})\n  check: {}\n  convert: {}",
                         case.name,

@@ -39,14 +39,10 @@ pub(crate) fn beyond_the_schema(file: &str, message: &str) -> bool {
 }
 
 /// An error about what a file refers to but was not shipped with it: its catalogs (in
-/// directories that are not there), its road network, a distribution's scenario file; or a
-/// scenario with nothing to convert. `convert` refuses such a file, so `check` says so as an
+/// directories that are not there), its road network, a distribution's scenario file. `convert` refuses such a file, so `check` says so as an
 /// error (the same verdict); the file itself may still be valid.
 pub(crate) fn not_shipped(message: &str) -> bool {
     (message.starts_with("catalog '") && message.contains(" not found; looked in") && message.contains("(does not exist)"))
         || (message.starts_with("the road network (LogicFile)") && message.ends_with("no such file"))
         || message == "no such file"
-        // valid, but without an entity there is no ego for the planning problem: convert refuses
-        // it as well
-        || message == "the scenario has no entity that could be the ego of the planning problem"
 }

@@ -4,7 +4,8 @@
 //! or road network that cannot be read, positions on roads the map does not have, positions on
 //! roads without a map, …) either is a finding already — an error on its line, or the reader's
 //! warning of that very problem, which becomes the error it is for `convert` — or is added as
-//! an error.
+//! an error. The one exception is a scenario without entities: valid, run by esmini, only not
+//! convertible (no ego, no planning problem): a warning.
 
 use std::path::Path;
 
@@ -16,6 +17,14 @@ pub(super) fn hold_to_convert(findings: &mut Vec<Finding>, path: &Path, params: 
     for stop in convert::preflight::stops(path, params) {
         let l = &stop.location;
         let file = l.file.display().to_string();
+        // a scenario without entities is valid OpenSCENARIO, and esmini runs it: only the
+        // conversion has nothing to write (a CommonRoad file needs a planning problem, hence an
+        // ego), so `check` says so without refusing the file
+        if stop.message == convert::NO_EGO {
+            let message = format!("{} (convert refuses it: a CommonRoad scenario needs a planning problem)", stop.message);
+            findings.push(super::finding("warning", &l.file, l.line, l.col, message));
+            continue;
+        }
         // the reader's warning of this very problem (a catalog it read on without)
         let told = |f: &Finding| f.file == file && f.line == l.line && f.column == l.col && f.message.starts_with(&stop.message);
         if let Some(f) = findings.iter_mut().find(|f| told(f)) {
