@@ -57,13 +57,13 @@ fn the_corpus_has_no_error_but_where_convert_stops_too() {
         let c = osc2cr(&["convert", file, "-o", s(&out)]);
         assert!(!c.status.success(), "{file}: check refuses it, convert does not: {}", String::from_utf8_lossy(&c.stderr));
     }
-    // car_walk names catalogs (openx assets) the corpus does not ship: convert stops there, and
-    // check says so as an error, at the reference
+    // car_walk names catalogs (openx assets) the corpus does not ship, in a directory that is not
+    // there: esmini runs it where they are, so check warns at the reference (convert stops there)
     let car_walk = findings.iter().find(|f| {
         f["file"].as_str().is_some_and(|p| p.ends_with("car_walk.xosc"))
             && f["message"].as_str().is_some_and(|m| m.contains("catalog") && m.contains("not found"))
     });
-    assert!(car_walk.is_some_and(|f| f["severity"] == "error" && f["line"].as_u64().is_some_and(|l| l > 0)), "{car_walk:?}");
+    assert!(car_walk.is_some_and(|f| f["severity"] == "warning" && f["line"].as_u64().is_some_and(|l| l > 0)), "{car_walk:?}");
 }
 
 #[test]
@@ -91,10 +91,10 @@ fn missing_catalogs_and_map_are_reported_and_the_check_goes_on() {
     let has = |severity: &str, line: u64, needle: &str| {
         findings.iter().any(|f| f["severity"] == severity && f["line"] == line && f["message"].as_str().is_some_and(|m| m.contains(needle)))
     };
-    // the two vehicles' catalog is missing: said at each reference, an error as convert stops
-    // on it, and the reading goes on …
-    assert!(has("error", 35, "catalog 'VehicleCatalog' (for entry 'car_white') not found"), "{json:#}");
-    assert!(has("error", 38, "catalog 'VehicleCatalog' (for entry 'car_red') not found"), "{json:#}");
+    // the two vehicles' catalog is missing with its directory: said at each reference, a
+    // warning (a gap in what was given, not a fault of the file), and the reading goes on …
+    assert!(has("warning", 35, "catalog 'VehicleCatalog' (for entry 'car_white') not found"), "{json:#}");
+    assert!(has("warning", 38, "catalog 'VehicleCatalog' (for entry 'car_red') not found"), "{json:#}");
     // … to the map, which is missing too: an error where the scenario names it, as convert's …
     assert!(has("warning", 30, "not checked against a road network"), "{json:#}");
     assert!(has("error", 30, "the road network (LogicFile)"), "{json:#}");

@@ -38,11 +38,9 @@ pub(crate) fn beyond_the_schema(file: &str, message: &str) -> bool {
             && message.starts_with("attribute 'laneId' of <LanePosition>: expected an integer, found 'Ego_InitPosition_LaneId'")
 }
 
-/// An error about what a file refers to but was not shipped with it: its catalogs (in
-/// directories that are not there), its road network, a distribution's scenario file. `convert` refuses such a file, so `check` says so as an
+/// An error about what a file refers to but was not shipped with it: its road network, a
+/// distribution's scenario file. `convert` refuses such a file, so `check` says so as an
 /// error (the same verdict); the file itself may still be valid.
 pub(crate) fn not_shipped(message: &str) -> bool {
-    (message.starts_with("catalog '") && message.contains(" not found; looked in") && message.contains("(does not exist)"))
-        || (message.starts_with("the road network (LogicFile)") && message.ends_with("no such file"))
-        || message == "no such file"
+    (message.starts_with("the road network (LogicFile)") && message.ends_with("no such file")) || message == "no such file"
 }

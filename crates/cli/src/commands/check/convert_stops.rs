@@ -4,8 +4,10 @@
 //! or road network that cannot be read, positions on roads the map does not have, positions on
 //! roads without a map, …) either is a finding already — an error on its line, or the reader's
 //! warning of that very problem, which becomes the error it is for `convert` — or is added as
-//! an error. The one exception is a scenario without entities: valid, run by esmini, only not
-//! convertible (no ego, no planning problem): a warning.
+//! an error. Two stops are not faults of the file, and stay warnings: a catalog in directories
+//! that are not there (a gap in what was given: esmini runs the file where the catalog is) and
+//! a scenario without entities (valid, run by esmini, only not convertible: no ego, no planning
+//! problem).
 
 use std::path::Path;
 
@@ -28,7 +30,12 @@ pub(super) fn hold_to_convert(findings: &mut Vec<Finding>, path: &Path, params: 
         // the reader's warning of this very problem (a catalog it read on without)
         let told = |f: &Finding| f.file == file && f.line == l.line && f.column == l.col && f.message.starts_with(&stop.message);
         if let Some(f) = findings.iter_mut().find(|f| told(f)) {
-            f.severity = "error";
+            // a catalog in directories that are not there is a gap in what was given, not a
+            // fault of the file (esmini runs it where the catalog is): it stays the reader's
+            // warning, which says what is not checked
+            if !f.message.ends_with(openscenario::CATALOG_NOT_CHECKED) {
+                f.severity = "error";
+            }
             continue;
         }
         // the same problem seen by another pass on the same line (the schema's, the reader's)
