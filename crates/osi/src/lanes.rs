@@ -128,9 +128,7 @@ fn boundaries_of(road: &Road, key: LaneKey, lane: &Lane, gids: &GlobalIds, out: 
             classification: Some(lane_boundary::Classification {
                 r#type: Some(if edge { BoundaryType::RoadEdge } else { BoundaryType::NoLine } as i32),
                 color: Some(Color::Unknown as i32),
-                ..Default::default()
             }),
-            ..Default::default()
         });
         return;
     };
@@ -155,17 +153,12 @@ fn boundaries_of(road: &Road, key: LaneKey, lane: &Lane, gids: &GlobalIds, out: 
             };
             let line: Vec<BoundaryPoint> = points(road, (from, to), |s| outer(road, j, lane_id, s).map(|t| t + dt))
                 .into_iter()
-                .map(|position| BoundaryPoint { position, width: Some(width), height: Some(m.height.unwrap_or(0.0)), ..Default::default() })
+                .map(|position| BoundaryPoint { position, width: Some(width), height: Some(m.height.unwrap_or(0.0)) })
                 .collect();
             out.push(LaneBoundary {
                 id: id(line_id),
                 boundary_line: line,
-                classification: Some(lane_boundary::Classification {
-                    r#type: Some(boundary_type(m.kind) as i32),
-                    color: Some(color(m) as i32),
-                    ..Default::default()
-                }),
-                ..Default::default()
+                classification: Some(lane_boundary::Classification { r#type: Some(boundary_type(m.kind) as i32), color: Some(color(m) as i32) }),
             });
         }
     }
@@ -204,12 +197,10 @@ pub fn lanes_and_boundaries(net: &RoadNetwork, gids: &GlobalIds) -> (Vec<OsiLane
                         right_adjacent_lane_id: ids(neighbour(-1)),
                         left_lane_boundary_id: ids(left_b),
                         right_lane_boundary_id: ids(right_b),
-                        ..Default::default()
                     }),
                     source_reference: vec![ExternalReference {
                         r#type: Some(SOURCE_ODR.into()),
                         identifier: vec![format!("road_id:{}", road.id), format!("road_s:{}", sec.s), format!("lane_id:{lid}")],
-                        ..Default::default()
                     }],
                 });
             }

@@ -70,7 +70,7 @@ pub fn moving_object(name: &str, index: usize, osi_id: u64, model: &EntityObject
         EntityObject::Vehicle(v) => (
             &v.bounding_box,
             MovingType::Vehicle,
-            Some(VehicleClassification { r#type: Some(vehicle_type(v.category) as i32), role: Some(role(v.role) as i32), ..Default::default() }),
+            Some(VehicleClassification { r#type: Some(vehicle_type(v.category) as i32), role: Some(role(v.role) as i32) }),
             "Vehicle",
         ),
         EntityObject::Pedestrian(p) => {
@@ -89,7 +89,6 @@ pub fn moving_object(name: &str, index: usize, osi_id: u64, model: &EntityObject
         EntityObject::Vehicle(v) => Some(VehicleAttributes {
             bbcenter_to_rear: vec3(-c.x, -c.y, v.axles.rear.position_z - c.z),
             bbcenter_to_front: v.axles.front.map(|f| vec3(f.position_x - c.x, -c.y, f.position_z - c.z)).unwrap_or_default(),
-            ..Default::default()
         }),
         _ => None,
     };
@@ -103,7 +102,6 @@ pub fn moving_object(name: &str, index: usize, osi_id: u64, model: &EntityObject
             acceleration: vec3(motion.acceleration.0, motion.acceleration.1, motion.acceleration.2),
             orientation_rate: orientation(0.0, 0.0, motion.yaw_rate),
             orientation_acceleration: orientation(0.0, 0.0, motion.yaw_acceleration),
-            ..Default::default()
         }),
         r#type: Some(kind as i32),
         assigned_lane_id: id(lane_id).into_iter().collect(),
@@ -112,9 +110,7 @@ pub fn moving_object(name: &str, index: usize, osi_id: u64, model: &EntityObject
         source_reference: vec![ExternalReference {
             r#type: Some(SOURCE_OSC.into()),
             identifier: vec![format!("entity_id:{index}"), format!("entity_type:{entity_type}"), format!("entity_name:{name}")],
-            ..Default::default()
         }],
-        ..Default::default()
     })
 }
 
@@ -143,14 +139,11 @@ pub fn stationary_object(name: &str, osi_id: u64, model: &EntityObject, motion: 
             dimension: dimension(b),
             position: vec3(motion.x + b.center.x * cos, motion.y + b.center.x * sin, motion.z + b.height / 2.0),
             orientation: orientation(0.0, motion.pitch, motion.yaw),
-            ..Default::default()
         }),
-        classification: Some(stationary_object::Classification { r#type: Some(stationary_type(m.category) as i32), ..Default::default() }),
+        classification: Some(stationary_object::Classification { r#type: Some(stationary_type(m.category) as i32) }),
         source_reference: vec![ExternalReference {
             r#type: Some(SOURCE_OSC.into()),
             identifier: vec!["object_type:MiscObject".into(), format!("object_name:{name}")],
-            ..Default::default()
         }],
-        ..Default::default()
     })
 }
