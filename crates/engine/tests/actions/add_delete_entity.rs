@@ -8,10 +8,6 @@
 use crate::common::*;
 use engine::Run;
 
-fn stop(t: f64) -> String {
-    format!("<ConditionGroup>{}</ConditionGroup>", sim_time(t, "greaterThan", "none", 0.0))
-}
-
 fn delete(entity: &str) -> String {
     format!(r#"<GlobalAction><EntityAction entityRef="{entity}"><DeleteEntityAction/></EntityAction></GlobalAction>"#)
 }
@@ -26,13 +22,7 @@ fn at_time(t: f64) -> String {
 
 /// Ego in lane -1 at s = 100, Target in lane -1 at s = 20, both at 10 m/s.
 fn init() -> String {
-    format!(
-        "{}{}{}{}",
-        teleport("Ego", 100.0, -1),
-        init_speed("Ego", "step", "time", 0.0, 10.0),
-        teleport("Target", 20.0, -1),
-        init_speed("Target", "step", "time", 0.0, 10.0)
-    )
+    format!("{}{}", placed("Ego", 100.0, -1, 10.0), placed("Target", 20.0, -1, 10.0))
 }
 
 /// Target's sample at step k (None while it does not exist).
@@ -51,7 +41,7 @@ fn delete_and_add(extra_events: &str) -> Run {
         event("Delete", "parallel", &delete("Target"), &at_time(2.0)),
         event("Add", "parallel", &add("Target", 300.0, -2), &at_time(5.0)),
     );
-    run(&xosc(&init(), &story("Ego", &events), &stop(7.0)))
+    run(&xosc(&init(), &story("Ego", &events), &stop_at(7.0)))
 }
 
 #[test]
@@ -113,7 +103,7 @@ fn adding_an_existing_or_deleting_a_deleted_entity_is_skipped_with_a_warning() {
         event("Delete", "parallel", &delete("Target"), &at_time(2.0)),
         event("DeleteTwice", "parallel", &delete("Target"), &at_time(3.0)),
     );
-    let r = run(&xosc(&init(), &story("Ego", &events), &stop(4.0)));
+    let r = run(&xosc(&init(), &story("Ego", &events), &stop_at(4.0)));
     assert!(warned(&r, "already exists"), "{:?}", r.warnings);
     assert!(warned(&r, "already deleted"), "{:?}", r.warnings);
     // esmini's Start returns early: the refused actions never start, their events run on
@@ -140,7 +130,7 @@ fn target_story_while_away(events: &str) -> Run {
         "Ego",
         &format!("{}{}", event("Delete", "parallel", &delete("Target"), &at_time(2.0)), event("Add", "parallel", &add("Target", 300.0, -2), &at_time(5.0))),
     );
-    run(&xosc(&init(), &format!("{target_story}{globals}"), &stop(7.0)))
+    run(&xosc(&init(), &format!("{target_story}{globals}"), &stop_at(7.0)))
 }
 
 #[test]
@@ -173,7 +163,7 @@ fn an_entity_without_an_init_private_exists_only_once_added() {
     // the Init, has no rows until added at 1 s at s = 50 (speed 0: it stays there).
     let init = format!("{}{}", teleport("Ego", 100.0, -1), init_speed("Ego", "step", "time", 0.0, 10.0));
     let events = event("Add", "parallel", &add("Target", 50.0, -2), &at_time(1.0));
-    let r = run(&xosc(&init, &story("Ego", &events), &stop(2.0)));
+    let r = run(&xosc(&init, &story("Ego", &events), &stop_at(2.0)));
     for k in 0..=100 {
         assert!(sample(&r, "Target", k).is_none(), "Target has a row at step {k}");
     }
@@ -191,7 +181,7 @@ fn an_entity_deleted_in_init_first_exists_when_added() {
     // entities only), keeps it at 50 m in the add step: 50 + 10 · 0.49 = 54.9 m at 1.50 s.
     let init = format!(r#"<GlobalAction><EntityAction entityRef="Target"><DeleteEntityAction/></EntityAction></GlobalAction>{}"#, init());
     let events = event("Add", "parallel", &add("Target", 50.0, -2), &at_time(1.0));
-    let r = run(&xosc(&init, &story("Ego", &events), &stop(2.0)));
+    let r = run(&xosc(&init, &story("Ego", &events), &stop_at(2.0)));
     for k in 0..=100 {
         assert!(sample(&r, "Target", k).is_none(), "Target has a row at step {k}");
     }

@@ -15,7 +15,7 @@ fn teleport_places_on_lane_centre_facing_driving_direction() {
 }
 
 fn trigger_stop(t: f64) -> String {
-    format!("<ConditionGroup>{}</ConditionGroup>", sim_time(t, "greaterThan", "none", 0.0))
+    stop_at(t)
 }
 
 #[test]

@@ -12,15 +12,9 @@ fn relative_offset(entity: &str, value: f64) -> String {
 }
 
 fn final_y(reference: &str, value: f64) -> f64 {
-    let init = format!(
-        "{}{}{}{}",
-        teleport("Ego", 10.0, -1),
-        init_speed("Ego", "step", "time", 0.0, 10.0),
-        teleport("Target", 10.0, -2),
-        init_speed("Target", "step", "time", 0.0, 10.0)
-    );
+    let init = format!("{}{}", placed("Ego", 10.0, -1, 10.0), placed("Target", 10.0, -2, 10.0));
     let stories = story("Ego", &event("LO", "overwrite", &relative_offset(reference, value), &trigger(&sim_time(1.0, "greaterThan", "none", 0.0))));
-    let stop = format!("<ConditionGroup>{}</ConditionGroup>", sim_time(6.0, "greaterThan", "none", 0.0));
+    let stop = stop_at(6.0);
     let run = run(&xosc(&init, &stories, &stop));
     assert!(run.warnings.is_empty(), "{:?}", run.warnings);
     at(&run, "Ego", 6.0).y

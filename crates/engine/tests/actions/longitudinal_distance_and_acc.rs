@@ -4,10 +4,6 @@
 
 use crate::common::*;
 
-fn stop(t: f64) -> String {
-    format!("<ConditionGroup>{}</ConditionGroup>", sim_time(t, "greaterThan", "none", 0.0))
-}
-
 fn long_distance(attrs: &str, constraints: &str) -> String {
     format!(
         r#"<PrivateAction><LongitudinalAction><LongitudinalDistanceAction entityRef="Target" {attrs}>{constraints}</LongitudinalDistanceAction></LongitudinalAction></PrivateAction>"#
@@ -20,15 +16,9 @@ fn scenario(action: &str) -> String {
 
 fn scenario_from(action: &str, ego_s: f64, ego_speed: f64) -> String {
     // Target at s = 100 drives 10 m/s; Ego at `ego_s` drives `ego_speed`, same lane.
-    let init = format!(
-        "{}{}{}{}",
-        teleport("Ego", ego_s, -1),
-        init_speed("Ego", "step", "time", 0.0, ego_speed),
-        teleport("Target", 100.0, -1),
-        init_speed("Target", "step", "time", 0.0, 10.0)
-    );
+    let init = format!("{}{}", placed("Ego", ego_s, -1, ego_speed), placed("Target", 100.0, -1, 10.0));
     let stories = story("Ego", &event("Keep", "overwrite", action, &trigger(&sim_time(0.0, "greaterOrEqual", "none", 0.0))));
-    xosc(&init, &stories, &stop(15.0))
+    xosc(&init, &stories, &stop_at(15.0))
 }
 
 #[test]
@@ -72,14 +62,12 @@ fn acc_scenario(set_speed: f64) -> String {
     // The Ego carries an ACC (override mode, time gap 1 s) and is 90 m behind a Target at 10 m/s.
     let text = xosc(
         &format!(
-            "{}{}{}{}<Private entityRef=\"Ego\"><PrivateAction><ActivateControllerAction longitudinal=\"true\" lateral=\"false\"/></PrivateAction></Private>",
-            teleport("Ego", 10.0, -1),
-            init_speed("Ego", "step", "time", 0.0, 20.0),
-            teleport("Target", 100.0, -1),
-            init_speed("Target", "step", "time", 0.0, 10.0)
+            "{}{}<Private entityRef=\"Ego\"><PrivateAction><ActivateControllerAction longitudinal=\"true\" lateral=\"false\"/></PrivateAction></Private>",
+            placed("Ego", 10.0, -1, 20.0),
+            placed("Target", 100.0, -1, 10.0)
         ),
         "",
-        &stop(40.0),
+        &stop_at(40.0),
     );
     let controller = format!(
         r#"<ObjectController><Controller name="ACCController"><Properties><Property name="timeGap" value="1.0"/><Property name="mode" value="override"/><Property name="setSpeed" value="{set_speed}"/></Properties></Controller></ObjectController></ScenarioObject>"#

@@ -6,10 +6,6 @@
 use crate::common::*;
 use openscenario::{LightMode, LightType};
 
-fn stop(t: f64) -> String {
-    format!("<ConditionGroup>{}</ConditionGroup>", sim_time(t, "greaterThan", "none", 0.0))
-}
-
 fn light(kind: &str, mode: &str, extra: &str) -> String {
     format!(
         r#"<PrivateAction><AppearanceAction><LightStateAction transitionTime="0.5"><LightType><VehicleLight vehicleLightType="{kind}"/></LightType><LightState mode="{mode}"{extra}/></LightStateAction></AppearanceAction></PrivateAction>"#
@@ -35,7 +31,7 @@ fn light_states_are_kept_with_their_time_and_a_warning() {
             &trigger(&sim_time(2.0, "greaterOrEqual", "none", 0.0))
         ),
     );
-    let r = run(&xosc(&init, &story("Ego", &events), &stop(3.0)));
+    let r = run(&xosc(&init, &story("Ego", &events), &stop_at(3.0)));
     assert_eq!(r.lights.len(), 2, "{:?}", r.lights);
     let (low, blink) = (&r.lights[0], &r.lights[1]);
     assert!(close(low.time, 1.0, 1e-9) && low.entity == "Ego" && low.light == LightType::Vehicle("lowBeam".into()));
@@ -55,7 +51,7 @@ fn light_states_are_kept_with_their_time_and_a_warning() {
 fn environments_are_kept_from_init_and_story() {
     let init = format!("{}{}", environment("Dusk", "wetWithPuddles"), teleport("Ego", 100.0, -1));
     let events = event("Dry", "parallel", &environment("Night", "dry"), &trigger(&sim_time(1.5, "greaterOrEqual", "none", 0.0)));
-    let r = run(&xosc(&init, &story("Ego", &events), &stop(2.0)));
+    let r = run(&xosc(&init, &story("Ego", &events), &stop_at(2.0)));
     let got: Vec<(f64, &str)> = r.environment.iter().map(|e| (e.time, e.environment.name.as_str())).collect();
     assert_eq!(got.len(), 2, "{got:?}");
     assert!(close(got[0].0, 0.0, 1e-12) && got[0].1 == "Dusk", "{got:?}");

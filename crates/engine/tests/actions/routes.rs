@@ -12,10 +12,6 @@ fn route(waypoints: &[(f64, i32)]) -> String {
     format!(r#"<Route name="R" closed="false"><ParameterDeclarations/>{w}</Route>"#)
 }
 
-fn stop_at(t: f64) -> String {
-    format!("<ConditionGroup>{}</ConditionGroup>", sim_time(t, "greaterThan", "none", 0.0))
-}
-
 fn route_position(route: &str, in_route: &str) -> String {
     format!(r#"<Position><RoutePosition><RouteRef>{route}</RouteRef><InRoutePosition>{in_route}</InRoutePosition></RoutePosition></Position>"#)
 }

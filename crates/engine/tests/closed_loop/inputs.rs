@@ -17,14 +17,8 @@ fn load(text: &str) -> (openscenario::Scenario, opendrive::RoadNetwork) {
 
 /// Ego at s = 50 on lane −1 at 10 m/s, Target at s = 200 on lane −1 at 5 m/s; `stories`; 10 s.
 fn scenario(stories: &str) -> String {
-    let init = format!(
-        "{}{}{}{}",
-        teleport("Ego", 50.0, -1),
-        init_speed("Ego", "step", "time", 0.0, 10.0),
-        teleport("Target", 200.0, -1),
-        init_speed("Target", "step", "time", 0.0, 5.0)
-    );
-    xosc(&init, stories, &format!("<ConditionGroup>{}</ConditionGroup>", sim_time(10.0, "greaterThan", "none", 0.0)))
+    let init = format!("{}{}", placed("Ego", 50.0, -1, 10.0), placed("Target", 200.0, -1, 5.0));
+    xosc(&init, stories, &stop_at(10.0))
 }
 
 const EGO: usize = 0;
@@ -246,7 +240,7 @@ fn overridden_by_an_outside_driver() -> String {
         &trigger(&sim_time(4.0, "greaterOrEqual", "none", 0.0)),
     );
     let stories = story("Ego", &format!("{}{hop}", ego_events()));
-    with_outside_driver(&xosc(&init, &stories, &format!("<ConditionGroup>{}</ConditionGroup>", sim_time(5.0, "greaterThan", "none", 0.0))))
+    with_outside_driver(&xosc(&init, &stories, &stop_at(5.0)))
 }
 
 #[test]
@@ -300,7 +294,7 @@ fn acc_behind_ego() -> String {
         lane_pos(60.0, -1),
         speed_action("step", "time", 0.0, 15.0)
     );
-    let text = xosc(&format!("{ego}{target}"), "", &format!("<ConditionGroup>{}</ConditionGroup>", sim_time(10.0, "greaterThan", "none", 0.0)));
+    let text = xosc(&format!("{ego}{target}"), "", &stop_at(10.0));
     let acc = r#"<ObjectController><Controller name="ACC"><Properties><Property name="esminiController" value="ACCController"/><Property name="timeGap" value="1"/><Property name="mode" value="override"/><Property name="setSpeed" value="20"/></Properties></Controller></ObjectController></ScenarioObject>"#;
     // the controller goes into Target's ScenarioObject (the second one)
     let at = text.match_indices("</ScenarioObject>").nth(1).map_or(text.len(), |(i, _)| i);

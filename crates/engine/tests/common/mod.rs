@@ -69,6 +69,16 @@ pub(crate) fn init_speed(entity: &str, shape: &str, dim: &str, value: f64, targe
     format!(r#"<Private entityRef="{entity}">{}</Private>"#, speed_action(shape, dim, value, target))
 }
 
+/// `entity` put on lane `lane` of the fixture road at `s`, at `speed` from the start (a step).
+pub(crate) fn placed(entity: &str, s: f64, lane: i32, speed: f64) -> String {
+    format!("{}{}", teleport(entity, s, lane), init_speed(entity, "step", "time", 0.0, speed))
+}
+
+/// The stop trigger's condition group: simulated time past `t`.
+pub(crate) fn stop_at(t: f64) -> String {
+    format!("<ConditionGroup>{}</ConditionGroup>", sim_time(t, "greaterThan", "none", 0.0))
+}
+
 pub(crate) fn sim_time(value: f64, rule: &str, edge: &str, delay: f64) -> String {
     format!(
         r#"<Condition name="t" delay="{delay}" conditionEdge="{edge}"><ByValueCondition><SimulationTimeCondition value="{value}" rule="{rule}"/></ByValueCondition></Condition>"#

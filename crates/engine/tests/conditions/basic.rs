@@ -4,10 +4,6 @@
 
 use crate::common::*;
 
-fn stop_at(t: f64) -> String {
-    format!("<ConditionGroup>{}</ConditionGroup>", sim_time(t, "greaterThan", "none", 0.0))
-}
-
 /// Time at which event "E" starts when triggered by `condition` (XML of one Condition).
 fn fire_time(condition: &str, target_s: f64) -> Option<f64> {
     let init = format!("{}{}{}", teleport("Ego", 10.0, -1), teleport("Target", target_s, -1), init_speed("Ego", "step", "time", 0.0, 10.0));

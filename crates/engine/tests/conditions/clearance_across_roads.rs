@@ -14,7 +14,7 @@ fn run_on_opposite_roads(opposite_lanes: bool) -> engine::Run {
         r#"<Condition name="clear" delay="0" conditionEdge="none"><ByEntityCondition><TriggeringEntities triggeringEntitiesRule="any"><EntityRef entityRef="Ego"/></TriggeringEntities><EntityCondition><RelativeClearanceCondition distanceForward="100" distanceBackward="30" freeSpace="false" oppositeLanes="{opposite_lanes}"><RelativeLaneRange from="-1" to="3"/><EntityRef entityRef="Target"/></RelativeClearanceCondition></EntityCondition></ByEntityCondition></Condition>"#
     );
     let stories = story("Ego", &event("E", "overwrite", &speed_action("step", "time", 0.0, 1.0), &trigger(&cond)));
-    let stop = format!("<ConditionGroup>{}</ConditionGroup>", sim_time(1.0, "greaterThan", "none", 0.0));
+    let stop = stop_at(1.0);
     let text = xosc(init, &stories, &stop).replace("straight.xodr", "opposite_roads.xodr");
     let path = fixtures().join("test.xosc");
     let loaded = openscenario::load_str(&path, &text, &Default::default()).expect("test scenario loads");

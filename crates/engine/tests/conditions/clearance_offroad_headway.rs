@@ -5,10 +5,6 @@
 use crate::common::*;
 use engine::{Run, Settings};
 
-fn stop_at(t: f64) -> String {
-    format!("<ConditionGroup>{}</ConditionGroup>", sim_time(t, "greaterThan", "none", 0.0))
-}
-
 fn clearance(from: i32, to: i32) -> String {
     format!(
         r#"<Condition name="clear" delay="0" conditionEdge="none"><ByEntityCondition><TriggeringEntities triggeringEntitiesRule="any"><EntityRef entityRef="Ego"/></TriggeringEntities><EntityCondition><RelativeClearanceCondition distanceForward="20" distanceBackward="10" freeSpace="false" oppositeLanes="false"><RelativeLaneRange from="{from}" to="{to}"/></RelativeClearanceCondition></EntityCondition></ByEntityCondition></Condition>"#
@@ -96,13 +92,7 @@ fn inside_the_outermost_real_lane_is_on_the_road() {
 }
 
 fn headway_run(target_s: f64) -> Run {
-    let init = format!(
-        "{}{}{}{}",
-        teleport("Ego", 100.0, -1),
-        init_speed("Ego", "step", "time", 0.0, 10.0),
-        teleport("Target", target_s, -2),
-        init_speed("Target", "step", "time", 0.0, 10.0)
-    );
+    let init = format!("{}{}", placed("Ego", 100.0, -1, 10.0), placed("Target", target_s, -2, 10.0));
     let cond = |rule: &str, value: f64| {
         format!(
             r#"<Condition name="hw" delay="0" conditionEdge="none"><ByEntityCondition><TriggeringEntities triggeringEntitiesRule="any"><EntityRef entityRef="Ego"/></TriggeringEntities><EntityCondition><TimeHeadwayCondition entityRef="Target" value="{value}" freespace="false" alongRoute="false" rule="{rule}"/></EntityCondition></ByEntityCondition></Condition>"#

@@ -14,7 +14,7 @@ fn scenario(direction: &str) -> String {
         r#"<Condition name="rel" delay="0" conditionEdge="none"><ByEntityCondition><TriggeringEntities triggeringEntitiesRule="any"><EntityRef entityRef="Target"/></TriggeringEntities><EntityCondition><RelativeSpeedCondition entityRef="Ego" value="-15" rule="lessThan"{direction}/></EntityCondition></ByEntityCondition></Condition>"#
     );
     let stop = event("Stop", "parallel", &speed_action("step", "time", 0.0, 0.0), &trigger(&cond));
-    xosc(init, &story("Ego", &stop), &format!("<ConditionGroup>{}</ConditionGroup>", sim_time(1.0, "greaterThan", "none", 0.0)))
+    xosc(init, &story("Ego", &stop), &stop_at(1.0))
 }
 
 #[test]

@@ -14,10 +14,6 @@ use crate::common::*;
 
 const DT: f64 = 0.01;
 
-fn stop(t: f64) -> String {
-    format!("<ConditionGroup>{}</ConditionGroup>", sim_time(t, "greaterThan", "none", 0.0))
-}
-
 fn activate(entity: &str) -> String {
     format!(r#"<Private entityRef="{entity}"><PrivateAction><ActivateControllerAction longitudinal="true" lateral="false"/></PrivateAction></Private>"#)
 }
@@ -42,7 +38,7 @@ fn settings(max_time: f64) -> engine::Settings {
 /// Ego at s = 10 (20 m/s, lane -1); Target behind it at s = 0 in lane -2, standing: no lead.
 fn free_road(properties: &str, stories: &str) -> String {
     let init = format!("{}{}{}{}", teleport("Ego", 10.0, -1), init_speed("Ego", "step", "time", 0.0, 20.0), activate("Ego"), teleport("Target", 0.0, -2));
-    with_alks(xosc(&init, stories, &stop(30.0)), properties)
+    with_alks(xosc(&init, stories, &stop_at(30.0)), properties)
 }
 
 #[test]
@@ -111,7 +107,7 @@ fn with_target(target_s: f64, lane: i32, target_speed: f64, stories: &str, t_end
         teleport("Target", target_s, lane),
         init_speed("Target", "step", "time", 0.0, target_speed)
     );
-    with_alks(xosc(&init, stories, &stop(t_end)), "")
+    with_alks(xosc(&init, stories, &stop_at(t_end)), "")
 }
 
 #[test]

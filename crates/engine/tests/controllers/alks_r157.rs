@@ -3,23 +3,17 @@
 
 use crate::common::*;
 
-fn stop(t: f64) -> String {
-    format!("<ConditionGroup>{}</ConditionGroup>", sim_time(t, "greaterThan", "none", 0.0))
-}
-
 /// Ego at s = 10 driving 20 m/s with the controller activated at init; Target at `target_s`
 /// (same lane) at `target_speed`.
 fn alks_scenario(target_s: f64, target_speed: f64, cruise: bool) -> String {
     let text = xosc(
         &format!(
-            "{}{}{}{}<Private entityRef=\"Ego\"><PrivateAction><ActivateControllerAction longitudinal=\"true\" lateral=\"false\"/></PrivateAction></Private>",
-            teleport("Ego", 10.0, -1),
-            init_speed("Ego", "step", "time", 0.0, 20.0),
-            teleport("Target", target_s, -1),
-            init_speed("Target", "step", "time", 0.0, target_speed)
+            "{}{}<Private entityRef=\"Ego\"><PrivateAction><ActivateControllerAction longitudinal=\"true\" lateral=\"false\"/></PrivateAction></Private>",
+            placed("Ego", 10.0, -1, 20.0),
+            placed("Target", target_s, -1, target_speed)
         ),
         "",
-        &stop(12.0),
+        &stop_at(12.0),
     );
     let controller = format!(
         r#"<ObjectController><Controller name="ALKS_R157SM_Controller"><Properties><Property name="mode" value="override"/><Property name="model" value="Regulation"/><Property name="cruise" value="{cruise}"/><Property name="fullStop" value="true"/></Properties></Controller></ObjectController></ScenarioObject>"#

@@ -10,7 +10,7 @@ fn scenario() -> String {
     let init = ghost_ego_init(&teleport("Target", 300.0, -1));
     let traj = r#"<PrivateAction><RoutingAction><FollowTrajectoryAction><TrajectoryRef><Trajectory name="T" closed="false"><Shape><Polyline><Vertex time="1"><Position><WorldPosition x="60" y="-1.75" h="0"/></Position></Vertex><Vertex time="4"><Position><WorldPosition x="90" y="-3"/></Position></Vertex><Vertex time="7"><Position><WorldPosition x="120" y="-3"/></Position></Vertex></Polyline></Shape></Trajectory></TrajectoryRef><TimeReference><Timing domainAbsoluteRelative="absolute" scale="1" offset="0"/></TimeReference><TrajectoryFollowingMode followingMode="position"/></FollowTrajectoryAction></RoutingAction></PrivateAction>"#;
     let stories = story("Ego", &event("Follow", "overwrite", traj, &trigger(&sim_time(1.0, "greaterThan", "none", 0.0))));
-    let stop = format!("<ConditionGroup>{}</ConditionGroup>", sim_time(5.0, "greaterThan", "none", 0.0));
+    let stop = stop_at(5.0);
     with_follow_ghost(&xosc(&init, &stories, &stop), 2.0)
 }
 

@@ -7,10 +7,6 @@ use crate::common::*;
 
 const HEADSTART: f64 = 2.0;
 
-fn stop(t: f64) -> String {
-    format!("<ConditionGroup>{}</ConditionGroup>", sim_time(t, "greaterThan", "none", 0.0))
-}
-
 fn activate() -> String {
     r#"<Private entityRef="Ego"><PrivateAction><ActivateControllerAction longitudinal="true" lateral="true"/></PrivateAction></Private>"#.to_string()
 }
@@ -31,7 +27,7 @@ fn follow_ghost_props() -> String {
 fn ghost_scenario(speed: f64, events: &str, end: f64) -> String {
     let init = format!("{}{}{}{}", teleport("Ego", 50.0, -1), init_speed("Ego", "step", "time", 0.0, speed), teleport("Target", 900.0, 1), activate());
     let stories = if events.is_empty() { String::new() } else { story("Ego", events) };
-    with_controller(xosc(&init, &stories, &stop(end)), &follow_ghost_props())
+    with_controller(xosc(&init, &stories, &stop_at(end)), &follow_ghost_props())
 }
 
 fn settings(max: f64) -> engine::Settings {
@@ -118,7 +114,7 @@ fn follow_reference_scenario(ghost_speed: f64, events: &str, end: f64) -> String
     let init = format!("{}{}{}{}", teleport("Ego", 50.0, -1), init_speed("Ego", "step", "time", 0.0, ghost_speed), teleport("Target", 900.0, 1), activate());
     let stories = if events.is_empty() { String::new() } else { story("Ego", events) };
     let props = r#"<Property name="esminiController" value="FollowReferenceController"/><Property name="speedControlStiffness" value="1.0"/>"#;
-    with_controller(xosc(&init, &stories, &stop(end)), props)
+    with_controller(xosc(&init, &stories, &stop_at(end)), props)
 }
 
 #[test]
@@ -180,7 +176,7 @@ fn time_mode_follows_the_ghost_headstart_seconds_behind() {
     // straight ahead, so the Ego keeps the 20 m it starts with.
     let props = follow_ghost_props().replace(r#"value="position""#, r#"value="time""#);
     let init = format!("{}{}{}{}", teleport("Ego", 50.0, -1), init_speed("Ego", "step", "time", 0.0, 10.0), teleport("Target", 900.0, 1), activate());
-    let run = run_with(&with_controller(xosc(&init, "", &stop(6.0)), &props), &settings(20.0));
+    let run = run_with(&with_controller(xosc(&init, "", &stop_at(6.0)), &props), &settings(20.0));
     for t in [1.0, 6.0] {
         let (e, g) = (at(&run, "Ego", t), at(&run, "Ego_ghost", t));
         assert!(close(g.x - e.x, HEADSTART * 10.0, 1e-6), "t={t}: gap {}", g.x - e.x);

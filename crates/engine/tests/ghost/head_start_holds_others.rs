@@ -9,7 +9,7 @@ use crate::common::*;
 fn scenario() -> String {
     // Target accelerates at 2 m/s² from standstill: not before time 0.
     let init = ghost_ego_init(&format!("{}{}", teleport("Target", 100.0, -2), init_speed("Target", "linear", "rate", 2.0, 10.0)));
-    let stop = format!("<ConditionGroup>{}</ConditionGroup>", sim_time(4.0, "greaterThan", "none", 0.0));
+    let stop = stop_at(4.0);
     with_follow_ghost(&xosc(&init, "", &stop), 2.0)
 }
 

@@ -9,17 +9,13 @@
 
 use crate::common::*;
 
-fn stop(t: f64) -> String {
-    format!("<ConditionGroup>{}</ConditionGroup>", sim_time(t, "greaterThan", "none", 0.0))
-}
-
 /// Ego at s = 50 (10 m/s, head start 2 s), Target standing at s = 300; the story's event
 /// `Drift` moves the ghost 0.5 m left when its start trigger (`groups`) fires.
 fn ghost_scenario(groups: &str) -> String {
     let init = ghost_ego_init(&teleport("Target", 300.0, -1));
     let offset = r#"<PrivateAction><LateralAction><LaneOffsetAction continuous="false"><LaneOffsetActionDynamics maxLateralAcc="2" dynamicsShape="cubic"/><LaneOffsetTarget><AbsoluteTargetLaneOffset value="0.5"/></LaneOffsetTarget></LaneOffsetAction></LateralAction></PrivateAction>"#;
     let stories = story("Ego", &event("Drift", "overwrite", offset, &format!("<StartTrigger>{groups}</StartTrigger>")));
-    with_follow_ghost(&xosc(&init, &stories, &stop(5.0)), 2.0)
+    with_follow_ghost(&xosc(&init, &stories, &stop_at(5.0)), 2.0)
 }
 
 fn group(condition: &str) -> String {

@@ -30,7 +30,7 @@ fn scenario(lane: i32, h: f64) -> engine::Run {
         .enumerate()
         .map(|(i, (t, p))| event(&format!("E{i}"), "overwrite", &teleport_to(p), &trigger(&sim_time(*t, "greaterOrEqual", "none", 0.0))))
         .collect();
-    let stop = format!("<ConditionGroup>{}</ConditionGroup>", sim_time(4.0, "greaterThan", "none", 0.0));
+    let stop = stop_at(4.0);
     run(&xosc(&init, &story("Target", &events), &stop))
 }
 

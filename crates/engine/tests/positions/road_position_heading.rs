@@ -21,7 +21,7 @@ fn dh(a: f64, b: f64) -> f64 {
 }
 
 fn stop() -> String {
-    format!("<ConditionGroup>{}</ConditionGroup>", sim_time(1.0, "greaterThan", "none", 0.0))
+    stop_at(1.0)
 }
 
 #[test]

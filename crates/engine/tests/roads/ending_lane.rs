@@ -26,7 +26,7 @@ fn scenario(actions: &str) -> String {
         speed_action("step", "time", 0.0, 10.0),
         teleport("Target", 500.0, -1)
     );
-    xosc(&init, "", &format!("<ConditionGroup>{}</ConditionGroup>", sim_time(8.0, "greaterThan", "none", 0.0)))
+    xosc(&init, "", &stop_at(8.0))
 }
 
 fn lane_of(run: &Run, t: f64) -> Option<i32> {

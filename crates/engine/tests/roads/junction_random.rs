@@ -77,7 +77,7 @@ fn network(straight: bool) -> opendrive::RoadNetwork {
 /// 20 m to the junction, the quarter circle of lane −1 (radius 10 ± 1.75), then the exit road.
 fn drive(straight: bool, seed: u32) -> engine::Sample {
     let init = format!("{}{}", teleport_on("Ego", "1", 30.0), init_speed("Ego", "step", "time", 0.0, 10.0));
-    let stop = format!("<ConditionGroup>{}</ConditionGroup>", sim_time(5.0, "greaterThan", "none", 0.0));
+    let stop = stop_at(5.0);
     let text = xosc(&init, "", &stop);
     let loaded = openscenario::load_str(&fixtures().join("t_junction.xosc"), &text, &Default::default()).expect("test scenario loads");
     let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
@@ -129,7 +129,7 @@ fn another_seed_changes_the_choice_when_its_coin_does() {
     assert!(!went_left(&drive(false, 1)));
     // The plain `simulate` is esmini's --seed 0.
     let init = format!("{}{}", teleport_on("Ego", "1", 30.0), init_speed("Ego", "step", "time", 0.0, 10.0));
-    let stop = format!("<ConditionGroup>{}</ConditionGroup>", sim_time(5.0, "greaterThan", "none", 0.0));
+    let stop = stop_at(5.0);
     let loaded = openscenario::load_str(&fixtures().join("t_junction.xosc"), &xosc(&init, "", &stop), &Default::default()).expect("loads");
     let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
     let run = engine::simulate(&scenario, Some(&network(false)), &Settings { step: 0.01, max_time: 5.0 }).expect("simulate");

@@ -18,7 +18,7 @@ fn a_banked_lane_lies_along_the_tilted_surface() {
     // 0.01 /m): horizontally t·cos 0.5 from the reference line, t·sin 0.5 in height, and the
     // horizontal offset changing by −t·sin(roll)·rate per metre turns the heading by atan of
     // it. (A positive roll lowers the right side, t < 0, as in OpenDRIVE.)
-    let stop = format!("<ConditionGroup>{}</ConditionGroup>", sim_time(0.5, "greaterThan", "none", 0.0));
+    let stop = stop_at(0.5);
     let run = run_banked(&xosc(&teleport("Ego", 50.0, -1), "", &stop));
     let e = at(&run, "Ego", 0.0);
     let (t, roll, rate) = (-1.75f64, 0.5f64, 0.01f64);
@@ -36,7 +36,7 @@ fn a_lane_change_over_a_distance_counts_distance_along_the_road() {
     let init = format!("{}{}", teleport("Ego", 100.0, -1), init_speed("Ego", "step", "time", 0.0, 10.0));
     let action = r#"<PrivateAction><LateralAction><LaneChangeAction><LaneChangeActionDynamics dynamicsShape="sinusoidal" value="30" dynamicsDimension="distance"/><LaneChangeTarget><AbsoluteTargetLane value="-2"/></LaneChangeTarget></LaneChangeAction></LateralAction></PrivateAction>"#;
     let stories = story("Ego", &event("Change", "overwrite", action, &trigger(&sim_time(1.0, "greaterThan", "none", 0.0))));
-    let stop = format!("<ConditionGroup>{}</ConditionGroup>", sim_time(6.0, "greaterThan", "none", 0.0));
+    let stop = stop_at(6.0);
     let run = run(&xosc(&init, &stories, &stop));
     let t0 = event_time(&run, "ChangeAction", "start").expect("started");
     let t1 = event_time(&run, "ChangeAction", "end").expect("ended");
@@ -53,7 +53,7 @@ fn a_teleported_entity_does_not_move_on_the_step_of_the_teleport() {
     let init = format!("{}{}", teleport("Ego", 100.0, -1), init_speed("Ego", "step", "time", 0.0, 10.0));
     let action = format!("<PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction>", lane_pos(500.0, -1));
     let stories = story("Ego", &event("Jump", "overwrite", &action, &trigger(&sim_time(1.0, "greaterThan", "none", 0.0))));
-    let stop = format!("<ConditionGroup>{}</ConditionGroup>", sim_time(3.0, "greaterThan", "none", 0.0));
+    let stop = stop_at(3.0);
     let run = run(&xosc(&init, &stories, &stop));
     let t = event_time(&run, "JumpAction", "start").expect("teleported");
     let (a, b) = (at(&run, "Ego", t + 0.01), at(&run, "Ego", t + 0.02));

@@ -12,7 +12,7 @@ fn a_repeated_group_waits_for_the_condition_delay_again() {
     let init = format!("{}{}", teleport("Ego", 10.0, -1), teleport("Target", 50.0, -1));
     let ev = event("E", "overwrite", &speed_action("step", "time", 0.0, 5.0), &trigger(&sim_time(0.0, "greaterThan", "none", 1.0)));
     let stories = story("Ego", &ev).replace(r#"maximumExecutionCount="1" name="G""#, r#"maximumExecutionCount="2" name="G""#);
-    let stop = format!("<ConditionGroup>{}</ConditionGroup>", sim_time(5.0, "greaterThan", "none", 0.0));
+    let stop = stop_at(5.0);
     let text = xosc(&init, &stories, &stop);
     let run = run(&text);
     let starts: Vec<f64> = run.trace.events.iter().filter(|e| e.element == "E" && e.transition == "start").map(|e| e.time).collect();

@@ -21,7 +21,7 @@ fn scenario(actors: &str, act_start: &str) -> Run {
     let stories = format!(
         r#"<Story name="S"><Act name="A"><ManeuverGroup maximumExecutionCount="1" name="G"><Actors selectTriggeringEntities="true">{actors}</Actors><Maneuver name="M">{speed_up}</Maneuver></ManeuverGroup>{act_start}</Act></Story>"#
     );
-    run(&xosc(&init(), &stories, &format!("<ConditionGroup>{}</ConditionGroup>", sim_time(3.0, "greaterThan", "none", 0.0))))
+    run(&xosc(&init(), &stories, &stop_at(3.0)))
 }
 
 #[test]

@@ -19,7 +19,7 @@ fn scenario() -> String {
             teleport("Target", 300.0, -1)
         ),
         &story("Ego", &event("Change", "parallel", change, &trigger(&sim_time(1.0, "greaterOrEqual", "none", 0.0)))),
-        &format!("<ConditionGroup>{}</ConditionGroup>", sim_time(4.0, "greaterThan", "none", 0.0)),
+        &stop_at(4.0),
     )
 }
 

@@ -20,7 +20,7 @@ fn run_lane_change() -> engine::Run {
     let init = format!("{}{}", teleport("Ego", 10.0, -1), init_speed("Ego", "step", "time", 0.0, V));
     let lc = r#"<PrivateAction><LateralAction><LaneChangeAction><LaneChangeActionDynamics dynamicsShape="sinusoidal" value="2" dynamicsDimension="time"/><LaneChangeTarget><AbsoluteTargetLane value="-2"/></LaneChangeTarget></LaneChangeAction></LateralAction></PrivateAction>"#;
     let stories = story("Ego", &event("Change", "overwrite", lc, &trigger(&sim_time(1.0, "greaterThan", "none", 0.0))));
-    let stop = format!("<ConditionGroup>{}</ConditionGroup>", sim_time(5.0, "greaterThan", "none", 0.0));
+    let stop = stop_at(5.0);
     run_with(&xosc(&init, &stories, &stop), &engine::Settings { step: 0.01, max_time: 5.0 })
 }
 

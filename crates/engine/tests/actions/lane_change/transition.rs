@@ -19,7 +19,7 @@ fn run_change(action: &str, stop: f64) -> engine::Run {
         teleport("Target", 500.0, 1)
     );
     let stories = story("Ego", &event("LC", "overwrite", action, &trigger(&sim_time(1.0, "greaterThan", "none", 0.0))));
-    let stop = format!("<ConditionGroup>{}</ConditionGroup>", sim_time(stop, "greaterThan", "none", 0.0));
+    let stop = stop_at(stop);
     run(&xosc(&init, &stories, &stop))
 }
 

@@ -17,7 +17,7 @@ fn run_lateral(reference_road: u32, lane: i32, reference_s: f64, displacement: &
         r#"<PrivateAction><LateralAction><LateralDistanceAction entityRef="Ego" distance="1" freespace="false" continuous="false" coordinateSystem="road" displacement="{displacement}"/></LateralAction></PrivateAction>"#
     );
     let stories = story("Target", &event("L", "overwrite", &action, &trigger(&sim_time(0.5, "greaterThan", "none", 0.0))));
-    let stop = format!("<ConditionGroup>{}</ConditionGroup>", sim_time(2.0, "greaterThan", "none", 0.0));
+    let stop = stop_at(2.0);
     let text = xosc(&init, &stories, &stop).replace("straight.xodr", "opposite_roads.xodr");
     let path = fixtures().join("test.xosc");
     let loaded = openscenario::load_str(&path, &text, &Default::default()).expect("test scenario loads");

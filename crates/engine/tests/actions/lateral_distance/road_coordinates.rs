@@ -4,10 +4,6 @@
 
 use crate::common::*;
 
-fn stop(t: f64) -> String {
-    format!("<ConditionGroup>{}</ConditionGroup>", sim_time(t, "greaterThan", "none", 0.0))
-}
-
 fn lat_distance(attrs: &str, constraints: &str) -> String {
     format!(
         r#"<PrivateAction><LateralAction><LateralDistanceAction entityRef="Target" coordinateSystem="road" {attrs}>{constraints}</LateralDistanceAction></LateralAction></PrivateAction>"#
@@ -20,15 +16,9 @@ fn scenario(action: &str) -> String {
 }
 
 fn scenario_until(action: &str, end: f64) -> String {
-    let init = format!(
-        "{}{}{}{}",
-        teleport("Ego", 100.0, -1),
-        init_speed("Ego", "step", "time", 0.0, 10.0),
-        teleport("Target", 100.0, -2),
-        init_speed("Target", "step", "time", 0.0, 10.0)
-    );
+    let init = format!("{}{}", placed("Ego", 100.0, -1, 10.0), placed("Target", 100.0, -2, 10.0));
     let stories = story("Ego", &event("Keep", "overwrite", action, &trigger(&sim_time(0.0, "greaterOrEqual", "none", 0.0))));
-    xosc(&init, &stories, &stop(end))
+    xosc(&init, &stories, &stop_at(end))
 }
 
 #[test]

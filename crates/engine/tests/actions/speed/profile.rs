@@ -12,7 +12,7 @@ fn profile(mode: &str, constraints: &str, entries: &[(f64, f64)]) -> String {
 
 fn run_profile(action: &str, stop: f64) -> engine::Run {
     let init = format!(r#"{}<Private entityRef="Ego">{action}</Private>"#, teleport("Ego", 10.0, -1));
-    run(&xosc(&init, "", &format!("<ConditionGroup>{}</ConditionGroup>", sim_time(stop, "greaterThan", "none", 0.0))))
+    run(&xosc(&init, "", &stop_at(stop)))
 }
 
 #[test]

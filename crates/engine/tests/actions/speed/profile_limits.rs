@@ -17,7 +17,7 @@ fn an_entry_too_steep_for_the_limit_is_stretched_to_it() {
         lane_pos(10.0, -1),
         teleport("Target", 500.0, 1)
     );
-    let stop = format!("<ConditionGroup>{}</ConditionGroup>", sim_time(14.0, "greaterThan", "none", 0.0));
+    let stop = stop_at(14.0);
     let run = run(&xosc(&init, "", &stop));
     assert!(close(at(&run, "Ego", 0.5).speed, 0.25, 1e-9), "{}", at(&run, "Ego", 0.5).speed);
     assert!(close(at(&run, "Ego", 1.0).speed, 0.75, 1e-9));

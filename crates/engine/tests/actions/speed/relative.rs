@@ -10,10 +10,6 @@ fn relative_speed(entity: &str, shape: &str, dim: &str, value: f64, continuous: 
     )
 }
 
-fn stop_at(t: f64) -> String {
-    format!("<ConditionGroup>{}</ConditionGroup>", sim_time(t, "greaterThan", "none", 0.0))
-}
-
 /// Two maneuver groups started at once by the act: Target's event at t > `t_target`, then
 /// Ego's at t > `t_ego`.
 fn two_groups(target_action: &str, t_target: f64, ego_action: &str, t_ego: f64) -> String {

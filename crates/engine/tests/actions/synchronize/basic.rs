@@ -17,16 +17,10 @@ fn synchronize(master_s: f64, target_s: f64, final_speed: &str) -> String {
 fn scenario(target_speed: f64, final_speed: &str) -> String {
     // Ego at s = 10 drives 10 m/s towards s = 110; Target at s = 50 (lane -2) must reach s = 150
     // at the same time: 100 m each (esmini 3.6's default tolerance is 0 m).
-    let init = format!(
-        "{}{}{}{}",
-        teleport("Ego", 10.0, -1),
-        init_speed("Ego", "step", "time", 0.0, 10.0),
-        teleport("Target", 50.0, -2),
-        init_speed("Target", "step", "time", 0.0, target_speed)
-    );
+    let init = format!("{}{}", placed("Ego", 10.0, -1, 10.0), placed("Target", 50.0, -2, target_speed));
     let stories =
         story("Target", &event("Sync", "overwrite", &synchronize(110.0, 150.0, final_speed), &trigger(&sim_time(0.0, "greaterOrEqual", "none", 0.0))));
-    xosc(&init, &stories, &format!("<ConditionGroup>{}</ConditionGroup>", sim_time(15.0, "greaterThan", "none", 0.0)))
+    xosc(&init, &stories, &stop_at(15.0))
 }
 
 #[test]

@@ -14,20 +14,14 @@ fn lane(s: f64, lane: i32) -> String {
 /// Ego at s = 10 drives 10 m/s towards s = 110; Target at s = 50 (lane −2, 5 m/s) must reach
 /// s = 150 at the same time, without a final speed.
 fn scenario(tolerances: &str) -> String {
-    let init = format!(
-        "{}{}{}{}",
-        teleport("Ego", 10.0, -1),
-        init_speed("Ego", "step", "time", 0.0, 10.0),
-        teleport("Target", 50.0, -2),
-        init_speed("Target", "step", "time", 0.0, 5.0)
-    );
+    let init = format!("{}{}", placed("Ego", 10.0, -1, 10.0), placed("Target", 50.0, -2, 5.0));
     let sync = format!(
         r#"<PrivateAction><SynchronizeAction masterEntityRef="Ego" {tolerances}><TargetPositionMaster>{}</TargetPositionMaster><TargetPosition>{}</TargetPosition></SynchronizeAction></PrivateAction>"#,
         lane(110.0, -1),
         lane(150.0, -2)
     );
     let stories = story("Target", &event("Sync", "overwrite", &sync, &trigger(&sim_time(0.0, "greaterOrEqual", "none", 0.0))));
-    xosc(&init, &stories, &format!("<ConditionGroup>{}</ConditionGroup>", sim_time(15.0, "greaterThan", "none", 0.0)))
+    xosc(&init, &stories, &stop_at(15.0))
 }
 
 #[test]

@@ -26,11 +26,7 @@ fn teleport_during_lane_change() -> String {
         event("Change", "parallel", change, &trigger(&sim_time(1.0, "greaterOrEqual", "none", 0.0))),
         event("Hop", "parallel", &hop, &trigger(&sim_time(2.0, "greaterOrEqual", "none", 0.0)))
     );
-    xosc(
-        &format!("{}{}", one_private("Ego", 50.0, -1, 10.0), teleport("Target", 600.0, -2)),
-        &story("Ego", &events),
-        &format!("<ConditionGroup>{}</ConditionGroup>", sim_time(4.0, "greaterThan", "none", 0.0)),
-    )
+    xosc(&format!("{}{}", one_private("Ego", 50.0, -1, 10.0), teleport("Target", 600.0, -2)), &story("Ego", &events), &stop_at(4.0))
 }
 
 /// Ego at 10 m/s on lane -1 at s = 100; Target 20 m ahead on the other side of the road (lane 1,
@@ -40,11 +36,7 @@ fn relative_road_across() -> String {
         r#"<Private entityRef="Target"><PrivateAction><TeleportAction><Position><RelativeRoadPosition entityRef="Ego" ds="20" dt="3.5"/></Position></TeleportAction></PrivateAction>{}</Private>"#,
         speed_action("step", "time", 0.0, 5.0)
     );
-    xosc(
-        &format!("{}{}", one_private("Ego", 100.0, -1, 10.0), target),
-        "",
-        &format!("<ConditionGroup>{}</ConditionGroup>", sim_time(2.0, "greaterThan", "none", 0.0)),
-    )
+    xosc(&format!("{}{}", one_private("Ego", 100.0, -1, 10.0), target), "", &stop_at(2.0))
 }
 
 #[test]

@@ -16,11 +16,7 @@ fn relative_lane(entity: &str, reference: &str, d_lane: i32, ds: f64) -> String 
 /// Ego on lane -2 (the outermost right lane) at s = 100; Target two lanes further right of it,
 /// 20 m ahead: there is no such lane.
 pub(super) fn missing_lane_scenario() -> String {
-    xosc(
-        &format!("{}{}", teleport("Ego", 100.0, -2), relative_lane("Target", "Ego", -1, 20.0)),
-        "",
-        &format!("<ConditionGroup>{}</ConditionGroup>", sim_time(0.5, "greaterThan", "none", 0.0)),
-    )
+    xosc(&format!("{}{}", teleport("Ego", 100.0, -2), relative_lane("Target", "Ego", -1, 20.0)), "", &stop_at(0.5))
 }
 
 #[test]
@@ -52,7 +48,7 @@ pub(super) fn teleport_travel_scenario() -> String {
             teleport("Target", 300.0, -2)
         ),
         &story("Ego", &format!("{hop}{stop_car}")),
-        &format!("<ConditionGroup>{}</ConditionGroup>", sim_time(3.0, "greaterThan", "none", 0.0)),
+        &stop_at(3.0),
     )
 }
 

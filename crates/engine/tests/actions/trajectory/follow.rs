@@ -22,10 +22,6 @@ fn follow(shape: &str, timing: &str, mode: &str) -> String {
 
 const RELATIVE: &str = r#"<Timing domainAbsoluteRelative="relative" scale="1" offset="0"/>"#;
 
-fn stop_at(t: f64) -> String {
-    format!("<ConditionGroup>{}</ConditionGroup>", sim_time(t, "greaterThan", "none", 0.0))
-}
-
 fn init_with(entity: &str, actions: &str) -> String {
     format!(r#"{}<Private entityRef="{entity}">{actions}</Private>"#, teleport(entity, 10.0, -1))
 }

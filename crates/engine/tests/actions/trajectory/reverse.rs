@@ -19,10 +19,6 @@ fn follow(closed: bool, shape: &str, timing: &str) -> String {
     )
 }
 
-fn stop_at(t: f64) -> String {
-    format!("<ConditionGroup>{}</ConditionGroup>", sim_time(t, "greaterThan", "none", 0.0))
-}
-
 /// Heading difference wrapped to (−π, π].
 fn dh(a: f64, b: f64) -> f64 {
     let d = (a - b).rem_euclid(2.0 * PI);

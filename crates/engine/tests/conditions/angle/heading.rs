@@ -11,7 +11,7 @@ fn fires(angle: f64, cs: &str) -> bool {
         r#"<Condition name="a" delay="0" conditionEdge="none"><ByEntityCondition><TriggeringEntities triggeringEntitiesRule="any"><EntityRef entityRef="Target"/></TriggeringEntities><EntityCondition><AngleCondition angle="{angle}" angleTolerance="0.05" angleType="heading"{cs}/></EntityCondition></ByEntityCondition></Condition>"#
     );
     let go = event("Go", "parallel", &speed_action("step", "time", 0.0, 5.0), &trigger(&cond));
-    let run = run(&xosc(&init, &story("Ego", &go), &format!("<ConditionGroup>{}</ConditionGroup>", sim_time(0.5, "greaterThan", "none", 0.0))));
+    let run = run(&xosc(&init, &story("Ego", &go), &stop_at(0.5)));
     event_time(&run, "GoAction", "start").is_some()
 }
 

@@ -12,10 +12,6 @@ fn angle_trigger(entity: &str, angle: f64, tolerance: f64, kind: &str, frame: &s
     )
 }
 
-fn stop_at(t: f64) -> String {
-    format!("<ConditionGroup>{}</ConditionGroup>", sim_time(t, "greaterThan", "none", 0.0))
-}
-
 fn with_speed(entity: &str, s: f64, lane: i32, speed: f64) -> String {
     teleport(entity, s, lane).replace("</Private>", &format!("{}</Private>", speed_action("step", "time", 0.0, speed)))
 }

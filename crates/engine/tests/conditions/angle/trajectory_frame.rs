@@ -36,7 +36,7 @@ fn the_heading_is_measured_from_the_current_segment_of_the_trajectory() {
         event("Stop", "parallel", &speed_action("step", "time", 0.0, 0.0), &angle_trigger(-0.1)),
     ]
     .concat();
-    let stop = format!("<ConditionGroup>{}</ConditionGroup>", sim_time(10.0, "greaterThan", "none", 0.0));
+    let stop = stop_at(10.0);
     let run = run(&xosc(&init, &story("Ego", &events), &stop));
     assert!(!run.warnings.iter().any(|w| w.message.contains("AngleCondition")), "{:?}", run.warnings);
     // s = 5 (t − 0.5): the blend starts at s = 18 (t = 4.1); 0.05 rad of the 0.4636 rad turn

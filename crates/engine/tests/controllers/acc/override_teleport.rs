@@ -18,11 +18,7 @@ fn scenario(mode: &str) -> String {
         &format!("<PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction>", lane_pos(600.0, -1)),
         &trigger(&sim_time(1.0, "greaterOrEqual", "none", 0.0)),
     );
-    let text = xosc(
-        &format!("{ego}{}", teleport("Target", 900.0, -2)),
-        &story("Ego", &hop),
-        &format!("<ConditionGroup>{}</ConditionGroup>", sim_time(2.0, "greaterThan", "none", 0.0)),
-    );
+    let text = xosc(&format!("{ego}{}", teleport("Target", 900.0, -2)), &story("Ego", &hop), &stop_at(2.0));
     let acc = format!(
         r#"<ObjectController><Controller name="ACC"><Properties><Property name="esminiController" value="ACCController"/><Property name="timeGap" value="1"/><Property name="mode" value="{mode}"/><Property name="setSpeed" value="20"/></Properties></Controller></ObjectController></ScenarioObject>"#
     );
