@@ -57,7 +57,6 @@ pub use entities::bounding_boxes;
 pub use external::{Chosen, DriverInput, External, ExternalEntity, ExternalState, Input, ScriptedMotion, Source, OUTSIDE_DRIVERS};
 pub use recorded::{EnvironmentChange, LightChange};
 pub use road_references::road_references;
-pub use roads::lane_kind::is_driving as is_driving_lane;
 pub use run::{simulate, simulate_with, Run, Simulation};
 pub use settings::{RunControl, Settings};
 pub use trace::{EntityTrace, RoadPos, Sample, SignalState, StoryboardEvent, Trace};

@@ -137,7 +137,7 @@ impl Road {
             let t = self.lane_offset_at(s);
             return Some(LaneBorders { inner: t, outer: t });
         }
-        self.side_borders(section_idx, lane_id > 0, s).into_iter().find(|(id, _)| *id == lane_id).map(|(_, b)| b)
+        self.side_border_iter(section_idx, lane_id > 0, s).find(|(id, _)| *id == lane_id).map(|(_, b)| b)
     }
 
     /// t of the centre of lane `lane_id` at `s`.

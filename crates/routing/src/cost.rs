@@ -1,8 +1,10 @@
 //! What a stretch of lane costs under each strategy, and which lanes a route may use.
 
 use crate::waypoint::Strategy;
-use crate::LANE_CHANGE_COST_M;
 use opendrive::{LaneType, RoadNetwork};
+
+/// Extra cost of one lane change, in metres of driving (shortest) or its time (fastest).
+pub const LANE_CHANGE_COST_M: f64 = 30.0;
 
 /// Speed assumed where neither the road type nor the lane gives a limit (50 km/h).
 const DEFAULT_SPEED: f64 = 50.0 / 3.6;
@@ -11,22 +13,7 @@ const JUNCTION_PENALTY: f64 = 1.0e7;
 
 /// Lane types a vehicle route may run through.
 pub(crate) fn is_drivable(kind: LaneType) -> bool {
-    matches!(
-        kind,
-        LaneType::Driving
-            | LaneType::Entry
-            | LaneType::Exit
-            | LaneType::OnRamp
-            | LaneType::OffRamp
-            | LaneType::ConnectingRamp
-            | LaneType::MwyEntry
-            | LaneType::MwyExit
-            | LaneType::SlipLane
-            | LaneType::Bidirectional
-            | LaneType::Bus
-            | LaneType::Taxi
-            | LaneType::Hov
-    )
+    kind.is_any_driving() || matches!(kind, LaneType::SlipLane | LaneType::Bus | LaneType::Taxi | LaneType::Hov)
 }
 
 /// Speed limit (m/s) of a lane at the start of its section: the lane's own speed record,

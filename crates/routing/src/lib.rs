@@ -18,14 +18,10 @@ mod route;
 mod search;
 mod waypoint;
 
+pub use cost::LANE_CHANGE_COST_M;
 pub use error::Error;
-pub use route::{Leg, NextRoad, Route, RoutePoint};
+pub use route::{Leg, NextRoad, Route, RoutePoint, MAX_WAYPOINTS};
 pub use waypoint::{Strategy, Waypoint};
-
-/// Most waypoints accepted for one route (hostile input).
-pub const MAX_WAYPOINTS: usize = 10_000;
-/// Extra cost of one lane change, in metres of driving (shortest) or its time (fastest).
-pub const LANE_CHANGE_COST_M: f64 = 30.0;
 
 // The README's example is compiled (and run, where it needs no file) with the doctests.
 #[cfg(doctest)]

@@ -3,8 +3,10 @@
 use crate::error::Error;
 use crate::search::{Point, Rules, Search, Step};
 use crate::waypoint::{Strategy, Waypoint};
-use crate::MAX_WAYPOINTS;
 use opendrive::{drives_along_s, ContactPoint, LaneRef, RoadNetwork};
+
+/// Most waypoints accepted for one route (hostile input).
+pub const MAX_WAYPOINTS: usize = 10_000;
 
 /// A stretch of one lane of one lane section driven in one direction.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -55,7 +55,7 @@ impl Leg {
 
 /// Lane types a vehicle drives on (esmini's set of driving lanes, as the engine has it).
 pub fn drivable(kind: LaneType) -> bool {
-    engine::is_driving_lane(kind)
+    kind.is_any_driving()
 }
 
 /// Shortest stretch of a lane section worth starting on, m.

@@ -4,7 +4,6 @@
 //! entity's position (a free but non-existent lane is not clearance).
 
 use crate::entities::Entity;
-use crate::roads::lane_kind::is_driving;
 use crate::roads::road_distance::road_distance_within;
 use crate::sim::Sim;
 use opendrive::{Road, RoadNetwork};
@@ -47,7 +46,7 @@ fn lane_exists(road: &Road, s: f64, own: i64, c: &Clearance) -> bool {
     let (lo, hi) = (own.saturating_add(c.from), own.saturating_add(c.to));
     sec.left.iter().chain(sec.right.iter()).any(|l| {
         let id = l.id as i64;
-        is_driving(l.kind) && id >= lo && id <= hi && (c.opposite_lanes || id.signum() == own.signum())
+        l.kind.is_any_driving() && id >= lo && id <= hi && (c.opposite_lanes || id.signum() == own.signum())
     })
 }
 

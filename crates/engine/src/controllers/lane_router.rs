@@ -5,7 +5,6 @@
 //! target). The open set is a binary heap kept exactly as libstdc++'s `std::priority_queue`
 //! keeps it, because esmini breaks equal weights by that heap's order.
 
-use crate::roads::lane_kind::is_driving;
 use opendrive::{ContactPoint, ElementType, JunctionType, Road, RoadKind, RoadLink, RoadNetwork};
 use routing::Strategy;
 
@@ -250,7 +249,7 @@ fn valid(net: &RoadNetwork, p: &LaneSpot) -> bool {
     if p.s > r.length || p.s < 0.0 {
         return false;
     }
-    r.lane_sections.get(r.section_index_at(p.s)).and_then(|s| s.lane(p.lane)).is_some_and(|l| is_driving(l.kind))
+    r.lane_sections.get(r.section_index_at(p.s)).and_then(|s| s.lane(p.lane)).is_some_and(|l| l.kind.is_any_driving())
 }
 
 /// esmini's `LaneIndependentRouter::CalculatePath`: the nodes from `start` (driving along s
@@ -297,7 +296,7 @@ pub(crate) fn calculate_path(net: &RoadNetwork, start: LaneSpot, forward: bool, 
             let Some(nr) = net.roads.get(next_road) else { continue };
             // esmini's GetConnectingLanes: every driving lane on the node's side of the road.
             for lane in section.lanes_left_to_right() {
-                if lane.id == 0 || !is_driving(lane.kind) || lane.id.signum() != node.current_lane.signum() {
+                if lane.id == 0 || !lane.kind.is_any_driving() || lane.id.signum() != node.current_lane.signum() {
                     continue;
                 }
                 let to = connecting_lane_id(net, link, lane.id, next_road);
@@ -359,7 +358,7 @@ pub(crate) fn path_waypoints(net: &RoadNetwork, path: &[Node], start: LaneSpot, 
         let Some(road) = net.roads.get(cur.road) else { continue };
         let secs = &road.lane_sections;
         let sec_len = |i: usize| secs.get(i + 1).map_or(road.length, |n| n.s) - secs[i].s;
-        let drives = |i: usize| secs[i].lane(next.from_lane).is_some_and(|l| is_driving(l.kind));
+        let drives = |i: usize| secs[i].lane(next.from_lane).is_some_and(|l| l.kind.is_any_driving());
         let mut lane_length = 0.0;
         let s = if cur.link.map(|l| l.1) == Some(ContactPoint::End) {
             for i in (0..secs.len()).rev() {

@@ -15,7 +15,6 @@ use state::OffroadFollowerRt;
 
 use super::analog_vehicle::AnalogVehicle;
 use super::kinematic_vehicle::KinematicVehicle;
-use crate::roads::lane_kind::is_driving;
 use crate::roads::road_follow::wrap;
 use crate::sim::Sim;
 use openscenario::Controller;
@@ -51,7 +50,7 @@ impl<'a> Sim<'a> {
         }
         let Some(sec) = road.section_at(lp.s) else { return 60.0 / 3.6 };
         let side = if lp.lane_id > 0 { &sec.left } else { &sec.right };
-        let driving = side.iter().filter(|l| is_driving(l.kind)).count();
+        let driving = side.iter().filter(|l| l.kind.is_any_driving()).count();
         if driving > 1 {
             120.0 / 3.6
         } else {

@@ -1,34 +1,18 @@
 //! Lane borders and centres at some s, computed without allocating (the engine asks for them
-//! every step of every entity; `opendrive`'s own helpers build vectors).
+//! every step of every entity): the road's lazy border iterator, searched for one lane.
 
-use opendrive::model::poly::record_at;
-use opendrive::{Lane, Road};
+use opendrive::Road;
 
 /// t of the inner and outer border of lane `lane_id` in section `section` at road `s`;
 /// `None` when the lane does not exist. Centre lane: both at the lane offset.
 pub(crate) fn lane_borders(road: &Road, section: usize, lane_id: i32, s: f64) -> Option<(f64, f64)> {
-    let sec = road.lane_sections.get(section)?;
-    let base = road.lane_offset_at(s);
     if lane_id == 0 {
+        road.lane_sections.get(section)?;
+        let base = road.lane_offset_at(s);
         return Some((base, base));
     }
-    let (lanes, sign): (&[Lane], f64) = if lane_id > 0 { (&sec.left, 1.0) } else { (&sec.right, -1.0) };
-    let ds = s - sec.s;
-    let mut inner = base;
-    for lane in lanes {
-        let outer = if !lane.widths.is_empty() {
-            inner + sign * record_at(&lane.widths, ds).map_or(0.0, |r| r.value(ds - r.s))
-        } else if let Some(b) = record_at(&lane.borders, ds) {
-            base + b.value(ds - b.s)
-        } else {
-            inner
-        };
-        if lane.id == lane_id {
-            return Some((inner, outer));
-        }
-        inner = outer;
-    }
-    None
+    // the road's lazy border iterator: the same sums in the same order, nothing allocated
+    road.side_border_iter(section, lane_id > 0, s).find(|(id, _)| *id == lane_id).map(|(_, b)| (b.inner, b.outer))
 }
 
 /// t of the centre of lane `lane_id` at `s` (section looked up).

@@ -20,7 +20,7 @@ pub(crate) fn snap(road: &Road, section: usize, s: f64, t: f64, sidewalks: bool)
 /// [`snap`] among the lanes of one side (`side` −1 right, +1 left; 0 both).
 pub(crate) fn snap_on_side(road: &Road, section: usize, s: f64, t: f64, sidewalks: bool, side: i32) -> Option<(i32, f64)> {
     let sec = road.lane_sections.get(section)?;
-    let allowed = |k: LaneType| super::lane_kind::is_driving(k) || (sidewalks && k == LaneType::Sidewalk);
+    let allowed = |k: LaneType| k.is_any_driving() || (sidewalks && k == LaneType::Sidewalk);
     let mut best: Option<(f64, i32, f64)> = None;
     for lane in sec.left.iter().rev().chain(sec.right.iter()) {
         if !allowed(lane.kind) || (side != 0 && lane.id.signum() != side) {

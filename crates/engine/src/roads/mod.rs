@@ -4,7 +4,6 @@
 pub(crate) mod banking;
 pub(crate) mod junction_connections;
 pub(crate) mod lane_geometry;
-pub(crate) mod lane_kind;
 pub(crate) mod lane_position;
 pub(crate) mod lane_shape;
 pub(crate) mod lane_slope;

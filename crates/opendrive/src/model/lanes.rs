@@ -77,6 +77,24 @@ impl LaneType {
             _ => LaneType::Other,
         }
     }
+
+    /// Whether vehicles drive on a lane of this type: esmini's "any driving" set
+    /// (`LANE_TYPE_ANY_DRIVING`: driving, entry, exit, on- and off-ramp, connecting ramp,
+    /// bidirectional; `mwyEntry`/`mwyExit` are its entry and exit).
+    pub fn is_any_driving(self) -> bool {
+        matches!(
+            self,
+            LaneType::Driving
+                | LaneType::Entry
+                | LaneType::Exit
+                | LaneType::OnRamp
+                | LaneType::OffRamp
+                | LaneType::ConnectingRamp
+                | LaneType::MwyEntry
+                | LaneType::MwyExit
+                | LaneType::Bidirectional
+        )
+    }
 }
 
 /// Road mark types of `<roadMark type=...>`.

@@ -6,7 +6,6 @@
 
 use super::state::NdParams;
 use crate::entities::Entity;
-use crate::roads::lane_kind::is_driving;
 use crate::roads::road_distance::road_distance_within;
 use crate::roads::road_follow::wrap;
 use crate::roads::{move_along_s, LanePos};
@@ -91,10 +90,10 @@ pub(crate) fn adjacent_lanes(net: &RoadNetwork, lp: &LanePos) -> Option<[i32; 2]
         return None;
     }
     let side = if cur > 0 { &sec.left } else { &sec.right };
-    if side.iter().filter(|l| is_driving(l.kind)).count() <= 1 {
+    if side.iter().filter(|l| l.kind.is_any_driving()).count() <= 1 {
         return None;
     }
-    let driving = |id: i32| id != 0 && id.signum() == cur.signum() && side.iter().any(|l| l.id == id && is_driving(l.kind));
+    let driving = |id: i32| id != 0 && id.signum() == cur.signum() && side.iter().any(|l| l.id == id && l.kind.is_any_driving());
     let (left, right) = (cur - cur.signum(), cur + cur.signum());
     Some([if driving(left) { left } else { 0 }, if driving(right) { right } else { 0 }])
 }
