@@ -3,8 +3,9 @@
 //! (OpenSCENARIO, OpenDRIVE), its lanelet converter and its engine report what they noticed.
 //! Warnings are data: a library returns them, a front end decides how to show them.
 //!
-//! It owns nothing but these two types and how they are written (`file:line:col: message`, or
-//! `file: message` for the file as a whole), so that every crate says "where" the same way.
+//! It owns nothing but these two types, how they are written (`file:line:col: message`, or
+//! `file: message` for the file as a whole) and where in a text the readers' XML parser (roxmltree)
+//! found an error (`LineCol::of_xml_error`), so that every crate says "where" the same way.
 //!
 //! ```
 //! use diagnostic::{Diagnostic, Location};
@@ -31,6 +32,35 @@ use serde::Serialize;
 pub struct LineCol {
     pub line: u32,
     pub col: u32,
+}
+
+impl LineCol {
+    /// Where an XML parse error is. roxmltree puts "the file ended too early" errors at 1:1;
+    /// the place a reader needs is the end of the file, where the document was cut off.
+    pub fn of_xml_error(e: &roxmltree::Error, text: &str) -> LineCol {
+        match e {
+            roxmltree::Error::UnexpectedEndOfStream | roxmltree::Error::UnclosedRootNode => LineCol::end_of(text),
+            _ => LineCol { line: e.pos().row, col: e.pos().col },
+        }
+    }
+
+    /// Just after the last character of `text` (columns counted in characters): where a
+    /// reader points when a document ends too early.
+    ///
+    /// ```
+    /// use diagnostic::LineCol;
+    /// assert_eq!(LineCol::end_of("<a>\n  <b>"), LineCol { line: 2, col: 6 });
+    /// assert_eq!(LineCol::end_of(""), LineCol { line: 1, col: 1 });
+    /// ```
+    pub fn end_of(text: &str) -> LineCol {
+        let (before, last_line) = match text.rfind('\n') {
+            Some(i) => (&text[..=i], &text[i + 1..]),
+            None => ("", text),
+        };
+        let line = before.matches('\n').count() + 1;
+        let col = last_line.chars().count() + 1;
+        LineCol { line: u32::try_from(line).unwrap_or(u32::MAX), col: u32::try_from(col).unwrap_or(u32::MAX) }
+    }
 }
 
 /// A place in a source file: 1-based line and column (line 0 means "the file as a whole").

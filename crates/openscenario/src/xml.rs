@@ -142,7 +142,7 @@ pub(crate) fn parse_str(path: &Path, text: &str) -> Result<Doc, Error> {
     }
     let options = roxmltree::ParsingOptions { allow_dtd: true, ..Default::default() };
     let doc = roxmltree::Document::parse_with_options(text, options).map_err(|e| {
-        let (line, col) = xml_error_position(&e, text);
+        let diagnostic::LineCol { line, col } = diagnostic::LineCol::of_xml_error(&e, text);
         let message = match e {
             roxmltree::Error::UnexpectedEndOfStream | roxmltree::Error::UnclosedRootNode => {
                 format!("not well-formed XML: the file ends before its document does (cut off?): {e}")
@@ -154,26 +154,6 @@ pub(crate) fn parse_str(path: &Path, text: &str) -> Result<Doc, Error> {
     let mut counter = LineCounter { text, offset: 0, line: 1, col: 1 };
     let root = convert(doc.root_element(), &mut counter, 0, &file)?;
     Ok(Doc { file, root })
-}
-
-/// Where a parse error is. roxmltree puts "the file ended too early" errors at 1:1; the place
-/// a reader needs is the end of the file, where the document was cut off.
-fn xml_error_position(e: &roxmltree::Error, text: &str) -> (u32, u32) {
-    match e {
-        roxmltree::Error::UnexpectedEndOfStream | roxmltree::Error::UnclosedRootNode => end_of_text(text),
-        _ => (e.pos().row, e.pos().col),
-    }
-}
-
-/// Line and column (1-based, columns in characters) just after the last character of `text`.
-fn end_of_text(text: &str) -> (u32, u32) {
-    let (before, last_line) = match text.rfind('\n') {
-        Some(i) => (&text[..=i], &text[i + 1..]),
-        None => ("", text),
-    };
-    let line = before.matches('\n').count() + 1;
-    let col = last_line.chars().count() + 1;
-    (u32::try_from(line).unwrap_or(u32::MAX), u32::try_from(col).unwrap_or(u32::MAX))
 }
 
 fn convert(node: roxmltree::Node, lc: &mut LineCounter, depth: usize, file: &Arc<Path>) -> Result<Elem, Error> {

@@ -33,28 +33,11 @@ pub(crate) struct Parsed {
     pub warnings: Vec<Diagnostic>,
 }
 
-/// Where a parse error is. roxmltree puts "the file ended too early" errors at 1:1; the place
-/// a reader needs is the end of the file, where the document was cut off.
-fn xml_error_position(e: &roxmltree::Error, text: &str) -> (u32, u32) {
-    match e {
-        roxmltree::Error::UnexpectedEndOfStream | roxmltree::Error::UnclosedRootNode => {
-            let (before, last_line) = match text.rfind('\n') {
-                Some(i) => (&text[..=i], &text[i + 1..]),
-                None => ("", text),
-            };
-            let line = before.matches('\n').count() + 1;
-            let col = last_line.chars().count() + 1;
-            (u32::try_from(line).unwrap_or(u32::MAX), u32::try_from(col).unwrap_or(u32::MAX))
-        }
-        _ => (e.pos().row, e.pos().col),
-    }
-}
-
 /// Parse OpenDRIVE text; `file` is used in messages only.
 pub(crate) fn parse_document(text: &str, file: &Path) -> Result<Parsed, Error> {
     let opts = roxmltree::ParsingOptions { allow_dtd: false, nodes_limit: MAX_XML_NODES, ..Default::default() };
     let doc = roxmltree::Document::parse_with_options(text, opts).map_err(|e| {
-        let (line, col) = xml_error_position(&e, text);
+        let diagnostic::LineCol { line, col } = diagnostic::LineCol::of_xml_error(&e, text);
         Error::Xml { file: file.to_path_buf(), line, col, message: e.to_string() }
     })?;
     let mut ctx = Ctx::new(file, &doc);
