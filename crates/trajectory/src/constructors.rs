@@ -10,7 +10,11 @@ use crate::pose::Pose;
 use crate::sampled::Sampled;
 use crate::spiral::Spiral;
 use crate::time_table::TimeTable;
-use crate::{MAX_ITEMS, MAX_LENGTH};
+
+/// Upper bound on vertices / control points / knots / segments accepted from a file.
+pub const MAX_ITEMS: usize = 100_000;
+/// Upper bound on a trajectory's length in metres (hostile input).
+pub const MAX_LENGTH: f64 = 1.0e6;
 
 /// Vertices closer than this (m) are the same point.
 const SAME_POINT: f64 = 1e-9;

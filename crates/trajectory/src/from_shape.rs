@@ -25,8 +25,8 @@ impl Path {
     pub fn from_shape(shape: &Shape, closed: bool, current: Pose, resolver: Resolver) -> Result<Path, Error> {
         match shape {
             Shape::Polyline(vertices) => {
-                let mut v = Vec::with_capacity(vertices.len().min(crate::MAX_ITEMS + 1));
-                for (i, vx) in vertices.iter().take(crate::MAX_ITEMS + 1).enumerate() {
+                let mut v = Vec::with_capacity(vertices.len().min(crate::constructors::MAX_ITEMS + 1));
+                for (i, vx) in vertices.iter().take(crate::constructors::MAX_ITEMS + 1).enumerate() {
                     let pose = resolve("Polyline", format!("vertex {i}"), resolver, &vx.position)?;
                     v.push(PolylineVertex { pose, time: vx.time, explicit_heading: gives_heading(&vx.position), relative: is_relative(&vx.position) });
                 }
@@ -40,8 +40,8 @@ impl Path {
                 Path::clothoid(start, *curvature, *curvature_prime, *length, (*start_time, *stop_time), closed)
             }
             Shape::ClothoidSpline { segments, time_end } => {
-                let mut segs = Vec::with_capacity(segments.len().min(crate::MAX_ITEMS + 1));
-                for (i, s) in segments.iter().take(crate::MAX_ITEMS + 1).enumerate() {
+                let mut segs = Vec::with_capacity(segments.len().min(crate::constructors::MAX_ITEMS + 1));
+                for (i, s) in segments.iter().take(crate::constructors::MAX_ITEMS + 1).enumerate() {
                     let start = match &s.position_start {
                         Some(p) => Some(resolve("ClothoidSpline", format!("the start of segment {i}"), resolver, p)?),
                         None => None,
@@ -58,8 +58,8 @@ impl Path {
                 Path::clothoid_spline(current, &segs, *time_end, closed)
             }
             Shape::Nurbs { order, control_points, knots } => {
-                let mut cps = Vec::with_capacity(control_points.len().min(crate::MAX_ITEMS + 1));
-                for (i, c) in control_points.iter().take(crate::MAX_ITEMS + 1).enumerate() {
+                let mut cps = Vec::with_capacity(control_points.len().min(crate::constructors::MAX_ITEMS + 1));
+                for (i, c) in control_points.iter().take(crate::constructors::MAX_ITEMS + 1).enumerate() {
                     cps.push((resolve("NURBS", format!("control point {i}"), resolver, &c.position)?, c.weight, c.time));
                 }
                 Path::nurbs(*order, &cps, knots, closed)

@@ -27,7 +27,7 @@ mod spiral;
 mod time_mapping;
 mod time_table;
 
-pub use constructors::{filter_vertices, PolylineVertex, SplineSegment};
+pub use constructors::{filter_vertices, PolylineVertex, SplineSegment, MAX_ITEMS, MAX_LENGTH};
 pub use error::Error;
 pub use from_shape::{gives_heading, Resolver};
 pub use nurbs::Nurbs;
@@ -36,11 +36,6 @@ pub use polyline::Interpolation;
 pub use pose::{PathPoint, Pose};
 pub use time_mapping::{TimeDomain, TimeMapping};
 pub use time_table::TimeTable;
-
-/// Upper bound on vertices / control points / knots / segments accepted from a file.
-pub const MAX_ITEMS: usize = 100_000;
-/// Upper bound on a trajectory's length in metres (hostile input).
-pub const MAX_LENGTH: f64 = 1.0e6;
 
 // The README's example is compiled (and run, where it needs no file) with the doctests.
 #[cfg(doctest)]

@@ -11,7 +11,8 @@
 //!
 //! It does not know how the run becomes CommonRoad (`convert` does that), how the engine moves
 //! an entity (`engine`), nor the command line: it prints nothing and writes no file — rejected
-//! datagrams, notes and the conversion are returned as data and told to an `Observer`.
+//! datagrams, notes and the conversion are returned as data and told to an `Observer`
+//! (`observer`).
 
 // A library returns its warnings as data and never prints (ARCHITECTURE.md, Invariants); its
 // unit tests may.
@@ -21,6 +22,7 @@ pub mod controller_properties;
 pub mod frame_order;
 pub mod message;
 pub mod object_ids;
+pub mod observer;
 pub mod osi_out;
 pub mod outcome;
 pub mod pacing;
@@ -32,11 +34,12 @@ pub mod validate;
 
 pub use controller_properties::{ExecMode, DEFAULT_BASE_PORT};
 pub use message::{decode, Body, Header, InputMode, Message};
+pub use observer::{Listening, Observer, Silent};
 pub use outcome::{EntityReport, Outcome};
 pub use pacing::Pace;
 pub use receive::SYNCHRONOUS_TIMEOUT;
 pub use rejection::{Reason, Rejection};
-pub use serve::{serve, Error, Listening, Observer, ServeOptions, Silent};
+pub use serve::{serve, Error, ServeOptions};
 pub use validate::accept;
 
 // The README's example is compiled (and run, where it needs no file) with the doctests.

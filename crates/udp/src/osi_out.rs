@@ -9,7 +9,7 @@ use std::net::SocketAddr;
 use convert::ClosedLoop;
 use osi::{Reporter, Sender};
 
-use crate::serve::Observer;
+use crate::observer::Observer;
 
 /// Composes and sends the messages of one run.
 pub struct OsiOut {

@@ -5,7 +5,7 @@
 //! In 2024 a bound and a stop line are objects of their own, with ids the readers register
 //! beside the obstacles' (`Scenario.add_objects` refuses an id used twice). A map is shared by
 //! scenarios whose obstacles are numbered differently, so its own ids come from a range no
-//! scenario uses: from [`super::FIRST_MAP_PART_ID`] on, for each lanelet in order its left and
+//! scenario uses: from [`FIRST_MAP_PART_ID`] on, for each lanelet in order its left and
 //! right bound, then the stop lines, then the intersections' crossings.
 
 use prost::Message;
@@ -16,7 +16,6 @@ use super::messages::{commonroad_common as pb, commonroad_map as map};
 use super::meta::file_information;
 use super::signs::{element, sign_country};
 use super::values::{absolute_shape, enum_value, point};
-use super::FIRST_MAP_PART_ID;
 use crate::geometry::Point;
 use crate::header::GeoLocation;
 use crate::ids::LaneletId;
@@ -26,6 +25,10 @@ use crate::obstacle::EnvironmentObstacle;
 use crate::scenario::{LaneletNetwork, Scenario};
 use crate::traffic::{TrafficLight, TrafficSign};
 use crate::Error;
+
+/// The first id of a map's own parts (bounds, stop lines, crossings). The scenario's ids must
+/// lie below it: the readers register all of them in one id space.
+pub const FIRST_MAP_PART_ID: u64 = 1_000_000_000;
 
 /// The map's file information: it belongs to no scenario in particular (many share it), so it
 /// names the tool and no date (commonroad-io reads a missing date as 2022-01-01).

@@ -42,15 +42,11 @@ mod values;
 
 use prost::Message;
 
-pub use map::{encode_map, MapFile};
+pub use map::{encode_map, MapFile, FIRST_MAP_PART_ID};
 
 use crate::planning::PlanningProblemSet;
 use crate::scenario::Scenario;
 use crate::Error;
-
-/// The first id of a map's own parts (bounds, stop lines, crossings; see `map.rs`). The
-/// scenario's ids must lie below it: the readers register all of them in one id space.
-pub const FIRST_MAP_PART_ID: u64 = 1_000_000_000;
 
 /// The scenario and dynamic files of one scenario, for a map written apart.
 #[derive(Debug, Clone, PartialEq, Eq)]
