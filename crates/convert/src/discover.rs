@@ -1,14 +1,12 @@
 //! Finding the scenarios of a batch: files are taken as given, folders are searched (sorted,
-//! depth-limited) for `.xosc` files, and each file is classified by its root element —
+//! depth-limited: `batch_inputs`) for `.xosc` files, and each file is classified by its root element —
 //! scenario (has a Storyboard), parameter distribution, or something to skip (catalog, no
 //! storyboard), so that a skipped file can be reported with its reason.
 
 use std::path::{Path, PathBuf};
 
-/// How deep folders are searched (also stops symbolic-link cycles).
-const MAX_DEPTH: usize = 32;
-/// Most files one batch may name.
-const MAX_FILES: usize = 100_000;
+use batch_inputs::MAX_FILES;
+
 /// Files larger than this are not peeked at; the loader reports them.
 const MAX_PEEK_BYTES: u64 = 64 << 20;
 
@@ -35,25 +33,12 @@ pub struct Found {
 
 /// The files of `inputs`, in argument order, each folder's files sorted by path.
 pub fn discover(inputs: &[PathBuf]) -> Result<Vec<Found>, String> {
+    let is_xosc = |p: &Path| p.extension().is_some_and(|e| e.eq_ignore_ascii_case("xosc"));
     let mut out = Vec::new();
     for input in inputs {
-        if input.is_dir() {
-            let mut files = Vec::new();
-            walk(input, 0, &mut files)?;
-            files.sort();
-            let base = label(input);
-            for f in files {
-                let rel = f.strip_prefix(input).unwrap_or(&f).to_path_buf();
-                let sub = rel.parent().unwrap_or(Path::new("")).to_path_buf();
-                let folder = if sub.as_os_str().is_empty() { base.clone() } else { format!("{base}/{}", sub.display()) };
-                let kind = classify(&f);
-                out.push(Found { output_stem: sub.join(stem(&f)), path: f, folder, kind });
-            }
-        } else if input.is_file() {
-            let folder = input.parent().map_or_else(|| ".".into(), label);
-            out.push(Found { output_stem: PathBuf::from(stem(input)), path: input.clone(), folder, kind: classify(input) });
-        } else {
-            return Err(format!("{}: no such file or directory", input.display()));
+        for g in batch_inputs::files_of(input, &is_xosc, ".xosc files")? {
+            let kind = classify(&g.path);
+            out.push(Found { output_stem: g.sub.join(stem(&g.path)), path: g.path, folder: g.folder, kind });
         }
         if out.len() > MAX_FILES {
             return Err(format!("more than {MAX_FILES} files to convert"));
@@ -62,37 +47,8 @@ pub fn discover(inputs: &[PathBuf]) -> Result<Vec<Found>, String> {
     Ok(out)
 }
 
-/// A folder's name in the summary table: its last component, or the path itself (`..`); the
-/// current folder (a file given without one) is `.`, never an empty cell.
-fn label(dir: &Path) -> String {
-    match dir.file_name() {
-        Some(n) => n.to_string_lossy().into_owned(),
-        None if dir.as_os_str().is_empty() => ".".into(),
-        None => dir.display().to_string(),
-    }
-}
-
 fn stem(path: &Path) -> String {
     path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "scenario".into())
-}
-
-fn walk(dir: &Path, depth: usize, out: &mut Vec<PathBuf>) -> Result<(), String> {
-    if depth > MAX_DEPTH {
-        return Ok(());
-    }
-    let entries = std::fs::read_dir(dir).map_err(|e| format!("cannot read folder {}: {e}", dir.display()))?;
-    for entry in entries.flatten() {
-        let path = entry.path();
-        if path.is_dir() {
-            walk(&path, depth + 1, out)?;
-        } else if path.extension().is_some_and(|e| e.eq_ignore_ascii_case("xosc")) {
-            out.push(path);
-            if out.len() > MAX_FILES {
-                return Err(format!("more than {MAX_FILES} .xosc files under {}", dir.display()));
-            }
-        }
-    }
-    Ok(())
 }
 
 /// Classifies a file by the children of its `<OpenSCENARIO>` root. A file that cannot be read

@@ -1,5 +1,5 @@
 //! A batch: the inputs (files as given, folders searched for `.xml` and `*-SC.pb` files,
-//! sorted), exported by `jobs` threads, reports handed on in input order. Each scenario's
+//! sorted: `batch_inputs`), exported by `jobs` threads, reports handed on in input order. Each scenario's
 //! `.xosc` is written whole or not at all (`commonroad::xml::write_atomic`), at the input's
 //! place under the output folder (`<sub-folder>/<name>.xosc`; a name already taken gets `-2`,
 //! `-3`, …); the maps go to the top of the output folder, each written once, and a file of that
@@ -12,15 +12,12 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{mpsc, Arc, Mutex};
 use std::time::Instant;
 
+use batch_inputs::MAX_FILES;
+
 use crate::map_file::{MapCache, MapFile};
 use crate::options::ExportOptions;
 use crate::report::{summarise, Failure, JsonReport, MapReport, Report, Skipped, Stage, Status, SummaryRow};
 use crate::source::{is_input, read_source, scenario_name};
-
-/// How deep folders are searched.
-const MAX_DEPTH: usize = 32;
-/// Most files one batch may name.
-const MAX_FILES: usize = 100_000;
 
 /// A batch's settings.
 #[derive(Debug, Clone, PartialEq)]
@@ -68,29 +65,6 @@ impl BatchTotals {
     }
 }
 
-fn label(dir: &Path) -> String {
-    dir.file_name().map_or_else(|| dir.display().to_string(), |n| n.to_string_lossy().into_owned())
-}
-
-fn walk(dir: &Path, depth: usize, out: &mut Vec<PathBuf>) -> Result<(), String> {
-    if depth > MAX_DEPTH {
-        return Ok(());
-    }
-    let entries = std::fs::read_dir(dir).map_err(|e| format!("cannot read folder {}: {e}", dir.display()))?;
-    for entry in entries.flatten() {
-        let path = entry.path();
-        if path.is_dir() {
-            walk(&path, depth + 1, out)?;
-        } else if is_input(&path) {
-            out.push(path);
-            if out.len() > MAX_FILES {
-                return Err(format!("more than {MAX_FILES} scenario files under {}", dir.display()));
-            }
-        }
-    }
-    Ok(())
-}
-
 /// A CommonRoad XML file names `<commonRoad` near its start; other XML files of a folder are
 /// passed over.
 fn commonroad_xml(path: &Path) -> bool {
@@ -106,26 +80,15 @@ pub fn discover(inputs: &[PathBuf]) -> Result<(Vec<Found>, Vec<Skipped>), String
     let mut found = Vec::new();
     let mut skipped = Vec::new();
     for input in inputs {
-        if input.is_dir() {
-            let mut files = Vec::new();
-            walk(input, 0, &mut files)?;
-            files.sort();
-            let base = label(input);
-            for f in files {
-                if f.extension().is_some_and(|e| e.eq_ignore_ascii_case("xml")) && !commonroad_xml(&f) {
-                    skipped.push(Skipped { path: f, reason: "not a CommonRoad file (no <commonRoad> root)".into() });
-                    continue;
-                }
-                let rel = f.strip_prefix(input).unwrap_or(&f).to_path_buf();
-                let sub = rel.parent().unwrap_or(Path::new("")).to_path_buf();
-                let folder = if sub.as_os_str().is_empty() { base.clone() } else { format!("{base}/{}", sub.display()) };
-                found.push(Found { output_stem: sub.join(scenario_name(&f)), path: f, folder });
+        // other XML files of a folder are passed over; a file named is read, and its reader says
+        // what is wrong with it
+        let searched = input.is_dir();
+        for g in batch_inputs::files_of(input, &is_input, "scenario files")? {
+            if searched && g.path.extension().is_some_and(|e| e.eq_ignore_ascii_case("xml")) && !commonroad_xml(&g.path) {
+                skipped.push(Skipped { path: g.path, reason: "not a CommonRoad file (no <commonRoad> root)".into() });
+                continue;
             }
-        } else if input.is_file() {
-            let folder = input.parent().map(label).unwrap_or_else(|| ".".into());
-            found.push(Found { output_stem: PathBuf::from(scenario_name(input)), path: input.clone(), folder });
-        } else {
-            return Err(format!("{}: no such file or directory", input.display()));
+            found.push(Found { output_stem: g.sub.join(scenario_name(&g.path)), path: g.path, folder: g.folder });
         }
         if found.len() > MAX_FILES {
             return Err(format!("more than {MAX_FILES} files to export"));
@@ -213,7 +176,7 @@ fn one(found: &Found, options: &BatchOptions, cache: &MapCache, written: &Writte
 /// Exports one scenario file into `out_dir` as a batch of it alone does: `<name>.xosc` there,
 /// its map beside it. The report says what was written, or why not.
 pub fn export_file(input: &Path, out_dir: &Path, options: &ExportOptions) -> Report {
-    let found = Found { path: input.to_path_buf(), folder: label(out_dir), output_stem: PathBuf::from(scenario_name(input)) };
+    let found = Found { path: input.to_path_buf(), folder: batch_inputs::label(out_dir), output_stem: PathBuf::from(scenario_name(input)) };
     let batch = BatchOptions { out_dir: out_dir.to_path_buf(), jobs: 1, export: options.clone() };
     // `one` makes the output folder (the `.xosc`'s folder) before it writes the map into it
     one(&found, &batch, &MapCache::new(), &Mutex::new(HashMap::new()))
