@@ -15,9 +15,10 @@ use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyByteArray, PyBytes, PyDict};
 
-use crate::errors::{conversion_error, pythonic, warnings_of};
+use crate::errors::{conversion_error, warnings_of};
 use crate::inputs::{from_parts, from_row, DRIVER_WIDTH, STATE_WIDTHS};
 use crate::options::from_kwargs;
+use crate::options::pythonic;
 
 /// Numbers per entity in `states()`: x, y, heading, speed, acceleration, yaw rate, z, present.
 pub(crate) const STATE_COLUMNS: usize = 8;

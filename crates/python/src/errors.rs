@@ -8,6 +8,8 @@ use std::path::Path;
 use convert::{Failure, Stage};
 use pyo3::prelude::*;
 
+use crate::options::pythonic;
+
 /// Where a failure happened, as far as its message says.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub(crate) struct Position {
@@ -81,41 +83,6 @@ pub(crate) fn conversion_error(py: Python<'_>, failure: &Failure, file: &Path, v
         Ok(PyErr::from_value(value))
     })();
     made.unwrap_or_else(|e| e)
-}
-
-/// `message` with the command line's option names (`--lenient`, `--param`, `--max-variations`,
-/// …), which the library's messages use, as the Python keyword arguments that set the same
-/// thing (`lenient=True`, `params`, `max_variations`, …). Names Python has no keyword for are
-/// left as they are.
-pub(crate) fn pythonic(message: &str) -> String {
-    let mut out = String::with_capacity(message.len());
-    let mut rest = message;
-    while let Some(at) = rest.find("--") {
-        let (before, from) = rest.split_at(at);
-        out.push_str(before);
-        let after = &from[2..];
-        let len = after.find(|c: char| !(c.is_ascii_lowercase() || c.is_ascii_digit() || c == '-')).unwrap_or(after.len());
-        let name = &after[..len];
-        let word_start = !before.ends_with(|c: char| c.is_alphanumeric() || c == '-' || c == '_') && name.starts_with(|c: char| c.is_ascii_lowercase());
-        let keyword = match name {
-            "lenient" => Some("lenient=True".to_string()),
-            "param" => Some("params".to_string()),
-            "no-goal-velocity" => Some("goal_velocity=False".to_string()),
-            _ => Some(name.replace('-', "_")).filter(|k| crate::options::NAMES.contains(&k.as_str())),
-        };
-        match keyword.filter(|_| word_start) {
-            Some(k) => {
-                out.push_str(&k);
-                rest = &after[len..];
-            }
-            None => {
-                out.push_str("--");
-                rest = after;
-            }
-        }
-    }
-    out.push_str(rest);
-    out
 }
 
 /// A reason given as text (e.g. "not a scenario"), for `file`.

@@ -1,7 +1,8 @@
 //! Keyword options of the Python functions → `convert::ConvertOptions`. The names are the
 //! CLI's long options with `_` for `-`; an option left out keeps the CLI's default. Unknown
 //! names and wrong types are `TypeError`s, values no conversion could use `ValueError`s — the
-//! same checks, with the same messages, as `osc2cr convert`.
+//! same checks, with the same messages, as `osc2cr convert`. A message that names a CLI option
+//! names its keyword instead (`pythonic`, for every error and warning Python sees).
 
 use convert::{ConvertOptions, EgoChoice};
 use pyo3::exceptions::{PyTypeError, PyValueError};
@@ -98,7 +99,7 @@ pub(crate) fn from_kwargs(kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<(Conve
     if let Some(n) = max_variations {
         o.max_variations = n;
     }
-    o.check().map_err(|m| PyValueError::new_err(crate::errors::pythonic(&m)))?;
+    o.check().map_err(|m| PyValueError::new_err(pythonic(&m)))?;
     Ok((o, max_variations))
 }
 
@@ -169,4 +170,39 @@ fn params(v: &Bound<'_, PyAny>) -> PyResult<Vec<(String, String)>> {
         out.push((name.trim().to_string(), text));
     }
     Ok(out)
+}
+
+/// `message` with the command line's option names (`--lenient`, `--param`, `--max-variations`,
+/// …), which the library's messages use, as the Python keyword arguments that set the same
+/// thing (`lenient=True`, `params`, `max_variations`, …). Names Python has no keyword for are
+/// left as they are.
+pub(crate) fn pythonic(message: &str) -> String {
+    let mut out = String::with_capacity(message.len());
+    let mut rest = message;
+    while let Some(at) = rest.find("--") {
+        let (before, from) = rest.split_at(at);
+        out.push_str(before);
+        let after = &from[2..];
+        let len = after.find(|c: char| !(c.is_ascii_lowercase() || c.is_ascii_digit() || c == '-')).unwrap_or(after.len());
+        let name = &after[..len];
+        let word_start = !before.ends_with(|c: char| c.is_alphanumeric() || c == '-' || c == '_') && name.starts_with(|c: char| c.is_ascii_lowercase());
+        let keyword = match name {
+            "lenient" => Some("lenient=True".to_string()),
+            "param" => Some("params".to_string()),
+            "no-goal-velocity" => Some("goal_velocity=False".to_string()),
+            _ => Some(name.replace('-', "_")).filter(|k| NAMES.contains(&k.as_str())),
+        };
+        match keyword.filter(|_| word_start) {
+            Some(k) => {
+                out.push_str(&k);
+                rest = &after[len..];
+            }
+            None => {
+                out.push_str("--");
+                rest = after;
+            }
+        }
+    }
+    out.push_str(rest);
+    out
 }
