@@ -28,9 +28,7 @@ fn two_runs_are_identical() {
 #[test]
 fn bad_settings_are_errors() {
     let text = xosc(&teleport("Ego", 10.0, -1), "", "");
-    let path = fixtures().join("test.xosc");
-    let loaded = openscenario::load_str(&path, &text, &Default::default()).expect("loads");
-    let openscenario::Content::Scenario(sc) = loaded.content else { panic!() };
+    let sc = scenario_of(&text);
     for s in [Settings { step: 0.0, max_time: 1.0 }, Settings { step: 0.01, max_time: f64::NAN }, Settings { step: 1e-9, max_time: 1e9 }] {
         assert!(engine::simulate(&sc, None, &s).is_err());
     }
@@ -42,9 +40,7 @@ fn bad_settings_are_errors() {
 #[test]
 fn a_passed_deadline_stops_the_run_at_the_next_clock_check() {
     let text = xosc(&teleport("Ego", 10.0, -1), "", "");
-    let path = fixtures().join("test.xosc");
-    let loaded = openscenario::load_str(&path, &text, &Default::default()).expect("loads");
-    let openscenario::Content::Scenario(sc) = loaded.content else { panic!() };
+    let sc = scenario_of(&text);
     let settings = Settings { step: 0.01, max_time: 60.0 };
     // The clock is looked at every 256 steps: the first look is in step 256, whose frame
     // starts at 255 × 0.01 s.

@@ -6,7 +6,7 @@ use crate::common::*;
 #[test]
 fn teleport_places_on_lane_centre_facing_driving_direction() {
     let init = format!("{}{}", teleport("Ego", 10.0, -1), teleport("Target", 50.0, 1));
-    let run = run(&xosc(&init, "", &trigger_stop(1.0)));
+    let run = run(&xosc(&init, "", &stop_at(1.0)));
     let e = at(&run, "Ego", 0.0);
     assert!(close(e.x, 10.0, 1e-9) && close(e.y, -1.75, 1e-9) && close(e.h, 0.0, 1e-9));
     // Lane 1 is left of the reference line and drives against s: heading π.
@@ -14,14 +14,10 @@ fn teleport_places_on_lane_centre_facing_driving_direction() {
     assert!(close(t.x, 50.0, 1e-9) && close(t.y, 1.75, 1e-9) && close(t.h, std::f64::consts::PI, 1e-9));
 }
 
-fn trigger_stop(t: f64) -> String {
-    stop_at(t)
-}
-
 #[test]
 fn step_speed_moves_speed_times_time() {
     let init = format!("{}{}", teleport("Ego", 10.0, -1), init_speed("Ego", "step", "time", 0.0, 10.0));
-    let run = run(&xosc(&init, "", &trigger_stop(5.0)));
+    let run = run(&xosc(&init, "", &stop_at(5.0)));
     // Speed applies from the first step: x = 10 + 10 t.
     assert!(close(at(&run, "Ego", 1.0).x, 20.0, 1e-9));
     assert!(close(at(&run, "Ego", 3.0).x, 40.0, 1e-9));
@@ -34,7 +30,7 @@ fn step_speed_moves_speed_times_time() {
 fn linear_rate_speed_reaches_target_on_time() {
     // 0 -> 10 m/s at 5 m/s²: the j-th step sets 0.05 j m/s, reached at j = 200 (t = 2 s).
     let init = format!("{}{}", teleport("Ego", 10.0, -1), init_speed("Ego", "linear", "rate", 5.0, 10.0));
-    let run = run(&xosc(&init, "", &trigger_stop(5.0)));
+    let run = run(&xosc(&init, "", &stop_at(5.0)));
     assert!(close(at(&run, "Ego", 2.0).speed, 10.0, 1e-9));
     assert!(close(at(&run, "Ego", 1.0).speed, 5.0, 1e-9));
     // Distance after 200 steps: 0.01 · Σ 0.05 j = 0.0005 · 200 · 201 / 2 = 10.05 m.
@@ -48,7 +44,7 @@ fn shapes_over_time_and_distance() {
         // 0 -> 10 m/s over 2 s, or over 10 m (= 2 s at a mean speed of 5 m/s). Every shape is
         // symmetric about its midpoint, so the speed at 1 s is 5 m/s.
         let init = format!("{}{}", teleport("Ego", 10.0, -1), init_speed("Ego", shape, dim, value, 10.0));
-        let run = run(&xosc(&init, "", &trigger_stop(4.0)));
+        let run = run(&xosc(&init, "", &stop_at(4.0)));
         assert!(close(at(&run, "Ego", 1.0).speed, 5.0, 1e-6), "{shape} {dim}: {}", at(&run, "Ego", 1.0).speed);
         assert!(close(at(&run, "Ego", 2.5).speed, 10.0, 1e-9), "{shape} {dim}");
         // About 10 m covered during the transition (the discrete sum differs by one step).
@@ -66,7 +62,7 @@ fn relative_continuous_speed_tracks_the_reference() {
         init_speed("Ego", "step", "time", 0.0, 10.0),
         r#"<Private entityRef="Target"><PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="step" dynamicsDimension="time" value="0"/><SpeedActionTarget><RelativeTargetSpeed entityRef="Ego" value="2" speedTargetValueType="delta" continuous="true"/></SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction></Private>"#
     );
-    let run = run(&xosc(&init, "", &trigger_stop(3.0)));
+    let run = run(&xosc(&init, "", &stop_at(3.0)));
     assert!(close(at(&run, "Target", 2.0).speed, 12.0, 1e-9));
     // The continuous action never ends.
     assert!(event_time(&run, "Init Target SpeedAction", "end").is_none());
@@ -77,7 +73,7 @@ fn lane_change_ends_in_the_target_lane() {
     let lc = r#"<PrivateAction><LateralAction><LaneChangeAction><LaneChangeActionDynamics dynamicsShape="sinusoidal" value="2" dynamicsDimension="time"/><LaneChangeTarget><AbsoluteTargetLane value="-2"/></LaneChangeTarget></LaneChangeAction></LateralAction></PrivateAction>"#;
     let init = format!("{}{}", teleport("Ego", 10.0, -1), init_speed("Ego", "step", "time", 0.0, 10.0));
     let stories = story("Ego", &event("LC", "overwrite", lc, &trigger(&sim_time(1.0, "greaterThan", "none", 0.0))));
-    let run = run(&xosc(&init, &stories, &trigger_stop(6.0)));
+    let run = run(&xosc(&init, &stories, &stop_at(6.0)));
     // Starts at 1.01 (1.00 is not > 1), takes 2 s of parameter: ends at 3.00.
     assert!(close(event_time(&run, "LC", "start").unwrap_or(-1.0), 1.01, 1e-9));
     let end = event_time(&run, "LCAction", "end").unwrap_or(-1.0);
@@ -99,7 +95,7 @@ fn lane_offset_reaches_its_target() {
     let lo = r#"<PrivateAction><LateralAction><LaneOffsetAction continuous="false"><LaneOffsetActionDynamics maxLateralAcc="2" dynamicsShape="cubic"/><LaneOffsetTarget><AbsoluteTargetLaneOffset value="1.0"/></LaneOffsetTarget></LaneOffsetAction></LateralAction></PrivateAction>"#;
     let init = format!("{}{}", teleport("Ego", 10.0, -1), init_speed("Ego", "step", "time", 0.0, 10.0));
     let stories = story("Ego", &event("LO", "overwrite", lo, &trigger(&sim_time(1.0, "greaterThan", "none", 0.0))));
-    let run = run(&xosc(&init, &stories, &trigger_stop(5.0)));
+    let run = run(&xosc(&init, &stories, &stop_at(5.0)));
     let end = event_time(&run, "LOAction", "end").unwrap_or(-1.0);
     assert!(close(end, 1.01 + 3f64.sqrt(), 0.011), "{end}");
     assert!(close(at(&run, "Ego", 4.0).y, -0.75, 1e-9));
@@ -117,7 +113,7 @@ fn parameter_set_is_seen_by_parameter_condition() {
         event("Go", "parallel", &speed_action("step", "time", 0.0, 7.0), &trigger(cond))
     );
     let init = teleport("Ego", 10.0, -1);
-    let run = run(&xosc(&init, &story("Ego", &events), &trigger_stop(3.0)));
+    let run = run(&xosc(&init, &story("Ego", &events), &stop_at(3.0)));
     let t = event_time(&run, "Go", "start").unwrap_or(-1.0);
     assert!((1.01..=1.02 + 1e-9).contains(&t), "{t}");
     assert!(close(at(&run, "Ego", 2.5).speed, 7.0, 1e-9));
@@ -128,7 +124,7 @@ fn visibility_is_recorded() {
     let vis = r#"<PrivateAction><VisibilityAction graphics="false" traffic="false" sensors="false"/></PrivateAction>"#;
     // Target is placed too: an entity the Init does not name does not exist (esmini).
     let init = format!("{}{}<Private entityRef=\"Ego\">{vis}</Private>", teleport("Ego", 10.0, -1), teleport("Target", 30.0, -1));
-    let run = run(&xosc(&init, "", &trigger_stop(1.0)));
+    let run = run(&xosc(&init, "", &stop_at(1.0)));
     assert!(!at(&run, "Ego", 0.5).visible);
     assert!(at(&run, "Target", 0.5).visible);
 }
@@ -137,7 +133,7 @@ fn visibility_is_recorded() {
 fn unsupported_action_is_a_positioned_warning() {
     let traj = r#"<PrivateAction><RoutingAction><RandomRouteAction/></RoutingAction></PrivateAction>"#.to_string();
     let init = format!("{}<Private entityRef=\"Ego\">{traj}</Private>", teleport("Ego", 10.0, -1));
-    let run = run(&xosc(&init, "", &trigger_stop(1.0)));
+    let run = run(&xosc(&init, "", &stop_at(1.0)));
     let w = run.warnings.iter().find(|w| w.message.contains("RandomRouteAction")).expect("warning");
     assert!(w.location.line > 0 && w.location.col > 0);
 }

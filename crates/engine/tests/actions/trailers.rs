@@ -44,10 +44,7 @@ fn scenario(linked: bool, road: bool, init: &str, stories: &str, stop: f64) -> S
 }
 
 fn run_no_road(text: &str) -> engine::Run {
-    let path = fixtures().join("test.xosc");
-    let loaded = openscenario::load_str(&path, text, &Default::default()).expect("test scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    engine::simulate(&scenario, None, &engine::Settings { step: 0.01, max_time: 60.0 }).expect("simulate")
+    engine::simulate(&scenario_of(text), None, &engine::Settings { step: 0.01, max_time: 60.0 }).expect("simulate")
 }
 
 fn world(entity: &str, x: f64, y: f64, h: f64) -> String {

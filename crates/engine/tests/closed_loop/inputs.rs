@@ -9,10 +9,7 @@ use crate::common::*;
 use engine::{DriverInput, External, ExternalState, Input, RunControl, ScriptedMotion, Settings, Simulation};
 
 fn load(text: &str) -> (openscenario::Scenario, opendrive::RoadNetwork) {
-    let loaded = openscenario::load_str(&fixtures().join("test.xosc"), text, &Default::default()).expect("test scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("straight.xodr")).expect("fixture road loads").network;
-    (*scenario, net)
+    (scenario_of(text), fixture_road("straight.xodr"))
 }
 
 /// Ego at s = 50 on lane −1 at 10 m/s, Target at s = 200 on lane −1 at 5 m/s; `stories`; 10 s.

@@ -102,11 +102,24 @@ pub(crate) fn event(name: &str, priority: &str, action: &str, start: &str) -> St
 }
 
 pub(crate) fn run_with(text: &str, settings: &Settings) -> Run {
-    let path = fixtures().join("test.xosc");
-    let loaded = openscenario::load_str(&path, text, &Default::default()).expect("test scenario loads");
+    run_on(text, "straight.xodr", settings)
+}
+
+/// Test scenario `text` (read as `fixtures/test.xosc`) as a model.
+pub(crate) fn scenario_of(text: &str) -> openscenario::Scenario {
+    let loaded = openscenario::load_str(&fixtures().join("test.xosc"), text, &Default::default()).expect("test scenario loads");
     let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("straight.xodr")).expect("fixture road loads").network;
-    engine::simulate(&scenario, Some(&net), settings).expect("simulate")
+    *scenario
+}
+
+/// Fixture road `xodr` (in `fixtures/`).
+pub(crate) fn fixture_road(xodr: &str) -> opendrive::RoadNetwork {
+    opendrive::load(fixtures().join(xodr)).expect("fixture road loads").network
+}
+
+/// Test scenario `text` run on fixture road `xodr`.
+pub(crate) fn run_on(text: &str, xodr: &str, settings: &Settings) -> Run {
+    engine::simulate(&scenario_of(text), Some(&fixture_road(xodr)), settings).expect("simulate")
 }
 
 /// Run the fixture scenario `name` (in `fixtures/`) on the straight fixture road, 0.01 s steps.

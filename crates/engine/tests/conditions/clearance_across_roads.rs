@@ -16,11 +16,7 @@ fn run_on_opposite_roads(opposite_lanes: bool) -> engine::Run {
     let stories = story("Ego", &event("E", "overwrite", &speed_action("step", "time", 0.0, 1.0), &trigger(&cond)));
     let stop = stop_at(1.0);
     let text = xosc(init, &stories, &stop).replace("straight.xodr", "opposite_roads.xodr");
-    let path = fixtures().join("test.xosc");
-    let loaded = openscenario::load_str(&path, &text, &Default::default()).expect("test scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("opposite_roads.xodr")).expect("fixture road loads").network;
-    engine::simulate(&scenario, Some(&net), &engine::Settings { step: 0.01, max_time: 5.0 }).expect("simulate")
+    run_on(&text, "opposite_roads.xodr", &engine::Settings { step: 0.01, max_time: 5.0 })
 }
 
 #[test]

@@ -58,11 +58,7 @@ fn qualified_element_reference_picks_the_action_of_the_named_event() {
 }
 
 fn run_on_verge(text: &str) -> Run {
-    let path = fixtures().join("test.xosc");
-    let loaded = openscenario::load_str(&path, text, &Default::default()).expect("test scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("straight_verge.xodr")).expect("fixture road loads").network;
-    engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 5.0 }).expect("simulate")
+    run_on(text, "straight_verge.xodr", &Settings { step: 0.01, max_time: 5.0 })
 }
 
 fn offroad_event(duration: f64) -> String {

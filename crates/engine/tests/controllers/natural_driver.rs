@@ -5,7 +5,7 @@
 //! The driver: desired speed 20 m/s, desired distance 5 m, time headway 1.5 s, maxAcc 2 m/s²,
 //! maxDec -4 m/s², lane change over 3 s, route lane -1 (unless a test says otherwise).
 
-use crate::common::{at, car_with, close, event_time, fixtures};
+use crate::common::{at, car_with, close, event_time, run_on};
 use engine::{Run, Settings};
 
 const DT: f64 = 0.01;
@@ -66,11 +66,7 @@ fn scenario(extra: &str, init: &str, stop: f64) -> String {
 }
 
 fn run(text: &str, max_time: f64) -> Run {
-    let path = fixtures().join("test.xosc");
-    let loaded = openscenario::load_str(&path, text, &Default::default()).expect("test scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("straight.xodr")).expect("fixture road loads").network;
-    engine::simulate(&scenario, Some(&net), &Settings { step: DT, max_time }).expect("simulate")
+    run_on(text, "straight.xodr", &Settings { step: DT, max_time })
 }
 
 /// Parked far away, out of every look-ahead.

@@ -8,11 +8,7 @@ use crate::common::*;
 use engine::{Run, Settings};
 
 fn run_merge(text: &str) -> Run {
-    let path = fixtures().join("test.xosc");
-    let loaded = openscenario::load_str(&path, text, &Default::default()).expect("test scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("merge.xodr")).expect("fixture road loads").network;
-    engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 20.0 }).expect("simulate")
+    run_on(text, "merge.xodr", &Settings { step: 0.01, max_time: 20.0 })
 }
 
 fn acquire(s: f64, lane: i32) -> String {

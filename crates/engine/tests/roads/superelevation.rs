@@ -5,11 +5,7 @@ use crate::common::*;
 use engine::Settings;
 
 fn run_banked(text: &str) -> engine::Run {
-    let path = fixtures().join("test.xosc");
-    let loaded = openscenario::load_str(&path, text, &Default::default()).expect("test scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("banked.xodr")).expect("fixture road loads").network;
-    engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 1.0 }).expect("simulate")
+    run_on(text, "banked.xodr", &Settings { step: 0.01, max_time: 1.0 })
 }
 
 #[test]

@@ -19,11 +19,7 @@ fn run_lateral(reference_road: u32, lane: i32, reference_s: f64, displacement: &
     let stories = story("Target", &event("L", "overwrite", &action, &trigger(&sim_time(0.5, "greaterThan", "none", 0.0))));
     let stop = stop_at(2.0);
     let text = xosc(&init, &stories, &stop).replace("straight.xodr", "opposite_roads.xodr");
-    let path = fixtures().join("test.xosc");
-    let loaded = openscenario::load_str(&path, &text, &Default::default()).expect("test scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("opposite_roads.xodr")).expect("fixture road loads").network;
-    engine::simulate(&scenario, Some(&net), &engine::Settings { step: 0.01, max_time: 5.0 }).expect("simulate")
+    run_on(&text, "opposite_roads.xodr", &engine::Settings { step: 0.01, max_time: 5.0 })
 }
 
 /// The actor's y once the action has placed it, and that nothing was approximated.

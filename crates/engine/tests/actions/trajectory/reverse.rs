@@ -19,6 +19,12 @@ fn follow(closed: bool, shape: &str, timing: &str) -> String {
     )
 }
 
+/// The Init of every scenario here: Ego at s = 10 on lane −1, started at −5 m/s on a
+/// FollowTrajectoryAction along `shape` (no time reference).
+fn backing_along(shape: &str) -> String {
+    format!(r#"{}<Private entityRef="Ego">{}{}</Private>"#, teleport("Ego", 10.0, -1), speed_action("step", "time", 0.0, -5.0), follow(false, shape, "<None/>"))
+}
+
 /// Heading difference wrapped to (−π, π].
 fn dh(a: f64, b: f64) -> f64 {
     let d = (a - b).rem_euclid(2.0 * PI);
@@ -35,12 +41,7 @@ fn negative_speed_follows_the_polyline_facing_backwards() {
     // s = 5 t along the path.
     let shape =
         format!("<Polyline><Vertex>{}</Vertex><Vertex>{}</Vertex><Vertex>{}</Vertex></Polyline>", world(10.0, -1.75), world(60.0, -1.75), world(60.0, 48.25));
-    let init = format!(
-        r#"{}<Private entityRef="Ego">{}{}</Private>"#,
-        teleport("Ego", 10.0, -1),
-        speed_action("step", "time", 0.0, -5.0),
-        follow(false, &shape, "<None/>")
-    );
+    let init = backing_along(&shape);
     let run = run(&xosc(&init, "", &stop_at(15.0)));
     // t = 4: s = 20 on the first segment (heading 0): (30, −1.75), facing π.
     let e = at(&run, "Ego", 4.0);
@@ -86,12 +87,7 @@ fn started_reversing_it_comes_back_along_the_path_once_the_speed_turns_positive(
     // heading sign): s = 5 t up to t = 4, then back by 5 m/s, so s = 0 at t = 8 where the
     // action ends; the default controller then drives on in the entity's heading (−x).
     let shape = format!("<Polyline><Vertex>{}</Vertex><Vertex>{}</Vertex></Polyline>", world(10.0, -1.75), world(60.0, -1.75));
-    let init = format!(
-        r#"{}<Private entityRef="Ego">{}{}</Private>"#,
-        teleport("Ego", 10.0, -1),
-        speed_action("step", "time", 0.0, -5.0),
-        follow(false, &shape, "<None/>")
-    );
+    let init = backing_along(&shape);
     let stories =
         story("Ego", &event("Forward", "overwrite", &speed_action("step", "time", 0.0, 5.0), &trigger(&sim_time(4.0, "greaterOrEqual", "none", 0.0))));
     let run = run(&xosc(&init, &stories, &stop_at(12.0)));
@@ -109,12 +105,7 @@ fn reversing_along_vertices_with_explicit_headings_is_a_positioned_warning() {
     // run on this scenario). osc2cr does not model that and says so.
     let v = |x: f64| format!(r#"<Position><WorldPosition x="{x}" y="-1.75" z="0" h="0"/></Position>"#);
     let shape = format!("<Polyline><Vertex>{}</Vertex><Vertex>{}</Vertex></Polyline>", v(10.0), v(60.0));
-    let init = format!(
-        r#"{}<Private entityRef="Ego">{}{}</Private>"#,
-        teleport("Ego", 10.0, -1),
-        speed_action("step", "time", 0.0, -5.0),
-        follow(false, &shape, "<None/>")
-    );
+    let init = backing_along(&shape);
     let run = run(&xosc(&init, "", &stop_at(2.0)));
     let w: Vec<_> = run.warnings.iter().filter(|w| w.message.contains("explicit vertex headings")).collect();
     assert_eq!(w.len(), 1, "{:?}", run.warnings);

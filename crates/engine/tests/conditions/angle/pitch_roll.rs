@@ -31,11 +31,7 @@ fn roll_follows_the_superelevation_and_turns_with_the_facing() {
     ]
     .concat();
     let text = xosc(&init, &story("Ego", &events), &stop_at(5.0)).replace("straight.xodr", "banked.xodr");
-    let path = fixtures().join("test.xosc");
-    let loaded = openscenario::load_str(&path, &text, &Default::default()).expect("test scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("banked.xodr")).expect("fixture road loads").network;
-    let run = engine::simulate(&scenario, Some(&net), &engine::Settings { step: 0.01, max_time: 10.0 }).expect("simulate");
+    let run = run_on(&text, "banked.xodr", &engine::Settings { step: 0.01, max_time: 10.0 });
     assert!(run.warnings.is_empty(), "{:?}", run.warnings);
     for (name, t) in [("EgoRollRoad", 0.0), ("TargetRoll", 1.79), ("EgoRoll", 2.81)] {
         assert!(event_time(&run, name, "start").is_some_and(|s| close(s, t, 1e-9)), "{name}: {:?}", run.trace.events);
