@@ -22,10 +22,6 @@ const KNOWN: &[(&str, &str)] = &[
         "test_reading_complex_tl",
         "Lanker's overlaps, and a five-lane group (3667…3610) whose ends lie on a curve: its outer lanes read back too short",
     ),
-    (
-        "ghost_route",
-        "lanelets 17/18 read back 6.3 cm off at (200.09, -137.00), where a bend ends, in the full-precision network of the in-process conversion; the same network from osc2cr's 6-decimal XML passes (1.1 cm): not understood yet",
-    ),
 ];
 
 #[test]
