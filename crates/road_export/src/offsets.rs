@@ -5,9 +5,10 @@
 //!
 //! All borders of a lane section are fitted on common pieces (so a lane's width, the
 //! difference of two borders, is one cubic per piece); each piece interpolates the exact
-//! offsets at its ends (the border is continuous) and fits the samples between by least
-//! squares, and is checked at them and halfway between them (points it was not fitted to); pieces are made as long as the tolerance allows, and always break at the
-//! reference line's knots (where its curvature, and so the offsets' slope, may jump).
+//! offsets at its ends (the border is continuous), fits the samples between by least
+//! squares and is checked at them and halfway between them (points it was not fitted to);
+//! pieces are made as long as the tolerance allows, and always break at the reference
+//! line's knots (where its curvature, and so the offsets' slope, may jump).
 
 use crate::reference::RefLine;
 use crate::vec2::V2;

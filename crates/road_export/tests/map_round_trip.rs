@@ -16,7 +16,7 @@ const KNOWN: &[(&str, &str)] = &[
     ("USA_Lanker-1_1_T-1", "the same kind of overlap at 3436/3438 and 3526/3528"),
     (
         "USA_Peach-4_8_T-1",
-        "adjacent lanelets of different lengths (43630/43634, 43396/43398, 43620/43622/43626, 43462/43464): a lane section needs side-by-side lanelets that start and end together, and lanelets are not cut yet",
+        "adjacent lanelets that overlap (43396/43398, 43462/43464 start on the same cross-section, one crossing over to lie beside the other at the end; they share a start, not a bound); its lanelets of different lengths are cut into lane sections and pass",
     ),
     (
         "test_reading_complex_tl",
