@@ -7,6 +7,10 @@
 //! piece of the neighbour beside it. A reader gets a chain of lanelets back, which the round
 //! trip compares as the one lanelet it came from.
 //!
+//! A lanelet is also cut where its bound meets a neighbour's after running apart from it (a
+//! lane that joins its neighbour: they are neighbours from there on), and the cuts are
+//! repeated on the pieces, since a piece's new end may cut its other neighbour in turn.
+//!
 //! The cut is made on the bound shared with the neighbour, at the same parameter (segment and
 //! fraction) on both bounds: CommonRoad pairs the points of its bounds across the lanelet.
 //! Lanelets of an intersection are not cut (the junction's connecting roads stay one lanelet
@@ -14,7 +18,7 @@
 
 use crate::groups::{SHARED, SHARED_ENDS};
 use crate::topology::intersection_of;
-use crate::vec2::{to_segment, V2};
+use crate::vec2::{to_segment, SegmentIndex, V2};
 use crate::warning::{Subject, Warning};
 use commonroad::{Adjacent, DrivingDir, Lanelet, LaneletBounds, LaneletId, LaneletNetwork, Point};
 use std::collections::BTreeMap;
@@ -23,6 +27,13 @@ use std::collections::BTreeMap;
 const MIN_PIECE: f64 = 1.0;
 /// A cut this close to a bound vertex is made at the vertex (m): no sliver segments.
 const SNAP: f64 = 0.05;
+/// Bounds this close share a border where they meet (m; two bounds 2·CLOSE apart make a
+/// border that is CLOSE from each).
+const CLOSE: f64 = 0.03;
+/// Rounds of cutting at most (a cut piece may cut its other neighbour).
+const PASSES: usize = 6;
+/// Spacing of the samples that find where bounds meet (m).
+const STEP: f64 = 0.25;
 /// A neighbour piece whose bound is farther than this from a piece's bound is not beside it (m).
 const BESIDE: f64 = 1.0;
 
@@ -122,6 +133,48 @@ fn facing(n: &Lanelet, left: bool, adj: Adjacent) -> Option<Vec<V2>> {
     Some(v)
 }
 
+/// Where `mine` starts or stops sharing the bound `theirs`: (arc length, parameter) of the
+/// first sample within [`CLOSE`] after one farther than [`SHARED`], and of the last within
+/// [`CLOSE`] before one farther than [`SHARED`]; distances between the two decide nothing,
+/// so bounds a few centimetres apart all along are not cut up.
+fn meeting_points(mine: &[V2], theirs: &[V2]) -> Vec<(f64, f64)> {
+    let index = SegmentIndex::new(std::iter::once(theirs), 2.0);
+    // (arc, parameter, distance) every STEP m and at every vertex
+    let mut samples: Vec<(f64, f64, f64)> = Vec::new();
+    let mut arc = 0.0;
+    for (k, w) in mine.windows(2).enumerate() {
+        let len = w[0].dist(w[1]);
+        let n = ((len / STEP).ceil() as usize).clamp(1, 1_000_000);
+        for m in 0..n {
+            let f = m as f64 / n as f64;
+            samples.push((arc + f * len, k as f64 + f, index.distance(w[0].lerp(w[1], f), 4.0 * SHARED)));
+        }
+        arc += len;
+    }
+    if let Some(&last) = mine.last() {
+        samples.push((arc, (mine.len() - 1) as f64, index.distance(last, 4.0 * SHARED)));
+    }
+    let mut out = Vec::new();
+    // the state of the last decisive sample: Some(true) close, Some(false) far
+    let mut state: Option<bool> = None;
+    let mut last_close: Option<(f64, f64)> = None;
+    for &(a, u, d) in &samples {
+        if d <= CLOSE {
+            if state == Some(false) {
+                out.push((a, u));
+            }
+            state = Some(true);
+            last_close = Some((a, u));
+        } else if d > SHARED {
+            if state == Some(true) {
+                out.extend(last_close);
+            }
+            state = Some(false);
+        }
+    }
+    out
+}
+
 /// Cut parameters of each lanelet (sorted, inside it), from its neighbours' ends.
 fn cut_params(net: &LaneletNetwork, pos: &BTreeMap<u64, usize>, keep: &BTreeMap<usize, u64>) -> Vec<Vec<f64>> {
     let mut out = vec![Vec::new(); net.lanelets.len()];
@@ -130,12 +183,20 @@ fn cut_params(net: &LaneletNetwork, pos: &BTreeMap<u64, usize>, keep: &BTreeMap<
             continue;
         }
         let mut found: Vec<(f64, f64)> = Vec::new();
+        let mut runs: Vec<(f64, f64)> = Vec::new();
         for (left, adj) in [(true, l.adjacent_left), (false, l.adjacent_right)] {
             let Some(adj) = adj else { continue };
             let Some(n) = pos.get(&adj.lanelet.get()).and_then(|&j| net.lanelets.get(j)) else { continue };
             let Some(mine) = v2(if left { l.bounds.left() } else { l.bounds.right() }) else { continue };
             let Some(theirs) = facing(n, left, adj) else { continue };
             let total = length(&mine);
+            // where the bounds meet or part (a lane forking off on top of its neighbour
+            // shares a bound with it only after the fork)
+            for (arc, u) in meeting_points(&mine, &theirs) {
+                if arc > SHARED_ENDS && arc < total - SHARED_ENDS {
+                    runs.push((arc, u));
+                }
+            }
             for end in [theirs.first(), theirs.last()].into_iter().flatten() {
                 let (d, u, arc) = locate(&mine, *end);
                 if d <= SHARED && arc > SHARED_ENDS && arc < total - SHARED_ENDS {
@@ -146,6 +207,9 @@ fn cut_params(net: &LaneletNetwork, pos: &BTreeMap<u64, usize>, keep: &BTreeMap<
                 }
             }
         }
+        // a meeting point near a neighbour's end is that end
+        let meetings: Vec<(f64, f64)> = runs.into_iter().filter(|r| found.iter().all(|f| (f.0 - r.0).abs() >= MIN_PIECE)).collect();
+        found.extend(meetings);
         found.sort_by(|a, b| a.0.total_cmp(&b.0));
         let mut kept: Vec<(f64, f64)> = Vec::new();
         for c in found {
@@ -174,6 +238,27 @@ fn nearest_piece(pieces: &[Lanelet], p: V2) -> usize {
 /// The network with every lanelet cut where a neighbour starts or ends beside it; `None`
 /// when no lanelet needs cutting.
 pub(crate) fn cut(net: &LaneletNetwork) -> Option<Cut> {
+    let mut done: Option<Cut> = None;
+    // a piece's new end can cut its other neighbour in turn
+    for _ in 0..PASSES {
+        let Some(next) = cut_once(done.as_ref().map_or(net, |c| &c.network)) else { break };
+        done = Some(match done {
+            None => next,
+            Some(prev) => {
+                let mut origin = prev.origin;
+                for (piece, from) in next.origin {
+                    let root = origin.get(&from).copied().unwrap_or(from);
+                    origin.insert(piece, root);
+                }
+                Cut { network: next.network, origin }
+            }
+        });
+    }
+    done
+}
+
+/// One round of cuts (each lanelet against its neighbours as they are).
+fn cut_once(net: &LaneletNetwork) -> Option<Cut> {
     let pos: BTreeMap<u64, usize> = net.lanelets.iter().enumerate().map(|(i, l)| (l.id.get(), i)).collect();
     let keep = intersection_of(net);
     let params = cut_params(net, &pos, &keep);

@@ -80,3 +80,23 @@ fn a_sign_stays_on_the_piece_where_it_stands() {
     assert!(e.warnings.iter().all(|w| !w.message.contains("moved")), "{:?}", e.warnings);
     assert!(e.xodr.contains("id=\"10\""), "{}", e.xodr);
 }
+
+#[test]
+fn neighbours_that_meet_halfway_are_neighbours_from_there_on() {
+    // 2 runs 2 m left of 1 and meets it at x = 40, sharing its bound from there; 3 lies on
+    // the right of 1 all along, so the cut of 1 cuts 3 in turn
+    let mut a = lanelet(1, 0.0, 100.0, 0.0, 3.5);
+    let gap = |x: f64| 2.0 * (1.0 - x / 40.0).max(0.0);
+    let xs: Vec<f64> = (0..=20).map(|k| f64::from(k) * 5.0).collect();
+    let side = |off: f64| xs.iter().map(|&x| Point::new(x, 3.5 + gap(x) + off)).collect::<Vec<_>>();
+    let mut b = Lanelet::new(id(2), LaneletBounds::new(side(3.5), side(0.0)).expect("bounds"), LaneletType::Urban);
+    let mut c = lanelet(3, 0.0, 100.0, -3.5, 0.0);
+    a.adjacent_left = adjacent(2, DrivingDir::Same);
+    b.adjacent_right = adjacent(1, DrivingDir::Same);
+    a.adjacent_right = adjacent(3, DrivingDir::Same);
+    c.adjacent_left = adjacent(1, DrivingDir::Same);
+    let net = LaneletNetwork { lanelets: vec![a, b, c], ..Default::default() };
+    let (c, _) = round_trip_of(&net);
+    assert!(c.passes(0.05, 0.01), "{:?}", c.failures(0.05));
+    assert_eq!((c.relations_kept, c.relations), (4, 4));
+}
