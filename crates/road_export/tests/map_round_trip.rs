@@ -17,7 +17,7 @@ const KNOWN: &[(&str, &str)] = &[
     ("USA_Peach-4_8_T-1", "the same overlap at 43396/43398 (0.65 of 19.9 m) and 43462/43464 (0.75 of 24.7 m)"),
     (
         "test_reading_complex_tl",
-        "Lanker's overlaps, and a five-lane group (3667…3610) whose ends lie on a curve: the section's straight end cut covers every end, so its outer lanes read back up to 1.6 m longer (more than the measure's 1 m for a piece of the lanelet)",
+        "Lanker's overlaps, and a five-lane connecting road of an intersection (lanelets 3667, 3665, 3606, 3608, 3610) whose ends lie on a curve (no strip narrower than 1.46 m holds them): a lane section ends on one straight cross-section, which must cover every end, so the outer lanes read back up to 1.6 m longer (more than the measure's 1 m for a piece of the lanelet); intersection lanelets are not cut (a junction's connecting road would become a chain of roads inside the junction)",
     ),
 ];
 
