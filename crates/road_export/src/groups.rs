@@ -47,7 +47,7 @@ type Nb = Option<(usize, bool)>;
 
 /// How far apart (m) the ends of a shared bound may be along the road (one lanelet a little
 /// longer than its neighbour: the section's cross-section covers both).
-const SHARED_ENDS: f64 = 0.5;
+pub(crate) const SHARED_ENDS: f64 = 0.5;
 
 /// The polyline with its end segments extended by `by` m.
 fn extended(line: &[V2], by: f64) -> Vec<V2> {

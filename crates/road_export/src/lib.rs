@@ -1,8 +1,9 @@
 //! `road_export` — a CommonRoad lanelet network as an OpenDRIVE 1.8 road network (it knows
 //! nothing of OpenSCENARIO).
 //!
-//! Lanelets side by side that share their bounds become the lanes of one lane section
-//! (`groups`); each section gets a reference line along its middle, perpendicular to its
+//! A lanelet beside a shorter neighbour is first cut where the neighbour starts or ends
+//! (`cuts`). Lanelets side by side that share their bounds become the lanes of one lane
+//! section (`groups`); each section gets a reference line along its middle, perpendicular to its
 //! first and last cross-section (`reference`, `section`), and every lane border is written as
 //! cubic offsets from it, fitted to the lanelet bounds within [`Options::tolerance`]
 //! (`offsets`; widths and the lane offset are differences of fitted borders). Sections become
@@ -34,6 +35,7 @@
 
 #![cfg_attr(not(test), deny(clippy::print_stdout, clippy::print_stderr))]
 
+mod cuts;
 mod groups;
 mod lane_kind;
 mod lanelets;
@@ -95,6 +97,8 @@ pub fn export(network: &LaneletNetwork, options: &Options) -> Result<RoadExport,
         return Err(Error::TooLarge { what: "the number of points of a bound", got: most, max: MAX_BOUND_POINTS });
     }
     let tol = options.tolerance.filter(|t| t.is_finite() && *t > 0.0).unwrap_or(DEFAULT_TOLERANCE).max(1e-4);
+    let cut = cuts::cut(network);
+    let network = cut.as_ref().map_or(network, |c| &c.network);
     let mut warnings = Vec::new();
     let prep = lanelets::prepare_all(network, &mut warnings);
     let groups = groups::group(network, &prep, &mut warnings);
@@ -113,8 +117,12 @@ pub fn export(network: &LaneletNetwork, options: &Options) -> Result<RoadExport,
         }
         doc.roads.push(built.road);
     }
+    let rename = |w: Vec<Warning>| match &cut {
+        Some(c) => c.rename(w),
+        None => w,
+    };
     if doc.roads.is_empty() {
-        return Err(Error::NoRoads(warnings));
+        return Err(Error::NoRoads(rename(warnings)));
     }
     let first_junction = doc.roads.len() as u64 + 1;
     doc.junctions = topology::link(network, &mut doc.roads, &placed, first_junction, &mut warnings);
@@ -124,5 +132,5 @@ pub fn export(network: &LaneletNetwork, options: &Options) -> Result<RoadExport,
     let mut roads_out = doc.roads.clone();
     signals::add_signals(&places, &mut roads_out, &mut next_id, &mut warnings);
     doc.roads = roads_out;
-    Ok(RoadExport { xodr: write::write(&doc), warnings })
+    Ok(RoadExport { xodr: write::write(&doc), warnings: rename(warnings) })
 }

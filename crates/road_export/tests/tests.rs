@@ -4,6 +4,7 @@ mod common;
 
 mod esmini_load;
 mod hostile;
+mod lane_sections;
 mod layout;
 mod map_round_trip;
 mod schema;
