@@ -6,12 +6,21 @@ use crate::sim::Sim;
 use openscenario::Position;
 
 impl<'a> Sim<'a> {
-    pub(super) fn teleport(&mut self, slot: usize, e: usize, pos: &Position) {
+    /// Whether the entity was moved (false: esmini ignores the action, see below).
+    pub(super) fn teleport(&mut self, slot: usize, e: usize, pos: &Position) -> bool {
         // esmini's TeleportAction::Start does nothing while a controller in override mode owns
         // the entity's lateral or longitudinal motion (controllers/mod.rs `overrides_motion`)
         if self.overrides_motion(e) {
             self.warn_action(slot, "TeleportAction: ignored, as esmini does, while the entity's controller in override mode drives it".into());
-            return;
+            return false;
+        }
+        // Nor does it move a trailer that is being towed ("position controlled by tow
+        // vehicle"): a trailer connected in the Init before its own TeleportAction stays where
+        // it was made, at the origin, and the first pull puts it on the line from the hitch
+        // towards there (ScenarioEngine::step's trailer update).
+        if self.is_towed(e) {
+            self.warn_action(slot, "TeleportAction: ignored, as esmini does, while the trailer is towed (its tow vehicle places it)".into());
+            return false;
         }
         if let Some(note) = crate::route_position::esmini_deviation(pos, self.net, &self.entities) {
             self.warn_action(slot, format!("TeleportAction: {note}"));
@@ -21,11 +30,11 @@ impl<'a> Sim<'a> {
             Ok(p) => p,
             Err(msg) => {
                 self.warn_action(slot, format!("TeleportAction: {msg}; the entity stays where it is"));
-                return;
+                return false;
             }
         };
         let net = self.net;
-        let Some(en) = self.entities.get_mut(e) else { return };
+        let Some(en) = self.entities.get_mut(e) else { return false };
         en.at_road_end = false;
         match (placement.lane, net) {
             (Some(lp), Some(net)) => {
@@ -42,5 +51,6 @@ impl<'a> Sim<'a> {
         // esmini records a teleported entity where it was put: it does not move on this step.
         en.moved_by_action = true;
         en.teleported = true;
+        true
     }
 }
