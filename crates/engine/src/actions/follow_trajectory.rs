@@ -12,7 +12,6 @@ use state::FollowTrajectoryRt;
 
 use super::state::ActionRt;
 use crate::dynamics::SMALL;
-use crate::positions::resolve;
 use crate::sim::Sim;
 use openscenario::{FollowingMode, ReferenceContext, TimeReference, Trajectory};
 use trajectory::{Interpolation, Path, Pose, TimeDomain, TimeMapping};
@@ -100,17 +99,11 @@ fn polyline_s_at_time(v: &[(f64, f64, f64, f64)], length: f64, t: f64) -> f64 {
     (s0 + v0 * tau + 0.5 * a * tau * tau).clamp(0.0, length)
 }
 
-/// The world pose of a position resolved for a trajectory vertex.
-pub(crate) fn vertex_pose(pos: &openscenario::Position, net: Option<&opendrive::RoadNetwork>, entities: &[crate::entities::Entity]) -> Option<Pose> {
-    let p = resolve(pos, net, entities).ok()?;
-    Some(Pose::new(p.x, p.y, p.z.unwrap_or(0.0), p.h))
-}
-
 /// Build a trajectory's path from the current state of the run.
 pub(crate) fn build_path(sim: &Sim, traj: &Trajectory, current: Pose) -> Result<Path, String> {
     let net = sim.net;
     let entities = &sim.entities;
-    let resolver = |p: &openscenario::Position| vertex_pose(p, net, entities);
+    let resolver = |p: &openscenario::Position| crate::trajectory_position::vertex_pose(p, net, entities);
     Path::from_trajectory(traj, current, &resolver).map_err(|e| e.to_string())
 }
 

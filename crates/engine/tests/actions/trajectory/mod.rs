@@ -1,5 +1,6 @@
 //! FollowTrajectoryAction, forwards and backwards.
 
 mod follow;
+mod nurbs_headings;
 mod reverse;
 mod timing;
