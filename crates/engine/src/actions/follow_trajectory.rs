@@ -20,6 +20,10 @@ impl FollowTrajectoryRt {
     fn s_at_time(&self, t: f64) -> Option<f64> {
         match &self.vertices {
             Some(v) if !self.path.is_closed() => Some(polyline_s_at_time(v, self.path.length(), t)),
+            // esmini evaluates a clothoid (spline) at a time outside [start, end] at its end,
+            // saying "Requested time … outside range": an offset that puts the time before the
+            // first stamp parks the entity at the far end until the time comes in range.
+            _ if self.end_outside_times && self.path.time_range().is_some_and(|(a, b)| !(t >= a && t <= b)) => Some(self.path.length()),
             _ => self.path.s_at_time(t),
         }
     }
@@ -191,7 +195,18 @@ impl<'a> Sim<'a> {
         }
 
         let clock = esmini_clock(self.time_origin(), self.dt, self.time);
-        ActionRt::FollowTrajectory(Box::new(FollowTrajectoryRt { path, s, timing, time, clock, vertices, heading_sign: speed_sign, elevated: elevated(traj) }))
+        let end_outside_times = matches!(traj.shape, openscenario::Shape::Clothoid { .. } | openscenario::Shape::ClothoidSpline { .. });
+        ActionRt::FollowTrajectory(Box::new(FollowTrajectoryRt {
+            path,
+            s,
+            timing,
+            time,
+            clock,
+            vertices,
+            heading_sign: speed_sign,
+            elevated: elevated(traj),
+            end_outside_times,
+        }))
     }
 
     pub(super) fn step_follow_trajectory(&mut self, e: usize, f: &mut FollowTrajectoryRt) -> bool {

@@ -3,4 +3,5 @@
 mod follow;
 mod nurbs_headings;
 mod reverse;
+mod time_out_of_range;
 mod timing;
