@@ -25,6 +25,26 @@ impl<'a> Sim<'a> {
         if let Some(note) = crate::route_position::esmini_deviation(pos, self.net, &self.entities) {
             self.warn_action(slot, format!("TeleportAction: {note}"));
         }
+        // A RoutePosition FromCurrentEntity (esmini 3.6: "not implemented"), or a road-relative
+        // position from an entity so placed, leaves esmini's position unset: the origin,
+        // heading 0, on no road (TeleportAction::Start copies it as it is).
+        if self.unset_position(pos) {
+            if let Some(en) = self.entities.get_mut(e) {
+                en.x = 0.0;
+                en.y = 0.0;
+                en.z = 0.0;
+                en.h = 0.0;
+                en.lane = None;
+                en.on_road = false;
+                en.roadless = true;
+                // esmini's first move from there (frame 0 for the Init) already fails at the
+                // road's end: the next step stops the entity.
+                en.at_road_end = true;
+                en.moved_by_action = true;
+                en.teleported = true;
+            }
+            return true;
+        }
         let own_route = self.entities.get(e).and_then(|en| en.route.clone());
         let placement = match resolve_with_route(pos, self.net, &self.entities, own_route.as_deref(), Some(&mut self.random)) {
             Ok(p) => p,
@@ -36,6 +56,7 @@ impl<'a> Sim<'a> {
         let net = self.net;
         let Some(en) = self.entities.get_mut(e) else { return false };
         en.at_road_end = false;
+        en.roadless = false;
         match (placement.lane, net) {
             (Some(lp), Some(net)) => {
                 if let Some(pose) = lp.pose(net) {
@@ -52,5 +73,15 @@ impl<'a> Sim<'a> {
         en.moved_by_action = true;
         en.teleported = true;
         true
+    }
+
+    /// Whether esmini leaves `pos` unset: a RoutePosition FromCurrentEntity, or a position
+    /// measured along the road from an entity that has no road.
+    fn unset_position(&self, pos: &Position) -> bool {
+        match pos {
+            Position::Route { in_route: openscenario::InRoutePosition::FromCurrentEntity { .. }, .. } => true,
+            Position::RelativeRoad { entity, .. } | Position::RelativeLane { entity, .. } => self.entities.iter().any(|en| &en.name == entity && en.roadless),
+            _ => false,
+        }
     }
 }
