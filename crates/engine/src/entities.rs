@@ -50,6 +50,10 @@ pub(crate) struct Entity {
     pub moved_by_action: bool,
     /// The last move ended at a road end with no continuation (position status).
     pub at_road_end: bool,
+    /// Put where esmini leaves a position it could not set (a RoutePosition FromCurrentEntity,
+    /// or a road-relative position from such an entity): at the origin without a road, where
+    /// its default controller cannot move it (motion.rs).
+    pub roadless: bool,
     /// The EndOfRoad state conditions see (updated from `at_road_end` after each step).
     pub end_of_road: bool,
     pub end_of_road_since: f64,
@@ -116,6 +120,7 @@ impl Entity {
             odometer: 0.0,
             moved_by_action: false,
             at_road_end: false,
+            roadless: false,
             end_of_road: false,
             end_of_road_since: 0.0,
             offroad_since: None,

@@ -29,6 +29,15 @@ impl<'a> Sim<'a> {
             if !en.active || en.outside || en.moved_by_action || en.speed.abs() <= SMALL {
                 continue;
             }
+            if en.roadless {
+                // esmini's position without a road: the move along it fails with the end-of-road
+                // status, and from the next step the entity is stopped (ScenarioEngine::step).
+                if en.at_road_end {
+                    en.speed = 0.0;
+                }
+                en.at_road_end = true;
+                continue;
+            }
             match (net, en.lane) {
                 (Some(net), Some(mut lp)) => {
                     // esmini's own move: a junction tie is decided by its generator.

@@ -17,7 +17,7 @@ pub(crate) fn trajectory_placement(
     net: Option<&RoadNetwork>,
     entities: &[Entity],
 ) -> Result<Placement, PositionError> {
-    let resolver = |p: &openscenario::Position| resolve(p, net, entities).ok().map(|pl| Pose::new(pl.x, pl.y, pl.z.unwrap_or(0.0), pl.h));
+    let resolver = |p: &openscenario::Position| vertex_pose(p, net, entities);
     let path = crate::position_cache::path(traj, || Path::from_trajectory(traj, Pose::default(), &resolver).map_err(|e| e.to_string()));
     let path = path.map_err(|e| format!("trajectory `{}`: {e}", traj.name))?;
     let p = path.pose_at(s);
@@ -28,4 +28,19 @@ pub(crate) fn trajectory_placement(
         _ => p.heading,
     };
     Ok(Placement { x, y, z: None, h, lane: None })
+}
+
+/// The world pose of a position resolved for a trajectory's vertex or control point. A world
+/// position without a heading faces the road's reference direction where it lies, plus the
+/// lane's drift (esmini's OSCPositionWorld sets such a heading relative to the road, at 0:
+/// Position::SetInertiaPosMode, EvaluateHPR); off the roads, 0.
+pub(crate) fn vertex_pose(pos: &openscenario::Position, net: Option<&RoadNetwork>, entities: &[Entity]) -> Option<Pose> {
+    let p = resolve(pos, net, entities).ok()?;
+    let h = match (pos, net) {
+        (openscenario::Position::World { h: None, .. }, Some(net)) => {
+            crate::roads::locate::world_to_lane(net, p.x, p.y, None).map_or(p.h, |lp| lp.heading + crate::positions::lane_drift(net, lp.road, lp.lane_id, lp.s))
+        }
+        _ => p.h,
+    };
+    Some(Pose::new(p.x, p.y, p.z.unwrap_or(0.0), h))
 }

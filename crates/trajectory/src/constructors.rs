@@ -327,8 +327,21 @@ impl Path {
     }
 
     /// A NURBS curve: control points (pose, weight, optional time), knots. Only x, y, z of
-    /// the poses count (esmini ignores control-point orientations too).
+    /// the poses count: headings follow the curve.
     pub fn nurbs(order: u32, control_points: &[(Pose, Option<f64>, Option<f64>)], knots: &[f64], closed: bool) -> Result<Path, Error> {
+        Path::nurbs_with_headings(order, control_points, knots, closed, false)
+    }
+
+    /// [`Path::nurbs`]; when `first_gives_heading` (the first control point's position gives a
+    /// heading of its own) the headings are blended from the poses' headings as esmini does
+    /// (NurbsShape::EvaluateInternal) rather than following the curve.
+    pub fn nurbs_with_headings(
+        order: u32,
+        control_points: &[(Pose, Option<f64>, Option<f64>)],
+        knots: &[f64],
+        closed: bool,
+        first_gives_heading: bool,
+    ) -> Result<Path, Error> {
         const SHAPE: &str = "NURBS";
         check_count(SHAPE, "control points", control_points.len(), 2)?;
         check_count(SHAPE, "knots", knots.len(), 0)?;
@@ -342,7 +355,7 @@ impl Path {
             pts.push([p.x, p.y, p.z, w.unwrap_or(1.0)]);
         }
         let curve = Nurbs::new(order, pts, knots.to_vec())?;
-        let np = NurbsPath::new(curve)?;
+        let np = NurbsPath::new(curve, first_gives_heading.then(|| control_points.iter().map(|c| c.0.heading).collect()))?;
         let length = np.length();
         check_length(SHAPE, length)?;
         let times: Vec<Option<f64>> = control_points.iter().map(|c| c.2).collect();

@@ -62,7 +62,8 @@ impl Path {
                 for (i, c) in control_points.iter().take(crate::constructors::MAX_ITEMS + 1).enumerate() {
                     cps.push((resolve("NURBS", format!("control point {i}"), resolver, &c.position)?, c.weight, c.time));
                 }
-                Path::nurbs(*order, &cps, knots, closed)
+                let first_gives_heading = control_points.first().is_some_and(|c| gives_heading(&c.position));
+                Path::nurbs_with_headings(*order, &cps, knots, closed, first_gives_heading)
             }
         }
     }

@@ -4,6 +4,8 @@
 //! between two samples, and the heading is interpolated between the samples' headings.
 //! Matching the coarse sampling matters: the times of the control points are spread over
 //! the samples, so a finer sampling would move the entity differently in time.
+//! When the first control point gives a heading, esmini takes every heading from the control
+//! points' headings instead (NurbsShape::EvaluateInternal): see [`NurbsPath::blended_heading`].
 
 use crate::angle;
 use crate::error::Error;
@@ -17,6 +19,8 @@ const TANGENT_DU: f64 = 0.001;
 /// Points closer than this count as coincident (esmini's SMALL_NUMBER).
 const SMALL: f64 = 1e-10;
 const MAX_SAMPLES: usize = 200_000;
+/// Basis values at or below this do not count in the heading blend (esmini's SMALL_NUMBER).
+const ESMINI_SMALL: f64 = 1e-6;
 
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct NurbsPath {
@@ -26,10 +30,15 @@ pub(crate) struct NurbsPath {
     /// Parameter where each sample's basis values were taken for the time rule (the tangent
     /// probe's parameter, as esmini reads the basis values left by its last evaluation).
     probe_u: Vec<f64>,
+    /// Every control point's heading, when the first one gives its own (esmini then blends
+    /// them instead of following the curve's direction).
+    cp_headings: Option<Vec<f64>>,
 }
 
 impl NurbsPath {
-    pub(crate) fn new(curve: Nurbs) -> Result<NurbsPath, Error> {
+    /// `cp_headings`: each control point's heading, to be blended when the first control point
+    /// gives a heading of its own (None: headings follow the curve).
+    pub(crate) fn new(curve: Nurbs, cp_headings: Option<Vec<f64>>) -> Result<NurbsPath, Error> {
         let pts = curve.control_points();
         let polygon: f64 = pts
             .windows(2)
@@ -93,7 +102,7 @@ impl NurbsPath {
                 samples[k].2 = samples[k + 1].2;
             }
         }
-        Ok(NurbsPath { curve, samples, probe_u })
+        Ok(NurbsPath { curve, samples, probe_u, cp_headings })
     }
 
     pub(crate) fn length(&self) -> f64 {
@@ -111,7 +120,33 @@ impl NurbsPath {
         let (lo, hi) = self.curve.domain();
         let p = self.curve.point((u0 + a * (u1 - u0)).clamp(lo, (hi - SMALL).max(lo)));
         let turn = angle::diff(h1, h0);
-        PathPoint { s, x: p[0], y: p[1], z: p[2], heading: angle::normalize(h0 + a * turn), curvature: if ds > 0.0 { turn / ds } else { 0.0 } }
+        let u = (u0 + a * (u1 - u0)).clamp(lo, (hi - SMALL).max(lo));
+        let heading = match &self.cp_headings {
+            Some(hs) => self.blended_heading(hs, u),
+            None => angle::normalize(h0 + a * turn),
+        };
+        PathPoint { s, x: p[0], y: p[1], z: p[2], heading, curvature: if ds > 0.0 { turn / ds } else { 0.0 } }
+    }
+
+    /// esmini's heading where the first control point gives one (NurbsShape::EvaluateInternal):
+    /// starting from 0, each control point whose basis value at `u` counts pulls the heading
+    /// towards its own by its share of the rational weight (the smallest angle), one after the
+    /// other in order. A control point without a heading of its own brings the one its position
+    /// has (esmini: the road's direction there).
+    fn blended_heading(&self, hs: &[f64], u: f64) -> f64 {
+        let pts = self.curve.control_points();
+        let basis = self.curve.basis(u);
+        let total: f64 = basis.iter().zip(pts).map(|(b, p)| b * p[3]).sum();
+        if !(total.is_finite() && total > 0.0) {
+            return 0.0;
+        }
+        let mut h = 0.0;
+        for ((b, p), hi) in basis.iter().zip(pts).zip(hs) {
+            if *b > ESMINI_SMALL {
+                h += b * p[3] / total * angle::diff(*hi, h);
+            }
+        }
+        angle::normalize(h)
     }
 
     /// (s, time) at every sample, esmini's rule: each control point's time belongs to the

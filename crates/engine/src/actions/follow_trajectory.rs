@@ -12,7 +12,6 @@ use state::FollowTrajectoryRt;
 
 use super::state::ActionRt;
 use crate::dynamics::SMALL;
-use crate::positions::resolve;
 use crate::sim::Sim;
 use openscenario::{FollowingMode, ReferenceContext, TimeReference, Trajectory};
 use trajectory::{Interpolation, Path, Pose, TimeDomain, TimeMapping};
@@ -21,6 +20,10 @@ impl FollowTrajectoryRt {
     fn s_at_time(&self, t: f64) -> Option<f64> {
         match &self.vertices {
             Some(v) if !self.path.is_closed() => Some(polyline_s_at_time(v, self.path.length(), t)),
+            // esmini evaluates a clothoid (spline) at a time outside [start, end] at its end,
+            // saying "Requested time … outside range": an offset that puts the time before the
+            // first stamp parks the entity at the far end until the time comes in range.
+            _ if self.end_outside_times && self.path.time_range().is_some_and(|(a, b)| !(t >= a && t <= b)) => Some(self.path.length()),
             _ => self.path.s_at_time(t),
         }
     }
@@ -100,17 +103,11 @@ fn polyline_s_at_time(v: &[(f64, f64, f64, f64)], length: f64, t: f64) -> f64 {
     (s0 + v0 * tau + 0.5 * a * tau * tau).clamp(0.0, length)
 }
 
-/// The world pose of a position resolved for a trajectory vertex.
-pub(crate) fn vertex_pose(pos: &openscenario::Position, net: Option<&opendrive::RoadNetwork>, entities: &[crate::entities::Entity]) -> Option<Pose> {
-    let p = resolve(pos, net, entities).ok()?;
-    Some(Pose::new(p.x, p.y, p.z.unwrap_or(0.0), p.h))
-}
-
 /// Build a trajectory's path from the current state of the run.
 pub(crate) fn build_path(sim: &Sim, traj: &Trajectory, current: Pose) -> Result<Path, String> {
     let net = sim.net;
     let entities = &sim.entities;
-    let resolver = |p: &openscenario::Position| vertex_pose(p, net, entities);
+    let resolver = |p: &openscenario::Position| crate::trajectory_position::vertex_pose(p, net, entities);
     Path::from_trajectory(traj, current, &resolver).map_err(|e| e.to_string())
 }
 
@@ -198,7 +195,18 @@ impl<'a> Sim<'a> {
         }
 
         let clock = esmini_clock(self.time_origin(), self.dt, self.time);
-        ActionRt::FollowTrajectory(Box::new(FollowTrajectoryRt { path, s, timing, time, clock, vertices, heading_sign: speed_sign, elevated: elevated(traj) }))
+        let end_outside_times = matches!(traj.shape, openscenario::Shape::Clothoid { .. } | openscenario::Shape::ClothoidSpline { .. });
+        ActionRt::FollowTrajectory(Box::new(FollowTrajectoryRt {
+            path,
+            s,
+            timing,
+            time,
+            clock,
+            vertices,
+            heading_sign: speed_sign,
+            elevated: elevated(traj),
+            end_outside_times,
+        }))
     }
 
     pub(super) fn step_follow_trajectory(&mut self, e: usize, f: &mut FollowTrajectoryRt) -> bool {

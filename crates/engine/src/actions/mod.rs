@@ -164,8 +164,11 @@ impl<'a> Sim<'a> {
                 self.start_follow_trajectory(slot, e, trajectory, time_reference, *following_mode, *initial_distance_offset)
             }
             PrivateAction::Teleport(pos) => {
-                self.teleport(slot, e, pos);
-                self.align_chain(e);
+                // esmini aligns the trailers behind a teleported tow vehicle, not when the
+                // teleport was ignored (TeleportAction::Start)
+                if self.teleport(slot, e, pos) {
+                    self.align_chain(e);
+                }
                 ActionRt::Done
             }
             PrivateAction::Visibility { graphics, .. } => {

@@ -58,7 +58,11 @@ impl<'a> ActionSlot<'a> {
                 | PrivateAction::SpeedProfile { .. }
                 | PrivateAction::LongitudinalDistance { .. }
                 | PrivateAction::Synchronize { .. } => LONG,
-                PrivateAction::LaneChange { .. } | PrivateAction::LaneOffset { .. } | PrivateAction::LateralDistance { .. } => LAT,
+                PrivateAction::LaneChange { .. } | PrivateAction::LaneOffset { .. } => LAT,
+                // esmini 3.6's LatDistanceAction passes the domain index ControlDomains::DOMAIN_LAT
+                // (1) where a mask is wanted, and mask 1 is DOMAIN_MASK_LONG: starting one ends a
+                // running speed action of the entity, not its lane change (Event::Start).
+                PrivateAction::LateralDistance { .. } => LONG,
                 // Without timing the speed stays with the longitudinal actions (esmini runs a
                 // SpeedProfileAction alongside such a trajectory).
                 PrivateAction::FollowTrajectory { time_reference: openscenario::TimeReference::None, .. } => LAT,

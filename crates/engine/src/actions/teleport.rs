@@ -6,27 +6,57 @@ use crate::sim::Sim;
 use openscenario::Position;
 
 impl<'a> Sim<'a> {
-    pub(super) fn teleport(&mut self, slot: usize, e: usize, pos: &Position) {
+    /// Whether the entity was moved (false: esmini ignores the action, see below).
+    pub(super) fn teleport(&mut self, slot: usize, e: usize, pos: &Position) -> bool {
         // esmini's TeleportAction::Start does nothing while a controller in override mode owns
         // the entity's lateral or longitudinal motion (controllers/mod.rs `overrides_motion`)
         if self.overrides_motion(e) {
             self.warn_action(slot, "TeleportAction: ignored, as esmini does, while the entity's controller in override mode drives it".into());
-            return;
+            return false;
+        }
+        // Nor does it move a trailer that is being towed ("position controlled by tow
+        // vehicle"): a trailer connected in the Init before its own TeleportAction stays where
+        // it was made, at the origin, and the first pull puts it on the line from the hitch
+        // towards there (ScenarioEngine::step's trailer update).
+        if self.is_towed(e) {
+            self.warn_action(slot, "TeleportAction: ignored, as esmini does, while the trailer is towed (its tow vehicle places it)".into());
+            return false;
         }
         if let Some(note) = crate::route_position::esmini_deviation(pos, self.net, &self.entities) {
             self.warn_action(slot, format!("TeleportAction: {note}"));
+        }
+        // A RoutePosition FromCurrentEntity (esmini 3.6: "not implemented"), or a road-relative
+        // position from an entity so placed, leaves esmini's position unset: the origin,
+        // heading 0, on no road (TeleportAction::Start copies it as it is).
+        if self.unset_position(pos) {
+            if let Some(en) = self.entities.get_mut(e) {
+                en.x = 0.0;
+                en.y = 0.0;
+                en.z = 0.0;
+                en.h = 0.0;
+                en.lane = None;
+                en.on_road = false;
+                en.roadless = true;
+                // esmini's first move from there (frame 0 for the Init) already fails at the
+                // road's end: the next step stops the entity.
+                en.at_road_end = true;
+                en.moved_by_action = true;
+                en.teleported = true;
+            }
+            return true;
         }
         let own_route = self.entities.get(e).and_then(|en| en.route.clone());
         let placement = match resolve_with_route(pos, self.net, &self.entities, own_route.as_deref(), Some(&mut self.random)) {
             Ok(p) => p,
             Err(msg) => {
                 self.warn_action(slot, format!("TeleportAction: {msg}; the entity stays where it is"));
-                return;
+                return false;
             }
         };
         let net = self.net;
-        let Some(en) = self.entities.get_mut(e) else { return };
+        let Some(en) = self.entities.get_mut(e) else { return false };
         en.at_road_end = false;
+        en.roadless = false;
         match (placement.lane, net) {
             (Some(lp), Some(net)) => {
                 if let Some(pose) = lp.pose(net) {
@@ -42,5 +72,16 @@ impl<'a> Sim<'a> {
         // esmini records a teleported entity where it was put: it does not move on this step.
         en.moved_by_action = true;
         en.teleported = true;
+        true
+    }
+
+    /// Whether esmini leaves `pos` unset: a RoutePosition FromCurrentEntity, or a position
+    /// measured along the road from an entity that has no road.
+    fn unset_position(&self, pos: &Position) -> bool {
+        match pos {
+            Position::Route { in_route: openscenario::InRoutePosition::FromCurrentEntity { .. }, .. } => true,
+            Position::RelativeRoad { entity, .. } | Position::RelativeLane { entity, .. } => self.entities.iter().any(|en| &en.name == entity && en.roadless),
+            _ => false,
+        }
     }
 }

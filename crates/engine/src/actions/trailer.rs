@@ -97,7 +97,7 @@ impl<'a> Sim<'a> {
         }
     }
 
-    fn is_towed(&self, e: usize) -> bool {
+    pub(crate) fn is_towed(&self, e: usize) -> bool {
         self.trailers.links.contains(&Some(e))
     }
 

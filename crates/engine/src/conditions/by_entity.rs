@@ -46,6 +46,7 @@ impl<'a> Sim<'a> {
             return self.warn_once(c, format!("{} is not supported; it never becomes true", cond.element_name()));
         }
         let mut result = false;
+        let sticky = matches!(cond, C::ReachPosition { .. } | C::EndOfRoad { .. } | C::Collision { .. });
         c.hits.clear();
         let exists = |s: &Self, i: usize| s.entities.get(i).is_some_and(|e| e.active);
         for i in 0..c.triggering.len() {
@@ -60,13 +61,17 @@ impl<'a> Sim<'a> {
                 continue;
             }
             let r = self.check_one(idx, c.other, point, cond);
-            result = r;
-            if r {
+            // esmini's TrigByReachPosition, TrigByEndOfRoad and TrigByCollision only ever set
+            // their result to true inside the loop over the triggering entities: once one
+            // entity meets the condition the result stays true, so with the rule `all` the
+            // first entity checked decides, and the later ones count as triggering too.
+            result = if sticky { result || r } else { r };
+            if result {
                 c.hits.push(idx);
             }
             match rule {
-                TriggeringEntitiesRule::Any if r => break,
-                TriggeringEntitiesRule::All if !r => break,
+                TriggeringEntitiesRule::Any if result => break,
+                TriggeringEntitiesRule::All if !result => break,
                 _ => {}
             }
         }

@@ -1,6 +1,7 @@
 //! Trailers: a trailer named by its tow vehicle's model (TrailerRef) or connected by
 //! ConnectTrailerAction is pulled so that its coupler sits on the tow vehicle's hitch; checked on
-//! a straight road and against the closed-form steady state of a constant-radius turn.
+//! a straight road and against the closed-form steady state of a constant-radius turn; a towed
+//! trailer ignores TeleportActions (checked against esmini on a fixture).
 
 use crate::common::*;
 
@@ -133,4 +134,20 @@ fn connect_puts_the_coupler_on_the_hitch_and_disconnect_leaves_the_trailer_stand
     let (a, b) = (at(&run, "Trailer", 3.5), at(&run, "Trailer", 4.5));
     assert!(close(a.x, b.x, 1e-12) && close(b.speed, 0.0, 1e-12));
     assert!(at(&run, "Car", 4.5).x > at(&run, "Car", 3.5).x + 1.9);
+}
+
+#[test]
+fn a_towed_trailer_ignores_teleport_actions_and_is_pulled_from_where_it_was_made() {
+    // esmini's TeleportAction::Start leaves a towed trailer alone ("position controlled by tow
+    // vehicle"). TrailerA is connected to CarA in the Init before its own TeleportAction, so it
+    // is still at the origin when the first pull puts its coupler on the hitch, on the line
+    // from the hitch towards the origin; the story's teleport at 2 s changes nothing. TrailerB,
+    // teleported before its connection, is pulled straight (fixture
+    // trailer_teleported_while_towed.xosc; the numbers are esmini 3.6.0's run of it).
+    let run = crate::common::oracle::run_fixture_scenario("trailer_teleported_while_towed.xosc", 20.0);
+    crate::common::oracle::assert_esmini_pose_at(&run, "TrailerA", 0.0, 95.550510, -1.692443, 6.265475);
+    crate::common::oracle::assert_esmini_pose_at(&run, "TrailerA", 2.5, 120.55, -1.749971, 6.283176);
+    let b = at(&run, "TrailerB", 2.5);
+    assert!(close(b.x, 204.45, 1e-9) && close(b.y, 1.75, 1e-9), "TrailerB at ({}, {})", b.x, b.y);
+    crate::common::oracle::assert_matches_esmini("trailer_teleported_while_towed.xosc", &run, 1e-3);
 }

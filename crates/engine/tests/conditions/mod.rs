@@ -6,3 +6,4 @@ mod basic;
 mod clearance_across_roads;
 mod clearance_offroad_headway;
 mod directed_speed;
+mod reach_position_all;

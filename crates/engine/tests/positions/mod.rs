@@ -7,3 +7,4 @@ mod relative_lane_ds;
 mod road_position_against_lane;
 mod road_position_heading;
 mod route_position_against_lane;
+mod route_position_from_current_entity;

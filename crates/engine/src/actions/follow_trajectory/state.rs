@@ -24,4 +24,7 @@ pub(crate) struct FollowTrajectoryRt {
     /// Some vertex gives its height (a z or dz): the entity pitches with the path rather than
     /// with the road (`attitude.rs`).
     pub elevated: bool,
+    /// A clothoid or clothoid spline: a trajectory time outside its stamps' range puts the
+    /// entity at the path's end (esmini's ClothoidShape and ClothoidSplineShape::Evaluate).
+    pub end_outside_times: bool,
 }

@@ -2,5 +2,6 @@
 
 mod across_junction;
 mod across_roads;
+mod domain;
 mod entity_frame;
 mod road_coordinates;

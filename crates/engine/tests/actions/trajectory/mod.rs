@@ -1,5 +1,7 @@
 //! FollowTrajectoryAction, forwards and backwards.
 
 mod follow;
+mod nurbs_headings;
 mod reverse;
+mod time_out_of_range;
 mod timing;
