@@ -58,7 +58,11 @@ impl<'a> ActionSlot<'a> {
                 | PrivateAction::SpeedProfile { .. }
                 | PrivateAction::LongitudinalDistance { .. }
                 | PrivateAction::Synchronize { .. } => LONG,
-                PrivateAction::LaneChange { .. } | PrivateAction::LaneOffset { .. } | PrivateAction::LateralDistance { .. } => LAT,
+                // esmini gives LatDistanceAction `ControlDomains::DOMAIN_LAT` where a mask is
+                // meant: its value 1 is DOMAIN_MASK_LONG, so a lateral distance action is ended
+                // by (and ends) the longitudinal actions, and runs beside a lane change.
+                PrivateAction::LateralDistance { .. } => LONG,
+                PrivateAction::LaneChange { .. } | PrivateAction::LaneOffset { .. } => LAT,
                 // Without timing the speed stays with the longitudinal actions (esmini runs a
                 // SpeedProfileAction alongside such a trajectory).
                 PrivateAction::FollowTrajectory { time_reference: openscenario::TimeReference::None, .. } => LAT,
