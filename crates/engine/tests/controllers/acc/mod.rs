@@ -8,3 +8,4 @@ mod override_moves;
 mod override_speed_action;
 mod override_speed_profile;
 mod override_teleport;
+mod override_timed_trajectory;
