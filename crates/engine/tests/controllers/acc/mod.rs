@@ -3,6 +3,7 @@
 
 mod first_frame;
 mod lookahead_same_road;
+mod override_add_entity;
 mod override_distance_actions;
 mod override_moves;
 mod override_speed_action;
