@@ -2,6 +2,7 @@
 //! its first frame and its look-ahead.
 
 mod first_frame;
+mod lane_change_off_driving_lanes;
 mod lookahead_same_road;
 mod override_add_entity;
 mod override_distance_actions;
