@@ -6,14 +6,10 @@
 //! values: esmini 3.6.0 on the same fixture (`--fixed_timestep 0.01`).
 
 use crate::common::*;
-use engine::Settings;
 
 #[test]
 fn an_additive_natural_driver_moves_on_top_of_the_default_controller() {
-    let loaded = openscenario::load(&fixtures().join("natural_driver_additive.xosc"), &Default::default()).expect("fixture scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("straight.xodr")).expect("fixture road loads").network;
-    let run = engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 5.0 }).expect("simulate");
+    let run = run_straight_fixture("natural_driver_additive.xosc", 5.0);
     assert!(run.warnings.is_empty(), "{:?}", run.warnings);
     // esmini's rows (x, speed): 10 + 0.1 (default controller at 10 m/s) + 0.100188 (the
     // driver at 10.0188 m/s) after the first step, and so on.

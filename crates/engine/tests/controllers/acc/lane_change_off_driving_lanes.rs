@@ -8,14 +8,10 @@
 //! 3.6.0 on the same fixture (`--fixed_timestep 0.01`).
 
 use crate::common::*;
-use engine::Settings;
 
 #[test]
 fn an_acc_follows_on_after_a_lane_change_onto_a_border_lane() {
-    let loaded = openscenario::load(&fixtures().join("acc_lane_change_off_driving_lanes.xosc"), &Default::default()).expect("fixture scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("bay.xodr")).expect("fixture road loads").network;
-    let run = engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 11.0 }).expect("simulate");
+    let run = run_fixture_on("acc_lane_change_off_driving_lanes.xosc", "bay.xodr", 11.0);
     assert!(run.warnings.is_empty(), "{:?}", run.warnings);
     // esmini's rows (x, y, speed): at the border lane's centre (y = −7.5), braking behind Target.
     for (t, x, v) in [(1.51, 24.802538, 10.0), (4.0, 49.478482, 9.112807), (6.0, 63.17521, 4.712664), (8.0, 69.37906, 1.821998), (10.0, 71.561962, 0.577567)] {

@@ -5,14 +5,10 @@
 //! Expected values: esmini 3.6.0 on the same fixture (`--fixed_timestep 0.01`).
 
 use crate::common::*;
-use engine::Settings;
 
 #[test]
 fn an_added_entity_is_placed_under_an_overriding_acc() {
-    let loaded = openscenario::load(&fixtures().join("acc_override_add_entity.xosc"), &Default::default()).expect("fixture scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("straight.xodr")).expect("fixture road loads").network;
-    let run = engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 6.0 }).expect("simulate");
+    let run = run_straight_fixture("acc_override_add_entity.xosc", 6.0);
     assert!(run.warnings.is_empty(), "{:?}", run.warnings);
     // esmini: last row before the deletion at 1.01 s (x 30.2), none until 2.02 s, where the
     // ACC has already moved it one step on from s = 300; then 20 m/s on.

@@ -10,14 +10,10 @@
 //! Expected values: esmini 3.6.0 on the same fixture (`--fixed_timestep 0.01`).
 
 use crate::common::*;
-use engine::Settings;
 
 #[test]
 fn distance_and_synchronize_actions_wait_under_an_overriding_acc() {
-    let loaded = openscenario::load(&fixtures().join("acc_override_distance_actions.xosc"), &Default::default()).expect("fixture scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("straight.xodr")).expect("fixture road loads").network;
-    let run = engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 6.0 }).expect("simulate");
+    let run = run_straight_fixture("acc_override_distance_actions.xosc", 6.0);
     assert!(run.warnings.is_empty(), "{:?}", run.warnings);
     // esmini: Ego stays in its lane centre at 20 m/s (x = 10 + 20 t), Other at 15 m/s
     // (x = 200 − 15 t), whatever the actions ask.

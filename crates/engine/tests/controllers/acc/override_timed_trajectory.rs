@@ -8,14 +8,10 @@
 //! right over 50 m. Expected values: esmini 3.6.0 on the same fixture (`--fixed_timestep 0.01`).
 
 use crate::common::*;
-use engine::Settings;
 
 #[test]
 fn a_timed_trajectory_is_followed_at_the_overriding_acc_speed() {
-    let loaded = openscenario::load(&fixtures().join("acc_override_timed_trajectory.xosc"), &Default::default()).expect("fixture scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("straight.xodr")).expect("fixture road loads").network;
-    let run = engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 13.0 }).expect("simulate");
+    let run = run_straight_fixture("acc_override_timed_trajectory.xosc", 13.0);
     assert!(run.warnings.is_empty(), "{:?}", run.warnings);
     // esmini's rows (x, y, speed): the ACC slows from 20 to the trajectory's 5 m/s at its 5 m/s²
     // while the entity advances along the path at that speed.
