@@ -70,9 +70,10 @@ impl<'a> Sim<'a> {
         }
         // AddEntityAction::Start moves the entity's position itself (no TeleportAction): no
         // "moved" mark, so the default controller drives it on in this very step, unless an
-        // action moved it while it was away (the mark stayed: run.rs).
+        // action moved it while it was away (the mark stayed: run.rs). Unlike a TeleportAction
+        // it places the entity also while a controller in override mode drives it.
         let held = self.entities.get(e).is_some_and(|en| en.moved_by_action);
-        self.teleport(slot, e, pos);
+        self.put_at(slot, e, pos);
         if let Some(en) = self.entities.get_mut(e) {
             en.moved_by_action = held;
             en.teleported = false;

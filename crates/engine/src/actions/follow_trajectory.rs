@@ -222,7 +222,12 @@ impl<'a> Sim<'a> {
         // zero counts as positive). Started reversing, it advances along the path while its
         // speed stays negative and comes back once the speed turns positive.
         let direction = if speed < 0.0 { -1.0 } else { 1.0 } * f.heading_sign;
-        match f.timing {
+        // esmini's Move: while a controller in override mode holds the longitudinal domain (an
+        // ACC in override mode), a timed trajectory is followed as an untimed one, at the
+        // entity's speed: its clock stands still (so its time stamps never end it) and the
+        // speed stays the controller's.
+        let speed_held = f.timing.is_some() && self.long_domain_overridden(e);
+        match f.timing.filter(|_| !speed_held) {
             None => {
                 f.s = move_s(&f.path, f.s, direction * speed.abs() * dt);
             }

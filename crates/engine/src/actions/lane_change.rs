@@ -39,6 +39,24 @@ pub(crate) fn relane(net: &RoadNetwork, lp: &mut LanePos) {
     }
 }
 
+/// Re-express `lp` in the lane esmini attaches the entity to after a lane change step without
+/// a route (LatLaneChangeAction::Step: Position::XYZ2TrackPos): the lane of the types the entity
+/// snaps to that contains its point, else the nearest (roads/lane_snap.rs) — a car steered onto
+/// a border lane or a sidewalk stays in the driving lane beside it, at a large offset, and the
+/// vehicles in that lane stay ahead of it.
+fn snap_lane(net: &RoadNetwork, lp: &mut LanePos, sidewalks: bool) {
+    let Some(road) = net.roads.get(lp.road) else { return };
+    let s = lp.s.clamp(0.0, road.length);
+    let Some(t) = lane_center_t(road, lp.lane_id, s).map(|c| c + lp.offset) else { return };
+    match crate::roads::lane_snap::snap(road, road.section_index_at(s), s, t, sidewalks) {
+        Some((lane_id, offset)) => {
+            lp.lane_id = lane_id;
+            lp.offset = offset;
+        }
+        None => relane(net, lp),
+    }
+}
+
 /// The lateral position (t) esmini gives the centre of a lane that does not exist: width 0 at
 /// the outer border of the last lane before it on its side (LaneSection::GetCenterOffset with
 /// GetWidth 0 for a missing lane). `None` for lane 0 or a road without sections.
@@ -192,8 +210,12 @@ impl<'a> Sim<'a> {
             l.internal.dir * lane_sign * angle
         };
         let mut attached = l.internal;
-        relane(net, &mut attached);
         let en = &mut self.entities[e];
+        if en.route.is_some() {
+            relane(net, &mut attached);
+        } else {
+            snap_lane(net, &mut attached, en.kind == crate::entities::EntityKind::Pedestrian);
+        }
         en.yaw_offset = yaw;
         en.set_lane_pos(net, attached);
         en.moved_by_action = true;

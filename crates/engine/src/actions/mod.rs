@@ -65,7 +65,8 @@ impl<'a> Sim<'a> {
         if !self.outside(e) {
             // a controller in override mode on the lateral domain holds the lateral actions
             // (controllers::lateral_overridden)
-            let lateral = matches!(p, PrivateAction::LaneChange { .. } | PrivateAction::LaneOffset { .. } | PrivateAction::LateralDistance { .. });
+            // (a LateralDistanceAction is held by the longitudinal one instead: `idles_under_override`)
+            let lateral = matches!(p, PrivateAction::LaneChange { .. } | PrivateAction::LaneOffset { .. });
             return if lateral && self.lateral_overridden(e) { Overridden::Idles } else { Overridden::Runs };
         }
         let fate = overridden(p);
@@ -73,6 +74,16 @@ impl<'a> Sim<'a> {
             self.warn_action(slot, note);
         }
         fate
+    }
+
+    /// Whether the running action `rt` on entity `e` waits this step because a controller in
+    /// override mode holds the entity's longitudinal domain: esmini's LongDistanceAction::Step,
+    /// SynchronizeAction::Step and LatDistanceAction::Step return at once then (the action
+    /// neither moves the entity nor ends by itself). LatDistanceAction tests
+    /// `ControlDomains::DOMAIN_LAT`, an index whose value 1 is the longitudinal *mask*, so a
+    /// lateral distance waits under an ACC in override mode and not under a lateral-only one.
+    fn idles_under_override(&self, e: usize, rt: &ActionRt) -> bool {
+        matches!(rt, ActionRt::LongDistance(_) | ActionRt::Synchronize(_) | ActionRt::LatDistance(_)) && self.long_domain_overridden(e)
     }
 
     /// Start action slot `slot`: running state, one instance per actor.
@@ -256,6 +267,10 @@ impl<'a> Sim<'a> {
                         continue;
                     }
                 }
+            }
+            if self.idles_under_override(e, &self.actions[slot].instances[k].rt) {
+                all_done = false;
+                continue;
             }
             let inst = &mut self.actions[slot].instances[k];
             // Take the state out so the entity can be borrowed mutably alongside it.

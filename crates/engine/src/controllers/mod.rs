@@ -154,6 +154,25 @@ impl<'a> Sim<'a> {
         }
     }
 
+    /// Whether any active controller of entity `e` holds its longitudinal domain in override mode:
+    /// esmini's `Object::IsControllerModeOnDomains(MODE_OVERRIDE, DOMAIN_MASK_LONG)` over every
+    /// controller type (an ACC/ALKS in override mode, Looming and NaturalDriver unless additive,
+    /// ALKS R157 activated longitudinally unless additive, an OffroadFollower, a FollowReference
+    /// following an entity, FollowRoute during its lane change, an entity driven from outside).
+    /// `longitudinal_overridden` is the narrower set a SpeedAction is ended under so far.
+    pub(crate) fn long_domain_overridden(&self, e: usize) -> bool {
+        if self.longitudinal_overridden(e) {
+            return true;
+        }
+        match self.controllers.get(e) {
+            Some(Some(ControllerRt::Looming(l))) => l.active && l.override_mode,
+            Some(Some(ControllerRt::NaturalDriver(n))) => n.active && n.override_mode,
+            Some(Some(ControllerRt::AlksR157(a))) => a.active && a.override_mode && a.longitudinal,
+            Some(Some(ControllerRt::FollowReference(f))) => f.active && !f.uses_ghost(),
+            _ => false,
+        }
+    }
+
     /// Whether an active controller of entity `e` in override mode owns its lateral or
     /// longitudinal motion: esmini's `Object::IsControllerModeOnAnyOfDomains(MODE_OVERRIDE,
     /// DOMAIN_MASK_LAT_AND_LONG)`, under which TeleportAction::Start does nothing. Each type's
@@ -176,9 +195,9 @@ impl<'a> Sim<'a> {
 
     /// Whether an active controller of entity `e` in override mode holds its lateral domain
     /// (esmini's `IsControllerModeOnDomains(MODE_OVERRIDE, DOMAIN_MASK_LAT)`), under which a
-    /// lane change, a lane offset or a lateral distance action does nothing and never ends
-    /// (LatLaneChangeAction, LatLaneOffsetAction, LatDistanceAction: Start and Step return
-    /// early): an ALKS R157 controller activated laterally in override mode, an
+    /// lane change or a lane offset does nothing and never ends (LatLaneChangeAction,
+    /// LatLaneOffsetAction: Start and Step return early; a lateral distance action waits on
+    /// the longitudinal domain instead, `long_domain_overridden`): an ALKS R157 controller activated laterally in override mode, an
     /// OffroadFollower, a FollowReference following another entity. (ACC, ALKS, Looming and
     /// NaturalDriver operate on the longitudinal domain only; a ghost follower's actions drive
     /// its ghost.)

@@ -114,17 +114,23 @@ impl<'a> Sim<'a> {
         });
     }
 
-    /// Before the default controller: start or step the injected lane change and keep the
-    /// default controller off the entity.
+    /// Before the default controller: start or step the injected lane change, and keep the
+    /// default controller off the entity in override mode or while that lane change steps. In
+    /// additive mode esmini's default controller moves the entity by its speed first and
+    /// ControllerNaturalDriver::Step moves it again (its MoveAlongS whatever the mode), so
+    /// it advances twice per step; a stepping LatLaneChangeAction marks the longitudinal
+    /// motion as done (its dirty bits), a starting one does not.
     pub(super) fn step_natural_driver_action(&mut self, e: usize, nd: &mut NaturalDriverRt, dt: f64) {
         let time = self.time - dt;
         nd.action_yaw = 0.0;
+        let mut stepped = false;
         if let Some((lane, name)) = nd.pending.take() {
             if let Some(rt) = self.nd_start_lane_change(e, lane, nd.p.lane_change_duration) {
                 self.nd_event(time, &name, "init", "start", "running");
                 nd.lane_change = Some((rt, name));
             }
         } else if let Some((mut lc, name)) = nd.lane_change.take() {
+            stepped = true;
             if self.step_lane_change(e, &mut lc) {
                 self.nd_event(time, &name, "running", "end", "complete");
             } else {
@@ -132,7 +138,7 @@ impl<'a> Sim<'a> {
                 nd.lane_change = Some((lc, name));
             }
         }
-        if let Some(en) = self.entities.get_mut(e) {
+        if let Some(en) = self.entities.get_mut(e).filter(|_| nd.override_mode || stepped) {
             en.moved_by_action = true;
         }
     }

@@ -8,5 +8,6 @@ mod follow_route;
 mod holds_lateral;
 mod looming;
 mod natural_driver;
+mod natural_driver_additive;
 mod offroad_follower;
 mod teleport_under_controllers;

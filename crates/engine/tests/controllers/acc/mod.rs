@@ -2,8 +2,12 @@
 //! its first frame and its look-ahead.
 
 mod first_frame;
+mod lane_change_off_driving_lanes;
 mod lookahead_same_road;
+mod override_add_entity;
+mod override_distance_actions;
 mod override_moves;
 mod override_speed_action;
 mod override_speed_profile;
 mod override_teleport;
+mod override_timed_trajectory;
