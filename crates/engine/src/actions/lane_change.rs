@@ -192,7 +192,11 @@ impl<'a> Sim<'a> {
             l.internal.dir * lane_sign * angle
         };
         let mut attached = l.internal;
-        relane(net, &mut attached);
+        // XYZ2TrackPos re-attaches the position to the lane it is in, unless it is locked on
+        // its lane (a looming controller's): then it stays in the target lane.
+        if !self.lane_locked(e) {
+            relane(net, &mut attached);
+        }
         let en = &mut self.entities[e];
         en.yaw_offset = yaw;
         en.set_lane_pos(net, attached);

@@ -57,7 +57,6 @@ impl LoomingRt {
             set_speed: num("setSpeed").unwrap_or(0.0),
             set_speed_given: num("setSpeed").is_some(),
             override_mode: c.properties.get("mode") != Some("additive"),
-            moved_by_action: false,
             vehicle: None,
             prev_near: 0.0,
             prev_far: 0.0,
@@ -112,6 +111,12 @@ fn lead_delta(
 }
 
 impl<'a> Sim<'a> {
+    /// Whether entity `e`'s position is locked on its lane: a looming controller has driven it
+    /// (ControllerLooming::Step sets the lock and nothing clears it).
+    pub(crate) fn lane_locked(&self, e: usize) -> bool {
+        matches!(self.controllers.get(e), Some(Some(super::state::ControllerRt::Looming(l))) if l.vehicle.is_some())
+    }
+
     /// Step every active LoomingController by `dt`, after the default controller (esmini steps
     /// its controllers then, in frame 0 too with dt = 0).
     pub(crate) fn step_looming_controllers(&mut self, dt: f64) {
@@ -229,9 +234,11 @@ impl<'a> Sim<'a> {
         }
         let net = self.net;
         let Some(en) = self.entities.get_mut(e) else { return };
-        if l.override_mode && !l.moved_by_action {
+        // ControllerLooming::Step places the entity where its vehicle drove whatever an action
+        // did this step: a lateral action (the controller leaves that domain to them) only
+        // changes the lane the position is locked on, which the near point then steers to.
+        if l.override_mode {
             if let Some(v) = l.vehicle.map(|v| v.car) {
-                // Position::SetInertiaPos with the lane locked
                 let before = en.lane;
                 // Locate it first on the road its lane leads to (esmini keeps the connecting
                 // road it is on where junction roads overlap).
@@ -239,7 +246,8 @@ impl<'a> Sim<'a> {
                     move_along_s(net, &mut lp, l.speed() * dt);
                     en.lane = Some(lp);
                 }
-                en.set_world(net, v.x, v.y, None, v.h);
+                // Position::SetLockOnLane(true), then SetInertiaPos.
+                en.set_world_lane_locked(net, v.x, v.y, v.h, before);
                 // ScenarioEngine::step reads the position's end-of-road status before it steps
                 // the controllers: what this move finds is seen in the next step.
                 en.at_road_end = l.end_of_road;

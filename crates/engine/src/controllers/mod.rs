@@ -17,6 +17,7 @@ pub(crate) mod follow_reference;
 pub(crate) mod follow_route;
 pub(crate) mod followers;
 pub(crate) mod kinematic_vehicle;
+pub(crate) mod lane_lock;
 pub(crate) mod lane_router;
 pub(crate) mod looming;
 pub(crate) mod natural_driver;
@@ -141,7 +142,8 @@ impl<'a> Sim<'a> {
 
     /// Whether a controller of entity `e` in override mode owns its longitudinal motion now
     /// (esmini's `Object::IsControllerModeOnDomains(MODE_OVERRIDE, DOMAIN_MASK_LONG)`): an
-    /// active ACC/ALKS in override mode, a FollowRoute controller during its lane change.
+    /// active ACC/ALKS or Looming in override mode, a FollowRoute controller during its lane
+    /// change.
     pub(crate) fn longitudinal_overridden(&self, e: usize) -> bool {
         if self.outside(e) {
             return true;
@@ -150,6 +152,9 @@ impl<'a> Sim<'a> {
             Some(Some(ControllerRt::Acc(a))) => a.overrides_longitudinal(),
             Some(Some(ControllerRt::FollowRoute(f))) => f.overrides_longitudinal(),
             Some(Some(ControllerRt::OffroadFollower(f))) => f.active,
+            // ControllerLooming operates on the longitudinal domain, in override mode unless
+            // its `mode` says additive.
+            Some(Some(ControllerRt::Looming(l))) => l.active && l.override_mode,
             _ => false,
         }
     }
@@ -226,9 +231,8 @@ impl<'a> Sim<'a> {
                 ControllerRt::FollowRoute(f) => self.hold_follower(e, f.holds_entity()),
                 // Steps after the default controller (`step_looming_controllers`).
                 ControllerRt::Looming(l) => {
-                    if l.active && self.entities.get(e).is_some_and(|en| en.active) {
-                        self.hold_for_override(e, &mut l.moved_by_action, l.override_mode);
-                    }
+                    let held = l.active && l.override_mode && self.entities.get(e).is_some_and(|en| en.active);
+                    self.hold_follower(e, held);
                 }
             }
             if let Some(slot) = self.controllers.get_mut(e) {
