@@ -117,6 +117,21 @@ impl<'a> Sim<'a> {
         matches!(self.controllers.get(e), Some(Some(super::state::ControllerRt::Looming(l))) if l.vehicle.is_some())
     }
 
+    /// Controller::Activate of a controller that aligns to the road on activation (the
+    /// looming one), asked for the lateral domain, operated or not: the entity turns to the
+    /// road's heading in its lane's driving direction (AlignToRoadHeading:
+    /// Position::GetHRoadInDrivingDirection), after ControllerLooming::Activate has set its
+    /// vehicle up with the heading it had.
+    pub(crate) fn align_to_road_heading(&mut self, e: usize) {
+        let Some(net) = self.net else { return };
+        let Some(en) = self.entities.get_mut(e) else { return };
+        let Some(lp) = en.lane else { return };
+        let (Some(road), Some(pose)) = (net.roads.get(lp.road), lp.pose(net)) else { return };
+        let against = !opendrive::drives_along_s(road.rule, lp.lane_id);
+        let h = pose.road_heading + if against { std::f64::consts::PI } else { 0.0 };
+        en.set_world(Some(net), en.x, en.y, Some(en.z), h);
+    }
+
     /// Step every active LoomingController by `dt`, after the default controller (esmini steps
     /// its controllers then, in frame 0 too with dt = 0).
     pub(crate) fn step_looming_controllers(&mut self, dt: f64) {

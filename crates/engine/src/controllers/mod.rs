@@ -130,6 +130,9 @@ impl<'a> Sim<'a> {
                 if let Some(en) = self.entities.get(e) {
                     l.activate(en, longitudinal);
                 }
+                if lateral {
+                    self.align_to_road_heading(e);
+                }
             }
             Some(Some(ControllerRt::OffroadFollower(f))) => {
                 if let Some(en) = self.entities.get(e) {

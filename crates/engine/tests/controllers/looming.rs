@@ -75,6 +75,24 @@ fn a_lane_change_only_moves_the_lane_the_looming_car_is_locked_on() {
     }
 }
 
+#[test]
+fn activated_laterally_it_turns_the_car_to_the_driving_direction_and_stays_inactive() {
+    // looming_lateral_activation.xosc: lane 1 drives against s; the car starts facing along s.
+    // esmini 3.6.0 turns it round on activation (Controller::Activate: AlignToRoadHeading); the
+    // default controller and the SpeedAction at 2 s (10 -> 30 m/s in 2 s) drive it.
+    let loaded = openscenario::load(&fixtures().join("looming_lateral_activation.xosc"), &Default::default()).expect("fixture scenario loads");
+    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
+    let net = opendrive::load(fixtures().join("straight.xodr")).expect("fixture road loads").network;
+    let r = engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 20.0 }).expect("simulate");
+    for (t, x, v) in [(0.0, 200.0, 10.0), (2.0, 180.0, 10.0), (3.0, 167.475, 15.0), (4.0, 149.95, 20.0), (8.0, 39.9, 30.0)] {
+        let s = at(&r, "Ego", t);
+        assert!(
+            close(s.x, x, 1e-3) && close(s.y, 1.75, 1e-6) && close(s.h, std::f64::consts::PI, 1e-6) && close(s.speed, v, 1e-6),
+            "at {t} s: {s:?}, esmini x {x} speed {v}"
+        );
+    }
+}
+
 fn corpus_run(name: &str) -> Option<Run> {
     let shared = std::env::var_os("OSC2CR_SHARED")
         .map(std::path::PathBuf::from)
