@@ -145,8 +145,8 @@ impl<'a> Sim<'a> {
 
     /// Whether a controller of entity `e` in override mode owns its longitudinal motion now
     /// (esmini's `Object::IsControllerModeOnDomains(MODE_OVERRIDE, DOMAIN_MASK_LONG)`): an
-    /// active ACC/ALKS or Looming in override mode, a FollowRoute controller during its lane
-    /// change.
+    /// active ACC/ALKS, Looming or ALKS R157 in override mode, a FollowRoute controller during
+    /// its lane change.
     pub(crate) fn longitudinal_overridden(&self, e: usize) -> bool {
         if self.outside(e) {
             return true;
@@ -158,6 +158,8 @@ impl<'a> Sim<'a> {
             // ControllerLooming operates on the longitudinal domain, in override mode unless
             // its `mode` says additive.
             Some(Some(ControllerRt::Looming(l))) => l.active && l.override_mode,
+            // ControllerALKS_R157SM operates on both domains (the Controller default).
+            Some(Some(ControllerRt::AlksR157(a))) => a.active && a.override_mode && a.longitudinal,
             _ => false,
         }
     }
