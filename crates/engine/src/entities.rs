@@ -153,7 +153,7 @@ impl Entity {
 
     /// The heading drift on lane position `lp` (see `lane_slope`); remembers a section where the
     /// lane runs parallel, so that the next steps there skip the question.
-    fn drift(&mut self, net: &RoadNetwork, lp: &LanePos) -> f64 {
+    pub(crate) fn drift(&mut self, net: &RoadNetwork, lp: &LanePos) -> f64 {
         let Some(road) = net.roads.get(lp.road) else { return 0.0 };
         let section = road.section_index_at(lp.s);
         if crate::roads::lane_shape::lane_shape(road, section, lp.lane_id).parallel {

@@ -141,6 +141,7 @@ impl<'a> Simulation<'a> {
             // an ACC already stops for a lead closer than 1 m (ControllerACC::Step)
             sim.step_acc_controllers(0.0);
             sim.step_looming_controllers(0.0);
+            sim.step_offroad_followers_frame0();
         }
         sim.pull_trailers();
         sim.after_move(before, 0.0);

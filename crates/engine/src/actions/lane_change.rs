@@ -210,11 +210,16 @@ impl<'a> Sim<'a> {
             l.internal.dir * lane_sign * angle
         };
         let mut attached = l.internal;
+        // XYZ2TrackPos re-attaches the position to the lane it is in, unless it is locked on
+        // its lane (a looming controller's): then it stays in the target lane.
+        let locked = self.lane_locked(e);
         let en = &mut self.entities[e];
-        if en.route.is_some() {
-            relane(net, &mut attached);
-        } else {
-            snap_lane(net, &mut attached, en.kind == crate::entities::EntityKind::Pedestrian);
+        if !locked {
+            if en.route.is_some() {
+                relane(net, &mut attached);
+            } else {
+                snap_lane(net, &mut attached, en.kind == crate::entities::EntityKind::Pedestrian);
+            }
         }
         en.yaw_offset = yaw;
         en.set_lane_pos(net, attached);

@@ -15,7 +15,7 @@
 //! world systems esmini 3.6's LatDistanceAction::Step does nothing and never ends, which is
 //! what we do, with a warning.
 
-mod entity_frame;
+pub(crate) mod entity_frame;
 pub(crate) mod state;
 
 use entity_frame::{entity_frame_step, Pose};

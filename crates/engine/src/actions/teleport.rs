@@ -22,13 +22,13 @@ impl<'a> Sim<'a> {
             self.warn_action(slot, "TeleportAction: ignored, as esmini does, while the trailer is towed (its tow vehicle places it)".into());
             return false;
         }
-        self.put_at(slot, e, pos);
+        self.put_at(slot, e, pos)
     }
 
     /// Put entity `e` at `pos` (esmini's Position::TeleportTo), whatever drives it: the
     /// TeleportAction's placement once the override test passed, and AddEntityAction's, which
-    /// has no such test (AddEntityAction::Start).
-    pub(super) fn put_at(&mut self, slot: usize, e: usize, pos: &Position) {
+    /// has no such test (AddEntityAction::Start). Whether the entity was moved.
+    pub(super) fn put_at(&mut self, slot: usize, e: usize, pos: &Position) -> bool {
         if let Some(note) = crate::route_position::esmini_deviation(pos, self.net, &self.entities) {
             self.warn_action(slot, format!("TeleportAction: {note}"));
         }

@@ -168,15 +168,17 @@ impl<'a> Sim<'a> {
         let Some(net) = self.net else { return };
         let mut scenario = Vec::with_capacity(route.waypoints.len());
         for w in &route.waypoints {
+            // A waypoint given in the world is attached to a road as the route attaches it
+            // (Route::AddWaypoint: Position::XYZ2TrackPos).
             let Ok(p) = crate::positions::resolve(&w.position, Some(net), &self.entities) else { return };
-            let Some(lp) = p.lane else { return };
+            let Some(wp) = crate::route_position::waypoint_of(&w.position, &p, net) else { return };
             let strategy = match w.strategy {
                 openscenario::RouteStrategy::Fastest => Strategy::Fastest,
                 openscenario::RouteStrategy::Shortest => Strategy::Shortest,
                 openscenario::RouteStrategy::LeastIntersections => Strategy::LeastIntersections,
                 openscenario::RouteStrategy::Random => Strategy::Random,
             };
-            scenario.push((LaneSpot { road: lp.road, lane: lp.lane_id, s: lp.s }, strategy));
+            scenario.push((LaneSpot { road: wp.road, lane: wp.lane, s: wp.s }, strategy));
         }
         self.give_route_follower(e, scenario, planned);
     }

@@ -57,7 +57,6 @@ impl LoomingRt {
             set_speed: num("setSpeed").unwrap_or(0.0),
             set_speed_given: num("setSpeed").is_some(),
             override_mode: c.properties.get("mode") != Some("additive"),
-            moved_by_action: false,
             vehicle: None,
             prev_near: 0.0,
             prev_far: 0.0,
@@ -112,6 +111,27 @@ fn lead_delta(
 }
 
 impl<'a> Sim<'a> {
+    /// Whether entity `e`'s position is locked on its lane: a looming controller has driven it
+    /// (ControllerLooming::Step sets the lock and nothing clears it).
+    pub(crate) fn lane_locked(&self, e: usize) -> bool {
+        matches!(self.controllers.get(e), Some(Some(super::state::ControllerRt::Looming(l))) if l.vehicle.is_some())
+    }
+
+    /// Controller::Activate of a controller that aligns to the road on activation (the
+    /// looming one), asked for the lateral domain, operated or not: the entity turns to the
+    /// road's heading in its lane's driving direction (AlignToRoadHeading:
+    /// Position::GetHRoadInDrivingDirection), after ControllerLooming::Activate has set its
+    /// vehicle up with the heading it had.
+    pub(crate) fn align_to_road_heading(&mut self, e: usize) {
+        let Some(net) = self.net else { return };
+        let Some(en) = self.entities.get_mut(e) else { return };
+        let Some(lp) = en.lane else { return };
+        let (Some(road), Some(pose)) = (net.roads.get(lp.road), lp.pose(net)) else { return };
+        let against = !opendrive::drives_along_s(road.rule, lp.lane_id);
+        let h = pose.road_heading + if against { std::f64::consts::PI } else { 0.0 };
+        en.set_world(Some(net), en.x, en.y, Some(en.z), h);
+    }
+
     /// Step every active LoomingController by `dt`, after the default controller (esmini steps
     /// its controllers then, in frame 0 too with dt = 0).
     pub(crate) fn step_looming_controllers(&mut self, dt: f64) {
@@ -229,9 +249,11 @@ impl<'a> Sim<'a> {
         }
         let net = self.net;
         let Some(en) = self.entities.get_mut(e) else { return };
-        if l.override_mode && !l.moved_by_action {
+        // ControllerLooming::Step places the entity where its vehicle drove whatever an action
+        // did this step: a lateral action (the controller leaves that domain to them) only
+        // changes the lane the position is locked on, which the near point then steers to.
+        if l.override_mode {
             if let Some(v) = l.vehicle.map(|v| v.car) {
-                // Position::SetInertiaPos with the lane locked
                 let before = en.lane;
                 // Locate it first on the road its lane leads to (esmini keeps the connecting
                 // road it is on where junction roads overlap).
@@ -239,7 +261,8 @@ impl<'a> Sim<'a> {
                     move_along_s(net, &mut lp, l.speed() * dt);
                     en.lane = Some(lp);
                 }
-                en.set_world(net, v.x, v.y, None, v.h);
+                // Position::SetLockOnLane(true), then SetInertiaPos.
+                en.set_world_lane_locked(net, v.x, v.y, v.h, before);
                 // ScenarioEngine::step reads the position's end-of-road status before it steps
                 // the controllers: what this move finds is seen in the next step.
                 en.at_road_end = l.end_of_road;

@@ -17,6 +17,7 @@ pub(crate) mod follow_reference;
 pub(crate) mod follow_route;
 pub(crate) mod followers;
 pub(crate) mod kinematic_vehicle;
+pub(crate) mod lane_lock;
 pub(crate) mod lane_router;
 pub(crate) mod looming;
 pub(crate) mod natural_driver;
@@ -129,6 +130,9 @@ impl<'a> Sim<'a> {
                 if let Some(en) = self.entities.get(e) {
                     l.activate(en, longitudinal);
                 }
+                if lateral {
+                    self.align_to_road_heading(e);
+                }
             }
             Some(Some(ControllerRt::OffroadFollower(f))) => {
                 if let Some(en) = self.entities.get(e) {
@@ -141,7 +145,8 @@ impl<'a> Sim<'a> {
 
     /// Whether a controller of entity `e` in override mode owns its longitudinal motion now
     /// (esmini's `Object::IsControllerModeOnDomains(MODE_OVERRIDE, DOMAIN_MASK_LONG)`): an
-    /// active ACC/ALKS in override mode, a FollowRoute controller during its lane change.
+    /// active ACC/ALKS, Looming or ALKS R157 in override mode, a FollowRoute controller during
+    /// its lane change.
     pub(crate) fn longitudinal_overridden(&self, e: usize) -> bool {
         if self.outside(e) {
             return true;
@@ -150,6 +155,11 @@ impl<'a> Sim<'a> {
             Some(Some(ControllerRt::Acc(a))) => a.overrides_longitudinal(),
             Some(Some(ControllerRt::FollowRoute(f))) => f.overrides_longitudinal(),
             Some(Some(ControllerRt::OffroadFollower(f))) => f.active,
+            // ControllerLooming operates on the longitudinal domain, in override mode unless
+            // its `mode` says additive.
+            Some(Some(ControllerRt::Looming(l))) => l.active && l.override_mode,
+            // ControllerALKS_R157SM operates on both domains (the Controller default).
+            Some(Some(ControllerRt::AlksR157(a))) => a.active && a.override_mode && a.longitudinal,
             _ => false,
         }
     }
@@ -245,9 +255,8 @@ impl<'a> Sim<'a> {
                 ControllerRt::FollowRoute(f) => self.hold_follower(e, f.holds_entity()),
                 // Steps after the default controller (`step_looming_controllers`).
                 ControllerRt::Looming(l) => {
-                    if l.active && self.entities.get(e).is_some_and(|en| en.active) {
-                        self.hold_for_override(e, &mut l.moved_by_action, l.override_mode);
-                    }
+                    let held = l.active && l.override_mode && self.entities.get(e).is_some_and(|en| en.active);
+                    self.hold_follower(e, held);
                 }
             }
             if let Some(slot) = self.controllers.get_mut(e) {

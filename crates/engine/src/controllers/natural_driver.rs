@@ -17,10 +17,10 @@
 //! counts, esmini restoring the action's position each frame). No randomness is involved.
 //!
 //! Like esmini: the speed jumps down to `desiredSpeed` when above it, a second NaturalDriver
-//! changing into the same lane close by aborts the change. Unlike esmini, a non-negative `maxDec`
-//! is read as its negative (esmini would compute NaN), no lane change is injected while
-//! standing still, and the additive `mode` is driven like `override` (the driver always moves
-//! the entity itself).
+//! changing into the same lane close by aborts the change, a positive `maxDec` is a lower bound
+//! of the acceleration (ControllerNaturalDriver::Step clips from below at it). Unlike esmini, no
+//! lane change is injected while standing still, and the additive `mode` is driven like
+//! `override` (the driver always moves the entity itself).
 
 pub(crate) mod state;
 mod view;
@@ -47,7 +47,10 @@ impl NdParams {
             // esmini keeps the duration as a float.
             lane_change_duration: num("laneChangeDuration", 3.0) as f32 as f64,
             lookahead: num("lookAheadDistance", 115.0),
-            max_dec: -num("maxDec", -3.0).abs(),
+            // As given: esmini clips the acceleration from below at `maxDec`, so a positive
+            // value makes the car speed up at least that hard, and the desired gap's √(−a·b)
+            // is then NaN, which std::max(0, NaN) (and f64::max) turn into 0.
+            max_dec: num("maxDec", -3.0),
             max_acc: num("maxAcc", 3.0),
             lane_change_delay: num("laneChangeDelay", 1.0),
             thw: num("thw", 2.0),

@@ -15,7 +15,8 @@ use state::OffroadFollowerRt;
 
 use super::analog_vehicle::AnalogVehicle;
 use super::kinematic_vehicle::KinematicVehicle;
-use crate::roads::road_follow::wrap;
+use super::looming::view::angle_difference;
+use crate::actions::lat_distance::entity_frame::angle_of_vector;
 use crate::sim::Sim;
 use openscenario::Controller;
 
@@ -58,13 +59,28 @@ impl<'a> Sim<'a> {
         }
     }
 
+    /// Frame 0 (dt 0): esmini's ScenarioEngine::step steps every active controller then too;
+    /// an OffroadFollower's vehicle model caps the speed at its limit at once
+    /// (ControllerOffroadFollower::Step: SetMaxSpeed, DrivingControlAnalog).
+    pub(crate) fn step_offroad_followers_frame0(&mut self) {
+        self.for_each_controller(|sim, e, c| {
+            if let super::state::ControllerRt::OffroadFollower(f) = c {
+                if f.active {
+                    sim.step_offroad_follower(e, f, 0.0);
+                }
+            }
+        });
+    }
+
     /// One step of OffroadFollower `e` (after the default controller).
     pub(super) fn step_offroad_follower(&mut self, e: usize, f: &mut OffroadFollowerRt, dt: f64) {
         let Some(lead) = f.follow.as_deref().and_then(|n| self.entities.iter().find(|o| o.name == n)) else { return };
         let (Some(me), Some(mut v)) = (self.entities.get(e), f.vehicle) else { return };
         v.car.max_speed = (1.2 * self.speed_limit(e)).min(me.max_speed);
         let (dx, dy) = (lead.x - me.x, lead.y - me.y);
-        let direction = wrap(dy.atan2(dx) - me.h);
+        // GetAngleDifference(GetAngleOfVector(dx, dy), h): a lead exactly behind is +π (the
+        // direction's x nudged off zero), which turns left.
+        let direction = angle_difference(angle_of_vector(dx, dy), me.h);
         let dist = dx.hypot(dy);
         let steering = direction.clamp(-1.0, 1.0);
         let throttle = (0.5 * (dist - f.target_distance) - 0.5 * (me.speed - lead.speed)).clamp(-1.0, 1.0);

@@ -58,3 +58,15 @@ fn alks_regulation_brakes_at_six_for_a_standing_target() {
     let gap = g.x - e.x - 4.5;
     assert!(close(gap, 8.27, 0.01), "{gap}");
 }
+
+#[test]
+fn a_speed_action_ends_at_once_under_the_controller_in_override_mode() {
+    // alks_r157_speed_action.xosc: the controller active on both domains (override, the
+    // default); the SpeedAction to 10 m/s at 2 s changes nothing in esmini 3.6.0
+    // (LongSpeedAction::Start ends it): 20 m/s throughout, x = 20 + 20 t.
+    let run = run_fixture("alks_r157_speed_action.xosc", "straight.xodr");
+    for t in [2.0, 2.5, 4.0, 8.0] {
+        let e = at(&run, "Ego", t);
+        assert!(close(e.speed, 20.0, 1e-9) && close(e.x, 20.0 + 20.0 * t, 1e-6), "t {t}: {e:?}");
+    }
+}

@@ -139,3 +139,17 @@ fn a_running_speed_action_ends_when_the_route_lane_change_starts() {
     let e = at(&run, "Ego", 10.0);
     assert!(close(e.speed, 0.0, 1e-12) && close(e.x, 150.35876, 1e-5), "{e:?}");
 }
+
+#[test]
+fn a_waypoint_given_in_the_world_is_followed_as_a_lane_position() {
+    // follow_route_world_waypoint.xosc: the last waypoint is a WorldPosition at road 2, lane −2,
+    // s = 50. esmini 3.6.0 runs it exactly as follow_route_lane_change.xosc: the change to lane
+    // −2 at once (y −3.463351 at 1.5 s), then test mode stops Ego past the waypoint (speed 0
+    // from 7.02 s at x = 150.273861).
+    let run = run_fixture("follow_route_world_waypoint.xosc");
+    let e = at(&run, "Ego", 1.5);
+    assert!(close(e.x, 39.939033, 1e-5) && close(e.y, -3.463351, 1e-5), "{e:?}");
+    assert!(close(at(&run, "Ego", 7.01).speed, 20.0, 1e-12));
+    let e = at(&run, "Ego", 7.02);
+    assert!(close(e.speed, 0.0, 1e-12) && close(e.x, 150.273861, 1e-5) && close(e.y, -5.25, 1e-9), "{e:?}");
+}

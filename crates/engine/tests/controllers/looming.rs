@@ -49,6 +49,50 @@ fn the_steering_wobbles_as_esmini_when_the_lead_becomes_the_far_point() {
     assert!(r.warnings.is_empty(), "{:?}", r.warnings);
 }
 
+#[test]
+fn a_lane_change_only_moves_the_lane_the_looming_car_is_locked_on() {
+    // looming_lane_change.xosc: the controller holds the longitudinal domain (the SpeedAction at
+    // 2 s changes nothing), the lane change at 1 s puts the position into lane -2 at once
+    // (offset 3.5 m from its centre) and the looming steering swings the car towards it and far
+    // beyond. (time, x, y, speed, lane, offset) from esmini 3.6.0's trace.
+    let loaded = openscenario::load(&fixtures().join("looming_lane_change.xosc"), &Default::default()).expect("fixture scenario loads");
+    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
+    let net = opendrive::load(fixtures().join("straight.xodr")).expect("fixture road loads").network;
+    let r = engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 20.0 }).expect("simulate");
+    let expected = [
+        (1.0, 32.498112, -1.75, 14.641514, -1, 0.0),
+        (1.01, 32.644706, -1.750407, 14.659438, -2, 3.499593),
+        (2.0, 46.503019, -6.02373, 14.997878, -2, -0.77373),
+        (3.0, 55.341924, -18.088867, 14.999987, -2, -12.838867),
+        (5.0, 76.364777, -37.97806, 14.999993, -2, -32.72806),
+        (8.0, 107.12961, -7.03865, 14.999607, -2, -1.78865),
+    ];
+    for (t, x, y, v, lane, offset) in expected {
+        let s = at(&r, "Ego", t);
+        let road = s.road.expect("on the road");
+        assert!(close(s.x, x, 1e-3) && close(s.y, y, 1e-3) && close(s.speed, v, 1e-4), "at {t} s: {s:?}, esmini ({x}, {y}) at {v} m/s");
+        assert!(road.lane_id == lane && close(road.lane_offset, offset, 1e-3), "at {t} s: {road:?}, esmini lane {lane} offset {offset}");
+    }
+}
+
+#[test]
+fn activated_laterally_it_turns_the_car_to_the_driving_direction_and_stays_inactive() {
+    // looming_lateral_activation.xosc: lane 1 drives against s; the car starts facing along s.
+    // esmini 3.6.0 turns it round on activation (Controller::Activate: AlignToRoadHeading); the
+    // default controller and the SpeedAction at 2 s (10 -> 30 m/s in 2 s) drive it.
+    let loaded = openscenario::load(&fixtures().join("looming_lateral_activation.xosc"), &Default::default()).expect("fixture scenario loads");
+    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
+    let net = opendrive::load(fixtures().join("straight.xodr")).expect("fixture road loads").network;
+    let r = engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 20.0 }).expect("simulate");
+    for (t, x, v) in [(0.0, 200.0, 10.0), (2.0, 180.0, 10.0), (3.0, 167.475, 15.0), (4.0, 149.95, 20.0), (8.0, 39.9, 30.0)] {
+        let s = at(&r, "Ego", t);
+        assert!(
+            close(s.x, x, 1e-3) && close(s.y, 1.75, 1e-6) && close(s.h, std::f64::consts::PI, 1e-6) && close(s.speed, v, 1e-6),
+            "at {t} s: {s:?}, esmini x {x} speed {v}"
+        );
+    }
+}
+
 fn corpus_run(name: &str) -> Option<Run> {
     let shared = std::env::var_os("OSC2CR_SHARED")
         .map(std::path::PathBuf::from)

@@ -182,3 +182,16 @@ fn returns_to_its_route_lane_when_that_is_free_and_stays_there() {
     assert!(close(at(&run, "Ego", 9.9).y, -1.75, 1e-9));
     assert!(event_time(&run, "LaneChangeAction_1", "start").is_none());
 }
+
+#[test]
+fn a_positive_max_dec_is_the_least_acceleration_as_in_esmini() {
+    // natural_driver_positive_max_dec.xosc: alone, 5 -> 20 m/s, maxAcc 3, maxDec +2. esmini
+    // 3.6.0 clips the IDM acceleration from below at maxDec: 2 m/s² between 5 s and 6 s, where
+    // the IDM alone would give 3·(1 − (v/20)⁴) ≈ 0.7 m/s².
+    let run = crate::common::run_fixture("natural_driver_positive_max_dec.xosc", "straight.xodr");
+    for (t, x, v) in [(1.0, 26.501811, 7.963631), (3.0, 48.064605, 13.397386), (5.0, 79.170758, 17.566059), (6.0, 97.746817, 19.566059), (8.0, 137.70189, 20.0)]
+    {
+        let e = at(&run, "Ego", t);
+        assert!(close(e.x, x, 1e-3) && close(e.speed, v, 1e-4), "t {t}: {e:?}");
+    }
+}

@@ -16,3 +16,17 @@ fn an_offroad_follower_drives_after_its_lead() {
         assert!(close(e.x, x, 2e-3) && close(e.y, y, 2e-3) && close(e.speed, v, 6e-3), "t {t}: {e:?}");
     }
 }
+
+#[test]
+fn a_lead_right_behind_turns_the_follower_left_and_frame_0_caps_its_speed() {
+    // offroad_follower_behind.xosc: the lead 30 m behind in the same lane, the follower at
+    // 45 m/s where its top speed is 40 m/s. esmini 3.6.0: 40 m/s already at 0 s (its controller
+    // steps in frame 0 too), then a left turn (+π: GetAngleDifference) to go back.
+    let run = run_fixture("offroad_follower_behind.xosc", "straight.xodr");
+    for (t, x, y, v) in
+        [(0.0, 80.0, -1.75, 40.0), (0.01, 80.3992, -1.749744, 39.92), (1.0, 106.793604, 5.329344, 20.0), (6.0, 109.384025, -4.070577, 13.494833)]
+    {
+        let e = at(&run, "Follower", t);
+        assert!(close(e.x, x, 1e-3) && close(e.y, y, 1e-3) && close(e.speed, v, 1e-4), "t {t}: {e:?}");
+    }
+}

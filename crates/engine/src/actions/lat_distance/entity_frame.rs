@@ -105,7 +105,7 @@ fn line_circle(p0: (f64, f64), dir: (f64, f64), c: (f64, f64), r: f64) -> Option
 }
 
 /// esmini's GetAngleOfVector: the direction in [0, 2π), an x below SMALL_NUMBER nudged to it.
-fn angle_of_vector(x: f64, y: f64) -> f64 {
+pub(crate) fn angle_of_vector(x: f64, y: f64) -> f64 {
     if x.abs() < SMALL_NUMBER && y.abs() < SMALL_NUMBER {
         return 0.0;
     }

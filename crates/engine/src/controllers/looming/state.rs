@@ -11,8 +11,6 @@ pub(crate) struct LoomingRt {
     pub(super) set_speed: f64,
     pub(super) set_speed_given: bool,
     pub(in crate::controllers) override_mode: bool,
-    /// An action moved the entity this step (seen before the default controller ran).
-    pub(in crate::controllers) moved_by_action: bool,
     /// esmini's vehicle model the controller drives (set up when it is activated).
     pub(super) vehicle: Option<AnalogVehicle>,
     pub(super) prev_near: f64,
