@@ -107,3 +107,22 @@ fn neighbours_that_meet_halfway_are_neighbours_from_there_on() {
     assert!(c.passes(0.05, 0.01), "{:?}", c.failures(0.05));
     assert_eq!((c.relations_kept, c.relations), (4, 4));
 }
+
+#[test]
+fn a_neighbour_beside_no_piece_is_a_warning() {
+    // 2 cuts 1 in two; 3 is called 1's right neighbour but lies 3 m away from it
+    let mut long = lanelet(1, 0.0, 100.0, 0.0, 3.5);
+    let mut short = lanelet(2, 50.0, 100.0, 3.5, 7.0);
+    let mut far = lanelet(3, 0.0, 100.0, -6.5, -3.0);
+    side_by_side(&mut long, &mut short, DrivingDir::Same);
+    side_by_side(&mut far, &mut long, DrivingDir::Same);
+    let net = LaneletNetwork { lanelets: vec![long, short, far], ..Default::default() };
+    let (c, warnings) = round_trip_of(&net);
+    assert_eq!((c.relations_kept, c.relations), (2, 4));
+    for (lanelet, side, other) in [(1, "right", 3), (3, "left", 1)] {
+        let said = warnings
+            .iter()
+            .any(|w| w.subject == Subject::Lanelet(lanelet) && w.message.contains(&format!("adjacent {side} lanelet {other} lies beside no part")));
+        assert!(said, "no warning about lanelet {lanelet}'s {side} neighbour: {warnings:?}");
+    }
+}
