@@ -42,6 +42,8 @@ pub(crate) struct Cut {
     pub network: LaneletNetwork,
     /// Piece id → id of the lanelet it was cut from (pieces only).
     pub origin: BTreeMap<u64, u64>,
+    /// Neighbours no piece lies beside (named by the lanelet as it was before the cut).
+    pub warnings: Vec<Warning>,
 }
 
 impl Cut {
@@ -250,7 +252,9 @@ pub(crate) fn cut(net: &LaneletNetwork) -> Option<Cut> {
                     let root = origin.get(&from).copied().unwrap_or(from);
                     origin.insert(piece, root);
                 }
-                Cut { network: next.network, origin }
+                let mut warnings = prev.warnings;
+                warnings.extend(next.warnings);
+                Cut { network: next.network, origin, warnings }
             }
         });
     }
@@ -315,8 +319,11 @@ fn cut_once(net: &LaneletNetwork) -> Option<Cut> {
     let first = |id: LaneletId| pos.get(&id.get()).and_then(|&j| pieces.get(j)).and_then(|p| p.first()).map_or(id, |p| p.id);
     let last = |id: LaneletId| pos.get(&id.get()).and_then(|&j| pieces.get(j)).and_then(|p| p.last()).map_or(id, |p| p.id);
     let mut lanelets = Vec::new();
+    let mut warnings = Vec::new();
     for (l, ps) in net.lanelets.iter().zip(&pieces) {
         let n = ps.len();
+        // whether some piece kept its left / right neighbour
+        let mut kept = [l.adjacent_left.is_none(), l.adjacent_right.is_none()];
         for (k, piece) in ps.iter().enumerate() {
             let mut p = piece.clone();
             if k == 0 {
@@ -331,6 +338,7 @@ fn cut_once(net: &LaneletNetwork) -> Option<Cut> {
                 let Some(adj) = adj else { continue };
                 let Some(theirs) = pos.get(&adj.lanelet.get()).and_then(|&j| pieces.get(j)) else { continue };
                 if n == 1 && theirs.len() == 1 {
+                    kept[usize::from(!left)] = true;
                     continue;
                 }
                 let mine = v2(if left { p.bounds.left() } else { p.bounds.right() }).unwrap_or_default();
@@ -344,6 +352,7 @@ fn cut_once(net: &LaneletNetwork) -> Option<Cut> {
                 };
                 let best = theirs.iter().filter_map(|q| facing(q, left, adj).and_then(|b| beside(&b)).map(|d| (d, q.id))).min_by(|a, b| a.0.total_cmp(&b.0));
                 let new = best.map(|(_, id)| Adjacent { lanelet: id, driving_dir: adj.driving_dir });
+                kept[usize::from(!left)] |= new.is_some();
                 if left {
                     p.adjacent_left = new;
                 } else {
@@ -351,6 +360,17 @@ fn cut_once(net: &LaneletNetwork) -> Option<Cut> {
                 }
             }
             lanelets.push(p);
+        }
+        for (side, (ok, adj)) in ["left", "right"].iter().zip(kept.iter().zip([l.adjacent_left, l.adjacent_right])) {
+            if let (false, Some(adj)) = (ok, adj) {
+                warnings.push(Warning::new(
+                    Subject::Lanelet(l.id.get()),
+                    format!(
+                        "adjacent {side} lanelet {} lies beside no part of it where the lanelets are cut into lane sections (within {BESIDE} m); the adjacency is not written",
+                        adj.lanelet.get()
+                    ),
+                ));
+            }
         }
         // references go to the piece where they stand
         let base = lanelets.len() - n;
@@ -385,7 +405,7 @@ fn cut_once(net: &LaneletNetwork) -> Option<Cut> {
             }
         }
     }
-    Some(Cut { network, origin })
+    Some(Cut { network, origin, warnings })
 }
 
 /// The point `d` m along `line`.

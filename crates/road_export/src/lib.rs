@@ -99,7 +99,7 @@ pub fn export(network: &LaneletNetwork, options: &Options) -> Result<RoadExport,
     let tol = options.tolerance.filter(|t| t.is_finite() && *t > 0.0).unwrap_or(DEFAULT_TOLERANCE).max(1e-4);
     let cut = cuts::cut(network);
     let network = cut.as_ref().map_or(network, |c| &c.network);
-    let mut warnings = Vec::new();
+    let mut warnings = cut.as_ref().map(|c| c.warnings.clone()).unwrap_or_default();
     let prep = lanelets::prepare_all(network, &mut warnings);
     let groups = groups::group(network, &prep, &mut warnings);
     let mut doc = model::Document { name: options.name.clone(), geo_reference: options.geo_reference.clone(), ..Default::default() };

@@ -23,6 +23,18 @@ fn adjacent(n: u64, dir: DrivingDir) -> Option<Adjacent> {
     Some(Adjacent { lanelet: id(n), driving_dir: dir })
 }
 
+/// Makes `left` the left neighbour of `right` (and `right` the neighbour of `left` on the side
+/// facing it: its left when it drives the other way).
+fn side_by_side(right: &mut Lanelet, left: &mut Lanelet, dir: DrivingDir) {
+    right.adjacent_left = adjacent(left.id.get(), dir);
+    let back = adjacent(right.id.get(), dir);
+    if dir == DrivingDir::Same {
+        left.adjacent_right = back;
+    } else {
+        left.adjacent_left = back;
+    }
+}
+
 /// Exports, reads back, compares; the comparison and the warnings.
 fn round_trip_of(net: &LaneletNetwork) -> (round_trip::Comparison, Vec<road_export::Warning>) {
     let e = export(net, &Options::default()).expect("exports");
@@ -36,8 +48,7 @@ fn a_lane_that_begins_beside_a_longer_one_stays_its_neighbour() {
     let mut long = lanelet(1, 0.0, 100.0, 0.0, 3.5);
     let mut short = lanelet(2, 45.0, 100.0, 3.5, 7.0);
     let mut next = lanelet(3, 100.0, 150.0, 0.0, 3.5);
-    long.adjacent_left = adjacent(2, DrivingDir::Same);
-    short.adjacent_right = adjacent(1, DrivingDir::Same);
+    side_by_side(&mut long, &mut short, DrivingDir::Same);
     long.successors = vec![id(3)];
     next.predecessors = vec![id(1)];
     let net = LaneletNetwork { lanelets: vec![long, short, next], ..Default::default() };
@@ -56,8 +67,7 @@ fn staggered_lanelets_of_opposite_directions_stay_neighbours() {
     // 1 drives +x over [0, 100]; 2 drives −x on its left over [130, 40]
     let mut a = lanelet(1, 0.0, 100.0, 0.0, 3.5);
     let mut b = lanelet(2, 130.0, 40.0, 7.0, 3.5);
-    a.adjacent_left = adjacent(2, DrivingDir::Opposite);
-    b.adjacent_left = adjacent(1, DrivingDir::Opposite);
+    side_by_side(&mut a, &mut b, DrivingDir::Opposite);
     let net = LaneletNetwork { lanelets: vec![a, b], ..Default::default() };
     let (c, _) = round_trip_of(&net);
     assert!(c.passes(0.05, 0.01), "{:?}", c.failures(0.05));
@@ -68,8 +78,7 @@ fn staggered_lanelets_of_opposite_directions_stay_neighbours() {
 fn a_sign_stays_on_the_piece_where_it_stands() {
     let mut long = lanelet(1, 0.0, 100.0, 0.0, 3.5);
     let mut short = lanelet(2, 50.0, 100.0, 3.5, 7.0);
-    long.adjacent_left = adjacent(2, DrivingDir::Same);
-    short.adjacent_right = adjacent(1, DrivingDir::Same);
+    side_by_side(&mut long, &mut short, DrivingDir::Same);
     let sign_id = TrafficSignId::new(10).expect("id");
     long.traffic_sign_refs = vec![sign_id];
     let element = TrafficSignElement { sign_id: "274".into(), additional_values: vec!["13.89".into()] };
@@ -91,12 +100,29 @@ fn neighbours_that_meet_halfway_are_neighbours_from_there_on() {
     let side = |off: f64| xs.iter().map(|&x| Point::new(x, 3.5 + gap(x) + off)).collect::<Vec<_>>();
     let mut b = Lanelet::new(id(2), LaneletBounds::new(side(3.5), side(0.0)).expect("bounds"), LaneletType::Urban);
     let mut c = lanelet(3, 0.0, 100.0, -3.5, 0.0);
-    a.adjacent_left = adjacent(2, DrivingDir::Same);
-    b.adjacent_right = adjacent(1, DrivingDir::Same);
-    a.adjacent_right = adjacent(3, DrivingDir::Same);
-    c.adjacent_left = adjacent(1, DrivingDir::Same);
+    side_by_side(&mut a, &mut b, DrivingDir::Same);
+    side_by_side(&mut c, &mut a, DrivingDir::Same);
     let net = LaneletNetwork { lanelets: vec![a, b, c], ..Default::default() };
     let (c, _) = round_trip_of(&net);
     assert!(c.passes(0.05, 0.01), "{:?}", c.failures(0.05));
     assert_eq!((c.relations_kept, c.relations), (4, 4));
+}
+
+#[test]
+fn a_neighbour_beside_no_piece_is_a_warning() {
+    // 2 cuts 1 in two; 3 is called 1's right neighbour but lies 3 m away from it
+    let mut long = lanelet(1, 0.0, 100.0, 0.0, 3.5);
+    let mut short = lanelet(2, 50.0, 100.0, 3.5, 7.0);
+    let mut far = lanelet(3, 0.0, 100.0, -6.5, -3.0);
+    side_by_side(&mut long, &mut short, DrivingDir::Same);
+    side_by_side(&mut far, &mut long, DrivingDir::Same);
+    let net = LaneletNetwork { lanelets: vec![long, short, far], ..Default::default() };
+    let (c, warnings) = round_trip_of(&net);
+    assert_eq!((c.relations_kept, c.relations), (2, 4));
+    for (lanelet, side, other) in [(1, "right", 3), (3, "left", 1)] {
+        let said = warnings
+            .iter()
+            .any(|w| w.subject == Subject::Lanelet(lanelet) && w.message.contains(&format!("adjacent {side} lanelet {other} lies beside no part")));
+        assert!(said, "no warning about lanelet {lanelet}'s {side} neighbour: {warnings:?}");
+    }
 }
