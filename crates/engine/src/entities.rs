@@ -173,6 +173,19 @@ impl Entity {
     /// [`Entity::set_world`] with the lane types given: a teleport copies the location of a
     /// position of its own, which snaps to driving lanes only, whatever the entity (esmini's
     /// TeleportAction: Position::CopyLocation).
+    /// Where esmini leaves an entity whose position it could not set: the origin, heading 0,
+    /// on no road (`roadless`). Its first move from there already fails at the road's end
+    /// (frame 0 for the Init), so the next step stops it (motion.rs).
+    pub(crate) fn place_nowhere(&mut self) {
+        (self.x, self.y, self.z, self.h) = (0.0, 0.0, 0.0, 0.0);
+        self.lane = None;
+        self.on_road = false;
+        self.roadless = true;
+        self.at_road_end = true;
+        self.moved_by_action = true;
+        self.teleported = true;
+    }
+
     pub(crate) fn set_world_snapping(&mut self, net: Option<&RoadNetwork>, x: f64, y: f64, z: Option<f64>, h: f64, sidewalks: bool) {
         self.x = x;
         self.y = y;

@@ -37,18 +37,7 @@ impl<'a> Sim<'a> {
         // heading 0, on no road (TeleportAction::Start copies it as it is).
         if self.unset_position(pos) {
             if let Some(en) = self.entities.get_mut(e) {
-                en.x = 0.0;
-                en.y = 0.0;
-                en.z = 0.0;
-                en.h = 0.0;
-                en.lane = None;
-                en.on_road = false;
-                en.roadless = true;
-                // esmini's first move from there (frame 0 for the Init) already fails at the
-                // road's end: the next step stops the entity.
-                en.at_road_end = true;
-                en.moved_by_action = true;
-                en.teleported = true;
+                en.place_nowhere();
             }
             return true;
         }
