@@ -211,9 +211,10 @@ impl<'a> Sim<'a> {
         };
         let mut attached = l.internal;
         let en = &mut self.entities[e];
-        if en.route.is_some() {
-            relane(net, &mut attached);
-        } else {
+        // With a route esmini skips that re-attachment: the entity is in the target lane from
+        // the first step, at the offset still to go (so an ACC no longer follows the vehicle
+        // in the lane it leaves).
+        if en.route.is_none() {
             snap_lane(net, &mut attached, en.kind == crate::entities::EntityKind::Pedestrian);
         }
         en.yaw_offset = yaw;
