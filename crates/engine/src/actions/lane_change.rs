@@ -214,12 +214,11 @@ impl<'a> Sim<'a> {
         // its lane (a looming controller's): then it stays in the target lane.
         let locked = self.lane_locked(e);
         let en = &mut self.entities[e];
-        if !locked {
-            if en.route.is_some() {
-                relane(net, &mut attached);
-            } else {
-                snap_lane(net, &mut attached, en.kind == crate::entities::EntityKind::Pedestrian);
-            }
+        // With a route esmini skips that re-attachment: the entity is in the target lane from
+        // the first step, at the offset still to go (so an ACC no longer follows the vehicle
+        // in the lane it leaves).
+        if !locked && en.route.is_none() {
+            snap_lane(net, &mut attached, en.kind == crate::entities::EntityKind::Pedestrian);
         }
         en.yaw_offset = yaw;
         en.set_lane_pos(net, attached);

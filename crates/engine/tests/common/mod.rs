@@ -146,6 +146,14 @@ pub(crate) fn assert_esmini_poses(run: &Run, rows: &[(&str, f64, f64, f64, f64)]
     }
 }
 
+/// Assert that `run` puts `entity` at each (time, x, y, speed) row of an esmini log within `tol`.
+pub(crate) fn assert_esmini_rows(run: &Run, entity: &str, rows: &[(f64, f64, f64, f64)], tol: f64) {
+    for &(t, x, y, v) in rows {
+        let e = at(run, entity, t);
+        assert!(close(e.x, x, tol) && close(e.y, y, tol) && close(e.speed, v, tol), "{entity} at {t}: {e:?}, esmini ({x}, {y}, {v})");
+    }
+}
+
 pub(crate) fn run(text: &str) -> Run {
     run_with(text, &Settings { step: 0.01, max_time: 20.0 })
 }

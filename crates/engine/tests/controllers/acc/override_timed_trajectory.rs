@@ -15,17 +15,19 @@ fn a_timed_trajectory_is_followed_at_the_overriding_acc_speed() {
     assert!(run.warnings.is_empty(), "{:?}", run.warnings);
     // esmini's rows (x, y, speed): the ACC slows from 20 to the trajectory's 5 m/s at its 5 m/s²
     // while the entity advances along the path at that speed.
-    for (t, x, y, v) in [
-        (1.02, 30.2495, -1.75, 19.95),
-        (1.03, 30.4485, -1.75, 19.9),
-        (2.0, 47.375, -1.75, 15.05),
-        (5.0, 72.617816, -1.75, 5.015174),
-        (8.0, 87.603516, -2.278746, 5.0),
-        (12.0, 107.554696, -3.675329, 5.0),
-    ] {
-        let e = at(&run, "Ego", t);
-        assert!(close(e.x, x, 1e-3) && close(e.y, y, 1e-3) && close(e.speed, v, 1e-3), "Ego at {t}: {e:?}, esmini ({x}, {y}, {v})");
-    }
+    assert_esmini_rows(
+        &run,
+        "Ego",
+        &[
+            (1.02, 30.2495, -1.75, 19.95),
+            (1.03, 30.4485, -1.75, 19.9),
+            (2.0, 47.375, -1.75, 15.05),
+            (5.0, 72.617816, -1.75, 5.015174),
+            (8.0, 87.603516, -2.278746, 5.0),
+            (12.0, 107.554696, -3.675329, 5.0),
+        ],
+        1e-3,
+    );
     // Timed at 5 m/s the path would be over at 21 s; esmini's clock never moves, so it runs on.
     assert!(run.trace.events.iter().all(|ev| ev.element != "Along" || ev.to != "complete" || ev.time > 12.0));
 }
