@@ -19,8 +19,8 @@
 //! Like esmini: the speed jumps down to `desiredSpeed` when above it, a second NaturalDriver
 //! changing into the same lane close by aborts the change, a positive `maxDec` is a lower bound
 //! of the acceleration (ControllerNaturalDriver::Step clips from below at it). Unlike esmini, no
-//! lane change is injected while standing still, and the additive `mode` is driven like
-//! `override` (the driver always moves the entity itself).
+//! lane change is injected while standing still. In the additive `mode` the default controller
+//! moves the entity by its speed before the driver moves it again, as in esmini.
 
 pub(crate) mod state;
 mod view;
@@ -141,6 +141,10 @@ impl<'a> Sim<'a> {
                 nd.lane_change = Some((lc, name));
             }
         }
+        // In override mode the default controller leaves the entity to the driver; in additive
+        // mode it moves it by its speed first, and the driver's own MoveAlongS adds its step
+        // (ScenarioEngine::defaultController, ControllerNaturalDriver::Step): twice the way,
+        // unless a stepping lane change has marked the longitudinal motion done.
         if let Some(en) = self.entities.get_mut(e).filter(|_| nd.override_mode || stepped) {
             en.moved_by_action = true;
         }

@@ -55,10 +55,7 @@ fn a_lane_change_only_moves_the_lane_the_looming_car_is_locked_on() {
     // 2 s changes nothing), the lane change at 1 s puts the position into lane -2 at once
     // (offset 3.5 m from its centre) and the looming steering swings the car towards it and far
     // beyond. (time, x, y, speed, lane, offset) from esmini 3.6.0's trace.
-    let loaded = openscenario::load(&fixtures().join("looming_lane_change.xosc"), &Default::default()).expect("fixture scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("straight.xodr")).expect("fixture road loads").network;
-    let r = engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 20.0 }).expect("simulate");
+    let r = crate::common::run_fixture("looming_lane_change.xosc", "straight.xodr");
     let expected = [
         (1.0, 32.498112, -1.75, 14.641514, -1, 0.0),
         (1.01, 32.644706, -1.750407, 14.659438, -2, 3.499593),
@@ -80,10 +77,7 @@ fn activated_laterally_it_turns_the_car_to_the_driving_direction_and_stays_inact
     // looming_lateral_activation.xosc: lane 1 drives against s; the car starts facing along s.
     // esmini 3.6.0 turns it round on activation (Controller::Activate: AlignToRoadHeading); the
     // default controller and the SpeedAction at 2 s (10 -> 30 m/s in 2 s) drive it.
-    let loaded = openscenario::load(&fixtures().join("looming_lateral_activation.xosc"), &Default::default()).expect("fixture scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("straight.xodr")).expect("fixture road loads").network;
-    let r = engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 20.0 }).expect("simulate");
+    let r = crate::common::run_fixture("looming_lateral_activation.xosc", "straight.xodr");
     for (t, x, v) in [(0.0, 200.0, 10.0), (2.0, 180.0, 10.0), (3.0, 167.475, 15.0), (4.0, 149.95, 20.0), (8.0, 39.9, 30.0)] {
         let s = at(&r, "Ego", t);
         assert!(

@@ -195,3 +195,14 @@ fn a_positive_max_dec_is_the_least_acceleration_as_in_esmini() {
         assert!(close(e.x, x, 1e-3) && close(e.speed, v, 1e-4), "t {t}: {e:?}");
     }
 }
+
+#[test]
+fn in_additive_mode_the_default_controller_moves_the_car_too() {
+    // natural_driver_additive_alone.xosc: alone at its desired 10 m/s, mode additive. esmini 3.6.0
+    // moves it by the default controller and again by the driver: x = 20 + 20 t at 10 m/s.
+    let run = crate::common::run_fixture("natural_driver_additive_alone.xosc", "straight.xodr");
+    for t in [0.01, 1.0, 4.0, 8.0] {
+        let e = at(&run, "Ego", t);
+        assert!(close(e.x, 20.0 + 20.0 * t, 1e-6) && close(e.speed, 10.0, 1e-9), "t {t}: {e:?}");
+    }
+}
