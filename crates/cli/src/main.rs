@@ -4,6 +4,7 @@
 //! Exit status: 0 success, 1 some files of a batch failed, 2 bad usage or bad input.
 
 mod commands;
+mod failure;
 mod grouped;
 mod osi_file;
 mod scenario_input;
@@ -52,19 +53,6 @@ enum Command {
     /// (--udp), then write the run as CommonRoad.
     #[command(long_about = serve::ABOUT)]
     Serve(Box<serve::ServeArgs>),
-}
-
-/// A failed command: the message for the user and the exit status.
-pub struct Failure {
-    pub message: String,
-    pub status: u8,
-}
-
-impl Failure {
-    /// Bad input or usage (exit status 2).
-    pub fn input(message: impl Into<String>) -> Self {
-        Failure { message: message.into(), status: 2 }
-    }
 }
 
 fn main() -> ExitCode {

@@ -4,7 +4,7 @@
 
 use std::path::Path;
 
-use crate::Failure;
+use crate::failure::Failure;
 
 /// Writes the run of `trace` (of `scenario` on `roads`) as the trace file `path`; the reporter's
 /// warnings are returned.

@@ -5,7 +5,7 @@
 
 use std::path::Path;
 
-use crate::Failure;
+use crate::failure::Failure;
 
 /// `openscenario::load`, failing with the cause of a failure when there is one to name (a
 /// `--param` value that does not fit is one even where the reader reads past it, as esmini

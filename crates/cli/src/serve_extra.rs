@@ -10,7 +10,7 @@ use std::sync::Arc;
 use convert::{MapFiles, OutputFormat, OutputPaths};
 use udp::{Listening, Observer, Outcome, Rejection};
 
-use crate::Failure;
+use crate::failure::Failure;
 
 #[derive(clap::Args)]
 pub(crate) struct ServeOsiArgs {

@@ -5,20 +5,10 @@
 
 use std::path::PathBuf;
 
-use crate::common::{convert_and_clean, fresh_dir, CAR};
-
-fn place(entity: &str, s: f64, lane: i32, speed: f64) -> String {
-    format!(
-        r#"<Private entityRef="{entity}"><PrivateAction><TeleportAction><Position><LanePosition roadId="1" laneId="{lane}" offset="0" s="{s}"/></Position></TeleportAction></PrivateAction>
-<PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="step" dynamicsDimension="time" value="0"/><SpeedActionTarget><AbsoluteTargetSpeed value="{speed}"/></SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction></Private>"#
-    )
-}
+use crate::common::{convert_and_clean, fresh_dir, global_event_at, one_maneuver_scenario, place, CAR};
 
 fn at_time(name: &str, t: f64, action: &str) -> String {
-    format!(
-        r#"<Event name="{name}" priority="parallel"><Action name="{name}A"><GlobalAction><EntityAction entityRef="Target">{action}</EntityAction></GlobalAction></Action>
-<StartTrigger><ConditionGroup><Condition name="t" delay="0" conditionEdge="none"><ByValueCondition><SimulationTimeCondition value="{t}" rule="greaterOrEqual"/></ByValueCondition></Condition></ConditionGroup></StartTrigger></Event>"#
-    )
+    global_event_at(name, &format!("{name}A"), t, &format!(r#"<EntityAction entityRef="Target">{action}</EntityAction>"#))
 }
 
 /// Ego (lane -1, s = 100) and Target (lane -1, s = 20) at 10 m/s; Target deleted at 2 s and
@@ -29,25 +19,9 @@ fn scenario() -> String {
         at_time("Delete", 2.0, "<DeleteEntityAction/>"),
         at_time("Add", 5.0, r#"<AddEntityAction><Position><LanePosition roadId="1" laneId="-2" offset="0" s="300"/></Position></AddEntityAction>"#)
     );
-    format!(
-        r#"<?xml version="1.0" encoding="UTF-8"?>
-<OpenSCENARIO>
-<FileHeader revMajor="1" revMinor="1" date="2024-01-01T00:00:00" description="delete and add" author="osc2cr"/>
-<ParameterDeclarations/>
-<CatalogLocations/>
-<RoadNetwork><LogicFile filepath="straight.xodr"/></RoadNetwork>
-<Entities><ScenarioObject name="Ego">{CAR}</ScenarioObject><ScenarioObject name="Target">{CAR}</ScenarioObject></Entities>
-<Storyboard>
-<Init><Actions>{}{}</Actions></Init>
-<Story name="S"><Act name="A"><ManeuverGroup maximumExecutionCount="1" name="G"><Actors selectTriggeringEntities="false"><EntityRef entityRef="Ego"/></Actors>
-<Maneuver name="M">{events}</Maneuver></ManeuverGroup>
-<StartTrigger><ConditionGroup><Condition name="go" delay="0" conditionEdge="none"><ByValueCondition><SimulationTimeCondition value="0" rule="greaterOrEqual"/></ByValueCondition></Condition></ConditionGroup></StartTrigger></Act></Story>
-<StopTrigger><ConditionGroup><Condition name="end" delay="0" conditionEdge="none"><ByValueCondition><SimulationTimeCondition value="7" rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup></StopTrigger>
-</Storyboard>
-</OpenSCENARIO>"#,
-        place("Ego", 100.0, -1, 10.0),
-        place("Target", 20.0, -1, 10.0)
-    )
+    let entities = format!(r#"<ScenarioObject name="Ego">{CAR}</ScenarioObject><ScenarioObject name="Target">{CAR}</ScenarioObject>"#);
+    let init = format!("{}{}", place("Ego", 100.0, -1, 10.0), place("Target", 20.0, -1, 10.0));
+    one_maneuver_scenario("delete and add", "straight.xodr", &entities, &init, &events, "greaterThan", 7.0)
 }
 
 /// A fresh directory holding the scenario and the fixture road.

@@ -5,39 +5,26 @@
 
 use std::path::PathBuf;
 
-use crate::common::{convert_and_clean, fresh_dir, CAR};
+use crate::common::{convert_and_clean, fresh_dir, global_event_at, one_maneuver_scenario, place, CAR};
 use commonroad::TrafficLightColor;
 
 fn set_light(t: f64, state: &str) -> String {
-    format!(
-        r#"<Event name="e{t}" priority="parallel"><Action name="a{t}"><GlobalAction><InfrastructureAction><TrafficSignalAction><TrafficSignalStateAction name="7" state="{state}"/></TrafficSignalAction></InfrastructureAction></GlobalAction></Action>
-<StartTrigger><ConditionGroup><Condition name="t" delay="0" conditionEdge="none"><ByValueCondition><SimulationTimeCondition value="{t}" rule="greaterOrEqual"/></ByValueCondition></Condition></ConditionGroup></StartTrigger></Event>"#
-    )
+    let body = format!(
+        r#"<InfrastructureAction><TrafficSignalAction><TrafficSignalStateAction name="7" state="{state}"/></TrafficSignalAction></InfrastructureAction>"#
+    );
+    global_event_at(&format!("e{t}"), &format!("a{t}"), t, &body)
 }
 
 fn scenario() -> String {
+    let init = format!("\n{}\n{}\n", set_light_now("off;off;on"), place("Ego", 10.0, -1, 10.0));
+    let events = format!("{}{}", set_light(1.0, "off;on;off"), set_light(2.5, "on;off;off"));
+    one_maneuver_scenario("light", "light.xodr", &format!(r#"<ScenarioObject name="Ego">{CAR}</ScenarioObject>"#), &init, &events, "greaterOrEqual", 4.0)
+}
+
+/// The Init's setting of light 7 to `state`.
+fn set_light_now(state: &str) -> String {
     format!(
-        r#"<?xml version="1.0" encoding="UTF-8"?>
-<OpenSCENARIO>
-<FileHeader revMajor="1" revMinor="1" date="2024-01-01T00:00:00" description="light" author="osc2cr"/>
-<ParameterDeclarations/>
-<CatalogLocations/>
-<RoadNetwork><LogicFile filepath="light.xodr"/></RoadNetwork>
-<Entities><ScenarioObject name="Ego">{CAR}</ScenarioObject></Entities>
-<Storyboard>
-<Init><Actions>
-<GlobalAction><InfrastructureAction><TrafficSignalAction><TrafficSignalStateAction name="7" state="off;off;on"/></TrafficSignalAction></InfrastructureAction></GlobalAction>
-<Private entityRef="Ego"><PrivateAction><TeleportAction><Position><LanePosition roadId="1" laneId="-1" offset="0" s="10"/></Position></TeleportAction></PrivateAction>
-<PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="step" dynamicsDimension="time" value="0"/><SpeedActionTarget><AbsoluteTargetSpeed value="10"/></SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction></Private>
-</Actions></Init>
-<Story name="S"><Act name="A"><ManeuverGroup maximumExecutionCount="1" name="G"><Actors selectTriggeringEntities="false"><EntityRef entityRef="Ego"/></Actors>
-<Maneuver name="M">{}{}</Maneuver></ManeuverGroup>
-<StartTrigger><ConditionGroup><Condition name="go" delay="0" conditionEdge="none"><ByValueCondition><SimulationTimeCondition value="0" rule="greaterOrEqual"/></ByValueCondition></Condition></ConditionGroup></StartTrigger></Act></Story>
-<StopTrigger><ConditionGroup><Condition name="end" delay="0" conditionEdge="none"><ByValueCondition><SimulationTimeCondition value="4" rule="greaterOrEqual"/></ByValueCondition></Condition></ConditionGroup></StopTrigger>
-</Storyboard>
-</OpenSCENARIO>"#,
-        set_light(1.0, "off;on;off"),
-        set_light(2.5, "on;off;off")
+        r#"<GlobalAction><InfrastructureAction><TrafficSignalAction><TrafficSignalStateAction name="7" state="{state}"/></TrafficSignalAction></InfrastructureAction></GlobalAction>"#
     )
 }
 

@@ -150,7 +150,7 @@ fn one(found: &Found, options: &BatchOptions, cache: &MapCache, written: &Writte
         let depth = found.output_stem.parent().map_or(0, |p| p.components().count());
         let prefix = "../".repeat(depth);
         let map = cache.get(&source.scenario).map_err(|e| fail(Stage::Map, e))?;
-        let exported = crate::export_with(&source, &prefix, &options.export, cache).map_err(|e| fail(Stage::Scenario, e.0))?;
+        let exported = crate::exported::export_with(&source, &prefix, &options.export, cache).map_err(|e| fail(Stage::Scenario, e.0))?;
         report.warnings = exported.warnings;
         report.facts = Some(exported.facts);
         let out = options.out_dir.join(&found.output_stem).with_extension("xosc");

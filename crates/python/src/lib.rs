@@ -13,7 +13,7 @@
 //! it knows nothing of commonroad-io (the Python side reads the XML, or the 2024 files, and
 //! builds observations with it) and does no conversion or simulation itself. A conversion
 //! returns the 2020a XML text or the 2024 format's three files as `bytes`, by the `format`
-//! option.
+//! option (`payload`, for one file and for each variation of a sweep alike).
 
 // A library returns its warnings as data and never prints (ARCHITECTURE.md, Invariants); its
 // unit tests may.
@@ -25,35 +25,21 @@ mod errors;
 mod export;
 mod inputs;
 mod options;
+mod payload;
 mod variations;
 
 use std::path::PathBuf;
 
-use convert::{Conversion, FileKind, Output};
+use convert::{Conversion, FileKind};
 use pyo3::prelude::*;
-use pyo3::types::PyBytes;
+
+use crate::payload::{payload, Payload};
 
 pub use closed_loop::Session;
 pub use variations::Variations;
 
-/// The files of a 2024 conversion: (map id, map, scenario file, dynamic file).
-type Files2024<'py> = (String, Bound<'py, PyBytes>, Bound<'py, PyBytes>, Bound<'py, PyBytes>);
-
-/// What a conversion made, by format: the XML text (2020a) or the 2024 files.
-type Payload<'py> = (Option<String>, Option<Files2024<'py>>);
-
 /// (XML text or 2024 files, [(stage, warning message)]) of a successful conversion.
 type Converted<'py> = (Payload<'py>, Vec<(&'static str, String)>);
-
-fn payload(py: Python<'_>, output: Output) -> Payload<'_> {
-    match output {
-        Output::Xml(bytes) => (Some(String::from_utf8_lossy(&bytes).into_owned()), None),
-        Output::Protobuf(p) => {
-            let files = (p.map.id.clone(), PyBytes::new(py, &p.map.bytes), PyBytes::new(py, &p.scenario), PyBytes::new(py, &p.dynamic));
-            (None, Some(files))
-        }
-    }
-}
 
 fn finish<'py>(py: Python<'py>, c: Conversion, file: &std::path::Path, variation: Option<u64>) -> PyResult<Converted<'py>> {
     let warnings = errors::warnings_of(&c.warnings);

@@ -49,7 +49,7 @@ pub(crate) fn variations(py: Python<'_>, path: PathBuf, start: u64, stop: Option
     Ok(Variations { path, dist, options: opts, caches: Caches::with_capacity(2), next: start, stop: end.max(start) })
 }
 
-type Item<'py> = (u64, Vec<(String, String)>, crate::Payload<'py>, Vec<(&'static str, String)>);
+type Item<'py> = (u64, Vec<(String, String)>, crate::payload::Payload<'py>, Vec<(&'static str, String)>);
 
 #[pymethods]
 impl Variations {
@@ -68,7 +68,7 @@ impl Variations {
         let c = py.detach(|| convert::convert_variation_with(&this.path, &this.dist, k, &this.options, &this.caches));
         let warnings = crate::errors::warnings_of(&c.warnings);
         match c.result {
-            Ok(output) => Ok(Some((k, parameters, crate::payload(py, output), warnings))),
+            Ok(output) => Ok(Some((k, parameters, crate::payload::payload(py, output), warnings))),
             Err(f) => Err(conversion_error(py, &f, &this.path, Some(k))),
         }
     }

@@ -1,5 +1,5 @@
 //! `udp`: esmini's UDPDriverController protocol, so that a client written for esmini 3.6.0
-//! drives a scenario's entities in osc2cr unchanged. It owns the message layouts and their
+//! drives a scenario's entities in osc2cr unchanged. It owns the message layouts (`input_mode`) and their
 //! decoding (`message`), the checks a datagram must pass and how a rejection is said
 //! (`validate`, `frame_order`, `rejection`), esmini's object ids and port numbering and the
 //! controller's properties (`object_ids`, `controller_properties`), what one step reads from a
@@ -20,6 +20,7 @@
 
 pub mod controller_properties;
 pub mod frame_order;
+pub mod input_mode;
 pub mod message;
 pub mod object_ids;
 pub mod observer;

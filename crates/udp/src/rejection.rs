@@ -5,7 +5,7 @@
 use serde::Serialize;
 use std::fmt;
 
-use crate::message::{InputMode, HEADER_SIZE, UNION_SIZE, VERSION};
+use crate::input_mode::{InputMode, HEADER_SIZE, UNION_SIZE, VERSION};
 
 /// What is wrong with a datagram.
 #[derive(Debug, Clone, PartialEq, Serialize)]

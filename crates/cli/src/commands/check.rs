@@ -8,8 +8,8 @@ use std::path::{Path, PathBuf};
 
 use serde::Serialize;
 
+use crate::failure::Failure;
 use crate::shared_options::ParamArgs;
-use crate::Failure;
 
 mod convert_stops;
 

@@ -10,8 +10,8 @@ use std::time::Duration;
 
 use convert::{BatchOptions, ConvertOptions, EgoChoice, GoalOptions, JsonReport, OutputFormat, ScenarioReport, Stage, Table};
 
+use crate::failure::Failure;
 use crate::shared_options::{CommonRoadArgs, RunArgs};
-use crate::Failure;
 
 #[derive(clap::Args)]
 pub(crate) struct ConvertArgs {

@@ -7,7 +7,7 @@ use std::path::PathBuf;
 
 use export::{BatchOptions, EgoController, ExportOptions, OscVersion, Report, Status};
 
-use crate::Failure;
+use crate::failure::Failure;
 
 pub(crate) const ABOUT: &str = "Export CommonRoad scenarios as OpenSCENARIO + OpenDRIVE, for OpenSCENARIO simulators (esmini, CARLA, …) to replay.
 

@@ -2,8 +2,8 @@
 //! properties, the storyboard outline, parameters with their final values, warnings — as text
 //! or JSON. Distribution files show their run count and first runs; catalogs their entries.
 
+use crate::failure::Failure;
 use crate::shared_options::ParamArgs;
-use crate::Failure;
 use openscenario::{
     Action, CatalogEntry, CatalogFile, Condition, ConditionKind, Content, Diagnostic, Distribution, Entity, EntityObject, LoadOptions, Scenario, Trigger,
 };

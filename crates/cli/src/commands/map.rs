@@ -2,7 +2,7 @@
 //! `--country` and `--date` mean what they mean to `convert`: the scenario's country (benchmark
 //! id and the sign catalogue of signals that name none) and the header's date.
 
-use crate::Failure;
+use crate::failure::Failure;
 use std::path::PathBuf;
 
 #[derive(clap::Args)]

@@ -5,8 +5,8 @@
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
+use crate::failure::Failure;
 use crate::shared_options::RunArgs;
-use crate::Failure;
 
 #[derive(clap::Args)]
 pub(crate) struct RenderArgs {

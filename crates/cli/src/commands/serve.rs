@@ -9,8 +9,8 @@ use std::path::PathBuf;
 use convert::{ConvertOptions, EgoChoice, Stage};
 use udp::{Listening, Observer, Pace, Rejection, ServeOptions};
 
+use crate::failure::Failure;
 use crate::shared_options::{CommonRoadArgs, RunArgs};
-use crate::Failure;
 
 pub(crate) const ABOUT: &str = "\
 Run a scenario whose UDPDriverController entities are driven over UDP by clients written for \

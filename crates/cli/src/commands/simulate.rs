@@ -2,8 +2,8 @@
 //! in `--trace`'s help; esmini's `--csv_logger` has the same quantities), optionally the
 //! storyboard events; warnings go to stderr with -v.
 
+use crate::failure::Failure;
 use crate::shared_options::RunArgs;
-use crate::Failure;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 

@@ -123,3 +123,44 @@ pub(crate) fn convert_and_clean(dir: &Path, name: &str) -> (convert::Conversion,
     assert!(conversion.result.is_ok(), "{:?}", conversion.result.err());
     (conversion, model.expect("model kept"))
 }
+
+/// A vehicle on lane `lane` of road 1 at `s`, driving at `speed` from the start (an Init
+/// `Private`: teleport and a step speed change).
+pub(crate) fn place(entity: &str, s: f64, lane: i32, speed: f64) -> String {
+    format!(
+        r#"<Private entityRef="{entity}"><PrivateAction><TeleportAction><Position><LanePosition roadId="1" laneId="{lane}" offset="0" s="{s}"/></Position></TeleportAction></PrivateAction>
+<PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="step" dynamicsDimension="time" value="0"/><SpeedActionTarget><AbsoluteTargetSpeed value="{speed}"/></SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction></Private>"#
+    )
+}
+
+/// An event named `event` whose one action `action` does `body` (a `GlobalAction`'s content)
+/// once the simulation time reaches `t`.
+pub(crate) fn global_event_at(event: &str, action: &str, t: f64, body: &str) -> String {
+    format!(
+        r#"<Event name="{event}" priority="parallel"><Action name="{action}"><GlobalAction>{body}</GlobalAction></Action>
+<StartTrigger><ConditionGroup><Condition name="t" delay="0" conditionEdge="none"><ByValueCondition><SimulationTimeCondition value="{t}" rule="greaterOrEqual"/></ByValueCondition></Condition></ConditionGroup></StartTrigger></Event>"#
+    )
+}
+
+/// An OpenSCENARIO 1.1 scenario on the road file `xodr`: the ScenarioObjects `entities`, the
+/// Init actions `init`, one maneuver acted by Ego holding `events` (started at 0 s), and the
+/// stop once the simulation time is `rule` (`greaterThan`, `greaterOrEqual`) `stop`.
+pub(crate) fn one_maneuver_scenario(description: &str, xodr: &str, entities: &str, init: &str, events: &str, rule: &str, stop: f64) -> String {
+    format!(
+        r#"<?xml version="1.0" encoding="UTF-8"?>
+<OpenSCENARIO>
+<FileHeader revMajor="1" revMinor="1" date="2024-01-01T00:00:00" description="{description}" author="osc2cr"/>
+<ParameterDeclarations/>
+<CatalogLocations/>
+<RoadNetwork><LogicFile filepath="{xodr}"/></RoadNetwork>
+<Entities>{entities}</Entities>
+<Storyboard>
+<Init><Actions>{init}</Actions></Init>
+<Story name="S"><Act name="A"><ManeuverGroup maximumExecutionCount="1" name="G"><Actors selectTriggeringEntities="false"><EntityRef entityRef="Ego"/></Actors>
+<Maneuver name="M">{events}</Maneuver></ManeuverGroup>
+<StartTrigger><ConditionGroup><Condition name="go" delay="0" conditionEdge="none"><ByValueCondition><SimulationTimeCondition value="0" rule="greaterOrEqual"/></ByValueCondition></Condition></ConditionGroup></StartTrigger></Act></Story>
+<StopTrigger><ConditionGroup><Condition name="end" delay="0" conditionEdge="none"><ByValueCondition><SimulationTimeCondition value="{stop}" rule="{rule}"/></ByValueCondition></Condition></ConditionGroup></StopTrigger>
+</Storyboard>
+</OpenSCENARIO>"#
+    )
+}

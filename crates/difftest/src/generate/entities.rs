@@ -2,43 +2,8 @@
 //! hitch), trucks, bicycles, trailers, pedestrians and misc objects, each with the bounding box
 //! and performance esmini needs, in the order the 1.3 schema gives.
 
+use super::entity_kind::EntityKind;
 use super::Gen;
-
-/// The kind of an entity.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum EntityKind {
-    Car,
-    Truck,
-    Bicycle,
-    Pedestrian,
-    Misc,
-    Trailer,
-}
-
-impl EntityKind {
-    /// Its name prefix and feature label.
-    pub fn label(self) -> &'static str {
-        match self {
-            EntityKind::Car => "car",
-            EntityKind::Truck => "truck",
-            EntityKind::Bicycle => "bicycle",
-            EntityKind::Pedestrian => "pedestrian",
-            EntityKind::Misc => "misc",
-            EntityKind::Trailer => "trailer",
-        }
-    }
-    /// Length of its bounding box, m.
-    pub fn length(self) -> f64 {
-        match self {
-            EntityKind::Car => 5.04,
-            EntityKind::Truck => 8.5,
-            EntityKind::Bicycle => 1.9,
-            EntityKind::Pedestrian => 0.6,
-            EntityKind::Misc => 2.0,
-            EntityKind::Trailer => 4.5,
-        }
-    }
-}
 
 fn bounding_box(cx: f64, w: f64, l: f64, h: f64) -> String {
     format!(r#"<BoundingBox><Center x="{cx}" y="0" z="{}"/><Dimensions width="{w}" length="{l}" height="{h}"/></BoundingBox>"#, h / 2.0)

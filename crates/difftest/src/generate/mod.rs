@@ -7,7 +7,7 @@
 //! Determinism: every random choice comes from a ChaCha8 generator seeded with the seed and
 //! set to the scenario's index as its stream, so scenario `i` of a seed is always the same
 //! bytes, whatever else is generated. Each file holds one idea: `maps`/`map_text`/`lanes` the
-//! maps and what is known of them, `entities`, `positions`, `routes`, `trajectories`,
+//! maps and what is known of them, `entity_kind`/`entities`, `positions`, `routes`, `trajectories`,
 //! `actions`/`global_actions`, `conditions`, `controllers`, and `storyboard`, which puts a
 //! scenario together. A scenario's features (`action:SpeedAction`, `init:RoutePosition`,
 //! `controller:ACCController/override`, …) name what it exercises; the report tallies
@@ -17,6 +17,7 @@ mod actions;
 mod conditions;
 mod controllers;
 mod entities;
+mod entity_kind;
 mod global_actions;
 pub mod lanes;
 pub mod map_text;
@@ -31,7 +32,7 @@ use std::collections::BTreeSet;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
-pub use entities::EntityKind;
+pub use entity_kind::EntityKind;
 use lanes::Place;
 use maps::MapChoice;
 

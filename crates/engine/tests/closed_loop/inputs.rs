@@ -224,11 +224,7 @@ fn overridden_by_an_outside_driver() -> String {
         lane_pos(50.0, -1),
         speed_action("step", "time", 0.0, 10.0)
     );
-    let target = format!(
-        r#"<Private entityRef="Target"><PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction>{}</Private>"#,
-        lane_pos(200.0, -1),
-        speed_action("step", "time", 0.0, 5.0)
-    );
+    let target = placed_in_one_private("Target", 200.0, -1, 5.0);
     let init = format!("{ego}{target}");
     let hop = event(
         "Hop",
@@ -281,11 +277,7 @@ fn esmini_overrides_the_actions_of_an_entity_driven_from_outside() {
 /// Target, with an ACC (set speed 20 m/s, time gap 1 s) activated in the Init, follows Ego in
 /// lane −1; Ego, driven from outside, drives at 15 m/s and stops hard at 3 s.
 fn acc_behind_ego() -> String {
-    let ego = format!(
-        r#"<Private entityRef="Ego"><PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction>{}</Private>"#,
-        lane_pos(100.0, -1),
-        speed_action("step", "time", 0.0, 15.0)
-    );
+    let ego = placed_in_one_private("Ego", 100.0, -1, 15.0);
     let target = format!(
         r#"<Private entityRef="Target"><PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction>{}<PrivateAction><ControllerAction><ActivateControllerAction longitudinal="true" lateral="false"/></ControllerAction></PrivateAction></Private>"#,
         lane_pos(60.0, -1),

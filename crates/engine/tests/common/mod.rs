@@ -74,6 +74,16 @@ pub(crate) fn placed(entity: &str, s: f64, lane: i32, speed: f64) -> String {
     format!("{}{}", teleport(entity, s, lane), init_speed(entity, "step", "time", 0.0, speed))
 }
 
+/// As [`placed`], in one `Private` element (esmini refuses a second one for the same entity
+/// where a test puts it beside its other Init actions).
+pub(crate) fn placed_in_one_private(entity: &str, s: f64, lane: i32, speed: f64) -> String {
+    format!(
+        r#"<Private entityRef="{entity}"><PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction>{}</Private>"#,
+        lane_pos(s, lane),
+        speed_action("step", "time", 0.0, speed)
+    )
+}
+
 /// The stop trigger's condition group: simulated time past `t`.
 pub(crate) fn stop_at(t: f64) -> String {
     format!("<ConditionGroup>{}</ConditionGroup>", sim_time(t, "greaterThan", "none", 0.0))

@@ -6,17 +6,10 @@
 //! these tests (`esmini_run_one.py … --max_time 12`), as noted at each number.
 
 use crate::common::*;
-use engine::{Run, Settings};
+use engine::Run;
 
 fn run_fixture(name: &str) -> Run {
     run_fixture_on(name, "two_roads.xodr", 12.0)
-}
-
-fn run_fixture_on(name: &str, roads: &str, max_time: f64) -> Run {
-    let loaded = openscenario::load(&fixtures().join(name), &Default::default()).expect("fixture scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join(roads)).expect("fixture road loads").network;
-    engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time }).expect("simulate")
 }
 
 #[test]

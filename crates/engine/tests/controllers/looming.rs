@@ -9,10 +9,7 @@ use crate::common::*;
 use engine::{Run, Settings};
 
 fn run_fixture() -> Run {
-    let loaded = openscenario::load(&fixtures().join("looming_straight.xosc"), &Default::default()).expect("fixture scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("straight.xodr")).expect("fixture road loads").network;
-    engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 20.0 }).expect("simulate")
+    run_straight_fixture("looming_straight.xosc", 20.0)
 }
 
 #[test]

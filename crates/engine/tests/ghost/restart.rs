@@ -35,6 +35,18 @@ fn reach() -> String {
     r#"<Condition name="reach" delay="0" conditionEdge="none"><ByEntityCondition><TriggeringEntities triggeringEntitiesRule="any"><EntityRef entityRef="Ego"/></TriggeringEntities><EntityCondition><ReachPositionCondition tolerance="1.0"><Position><LanePosition roadId="1" laneId="-1" s="60" offset="0"/></Position></ReachPositionCondition></EntityCondition></ByEntityCondition></Condition>"#.to_string()
 }
 
+/// The ghost scenario with `Drift` started when the Ego is within 240 m of s = 300 and a second
+/// event, `Drift2` (the ghost 0.5 m right), when it is within 215 m: both restart the ghost.
+fn two_restarts() -> String {
+    let drift2 = event(
+        "Drift2",
+        "parallel",
+        r#"<PrivateAction><LateralAction><LaneOffsetAction continuous="false"><LaneOffsetActionDynamics maxLateralAcc="2" dynamicsShape="cubic"/><LaneOffsetTarget><AbsoluteTargetLaneOffset value="-0.5"/></LaneOffsetTarget></LaneOffsetAction></LateralAction></PrivateAction>"#,
+        &format!("<StartTrigger>{}</StartTrigger>", group(&near(215.0).replace("name=\"near\"", "name=\"near2\""))),
+    );
+    ghost_scenario(&group(&near(240.0))).replacen("</Event></Maneuver>", &format!("</Event>{drift2}</Maneuver>"), 1)
+}
+
 fn restart_notes(run: &engine::Run) -> Vec<String> {
     run.warnings.iter().map(|w| w.to_string()).filter(|w| w.contains("started after time 0, where esmini restarts the ghost")).collect()
 }
@@ -117,13 +129,7 @@ fn a_later_restart_makes_completed_restart_events_ready_again() {
     // the first rewound step (1.52 s) and restarts the ghost once more, which resets `Drift2`:
     // time goes back from 1.02 s to -0.97 s, from 3.52 s to 1.53 s and at once from 1.53 s to
     // -0.46 s, and each event's action runs three times.
-    let drift2 = event(
-        "Drift2",
-        "parallel",
-        r#"<PrivateAction><LateralAction><LaneOffsetAction continuous="false"><LaneOffsetActionDynamics maxLateralAcc="2" dynamicsShape="cubic"/><LaneOffsetTarget><AbsoluteTargetLaneOffset value="-0.5"/></LaneOffsetTarget></LaneOffsetAction></LateralAction></PrivateAction>"#,
-        &format!("<StartTrigger>{}</StartTrigger>", group(&near(215.0).replace("name=\"near\"", "name=\"near2\""))),
-    );
-    let text = ghost_scenario(&group(&near(240.0))).replacen("</Event></Maneuver>", &format!("</Event>{drift2}</Maneuver>"), 1);
+    let text = two_restarts();
     let run = run(&text);
     let replays: Vec<(f64, usize)> = run.trace.replays.iter().map(|r| (r.start, r.rows.len())).collect();
     assert_eq!(replays.len(), 3, "{replays:?}");
@@ -165,14 +171,7 @@ fn restarts_that_never_stop_rewinding_end_the_run_with_a_warning() {
     // which restarts the ghost again before the rewound time catches up. esmini runs on
     // forever (killed after a million frames still at -0.5 s); osc2cr caps the rewound frames
     // at ten per step of the run and ends it, saying so.
-    let drift2 = event(
-        "Drift2",
-        "parallel",
-        r#"<PrivateAction><LateralAction><LaneOffsetAction continuous="false"><LaneOffsetActionDynamics maxLateralAcc="2" dynamicsShape="cubic"/><LaneOffsetTarget><AbsoluteTargetLaneOffset value="-0.5"/></LaneOffsetTarget></LaneOffsetAction></LateralAction></PrivateAction>"#,
-        &format!("<StartTrigger>{}</StartTrigger>", group(&near(215.0).replace("name=\"near\"", "name=\"near2\""))),
-    );
-    let text = ghost_scenario(&group(&near(240.0)))
-        .replacen("</Event></Maneuver>", &format!("</Event>{drift2}</Maneuver>"), 1)
+    let text = two_restarts()
         .replace(r#"<Event name="Drift" priority="overwrite">"#, r#"<Event name="Drift" priority="overwrite" maximumExecutionCount="100000">"#)
         .replace(r#"<Event name="Drift2" priority="parallel">"#, r#"<Event name="Drift2" priority="parallel" maximumExecutionCount="100000">"#);
     let run = run(&text);

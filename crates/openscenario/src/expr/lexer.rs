@@ -1,6 +1,6 @@
 //! Tokenizer for expressions.
 
-use super::ExprError;
+use super::error::ExprError;
 
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) enum Tok {

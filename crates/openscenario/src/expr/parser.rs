@@ -12,9 +12,10 @@
 //! primary := number | true | false | $name | name '(' args ')' | '(' or ')'
 //! ```
 
+use super::error::ExprError;
 use super::functions;
 use super::lexer::{tokenize, Spanned, Tok};
-use super::{ExprError, ExprValue};
+use super::value::ExprValue;
 
 /// Deepest nesting of parentheses / unary operators accepted.
 const MAX_DEPTH: usize = 100;

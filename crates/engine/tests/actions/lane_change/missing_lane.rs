@@ -12,12 +12,7 @@ use crate::common::*;
 fn scenario() -> String {
     let change = r#"<PrivateAction><LateralAction><LaneChangeAction><LaneChangeActionDynamics dynamicsShape="linear" value="2" dynamicsDimension="time"/><LaneChangeTarget><RelativeTargetLane entityRef="Ego" value="-1"/></LaneChangeTarget></LaneChangeAction></LateralAction></PrivateAction>"#;
     xosc(
-        &format!(
-            r#"<Private entityRef="Ego"><PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction>{}</Private>{}"#,
-            lane_pos(50.0, -2),
-            speed_action("step", "time", 0.0, 10.0),
-            teleport("Target", 300.0, -1)
-        ),
+        &format!("{}{}", placed_in_one_private("Ego", 50.0, -2, 10.0), teleport("Target", 300.0, -1)),
         &story("Ego", &event("Change", "parallel", change, &trigger(&sim_time(1.0, "greaterOrEqual", "none", 0.0)))),
         &stop_at(4.0),
     )

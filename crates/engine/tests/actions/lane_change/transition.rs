@@ -12,12 +12,7 @@ fn lane_change(shape: &str, dim: &str, value: f64, lane: i32, offset: f64) -> St
 
 fn run_change(action: &str, stop: f64) -> engine::Run {
     // One Private element per entity: esmini refuses a second one for the same entity.
-    let init = format!(
-        r#"<Private entityRef="Ego"><PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction>{}</Private>{}"#,
-        lane_pos(10.0, -1),
-        speed_action("step", "time", 0.0, 10.0),
-        teleport("Target", 500.0, 1)
-    );
+    let init = format!("{}{}", placed_in_one_private("Ego", 10.0, -1, 10.0), teleport("Target", 500.0, 1));
     let stories = story("Ego", &event("LC", "overwrite", action, &trigger(&sim_time(1.0, "greaterThan", "none", 0.0))));
     let stop = stop_at(stop);
     run(&xosc(&init, &stories, &stop))

@@ -36,12 +36,7 @@ fn a_non_continuous_relative_target_follows_the_reference_until_reached() {
     // the start). Hand-worked on the 0.01 s grid: Ego reaches at step 334 or 333 (whichever
     // order the two actions take), at the Target's speed then, 16.66..16.68 m/s.
     // One Private element per entity: esmini refuses a second one for the same entity.
-    let init = format!(
-        r#"{}<Private entityRef="Target"><PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction>{}</Private>"#,
-        teleport("Ego", 10.0, -1),
-        lane_pos(10.0, -2),
-        speed_action("step", "time", 0.0, 10.0)
-    );
+    let init = format!("{}{}", teleport("Ego", 10.0, -1), placed_in_one_private("Target", 10.0, -2, 10.0));
     let stories = two_groups(&speed_action("linear", "rate", 2.0, 20.0), 1.0, &relative_speed("Target", "linear", "rate", 5.0, false), 1.0);
     let text = xosc(&init, &stories, &stop_at(10.0));
     let run = run(&text);

@@ -6,14 +6,10 @@
 //! esmini 3.6.0 on the same fixture (`esmini_run_one.py … --max_time 8`).
 
 use crate::common::*;
-use engine::Settings;
 
 #[test]
 fn a_step_speed_action_with_a_time_span_ends_at_once() {
-    let loaded = openscenario::load(&fixtures().join("speed_step_with_time.xosc"), &Default::default()).expect("fixture scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("straight.xodr")).expect("fixture road loads").network;
-    let run = engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 8.0 }).expect("simulate");
+    let run = run_straight_fixture("speed_step_with_time.xosc", 8.0);
     assert!(run.warnings.is_empty(), "{:?}", run.warnings);
     // esmini: 20 m/s at 1.02 s; the step action completes at 1.01 s, so the slowing starts at
     // 1.02 s: 19.98 m/s at 1.03 s (x 20.4998), 18.04 at 2.0 s, 12.0 from 5.01 s (x 96.02 at 6 s).

@@ -8,14 +8,6 @@
 
 use crate::common::*;
 
-fn one_private(entity: &str, s: f64, lane: i32, speed: f64) -> String {
-    format!(
-        r#"<Private entityRef="{entity}"><PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction>{}</Private>"#,
-        lane_pos(s, lane),
-        speed_action("step", "time", 0.0, speed)
-    )
-}
-
 /// Ego at 10 m/s on lane -1 from s = 50: a 4 s lane change to lane -2 from 1 s, a teleport to
 /// lane -1 at s = 300 at 2 s.
 fn teleport_during_lane_change() -> String {
@@ -26,7 +18,7 @@ fn teleport_during_lane_change() -> String {
         event("Change", "parallel", change, &trigger(&sim_time(1.0, "greaterOrEqual", "none", 0.0))),
         event("Hop", "parallel", &hop, &trigger(&sim_time(2.0, "greaterOrEqual", "none", 0.0)))
     );
-    xosc(&format!("{}{}", one_private("Ego", 50.0, -1, 10.0), teleport("Target", 600.0, -2)), &story("Ego", &events), &stop_at(4.0))
+    xosc(&format!("{}{}", placed_in_one_private("Ego", 50.0, -1, 10.0), teleport("Target", 600.0, -2)), &story("Ego", &events), &stop_at(4.0))
 }
 
 /// Ego at 10 m/s on lane -1 at s = 100; Target 20 m ahead on the other side of the road (lane 1,
@@ -36,7 +28,7 @@ fn relative_road_across() -> String {
         r#"<Private entityRef="Target"><PrivateAction><TeleportAction><Position><RelativeRoadPosition entityRef="Ego" ds="20" dt="3.5"/></Position></TeleportAction></PrivateAction>{}</Private>"#,
         speed_action("step", "time", 0.0, 5.0)
     );
-    xosc(&format!("{}{}", one_private("Ego", 100.0, -1, 10.0), target), "", &stop_at(2.0))
+    xosc(&format!("{}{}", placed_in_one_private("Ego", 100.0, -1, 10.0), target), "", &stop_at(2.0))
 }
 
 #[test]

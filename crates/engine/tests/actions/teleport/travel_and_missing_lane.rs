@@ -41,12 +41,7 @@ pub(super) fn teleport_travel_scenario() -> String {
     let stop_car = event("Far", "parallel", &speed_action("step", "time", 0.0, 0.0), &trigger(far));
     xosc(
         // one Private per entity: esmini refuses a second one for the same entity
-        &format!(
-            r#"<Private entityRef="Ego"><PrivateAction><TeleportAction>{}</TeleportAction></PrivateAction>{}</Private>{}"#,
-            lane_pos(0.0, -1),
-            speed_action("step", "time", 0.0, 10.0),
-            teleport("Target", 300.0, -2)
-        ),
+        &format!("{}{}", placed_in_one_private("Ego", 0.0, -1, 10.0), teleport("Target", 300.0, -2)),
         &story("Ego", &format!("{hop}{stop_car}")),
         &stop_at(3.0),
     )

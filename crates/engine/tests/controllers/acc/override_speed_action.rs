@@ -7,14 +7,10 @@
 //! Expected values: esmini 3.6.0 on the same fixture (`esmini_run_one.py … --max_time 6`).
 
 use crate::common::*;
-use engine::Settings;
 
 #[test]
 fn a_speed_action_ends_at_once_under_an_overriding_acc() {
-    let loaded = openscenario::load(&fixtures().join("acc_override_speed_action.xosc"), &Default::default()).expect("fixture scenario loads");
-    let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = opendrive::load(fixtures().join("straight.xodr")).expect("fixture road loads").network;
-    let run = engine::simulate(&scenario, Some(&net), &Settings { step: 0.01, max_time: 6.0 }).expect("simulate");
+    let run = run_straight_fixture("acc_override_speed_action.xosc", 6.0);
     assert!(run.warnings.is_empty(), "{:?}", run.warnings);
     // esmini's log at 1.01 s: Faster starts and completes, then Hop starts in the same step;
     // Target is at s = 800 from the 1.02 s row, Ego keeps 20 m/s (x 110 at 5 s).
