@@ -18,7 +18,7 @@ use state::AccRt;
 use crate::conditions::distance::between;
 use crate::roads::lane_geometry::lane_center_t;
 use crate::roads::road_distance::road_distance_within;
-use crate::roads::{move_along_s, LanePos, MoveStatus};
+use crate::roads::{move_along_route_drawing, move_along_s, LanePos, MoveStatus};
 use crate::sim::Sim;
 use opendrive::RoadNetwork;
 use openscenario::{Controller, CoordinateSystem, RelativeDistanceType};
@@ -175,16 +175,21 @@ impl<'a> Sim<'a> {
             }
         }
         let net = self.net;
+        let random = &mut self.random;
         let Some(en) = self.entities.get_mut(e) else { return };
         // In override mode esmini's ACC moves the entity along s whether or not an action moved
         // it this step (ControllerACC::Step: MoveAlongS); an action that keeps its own position
         // (a lane change: LatLaneChangeAction::Step restores `internal_pos_`) starts from there
-        // again next step, so the log shows the ACC's move on top.
+        // again next step, so the log shows the ACC's move on top. That move is Object::MoveAlongS,
+        // the default controller's own: it follows an assigned route (Position::MoveAlongS with
+        // updateRoute, MoveRouteDS) and takes a junction arm by the object's drawn selector angle.
         if a.override_mode {
             let (x0, y0) = (en.x, en.y);
             match (net, en.lane) {
                 (Some(net), Some(mut lp)) => {
-                    a.at_end = move_along_s(net, &mut lp, a.current_speed * dt) == MoveStatus::EndOfRoad;
+                    let pedestrian = en.kind == crate::entities::EntityKind::Pedestrian;
+                    let status = move_along_route_drawing(net, &mut lp, a.current_speed * dt, en.route.as_deref(), random, pedestrian);
+                    a.at_end = status == MoveStatus::EndOfRoad;
                     en.set_lane_pos(net, lp);
                 }
                 _ => {
