@@ -4,6 +4,7 @@
 //! stand-still, off-road and end-of-road conditions are updated.
 
 use crate::dynamics::SMALL;
+use crate::ghost::state::GhostMode;
 use crate::roads::road_follow::wrap;
 use crate::roads::{move_along_route_drawing, MoveStatus};
 use crate::sim::Sim;
@@ -68,10 +69,21 @@ impl<'a> Sim<'a> {
     /// Update derived quantities after the moves of a step of length `dt`.
     pub(crate) fn after_move(&mut self, before: &[Before], dt: f64) {
         let time = self.time;
-        for (en, b) in self.entities.iter_mut().zip(before) {
+        // ScenarioEngine::prepareStep measures no motion of a ghost restarted in this step
+        // (RESTART mode): no odometer, rates or stored old state, so the next step measures
+        // the jump back to its entity as travel (its odometer counts it) — `snapshot` in
+        // `run.rs` keeps the ghost's state from before this step.
+        let restarted = self.ghost.as_mut().and_then(|g| {
+            g.unmeasured = g.mode == GhostMode::Restart;
+            g.unmeasured.then_some(g.entity)
+        });
+        for (i, (en, b)) in self.entities.iter_mut().zip(before).enumerate() {
             let (dx, dy) = (en.x - b.x, en.y - b.y);
             let old_vel = en.vel;
-            if en.appeared {
+            if restarted == Some(i) {
+                // The dirty bits are cleared all the same: the teleport does not carry over.
+                en.teleported = false;
+            } else if en.appeared {
                 // Just added: where it was before (deleted, or never placed) says nothing
                 // about its motion.
                 en.appeared = false;

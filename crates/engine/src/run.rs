@@ -339,7 +339,12 @@ fn storyboard_step(sim: &mut Sim, dt: f64) {
 }
 
 fn snapshot(sim: &Sim, before: &mut [Before]) {
-    for (b, e) in before.iter_mut().zip(&sim.entities) {
+    // A ghost restarted in the last step keeps its state from before it (`Sim::after_move`).
+    let unmeasured = sim.ghost.as_ref().and_then(|g| g.unmeasured.then_some(g.entity));
+    for (i, (b, e)) in before.iter_mut().zip(&sim.entities).enumerate() {
+        if unmeasured == Some(i) {
+            continue;
+        }
         *b = Before { x: e.x, y: e.y, h: e.h, speed: e.speed };
     }
 }

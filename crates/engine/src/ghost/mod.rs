@@ -135,6 +135,7 @@ impl<'a> Sim<'a> {
             mode,
             restart_events,
             start_shift: 0.0,
+            unmeasured: false,
         });
     }
 

@@ -24,6 +24,10 @@ pub(crate) struct Ghost {
     /// While the actions of an event start after its added teleport: how much earlier they
     /// start (esmini's `Event::Start` passes them the time less the head start).
     pub start_shift: f64,
+    /// The ghost was restarted in the last step and its motion then not measured (esmini's
+    /// `ScenarioEngine::prepareStep` skips the ghost in RESTART mode): its state before that
+    /// step stays the one to measure the next step's move from.
+    pub unmeasured: bool,
 }
 
 /// esmini's ghost modes: `Restart` for the rest of the step in which the ghost was sent back to

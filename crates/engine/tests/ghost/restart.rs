@@ -181,3 +181,29 @@ fn restarts_that_never_stop_rewinding_end_the_run_with_a_warning() {
     assert_eq!(ended.len(), 1, "{:?}", run.warnings);
     assert!(ended[0].contains("test.xosc:"), "{}", ended[0]);
 }
+
+/// The ghost scenario with a second event, `Faster` (the ghost to 20 m/s at once), started when
+/// the ghost has travelled 100 m (a traveled-distance condition handed to the ghost).
+fn travelled_after_restart() -> String {
+    let faster = event(
+        "Faster",
+        "parallel",
+        &speed_action("step", "time", 0.0, 20.0),
+        r#"<StartTrigger><ConditionGroup><Condition name="far" delay="0" conditionEdge="none"><ByEntityCondition><TriggeringEntities triggeringEntitiesRule="any"><EntityRef entityRef="Ego"/></TriggeringEntities><EntityCondition><TraveledDistanceCondition value="100"/></EntityCondition></ByEntityCondition></Condition></ConditionGroup></StartTrigger>"#,
+    );
+    ghost_scenario(&group(&near(240.0))).replacen("</Event></Maneuver>", &format!("</Event>{faster}</Maneuver>"), 1).replace(&stop_at(5.0), &stop_at(8.0))
+}
+
+#[test]
+fn a_restart_counts_the_ghosts_jump_back_as_travel() {
+    // esmini's ScenarioEngine::prepareStep measures nothing of the ghost in the step of its
+    // restart (RESTART mode) and keeps its old state, so the first rewound step adds the jump
+    // from 80.0 m back to the Ego (60.2 m) to the ghost's odometer. esmini 3.6.0 starts
+    // `Faster` at 4.03 s (without that jump it would be about 2 s later): the ghost is at
+    // 109.9 m at 4 s and at 119.6 m at 4.5 s, at 20 m/s.
+    let run = run(&travelled_after_restart());
+    let started = event_time(&run, "Faster", "start").expect("Faster starts");
+    assert!(close(started, 4.03, 1e-6), "{started}");
+    let ghost = at(&run, "Ego_ghost", 4.5);
+    assert!(near_xy(ghost, 119.6, -1.25) && close(ghost.speed, 20.0, 1e-9), "{:?} {}", xy(ghost), ghost.speed);
+}
