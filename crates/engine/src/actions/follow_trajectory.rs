@@ -24,7 +24,13 @@ impl FollowTrajectoryRt {
             // saying "Requested time … outside range": an offset that puts the time before the
             // first stamp parks the entity at the far end until the time comes in range.
             _ if self.end_outside_times && self.path.time_range().is_some_and(|(a, b)| !(t >= a && t <= b)) => Some(self.path.length()),
-            _ => self.path.s_at_time(t),
+            // esmini's ClothoidShape::Evaluate takes the start time off twice: with a start time
+            // above zero the entity waits at the path's start (Spiral::EvaluateDS clamps) until
+            // the time reaches twice the start time, and the stop time comes before the end.
+            _ => match self.clothoid_times.filter(|(a, b)| b - a > 0.0) {
+                Some((a, b)) => Some(self.path.length() * (t - 2.0 * a) / (b - a)),
+                None => self.path.s_at_time(t),
+            },
         }
     }
 }
@@ -196,6 +202,10 @@ impl<'a> Sim<'a> {
 
         let clock = esmini_clock(self.time_origin(), self.dt, self.time);
         let end_outside_times = matches!(traj.shape, openscenario::Shape::Clothoid { .. } | openscenario::Shape::ClothoidSpline { .. });
+        let clothoid_times = match (&traj.shape, path.time_range()) {
+            (openscenario::Shape::Clothoid { .. }, Some(r)) => Some(r),
+            _ => None,
+        };
         ActionRt::FollowTrajectory(Box::new(FollowTrajectoryRt {
             path,
             s,
@@ -206,6 +216,7 @@ impl<'a> Sim<'a> {
             heading_sign: speed_sign,
             elevated: elevated(traj),
             end_outside_times,
+            clothoid_times,
         }))
     }
 
@@ -247,7 +258,13 @@ impl<'a> Sim<'a> {
                     TimeDomain::Absolute => f.time,
                 };
                 if dt > SMALL && reached < end + SMALL {
-                    new_speed = (f.s - old_s).abs() / dt;
+                    // Relative timing takes the speed's sign from the way s moved (esmini's
+                    // movingDirection_ = SIGN(Δs)); absolute timing keeps it positive.
+                    let sign = match m.domain {
+                        TimeDomain::Relative => esmini_sign(f.s - old_s),
+                        TimeDomain::Absolute => 1.0,
+                    };
+                    new_speed = sign * (f.s - old_s).abs() / dt;
                 }
             }
         }
@@ -262,7 +279,9 @@ impl<'a> Sim<'a> {
         };
         // A timed path that ends leaves the entity at its end, also when it is marked closed.
         let at_end = done && f.timing.is_some() && f.path.is_closed() && f.s >= len - SMALL;
-        let p = if at_end { f.path.end_pose() } else { f.path.pose_at(f.s) };
+        // A clothoid's s may run below zero (clothoid_times); its pose stays at the start.
+        let pose_s = if f.clothoid_times.is_some() { f.s.clamp(0.0, len) } else { f.s };
+        let p = if at_end { f.path.end_pose() } else { f.path.pose_at(pose_s) };
         let (mut x, mut y) = (p.x, p.y);
         // The entity keeps facing the way it faced at the start (esmini's Move: turned by π
         // while the initial heading sign is negative), whatever the speed's sign now.

@@ -27,4 +27,8 @@ pub(crate) struct FollowTrajectoryRt {
     /// A clothoid or clothoid spline: a trajectory time outside its stamps' range puts the
     /// entity at the path's end (esmini's ClothoidShape and ClothoidSplineShape::Evaluate).
     pub end_outside_times: bool,
+    /// A single Clothoid shape with its (startTime, stopTime): esmini's ClothoidShape::Evaluate
+    /// maps a time in range to s = length · (t − 2·start) / (stop − start) (the start time
+    /// taken off twice), kept unclamped for the speed while the pose is clamped to the path.
+    pub clothoid_times: Option<(f64, f64)>,
 }

@@ -1,5 +1,6 @@
 //! FollowTrajectoryAction, forwards and backwards.
 
+mod clothoid_start_time;
 mod follow;
 mod nurbs_headings;
 mod reverse;
