@@ -170,9 +170,6 @@ impl Entity {
         self.set_world_snapping(net, x, y, z, h, sidewalks);
     }
 
-    /// [`Entity::set_world`] with the lane types given: a teleport copies the location of a
-    /// position of its own, which snaps to driving lanes only, whatever the entity (esmini's
-    /// TeleportAction: Position::CopyLocation).
     /// Where esmini leaves an entity whose position it could not set: the origin, heading 0,
     /// on no road (`roadless`). Its first move from there already fails at the road's end
     /// (frame 0 for the Init), so the next step stops it (motion.rs).
@@ -186,6 +183,9 @@ impl Entity {
         self.teleported = true;
     }
 
+    /// [`Entity::set_world`] with the lane types given: a teleport copies the location of a
+    /// position of its own, which snaps to driving lanes only, whatever the entity (esmini's
+    /// TeleportAction: Position::CopyLocation).
     pub(crate) fn set_world_snapping(&mut self, net: Option<&RoadNetwork>, x: f64, y: f64, z: Option<f64>, h: f64, sidewalks: bool) {
         self.x = x;
         self.y = y;

@@ -166,18 +166,16 @@ impl<'a> Sim<'a> {
 
     /// Whether any active controller of entity `e` holds its longitudinal domain in override mode:
     /// esmini's `Object::IsControllerModeOnDomains(MODE_OVERRIDE, DOMAIN_MASK_LONG)` over every
-    /// controller type (an ACC/ALKS in override mode, Looming and NaturalDriver unless additive,
-    /// ALKS R157 activated longitudinally unless additive, an OffroadFollower, a FollowReference
-    /// following an entity, FollowRoute during its lane change, an entity driven from outside).
-    /// `longitudinal_overridden` is the narrower set a SpeedAction is ended under so far.
+    /// controller type: `longitudinal_overridden`'s set (the one a SpeedAction is ended under so
+    /// far: ACC/ALKS, Looming, ALKS R157, OffroadFollower, FollowRoute during its lane change, an
+    /// entity driven from outside) and besides a NaturalDriver unless additive and a
+    /// FollowReference following an entity.
     pub(crate) fn long_domain_overridden(&self, e: usize) -> bool {
         if self.longitudinal_overridden(e) {
             return true;
         }
         match self.controllers.get(e) {
-            Some(Some(ControllerRt::Looming(l))) => l.active && l.override_mode,
             Some(Some(ControllerRt::NaturalDriver(n))) => n.active && n.override_mode,
-            Some(Some(ControllerRt::AlksR157(a))) => a.active && a.override_mode && a.longitudinal,
             Some(Some(ControllerRt::FollowReference(f))) => f.active && !f.uses_ghost(),
             _ => false,
         }
