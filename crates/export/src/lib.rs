@@ -44,6 +44,7 @@ mod options;
 mod report;
 mod scenario;
 mod source;
+mod traj_filter;
 mod trajectory;
 mod xml;
 

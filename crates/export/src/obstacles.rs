@@ -2,7 +2,8 @@
 //! follows its trajectory ([`crate::trajectory`]); one present from time 0 is placed and set
 //! going by the Init, one that appears later is added by a story event, and one that leaves
 //! before the end is deleted by another. Static and environment obstacles are placed by the
-//! Init and stand.
+//! Init and stand. A trajectory that esmini's filter of close vertices would change is
+//! followed piece by piece ([`crate::trajectory`]): the further pieces are story events.
 //!
 //! Timing of appearance (esmini 3.6.0, `OSCGlobalAction.cpp` and `ScenarioEngine::step`, run
 //! on scenarios written for it): only the entities the Init names exist from the start; an
@@ -67,7 +68,8 @@ fn dynamic(o: &DynamicObstacle, dt: f64, end_step: u64, version: OscVersion, war
     let first = states[0];
     let last = states[states.len() - 1];
     let (x, y) = reference(&first, &shape);
-    let moves = (states.len() >= 2).then(|| follow(&entity.name, &states, &shape, dt, version));
+    let mut pieces = if states.len() >= 2 { follow(&entity.name, &states, &shape, dt, version) } else { Vec::new() }.into_iter();
+    let moves = pieces.next().map(|p| p.action);
     let name = entity.name.clone();
     let margin = TIME_MARGIN * dt;
     let (init, mut events) = if first.time_step == 0 {
@@ -80,6 +82,13 @@ fn dynamic(o: &DynamicObstacle, dt: f64, end_step: u64, version: OscVersion, war
         let at = ((first.time_step - 1) as f64 * dt - margin).max(margin);
         (Vec::new(), vec![event(format!("{name}_appears"), actions, at)])
     };
+    // each further piece of the trajectory starts when the time reaches its first state, where
+    // the previous piece ended: in the step after that one ended it moves the entity
+    for (k, p) in pieces.enumerate() {
+        let label = format!("{name}_moves_{}", k + 2);
+        let at = (p.first_step as f64 * dt - margin).max(margin);
+        events.push(event(label, vec![action(format!("{name}_follow_{}", k + 2), p.action)], at));
+    }
     if last.time_step < end_step {
         let at = (last.time_step as f64 * dt - margin).max(margin);
         events.push(event(format!("{name}_leaves"), vec![action(format!("{name}_delete"), delete_entity(&name))], at));

@@ -7,8 +7,8 @@
 //! within 0.10 m of its CommonRoad position at every CommonRoad time step in at least 95 % of
 //! the scenarios. The others are listed with their worst error and run again with esmini's
 //! trajectory filter off (`--traj_filter 0`; by default esmini merges trajectory vertices
-//! within 0.1 m of each other, which is what moves slow or standing road users), which tells
-//! whether the filter is the reason.
+//! within 0.1 m of each other, which the export foresees), which tells whether the filter is
+//! the reason.
 //!
 //! esmini runs on all cores; the wall time is printed (the full set takes a few minutes).
 
@@ -29,7 +29,7 @@ const TOLERANCE: f64 = 0.10;
 const RUN_LIMIT: Duration = Duration::from_secs(600);
 
 /// One esmini run: where each entity was at each logged step (key: the step number).
-struct Log {
+pub(crate) struct Log {
     rows: HashMap<u64, HashMap<String, (f64, f64)>>,
 }
 
@@ -55,7 +55,7 @@ fn parse_csv(text: &str, step: f64) -> Log {
 }
 
 /// Runs esmini on `xosc`: the log, or why it did not run cleanly (exit status, error lines).
-fn run_esmini(esmini: &Path, xosc: &Path, step: f64, extra: &[&str]) -> (Option<Log>, Vec<String>) {
+pub(crate) fn run_esmini(esmini: &Path, xosc: &Path, step: f64, extra: &[&str]) -> (Option<Log>, Vec<String>) {
     let csv = xosc.with_extension(if extra.is_empty() { "csv" } else { "nofilter.csv" });
     let log = xosc.with_extension(if extra.is_empty() { "log" } else { "nofilter.log" });
     let child = Command::new(esmini)
@@ -110,7 +110,7 @@ fn expected(s: &State, shape: &Shape) -> (f64, f64) {
 }
 
 /// Every obstacle's expected positions: (entity, step in esmini steps, x, y).
-fn expectations(s: &Scenario, steps_per_dt: u64) -> Vec<(String, u64, f64, f64)> {
+pub(crate) fn expectations(s: &Scenario, steps_per_dt: u64) -> Vec<(String, u64, f64, f64)> {
     let mut out = Vec::new();
     for o in &s.dynamic_obstacles {
         let name = format!("{}_{}", o.obstacle_type.as_str(), o.id);
@@ -144,7 +144,7 @@ impl Outcome {
     }
 }
 
-fn compare(log: &Log, expect: &[(String, u64, f64, f64)]) -> (f64, usize) {
+pub(crate) fn compare(log: &Log, expect: &[(String, u64, f64, f64)]) -> (f64, usize) {
     let mut worst = 0.0f64;
     let mut missing = 0;
     for (name, k, x, y) in expect {

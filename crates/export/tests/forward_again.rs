@@ -1,5 +1,6 @@
 //! Forward again (issue 24): `convert(export(S))` gives S's obstacles — every state within
-//! 0.01 m (0.1 m where esmini's trajectory filter, which the engine reproduces, merged close vertices), matched by name (`<type>_<id>`) — and S's planning problems (their values to the
+//! 0.01 m, matched by name (`<type>_<id>`); esmini's filter of close trajectory vertices, which
+//! the engine reproduces, is foreseen by the export — and S's planning problems (their values to the
 //! carrier's 6 decimals; goal lanelets, which the map round trip renumbers, as lanelets of the
 //! converted map inside S's goal lanelets). On every scenario of both acceptance sets that has
 //! something to convert (a scenario with neither planning problem nor obstacle has no ego and
@@ -14,8 +15,6 @@ use commonroad::{GoalPosition, LaneletNetwork, PlanningProblem, Scenario, State}
 use crate::common::{acceptance_scenarios, export_batch, fresh_dir, short};
 
 const POSITION: f64 = 0.01;
-/// esmini's trajectory filter radius (m, its `--traj_filter` default), plus its SMALL_NUMBER.
-const TRAJ_FILTER: f64 = 0.1 + 1e-6;
 /// The carrier writes 6 decimals (0.5e-6 of rounding).
 const VALUE: f64 = 1e-6;
 
@@ -154,11 +153,6 @@ fn forward(input: &Path, exported: &Result<PathBuf, String>) -> Result<Vec<Strin
     if let Err(f) = conversion.result {
         return Ok(vec![format!("convert fails: {}", f.message)]);
     }
-    // esmini's player merges polyline vertices closer than 0.1 m (its traj_filter), and osc2cr's
-    // engine does as esmini does, saying so: where it did, a slow obstacle's states come back
-    // within that radius rather than within POSITION
-    let filtered = conversion.warnings.iter().any(|w| w.message.contains("(traj_filter)"));
-    let tolerance = if filtered { TRAJ_FILTER } else { POSITION };
     let model = model.ok_or("no model kept")?;
     let got = forward_states(&model);
     let mut d = Vec::new();
@@ -178,7 +172,7 @@ fn forward(input: &Path, exported: &Result<PathBuf, String>) -> Result<Vec<Strin
         }
         // and no state at a step S's obstacle does not have
         let extra = g.keys().filter(|k| !states(o).any(|st| st.time_step == **k)).count();
-        if worst > tolerance || missing > 0 || extra > 0 {
+        if worst > POSITION || missing > 0 || extra > 0 {
             d.push(format!("{name}: worst {worst:.4} m, {missing} states missing, {extra} extra"));
         }
     }
@@ -202,15 +196,8 @@ fn forward(input: &Path, exported: &Result<PathBuf, String>) -> Result<Vec<Strin
             }
         }
     }
-    if filtered {
-        // the difference has the filter's cause: the test tells it apart
-        d.iter_mut().for_each(|x| x.insert_str(0, FILTERED));
-    }
     Ok(d)
 }
-
-/// The mark of a difference in a scenario whose trajectories esmini's filter changed.
-const FILTERED: &str = "[traj_filter] ";
 
 #[test]
 fn convert_of_export_gives_the_obstacles_and_planning_problems_back() {
@@ -252,13 +239,5 @@ fn convert_of_export_gives_the_obstacles_and_planning_problems_back() {
     for s in &skipped {
         eprintln!("  skipped {s}");
     }
-    // what differs beyond the filter's radius is only where the filter merged vertices (the
-    // export writes every CommonRoad state; a slow or standing obstacle's close vertices are
-    // merged by esmini, and by osc2cr as esmini): at most 5 % of the scenarios, each listed
-    let (by_filter, other): (Vec<&String>, Vec<&String>) = failed.iter().partition(|f| f.contains(FILTERED));
-    for f in &by_filter {
-        eprintln!("  differs where esmini's trajectory filter merged vertices: {f}");
-    }
-    assert!(other.is_empty(), "convert(export(S)) differs from S:\n{}", other.iter().map(|s| s.as_str()).collect::<Vec<_>>().join("\n"));
-    assert!(by_filter.len() * 20 <= compared, "{} of {compared} scenarios differ where the trajectory filter merged vertices (more than 5 %)", by_filter.len());
+    assert!(failed.is_empty(), "convert(export(S)) differs from S in {} of {compared}:\n{}", failed.len(), failed.join("\n"));
 }
