@@ -3,7 +3,8 @@
 //!
 //! esmini 3.6.0 thins a polyline trajectory when an action starts following it
 //! (`PolyLineShape::FinalizeVertices` in `RoadManager.cpp`, radius `--traj_filter`, 0.1 m by
-//! default), and osc2cr's engine does as esmini does. With more than two vertices it walks them
+//! default), and osc2cr's engine does as esmini does (`trajectory::filter_vertices`, which the
+//! export runs too). With more than two vertices it walks them
 //! keeping a last kept vertex A: a vertex within the radius of A (plus esmini's `SMALL_NUMBER`,
 //! 1e-6) whose heading is not more than 0.1 rad *below* A's (the heading test is signed) is not
 //! unique. A run of such vertices after A is dropped up to the first unique vertex C, except that
@@ -20,16 +21,8 @@
 //! filtered, so a cut always exists; the cuts are chosen greedily, each piece as long as the
 //! search finds (every piece taken has been checked).
 
-use std::f64::consts::{PI, TAU};
+use trajectory::{filter_vertices, PolylineVertex, Pose};
 
-/// esmini's `SMALL_NUMBER`, added to its thresholds.
-const SMALL: f64 = 1e-6;
-/// esmini's default `--traj_filter` radius, m.
-pub(crate) const RADIUS: f64 = 0.1;
-/// The heading difference below which a close vertex is merged, rad.
-const HEADING: f64 = 0.1;
-/// A run of merged vertices lasting this long (s) or longer keeps its last one: a standstill.
-const STANDSTILL: f64 = 1.0;
 /// How far the filtered piece may put the entity from a state, m: a tenth of the 0.01 m the
 /// forward conversion is held to (the rest is for simulator arithmetic).
 pub(crate) const TOLERANCE: f64 = 1e-3;
@@ -43,66 +36,12 @@ pub(crate) struct Vertex {
     pub h: f64,
 }
 
-/// esmini's signed angle difference `a − b`, in [−π, π].
-fn angle_difference(a: f64, b: f64) -> f64 {
-    let d = (a.rem_euclid(TAU) - b.rem_euclid(TAU)) % TAU;
-    if d < -PI {
-        d + TAU
-    } else if d > PI {
-        d - TAU
-    } else {
-        d
-    }
-}
-
-/// Whether `b` is unique beside the last kept vertex `a` (esmini's `VerticesUnique`).
-fn unique(a: &Vertex, b: &Vertex) -> bool {
-    let d = ((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y)).sqrt();
-    !(d < RADIUS + SMALL && angle_difference(a.h, b.h) < HEADING + SMALL)
-}
-
-/// The vertices esmini keeps of `v` (its walk, step by step).
+/// The vertices esmini keeps of `v`: the walk of osc2cr's engine (`trajectory::filter_vertices`,
+/// esmini's `FinalizeVertices` at the default radius), so that export and engine agree.
 pub(crate) fn filtered(v: &[Vertex]) -> Vec<Vertex> {
-    let mut v = v.to_vec();
-    if v.len() <= 2 {
-        return v;
-    }
-    let (mut a, mut b, mut c) = (0, 1, 2);
-    while c < v.len() {
-        if unique(&v[a], &v[b]) {
-            // B stays, it is the new A
-            a += 1;
-            v[a] = v[b];
-            b += 1;
-            c += 1;
-        } else if !unique(&v[a], &v[c]) {
-            // B and C both close to A: C takes B's place
-            v[b] = v[c];
-            c += 1;
-        } else {
-            if v[c].t - v[a].t < STANDSTILL + SMALL {
-                // B goes, C is the new A
-                a += 1;
-                v[a] = v[c];
-            } else {
-                // a standstill: B moves onto A and stays, then C
-                let (x, y, h) = (v[a].x, v[a].y, v[a].h);
-                v[b] = Vertex { x, y, h, ..v[b] };
-                a += 1;
-                v[a] = v[b];
-                a += 1;
-                v[a] = v[c];
-            }
-            b = c + 1;
-            c += 2;
-        }
-    }
-    if b < v.len() {
-        a += 1;
-        v[a] = v[b];
-    }
-    v.truncate(a + 1);
-    v
+    let resolved: Vec<PolylineVertex> =
+        v.iter().map(|p| PolylineVertex { pose: Pose::new(p.x, p.y, 0.0, p.h), time: Some(p.t), explicit_heading: true, relative: false }).collect();
+    filter_vertices(&resolved).into_iter().map(|p| Vertex { t: p.time.unwrap_or(0.0), x: p.pose.x, y: p.pose.y, h: p.pose.heading }).collect()
 }
 
 /// The greatest distance between each vertex of `v` and where the filtered polyline puts the
@@ -214,11 +153,12 @@ mod tests {
 
     #[test]
     fn the_heading_test_is_signed() {
-        let a = Vertex { t: 0.0, x: 0.0, y: 0.0, h: 1.0 };
-        // close, heading 0.5 rad above A's: merged; 0.5 rad below: unique
-        assert!(!unique(&a, &Vertex { t: 0.1, x: 0.05, y: 0.0, h: 1.5 }));
-        assert!(unique(&a, &Vertex { t: 0.1, x: 0.05, y: 0.0, h: 0.5 }));
-        assert!(!unique(&a, &Vertex { t: 0.1, x: 0.05, y: 0.0, h: 1.0 + TAU }));
+        let at = |t: f64, x: f64, h: f64| Vertex { t, x, y: 0.0, h };
+        // a close vertex whose heading is 0.5 rad above the kept one's is merged; 0.5 rad below, it stays
+        let above = [at(0.0, 0.0, 1.0), at(0.1, 0.05, 1.5), at(0.2, 5.0, 1.5)];
+        assert_eq!(filtered(&above).len(), 2);
+        let below = [at(0.0, 0.0, 1.0), at(0.1, 0.05, 0.5), at(0.2, 5.0, 0.5)];
+        assert_eq!(filtered(&below).len(), 3);
     }
 
     #[test]
