@@ -48,6 +48,10 @@ pub(crate) struct Entity {
     /// Set when an action moved the entity along the road this step (the default controller
     /// then leaves it alone).
     pub moved_by_action: bool,
+    /// Something set the speed this step: a longitudinal action or the default controller
+    /// (esmini's `DirtyBit::SPEED`); without it a standing entity's speed is derived from its
+    /// displacement (`motion.rs`).
+    pub speed_set: bool,
     /// The last move ended at a road end with no continuation (position status).
     pub at_road_end: bool,
     /// Put where esmini leaves a position it could not set (a RoutePosition FromCurrentEntity,
@@ -119,6 +123,7 @@ impl Entity {
             visible: true,
             odometer: 0.0,
             moved_by_action: false,
+            speed_set: false,
             at_road_end: false,
             roadless: false,
             end_of_road: false,

@@ -39,6 +39,8 @@ impl<'a> Sim<'a> {
                 en.at_road_end = true;
                 continue;
             }
+            // ScenarioEngine::defaultController marks the speed as applied.
+            en.speed_set = true;
             match (net, en.lane) {
                 (Some(net), Some(mut lp)) => {
                     // esmini's own move: a junction tie is decided by its generator.
@@ -77,6 +79,19 @@ impl<'a> Sim<'a> {
             g.unmeasured = g.mode == GhostMode::Restart;
             g.unmeasured.then_some(g.entity)
         });
+        // ScenarioEngine::prepareGroundTruth: an entity whose speed nothing set this step gets
+        // the length of its displacement over the step as its speed. The default controller
+        // leaves a standing entity alone (ScenarioEngine::step moves none at |speed| <=
+        // SMALL_NUMBER), so a standing car a lateral action moves sideways takes that sideways
+        // rate as speed and drives off at it from the next step. Trailers get their tow
+        // vehicle's speed, and the entities a controller drives are left to it (most set the
+        // speed in every step).
+        let derives_speed: Vec<bool> = (0..self.entities.len())
+            .map(|i| {
+                let en = &self.entities[i];
+                en.active && !en.outside && en.speed.abs() <= SMALL && !self.is_towed(i) && self.controllers.get(i).is_none_or(|c| c.is_none())
+            })
+            .collect();
         for (i, (en, b)) in self.entities.iter_mut().zip(before).enumerate() {
             let (dx, dy) = (en.x - b.x, en.y - b.y);
             let old_vel = en.vel;
@@ -104,6 +119,9 @@ impl<'a> Sim<'a> {
                 en.odometer += (dx * dx + dy * dy).sqrt();
                 if dt > SMALL {
                     en.vel = (dx / dt, dy / dt);
+                    if derives_speed[i] && !en.speed_set {
+                        en.speed = dx.hypot(dy) / dt;
+                    }
                     en.accel = (en.speed - b.speed) / dt;
                     en.acc_vec = ((en.vel.0 - old_vel.0) / dt, (en.vel.1 - old_vel.1) / dt);
                     en.yaw_rate = wrap(en.h - b.h) / dt;

@@ -293,6 +293,7 @@ fn frame(sim: &mut Sim, before: &mut [Before], t: f64, dt: f64) -> bool {
     for e in &mut sim.entities {
         if e.active {
             e.moved_by_action = false;
+            e.speed_set = false;
         }
     }
     storyboard_step(sim, dt);

@@ -75,6 +75,18 @@ impl<'a> Sim<'a> {
         if start && t.groups.is_empty() {
             return None;
         }
+        for c in t.groups.iter().flat_map(|g| &g.conditions) {
+            if let openscenario::ConditionKind::ByValue(v) = &c.kind {
+                if crate::conditions::by_value::ignored_by_esmini(v) {
+                    let msg = format!(
+                        "condition `{}`: {} is left out of its condition group, as esmini 3.6.0 does (not supported there); a group with nothing else never holds",
+                        c.name,
+                        v.element_name()
+                    );
+                    self.warnings.push(Diagnostic::at(&c.origin, msg));
+                }
+            }
+        }
         let rt = TriggerRt::new(t, self);
         self.triggers.push(rt);
         Some(self.triggers.len() - 1)

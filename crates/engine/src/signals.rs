@@ -68,11 +68,6 @@ impl<'a> ControllerRt<'a> {
         // The last phase whose start is at or before `pos` (zero-length phases are passed over).
         (0..n).rev().find(|&i| self.starts[i] <= pos + EPS && self.starts[i + 1] > pos + EPS).or(Some(0))
     }
-
-    /// The name of the phase in force.
-    pub(crate) fn phase_name(&self) -> Option<&str> {
-        self.phase.and_then(|i| self.model.phases.get(i)).map(|p| p.name.as_str())
-    }
 }
 
 /// Every signal's state and every controller.

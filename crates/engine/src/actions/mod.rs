@@ -275,6 +275,21 @@ impl<'a> Sim<'a> {
             let inst = &mut self.actions[slot].instances[k];
             // Take the state out so the entity can be borrowed mutably alongside it.
             let mut rt = std::mem::replace(&mut inst.rt, ActionRt::Done);
+            // The longitudinal actions, and LatDistanceAction::Step (it re-sets the speed it has),
+            // set the speed in every step they run (esmini's Object::SetSpeed, its SPEED dirty
+            // bit): `after_move` derives none from the motion. Lane changes and lane offsets do not.
+            let sets_speed = matches!(
+                rt,
+                ActionRt::Speed(_)
+                    | ActionRt::SpeedProfile(_)
+                    | ActionRt::Synchronize(_)
+                    | ActionRt::LongDistance(_)
+                    | ActionRt::FollowTrajectory(_)
+                    | ActionRt::LatDistance(_)
+            );
+            if let (true, Some(en)) = (sets_speed, self.entities.get_mut(e)) {
+                en.speed_set = true;
+            }
             let (saved, shift) = (self.time, self.ghost_time_shift(slot, e, false));
             self.time = saved - shift;
             let done = match &mut rt {

@@ -40,10 +40,8 @@ impl<'a> Sim<'a> {
                 result
             }
             ValueCondition::TrafficSignal { name, state } => self.check_signal(c, name, state),
-            ValueCondition::TrafficSignalController { controller, phase } => self.check_signal_controller(c, controller, phase),
-            ValueCondition::TimeOfDay { .. } | ValueCondition::UserDefinedValue { .. } => {
-                self.warn_once(c, format!("{} is not supported; it never becomes true", v.element_name()))
-            }
+            // Never evaluated: `TriggerRt::new` leaves these out of their group (see `ignored_by_esmini`).
+            ValueCondition::TrafficSignalController { .. } | ValueCondition::TimeOfDay { .. } | ValueCondition::UserDefinedValue { .. } => false,
         }
     }
 
@@ -55,6 +53,15 @@ impl<'a> Sim<'a> {
         }
         false
     }
+}
+
+/// The value conditions esmini 3.6.0 reads past: ScenarioReader::parseOSCCondition logs "not
+/// supported yet. Ignoring." for every ByValueCondition other than SimulationTime, Parameter,
+/// Variable, StoryboardElementState and TrafficSignal, and returns no condition, so
+/// ScenarioReader::parseTrigger leaves it out of its group. The group is the AND of the rest; a
+/// group left with nothing is false (ConditionGroup::Evaluate).
+pub(crate) fn ignored_by_esmini(v: &ValueCondition) -> bool {
+    matches!(v, ValueCondition::TrafficSignalController { .. } | ValueCondition::TimeOfDay { .. } | ValueCondition::UserDefinedValue { .. })
 }
 
 fn state_matches(want: Want, st: State, tr: Option<Transition>) -> bool {

@@ -129,7 +129,7 @@ pub(crate) fn between(net: Option<&RoadNetwork>, a: &Entity, b: &Entity, cs: Coo
                     }
                     RelativeDistanceType::EuclidianDistance => {
                         if freespace {
-                            box_distance(&corners(a), &corners(b))
+                            signed_box_distance(a, b)
                         } else {
                             ds.hypot(dt)
                         }
@@ -165,7 +165,7 @@ pub(crate) fn between(net: Option<&RoadNetwork>, a: &Entity, b: &Entity, cs: Coo
         }
         RelativeDistanceType::EuclidianDistance => {
             if freespace {
-                box_distance(&corners(a), &corners(b))
+                signed_box_distance(a, b)
             } else {
                 let d = lon.hypot(lat);
                 if lon > 0.0 {
@@ -175,6 +175,22 @@ pub(crate) fn between(net: Option<&RoadNetwork>, a: &Entity, b: &Entity, cs: Coo
                 }
             }
         }
+    }
+}
+
+/// The free space between the boxes of `a` and `b`, negative when `b`'s box lies wholly behind
+/// `a`'s along `a`'s heading: esmini's Object::Distance with freeSpace and a euclidean distance
+/// (any coordinate system) signs Object::FreeSpaceDistance by the longitudinal gap
+/// CollisionAndRelativeDistLatLong measures on the pivot's axis (0, so positive, when the boxes
+/// overlap along it). TimeHeadway then ignores a target behind, and TimeToCollision sees one
+/// closing in from behind.
+fn signed_box_distance(a: &Entity, b: &Entity) -> f64 {
+    let (ca, cb) = (corners(a), corners(b));
+    let d = box_distance(&ca, &cb);
+    if interval_gap(&ca, &cb, a.h.cos(), a.h.sin()) < -crate::dynamics::ESMINI_SMALL_NUMBER {
+        -d
+    } else {
+        d
     }
 }
 

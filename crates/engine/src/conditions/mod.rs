@@ -18,7 +18,8 @@ use openscenario::{Condition, ConditionEdge, ConditionKind, EntityCondition, Sto
 
 impl<'a> TriggerRt<'a> {
     pub(crate) fn new(t: &'a Trigger, sim: &Sim) -> TriggerRt<'a> {
-        let groups = t.groups.iter().map(|g| g.conditions.iter().map(|c| ConditionRt::new(c, sim)).collect()).collect();
+        let kept = |c: &&Condition| !matches!(&c.kind, ConditionKind::ByValue(v) if by_value::ignored_by_esmini(v));
+        let groups = t.groups.iter().map(|g| g.conditions.iter().filter(kept).map(|c| ConditionRt::new(c, sim)).collect()).collect();
         TriggerRt { groups }
     }
 

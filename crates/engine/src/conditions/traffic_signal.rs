@@ -1,6 +1,6 @@
-//! TrafficSignalCondition (true while the signal is in the state) and
-//! TrafficSignalControllerCondition (true while the controller is in the phase), read from
-//! `signals.rs`. A signal nobody has set has no state: the condition is false.
+//! TrafficSignalCondition (true while the signal is in the state), read from `signals.rs`. A
+//! signal nobody has set has no state: the condition is false. (TrafficSignalControllerCondition
+//! is left out of its group, as esmini does: `by_value::ignored_by_esmini`.)
 
 use super::ConditionRt;
 use crate::sim::Sim;
@@ -13,12 +13,5 @@ impl<'a> Sim<'a> {
             self.warnings.push(crate::Diagnostic::at(&c.model.origin, msg));
         }
         self.signals.is_in(name, state)
-    }
-
-    pub(super) fn check_signal_controller(&mut self, c: &mut ConditionRt<'a>, controller: &str, phase: &str) -> bool {
-        match self.signals.controller(controller) {
-            Some(i) => self.signals.controllers[i].phase_name() == Some(phase),
-            None => self.warn_once(c, format!("traffic signal controller `{controller}` is not defined in the RoadNetwork")),
-        }
     }
 }

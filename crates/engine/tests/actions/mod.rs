@@ -11,6 +11,7 @@ mod recorded;
 mod route_world_waypoints;
 mod routes;
 mod speed;
+mod speed_from_displacement;
 mod synchronize;
 mod teleport;
 mod trailers;

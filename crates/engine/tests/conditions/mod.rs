@@ -6,4 +6,6 @@ mod basic;
 mod clearance_across_roads;
 mod clearance_offroad_headway;
 mod directed_speed;
+mod freespace_distance_sign;
+mod ignored_value_conditions;
 mod reach_position_all;
