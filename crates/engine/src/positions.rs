@@ -69,12 +69,12 @@ pub(crate) fn resolve_with_route(
         }
         Position::Lane { road_id, lane_id, s, offset, orientation } => {
             let net = net.ok_or("a LanePosition needs a road network")?;
-            let road = net.road_index(road_id).ok_or_else(|| format!("unknown road `{road_id}`"))?;
+            let road = crate::roads::road_id::resolve_road_id(net, road_id).ok_or_else(|| format!("unknown road `{road_id}`"))?;
             lane_placement(net, road, *lane_id, *s, *offset, orientation.as_ref())
         }
         Position::Road { road_id, s, t, orientation } => {
             let net = net.ok_or("a RoadPosition needs a road network")?;
-            let road = net.road_index(road_id).ok_or_else(|| format!("unknown road `{road_id}`"))?;
+            let road = crate::roads::road_id::resolve_road_id(net, road_id).ok_or_else(|| format!("unknown road `{road_id}`"))?;
             let mut p = road_placement(net, road, *s, *t, orientation.as_ref())?;
             // esmini's OSCPositionRoad: the heading is relative to the road's reference direction
             // on either side of the road (a LanePosition's to the lane's direction) unless an
