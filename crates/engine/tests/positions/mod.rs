@@ -8,4 +8,5 @@ mod road_id_leading_number;
 mod road_position_against_lane;
 mod road_position_heading;
 mod route_position_against_lane;
+mod route_position_dropped_waypoints;
 mod route_position_from_current_entity;
