@@ -8,6 +8,7 @@
 //! not reproduced.
 
 use crate::actions::state::ActionRt;
+use crate::entities::Entity;
 use crate::roads::banking::roll_at;
 use crate::roads::road_follow::wrap;
 use crate::roads::LanePos;
@@ -22,16 +23,20 @@ pub(crate) fn road_pitch_roll(net: &RoadNetwork, lp: &LanePos) -> (f64, f64) {
     (-road.elevation_slope_at(s).atan(), roll_at(road, s).0)
 }
 
+/// Pitch and roll of entity `e` lying on the road surface where it is (turned around when it
+/// faces against s); (0, 0) off the road.
+pub(crate) fn surface_pitch_roll(net: &RoadNetwork, e: &Entity) -> (f64, f64) {
+    let Some(lp) = e.lane else { return (0.0, 0.0) };
+    let (p, r) = road_pitch_roll(net, &lp);
+    let facing = lp.pose(net).map_or(1.0, |q| if wrap(e.h - q.road_heading).abs() <= FRAC_PI_2 { 1.0 } else { -1.0 });
+    (p * facing, r * facing)
+}
+
 impl<'a> Sim<'a> {
     /// World pitch and roll of entity `idx`.
     pub(crate) fn pitch_roll(&self, idx: usize) -> (f64, f64) {
         let Some(e) = self.entities.get(idx) else { return (0.0, 0.0) };
-        let (mut pitch, mut roll) = (0.0, 0.0);
-        if let (Some(net), Some(lp)) = (self.net, e.lane) {
-            let (p, r) = road_pitch_roll(net, &lp);
-            let facing = lp.pose(net).map_or(1.0, |q| if wrap(e.h - q.road_heading).abs() <= FRAC_PI_2 { 1.0 } else { -1.0 });
-            (pitch, roll) = (p * facing, r * facing);
-        }
+        let (mut pitch, roll) = self.net.map_or((0.0, 0.0), |net| surface_pitch_roll(net, e));
         let on_path = self.actions.iter().filter(|a| a.running).flat_map(|a| a.instances.iter()).find_map(|inst| match &inst.rt {
             ActionRt::FollowTrajectory(f) if inst.entity == Some(idx) && f.elevated => Some(f.path.pitch_at(f.s) * f.heading_sign),
             _ => None,

@@ -38,6 +38,7 @@ mod recorded;
 mod relative_position;
 mod road_references;
 mod roads;
+mod route_anchors;
 mod route_position;
 mod rules;
 mod run;

@@ -63,18 +63,22 @@ pub(crate) fn resolve_with_route(
         }
         Position::RelativeObject { entity, dx, dy, dz, orientation } => {
             let e = find(entity)?;
-            let (s, c) = e.h.sin_cos();
             let h = orient(e.h, orientation.as_ref());
-            Ok(Placement { x: e.x + dx * c - dy * s, y: e.y + dx * s + dy * c, z: dz.map(|d| e.z + d), h, lane: None })
+            // esmini's Position::EvaluateRelation (RELATIVE_OBJECT) turns (dx, dy, dz) by the
+            // entity's whole attitude, heading, pitch and roll (RotateVec3d): on a banked or
+            // sloped road the offsets shrink horizontally.
+            let (pitch, roll) = net.map_or((0.0, 0.0), |n| crate::attitude::surface_pitch_roll(n, e));
+            let [vx, vy, vz] = rotate_hpr(e.h, pitch, roll, [*dx, *dy, dz.unwrap_or(0.0)]);
+            Ok(Placement { x: e.x + vx, y: e.y + vy, z: dz.map(|_| e.z + vz), h, lane: None })
         }
         Position::Lane { road_id, lane_id, s, offset, orientation } => {
             let net = net.ok_or("a LanePosition needs a road network")?;
-            let road = net.road_index(road_id).ok_or_else(|| format!("unknown road `{road_id}`"))?;
+            let road = crate::roads::road_id::resolve_road_id(net, road_id).ok_or_else(|| format!("unknown road `{road_id}`"))?;
             lane_placement(net, road, *lane_id, *s, *offset, orientation.as_ref())
         }
         Position::Road { road_id, s, t, orientation } => {
             let net = net.ok_or("a RoadPosition needs a road network")?;
-            let road = net.road_index(road_id).ok_or_else(|| format!("unknown road `{road_id}`"))?;
+            let road = crate::roads::road_id::resolve_road_id(net, road_id).ok_or_else(|| format!("unknown road `{road_id}`"))?;
             let mut p = road_placement(net, road, *s, *t, orientation.as_ref())?;
             // esmini's OSCPositionRoad: the heading is relative to the road's reference direction
             // on either side of the road (a LanePosition's to the lane's direction) unless an
@@ -201,4 +205,21 @@ pub(crate) fn road_placement(net: &RoadNetwork, road: usize, s: f64, t: f64, o: 
     let (lane_id, offset) = crate::roads::lane_snap::snap(r, section, s, t, false).unwrap_or((0, t - r.lane_offset_at(s)));
     let along = drives_along_s(r.rule, lane_id);
     place(net, road, lane_id, s, offset, along, o)
+}
+
+/// `v` turned by heading `h`, pitch `p` and roll `r` (esmini's RotateVec3d: Rz(h)·Ry(p)·Rx(r);
+/// its guard against gimbal lock, which moves a result by at most a micrometre per metre, is
+/// left out). With no pitch and roll it is the plain turn by h.
+fn rotate_hpr(h: f64, p: f64, r: f64, v: [f64; 3]) -> [f64; 3] {
+    let (sh, ch) = h.sin_cos();
+    if p == 0.0 && r == 0.0 {
+        return [v[0] * ch - v[1] * sh, v[0] * sh + v[1] * ch, v[2]];
+    }
+    let (sp, cp) = p.sin_cos();
+    let (sr, cr) = r.sin_cos();
+    [
+        ch * cp * v[0] + (ch * sp * sr - sh * cr) * v[1] + (sh * sr + ch * sp * cr) * v[2],
+        sh * cp * v[0] + (ch * cr + sh * sp * sr) * v[1] + (sh * sp * cr - ch * sr) * v[2],
+        -sp * v[0] + cp * sr * v[1] + cp * cr * v[2],
+    ]
 }

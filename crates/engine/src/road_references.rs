@@ -28,7 +28,7 @@ pub fn road_references(scenario: &Scenario, road: Option<&opendrive::RoadNetwork
             out.push(Diagnostic::at(at_road(), format!("{element} on road `{road_id}`, but the scenario has no road network")));
             continue;
         };
-        let Some(r) = network.road(road_id) else {
+        let Some(r) = crate::roads::road_id::resolve_road_id(network, road_id).and_then(|i| network.roads.get(i)) else {
             out.push(Diagnostic::at(at_road(), format!("{element}: road `{road_id}` is not in the road network")));
             continue;
         };

@@ -122,18 +122,25 @@ fn resolve_route(
             (*path_s, None, 0.0, t.trunc())
         }
     };
-    let (road, s) = match crate::position_cache::route(route, || plan_route(route, net, entities)) {
-        Ok(planned) if (0.0..=planned.length()).contains(&path_s) => {
-            let rp = planned.locate(path_s).ok_or("route position outside the route")?;
-            (rp.road, rp.s)
-        }
+    let planned = crate::position_cache::route(route, || plan_route(route, net, entities));
+    // esmini counts path s from its route anchors (route_anchors.rs).
+    let mapped = planned.as_ref().ok().and_then(|p| {
+        let roads = waypoint_roads(route, net, entities)?;
+        crate::route_anchors::true_path_s(net, p, &roads, path_s)
+    });
+    let (road, s) = match planned {
         Ok(planned) => {
-            notes.push(format!(
-                "RoutePosition pathS = {path_s} lies outside route `{}` (0 to {:.3} m): the position is the route's first waypoint, as in esmini 3.6",
-                route.name,
-                planned.length()
-            ));
-            first_waypoint(route, net, entities)?
+            let (true_s, length) = mapped.unwrap_or((path_s, planned.length()));
+            if (0.0..=length).contains(&path_s) {
+                let rp = planned.locate(true_s).ok_or("route position outside the route")?;
+                (rp.road, rp.s)
+            } else {
+                notes.push(format!(
+                    "RoutePosition pathS = {path_s} lies outside route `{}` (0 to {length:.3} m): the position is the route's first waypoint, as in esmini 3.6",
+                    route.name
+                ));
+                first_waypoint(route, net, entities)?
+            }
         }
         Err(e) => {
             notes.push(format!("route `{}`: {e}; the RoutePosition is its first waypoint, as in esmini 3.6", route.name));
@@ -173,6 +180,11 @@ fn resolve_route(
 /// Whether `lane` of `road` drives against s (esmini's GetDrivingDirectionRelativeRoad < 0).
 fn lane_drives_against_s(net: &RoadNetwork, road: usize, lane: i32) -> bool {
     net.roads.get(road).is_some_and(|r| !opendrive::drives_along_s(r.rule, lane))
+}
+
+/// The road of each of the route's waypoints, resolved as planning resolves them.
+fn waypoint_roads(route: &Route, net: &RoadNetwork, entities: &[Entity]) -> Option<Vec<usize>> {
+    route.waypoints.iter().map(|w| resolve(&w.position, Some(net), entities).ok().and_then(|p| waypoint_of(&w.position, &p, net)).map(|wp| wp.road)).collect()
 }
 
 /// The road and s of a route's first waypoint (esmini's route before SetPathS moves it).

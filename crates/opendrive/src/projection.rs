@@ -106,8 +106,16 @@ fn scan_side(road: &Road, section: usize, left: bool, s: f64, t: f64) -> SideSca
 impl RoadNetwork {
     /// Locate (x, y) on road `road` starting the projection at `s_guess`.
     pub fn locate_on_road(&self, road: usize, x: f64, y: f64, s_guess: f64) -> Option<LanePosition> {
+        self.locate_on_road_by(road, x, y, s_guess, &|_, _, t| t)
+    }
+
+    /// [`Self::locate_on_road`] with the horizontal lateral distance from the reference line
+    /// turned into the road's t by `surface_t(road, s, horizontal t)` before the lane is chosen
+    /// (a simulator that lays t along a banked road's tilted surface divides by cos(roll)).
+    pub fn locate_on_road_by(&self, road: usize, x: f64, y: f64, s_guess: f64, surface_t: &dyn Fn(&Road, f64, f64) -> f64) -> Option<LanePosition> {
         let r = self.roads.get(road)?;
         let (s, t, along) = project_onto_road(r, x, y, s_guess);
+        let t = surface_t(r, s, t);
         let section = r.section_index_at(s);
         let (lane_id, borders, lateral) = lane_at(r, section, s, t)?;
         let off_end = if along.abs() > END_TOLERANCE { along.abs() } else { 0.0 };
@@ -144,6 +152,12 @@ impl RoadNetwork {
     /// the caller was on), then the lane whose centre is nearest; an off-road point gets the
     /// road whose lanes are nearest. `None` only for a network without roads.
     pub fn world_to_lane(&self, x: f64, y: f64, hint: Option<usize>) -> Option<LanePosition> {
+        self.world_to_lane_by(x, y, hint, &|_, _, t| t)
+    }
+
+    /// [`Self::world_to_lane`] with lateral distances turned into t by `surface_t` (see
+    /// [`Self::locate_on_road_by`]).
+    pub fn world_to_lane_by(&self, x: f64, y: f64, hint: Option<usize>, surface_t: &dyn Fn(&Road, f64, f64) -> f64) -> Option<LanePosition> {
         let mut ids = Vec::new();
         let start = self.index.first_ring(x, y);
         let mut ring = start;
@@ -163,7 +177,7 @@ impl RoadNetwork {
         self.road_candidates(x, y, &ids, &mut cands);
         let mut best: Option<LanePosition> = None;
         for &(r, s, _) in &cands {
-            let Some(p) = self.locate_on_road(r, x, y, s) else { continue };
+            let Some(p) = self.locate_on_road_by(r, x, y, s, surface_t) else { continue };
             let better = match &best {
                 None => true,
                 Some(b) => {

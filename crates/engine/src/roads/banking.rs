@@ -27,3 +27,19 @@ pub(crate) fn banked(road: &Road, s: f64, t: f64, curvature: f64) -> (f64, f64, 
     let turn = if dth == 0.0 { 0.0 } else { dth.atan2(1.0 - curvature * th) };
     (th, t * sin, turn)
 }
+
+/// The inverse of [`banked`]'s lateral part, as esmini's `Position::XYZ2TrackPos` does it: a
+/// world point's horizontal distance `th` from the reference line at `s` is divided by
+/// cos(roll) ("compensate for banking"), so its t is measured along the tilted surface.
+pub(crate) fn surface_t(road: &Road, s: f64, th: f64) -> f64 {
+    if road.superelevation.is_empty() {
+        return th;
+    }
+    let cos = roll_at(road, s).0.cos();
+    // A road rolled to the vertical has no horizontal extent: keep the distance as it is.
+    if cos.abs() < 1e-9 {
+        th
+    } else {
+        th / cos
+    }
+}

@@ -3,8 +3,10 @@
 //! projection at its last s); only when the point is not on that road does the spatial-index
 //! search run. A point on the hinted road is what the full search returns too (it prefers the
 //! hinted road among the roads containing the point). Exact repeats of full searches (fixed
-//! target points of distance conditions) come from a small memo.
+//! target points of distance conditions) come from a small memo. On a banked road t is
+//! measured along the tilted surface, as esmini's `Position::XYZ2TrackPos` measures it.
 
+use super::banking::surface_t;
 use opendrive::{LanePosition, RoadNetwork};
 use std::cell::RefCell;
 
@@ -20,20 +22,20 @@ thread_local! {
 /// Nearest lane of (x, y); `hint`: the road and s the caller was at.
 pub(crate) fn world_to_lane(net: &RoadNetwork, x: f64, y: f64, hint: Option<(usize, f64)>) -> Option<LanePosition> {
     if let Some((road, s)) = hint {
-        if let Some(p) = net.locate_on_road(road, x, y, s) {
+        if let Some(p) = net.locate_on_road_by(road, x, y, s, &surface_t) {
             if p.is_on_road() {
                 return Some(p);
             }
         }
     }
-    net.world_to_lane(x, y, hint.map(|h| h.0))
+    net.world_to_lane_by(x, y, hint.map(|h| h.0), &surface_t)
 }
 
 /// [`world_to_lane`] for points that are asked about again and again (fixed positions): the
 /// hinted road first, then a memo of full searches.
 pub(crate) fn world_to_lane_memo(net: &RoadNetwork, x: f64, y: f64, hint: Option<(usize, f64)>) -> Option<LanePosition> {
     if let Some((road, s)) = hint {
-        if let Some(p) = net.locate_on_road(road, x, y, s) {
+        if let Some(p) = net.locate_on_road_by(road, x, y, s, &surface_t) {
             if p.is_on_road() {
                 return Some(p);
             }
@@ -43,7 +45,7 @@ pub(crate) fn world_to_lane_memo(net: &RoadNetwork, x: f64, y: f64, hint: Option
     if let Some(hit) = MEMO.with(|m| m.borrow().iter().find(|e| e.0 == k).map(|e| e.1)) {
         return hit;
     }
-    let r = net.world_to_lane(x, y, hint.map(|h| h.0));
+    let r = net.world_to_lane_by(x, y, hint.map(|h| h.0), &surface_t);
     MEMO.with(|m| {
         let mut m = m.borrow_mut();
         if m.len() >= MEMO_SIZE {

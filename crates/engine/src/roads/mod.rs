@@ -13,6 +13,7 @@ pub(crate) mod offroad;
 pub(crate) mod pose_memo;
 pub(crate) mod road_distance;
 pub(crate) mod road_follow;
+pub(crate) mod road_id;
 pub(crate) mod road_path;
 pub(crate) mod zero_width;
 

@@ -56,3 +56,40 @@ fn a_teleported_entity_does_not_move_on_the_step_of_the_teleport() {
     assert!(close(a.x, 500.0, 1e-9), "{a:?}");
     assert!(close(b.x, 500.1, 1e-9), "{b:?}");
 }
+
+/// esmini's rows (time, x, y, speed) of `banked_world_position.xosc` (banked.xodr): Ego placed
+/// by a WorldPosition 3 m right of the reference line at s = 50 (roll 0.5 rad), Ahead by a
+/// RelativeRoadPosition 30 m ahead of it.
+const EGO: [(f64, f64, f64, f64); 3] = [(0.0, 50.0, -3.0, 10.0), (1.0, 60.0, -2.821395, 10.0), (2.0, 70.0, -2.614599, 10.0)];
+const AHEAD: [(f64, f64, f64, f64); 3] = [(0.0, 80.0, -2.381679, 5.0), (1.0, 85.0, -2.25614, 5.0), (2.0, 90.0, -2.124962, 5.0)];
+
+#[test]
+fn a_world_point_on_a_banked_road_has_its_t_along_the_tilted_surface() {
+    // esmini's Position::XYZ2TrackPos divides the horizontal distance from the reference line
+    // by cos(roll): t = −3 / cos 0.5 = −3.42, so Ego keeps that t (lane offset −1.67) as the
+    // roll grows, and Ahead, at the same t 30 m on, lies −3.42·cos 0.8 = −2.38 m out. Measured
+    // horizontally (t = −3) both would sit 0.3 m further in. Found by crates/difftest
+    // (m6006/s6006_00227, m4004/s4004_00045); expected values: esmini 3.6.0 on the fixture.
+    let run = run_fixture_on("banked_world_position.xosc", "banked.xodr", 2.0);
+    assert_esmini_rows(&run, "Ego", &EGO, 1e-3);
+    assert_esmini_rows(&run, "Ahead", &AHEAD, 1e-3);
+}
+
+/// esmini's rows (time, x, y, speed) of `relative_object_banked.xosc` (banked.xodr): Ego on
+/// lane −1 at s = 50 (roll 0.5 rad), Beside placed by a RelativeObjectPosition 10 m behind and
+/// 3.5 m to the left of it.
+const BANKED_EGO: [(f64, f64, f64, f64); 2] = [(0.0, 50.0, -1.535769, 10.0), (2.0, 70.0, -1.338474, 10.0)];
+const BESIDE: [(f64, f64, f64, f64); 2] = [(0.0, 40.001531, 1.45188, 5.0), (2.0, 50.001531, 1.383342, 5.0)];
+
+#[test]
+fn a_relative_object_position_turns_with_the_entity_s_roll() {
+    // esmini's Position::EvaluateRelation (RELATIVE_OBJECT) turns (dx, dy, dz) by the entity's
+    // heading, pitch and roll (RotateVec3d): rolled 0.5 rad, dy = 3.5 reaches 3.5·cos 0.5 =
+    // 3.07 m across, not 3.5 m. esmini also gives Ego a small pitch (0.02 rad) composed from
+    // the road's roll and the heading the banking adds, which the engine leaves out: it moves
+    // Beside by 0.03 m along x. Found by crates/difftest (m5005/s5005_00182, velodrome.xodr);
+    // expected values: esmini 3.6.0 on the fixture.
+    let run = run_fixture_on("relative_object_banked.xosc", "banked.xodr", 2.0);
+    assert_esmini_rows(&run, "Ego", &BANKED_EGO, 1e-3);
+    assert_esmini_rows(&run, "Beside", &BESIDE, 0.05);
+}
