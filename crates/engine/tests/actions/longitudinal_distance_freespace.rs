@@ -25,8 +25,5 @@ const ESMINI: &[(&str, f64, f64, f64)] = &[
 #[test]
 fn a_freespace_distance_to_a_reference_facing_the_actor_runs_to_its_front_as_in_esminis_log() {
     let run = run_straight_fixture("long_distance_freespace_facing.xosc", 12.0);
-    for &(name, t, x, v) in ESMINI {
-        let s = at(&run, name, t);
-        assert!(close(s.x, x, 2e-6) && close(s.speed, v, 2e-6), "{name} at {t}: x {} speed {} against esmini {x} {v}", s.x, s.speed);
-    }
+    assert_esmini_x_speed(&run, ESMINI, 2e-6);
 }

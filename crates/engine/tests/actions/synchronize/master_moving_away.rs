@@ -24,8 +24,5 @@ const ESMINI: &[(&str, f64, f64, f64)] = &[
 #[test]
 fn a_master_driving_away_from_its_target_stops_the_actor_as_in_esminis_log() {
     let run = run_straight_fixture("synchronize_master_moving_away.xosc", 5.0);
-    for &(name, t, x, v) in ESMINI {
-        let s = at(&run, name, t);
-        assert!(close(s.x, x, 2e-6) && close(s.speed, v, 2e-6), "{name} at {t}: x {} speed {} against esmini {x} {v}", s.x, s.speed);
-    }
+    assert_esmini_x_speed(&run, ESMINI, 2e-6);
 }
