@@ -48,8 +48,12 @@ impl<'a> Sim<'a> {
                     let status = move_along_route_drawing(net, &mut lp, en.speed * dt, en.route.as_deref(), random, pedestrian);
                     en.set_lane_pos(net, lp);
                     if status == MoveStatus::EndOfRoad {
-                        // Stuck at the end since the previous step: esmini stops the entity.
-                        if en.at_road_end {
+                        // ScenarioEngine::step, after the default controller's move: an entity
+                        // already flagged at the end of the road (`end_of_road`, set after the
+                        // step that reached it) whose velocity is zero (`vel` is still the last
+                        // step's: the step after the arrival, stuck) is stopped. So the speed
+                        // drops two steps after the arrival, not one (a SpeedCondition sees it).
+                        if en.end_of_road && en.vel.0.abs() < SMALL && en.vel.1.abs() < SMALL {
                             en.speed = 0.0;
                         }
                         en.at_road_end = true;

@@ -5,7 +5,8 @@
 //! and takes the reference's speed; with limits a critically damped spring pulls the distance
 //! error to zero (stiffness 0.4 × the limit in the direction of the pull), its acceleration
 //! clipped to the limits and its change per second to the jerk limits, and the speed to the
-//! maximum speed. "any" displacement keeps the side the actor is on when the action starts. A
+//! maximum speed. A freespace distance is the bounding boxes' gap along the actor's heading in
+//! every coordinate system (esmini's). "any" displacement keeps the side the actor is on when the action starts. A
 //! non-continuous action ends when the distance is within 0.1 m.
 
 pub(crate) mod state;
@@ -38,7 +39,12 @@ pub(crate) struct LongDistanceSpec<'s> {
 impl<'a> Sim<'a> {
     fn long_gap(&self, e: usize, r: &LongDistanceRt) -> f64 {
         match (self.entities.get(e), self.entities.get(r.target)) {
-            (Some(a), Some(b)) => between(self.net, a, b, r.cs, RelativeDistanceType::Longitudinal, r.freespace),
+            // LongDistanceAction::Step measures a freespace distance with
+            // Object::FreeSpaceDistance whatever the coordinate system: the gap between the
+            // bounding boxes along the actor's own heading (CollisionAndRelativeDistLatLong),
+            // so a reference facing the other way is measured to its front, not its rear.
+            (Some(a), Some(b)) if r.freespace => between(self.net, a, b, CoordinateSystem::Entity, RelativeDistanceType::Longitudinal, true),
+            (Some(a), Some(b)) => between(self.net, a, b, r.cs, RelativeDistanceType::Longitudinal, false),
             _ => 0.0,
         }
     }

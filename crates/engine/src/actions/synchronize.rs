@@ -19,8 +19,9 @@ use state::{Final, Mode, Submode, SynchronizeRt};
 
 use super::state::ActionRt;
 use crate::positions::{resolve, Placement};
-use crate::roads::road_distance::road_distance;
+use crate::roads::road_distance::{road_distance, road_path};
 use crate::sim::Sim;
+use opendrive::ContactPoint;
 use openscenario::{FinalSpeed, Position, SpeedTargetValueType, SteadyState};
 
 /// esmini's SMALL_NUMBER, every tolerance of SynchronizeAction::Step.
@@ -106,6 +107,42 @@ impl<'a> Sim<'a> {
         (en.x - p.x).hypot(en.y - p.y)
     }
 
+    /// Distance of the master `m` to its target and whether the target lies ahead of it (+1) or
+    /// behind (-1), as SynchronizeAction::Step reads them from Position::Delta: on one road
+    /// the sign of the s difference seen in the direction the master faces (RoadPath::Calculate's
+    /// same-road case); across roads, whether the shortest chain leaves the master's road ahead
+    /// of it, turned round when the master faces against its lane's driving direction (the end
+    /// of RoadPath::Calculate); off the network, whether the straight line to the target points
+    /// forward of the master's heading. A master driving away from its target makes the actor
+    /// wait (stand) as a master standing still does.
+    fn master_distance(&self, m: usize, p: &Placement) -> (f64, f64) {
+        let Some(en) = self.entities.get(m) else { return (0.0, 1.0) };
+        let sign = |x: f64| if x < 0.0 { -1.0 } else { 1.0 };
+        if let (Some(net), Some(a), Some(b)) = (self.net, en.lane, p.lane) {
+            let facing_along = (a.dir >= 0.0) == (en.yaw_offset.cos() >= 0.0);
+            let ahead = if facing_along { 1.0 } else { -1.0 };
+            match road_path(net, a.road, a.s, b.road, b.s) {
+                Some((_, None)) => {
+                    let ds = (b.s - a.s) * ahead;
+                    return (ds.abs(), sign(ds));
+                }
+                Some((d, Some(first))) => {
+                    let leaves_ahead = (first == ContactPoint::End) == facing_along;
+                    let mut dir = if leaves_ahead { 1.0 } else { -1.0 };
+                    let drives_along = net.roads.get(a.road).is_none_or(|r| opendrive::drives_along_s(r.rule, a.lane_id));
+                    if drives_along != facing_along {
+                        dir = -dir;
+                    }
+                    return (d, if d == 0.0 { 1.0 } else { dir });
+                }
+                None => {}
+            }
+        }
+        let (vx, vy) = (p.x - en.x, p.y - en.y);
+        let forward = (vy.atan2(vx) - en.h).cos() >= 0.0;
+        (vx.hypot(vy), if forward { 1.0 } else { -1.0 })
+    }
+
     /// The velocity projected on the road's s axis, with the sign of the speed (esmini's
     /// `SIGN(GetSpeed()) * |Position::GetVelS()|`). The velocity is the one derived from the
     /// last step's motion, so a master that just got a speed counts as moving one step later.
@@ -119,7 +156,7 @@ impl<'a> Sim<'a> {
     /// One step; true when the action is done.
     pub(super) fn step_synchronize(&mut self, e: usize, s: &mut SynchronizeRt) -> bool {
         let dt = self.dt;
-        let master_dist_raw = self.distance_to(s.master, &s.target_master);
+        let (master_dist_raw, master_direction) = self.master_distance(s.master, &s.target_master);
         let dist_raw = self.distance_to(e, &s.target);
         let mut done =
             dist_raw < s.tolerance + SMALL || master_dist_raw < s.tolerance_master + SMALL || dist_raw > s.last_dist || master_dist_raw > s.last_master_dist;
@@ -127,7 +164,7 @@ impl<'a> Sim<'a> {
         s.last_master_dist = master_dist_raw;
         let mut dist = (dist_raw - s.tolerance).max(SMALL);
         let master_dist = (master_dist_raw - s.tolerance_master).max(SMALL);
-        let master_speed = self.speed_along_road(s.master);
+        let master_speed = master_direction * self.speed_along_road(s.master);
         let mut t_master = LARGE;
         if master_speed > SMALL {
             t_master = master_dist / master_speed;

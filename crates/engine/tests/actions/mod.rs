@@ -6,6 +6,7 @@ mod lane_change;
 mod lane_offset_relative;
 mod lateral_distance;
 mod longitudinal_distance_and_acc;
+mod longitudinal_distance_freespace;
 mod override_controller_value;
 mod recorded;
 mod route_world_waypoints;

@@ -164,6 +164,14 @@ pub(crate) fn assert_esmini_rows(run: &Run, entity: &str, rows: &[(f64, f64, f64
     }
 }
 
+/// Assert that `run` gives each (entity, time, x, speed) row of an esmini log within `tol`.
+pub(crate) fn assert_esmini_x_speed(run: &Run, rows: &[(&str, f64, f64, f64)], tol: f64) {
+    for &(name, t, x, v) in rows {
+        let s = at(run, name, t);
+        assert!(close(s.x, x, tol) && close(s.speed, v, tol), "{name} at {t}: x {} speed {} against esmini {x} {v}", s.x, s.speed);
+    }
+}
+
 pub(crate) fn run(text: &str) -> Run {
     run_with(text, &Settings { step: 0.01, max_time: 20.0 })
 }

@@ -36,10 +36,7 @@ const ESMINI: &[(&str, f64, f64, f64)] = &[
 #[test]
 fn the_actor_waits_for_its_master_as_in_esminis_log() {
     let run = run_fixture();
-    for &(name, t, x, v) in ESMINI {
-        let s = at(&run, name, t);
-        assert!(close(s.x, x, 2e-6) && close(s.speed, v, 2e-6), "{name} at {t}: x {} speed {} against esmini {x} {v}", s.x, s.speed);
-    }
+    assert_esmini_x_speed(&run, ESMINI, 2e-6);
     // Both end when the masters arrive, at 23 s in esmini's log.
     for name in ["Sync1Action", "Sync2Action"] {
         let end = event_time(&run, name, "end");

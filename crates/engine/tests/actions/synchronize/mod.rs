@@ -1,5 +1,6 @@
 //! SynchronizeAction and its tolerances.
 
 mod basic;
+mod master_moving_away;
 mod master_standing;
 mod tolerance;
