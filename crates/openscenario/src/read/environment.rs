@@ -10,17 +10,11 @@ use crate::xml::Elem;
 
 /// EnvironmentAction: an Environment or a CatalogReference child.
 pub(crate) fn read_environment_ref(r: &mut Reader, cx: &Cx, wrapper: &Elem) -> Result<Environment, Error> {
-    let c = cx.choice(wrapper, "Environment or CatalogReference")?;
-    match c.name.as_str() {
-        "Environment" => read_environment(r, cx, c, &[]),
-        "CatalogReference" => r.catalog_entry(cx, c, &[CatalogKind::Environment], read_environment),
-        _ => Err(cx.unexpected(c, &wrapper.name, "Environment, CatalogReference")),
-    }
+    r.inline_or_catalog(cx, wrapper, "Environment", CatalogKind::Environment, read_environment)
 }
 
 pub(crate) fn read_environment(r: &mut Reader, cx: &Cx, e: &Elem, asg: &[(String, String)]) -> Result<Environment, Error> {
-    let parameters = r.declarations(cx, e, asg)?;
-    let scope = cx.scope.child(parameters.clone());
+    let (parameters, scope) = r.declarations(cx, e, asg)?;
     let cx = cx.scoped(&scope);
     let time_of_day = e
         .child("TimeOfDay")
