@@ -46,10 +46,7 @@ fn read_weather(cx: &Cx, w: &Elem) -> Result<Weather, Error> {
                 Ok::<_, Error>(Sun {
                     azimuth: cx.f64_or(s, "azimuth", 0.0)?,
                     elevation: cx.f64_or(s, "elevation", 0.0)?,
-                    illuminance: match cx.opt_f64(s, "illuminance")? {
-                        Some(v) => Some(v),
-                        None => cx.opt_f64(s, "intensity")?,
-                    },
+                    illuminance: cx.opt_f64_renamed(s, "illuminance", "intensity")?,
                 })
             })
             .transpose()?,
@@ -67,10 +64,7 @@ fn read_weather(cx: &Cx, w: &Elem) -> Result<Weather, Error> {
             .map(|p| {
                 Ok::<_, Error>(Precipitation {
                     precipitation_type: cx.enum_(p, "precipitationType")?,
-                    intensity: match cx.opt_f64(p, "precipitationIntensity")? {
-                        Some(v) => Some(v),
-                        None => cx.opt_f64(p, "intensity")?,
-                    },
+                    intensity: cx.opt_f64_renamed(p, "precipitationIntensity", "intensity")?,
                 })
             })
             .transpose()?,
