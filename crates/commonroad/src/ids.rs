@@ -61,6 +61,18 @@ id_type!(
     PlanningProblemId
 );
 
+/// One `IdAllocator` method per id type: the next number of the shared space, as that type.
+macro_rules! fresh_ids {
+    ($($(#[$doc:meta])* $method:ident -> $id:ident,)*) => {
+        $(
+            $(#[$doc])*
+            pub fn $method(&mut self) -> $id {
+                $id(self.take())
+            }
+        )*
+    };
+}
+
 /// Hands out ids that are unique across one file, whatever their kind.
 ///
 /// Use one allocator per output file. [`crate::Scenario::id_allocator`] returns one that
@@ -100,32 +112,20 @@ impl IdAllocator {
         id
     }
 
-    /// A fresh lanelet id.
-    pub fn lanelet(&mut self) -> LaneletId {
-        LaneletId(self.take())
-    }
-    /// A fresh traffic-sign id.
-    pub fn traffic_sign(&mut self) -> TrafficSignId {
-        TrafficSignId(self.take())
-    }
-    /// A fresh traffic-light id.
-    pub fn traffic_light(&mut self) -> TrafficLightId {
-        TrafficLightId(self.take())
-    }
-    /// A fresh intersection id.
-    pub fn intersection(&mut self) -> IntersectionId {
-        IntersectionId(self.take())
-    }
-    /// A fresh incoming id.
-    pub fn incoming(&mut self) -> IncomingId {
-        IncomingId(self.take())
-    }
-    /// A fresh obstacle id.
-    pub fn obstacle(&mut self) -> ObstacleId {
-        ObstacleId(self.take())
-    }
-    /// A fresh planning-problem id.
-    pub fn planning_problem(&mut self) -> PlanningProblemId {
-        PlanningProblemId(self.take())
+    fresh_ids! {
+        /// A fresh lanelet id.
+        lanelet -> LaneletId,
+        /// A fresh traffic-sign id.
+        traffic_sign -> TrafficSignId,
+        /// A fresh traffic-light id.
+        traffic_light -> TrafficLightId,
+        /// A fresh intersection id.
+        intersection -> IntersectionId,
+        /// A fresh incoming id.
+        incoming -> IncomingId,
+        /// A fresh obstacle id.
+        obstacle -> ObstacleId,
+        /// A fresh planning-problem id.
+        planning_problem -> PlanningProblemId,
     }
 }

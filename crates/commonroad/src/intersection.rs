@@ -24,3 +24,16 @@ pub struct Intersection {
     /// Each crossing lists at least one lanelet.
     pub crossings: Vec<Vec<LaneletId>>,
 }
+
+impl Incoming {
+    /// The incoming's lanelet lists by their 2020a XML element names, in the XSD's order: what
+    /// the writer emits and the validator checks, one list at a time.
+    pub fn lanelet_groups(&self) -> [(&'static str, &[LaneletId]); 4] {
+        [
+            ("incomingLanelet", &self.incoming_lanelets),
+            ("successorsRight", &self.successors_right),
+            ("successorsStraight", &self.successors_straight),
+            ("successorsLeft", &self.successors_left),
+        ]
+    }
+}

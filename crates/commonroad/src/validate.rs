@@ -6,6 +6,7 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::fmt;
 
 use crate::geometry::{AbsoluteShape, Point, Shape};
+use crate::ids::LaneletId;
 use crate::lanelet::{DrivingDir, Lanelet};
 use crate::planning::{GoalPosition, PlanningProblemSet};
 use crate::scenario::Scenario;
@@ -115,6 +116,13 @@ impl Checker {
         }
     }
 
+    /// `register` for each id of one element family, in order.
+    fn register_all(&mut self, kind: ElementKind, ids: impl IntoIterator<Item = u64>) {
+        for id in ids {
+            self.register(kind, id);
+        }
+    }
+
     fn reference(&mut self, from: ElementKind, from_id: u64, field: &str, target: u64, expected: ElementKind) {
         match self.ids.get(&target) {
             Some(k) if *k == expected => {}
@@ -183,33 +191,17 @@ impl Scenario {
 
     fn register_ids(&self, c: &mut Checker, problems: Option<&PlanningProblemSet>) {
         let net = &self.network;
-        for l in &net.lanelets {
-            c.register(ElementKind::Lanelet, l.id.get());
-        }
-        for s in &net.traffic_signs {
-            c.register(ElementKind::TrafficSign, s.id.get());
-        }
-        for l in &net.traffic_lights {
-            c.register(ElementKind::TrafficLight, l.id.get());
-        }
+        c.register_all(ElementKind::Lanelet, net.lanelets.iter().map(|l| l.id.get()));
+        c.register_all(ElementKind::TrafficSign, net.traffic_signs.iter().map(|s| s.id.get()));
+        c.register_all(ElementKind::TrafficLight, net.traffic_lights.iter().map(|l| l.id.get()));
         for i in &net.intersections {
             c.register(ElementKind::Intersection, i.id.get());
-            for inc in &i.incomings {
-                c.register(ElementKind::Incoming, inc.id.get());
-            }
+            c.register_all(ElementKind::Incoming, i.incomings.iter().map(|inc| inc.id.get()));
         }
-        for o in &self.static_obstacles {
-            c.register(ElementKind::StaticObstacle, o.id.get());
-        }
-        for o in &self.dynamic_obstacles {
-            c.register(ElementKind::DynamicObstacle, o.id.get());
-        }
-        for o in &self.environment_obstacles {
-            c.register(ElementKind::EnvironmentObstacle, o.id.get());
-        }
-        for p in problems.map(|s| s.problems.as_slice()).unwrap_or(&[]) {
-            c.register(ElementKind::PlanningProblem, p.id.get());
-        }
+        c.register_all(ElementKind::StaticObstacle, self.static_obstacles.iter().map(|o| o.id.get()));
+        c.register_all(ElementKind::DynamicObstacle, self.dynamic_obstacles.iter().map(|o| o.id.get()));
+        c.register_all(ElementKind::EnvironmentObstacle, self.environment_obstacles.iter().map(|o| o.id.get()));
+        c.register_all(ElementKind::PlanningProblem, problems.map(|s| s.problems.as_slice()).unwrap_or(&[]).iter().map(|p| p.id.get()));
     }
 
     fn check_header(&self, c: &mut Checker) {
@@ -234,21 +226,18 @@ impl Scenario {
         let mut referenced_lights = BTreeSet::new();
         for l in &net.lanelets {
             let id = l.id.get();
-            for p in &l.predecessors {
-                c.reference(K::Lanelet, id, "predecessor", p.get(), K::Lanelet);
-                if let Some(other) = by_id.get(&p.get()) {
-                    if !other.successors.contains(&l.id) {
-                        let msg = format!("has predecessor {p}, but {p} does not list {id} as successor");
-                        c.push(ProblemKind::AsymmetricSuccessor, K::Lanelet, Some(id), msg);
-                    }
-                }
-            }
-            for s in &l.successors {
-                c.reference(K::Lanelet, id, "successor", s.get(), K::Lanelet);
-                if let Some(other) = by_id.get(&s.get()) {
-                    if !other.predecessors.contains(&l.id) {
-                        let msg = format!("has successor {s}, but {s} does not list {id} as predecessor");
-                        c.push(ProblemKind::AsymmetricSuccessor, K::Lanelet, Some(id), msg);
+            // each link must be listed the other way round by the lanelet it names
+            type BackLinks = fn(&Lanelet) -> &[LaneletId];
+            let links: [(&[LaneletId], &str, &str, BackLinks); 2] =
+                [(&l.predecessors, "predecessor", "successor", |o| &o.successors), (&l.successors, "successor", "predecessor", |o| &o.predecessors)];
+            for (refs, field, back, back_refs) in links {
+                for p in refs {
+                    c.reference(K::Lanelet, id, field, p.get(), K::Lanelet);
+                    if let Some(other) = by_id.get(&p.get()) {
+                        if !back_refs(other).contains(&l.id) {
+                            let msg = format!("has {field} {p}, but {p} does not list {id} as {back}");
+                            c.push(ProblemKind::AsymmetricSuccessor, K::Lanelet, Some(id), msg);
+                        }
                     }
                 }
             }
@@ -334,13 +323,7 @@ impl Scenario {
             for inc in &i.incomings {
                 let id = inc.id.get();
                 c.non_empty(K::Incoming, Some(id), "incomingLanelet", inc.incoming_lanelets.len());
-                let groups = [
-                    ("incomingLanelet", &inc.incoming_lanelets),
-                    ("successorsRight", &inc.successors_right),
-                    ("successorsStraight", &inc.successors_straight),
-                    ("successorsLeft", &inc.successors_left),
-                ];
-                for (field, refs) in groups {
+                for (field, refs) in inc.lanelet_groups() {
                     for r in refs {
                         c.reference(K::Incoming, id, field, r.get(), K::Lanelet);
                     }

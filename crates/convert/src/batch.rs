@@ -282,12 +282,7 @@ fn run_job(job: &Job, shared: &Shared) -> ScenarioReport {
     r.failure = failure;
     r.warnings = warnings;
     r.timings = c.timings;
-    r.benchmark_id = c.facts.benchmark_id;
-    r.ego = c.facts.ego;
-    r.lanelets = c.facts.lanelets;
-    r.obstacles = c.facts.obstacles;
-    r.duration_s = c.facts.duration_s;
-    r.tags = c.facts.tags;
+    r.facts = c.facts;
     r.picture = picture;
     r
 }

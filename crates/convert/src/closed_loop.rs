@@ -17,7 +17,8 @@ use crate::cache::Caches;
 use crate::ego::EgoChoice;
 use crate::held_input::substep;
 use crate::options::ConvertOptions;
-use crate::pipeline::{finish, prepare, Conversion, Facts, Model, Prepared, Request};
+use crate::pipeline::{finish, prepare, Conversion, Model, Prepared, Request};
+use crate::report::Facts;
 use crate::report::{Failure, Stage, StageWarning, Timings};
 use crate::stages::run_engine;
 

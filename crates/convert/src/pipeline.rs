@@ -18,20 +18,8 @@ use crate::cache::Caches;
 use crate::header::{benchmark_id, date_prefix, fallback_date};
 use crate::light_cycles::apply_signal_states;
 use crate::options::{ConvertOptions, OutputFormat};
-use crate::report::{Failure, Stage, StageWarning, Timings};
+use crate::report::{Facts, Failure, Stage, StageWarning, Timings};
 use crate::stages::run_engine;
-
-/// Facts about a converted scenario, for the report.
-#[derive(Debug, Clone, PartialEq, Default)]
-pub struct Facts {
-    pub benchmark_id: Option<String>,
-    pub ego: Option<String>,
-    pub lanelets: usize,
-    pub obstacles: usize,
-    /// Simulated duration, s.
-    pub duration_s: Option<f64>,
-    pub tags: Vec<String>,
-}
 
 /// What a conversion serialised, in the format of its options.
 #[derive(Debug, Clone, PartialEq)]

@@ -99,6 +99,18 @@ impl Status {
     }
 }
 
+/// Facts about a converted scenario, for the report.
+#[derive(Debug, Clone, PartialEq, Default, Serialize)]
+pub struct Facts {
+    pub benchmark_id: Option<String>,
+    pub ego: Option<String>,
+    pub lanelets: usize,
+    pub obstacles: usize,
+    /// Simulated duration, s.
+    pub duration_s: Option<f64>,
+    pub tags: Vec<String>,
+}
+
 /// One scenario (or one variation) of a batch.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ScenarioReport {
@@ -120,13 +132,9 @@ pub struct ScenarioReport {
     pub failure: Option<Failure>,
     pub warnings: Vec<StageWarning>,
     pub timings: Timings,
-    pub benchmark_id: Option<String>,
-    pub ego: Option<String>,
-    pub lanelets: usize,
-    pub obstacles: usize,
-    /// Simulated duration, s.
-    pub duration_s: Option<f64>,
-    pub tags: Vec<String>,
+    /// Benchmark id, ego, counts, duration and tags (in the JSON report as fields of their own).
+    #[serde(flatten)]
+    pub facts: Facts,
     /// The picture written beside the output (`--render`).
     pub picture: Option<PathBuf>,
 }
@@ -146,12 +154,7 @@ impl ScenarioReport {
             failure: None,
             warnings: Vec::new(),
             timings: Timings::default(),
-            benchmark_id: None,
-            ego: None,
-            lanelets: 0,
-            obstacles: 0,
-            duration_s: None,
-            tags: Vec::new(),
+            facts: Facts::default(),
             picture: None,
         }
     }

@@ -41,7 +41,7 @@ impl Sums {
                 self.converted += 1;
                 self.time_ms.0 += r.timings.total_ms;
                 self.time_ms.1 += 1;
-                if let Some(d) = r.duration_s {
+                if let Some(d) = r.facts.duration_s {
                     self.duration_s.0 += d;
                     self.duration_s.1 += 1;
                 }

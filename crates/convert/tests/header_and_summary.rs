@@ -1,7 +1,7 @@
 //! Benchmark ids, dates, and the summary table.
 
 use convert::{benchmark_id, check_country, date_prefix, parse_date, render_summary, summarise};
-use convert::{ScenarioReport, Status, Timings};
+use convert::{Facts, ScenarioReport, Status, Timings};
 use std::path::PathBuf;
 
 #[test]
@@ -44,12 +44,7 @@ fn report(folder: &str, ok: bool, ms: f64, dur: f64) -> ScenarioReport {
         failure: None,
         warnings: Vec::new(),
         timings: Timings { total_ms: ms, ..Timings::default() },
-        benchmark_id: None,
-        ego: None,
-        lanelets: 0,
-        obstacles: 0,
-        duration_s: Some(dur),
-        tags: Vec::new(),
+        facts: Facts { duration_s: Some(dur), ..Facts::default() },
         picture: None,
     }
 }

@@ -165,6 +165,15 @@ impl<'s> Cx<'s> {
         })
     }
 
+    /// An optional number under `name`, else under `old_name`, the attribute's name in an
+    /// earlier version of the standard (Sun's `illuminance` was `intensity` in OpenSCENARIO 1.0).
+    pub(crate) fn opt_f64_renamed(&self, e: &Elem, name: &str, old_name: &str) -> Result<Option<f64>, Error> {
+        match self.opt_f64(e, name)? {
+            Some(v) => Ok(Some(v)),
+            None => self.opt_f64(e, old_name),
+        }
+    }
+
     /// A number esmini reads with `std::stof`, which stops on text that is not one: no fallback.
     pub(crate) fn f64_exact(&self, e: &Elem, name: &str) -> Result<f64, Error> {
         self.opt_conv(e, name, parse_f64)?.ok_or_else(|| self.missing(e, name))

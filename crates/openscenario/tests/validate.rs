@@ -4,6 +4,7 @@ use openscenario::validate::{validate_str, Finding, Severity};
 use std::path::Path;
 
 fn scenario(minor: u8, params: &str, init: &str, story: &str) -> String {
+    let vehicle = crate::common::VEHICLE;
     format!(
         r#"<?xml version="1.0"?>
 <OpenSCENARIO>
@@ -13,15 +14,7 @@ fn scenario(minor: u8, params: &str, init: &str, story: &str) -> String {
   <RoadNetwork/>
   <Entities>
     <ScenarioObject name="Ego">
-      <Vehicle name="car" vehicleCategory="car">
-        <BoundingBox><Center x="1" y="0" z="1"/><Dimensions width="2" length="4" height="1.5"/></BoundingBox>
-        <Performance maxSpeed="50" maxAcceleration="5" maxDeceleration="8"/>
-        <Axles>
-          <FrontAxle maxSteering="0.5" wheelDiameter="0.6" trackWidth="1.6" positionX="2.8" positionZ="0.3"/>
-          <RearAxle maxSteering="0" wheelDiameter="0.6" trackWidth="1.6" positionX="0" positionZ="0.3"/>
-        </Axles>
-        <Properties/>
-      </Vehicle>
+      {vehicle}
     </ScenarioObject>
   </Entities>
   <Storyboard>
@@ -134,7 +127,7 @@ fn deprecated_and_later_version_elements_are_warnings() {
 #[test]
 fn ranges_of_the_standard_are_checked() {
     let text = scenario(3, "", &speed("1"), "")
-        .replace(r#"wheelDiameter="0.6" trackWidth="1.6" positionX="2.8""#, r#"wheelDiameter="-0.6" trackWidth="1.6" positionX="2.8""#);
+        .replace(r#"wheelDiameter="0.6" trackWidth="1.8" positionX="3""#, r#"wheelDiameter="-0.6" trackWidth="1.8" positionX="3""#);
     let e = errors(&check(&text));
     assert!(e.len() == 1 && e[0].0 == 13 && e[0].1.contains("wheelDiameter > 0"), "{e:#?}");
 }

@@ -8,7 +8,7 @@
 //! each line).
 
 use crate::vec2::{one_sided_distance, samples, SegmentIndex, V2};
-use commonroad::{Lanelet, LaneletNetwork};
+use commonroad::{Lanelet, LaneletId, LaneletNetwork};
 use std::collections::BTreeMap;
 
 /// How far a read-back lanelet may lie from an original one and still be one of its pieces (m).
@@ -156,20 +156,16 @@ pub fn compare(original: &LaneletNetwork, back: &LaneletNetwork) -> Comparison {
             m.iter().filter_map(|&j| back.lanelets.get(j)).any(|b| rel(b).iter().any(|x| back_pos.get(x).is_some_and(|k| theirs.contains(k))))
         };
         let mut lost = Vec::new();
-        for s in &l.successors {
-            relations += 1;
-            if has(s.get(), &|b| b.successors.iter().map(|x| x.get()).collect()) {
-                kept += 1;
-            } else {
-                lost.push(format!("successor {}", s.get()));
-            }
-        }
-        for s in &l.predecessors {
-            relations += 1;
-            if has(s.get(), &|b| b.predecessors.iter().map(|x| x.get()).collect()) {
-                kept += 1;
-            } else {
-                lost.push(format!("predecessor {}", s.get()));
+        type Links = fn(&Lanelet) -> &Vec<LaneletId>;
+        let links: [(&str, Links); 2] = [("successor", |b| &b.successors), ("predecessor", |b| &b.predecessors)];
+        for (name, list) in links {
+            for s in list(l) {
+                relations += 1;
+                if has(s.get(), &|b| list(b).iter().map(|x| x.get()).collect()) {
+                    kept += 1;
+                } else {
+                    lost.push(format!("{name} {}", s.get()));
+                }
             }
         }
         for (name, adj) in [("adjacent left", l.adjacent_left), ("adjacent right", l.adjacent_right)] {

@@ -147,23 +147,23 @@ fn signal(o: &mut Out, depth: usize, s: &Signal) {
             let _ = write!(a, " unit=\"{unit}\"");
         }
     }
-    if s.validity.is_empty() {
-        o.line(depth, &format!("{a}/>"));
-    } else {
-        o.line(depth, &format!("{a}>"));
-        validity(o, depth + 1, &s.validity);
-        o.line(depth, "</signal>");
-    }
+    with_validity(o, depth, &a, "signal", &s.validity);
 }
 
 fn signal_reference(o: &mut Out, depth: usize, r: &SignalReference) {
     let a = format!("<signalReference s=\"{}\" t=\"{}\" id=\"{}\" orientation=\"{}\"", num(r.s), num(r.t), r.id, r.orientation);
-    if r.validity.is_empty() {
-        o.line(depth, &format!("{a}/>"));
+    with_validity(o, depth, &a, "signalReference", &r.validity);
+}
+
+/// Closes the start tag `open` (`<tag` and its attributes): empty, or holding the lanes the
+/// element is valid in.
+fn with_validity(o: &mut Out, depth: usize, open: &str, tag: &str, lanes: &[Validity]) {
+    if lanes.is_empty() {
+        o.line(depth, &format!("{open}/>"));
     } else {
-        o.line(depth, &format!("{a}>"));
-        validity(o, depth + 1, &r.validity);
-        o.line(depth, "</signalReference>");
+        o.line(depth, &format!("{open}>"));
+        validity(o, depth + 1, lanes);
+        o.line(depth, &format!("</{tag}>"));
     }
 }
 

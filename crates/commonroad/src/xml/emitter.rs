@@ -119,11 +119,7 @@ impl Emitter {
 
     /// `<name attrs>` on its own line; nesting deepens.
     pub(crate) fn open(&mut self, name: &str, attrs: &[(&str, &dyn Display)]) -> Result<(), Error> {
-        self.begin_line();
-        self.out.push('<');
-        self.out.push_str(name);
-        self.attributes(name, attrs)?;
-        self.out.push_str(">\n");
+        self.tag_line(name, attrs, ">\n")?;
         self.depth += 1;
         Ok(())
     }
@@ -138,11 +134,16 @@ impl Emitter {
 
     /// `<name attrs/>`.
     pub(crate) fn empty(&mut self, name: &str, attrs: &[(&str, &dyn Display)]) -> Result<(), Error> {
+        self.tag_line(name, attrs, "/>\n")
+    }
+
+    /// An indented `<name attrs` closed by `end` (`>` or `/>` and the line break).
+    fn tag_line(&mut self, name: &str, attrs: &[(&str, &dyn Display)], end: &str) -> Result<(), Error> {
         self.begin_line();
         self.out.push('<');
         self.out.push_str(name);
         self.attributes(name, attrs)?;
-        self.out.push_str("/>\n");
+        self.out.push_str(end);
         Ok(())
     }
 

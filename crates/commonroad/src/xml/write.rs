@@ -52,30 +52,14 @@ fn write(scenario: &Scenario, problems: &[PlanningProblem]) -> Result<Vec<u8>, E
         e.close("scenarioTags");
     }
     let net = &scenario.network;
-    for l in &net.lanelets {
-        with_context(&mut e, format!("lanelet {}", l.id), |e| lanelet(e, l))?;
-    }
-    for s in &net.traffic_signs {
-        with_context(&mut e, format!("trafficSign {}", s.id), |e| traffic_sign(e, s))?;
-    }
-    for t in &net.traffic_lights {
-        with_context(&mut e, format!("trafficLight {}", t.id), |e| traffic_light(e, t))?;
-    }
-    for i in &net.intersections {
-        with_context(&mut e, format!("intersection {}", i.id), |e| intersection(e, i))?;
-    }
-    for o in &scenario.static_obstacles {
-        with_context(&mut e, format!("staticObstacle {}", o.id), |e| static_obstacle(e, o))?;
-    }
-    for o in &scenario.dynamic_obstacles {
-        with_context(&mut e, format!("dynamicObstacle {}", o.id), |e| dynamic_obstacle(e, o))?;
-    }
-    for o in &scenario.environment_obstacles {
-        with_context(&mut e, format!("environmentObstacle {}", o.id), |e| environment_obstacle(e, o))?;
-    }
-    for p in problems {
-        with_context(&mut e, format!("planningProblem {}", p.id), |e| planning_problem(e, p))?;
-    }
+    each_with_context(&mut e, "lanelet", &net.lanelets, |x| &x.id, lanelet)?;
+    each_with_context(&mut e, "trafficSign", &net.traffic_signs, |x| &x.id, traffic_sign)?;
+    each_with_context(&mut e, "trafficLight", &net.traffic_lights, |x| &x.id, traffic_light)?;
+    each_with_context(&mut e, "intersection", &net.intersections, |x| &x.id, intersection)?;
+    each_with_context(&mut e, "staticObstacle", &scenario.static_obstacles, |x| &x.id, static_obstacle)?;
+    each_with_context(&mut e, "dynamicObstacle", &scenario.dynamic_obstacles, |x| &x.id, dynamic_obstacle)?;
+    each_with_context(&mut e, "environmentObstacle", &scenario.environment_obstacles, |x| &x.id, environment_obstacle)?;
+    each_with_context(&mut e, "planningProblem", problems, |x| &x.id, planning_problem)?;
     e.close("commonRoad");
     Ok(e.finish())
 }
@@ -88,6 +72,20 @@ fn estimated_size(scenario: &Scenario, problems: &[PlanningProblem]) -> usize {
     let states: usize = scenario.dynamic_obstacles.iter().map(|o| o.trajectory.len() + 1).sum();
     let others = net.lanelets.len() + net.traffic_signs.len() + net.traffic_lights.len() + net.intersections.len();
     4096 + 64 * points + 450 * states + 400 * (others + scenario.static_obstacles.len() + problems.len())
+}
+
+/// Writes each of `items` with `write`, errors naming the element (`tag` and its id).
+fn each_with_context<T, I: std::fmt::Display>(
+    e: &mut Emitter,
+    tag: &str,
+    items: &[T],
+    id: impl Fn(&T) -> &I,
+    write: impl Fn(&mut Emitter, &T) -> Result<(), Error>,
+) -> Result<(), Error> {
+    for item in items {
+        with_context(e, format!("{tag} {}", id(item)), |e| write(e, item))?;
+    }
+    Ok(())
 }
 
 fn with_context(e: &mut Emitter, label: String, f: impl FnOnce(&mut Emitter) -> Result<(), Error>) -> Result<(), Error> {
@@ -313,13 +311,7 @@ fn intersection(e: &mut Emitter, i: &Intersection) -> Result<(), Error> {
     e.open("intersection", &id_attr(&i.id))?;
     for inc in &i.incomings {
         e.open("incoming", &id_attr(&inc.id))?;
-        let groups = [
-            ("incomingLanelet", &inc.incoming_lanelets),
-            ("successorsRight", &inc.successors_right),
-            ("successorsStraight", &inc.successors_straight),
-            ("successorsLeft", &inc.successors_left),
-        ];
-        for (tag, refs) in groups {
+        for (tag, refs) in inc.lanelet_groups() {
             for r in refs {
                 e.empty(tag, &ref_attr(r))?;
             }

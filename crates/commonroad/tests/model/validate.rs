@@ -8,6 +8,14 @@ fn kinds(s: &Scenario, p: Option<&PlanningProblemSet>) -> Vec<ProblemKind> {
     s.validate(p).into_iter().map(|p| p.kind).collect()
 }
 
+/// The one problem `validate` finds, of kind `kind`.
+fn only_problem(s: &Scenario, p: Option<&PlanningProblemSet>, kind: ProblemKind) -> Problem {
+    let mut problems = s.validate(p);
+    assert_eq!(problems.len(), 1, "{problems:?}");
+    assert_eq!(problems[0].kind, kind, "{problems:?}");
+    problems.remove(0)
+}
+
 fn id<T>(f: fn(u64) -> Option<T>, v: u64) -> T {
     f(v).unwrap()
 }
@@ -23,11 +31,9 @@ fn the_minimal_example_is_consistent() {
 fn duplicate_ids_across_kinds() {
     let mut m = common::minimal();
     m.scenario.dynamic_obstacles[0].id = id(ObstacleId::new, m.lanelets[1].get());
-    let problems = m.scenario.validate(Some(&m.problems));
-    assert_eq!(problems.len(), 1, "{problems:?}");
-    assert_eq!(problems[0].kind, ProblemKind::DuplicateId);
-    assert_eq!(problems[0].element, ElementKind::DynamicObstacle);
-    assert_eq!(problems[0].id, Some(2));
+    let problem = only_problem(&m.scenario, Some(&m.problems), ProblemKind::DuplicateId);
+    assert_eq!(problem.element, ElementKind::DynamicObstacle);
+    assert_eq!(problem.id, Some(2));
     // the planning problem shares the id space too
     let mut m = common::minimal();
     m.problems.problems[0].id = id(PlanningProblemId::new, m.sign.get());
@@ -44,10 +50,8 @@ fn dangling_and_wrong_kind_references() {
     // a "lanelet" reference that names the traffic sign
     let sign_as_lanelet = id(LaneletId::new, m.sign.get());
     m.problems.problems[0].goal_states[1].position = Some(GoalPosition::Lanelets(vec![sign_as_lanelet]));
-    let problems = m.scenario.validate(Some(&m.problems));
-    assert_eq!(problems.len(), 1);
-    assert_eq!(problems[0].kind, ProblemKind::DanglingRef);
-    assert!(problems[0].message.contains("trafficSign"), "{}", problems[0]);
+    let problem = only_problem(&m.scenario, Some(&m.problems), ProblemKind::DanglingRef);
+    assert!(problem.message.contains("trafficSign"), "{}", problem);
 
     let mut m = common::minimal();
     m.scenario.network.lanelets[2].traffic_light_refs.push(id(TrafficLightId::new, 4242));
@@ -58,10 +62,8 @@ fn dangling_and_wrong_kind_references() {
 fn traffic_sign_not_referenced_by_a_lanelet() {
     let mut m = common::minimal();
     m.scenario.network.lanelets[0].traffic_sign_refs.clear();
-    let problems = m.scenario.validate(None);
-    assert_eq!(problems.len(), 1);
-    assert_eq!(problems[0].kind, ProblemKind::UnreferencedTrafficSign);
-    assert_eq!(problems[0].id, Some(m.sign.get()));
+    let problem = only_problem(&m.scenario, None, ProblemKind::UnreferencedTrafficSign);
+    assert_eq!(problem.id, Some(m.sign.get()));
 }
 
 #[test]
@@ -158,10 +160,8 @@ fn scenario_files_need_a_planning_problem_map_files_do_not() {
 fn successor_without_matching_predecessor() {
     let mut m = common::minimal();
     m.scenario.network.lanelets[2].predecessors.clear();
-    let problems = m.scenario.validate(None);
-    assert_eq!(problems.len(), 1);
-    assert_eq!(problems[0].kind, ProblemKind::AsymmetricSuccessor);
-    assert_eq!(problems[0].id, Some(m.lanelets[0].get()));
+    let problem = only_problem(&m.scenario, None, ProblemKind::AsymmetricSuccessor);
+    assert_eq!(problem.id, Some(m.lanelets[0].get()));
 }
 
 #[test]

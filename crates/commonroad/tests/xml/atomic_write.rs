@@ -19,13 +19,18 @@ fn entries(dir: &PathBuf) -> Vec<String> {
     v
 }
 
+/// `write_atomic` of `bytes` to `out.xml` in `d`: the file holds them and is all the folder holds.
+fn writes_only(d: &PathBuf, bytes: &[u8]) {
+    let p = d.join("out.xml");
+    write_atomic(&p, bytes).unwrap();
+    assert_eq!(std::fs::read(&p).unwrap(), bytes);
+    assert_eq!(entries(d), vec!["out.xml"]);
+}
+
 #[test]
 fn writes_new_file_and_leaves_nothing_else() {
     let d = fresh_dir("new");
-    let p = d.join("out.xml");
-    write_atomic(&p, b"hello").unwrap();
-    assert_eq!(std::fs::read(&p).unwrap(), b"hello");
-    assert_eq!(entries(&d), vec!["out.xml"]);
+    writes_only(&d, b"hello");
 }
 
 #[test]
@@ -33,9 +38,7 @@ fn replaces_an_existing_file_whole() {
     let d = fresh_dir("replace");
     let p = d.join("out.xml");
     std::fs::write(&p, vec![b'x'; 10_000]).unwrap();
-    write_atomic(&p, b"short").unwrap();
-    assert_eq!(std::fs::read(&p).unwrap(), b"short");
-    assert_eq!(entries(&d), vec!["out.xml"]);
+    writes_only(&d, b"short");
 }
 
 #[test]

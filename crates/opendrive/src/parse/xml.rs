@@ -58,15 +58,11 @@ impl<'a, 'input> Ctx<'a, 'input> {
     }
     /// A required finite number.
     pub(super) fn req_f64(&self, node: Node, name: &str) -> Result<f64, Error> {
-        let raw = self.req_str(node, name)?;
-        self.number(node, name, raw)
+        self.required(node, name, Self::number)
     }
     /// An optional finite number (empty text counts as absent).
     pub(super) fn opt_f64(&self, node: Node, name: &str) -> Result<Option<f64>, Error> {
-        match node.attribute(name) {
-            Some(raw) if !raw.trim().is_empty() => self.number(node, name, raw).map(Some),
-            _ => Ok(None),
-        }
+        self.optional(node, name, Self::number)
     }
     /// A finite number with a default when absent.
     pub(super) fn f64_or(&self, node: Node, name: &str, default: f64) -> Result<f64, Error> {
@@ -84,13 +80,22 @@ impl<'a, 'input> Ctx<'a, 'input> {
     }
     /// A required integer.
     pub(super) fn req_i32(&self, node: Node, name: &str) -> Result<i32, Error> {
-        let raw = self.req_str(node, name)?;
-        self.integer(node, name, raw)
+        self.required(node, name, Self::integer)
     }
-    /// An optional integer.
+    /// An optional integer (empty text counts as absent).
     pub(super) fn opt_i32(&self, node: Node, name: &str) -> Result<Option<i32>, Error> {
+        self.optional(node, name, Self::integer)
+    }
+
+    /// A required attribute read by `parse` (`number`, `integer`).
+    fn required<T>(&self, node: Node, name: &str, parse: fn(&Self, Node, &str, &str) -> Result<T, Error>) -> Result<T, Error> {
+        let raw = self.req_str(node, name)?;
+        parse(self, node, name, raw)
+    }
+    /// An optional attribute read by `parse`; empty text counts as absent.
+    fn optional<T>(&self, node: Node, name: &str, parse: fn(&Self, Node, &str, &str) -> Result<T, Error>) -> Result<Option<T>, Error> {
         match node.attribute(name) {
-            Some(raw) if !raw.trim().is_empty() => self.integer(node, name, raw).map(Some),
+            Some(raw) if !raw.trim().is_empty() => parse(self, node, name, raw).map(Some),
             _ => Ok(None),
         }
     }

@@ -74,8 +74,7 @@ pub(crate) fn read_entity_object_entry(r: &mut Reader, cx: &Cx, e: &Elem, asg: &
 }
 
 fn read_vehicle(r: &mut Reader, cx: &Cx, e: &Elem, asg: &[(String, String)]) -> Result<Vehicle, Error> {
-    let parameters = r.declarations(cx, e, asg)?;
-    let scope = cx.scope.child(parameters.clone());
+    let (parameters, scope) = r.declarations(cx, e, asg)?;
     let cx = cx.scoped(&scope);
     let perf = cx.child(e, "Performance")?;
     let axles = cx.child(e, "Axles")?;
@@ -118,8 +117,7 @@ fn read_vehicle(r: &mut Reader, cx: &Cx, e: &Elem, asg: &[(String, String)]) -> 
 }
 
 fn read_pedestrian(r: &mut Reader, cx: &Cx, e: &Elem, asg: &[(String, String)]) -> Result<Pedestrian, Error> {
-    let parameters = r.declarations(cx, e, asg)?;
-    let scope = cx.scope.child(parameters.clone());
+    let (parameters, scope) = r.declarations(cx, e, asg)?;
     let cx = cx.scoped(&scope);
     Ok(Pedestrian {
         name: cx.text(e, "name")?,
@@ -139,8 +137,7 @@ fn read_pedestrian(r: &mut Reader, cx: &Cx, e: &Elem, asg: &[(String, String)]) 
 }
 
 fn read_misc_object(r: &mut Reader, cx: &Cx, e: &Elem, asg: &[(String, String)]) -> Result<MiscObject, Error> {
-    let parameters = r.declarations(cx, e, asg)?;
-    let scope = cx.scope.child(parameters.clone());
+    let (parameters, scope) = r.declarations(cx, e, asg)?;
     let cx = cx.scoped(&scope);
     Ok(MiscObject {
         name: cx.text(e, "name")?,
@@ -191,8 +188,7 @@ pub(crate) fn read_properties(cx: &Cx, e: Option<&Elem>) -> Result<Properties, E
 }
 
 pub(crate) fn read_controller(r: &mut Reader, cx: &Cx, e: &Elem, asg: &[(String, String)]) -> Result<Controller, Error> {
-    let parameters = r.declarations(cx, e, asg)?;
-    let scope = cx.scope.child(parameters.clone());
+    let (parameters, scope) = r.declarations(cx, e, asg)?;
     let cx = cx.scoped(&scope);
     Ok(Controller {
         name: cx.text(e, "name")?,

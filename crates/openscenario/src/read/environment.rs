@@ -10,17 +10,11 @@ use crate::xml::Elem;
 
 /// EnvironmentAction: an Environment or a CatalogReference child.
 pub(crate) fn read_environment_ref(r: &mut Reader, cx: &Cx, wrapper: &Elem) -> Result<Environment, Error> {
-    let c = cx.choice(wrapper, "Environment or CatalogReference")?;
-    match c.name.as_str() {
-        "Environment" => read_environment(r, cx, c, &[]),
-        "CatalogReference" => r.catalog_entry(cx, c, &[CatalogKind::Environment], read_environment),
-        _ => Err(cx.unexpected(c, &wrapper.name, "Environment, CatalogReference")),
-    }
+    r.inline_or_catalog(cx, wrapper, "Environment", CatalogKind::Environment, read_environment)
 }
 
 pub(crate) fn read_environment(r: &mut Reader, cx: &Cx, e: &Elem, asg: &[(String, String)]) -> Result<Environment, Error> {
-    let parameters = r.declarations(cx, e, asg)?;
-    let scope = cx.scope.child(parameters.clone());
+    let (parameters, scope) = r.declarations(cx, e, asg)?;
     let cx = cx.scoped(&scope);
     let time_of_day = e
         .child("TimeOfDay")
@@ -52,10 +46,7 @@ fn read_weather(cx: &Cx, w: &Elem) -> Result<Weather, Error> {
                 Ok::<_, Error>(Sun {
                     azimuth: cx.f64_or(s, "azimuth", 0.0)?,
                     elevation: cx.f64_or(s, "elevation", 0.0)?,
-                    illuminance: match cx.opt_f64(s, "illuminance")? {
-                        Some(v) => Some(v),
-                        None => cx.opt_f64(s, "intensity")?,
-                    },
+                    illuminance: cx.opt_f64_renamed(s, "illuminance", "intensity")?,
                 })
             })
             .transpose()?,
@@ -73,10 +64,7 @@ fn read_weather(cx: &Cx, w: &Elem) -> Result<Weather, Error> {
             .map(|p| {
                 Ok::<_, Error>(Precipitation {
                     precipitation_type: cx.enum_(p, "precipitationType")?,
-                    intensity: match cx.opt_f64(p, "precipitationIntensity")? {
-                        Some(v) => Some(v),
-                        None => cx.opt_f64(p, "intensity")?,
-                    },
+                    intensity: cx.opt_f64_renamed(p, "precipitationIntensity", "intensity")?,
                 })
             })
             .transpose()?,

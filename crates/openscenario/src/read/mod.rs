@@ -46,10 +46,17 @@ impl Reader {
         self.warn(cx.loc(e.pos), format!("<{}> in {parent} is not supported yet; it is kept as a placeholder", e.name));
     }
 
-    /// Declarations of an entry (Vehicle, Maneuver, ...) resolved with `assignments`.
-    pub(crate) fn declarations(&mut self, cx: &Cx, e: &Elem, assignments: &[(String, String)]) -> Result<Vec<ParameterDeclaration>, Error> {
+    /// Declarations of an entry (Vehicle, Maneuver, ...) resolved with `assignments`, and the
+    /// scope they open inside `cx`'s (the entry is read in `cx.scoped(&scope)`).
+    pub(crate) fn declarations<'s>(
+        &mut self,
+        cx: &Cx<'s>,
+        e: &Elem,
+        assignments: &[(String, String)],
+    ) -> Result<(Vec<ParameterDeclaration>, Scope<'s>), Error> {
         // an assignment that matches no declaration is said where it is written (`catalog_entry`)
-        read_declarations(e.child("ParameterDeclarations"), cx.scope, assignments, &cx.file, &mut self.warnings)
+        let parameters = read_declarations(e.child("ParameterDeclarations"), cx.scope, assignments, &cx.file, &mut self.warnings)?;
+        Ok((parameters.clone(), cx.scope.child(parameters)))
     }
 
     /// Resolves a CatalogReference element and reads the entry with `read`, which receives the
@@ -144,6 +151,25 @@ impl Reader {
                 Ok(placeholder(entry))
             }
             other => other,
+        }
+    }
+
+    /// The child of `wrapper`: the element `element` itself (read with `read`) or a
+    /// CatalogReference to an entry of catalog `kind`. Environment, Trajectory and Route are
+    /// given either way.
+    pub(crate) fn inline_or_catalog<T>(
+        &mut self,
+        cx: &Cx,
+        wrapper: &Elem,
+        element: &str,
+        kind: CatalogKind,
+        read: impl FnOnce(&mut Reader, &Cx, &Elem, &[(String, String)]) -> Result<T, Error>,
+    ) -> Result<T, Error> {
+        let c = cx.choice(wrapper, &format!("{element} or CatalogReference"))?;
+        match c.name.as_str() {
+            "CatalogReference" => self.catalog_entry(cx, c, &[kind], read),
+            name if name == element => read(self, cx, c, &[]),
+            _ => Err(cx.unexpected(c, &wrapper.name, &format!("{element}, CatalogReference"))),
         }
     }
 }

@@ -42,8 +42,7 @@ pub(crate) fn read_storyboard(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<Story
 }
 
 fn read_story(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<Story, Error> {
-    let parameters = r.declarations(cx, e, &[])?;
-    let scope = cx.scope.child(parameters.clone());
+    let (parameters, scope) = r.declarations(cx, e, &[])?;
     let cx = cx.scoped(&scope);
     let mut acts = Vec::new();
     for a in e.children_named("Act") {
@@ -92,8 +91,7 @@ fn read_group(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<ManeuverGroup, Error>
 }
 
 pub(crate) fn read_maneuver(r: &mut Reader, cx: &Cx, e: &Elem, asg: &[(String, String)]) -> Result<Maneuver, Error> {
-    let parameters = r.declarations(cx, e, asg)?;
-    let scope = cx.scope.child(parameters.clone());
+    let (parameters, scope) = r.declarations(cx, e, asg)?;
     let cx = cx.scoped(&scope);
     let mut events = Vec::new();
     for ev in e.children_named("Event") {

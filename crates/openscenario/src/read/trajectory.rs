@@ -11,17 +11,11 @@ use crate::xml::Elem;
 /// A wrapper whose child is a Trajectory or a CatalogReference (TrajectoryRef, 1.0
 /// FollowTrajectoryAction).
 pub(crate) fn read_trajectory_ref(r: &mut Reader, cx: &Cx, wrapper: &Elem) -> Result<Trajectory, Error> {
-    let c = cx.choice(wrapper, "Trajectory or CatalogReference")?;
-    match c.name.as_str() {
-        "Trajectory" => read_trajectory(r, cx, c, &[]),
-        "CatalogReference" => r.catalog_entry(cx, c, &[CatalogKind::Trajectory], read_trajectory),
-        _ => Err(cx.unexpected(c, &wrapper.name, "Trajectory, CatalogReference")),
-    }
+    r.inline_or_catalog(cx, wrapper, "Trajectory", CatalogKind::Trajectory, read_trajectory)
 }
 
 pub(crate) fn read_trajectory(r: &mut Reader, cx: &Cx, e: &Elem, asg: &[(String, String)]) -> Result<Trajectory, Error> {
-    let parameters = r.declarations(cx, e, asg)?;
-    let scope = cx.scope.child(parameters.clone());
+    let (parameters, scope) = r.declarations(cx, e, asg)?;
     let cx = cx.scoped(&scope);
     let shape_el = cx.child(e, "Shape")?;
     let s = cx.choice(shape_el, "Polyline, Clothoid, ClothoidSpline or Nurbs")?;
@@ -80,17 +74,11 @@ pub(crate) fn read_trajectory(r: &mut Reader, cx: &Cx, e: &Elem, asg: &[(String,
 
 /// A wrapper whose child is a Route or a CatalogReference.
 pub(crate) fn read_route_ref(r: &mut Reader, cx: &Cx, wrapper: &Elem) -> Result<Route, Error> {
-    let c = cx.choice(wrapper, "Route or CatalogReference")?;
-    match c.name.as_str() {
-        "Route" => read_route(r, cx, c, &[]),
-        "CatalogReference" => r.catalog_entry(cx, c, &[CatalogKind::Route], read_route),
-        _ => Err(cx.unexpected(c, &wrapper.name, "Route, CatalogReference")),
-    }
+    r.inline_or_catalog(cx, wrapper, "Route", CatalogKind::Route, read_route)
 }
 
 pub(crate) fn read_route(r: &mut Reader, cx: &Cx, e: &Elem, asg: &[(String, String)]) -> Result<Route, Error> {
-    let parameters = r.declarations(cx, e, asg)?;
-    let scope = cx.scope.child(parameters.clone());
+    let (parameters, scope) = r.declarations(cx, e, asg)?;
     let cx = cx.scoped(&scope);
     let waypoints = e
         .children_named("Waypoint")

@@ -17,6 +17,13 @@ fn at(e: &Error) -> (u32, u32) {
     (e.location.line, e.location.col)
 }
 
+/// `e` is of `kind`, its message holds `fragment`, and it stands at `position` (line, column).
+fn assert_error(e: &Error, kind: ErrorKind, fragment: &str, position: (u32, u32)) {
+    assert_eq!(e.kind, kind, "{e}");
+    assert!(e.message.contains(fragment), "{e}");
+    assert_eq!(at(e), position, "{e}");
+}
+
 /// The one problem of a file that loads (what esmini reads its own way: an error unless lenient).
 fn problem(text: &str) -> openscenario::Diagnostic {
     match load_str(Path::new("/virtual/test.xosc"), text, &LoadOptions::default()) {
@@ -42,20 +49,14 @@ fn unclosed_tag() {
 #[test]
 fn undeclared_parameter() {
     let text = scenario("", "", &car("Ego"), &teleport("Ego", "$Missing"), "");
-    let e = fail(&text);
-    assert_eq!(e.kind, ErrorKind::UndeclaredParameter);
-    assert!(e.message.contains("$Missing is not declared"), "{e}");
-    assert_eq!(at(&e), pos_of(&text, "$Missing"));
+    assert_error(&fail(&text), ErrorKind::UndeclaredParameter, "$Missing is not declared", pos_of(&text, "$Missing"));
 }
 
 #[test]
 fn undeclared_parameter_inside_expression() {
     let text = scenario("", "", &car("Ego"), &teleport("Ego", "${1 + $Nope}"), "");
-    let e = fail(&text);
-    assert_eq!(e.kind, ErrorKind::UndeclaredParameter);
-    assert!(e.message.contains("$Nope"), "{e}");
     // Column of `$Nope` inside the attribute value.
-    assert_eq!(at(&e), pos_of(&text, "$Nope}"));
+    assert_error(&fail(&text), ErrorKind::UndeclaredParameter, "$Nope", pos_of(&text, "$Nope}"));
 }
 
 #[test]
@@ -63,10 +64,7 @@ fn parameter_cycle() {
     let params = r#"<ParameterDeclaration name="A" parameterType="double" value="$B"/>
     <ParameterDeclaration name="B" parameterType="double" value="${$A + 1}"/>"#;
     let text = scenario(params, "", &car("Ego"), &teleport("Ego", "$A"), "");
-    let e = fail(&text);
-    assert_eq!(e.kind, ErrorKind::ParameterCycle);
-    assert!(e.message.contains("A -> B -> A"), "{e}");
-    assert_eq!(at(&e), pos_of(&text, "$B\""));
+    assert_error(&fail(&text), ErrorKind::ParameterCycle, "A -> B -> A", pos_of(&text, "$B\""));
 }
 
 #[test]
@@ -112,10 +110,7 @@ fn expression_error_position() {
 fn bad_enumeration_lists_the_choices() {
     let init = r#"<Private entityRef="Ego"><PrivateAction><LongitudinalAction><SpeedAction><SpeedActionDynamics dynamicsShape="spaceship" value="1" dynamicsDimension="time"/><SpeedActionTarget><AbsoluteTargetSpeed value="1"/></SpeedActionTarget></SpeedAction></LongitudinalAction></PrivateAction></Private>"#;
     let text = scenario("", "", &car("Ego"), init, "");
-    let e = fail(&text);
-    assert_eq!(e.kind, ErrorKind::Value);
-    assert!(e.message.contains("expected one of linear, cubic"), "{e}");
-    assert_eq!(at(&e), pos_of(&text, "spaceship"));
+    assert_error(&fail(&text), ErrorKind::Value, "expected one of linear, cubic", pos_of(&text, "spaceship"));
 }
 
 #[test]
@@ -129,10 +124,7 @@ fn an_unknown_vehicle_category_is_esmini_s_default() {
 #[test]
 fn missing_required_attribute() {
     let text = scenario("", "", &car("Ego").replace(" maxSpeed=\"70\"", ""), "", "");
-    let e = fail(&text);
-    assert_eq!(e.kind, ErrorKind::Structure);
-    assert!(e.message.contains("<Performance> needs a 'maxSpeed' attribute"), "{e}");
-    assert_eq!(at(&e), pos_of(&text, "<Performance"));
+    assert_error(&fail(&text), ErrorKind::Structure, "<Performance> needs a 'maxSpeed' attribute", pos_of(&text, "<Performance"));
 }
 
 #[test]
@@ -144,10 +136,7 @@ fn missing_file_names_the_path() {
 
 #[test]
 fn wrong_root_element() {
-    let e = fail("<?xml version=\"1.0\"?>\n<NotOpenScenario/>\n");
-    assert_eq!(e.kind, ErrorKind::Structure);
-    assert!(e.message.contains("expected root element <OpenSCENARIO>"), "{e}");
-    assert_eq!(at(&e), (2, 1));
+    assert_error(&fail("<?xml version=\"1.0\"?>\n<NotOpenScenario/>\n"), ErrorKind::Structure, "expected root element <OpenSCENARIO>", (2, 1));
 }
 
 fn write_catalog(dir: &Path) {
@@ -166,33 +155,33 @@ fn write_catalog(dir: &Path) {
     std::fs::write(dir.join("Vehicles/CarCatalog.xosc"), cat).expect("write");
 }
 
-#[test]
-fn missing_catalog_entry() {
-    let dir = temp_dir("missing-entry");
+/// Loads a scenario in a fresh folder `name` beside the catalog `write_catalog` writes, with the
+/// one ScenarioObject `entity`: the scenario's text, its folder and the error it fails with.
+fn fail_with_catalog(name: &str, entity: &str) -> (String, std::path::PathBuf, Error) {
+    let dir = temp_dir(name);
     write_catalog(&dir);
-    let entity = r#"<ScenarioObject name="Ego"><CatalogReference catalogName="Cars" entryName="truck"/></ScenarioObject>"#;
     let text = scenario("", r#"<VehicleCatalog><Directory path="Vehicles"/></VehicleCatalog>"#, entity, "", "");
     std::fs::write(dir.join("s.xosc"), &text).expect("write");
     let e = load(&dir.join("s.xosc"), &LoadOptions::default()).expect_err("error");
-    assert_eq!(e.kind, ErrorKind::MissingCatalogEntry);
-    assert!(e.message.contains("catalog 'Cars'") && e.message.contains("no entry named 'truck'"), "{e}");
+    (text, dir, e)
+}
+
+#[test]
+fn missing_catalog_entry() {
+    let entity = r#"<ScenarioObject name="Ego"><CatalogReference catalogName="Cars" entryName="truck"/></ScenarioObject>"#;
+    let (text, _, e) = fail_with_catalog("missing-entry", entity);
     // at the entry's name
-    assert_eq!(at(&e), pos_of(&text, "truck\""));
+    assert_error(&e, ErrorKind::MissingCatalogEntry, "catalog 'Cars'", pos_of(&text, "truck\""));
+    assert!(e.message.contains("no entry named 'truck'"), "{e}");
 }
 
 #[test]
 fn missing_catalog_names_the_directories_tried() {
-    let dir = temp_dir("missing-catalog");
-    write_catalog(&dir);
     let entity = r#"<ScenarioObject name="Ego"><CatalogReference catalogName="Trucks" entryName="car"/></ScenarioObject>"#;
-    let text = scenario("", r#"<VehicleCatalog><Directory path="Vehicles"/></VehicleCatalog>"#, entity, "", "");
-    std::fs::write(dir.join("s.xosc"), &text).expect("write");
-    let e = load(&dir.join("s.xosc"), &LoadOptions::default()).expect_err("error");
-    assert_eq!(e.kind, ErrorKind::MissingCatalog);
-    assert!(e.message.contains("catalog 'Trucks'"), "{e}");
-    assert!(e.message.contains(&dir.join("Vehicles").display().to_string()), "{e}");
+    let (text, dir, e) = fail_with_catalog("missing-catalog", entity);
     // at the catalog's name
-    assert_eq!(at(&e), pos_of(&text, "Trucks\""));
+    assert_error(&e, ErrorKind::MissingCatalog, "catalog 'Trucks'", pos_of(&text, "Trucks\""));
+    assert!(e.message.contains(&dir.join("Vehicles").display().to_string()), "{e}");
 }
 
 #[test]
