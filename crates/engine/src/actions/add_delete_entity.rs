@@ -73,7 +73,7 @@ impl<'a> Sim<'a> {
         // action moved it while it was away (the mark stayed: run.rs). Unlike a TeleportAction
         // it places the entity also while a controller in override mode drives it.
         let held = self.entities.get(e).is_some_and(|en| en.moved_by_action);
-        self.put_at(slot, e, pos);
+        self.put_at(slot, e, pos, "AddEntityAction");
         if let Some(en) = self.entities.get_mut(e) {
             en.moved_by_action = held;
             en.teleported = false;

@@ -22,15 +22,16 @@ impl<'a> Sim<'a> {
             self.warn_action(slot, "TeleportAction: ignored, as esmini does, while the trailer is towed (its tow vehicle places it)".into());
             return false;
         }
-        self.put_at(slot, e, pos)
+        self.put_at(slot, e, pos, "TeleportAction")
     }
 
     /// Put entity `e` at `pos` (esmini's Position::TeleportTo), whatever drives it: the
     /// TeleportAction's placement once the override test passed, and AddEntityAction's, which
-    /// has no such test (AddEntityAction::Start). Whether the entity was moved.
-    pub(super) fn put_at(&mut self, slot: usize, e: usize, pos: &Position) -> bool {
+    /// has no such test (AddEntityAction::Start). `action` names the action in warnings.
+    /// Whether the entity was moved.
+    pub(super) fn put_at(&mut self, slot: usize, e: usize, pos: &Position, action: &str) -> bool {
         if let Some(note) = crate::route_position::esmini_deviation(pos, self.net, &self.entities) {
-            self.warn_action(slot, format!("TeleportAction: {note}"));
+            self.warn_action(slot, format!("{action}: {note}"));
         }
         // A RoutePosition FromCurrentEntity (esmini 3.6: "not implemented"), or a road-relative
         // position from an entity so placed, leaves esmini's position unset: the origin,
@@ -45,7 +46,7 @@ impl<'a> Sim<'a> {
         let placement = match resolve_with_route(pos, self.net, &self.entities, own_route.as_deref(), Some(&mut self.random)) {
             Ok(p) => p,
             Err(msg) => {
-                self.warn_action(slot, format!("TeleportAction: {msg}; the entity stays where it is"));
+                self.warn_action(slot, format!("{action}: {msg}; the entity stays where it is"));
                 return false;
             }
         };

@@ -192,3 +192,15 @@ fn an_entity_deleted_in_init_first_exists_when_added() {
     assert!(close(at(&r, "Ego", 1.5).x, 115.0, 1e-9));
     assert!(r.warnings.is_empty(), "{:?}", r.warnings);
 }
+
+#[test]
+fn a_position_that_cannot_be_resolved_is_warned_about_under_the_action_that_gave_it() {
+    // Add Target back on a road the map does not have: it stays where it was, and the warning
+    // names AddEntityAction (not TeleportAction, whose placement it shares).
+    let nowhere = r#"<GlobalAction><EntityAction entityRef="Target"><AddEntityAction><Position><LanePosition roadId="99" laneId="-1" offset="0" s="10"/></Position></AddEntityAction></EntityAction></GlobalAction>"#;
+    let events = format!("{}{}", event("Delete", "parallel", &delete("Target"), &at_time(2.0)), event("Add", "parallel", nowhere, &at_time(3.0)));
+    let r = run(&xosc(&init(), &story("Ego", &events), &stop_at(4.0)));
+    let msgs: Vec<&str> = r.warnings.iter().map(|w| w.message.as_str()).collect();
+    assert!(msgs.iter().any(|m| m.starts_with("AddEntityAction: ") && m.contains("stays where it is")), "{msgs:?}");
+    assert!(!msgs.iter().any(|m| m.starts_with("TeleportAction")), "{msgs:?}");
+}
