@@ -12,6 +12,7 @@
 //! formulas, in `distance_models.rs`). Distances are free space in road coordinates (s, t).
 
 mod distance_models;
+mod free_space;
 pub(crate) mod state;
 
 use state::{AlksR157Rt, Info, Mode, Model, Phase, Scen, Trigger};
@@ -167,47 +168,6 @@ impl<'a> Sim<'a> {
         Some(Frame { s: lp.s, t: pose.t, lane: lp.lane_id, road: lp.road, offset: lp.offset, hrel, v_s, v_t, acc_s: en.accel * hrel.cos(), lane_width })
     }
 
-    /// Free-space distances (along s, across t) from entity `a` to `b` (Object::
-    /// FreeSpaceDistanceObjectRoadLane): along s in `a`'s driving direction (RoadPath::Calculate
-    /// turns the sign for an entity facing against the road), across t as the road's t grows
-    /// (Position::Delta: `tB - tA`, whichever way `a` faces).
-    fn alks_free_space(&self, a: usize, fa: &Frame, b: usize, fb: &Frame) -> (f64, f64) {
-        let ext = |i: usize, f: &Frame| {
-            let bb = self.entities[i].bbox;
-            let (mut s0, mut s1, mut t0, mut t1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
-            for (dx, dy) in [(1.0, 1.0), (1.0, -1.0), (-1.0, 1.0), (-1.0, -1.0)] {
-                let x = bb[0] + dx * bb[3] / 2.0;
-                let y = bb[1] + dy * bb[4] / 2.0;
-                let (c, s) = (f.hrel.cos(), f.hrel.sin());
-                let cs = f.s + x * c - y * s;
-                let ct = f.t + x * s + y * c;
-                s0 = s0.min(cs);
-                s1 = s1.max(cs);
-                t0 = t0.min(ct);
-                t1 = t1.max(ct);
-            }
-            (s0, s1, t0, t1)
-        };
-        let (as0, as1, at0, at1) = ext(a, fa);
-        let (bs0, bs1, bt0, bt1) = ext(b, fb);
-        let dir = if fa.hrel.abs() > std::f64::consts::FRAC_PI_2 { -1.0 } else { 1.0 };
-        let ds = if bs0 > as1 {
-            bs0 - as1
-        } else if as0 > bs1 {
-            -(as0 - bs1)
-        } else {
-            0.0
-        };
-        let dt = if bt0 > at1 {
-            bt0 - at1
-        } else if at0 > bt1 {
-            -(at0 - bt1)
-        } else {
-            0.0
-        };
-        (ds * dir, dt)
-    }
-
     /// esmini's Model::Process: measurements of `info.obj` from the ego `e`. false: not relevant.
     fn alks_process(&self, e: usize, a: &AlksR157Rt, info: &mut Info) -> bool {
         let Some(o) = info.obj else { return false };
@@ -236,7 +196,8 @@ impl<'a> Sim<'a> {
             return false;
         }
         info.dlane = dlane;
-        let (dl, dlat) = self.alks_free_space(e, &fe, o, &fo);
+        let Some(net) = self.net else { return false };
+        let Some((dl, dlat)) = free_space::free_space_road(net, &self.entities[e], &self.entities[o], fe.road, dir) else { return false };
         info.dist_lat = dlat;
         info.dist_long = dl;
         info.dv_s = (fe.v_s - fo.v_s) * dir;

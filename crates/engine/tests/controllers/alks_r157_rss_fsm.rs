@@ -9,7 +9,9 @@
 //! a slower car in the lane to its right; the lateral gap and the lane step are measured in the
 //! road's frame (Position::Delta: `tB - tA`, `laneB - laneA`), not the ego's, so the neighbour's
 //! negative gap makes it a cut-in the model brakes for (esmini logs "Detected object: Beside
-//! Scenario: CutIn").
+//! Scenario: CutIn"). Fixture `alks_r157_curve.xosc` (curve_r50.xodr): an FSM follower on the
+//! arc, its gap measured corner by corner in road coordinates (Object::
+//! FreeSpaceDistanceObjectRoadLane).
 
 use crate::common::*;
 
@@ -48,5 +50,21 @@ fn an_alks_r157_driving_against_s_measures_the_lateral_gap_in_the_road_frame() {
         ],
         0.01,
         1e-5,
+    );
+}
+
+#[test]
+fn an_alks_r157_on_a_curve_measures_the_gap_corner_by_corner_on_the_road() {
+    let run = run_fixture("alks_r157_curve.xosc", "curve_r50.xodr");
+    assert_esmini_poses(
+        &run,
+        &[
+            ("FsmEgo", 1.00, 52.978479, -1.664215, 0.057587),
+            ("FsmEgo", 2.50, 78.305952, 6.677539, 0.578746),
+            ("FsmEgo", 4.00, 91.893353, 19.618929, 0.943357),
+            ("FsmEgo", 5.50, 99.793430, 35.904725, 1.294938),
+        ],
+        0.01,
+        1e-4,
     );
 }
