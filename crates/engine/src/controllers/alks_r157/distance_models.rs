@@ -26,7 +26,7 @@ const FSM_MARGIN_DIST: f64 = 2.0;
 const FSM_MARGIN_SAFE_DIST: f64 = 2.0;
 
 /// esmini's SIGN macro: 1 for zero.
-fn esmini_sign(x: f64) -> f64 {
+pub(super) fn esmini_sign(x: f64) -> f64 {
     if x < 0.0 {
         -1.0
     } else {
@@ -102,14 +102,23 @@ pub(super) fn rss_check_critical(a: &mut AlksR157Rt, v: f64, lead_speed: f64) ->
     false
 }
 
+/// The reaction time of RSS's and FSM's ReactCritical: while it runs down the gas is released
+/// (no acceleration, a deceleration already under way kept) and the new speed is returned.
+fn reacting(a: &mut AlksR157Rt, v: f64, dt: f64) -> Option<f64> {
+    if a.rt_counter > 0.0 {
+        a.acc = a.acc.min(0.0);
+        a.rt_counter -= dt;
+        return Some(v + a.acc * dt);
+    }
+    None
+}
+
 /// ControllerALKS_R157SM::RSS::ReactCritical: the gas released during the reaction time, then a
 /// jerk-limited build-up of braking. esmini bounds it with `MIN(acc - jerk dt, max_dec)`, which
 /// never binds, so the deceleration keeps growing until the situation is no longer critical.
 pub(super) fn rss_react(a: &mut AlksR157Rt, v: f64, dt: f64) -> f64 {
-    if a.rt_counter > 0.0 {
-        a.acc = a.acc.min(0.0);
-        a.rt_counter -= dt;
-        return v + a.acc * dt;
+    if let Some(speed) = reacting(a, v, dt) {
+        return speed;
     }
     a.acc = (a.acc - MIN_JERK * dt).min(a.max_dec);
     (v + a.acc * dt).max(0.0)
@@ -191,10 +200,8 @@ pub(super) fn fsm_check_critical(a: &mut AlksR157Rt, v: f64, lead_speed: f64, ac
 /// deceleration graded by the surrogates (br_min..br_max by CFS, else up to br_min by PFS),
 /// built up with the jerk limit and capped at the model's maximum deceleration.
 pub(super) fn fsm_react(a: &mut AlksR157Rt, v: f64, dt: f64) -> f64 {
-    if a.rt_counter > 0.0 {
-        a.acc = a.acc.min(0.0);
-        a.rt_counter -= dt;
-        return v + a.acc * dt;
+    if let Some(speed) = reacting(a, v, dt) {
+        return speed;
     }
     let target = if a.cfs > SMALL_NUMBER { a.cfs * (FSM_BR_MAX - FSM_BR_MIN) + FSM_BR_MIN } else { a.pfs * FSM_BR_MIN };
     a.acc = (a.acc - MIN_JERK * dt).max(-a.max_dec).max(-target);

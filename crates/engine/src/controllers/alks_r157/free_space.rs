@@ -6,19 +6,11 @@
 //! that gap zero, and overlapping boxes are zero in both. On a curved road this differs from
 //! turning the boxes rigidly into the road frame.
 
+use super::distance_models::esmini_sign;
 use crate::conditions::distance::{boxes_overlap, corners};
 use crate::entities::Entity;
 use crate::roads::locate::world_to_lane;
 use opendrive::RoadNetwork;
-
-/// esmini's SIGN macro: 1 for zero.
-fn esmini_sign(x: f64) -> f64 {
-    if x < 0.0 {
-        -1.0
-    } else {
-        1.0
-    }
-}
 
 /// The corners in esmini's order (first quadrant first, counter-clockwise) mapped to (s, t) on
 /// `road`. A corner past the road's end is where the road network puts it (XYZ2TrackPos
