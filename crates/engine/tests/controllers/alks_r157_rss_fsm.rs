@@ -11,7 +11,10 @@
 //! negative gap makes it a cut-in the model brakes for (esmini logs "Detected object: Beside
 //! Scenario: CutIn"). Fixture `alks_r157_curve.xosc` (curve_r50.xodr): an FSM follower on the
 //! arc, its gap measured corner by corner in road coordinates (Object::
-//! FreeSpaceDistanceObjectRoadLane).
+//! FreeSpaceDistanceObjectRoadLane). Fixture `alks_r157_after_head_start.xosc`: the lead has a
+//! FollowGhost head start of 2 s, during which esmini measures the ghost's motion only
+//! (ScenarioEngine::prepareGroundTruth), so at the first step after it the RSS model sees both
+//! cars moving and turns critical at once, holding its speed through the reaction time.
 
 use crate::common::*;
 
@@ -67,4 +70,17 @@ fn an_alks_r157_on_a_curve_measures_the_gap_corner_by_corner_on_the_road() {
         0.01,
         1e-4,
     );
+}
+
+#[test]
+fn an_alks_r157_right_after_a_ghost_head_start_sees_the_others_moving() {
+    let run = run_fixture("alks_r157_after_head_start.xosc", "straight.xodr");
+    assert_esmini_poses(
+        &run,
+        &[("RssEgo", 0.50, 64.0, -1.75, 0.0), ("RssEgo", 1.00, 77.962999, -1.75, 0.0), ("RssEgo", 3.00, 117.681541, -1.75, 0.0)],
+        0.02,
+        1e-6,
+    );
+    // the reaction time (0.75 s) passes at the speed it had: nothing braked before it
+    assert!(close(at(&run, "RssEgo", 0.5).speed, 28.0, 1e-9));
 }
