@@ -52,7 +52,7 @@ fn the_engine_side_is_read_from_its_source() {
     assert!(has("action", "SpeedAction") && has("action", "FollowTrajectoryAction") && has("action", "ParameterSetAction"));
     assert!(has("condition", "ReachPositionCondition") && has("position", "RoutePosition") && has("trajectory-shape", "Nurbs"));
     assert!(has("controller", "controller:ACCController") && has("controller", "controller:ALKS_R157SM_Controller/Regulation"));
+    assert!(has("controller", "controller:ALKS_R157SM_Controller/RSS") && has("controller", "controller:ALKS_R157SM_Controller/FSM"));
     // ... and only warns about these
     assert!(!has("position", "GeoPosition") && !has("condition", "RelativeAngleCondition") && !has("action", "RandomRouteAction"));
-    assert!(!has("controller", "controller:ALKS_R157SM_Controller/RSS"));
 }

@@ -96,10 +96,17 @@ impl<'a> Sim<'a> {
                 en.active && !en.outside && en.speed.abs() <= SMALL && !self.is_towed(i) && self.controllers.get(i).is_none_or(|c| c.is_none())
             })
             .collect();
+        // While the ghost runs ahead (RESTARTING), ScenarioEngine::prepareGroundTruth measures
+        // the motion of the ghost only: the others, held, keep the velocity they had (frame 0's,
+        // from their speed and heading, at the start), so a controller stepping right after the
+        // head start sees them moving, not standing.
+        let held = self.ghost.as_ref().filter(|g| g.mode == GhostMode::Restarting && dt > 0.0).map(|g| g.entity);
         for (i, (en, b)) in self.entities.iter_mut().zip(before).enumerate() {
             let (dx, dy) = (en.x - b.x, en.y - b.y);
             let old_vel = en.vel;
-            if restarted == Some(i) {
+            if held.is_some_and(|g| g != i) && !en.teleported && !en.appeared {
+                // not measured this frame
+            } else if restarted == Some(i) {
                 // The dirty bits are cleared all the same: the teleport does not carry over.
                 en.teleported = false;
             } else if en.appeared {

@@ -140,6 +140,7 @@ impl<'a> Simulation<'a> {
             // esmini's ScenarioEngine::step steps every active controller in frame 0 too (dt 0):
             // an ACC already stops for a lead closer than 1 m (ControllerACC::Step)
             sim.step_acc_controllers(0.0);
+            sim.step_alks_r157_controllers(0.0);
             sim.step_looming_controllers(0.0);
             sim.step_offroad_followers_frame0();
         }
@@ -315,6 +316,7 @@ fn frame(sim: &mut Sim, before: &mut [Before], t: f64, dt: f64) -> bool {
         sim.apply_external(dt, ScriptedMotion::Overridden);
         sim.step_followers(dt);
         sim.step_acc_controllers(dt);
+        sim.step_alks_r157_controllers(dt);
         sim.step_looming_controllers(dt);
         sim.step_route_followers(dt);
         sim.step_natural_drivers(dt);

@@ -8,9 +8,11 @@
 //! cut-in when the intruder's front wheel is 0.3 m inside the ego lane) and `ReferenceDriver`
 //! (perceive 0.4 s, react 0.75 s with 0.4 m/s² release deceleration, then brake with a jerk
 //! limited ramp to 0.774 g; AEB at `aebTTC` to 0.85 g; cut-in perception on the lateral
-//! wandering threshold 0.375 m or `lateralTrigDistance`). RSS and FSM fall back to
-//! ReferenceDriver with a warning. Distances are free space in road coordinates (s, t).
+//! wandering threshold 0.375 m or `lateralTrigDistance`); `RSS` and `FSM` (safe-distance
+//! formulas, in `distance_models.rs`). Distances are free space in road coordinates (s, t).
 
+mod distance_models;
+mod free_space;
 pub(crate) mod state;
 
 use state::{AlksR157Rt, Info, Mode, Model, Phase, Scen, Trigger};
@@ -56,11 +58,15 @@ impl AlksR157Rt {
         let (model, note) = match name.as_str() {
             "Regulation" => (Model::Regulation, None),
             "ReferenceDriver" => (Model::ReferenceDriver, None),
+            "RSS" => (Model::Rss, None),
+            "FSM" => (Model::Fsm, None),
             other => (Model::ReferenceDriver, Some(format!("ALKS_R157SM model `{other}` is not modelled; ReferenceDriver drives"))),
         };
         let (rt, max_dec, max_range) = match model {
             Model::Regulation => (0.35, 6.0, 46.0),
-            Model::ReferenceDriver => (0.75, 0.774 * 9.81, 100.0),
+            Model::ReferenceDriver | Model::Rss => (0.75, 0.774 * 9.81, 100.0),
+            // FSM's detection range is the Regulation's (ControllerALKS_R157SM::FSM::FSM)
+            Model::Fsm => (0.75, 0.774 * 9.81, 46.0),
         };
         let lat_trig = num("lateralTrigDistance");
         let trigger = match lat_trig {
@@ -84,7 +90,6 @@ impl AlksR157Rt {
             mode: Mode::NoTarget,
             scen: Scen::None,
             focus: Info::empty(),
-            tmp: Info::empty(),
             phase: Phase::Inactive,
             timer: 0.0,
             time_mode: p("cutInPerceptionDelayMode").as_deref() == Some("Time"),
@@ -97,6 +102,11 @@ impl AlksR157Rt {
             overlap_tol: num("overlapTolerance").unwrap_or(0.2),
             trigger,
             speed_now: 0.0,
+            dt: 0.0,
+            moved_by_action: false,
+            rt_counter: 0.0,
+            cfs: 0.0,
+            pfs: 0.0,
         };
         (rt_, note)
     }
@@ -114,13 +124,17 @@ impl AlksR157Rt {
         }
     }
 
-    fn min_dist(&self, v: f64) -> f64 {
+    /// Model::MinDist: the gap the cruise control keeps at ego speed `v` behind a lead at
+    /// `lead_speed` (only FSM's formula uses the lead's speed).
+    fn min_dist(&self, v: f64, lead_speed: f64) -> f64 {
         match self.model {
             Model::Regulation => {
                 let tg = if v * 3.6 < 10.0 { 1.0 + (v.max(2.0) - 2.0) / 7.8 } else { 1.0 + v * 3.6 / 100.0 };
                 (v * tg).max(2.0)
             }
             Model::ReferenceDriver => 2.0 + v * 2.0,
+            Model::Rss => distance_models::rss_min_dist(self, v),
+            Model::Fsm => distance_models::fsm_min_dist(self, v, lead_speed),
         }
     }
 
@@ -154,44 +168,6 @@ impl<'a> Sim<'a> {
         Some(Frame { s: lp.s, t: pose.t, lane: lp.lane_id, road: lp.road, offset: lp.offset, hrel, v_s, v_t, acc_s: en.accel * hrel.cos(), lane_width })
     }
 
-    /// Free-space distances (along s, across t) from entity `a` to `b`, signed from `a`'s view.
-    fn alks_free_space(&self, a: usize, fa: &Frame, b: usize, fb: &Frame) -> (f64, f64) {
-        let ext = |i: usize, f: &Frame| {
-            let bb = self.entities[i].bbox;
-            let (mut s0, mut s1, mut t0, mut t1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
-            for (dx, dy) in [(1.0, 1.0), (1.0, -1.0), (-1.0, 1.0), (-1.0, -1.0)] {
-                let x = bb[0] + dx * bb[3] / 2.0;
-                let y = bb[1] + dy * bb[4] / 2.0;
-                let (c, s) = (f.hrel.cos(), f.hrel.sin());
-                let cs = f.s + x * c - y * s;
-                let ct = f.t + x * s + y * c;
-                s0 = s0.min(cs);
-                s1 = s1.max(cs);
-                t0 = t0.min(ct);
-                t1 = t1.max(ct);
-            }
-            (s0, s1, t0, t1)
-        };
-        let (as0, as1, at0, at1) = ext(a, fa);
-        let (bs0, bs1, bt0, bt1) = ext(b, fb);
-        let dir = if fa.hrel.abs() > std::f64::consts::FRAC_PI_2 { -1.0 } else { 1.0 };
-        let ds = if bs0 > as1 {
-            bs0 - as1
-        } else if as0 > bs1 {
-            -(as0 - bs1)
-        } else {
-            0.0
-        };
-        let dt = if bt0 > at1 {
-            bt0 - at1
-        } else if at0 > bt1 {
-            -(at0 - bt1)
-        } else {
-            0.0
-        };
-        (ds * dir, dt * dir)
-    }
-
     /// esmini's Model::Process: measurements of `info.obj` from the ego `e`. false: not relevant.
     fn alks_process(&self, e: usize, a: &AlksR157Rt, info: &mut Info) -> bool {
         let Some(o) = info.obj else { return false };
@@ -207,7 +183,9 @@ impl<'a> Sim<'a> {
         if ds_ref.abs() > a.max_range {
             return false;
         }
-        let mut dlane = (fo.lane - fe.lane) * dir as i32;
+        // Position::Delta's dLaneId is the plain difference of the lane ids (the road's frame,
+        // not the ego's), less the centre lane between them
+        let mut dlane = fo.lane - fe.lane;
         if dlane == 2 && fo.lane == 1 && fe.lane == -1 {
             dlane = 1;
         } else if dlane == -2 && fo.lane == -1 && fe.lane == 1 {
@@ -218,18 +196,15 @@ impl<'a> Sim<'a> {
             return false;
         }
         info.dlane = dlane;
-        let (dl, dlat) = self.alks_free_space(e, &fe, o, &fo);
+        let Some(net) = self.net else { return false };
+        let Some((dl, dlat)) = free_space::free_space_road(net, &self.entities[e], &self.entities[o], fe.road, dir) else { return false };
         info.dist_lat = dlat;
         info.dist_long = dl;
         info.dv_s = (fe.v_s - fo.v_s) * dir;
         info.dv_t = (fe.v_t - fo.v_t) * sign(fo.t - fe.t);
-        if info.dv_s > 0.0 {
-            info.ttc = info.dist_long / info.dv_s;
-            info.thw = info.dist_long / fe.v_s;
-        } else {
-            info.ttc = LARGE;
-            info.thw = LARGE;
-        }
+        // the headway is measured whenever the ego moves along s, whatever the closing speed
+        info.thw = if fe.v_s > 0.0 { info.dist_long / fe.v_s } else { LARGE };
+        info.ttc = if info.dv_s > 0.0 { info.dist_long / info.dv_s } else { LARGE };
         true
     }
 
@@ -296,6 +271,8 @@ impl<'a> Sim<'a> {
                 }
                 true
             }
+            Model::Rss => distance_models::rss_check_safety(info, &fo, a),
+            Model::Fsm => distance_models::fsm_check_safety(info, &fo, self.entities[e].speed, oe.speed),
             Model::ReferenceDriver => {
                 let c_lane_offset = fo.offset + oe.bbox[0] * oe.h.sin();
                 self.alks_trigger_update(a, info, &fe);
@@ -325,8 +302,10 @@ impl<'a> Sim<'a> {
     fn alks_detect(&self, e: usize, a: &mut AlksR157Rt) {
         let mut cand = Info::empty();
         let is_vehicle = |i: Option<usize>| i.is_some_and(|i| self.entities[i].kind == EntityKind::Vehicle);
+        // Model::Detect's scratch record starts empty in every call and carries over from one
+        // entity to the next (Process leaves it alone for entities it skips)
+        let mut tmp = Info::empty();
         for i in 0..self.entities.len() {
-            let mut tmp = a.tmp;
             tmp.obj = Some(i);
             let ok = self.alks_process(e, a, &mut tmp);
             if ok && !self.alks_check_safety(e, a, &mut tmp) {
@@ -346,7 +325,6 @@ impl<'a> Sim<'a> {
                     }
                 }
             }
-            a.tmp = tmp;
         }
         if cand.obj.is_some() && cand.action != Scen::None && (cand.obj != a.focus.obj || cand.action != a.focus.action) {
             a.scen = cand.action;
@@ -365,15 +343,21 @@ impl<'a> Sim<'a> {
                 } else {
                     2.0
                 };
-                return (v + a.acc * self.dt).clamp(0.0, a.set_speed.max(0.0));
+                return (v + a.acc * a.dt).clamp(0.0, a.set_speed.max(0.0));
             } else if a.focus.dist_long > 0.0 && a.focus.ttc > a.focus.dv_s / 12.0 + 0.35 {
                 a.mode = Mode::TargetInSight;
-                a.acc = if v.abs() < SMALL { 0.0 } else { (2.0 * -a.focus.dv_s + (a.focus.dist_long - a.min_dist(v))).clamp(-4.0, 3.0) };
-                return (v + a.acc * self.dt).clamp(0.0, a.set_speed.max(0.0));
+                a.acc =
+                    if v.abs() < SMALL { 0.0 } else { (2.0 * -a.focus.dv_s + (a.focus.dist_long - a.min_dist(v, self.alks_focus_speed(a)))).clamp(-4.0, 3.0) };
+                return (v + a.acc * a.dt).clamp(0.0, a.set_speed.max(0.0));
             }
         }
         a.acc = 0.0;
         v
+    }
+
+    /// The speed of the object in focus (Object::GetSpeed), 0 without one.
+    fn alks_focus_speed(&self, a: &AlksR157Rt) -> f64 {
+        a.focus.obj.and_then(|o| self.entities.get(o)).map(|en| en.speed).unwrap_or(0.0)
     }
 
     fn alks_overlapping_front(&self, e: usize, o: usize, tol: f64) -> bool {
@@ -397,7 +381,7 @@ impl<'a> Sim<'a> {
     }
 
     fn alks_check_critical(&self, e: usize, a: &mut AlksR157Rt, v: f64) -> bool {
-        let dt = self.dt;
+        let dt = a.dt;
         match a.model {
             Model::Regulation => {
                 if a.focus.obj.is_none() {
@@ -411,6 +395,11 @@ impl<'a> Sim<'a> {
                 }
                 a.mode = Mode::TargetInSight;
                 false
+            }
+            Model::Rss => distance_models::rss_check_critical(a, v, self.alks_focus_speed(a)),
+            Model::Fsm => {
+                let acc_s = self.alks_frame(e).map(|f| f.acc_s).unwrap_or(0.0);
+                distance_models::fsm_check_critical(a, v, self.alks_focus_speed(a), acc_s)
             }
             Model::ReferenceDriver => {
                 if a.phase == Phase::Inactive || a.phase == Phase::Perceive {
@@ -446,7 +435,7 @@ impl<'a> Sim<'a> {
     }
 
     fn alks_check_perception(&self, a: &mut AlksR157Rt) -> bool {
-        let dt = self.dt;
+        let dt = a.dt;
         let ped = a.focus.obj.is_some_and(|o| self.entities[o].kind == EntityKind::Pedestrian);
         match a.scen {
             Scen::CutIn => {
@@ -522,7 +511,7 @@ impl<'a> Sim<'a> {
             }
         } else if a.phase == Phase::React {
             a.reset();
-        } else if a.mode == Mode::Critical && a.focus.dist_long > a.min_dist(a.speed_now) {
+        } else if a.mode == Mode::Critical && a.focus.dist_long > a.min_dist(a.speed_now, 0.0) {
             // critical until out of the minimum distance
             a.mode = if a.focus.obj.is_some() { Mode::TargetInSight } else { Mode::NoTarget };
             if a.focus.dv_s < SMALL {
@@ -532,12 +521,14 @@ impl<'a> Sim<'a> {
     }
 
     fn alks_react(&self, a: &mut AlksR157Rt, v: f64) -> f64 {
-        let dt = self.dt;
+        let dt = a.dt;
         match a.model {
             Model::Regulation => {
                 a.acc = -a.max_dec;
                 (v + a.acc * dt).max(0.0)
             }
+            Model::Rss => distance_models::rss_react(a, v, dt),
+            Model::Fsm => distance_models::fsm_react(a, v, dt),
             Model::ReferenceDriver => {
                 if a.phase == Phase::React && a.timer < SMALL {
                     a.phase = Phase::BrakeRef;
@@ -561,9 +552,26 @@ impl<'a> Sim<'a> {
         }
     }
 
+    /// Step every active ALKS R157 controller by `dt`, after the default controller: esmini's
+    /// ScenarioEngine::step moves the entities first and then steps the controllers, so the
+    /// model measures the others where they are after this step's move. Frame 0 steps them too
+    /// (dt 0), after the Init actions: the model sees no velocities yet (none is measured before
+    /// the first step), so it detects its target without closing speed and runs its cruise
+    /// control, whose acceleration the reaction phase of the next steps keeps (Model::Step).
+    pub(crate) fn step_alks_r157_controllers(&mut self, dt: f64) {
+        self.for_each_controller(|sim, e, c| {
+            if let super::state::ControllerRt::AlksR157(a) = c {
+                if a.active {
+                    sim.step_alks_r157(e, a, dt);
+                }
+            }
+        });
+    }
+
     pub(super) fn step_alks_r157(&mut self, e: usize, a: &mut AlksR157Rt, dt: f64) {
         let Some(v) = self.entities.get(e).map(|en| en.speed) else { return };
         a.speed_now = v;
+        a.dt = dt;
         if a.focus.obj.is_some() && a.model == Model::ReferenceDriver && a.phase != Phase::Inactive && a.full_stop {
             let mut f = a.focus;
             self.alks_process(e, a, &mut f);
@@ -574,7 +582,10 @@ impl<'a> Sim<'a> {
         let speed = if self.alks_check_critical(e, a, v) { self.alks_react(a, v) } else { self.alks_cruise(e, a, v) };
         let net = self.net;
         let Some(en) = self.entities.get_mut(e) else { return };
-        if a.override_mode && !en.moved_by_action {
+        // frame 0 (dt 0) moves nothing: only the model's state and the speed are set. Active
+        // on the lateral domain only, the default controller has moved the entity already, and
+        // this moves it again (ControllerALKS_R157SM::Step moves it in override mode).
+        if a.override_mode && !a.moved_by_action && dt > 0.0 {
             match (net, en.lane) {
                 (Some(net), Some(mut lp)) => {
                     move_along_s(net, &mut lp, speed * dt);
@@ -585,8 +596,6 @@ impl<'a> Sim<'a> {
                     en.y += speed * dt * en.h.sin();
                 }
             }
-            // active on the lateral domain only, the default controller moves the entity too
-            en.moved_by_action = a.longitudinal;
         }
         en.speed = speed;
     }

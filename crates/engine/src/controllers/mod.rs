@@ -233,8 +233,10 @@ impl<'a> Sim<'a> {
                     }
                 }
                 ControllerRt::AlksR157(a) => {
+                    // Stepped after the default controller (`step_alks_r157_controllers`), which
+                    // leaves the entity alone when the model holds the longitudinal domain.
                     if a.active && self.entities.get(e).is_some_and(|en| en.active) {
-                        self.step_alks_r157(e, a, dt);
+                        self.hold_for_override(e, &mut a.moved_by_action, a.override_mode && a.longitudinal);
                     }
                 }
                 ControllerRt::NaturalDriver(a) => {

@@ -5,6 +5,10 @@
 pub(crate) enum Model {
     Regulation,
     ReferenceDriver,
+    /// Responsibility-Sensitive Safety: critical inside the RSS safe longitudinal distance.
+    Rss,
+    /// Fuzzy Safety Model: critical while its proactive or critical fuzzy surrogate is non-zero.
+    Fsm,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -74,7 +78,6 @@ pub(crate) struct AlksR157Rt {
     pub(super) mode: Mode,
     pub(super) scen: Scen,
     pub(super) focus: Info,
-    pub(super) tmp: Info,
     // ReferenceDriver
     pub(super) phase: Phase,
     pub(super) timer: f64,
@@ -89,4 +92,14 @@ pub(crate) struct AlksR157Rt {
     pub(super) trigger: Trigger,
     /// Ego speed at the start of the current step.
     pub(super) speed_now: f64,
+    /// The current step's length (Model::dt_): 0 in frame 0, where esmini steps it too.
+    pub(super) dt: f64,
+    /// An action moved the entity in this step's storyboard step (then the model does not).
+    pub(in crate::controllers) moved_by_action: bool,
+    // RSS and FSM
+    /// Reaction timer counting down from `rt` once a situation turns critical (Model::rt_counter_).
+    pub(super) rt_counter: f64,
+    /// FSM's critical and proactive fuzzy surrogates of the last check.
+    pub(super) cfs: f64,
+    pub(super) pfs: f64,
 }
