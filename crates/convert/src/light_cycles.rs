@@ -1,10 +1,10 @@
 //! A run's traffic-signal states become the cycle of the CommonRoad light made of that signal.
 //!
 //! CommonRoad 2020a knows a light only as a repeating cycle of colours. A run gives each signal
-//! a history instead (TrafficSignalStateActions, controller phases), so the cycle written is that
-//! history from time 0 to the end of the scenario: it is exact over the scenario's time span
-//! (CommonRoad would repeat it afterwards). A light whose signal no action or controller sets
-//! keeps the map's default cycle.
+//! a history instead (its TrafficSignalStateActions: the engine, as esmini 3.6.0, runs no
+//! RoadNetwork controller), so the cycle written is that history from time 0 to the end of the
+//! scenario: it is exact over the scenario's time span (CommonRoad would repeat it afterwards).
+//! A light whose signal no action sets keeps the map's default cycle.
 
 use std::collections::BTreeMap;
 use std::num::NonZeroU64;

@@ -14,7 +14,7 @@
 //! controllers run ahead: setup, trail, restarts) · `sim` (the run state,
 //! data only; each behaviour keeps what it remembers in its own `state` module, which names no
 //! behaviour: `tests/layering.rs`) · below them `roads` (lane geometry, following lanes through
-//! junctions), `positions`, `signals` (traffic signals and their controllers), `dynamics`
+//! junctions), `positions`, `signals` (traffic signals' states), `dynamics`
 //! (transition shapes), `entities`, `trace` (the output).
 
 // A library returns its warnings as data and never prints (ARCHITECTURE.md, Invariants); its

@@ -331,8 +331,6 @@ fn frame(sim: &mut Sim, before: &mut [Before], t: f64, dt: f64) -> bool {
 
 fn storyboard_step(sim: &mut Sim, dt: f64) {
     sim.dt = dt;
-    // Traffic-signal controllers change phase before the triggers look at the signals.
-    sim.signals.advance(sim.time);
     sim.eval_triggers(0);
     for k in 0..sim.init_actions.len() {
         let slot = sim.init_actions[k];

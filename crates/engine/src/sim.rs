@@ -47,8 +47,8 @@ pub(crate) struct Sim<'a> {
     /// Light states and environments asked for (recorded.rs).
     pub lights: Vec<crate::recorded::LightChange>,
     pub environment: Vec<crate::recorded::EnvironmentChange>,
-    /// Traffic-signal states and controllers (signals.rs).
-    pub signals: crate::signals::Signals<'a>,
+    /// Traffic-signal states (signals.rs).
+    pub signals: crate::signals::Signals,
     /// esmini's global random generator (esmini_random.rs), seeded by `simulate_seeded`.
     pub random: crate::esmini_random::EsminiRandom,
     /// Which entities the caller drives (external/), and each one's state.

@@ -1,8 +1,11 @@
-//! Traffic signals: controllers of the RoadNetwork cycling through their phases (with a delay
-//! to a reference controller), TrafficSignalStateAction, TrafficSignalControllerAction, and the
-//! TrafficSignalCondition that starts events (a TrafficSignalControllerCondition is left out of its
-//! group, as esmini 3.6.0 does: `conditions/ignored_value_conditions.rs`). Expected times
-//! are worked out by hand from the phase durations; the trace's `signal_states` is checked.
+//! Traffic signals: TrafficSignalStateAction sets a signal and TrafficSignalCondition starts
+//! events on its state; the RoadNetwork's controllers are not run and a
+//! TrafficSignalControllerAction changes nothing, as in esmini 3.6.0, which never reads
+//! `RoadNetwork/TrafficSignals` and drops the action (`ScenarioReader::parseOSCGlobalAction`);
+//! a TrafficSignalControllerCondition is left out of its group
+//! (`conditions/ignored_value_conditions.rs`). The event times of
+//! `controllers_and_their_action_change_no_signal` are esmini 3.6.0's on the same storyboard
+//! (with the controller C1 alone) on a crossing whose signal 1 is a dynamic traffic light.
 
 use crate::common::*;
 use engine::{Run, Settings};
@@ -76,20 +79,6 @@ fn assert_changes(run: &Run, signal: &str, want: &[(f64, &str)]) {
 }
 
 #[test]
-fn controllers_cycle_through_their_phases_with_a_delay_to_their_reference() {
-    // Steps are evaluated at 0, 0.01, ..., 19.99 s.
-    let run = run_signals(&teleport("Ego", 10.0, -1), "", true, 20.0);
-    assert!(run.warnings.is_empty(), "{:?}", run.warnings);
-    // C1: green at 0, yellow at 3, red at 4, then again every 8 s.
-    assert_changes(&run, "1", &[(0.0, GREEN), (3.0, YELLOW), (4.0, RED), (8.0, GREEN), (11.0, YELLOW), (12.0, RED), (16.0, GREEN), (19.0, YELLOW)]);
-    // C2's cycle starts at 2 s; at time 0 it is 6 s into the cycle before: halt ("off").
-    // Then walk at 2, halt at 7, walk at 10, halt at 15, walk at 18.
-    assert_changes(&run, "2", &[(0.0, "off"), (2.0, "on"), (7.0, "off"), (10.0, "on"), (15.0, "off"), (18.0, "on")]);
-    // The trace lists the changes in time order.
-    assert!(run.trace.signal_states.windows(2).all(|w| w[0].time <= w[1].time));
-}
-
-#[test]
 fn state_action_sets_a_signal_and_the_signal_condition_starts_an_event() {
     // Signal 1 starts red (Init); an event at t >= 2 s switches it to green. "Go" waits for
     // green with a 0.5 s delay: it sees the change in the same evaluation (it comes after
@@ -114,36 +103,40 @@ fn state_action_sets_a_signal_and_the_signal_condition_starts_an_event() {
 }
 
 #[test]
-fn controller_action_switches_the_phase_and_a_phase_condition_is_ignored() {
-    // At t >= 1 s C1 is put into "stop" (red): it then lasts its 4 s, so "go" comes back at
-    // 5 s (not at 8 s as without the action), "wait" at 8 s, "stop" at 9 s. C2 is not
-    // affected. "BackToGo" waits for C1 to enter "go": esmini 3.6.0 drops that condition, so
-    // its group is empty and the event never starts (a warning says so).
-    let events = format!(
-        "{}{}",
-        event("Switch", "parallel", &phase_action("C1", "stop"), &trigger(&sim_time(1.0, "greaterOrEqual", "none", 0.0))),
+fn controllers_and_their_action_change_no_signal() {
+    // C1's first phase ("go", green) and C2's would be in force at 0 s; esmini runs neither, so
+    // "Green" never starts. "Yellow" sets signal 1 at 3 s; "YellowSeen" waits 0.5 s more and
+    // starts at 3.5 s. "Switch" (a TrafficSignalControllerAction to C1's "stop", red) starts
+    // at 4 s and changes nothing: "Red" never starts. "BackToGo" waits for C1's phase, a
+    // condition esmini drops: it never starts either.
+    let events = [
+        event("Green", "parallel", &speed_action("step", "time", 0.0, 2.0), &trigger(&signal_condition("1", GREEN, "none", 0.0))),
+        event("Yellow", "parallel", &state_action("1", YELLOW), &trigger(&sim_time(3.0, "greaterOrEqual", "none", 0.0))),
+        event("YellowSeen", "parallel", &speed_action("step", "time", 0.0, 4.0), &trigger(&signal_condition("1", YELLOW, "none", 0.5))),
+        event("Switch", "parallel", &phase_action("C1", "stop"), &trigger(&sim_time(4.0, "greaterOrEqual", "none", 0.0))),
+        event("Red", "parallel", &speed_action("step", "time", 0.0, 1.0), &trigger(&signal_condition("1", RED, "none", 0.0))),
         event("BackToGo", "parallel", &speed_action("step", "time", 0.0, 5.0), &trigger(&phase_condition("C1", "go", "rising"))),
-    );
-    let run = run_signals(&teleport("Ego", 10.0, -1), &story("Ego", &events), true, 10.0);
-    assert_eq!(run.warnings.len(), 1, "{:?}", run.warnings);
-    assert!(run.warnings[0].message.contains("TrafficSignalControllerCondition is left out"), "{:?}", run.warnings);
-    assert_changes(&run, "1", &[(0.0, GREEN), (1.0, RED), (5.0, GREEN), (8.0, YELLOW), (9.0, RED)]);
-    assert_changes(&run, "2", &[(0.0, "off"), (2.0, "on"), (7.0, "off")]);
-    assert_eq!(event_time(&run, "BackToGo", "start"), None);
-}
-
-#[test]
-fn unknown_controller_or_phase_is_a_warning() {
-    let events = format!(
-        "{}{}",
-        event("NoSuchController", "parallel", &phase_action("C9", "go"), &trigger(&sim_time(1.0, "greaterOrEqual", "none", 0.0))),
-        event("NoSuchPhase", "parallel", &phase_action("C1", "dance"), &trigger(&sim_time(1.0, "greaterOrEqual", "none", 0.0))),
-    );
-    let run = run_signals(&teleport("Ego", 10.0, -1), &story("Ego", &events), true, 2.0);
-    let text: Vec<String> = run.warnings.iter().map(|w| w.message.clone()).collect();
-    assert!(text.iter().any(|m| m.contains("`C9` is not defined")), "{text:?}");
-    assert!(text.iter().any(|m| m.contains("no phase `dance`")), "{text:?}");
+    ]
+    .concat();
+    let run = run_signals(&teleport("Ego", 10.0, -1), &story("Ego", &events), true, 8.0);
+    let text: Vec<&str> = run.warnings.iter().map(|w| w.message.as_str()).collect();
+    assert_eq!(text.len(), 4, "{text:?}");
+    for c in
+        ["`C1` is not run", "`C2` is not run", "TrafficSignalControllerAction (controller `C1`, phase `stop`)", "TrafficSignalControllerCondition is left out"]
+    {
+        assert!(text.iter().any(|m| m.contains(c)), "{c}: {text:?}");
+    }
     assert!(run.warnings.iter().all(|w| w.location.line > 0), "positioned");
-    // Nothing changed: C1 is still in "go" (it would turn yellow at 3 s, after the end).
-    assert_changes(&run, "1", &[(0.0, GREEN)]);
+    assert_changes(&run, "1", &[(3.0, YELLOW)]);
+    assert_changes(&run, "2", &[]);
+    for never in ["Green", "Red", "BackToGo"] {
+        assert_eq!(event_time(&run, never, "start"), None, "{never}");
+    }
+    let seen = event_time(&run, "YellowSeen", "start").expect("YellowSeen started");
+    assert!(close(seen, 3.5, 1e-6), "{seen}");
+    let switch = event_time(&run, "Switch", "start").expect("Switch started");
+    assert!(close(switch, 4.0, 1e-6), "{switch}");
+    // Ego stood until 3.5 s, then drove at 4 m/s: 4 m/s x 1.5 s = 6 m at 5 s.
+    let x = at(&run, "Ego", 5.0).x;
+    assert!(close(x, 16.0, 0.05), "{x}");
 }

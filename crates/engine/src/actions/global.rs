@@ -1,6 +1,7 @@
 //! Global actions: parameter and variable set / modify, traffic-signal state and controller
-//! phase (`traffic_signal.rs`), add / delete entity (`add_delete_entity.rs`), environment
-//! (recorded in `Run::environment`); everything else is a warning.
+//! phase (`traffic_signal.rs`; the phase is only a warning, as esmini 3.6.0 runs no
+//! controller), add / delete entity (`add_delete_entity.rs`), environment (recorded in
+//! `Run::environment`); everything else is a warning.
 
 use crate::sim::Sim;
 use openscenario::GlobalAction;

@@ -1,6 +1,7 @@
-//! TrafficSignalStateAction and TrafficSignalControllerAction: both take effect when the action
-//! starts (so later triggers of the same evaluation already see the new state) and complete at
-//! once. The states themselves live in `signals.rs`.
+//! TrafficSignalStateAction takes effect when the action starts (so later triggers of the same
+//! evaluation already see the new state) and completes at once. The states themselves live in
+//! `signals.rs`. TrafficSignalControllerAction changes nothing: esmini 3.6.0 drops it
+//! (`ScenarioReader::parseOSCGlobalAction`: "not supported yet") and runs no controller.
 
 use crate::sim::Sim;
 
@@ -13,10 +14,11 @@ impl<'a> Sim<'a> {
         self.signals.set_state(self.time, name, state);
     }
 
-    /// Restart controller `controller` in phase `phase` now.
+    /// A TrafficSignalControllerAction: a warning, nothing changes.
     pub(super) fn set_signal_phase(&mut self, slot: usize, controller: &str, phase: &str) {
-        if let Err(msg) = self.signals.set_phase(self.time, controller, phase) {
-            self.warn_action(slot, format!("TrafficSignalControllerAction: {msg}; nothing changes"));
-        }
+        self.warn_action(
+            slot,
+            format!("TrafficSignalControllerAction (controller `{controller}`, phase `{phase}`) is not supported by esmini 3.6.0, which runs no signal controller; nothing changes"),
+        );
     }
 }
