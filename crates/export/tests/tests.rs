@@ -6,4 +6,5 @@ mod common;
 mod documents;
 mod esmini_round_trip;
 mod forward_again;
+mod light_cycles_back;
 mod synthetic;
