@@ -26,6 +26,7 @@ mod cache;
 mod carried;
 mod closed_loop;
 mod country;
+mod declared_cycles;
 mod discover;
 mod ego;
 mod goal;

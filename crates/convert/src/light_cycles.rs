@@ -4,7 +4,8 @@
 //! a history instead (its TrafficSignalStateActions: the engine, as esmini 3.6.0, runs no
 //! RoadNetwork controller), so the cycle written is that history from time 0 to the end of the
 //! scenario: it is exact over the scenario's time span (CommonRoad would repeat it afterwards).
-//! A light whose signal no action sets keeps the map's default cycle.
+//! A light whose signal no action sets keeps the map's default cycle, unless a RoadNetwork
+//! controller's phases name it (`declared_cycles`).
 
 use std::collections::BTreeMap;
 use std::num::NonZeroU64;

@@ -15,6 +15,7 @@ use openscenario::{Content, LoadOptions, Scenario};
 
 use crate::assemble::assemble;
 use crate::cache::Caches;
+use crate::declared_cycles::{apply_declared_cycles, declared_cycles};
 use crate::header::{benchmark_id, date_prefix, fallback_date};
 use crate::light_cycles::apply_signal_states;
 use crate::options::{ConvertOptions, OutputFormat};
@@ -350,6 +351,13 @@ pub(crate) fn finish(
     if let Some(network) = lanelets.as_mut() {
         let states = &trace.signal_states;
         let w = apply_signal_states(network, &prepared.light_of_signal, states, trace.end_time(), options.dt);
+        warn(warnings, Stage::Build, &w);
+        // lights the run never set take the cycle their (unrun) controller declares
+        let controllers = &scenario.road_network.traffic_signal_controllers;
+        let mut w = Vec::new();
+        let declared = declared_cycles(controllers, options.dt, &mut w);
+        let set_by_run = states.iter().map(|s| s.signal.as_str()).collect();
+        w.extend(apply_declared_cycles(network, &prepared.light_of_signal, &declared, &set_by_run, controllers));
         warn(warnings, Stage::Build, &w);
     }
 

@@ -8,7 +8,8 @@
 //! `reference` (the standard leaves that open). An inactive light is one dark phase.
 //!
 //! esmini 3.6.0 does not read traffic-signal controllers (nor does CARLA's scenario runner);
-//! the controllers are for simulators and tools that do (osc2cr's engine does).
+//! the controllers are for simulators and tools that do (osc2cr's engine, as esmini, does not
+//! run them, but its conversion writes their phases back as the lights' cycles: `declared_cycles`).
 
 use commonroad::{TrafficLight, TrafficLightColor};
 
