@@ -77,9 +77,9 @@ impl<'a> Sim<'a> {
         }
         for c in t.groups.iter().flat_map(|g| &g.conditions) {
             if let openscenario::ConditionKind::ByValue(v) = &c.kind {
-                if crate::conditions::by_value::ignored_by_esmini(v) {
+                if let Some(why) = crate::conditions::by_value::ignored_by_esmini(v) {
                     let msg = format!(
-                        "condition `{}`: {} is left out of its condition group, as esmini 3.6.0 does (not supported there); a group with nothing else never holds",
+                        "condition `{}`: {} is left out of its condition group, as esmini 3.6.0 does ({why}); a group with nothing else never holds",
                         c.name,
                         v.element_name()
                     );

@@ -36,7 +36,11 @@ impl<'a> Sim<'a> {
             GlobalAction::AddEntity { entity, position } => self.add_entity(slot, entity, position),
             GlobalAction::DeleteEntity { entity } => self.delete_entity(slot, entity),
             GlobalAction::TrafficSignalState { name, state } => self.set_signal_state(slot, name, state),
-            GlobalAction::TrafficSignalController { controller, phase } => self.set_signal_phase(slot, controller, phase),
+            // esmini 3.6.0 drops it (ScenarioReader::parseOSCGlobalAction) and runs no controller
+            GlobalAction::TrafficSignalController { controller, phase } => self.warn_action(
+                slot,
+                format!("TrafficSignalControllerAction (controller `{controller}`, phase `{phase}`) is not supported by esmini 3.6.0, which runs no signal controller; nothing changes"),
+            ),
             other => self.warn_action(slot, format!("{} is not supported yet; the action completes at once", other.element_name())),
         }
     }

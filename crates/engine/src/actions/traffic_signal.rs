@@ -1,7 +1,8 @@
 //! TrafficSignalStateAction takes effect when the action starts (so later triggers of the same
 //! evaluation already see the new state) and completes at once. The states themselves live in
-//! `signals.rs`. TrafficSignalControllerAction changes nothing: esmini 3.6.0 drops it
-//! (`ScenarioReader::parseOSCGlobalAction`: "not supported yet") and runs no controller.
+//! `signals.rs`. TrafficSignalControllerAction changes nothing (actions/global.rs):
+//! esmini 3.6.0 drops it (`ScenarioReader::parseOSCGlobalAction`: "not supported yet") and
+//! runs no controller.
 
 use crate::sim::Sim;
 
@@ -12,13 +13,5 @@ impl<'a> Sim<'a> {
             self.warn_action(slot, format!("TrafficSignalStateAction: `{name}` is not a signal id of the road network; its state is kept anyway"));
         }
         self.signals.set_state(self.time, name, state);
-    }
-
-    /// A TrafficSignalControllerAction: a warning, nothing changes.
-    pub(super) fn set_signal_phase(&mut self, slot: usize, controller: &str, phase: &str) {
-        self.warn_action(
-            slot,
-            format!("TrafficSignalControllerAction (controller `{controller}`, phase `{phase}`) is not supported by esmini 3.6.0, which runs no signal controller; nothing changes"),
-        );
     }
 }

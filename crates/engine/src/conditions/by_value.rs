@@ -55,13 +55,18 @@ impl<'a> Sim<'a> {
     }
 }
 
-/// The value conditions esmini 3.6.0 reads past: ScenarioReader::parseOSCCondition logs "not
-/// supported yet. Ignoring." for every ByValueCondition other than SimulationTime, Parameter,
-/// Variable, StoryboardElementState and TrafficSignal, and returns no condition, so
+/// Why esmini 3.6.0 reads past a value condition, if it does: ScenarioReader::parseOSCCondition
+/// logs "not supported yet. Ignoring." for every ByValueCondition other than SimulationTime,
+/// Parameter, Variable, StoryboardElementState and TrafficSignal, and returns no condition, so
 /// ScenarioReader::parseTrigger leaves it out of its group. The group is the AND of the rest; a
 /// group left with nothing is false (ConditionGroup::Evaluate).
-pub(crate) fn ignored_by_esmini(v: &ValueCondition) -> bool {
-    matches!(v, ValueCondition::TrafficSignalController { .. } | ValueCondition::TimeOfDay { .. } | ValueCondition::UserDefinedValue { .. })
+pub(crate) fn ignored_by_esmini(v: &ValueCondition) -> Option<&'static str> {
+    match v {
+        ValueCondition::TrafficSignalController { .. } | ValueCondition::TimeOfDay { .. } | ValueCondition::UserDefinedValue { .. } => {
+            Some("not supported there: \"not supported yet. Ignoring.\"")
+        }
+        _ => None,
+    }
 }
 
 fn state_matches(want: Want, st: State, tr: Option<Transition>) -> bool {

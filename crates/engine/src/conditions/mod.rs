@@ -18,7 +18,7 @@ use openscenario::{Condition, ConditionEdge, ConditionKind, EntityCondition, Sto
 
 impl<'a> TriggerRt<'a> {
     pub(crate) fn new(t: &'a Trigger, sim: &Sim) -> TriggerRt<'a> {
-        let kept = |c: &&Condition| !matches!(&c.kind, ConditionKind::ByValue(v) if by_value::ignored_by_esmini(v));
+        let kept = |c: &&Condition| !matches!(&c.kind, ConditionKind::ByValue(v) if by_value::ignored_by_esmini(v).is_some());
         let groups = t.groups.iter().map(|g| g.conditions.iter().filter(kept).map(|c| ConditionRt::new(c, sim)).collect()).collect();
         TriggerRt { groups }
     }
