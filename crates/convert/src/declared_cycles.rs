@@ -49,6 +49,14 @@ pub(crate) fn declared_cycles(controllers: &[TrafficSignalController], dt: f64, 
             bounds.push((t / dt).round() as u64);
         }
         let total = bounds.last().copied().unwrap_or(0);
+        // A phase's TrafficSignalGroupState (1.2) sets a whole group at once; CommonRoad's lights
+        // know no groups, and esmini 3.6.0 reads none of this, so it is left out, said once a phase.
+        for p in c.phases.iter().filter(|p| p.group_state.is_some()) {
+            warnings.push(format!(
+                "TrafficSignalController `{}` ({}): phase `{}`'s TrafficSignalGroupState is not written (a CommonRoad light has no group state); only its TrafficSignalStates make the light cycle",
+                c.name, c.origin, p.name
+            ));
+        }
         let named: BTreeSet<&str> = c.phases.iter().flat_map(|p| p.states.iter().map(|(s, _)| s.as_str())).collect();
         if named.is_empty() {
             continue;
@@ -228,6 +236,21 @@ mod tests {
         assert_eq!(steps(&d["2"]), vec![(10, Inactive)]);
         assert!(!d.contains_key("4"));
         for needle in ["go round in a circle", "also named by `A`", "no CommonRoad light colour", "less than one time step"] {
+            assert!(w.iter().any(|m| m.contains(needle)), "{needle}: {w:?}");
+        }
+        assert!(!w.iter().any(|m| m.contains("TrafficSignalGroupState")), "{w:?}");
+    }
+
+    #[test]
+    fn a_group_state_is_left_out_with_a_warning() {
+        let mut grouped = phase("all", 1.0, &[("1", "red")]);
+        grouped.group_state = Some("red;off".into());
+        let c = controller("G", None, None, vec![grouped, phase("go", 1.0, &[("1", "green")])]);
+        let mut w = Vec::new();
+        let d = declared_cycles(&[c], 0.1, &mut w);
+        assert_eq!(steps(&d["1"]), vec![(10, Red), (10, Green)]);
+        assert_eq!(w.len(), 1, "{w:?}");
+        for needle in ["`G`", "phase `all`", "TrafficSignalGroupState is not written"] {
             assert!(w.iter().any(|m| m.contains(needle)), "{needle}: {w:?}");
         }
     }
