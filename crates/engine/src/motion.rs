@@ -89,13 +89,11 @@ impl<'a> Sim<'a> {
         // SMALL_NUMBER), so a standing car a lateral action moves sideways takes that sideways
         // rate as speed and drives off at it from the next step. Trailers get their tow
         // vehicle's speed, and the entities a controller drives are left to it (most set the
-        // speed in every step).
-        let derives_speed: Vec<bool> = (0..self.entities.len())
-            .map(|i| {
-                let en = &self.entities[i];
-                en.active && !en.outside && en.speed.abs() <= SMALL && !self.is_towed(i) && self.controllers.get(i).is_none_or(|c| c.is_none())
-            })
-            .collect();
+        // speed in every step). Asked in the loop below, before it changes the entity's speed.
+        let (links, controllers) = (&self.trailers.links, &self.controllers);
+        let derives_speed = |i: usize, en: &crate::entities::Entity| {
+            !en.speed_set && en.active && !en.outside && en.speed.abs() <= SMALL && !links.contains(&Some(i)) && controllers.get(i).is_none_or(|c| c.is_none())
+        };
         // While the ghost runs ahead (RESTARTING), ScenarioEngine::prepareGroundTruth measures
         // the motion of the ghost only: the others, held, keep the velocity they had (frame 0's,
         // from their speed and heading, at the start), so a controller stepping right after the
@@ -130,7 +128,7 @@ impl<'a> Sim<'a> {
                 en.odometer += (dx * dx + dy * dy).sqrt();
                 if dt > SMALL {
                     en.vel = (dx / dt, dy / dt);
-                    if derives_speed[i] && !en.speed_set {
+                    if derives_speed(i, en) {
                         en.speed = dx.hypot(dy) / dt;
                     }
                     en.accel = (en.speed - b.speed) / dt;
