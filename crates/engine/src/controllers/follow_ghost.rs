@@ -4,7 +4,9 @@
 //! `position` mode it finds the trail point nearest to itself, takes the ghost's speed at
 //! `max(minLookaheadSpeed, lookaheadSpeed · speed)` metres further along the trail as its
 //! target speed and steers towards the trail point `max(minLookaheadSteering,
-//! lookaheadSteering · speed)` metres ahead; in `time` mode both points are where the ghost
+//! lookaheadSteering · speed)` metres ahead (searches as esmini's, `ghost::trail`: when the
+//! steering point runs past the trail's end the nearest point sticks near that end, and the
+//! speed point becomes the ghost's latest sample); in `time` mode both points are where the ghost
 //! was `headstartTime` minus the look-ahead (in seconds) ago. The body is esmini's kinematic
 //! vehicle (`kinematic_vehicle`) with 10 m/s² and 100 m/s limits.
 
@@ -64,18 +66,30 @@ impl<'a> Sim<'a> {
         let trail = &ghost.trail;
         let (speed_point, steer_point): (Option<TrailPoint>, Option<TrailPoint>) = match f.mode {
             FollowMode::Position => {
+                // ControllerFollowGhost::Step: the nearest point is searched from the segment
+                // the last steering point lay on; when nothing was searched, the old arc
+                // length stays. The speed point is looked up from that segment without moving
+                // it; the steering point is looked up from the trail's start and its segment
+                // (the last vertex when it ran past the end) is where the next search starts.
                 if let Some((p, i)) = trail.closest(x, y, f.follow_index) {
                     f.closest_s = p.s;
                     f.follow_index = i;
                 }
-                let ahead = |d: f64| trail.at_s(f.closest_s + d, f.follow_index).map(|(p, _)| p);
-                (ahead(f.min_lookahead_speed.max(f.lookahead_speed * speed)), ahead(f.min_lookahead_steering.max(f.lookahead_steering * speed)))
+                let sp = trail.at_s(f.closest_s + f.min_lookahead_speed.max(f.lookahead_speed * speed), f.follow_index);
+                let st = trail.at_s(f.closest_s + f.min_lookahead_steering.max(f.lookahead_steering * speed), 0);
+                if let Some((_, i)) = st {
+                    f.follow_index = i;
+                }
+                (sp.map(|(p, _)| p), st.map(|(p, _)| p))
             }
             FollowMode::Time => {
+                // Both look-ups start from, and move, the same segment index.
                 let back = self.time - f.headstart;
-                let at = |d: f64| trail.at_time(back + d, f.follow_index);
-                let sp = at(f.min_lookahead_speed.max(f.lookahead_speed));
-                let st = at(f.min_lookahead_steering.max(f.lookahead_steering));
+                let sp = trail.at_time(back + f.min_lookahead_speed.max(f.lookahead_speed), f.follow_index);
+                if let Some((_, i)) = sp {
+                    f.follow_index = i;
+                }
+                let st = trail.at_time(back + f.min_lookahead_steering.max(f.lookahead_steering), f.follow_index);
                 if let Some((_, i)) = st {
                     f.follow_index = i;
                 }

@@ -4,3 +4,4 @@ mod absolute_trajectory;
 mod follow;
 mod head_start_holds_others;
 mod restart;
+mod trail_end_lookahead;
