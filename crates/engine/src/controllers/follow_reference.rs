@@ -13,13 +13,14 @@ pub(crate) mod state;
 use state::FollowReferenceRt;
 
 use super::kinematic_vehicle::KinematicVehicle;
+use super::looming::view::angle_pi;
 use crate::entities::Entity;
-use crate::roads::road_follow::wrap;
 use crate::sim::Sim;
 use openscenario::{Controller, EntityObject};
 
-/// esmini's SMALL_NUMBER.
-const SMALL: f64 = 1e-10;
+/// esmini's SMALL_NUMBER (1e-6, CommonMini.hpp): the reference's speed is floored to it for
+/// the curvature (`ABS_FLOOR`).
+const SMALL: f64 = crate::dynamics::ESMINI_SMALL_NUMBER;
 /// Yaw rates beyond this do not count for the reference's curvature, rad/s.
 const MAX_YAW_RATE: f64 = 0.5;
 
@@ -87,12 +88,17 @@ impl<'a> Sim<'a> {
         // In override mode nothing else moves the entity: its state is the body's.
         let (x, y, h, v) = (car.x, car.y, car.h, car.speed);
         // Lateral error measured at the front axle when driving forward, positive to the
-        // reference's left.
+        // reference's right; and the longitudinal distance along our own heading, positive when
+        // ahead of the reference. Both written as esmini's DistanceFromPointToLine2DWithAngle
+        // computes them: on a tie the sign of zero (x·sin − y·cos gives +0) decides whether
+        // atan2 of the cross-track term gives +π or −π when the speed term is negative.
         let (mx, my) = if v >= 0.0 { (x + f.wheelbase * h.cos(), y + f.wheelbase * h.sin()) } else { (x, y) };
-        let left = -(mx - r.x) * r.h.sin() + (my - r.y) * r.h.cos();
-        // Longitudinal distance along our own heading, positive when ahead of the reference.
-        let ahead = (x - r.x) * h.cos() + (y - r.y) * h.sin();
-        let dh = wrap(r.h - h);
+        let to_line = |px: f64, py: f64, angle: f64| (px - r.x) * angle.sin() - (py - r.y) * angle.cos();
+        let right = to_line(mx, my, r.h);
+        let ahead = to_line(x, y, h + std::f64::consts::FRAC_PI_2);
+        // GetAngleInIntervalMinusPIPlusPI, as ControllerFollowReference::Step wraps it: a
+        // reference facing exactly the other way is +π (turn left), not −π.
+        let dh = angle_pi(r.h - h);
         let ref_speed = if r.speed.abs() < SMALL {
             if r.speed < 0.0 {
                 -SMALL
@@ -105,7 +111,7 @@ impl<'a> Sim<'a> {
         let curvature = r.yaw_rate.clamp(-MAX_YAW_RATE, MAX_YAW_RATE) / ref_speed;
         let sign = if v < 0.0 { -1.0 } else { 1.0 };
         let steer =
-            f.heading_gain * dh * sign + (-f.cross_track_gain * left).atan2(f.speed_stabilizer + v) + f.curvature_gain * (curvature * f.wheelbase).atan();
+            f.heading_gain * dh * sign + (f.cross_track_gain * right).atan2(f.speed_stabilizer + v) + f.curvature_gain * (curvature * f.wheelbase).atan();
         let damping = 2.0 * f.stiffness.sqrt();
         let acc = -f.stiffness * ahead - damping * (v - r.speed);
         car.drive_acc_steer(dt, acc, steer);

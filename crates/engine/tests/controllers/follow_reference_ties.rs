@@ -1,0 +1,44 @@
+//! FollowReferenceController's ties, as ControllerFollowReference::Step meets them.
+//!
+//! A reference facing exactly the other way: the heading difference is wrapped by esmini's
+//! GetAngleInIntervalMinusPIPlusPI, which keeps +π (fmod, then only values beyond ±π move),
+//! so the heading term of the Stanley steering turns left; wrapping into [−π, π) gives −π and
+//! a turn to the right. Fixture `follow_reference_facing_away.xosc` on straight.xodr: the Ego
+//! at 5 m/s in lane −1, the reference 60 m ahead in lane 1 at 10 m/s the other way.
+//!
+//! A follower reversing on the reference's line: the cross-track error is exactly zero and
+//! the speed term negative, so atan2 gives ±π by the sign of that zero; esmini's
+//! DistanceFromPointToLine2DWithAngle (x·sin − y·cos) gives +0. Fixture
+//! `follow_reference_reversing_on_line.xosc`: the reference 70 m behind in the same lane.
+//!
+//! Numbers from esmini 3.6.0's runs.
+
+use crate::common::oracle::{assert_esmini_pose_at, assert_matches_esmini, run_fixture_scenario};
+use crate::common::*;
+
+const FIXTURE: &str = "follow_reference_facing_away.xosc";
+const REVERSING: &str = "follow_reference_reversing_on_line.xosc";
+
+#[test]
+fn a_reference_facing_the_other_way_turns_the_follower_left() {
+    let run = run_fixture_scenario(FIXTURE, 20.0);
+    // Left from the first steps: heading up from 0, y up from the lane centre.
+    let first = at(&run, "Ego", 0.1);
+    assert!(first.h > 0.2 && first.h < 0.3 && first.y > -1.75, "{first:?}");
+    assert_esmini_pose_at(&run, "Ego", 0.1, 100.648667, -1.507444, 0.230832);
+    assert_esmini_pose_at(&run, "Ego", 1.0, 98.417928, 4.440928, 2.965832);
+    assert_esmini_pose_at(&run, "Ego", 8.0, 76.862190, 1.915216, 3.173443);
+    assert_matches_esmini(FIXTURE, &run, 1e-3);
+}
+
+#[test]
+fn reversing_on_the_references_line_turns_the_wheels_left() {
+    let run = run_fixture_scenario(REVERSING, 20.0);
+    // Backwards with the wheels turned left: the rear swings right of the lane centre.
+    let early = at(&run, "Ego", 0.5);
+    assert!(early.speed < 0.0 && early.y < -1.75, "{early:?}");
+    assert_esmini_pose_at(&run, "Ego", 0.5, 93.107972, -3.309184, 0.652394);
+    assert_esmini_pose_at(&run, "Ego", 1.0, 88.106302, -0.148681, 4.947992);
+    assert_esmini_pose_at(&run, "Ego", 5.0, 84.999724, 2.672464, 0.229354);
+    assert_matches_esmini(REVERSING, &run, 1e-3);
+}
