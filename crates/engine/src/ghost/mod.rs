@@ -117,7 +117,19 @@ impl<'a> Sim<'a> {
             }
         }
         let restart_events = self.ghost_restart_events(owner, &events);
+        // ScenarioEngine::SetupGhost hands an Act's start trigger to the ghost only when the
+        // entity is an actor of one of the Act's maneuver groups; an Act of other entities
+        // starts on the clock of the run (its SimulationTime stays unshifted).
+        let owner_acts: Vec<bool> = self
+            .scenario
+            .storyboard
+            .stories
+            .iter()
+            .flat_map(|story| &story.acts)
+            .map(|act| act.maneuver_groups.iter().any(|mg| mg.actors.iter().any(|a| self.entity_index(a) == Some(owner))))
+            .collect();
         let acts = (0..self.nodes.len()).filter(|&n| self.nodes[n].kind == Kind::Act);
+        let acts = acts.zip(owner_acts).filter_map(|(n, owns)| owns.then_some(n));
         let triggers: Vec<usize> = acts.chain(events).filter_map(|n| self.nodes[n].start_trigger).collect();
         for t in triggers {
             self.hand_trigger_to_ghost(t, owner, ghost, headstart);

@@ -1,6 +1,7 @@
 //! The ghost of FollowGhost/FollowReference controllers: its head start, trajectories, restarts.
 
 mod absolute_trajectory;
+mod act_of_other_entity;
 mod follow;
 mod head_start_holds_others;
 mod restart;
