@@ -43,11 +43,14 @@ pub(crate) struct ActionSlot<'a> {
     pub instances: Vec<Instance>,
     pub running: bool,
     pub warned: bool,
+    /// An Init action copied for a ghost (`ghost/`): esmini copied its position with
+    /// Position::Duplicate, which leaves a trajectory out.
+    pub ghost_copy: bool,
 }
 
 impl<'a> ActionSlot<'a> {
     pub(crate) fn new(node: usize, model: &'a Action, actors: Vec<usize>) -> Self {
-        ActionSlot { node, model, actors, instances: Vec::new(), running: false, warned: false }
+        ActionSlot { node, model, actors, instances: Vec::new(), running: false, warned: false, ghost_copy: false }
     }
 
     /// Control domains the action takes over.

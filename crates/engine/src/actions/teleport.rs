@@ -36,7 +36,12 @@ impl<'a> Sim<'a> {
         // A RoutePosition FromCurrentEntity (esmini 3.6: "not implemented"), or a road-relative
         // position from an entity so placed, leaves esmini's position unset: the origin,
         // heading 0, on no road (TeleportAction::Start copies it as it is).
-        if self.unset_position(pos) {
+        // So does a ghost's copy of an Init teleport to a TrajectoryPosition: the copy
+        // (TeleportAction's copy constructor, Position::Duplicate = CopyConfig, CopyLocation,
+        // CopyState) has no trajectory, so TeleportTo evaluates nothing and copies the
+        // location the position had when copied, before any evaluation: the origin.
+        let trajectory_lost = matches!(pos, Position::Trajectory { .. }) && self.actions.get(slot).is_some_and(|a| a.ghost_copy);
+        if trajectory_lost || self.unset_position(pos) {
             if let Some(en) = self.entities.get_mut(e) {
                 en.place_nowhere();
             }

@@ -89,7 +89,9 @@ impl<'a> Sim<'a> {
             let name = format!("{}_ghost-copy", self.nodes[a.node].name);
             let node = self.nodes.len();
             self.nodes.push(Node::new(Kind::Action, &name, None));
-            self.actions.push(ActionSlot::new(node, model, vec![ghost]));
+            let mut copy = ActionSlot::new(node, model, vec![ghost]);
+            copy.ghost_copy = true;
+            self.actions.push(copy);
             self.nodes[node].action = Some(self.actions.len() - 1);
             self.init_actions.push(self.actions.len() - 1);
         }

@@ -4,5 +4,6 @@ mod absolute_trajectory;
 mod act_of_other_entity;
 mod follow;
 mod head_start_holds_others;
+mod init_trajectory_position;
 mod restart;
 mod trail_end_lookahead;
