@@ -24,7 +24,7 @@ fn the_speed_point_is_the_ghosts_latest_sample_once_the_steering_point_runs_past
     assert!(at(&run, "Ego", 2.0).speed > 15.05, "{}", at(&run, "Ego", 2.0).speed);
     assert_esmini_pose_at(&run, "Ego", 3.0, 76.317987, -1.939574, 6.279231);
     assert_esmini_pose_at(&run, "Ego", 5.0, 123.357191, -1.967271, 0.000022);
-    assert_esmini_pose_at(&run, "Ego", 10.0, 272.930009, -1.967021, 6.283185);
+    assert_esmini_pose_at(&run, "Ego", 10.0, 272.930009, -1.967021, std::f64::consts::TAU); // esmini: 6.283185
     assert!(close(at(&run, "Ego", 5.0).speed, 28.401229, 1e-3), "{}", at(&run, "Ego", 5.0).speed);
     assert_matches_esmini(FIXTURE, &run, 1e-3);
 }
