@@ -187,10 +187,24 @@ fn waypoint_roads(route: &Route, net: &RoadNetwork, entities: &[Entity]) -> Opti
     route.waypoints.iter().map(|w| resolve(&w.position, Some(net), entities).ok().and_then(|p| waypoint_of(&w.position, &p, net)).map(|wp| wp.road)).collect()
 }
 
-/// The road and s of a route's first waypoint (esmini's route before SetPathS moves it).
+/// The road and s of a route's first waypoint (esmini's route before SetPathS moves it). A
+/// LanePosition on a lane its road does not have there still gives its road and s: esmini's
+/// Position::SetLanePosMode sets both (SetLongitudinalTrackPos) before it finds the lane
+/// missing, and Route::AddWaypoint keeps that waypoint (with lane id 0).
 fn first_waypoint(route: &Route, net: &RoadNetwork, entities: &[Entity]) -> Result<(usize, f64), PositionError> {
     let w = route.waypoints.first().ok_or_else(|| format!("route `{}` has no waypoint", route.name))?;
-    let p = resolve(&w.position, Some(net), entities).map_err(|e| format!("route `{}`, waypoint 0: {e}", route.name))?;
+    let p = match resolve(&w.position, Some(net), entities) {
+        Ok(p) => p,
+        Err(e) => {
+            if let openscenario::Position::Lane { road_id, s, .. } = &w.position {
+                if let Some(road) = crate::roads::road_id::resolve_road_id(net, road_id) {
+                    let length = net.roads.get(road).map_or(0.0, |r| r.length);
+                    return Ok((road, s.clamp(0.0, length)));
+                }
+            }
+            return Err(format!("route `{}`, waypoint 0: {e}", route.name));
+        }
+    };
     let wp = waypoint_of(&w.position, &p, net).ok_or_else(|| format!("route `{}`: waypoint 0 is not on a road", route.name))?;
     Ok((wp.road, wp.s))
 }

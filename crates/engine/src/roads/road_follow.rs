@@ -38,8 +38,11 @@ pub(crate) fn at_dead_end(net: &RoadNetwork, lp: &LanePos) -> bool {
 /// Most road changes one move may cross (guards against zero-length road loops).
 const MAX_HOPS: usize = 16;
 
-/// esmini's SMALL_NUMBER: junction arms turning within this of each other are a tie, rad.
-const TIE: f64 = 1e-10;
+/// esmini's SMALL_NUMBER (CommonMini.hpp: 1e-6): junction arms turning within this of each
+/// other are a tie, rad (Position::MoveToConnectingRoad compares `heading_diff` with it). Maps
+/// whose headings are written to eight decimals (π/2 as 1.570796335) give arms that differ by
+/// ~1e-8 rad: a tie for esmini, decided by its draw.
+const TIE: f64 = 1e-6;
 
 /// Move `pos` by `dist` metres along the direction it faces (negative: backwards).
 pub(crate) fn move_along_s(net: &RoadNetwork, pos: &mut LanePos, dist: f64) -> MoveStatus {

@@ -10,3 +10,4 @@ mod road_position_heading;
 mod route_position_against_lane;
 mod route_position_dropped_waypoints;
 mod route_position_from_current_entity;
+mod route_position_missing_lane_waypoint;

@@ -42,13 +42,18 @@ fn arc(curvature: f64, length: f64) -> String {
 
 /// The T (and, with `straight`, a fourth arm straight on).
 fn network(straight: bool) -> opendrive::RoadNetwork {
+    network_tilted(straight, 0.0)
+}
+
+/// The T with road 1 turned by `tilt` rad (its end moves by 50·tilt m).
+fn network_tilted(straight: bool, tilt: f64) -> opendrive::RoadNetwork {
     let quarter = 5.0 * std::f64::consts::PI; // a quarter circle of radius 10
     let into = |to: &str| {
         format!(r#"<predecessor elementType="road" elementId="1" contactPoint="end"/><successor elementType="road" elementId="{to}" contactPoint="start"/>"#)
     };
     let from_junction = r#"<predecessor elementType="junction" elementId="100"/>"#;
     let mut roads = vec![
-        road("1", "-1", 50.0, r#"<successor elementType="junction" elementId="100"/>"#, &line(0.0, 0.0, 0.0, 50.0)),
+        road("1", "-1", 50.0, r#"<successor elementType="junction" elementId="100"/>"#, &line(0.0, 0.0, tilt, 50.0)),
         road("10", "100", quarter, &into("2"), &arc(0.1, quarter)),
         road("11", "100", quarter, &into("3"), &arc(-0.1, quarter)),
         road("2", "-1", 100.0, from_junction, &line(60.0, 10.0, std::f64::consts::FRAC_PI_2, 100.0)),
@@ -76,12 +81,16 @@ fn network(straight: bool) -> opendrive::RoadNetwork {
 /// Ego starts on road 1, lane −1, s = 30 at 10 m/s with no route; after 5 s it has driven 50 m:
 /// 20 m to the junction, the quarter circle of lane −1 (radius 10 ± 1.75), then the exit road.
 fn drive(straight: bool, seed: u32) -> engine::Sample {
+    drive_on(network(straight), seed)
+}
+
+/// [`drive`] on network `net`.
+fn drive_on(net: opendrive::RoadNetwork, seed: u32) -> engine::Sample {
     let init = format!("{}{}", teleport_on("Ego", "1", 30.0), init_speed("Ego", "step", "time", 0.0, 10.0));
     let stop = stop_at(5.0);
     let text = xosc(&init, "", &stop);
     let loaded = openscenario::load_str(&fixtures().join("t_junction.xosc"), &text, &Default::default()).expect("test scenario loads");
     let openscenario::Content::Scenario(scenario) = loaded.content else { panic!("not a scenario") };
-    let net = network(straight);
     let run =
         engine::simulate_with(&scenario, Some(&net), &Settings { step: 0.01, max_time: 5.0 }, &engine::RunControl { seed, deadline: None }).expect("simulate");
     at(&run, "Ego", 5.0)
@@ -144,4 +153,18 @@ fn a_straight_arm_wins_whatever_the_seed() {
         let e = drive(true, seed);
         assert!(close(e.x, 80.0, 1e-6) && close(e.y, -1.75, 1e-6) && close(e.h, 0.0, 1e-9), "seed {seed}: {e:?}");
     }
+}
+
+/// Arms whose turns differ by less than esmini's SMALL_NUMBER (1e-6 rad) are a tie too
+/// (Position::MoveToConnectingRoad): road 1 turned 2e-8 rad to the right makes the right arm
+/// turn 4e-8 rad less than the left one, as the headings of maps written to eight decimals do
+/// (π/2 as 1.570796335). Confirmed with esmini 3.6.0 on this network written out (seed 0: the
+/// car leaves north at x = 61.75; seed 1: south at x = 58.25).
+#[test]
+fn arms_turning_within_a_micro_radian_are_a_tie() {
+    let tilt = -2e-8;
+    // Seed 0's coin is 1: the later connection (the left turn) wins the tie.
+    assert!(went_left(&drive_on(network_tilted(false, tilt), 0)));
+    // Seed 1's coin is 0: the first connection (the right turn) stays.
+    assert!(!went_left(&drive_on(network_tilted(false, tilt), 1)));
 }
