@@ -130,8 +130,7 @@ impl<'a> Sim<'a> {
         let b_en = self.entities.get(r.target)?;
         let b = b_en.lane?;
         let t_of = |p: &crate::roads::LanePos| net.roads.get(p.road).and_then(|rd| lane_center_t(rd, p.lane_id, p.s)).map(|c| c + p.offset);
-        // esmini's IsAngleForward of the heading relative to the road.
-        let forward = |h: f64, p: &crate::roads::LanePos| p.pose(net).is_some_and(|q| wrap(h - q.road_heading).abs() <= FRAC_PI_2);
+        let forward = |h: f64, p: &crate::roads::LanePos| p.pose(net).is_some_and(|q| is_angle_forward(h - q.road_heading));
         // esmini's lateral velocity of the reference is taken in its own frame (≈ 0 for a
         // vehicle, even during a lane change: it moves along its heading).
         let vel_lat = -b_en.vel.0 * b_en.h.sin() + b_en.vel.1 * b_en.h.cos();
@@ -223,6 +222,13 @@ impl<'a> Sim<'a> {
             }
         }
         let long_vel = (en.speed * en.speed - r.lat_vel * r.lat_vel).max(0.0).sqrt();
+        // Object::MoveAlongS moves in the heading's direction (MoveDirectionMode::
+        // HEADING_DIRECTION: IsAngleForward of the heading relative to the road), and the
+        // heading is the last step's displacement: stuck at a dead end, the offset alone moves
+        // the entity, its heading turns across the road and it may drive back the other way.
+        if let Some(q) = lp.pose(net) {
+            lp.dir = if is_angle_forward(en.h - q.road_heading) { 1.0 } else { -1.0 };
+        }
         move_along_s(net, &mut lp, long_vel * dt);
         lp.offset += r.lat_vel * dt;
         en.set_lane_pos(net, lp);
@@ -238,4 +244,9 @@ impl<'a> Sim<'a> {
         }
         r.old = (en.x, en.y);
     }
+}
+
+/// esmini's IsAngleForward: an angle not strictly between π/2 and 3π/2 (after wrapping).
+fn is_angle_forward(angle: f64) -> bool {
+    wrap(angle).abs() <= FRAC_PI_2
 }
