@@ -1,7 +1,8 @@
 //! LateralDistanceAction (road coordinates, with a maximum acceleration) where a road ends:
-//! the actor that reaches a dead end turns round and drives back along the road, and a
-//! reference that passes a direct junction stays joined to the actor behind it. The expected
-//! poses are esmini 3.6.0's on these scenarios (written here, run with esmini).
+//! the actor that reaches a dead end turns round and drives back along the road, a reference
+//! that passes a direct junction stays joined to the actor behind it, and an actor with a
+//! route keeps to it through a junction. The expected poses are esmini 3.6.0's on these
+//! scenarios (written here, run with esmini).
 
 use crate::common::*;
 
@@ -44,6 +45,24 @@ fn a_reference_past_a_direct_junction_is_still_joined_to_the_actor() {
         ("Ego", 4.0, 59.741712, 2.247782, 0.067044),
         ("Ego", 5.0, 69.719744, 1.923752, 6.151401),
         ("Ego", 6.0, 79.454841, -0.311515, 5.998546),
+    ];
+    assert_esmini_poses(&run, &rows, 0.01, 0.001);
+}
+
+#[test]
+fn through_a_junction_the_actor_keeps_to_its_route() {
+    // On the crossing (`crossing.xodr`), Ego drives road 3's lane 1 east towards the junction
+    // with a route that turns left onto road 2 (north); the action's move along the road is
+    // Object::MoveAlongS, which follows the assigned route (it used to go straight on).
+    let route = r#"<PrivateAction><RoutingAction><AssignRouteAction><Route name="Left" closed="false"><Waypoint routeStrategy="shortest"><Position><LanePosition roadId="3" laneId="1" offset="0" s="40"/></Position></Waypoint><Waypoint routeStrategy="shortest"><Position><LanePosition roadId="2" laneId="-1" offset="0" s="50"/></Position></Waypoint></Route></AssignRouteAction></RoutingAction></PrivateAction></Private>"#;
+    let text =
+        scenario((40.0, 1, 10.0), (30.0, -1, 0.0)).replacen("</Private>", route, 1).replace(r#"<LanePosition roadId="1""#, r#"<LanePosition roadId="3""#);
+    let run = run_on(&text.replace("straight.xodr", "crossing.xodr"), "crossing.xodr", &engine::Settings { step: 0.01, max_time: 20.0 });
+    let rows = [
+        ("Ego", 3.0, -30.020677, -2.727306, 6.250914),
+        ("Ego", 4.0, -20.023859, -2.976389, 6.26469),
+        ("Ego", 5.0, -10.318974, -0.822074, 0.424862),
+        ("Ego", 6.0, -2.377101, 5.125691, 0.857844),
     ];
     assert_esmini_poses(&run, &rows, 0.01, 0.001);
 }
