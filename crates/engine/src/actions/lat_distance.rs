@@ -4,11 +4,11 @@
 //! As esmini: the first step only records the position (the default controller moves the
 //! entity). Then the distance error is the wanted t (reference t ± distance, ± half the two
 //! widths with freespace) minus the actor's t, the reference's t and the side as seen through
-//! the road path between them (`lat_state`, `roads/road_path.rs`). Without any limit the actor jumps onto it; with
+//! the road path between them (`lat_state`, `roads/road_path.rs`). Without any limit the actor jumps onto it (onto the road and lane the point lies in); with
 //! only a maximum speed it moves sideways at min(max speed, speed) until the error changes
 //! sign; with a maximum acceleration a critically damped spring (stiffness 0.4 × the limit)
 //! pulls the lateral velocity, its acceleration clipped to the limit and the lateral speed to
-//! min(max speed, speed). The actor keeps its lane id (the offset grows past the lane), moves
+//! min(max speed, speed). Moving so, the actor keeps its lane id (the offset grows past the lane), moves
 //! along the road by √(v² − v_lat²)·dt, and heads along its displacement. A non-continuous
 //! action ends when the error is below 0.01 m. The entity coordinate system (the reference's
 //! own axes, esmini's `CS_ENTITY` branch) is in `entity_frame.rs`; in the lane, trajectory and
@@ -24,7 +24,8 @@ use state::{Frame, LatDistanceRt, Phase};
 use super::state::ActionRt;
 use crate::dynamics::ESMINI_SMALL_NUMBER as ESMINI_SMALL;
 use crate::roads::lane_geometry::lane_center_t;
-use crate::roads::move_along_s;
+use crate::roads::lane_snap;
+use crate::roads::move_along_route_drawing;
 use crate::roads::road_follow::wrap;
 use crate::roads::road_path::path_ends;
 use crate::sim::Sim;
@@ -130,8 +131,7 @@ impl<'a> Sim<'a> {
         let b_en = self.entities.get(r.target)?;
         let b = b_en.lane?;
         let t_of = |p: &crate::roads::LanePos| net.roads.get(p.road).and_then(|rd| lane_center_t(rd, p.lane_id, p.s)).map(|c| c + p.offset);
-        // esmini's IsAngleForward of the heading relative to the road.
-        let forward = |h: f64, p: &crate::roads::LanePos| p.pose(net).is_some_and(|q| wrap(h - q.road_heading).abs() <= FRAC_PI_2);
+        let forward = |h: f64, p: &crate::roads::LanePos| p.pose(net).is_some_and(|q| is_angle_forward(h - q.road_heading));
         // esmini's lateral velocity of the reference is taken in its own frame (≈ 0 for a
         // vehicle, even during a lane change: it moves along its heading).
         let vel_lat = -b_en.vel.0 * b_en.h.sin() + b_en.vel.1 * b_en.h.cos();
@@ -197,7 +197,19 @@ impl<'a> Sim<'a> {
                 return false;
             }
             Phase::Rigid => {
-                lp.offset += error;
+                // LatDistanceAction::GetDesiredRoadPos: the point `error` across the road
+                // heading from where the actor is, looked up afresh (XYZ2TrackPos on a new
+                // Position: the nearest road, snapped to its nearest driving lane), whose
+                // road, lane, s and offset the actor takes — near a junction another road.
+                if let Some(q) = lp.pose(net) {
+                    let (x, y) = (en.x - q.road_heading.sin() * error, en.y + q.road_heading.cos() * error);
+                    if let Some(p) = crate::roads::locate::world_to_lane(net, x, y, None) {
+                        let (lane_id, offset) =
+                            net.roads.get(p.road).and_then(|rd| lane_snap::snap(rd, p.section, p.s, p.t, false)).unwrap_or((p.lane_id, p.offset));
+                        let dir = if is_angle_forward(en.h - p.heading) { 1.0 } else { -1.0 };
+                        lp = crate::roads::LanePos { road: p.road, lane_id, s: p.s, offset, dir };
+                    }
+                }
                 en.set_lane_pos(net, lp);
                 let done = !r.continuous && error.abs() < THRESHOLD;
                 Self::head_along(en, r);
@@ -223,7 +235,17 @@ impl<'a> Sim<'a> {
             }
         }
         let long_vel = (en.speed * en.speed - r.lat_vel * r.lat_vel).max(0.0).sqrt();
-        move_along_s(net, &mut lp, long_vel * dt);
+        // Object::MoveAlongS moves in the heading's direction (MoveDirectionMode::
+        // HEADING_DIRECTION: IsAngleForward of the heading relative to the road), and the
+        // heading is the last step's displacement: stuck at a dead end, the offset alone moves
+        // the entity, its heading turns across the road and it may drive back the other way.
+        if let Some(q) = lp.pose(net) {
+            lp.dir = if is_angle_forward(en.h - q.road_heading) { 1.0 } else { -1.0 };
+        }
+        // Object::MoveAlongS as the default controller's move: along an assigned route at a
+        // junction, a tie of arms decided by esmini's generator.
+        let pedestrian = en.kind == crate::entities::EntityKind::Pedestrian;
+        move_along_route_drawing(net, &mut lp, long_vel * dt, en.route.as_deref(), &mut self.random, pedestrian);
         lp.offset += r.lat_vel * dt;
         en.set_lane_pos(net, lp);
         Self::head_along(en, r);
@@ -238,4 +260,9 @@ impl<'a> Sim<'a> {
         }
         r.old = (en.x, en.y);
     }
+}
+
+/// esmini's IsAngleForward: an angle not strictly between π/2 and 3π/2 (after wrapping).
+fn is_angle_forward(angle: f64) -> bool {
+    wrap(angle).abs() <= FRAC_PI_2
 }

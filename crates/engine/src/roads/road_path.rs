@@ -4,7 +4,7 @@
 //! the first road it leaves by, which end of the last road before the second position's road
 //! it leaves by, and whether a lane id keeps its sign along the chain.
 
-use opendrive::{ContactPoint, ElementType, RoadEnd, RoadNetwork};
+use opendrive::{ContactPoint, ElementType, JunctionType, RoadEnd, RoadNetwork};
 
 /// Most road ends the search settles (hostile input: bounded work per call).
 const MAX_SETTLED: usize = 512;
@@ -70,17 +70,42 @@ pub(crate) fn path_ends(net: &RoadNetwork, a: usize, sa: f64, b: usize) -> Optio
 /// RoadPath::Calculate takes only the connections whose incoming road is this one
 /// (Junction::GetConnectingRoadIdFromIncomingRoadId), entered at their contact point: of two
 /// connecting roads laid along the same way in opposite directions, the one leading out of
-/// this road.
+/// this road. A direct junction's connections also count the other way round, after all of
+/// them (OpenDrive::CheckConnectedRoad adds a counter connection per connection whose linked
+/// road links back to the junction: incoming road and linked road swapped, entered at the end
+/// of the original incoming road that touches the junction, its successor end first).
 fn next_roads(net: &RoadNetwork, road: usize, exit: ContactPoint) -> Vec<RoadEnd> {
     let Some(r) = net.roads.get(road) else { return Vec::new() };
     match r.link_at(exit) {
         Some(l) if l.element_type == ElementType::Junction => {
             let Some(j) = net.junction(&l.element_id) else { return Vec::new() };
-            j.connections
+            let mut next: Vec<RoadEnd> = j
+                .connections
                 .iter()
                 .filter(|c| c.incoming_road.as_deref() == Some(r.id.as_str()))
                 .filter_map(|c| Some(RoadEnd { road: net.road_index(c.target_road()?)?, contact: c.contact_point.unwrap_or(ContactPoint::Start) }))
-                .collect()
+                .collect();
+            if j.kind == JunctionType::Direct {
+                let touches = |inc: &opendrive::Road, end: ContactPoint| {
+                    inc.link_at(end).is_some_and(|l| l.element_type == ElementType::Junction && l.element_id == j.id)
+                };
+                for c in j.connections.iter().filter(|c| c.linked_road.as_deref() == Some(r.id.as_str())) {
+                    let Some(inc) = c.incoming_road.as_deref().and_then(|id| net.road_index(id)) else { continue };
+                    let Some(inc_road) = net.roads.get(inc) else { continue };
+                    let contact = if touches(inc_road, ContactPoint::End) {
+                        ContactPoint::End
+                    } else if touches(inc_road, ContactPoint::Start) {
+                        ContactPoint::Start
+                    } else {
+                        continue;
+                    };
+                    let end = RoadEnd { road: inc, contact };
+                    if !next.contains(&end) {
+                        next.push(end);
+                    }
+                }
+            }
+            next
         }
         _ => net.roads_at(road, exit),
     }

@@ -5,3 +5,4 @@ mod across_roads;
 mod domain;
 mod entity_frame;
 mod road_coordinates;
+mod road_ends;

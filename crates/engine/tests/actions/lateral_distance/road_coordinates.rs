@@ -70,3 +70,20 @@ fn max_acceleration_spring_settles_and_a_single_shot_ends() {
         assert!(acc.abs() <= 2.0 + 1e-6, "step {k}: {acc}");
     }
 }
+
+#[test]
+fn without_limits_the_actor_takes_the_lane_it_lands_in() {
+    // Ego and Target both in lane -1 (t = -1.75); 5 m to the Target's left is t = 3.25, in
+    // lane 1: esmini (GetDesiredRoadPos, a fresh XYZ2TrackPos) puts the Ego in lane 1 at offset
+    // 1.5 from its centre, not in lane -1 at offset 5; it goes on along +x all the same.
+    let init = format!("{}{}", placed("Ego", 20.0, -1, 10.0), placed("Target", 20.0, -1, 10.0));
+    let action = lat_distance(r#"distance="5" freespace="false" continuous="true" displacement="leftToReferencedEntity""#, "");
+    let stories = story("Ego", &event("Keep", "overwrite", &action, &trigger(&sim_time(0.5, "greaterThan", "none", 0.0))));
+    let run = run(&xosc(&init, &stories, &stop_at(6.0)));
+    for (t, x) in [(1.0, 30.0), (4.0, 60.0)] {
+        let e = at(&run, "Ego", t);
+        let road = e.road.expect("on the road");
+        assert!(close(e.x, x, 1e-6) && close(e.y, 3.25, 1e-6), "t={t}: {e:?}");
+        assert!(road.lane_id == 1 && close(road.lane_offset, 1.5, 1e-6), "t={t}: {road:?}");
+    }
+}
