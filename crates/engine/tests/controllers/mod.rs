@@ -5,6 +5,7 @@ mod alks;
 mod alks_r157;
 mod alks_r157_one_domain;
 mod alks_r157_rss_fsm;
+mod controllers_off_speed_from_displacement;
 mod follow_route;
 mod holds_lateral;
 mod looming;
