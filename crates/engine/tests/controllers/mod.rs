@@ -4,6 +4,7 @@ mod acc;
 mod alks;
 mod alks_r157;
 mod alks_r157_one_domain;
+mod alks_r157_reversing_set_speed;
 mod alks_r157_rss_fsm;
 mod controllers_off_speed_from_displacement;
 mod follow_route;
