@@ -28,6 +28,18 @@ pub(crate) fn abs_limit(v: f64, limit: f64) -> f64 {
     }
 }
 
+/// esmini's CLAMP macro, `MIN(hi, MAX(lo, x))`, which unlike `f64::clamp` takes `hi` when it is
+/// below `lo`: a model whose set speed is negative (activated while reversing) cruises at that
+/// set speed (Model::Cruise).
+pub(crate) fn esmini_clamp(x: f64, lo: f64, hi: f64) -> f64 {
+    let m = if x > lo { x } else { lo };
+    if m < hi {
+        m
+    } else {
+        hi
+    }
+}
+
 pub(crate) fn avoid_zero(x: f64) -> f64 {
     if x.abs() < SMALL {
         sign(x) * SMALL

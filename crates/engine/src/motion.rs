@@ -88,11 +88,18 @@ impl<'a> Sim<'a> {
         // leaves a standing entity alone (ScenarioEngine::step moves none at |speed| <=
         // SMALL_NUMBER), so a standing car a lateral action moves sideways takes that sideways
         // rate as speed and drives off at it from the next step. Trailers get their tow
-        // vehicle's speed, and the entities a controller drives are left to it (most set the
-        // speed in every step). Asked in the loop below, before it changes the entity's speed.
+        // vehicle's speed, and the entities an active controller drives are left to it (it sets
+        // the speed in every step: `ControllerRt::sets_speed`); an assigned controller that is
+        // off (or on no domain it operates on) sets nothing. Asked in the loop below, before it
+        // changes the entity's speed.
         let (links, controllers) = (&self.trailers.links, &self.controllers);
         let derives_speed = |i: usize, en: &crate::entities::Entity| {
-            !en.speed_set && en.active && !en.outside && en.speed.abs() <= SMALL && !links.contains(&Some(i)) && controllers.get(i).is_none_or(|c| c.is_none())
+            !en.speed_set
+                && en.active
+                && !en.outside
+                && en.speed.abs() <= SMALL
+                && !links.contains(&Some(i))
+                && !controllers.get(i).is_some_and(|c| c.as_ref().is_some_and(|c| c.sets_speed()))
         };
         // While the ghost runs ahead (RESTARTING), ScenarioEngine::prepareGroundTruth measures
         // the motion of the ghost only: the others, held, keep the velocity they had (frame 0's,

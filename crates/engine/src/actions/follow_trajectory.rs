@@ -190,7 +190,7 @@ impl<'a> Sim<'a> {
         // A timed polyline is timed vertex by vertex (PolyLineShape::CalculatePolyLine); the other
         // shapes' time runs linearly with their length.
         let vertices = if timing.is_some() && path.is_polyline() { polyline_timing(&path, mode == FollowingMode::Follow, entity_speed) } else { None };
-        let start_speed = timing.map(|_| start_speed(&path, s, vertices.as_deref()));
+        let start_speed = timing.map(|_| start_speed(vertices.as_deref(), s));
         let p = path.pose_at(s);
         let heading = p.heading + if speed_sign < 0.0 { std::f64::consts::PI } else { 0.0 };
         let net = self.net;
@@ -347,14 +347,14 @@ fn move_s(path: &Path, s: f64, ds: f64) -> f64 {
 }
 
 /// The speed esmini gives the entity when a timed trajectory starts at arc length `s`
-/// (RMTrajectory::GetSpeed): the vertex speeds interpolated linearly by s (a polyline's from
-/// `polyline_timing`; other shapes: their mean speed).
-fn start_speed(path: &Path, s: f64, vertices: Option<&[(f64, f64, f64, f64)]>) -> f64 {
-    let Some(tt) = path.time_table() else { return 0.0 };
-    let Some(v) = vertices else {
-        let (t0, t1) = (tt.start_time(), tt.end_time());
-        return if t1 - t0 > SMALL { path.length() / (t1 - t0) } else { 0.0 };
-    };
+/// (RMTrajectory::GetSpeed, the shape's `current_val_.speed`): the vertex speeds interpolated
+/// linearly by s. Only a polyline's vertices carry speeds (PolyLineShape::CalculatePolyLine,
+/// here `polyline_timing`); ClothoidShape, ClothoidSplineShape and NurbsShape::CalculatePolyLine
+/// give their vertices a time but leave TrajVertex's speed at 0, so such a trajectory starts
+/// the entity at speed 0 — which an ACC in override mode, for which the action then moves the
+/// entity at its current speed, takes as its new set speed (ControllerACC::Step).
+fn start_speed(vertices: Option<&[(f64, f64, f64, f64)]>, s: f64) -> f64 {
+    let Some(v) = vertices else { return 0.0 };
     let i = v.partition_point(|q| q.0 < s).saturating_sub(1).min(v.len().saturating_sub(1));
     match (v.get(i), v.get(i + 1)) {
         (Some(a), Some(b)) if b.0 - a.0 > SMALL => {

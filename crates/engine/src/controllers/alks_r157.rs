@@ -343,12 +343,12 @@ impl<'a> Sim<'a> {
                 } else {
                     2.0
                 };
-                return (v + a.acc * a.dt).clamp(0.0, a.set_speed.max(0.0));
+                return crate::dynamics::esmini_clamp(v + a.acc * a.dt, 0.0, a.set_speed);
             } else if a.focus.dist_long > 0.0 && a.focus.ttc > a.focus.dv_s / 12.0 + 0.35 {
                 a.mode = Mode::TargetInSight;
                 a.acc =
                     if v.abs() < SMALL { 0.0 } else { (2.0 * -a.focus.dv_s + (a.focus.dist_long - a.min_dist(v, self.alks_focus_speed(a)))).clamp(-4.0, 3.0) };
-                return (v + a.acc * a.dt).clamp(0.0, a.set_speed.max(0.0));
+                return crate::dynamics::esmini_clamp(v + a.acc * a.dt, 0.0, a.set_speed);
             }
         }
         a.acc = 0.0;

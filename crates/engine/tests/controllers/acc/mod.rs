@@ -13,3 +13,4 @@ mod override_speed_action;
 mod override_speed_profile;
 mod override_teleport;
 mod override_timed_trajectory;
+mod timed_clothoid_start_speed;
