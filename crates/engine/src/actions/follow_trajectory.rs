@@ -173,7 +173,7 @@ impl<'a> Sim<'a> {
         // it is the last vertex's time (PolyLineBase::Evaluate), so a path without length
         // that is timed relatively is over at once.
         let at_end = path.is_polyline() && s > path.length() - SMALL_NUMBER;
-        let time = if at_end { path.time_range().map_or(0.0, |r| r.1) } else { path.time_at(s).unwrap_or(0.0) };
+        let time = if at_end { path.time_range().map_or(0.0, |r| r.1) } else { time_at_start(traj, &path, s).unwrap_or(0.0) };
         // esmini's FollowTrajectoryAction::Start: without time stamps the speed's sign picks the
         // way the entity faces (against the path when reversing), and that sign is kept for
         // the whole action.
@@ -314,6 +314,30 @@ fn esmini_clock(origin: f64, dt: f64, time: f64) -> f64 {
     }
     let n = ((time - origin) / dt).round().max(0.0) as u64;
     (0..n).fold(origin, |t, _| t + dt)
+}
+
+/// The trajectory time esmini reads where the entity is put on the path (RMTrajectory::GetTime
+/// after Position::SetTrajectoryS): the time of the shape's one-metre polyline at `s`. A
+/// Clothoid's and a ClothoidSpline's polyline times its vertices linearly by their distance,
+/// `first + (s_vertex / length) · last` (ClothoidShape and ClothoidSplineShape::
+/// CalculatePolyLine), where `last` is the clothoid's stopTime, or the spline's last segment's
+/// timeStart (not its timeEnd); the last vertex sits at the whole metres of the length. Only
+/// that start time differs from the time the shape is evaluated by (segment by segment), so a
+/// relatively timed trajectory started at an initial distance offset jumps back or forth at
+/// once; polylines and NURBS time their vertices as the path's time table does.
+fn time_at_start(traj: &Trajectory, path: &Path, s: f64) -> Option<f64> {
+    let points = path.time_table()?.points();
+    let first = points.first()?.1;
+    let last = match &traj.shape {
+        openscenario::Shape::Clothoid { .. } => points.last()?.1,
+        openscenario::Shape::ClothoidSpline { .. } => points.len().checked_sub(2).and_then(|i| points.get(i))?.1,
+        _ => return path.time_at(s),
+    };
+    let length = path.length();
+    if length <= 0.0 {
+        return Some(first);
+    }
+    Some(first + s.clamp(0.0, length.floor()) / length * last)
 }
 
 /// Whether a polyline vertex of `traj` gives a heading of its own.
