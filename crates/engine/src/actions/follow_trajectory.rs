@@ -300,6 +300,17 @@ impl<'a> Sim<'a> {
         en.set_world(net, x, y, None, heading);
         en.speed = new_speed;
         en.moved_by_action = true;
+        // ScenarioEngine::step, after every move: an entity whose position lies past the end of
+        // the road (POS_STATUS_END_OF_ROAD), already flagged there, and that did not move in the
+        // last step (its velocity, measured then, is zero) is stopped. A trajectory that ends
+        // past a dead end so leaves the entity standing where it is, rather than driving on
+        // along the road from the road's end.
+        if let (Some(net), Some(lp)) = (net, en.lane) {
+            en.at_road_end = crate::roads::past_end::past_road_end(net, lp.road, lp.s, x, y);
+            if en.at_road_end && en.end_of_road && en.vel.0.abs() < SMALL && en.vel.1.abs() < SMALL {
+                en.speed = 0.0;
+            }
+        }
         f.clock += dt;
         done
     }

@@ -4,6 +4,7 @@ mod clothoid_start_time;
 mod follow;
 mod nurbs_headings;
 mod offset_start_time;
+mod past_road_end;
 mod reverse;
 mod time_out_of_range;
 mod timing;
