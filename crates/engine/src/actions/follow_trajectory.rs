@@ -190,7 +190,7 @@ impl<'a> Sim<'a> {
         // A timed polyline is timed vertex by vertex (PolyLineShape::CalculatePolyLine); the other
         // shapes' time runs linearly with their length.
         let vertices = if timing.is_some() && path.is_polyline() { polyline_timing(&path, mode == FollowingMode::Follow, entity_speed) } else { None };
-        let start_speed = timing.map(|_| start_speed(&path, s, vertices.as_deref()));
+        let start_speed = timing.map(|_| start_speed(s, vertices.as_deref()));
         let p = path.pose_at(s);
         let heading = p.heading + if speed_sign < 0.0 { std::f64::consts::PI } else { 0.0 };
         let net = self.net;
@@ -382,14 +382,15 @@ fn move_s(path: &Path, s: f64, ds: f64) -> f64 {
 }
 
 /// The speed esmini gives the entity when a timed trajectory starts at arc length `s`
-/// (RMTrajectory::GetSpeed): the vertex speeds interpolated linearly by s (a polyline's from
-/// `polyline_timing`; other shapes: their mean speed).
-fn start_speed(path: &Path, s: f64, vertices: Option<&[(f64, f64, f64, f64)]>) -> f64 {
-    let Some(tt) = path.time_table() else { return 0.0 };
-    let Some(v) = vertices else {
-        let (t0, t1) = (tt.start_time(), tt.end_time());
-        return if t1 - t0 > SMALL { path.length() / (t1 - t0) } else { 0.0 };
-    };
+/// (FollowTrajectoryAction::Start: RMTrajectory::GetSpeed): a polyline's vertex speeds (from
+/// `polyline_timing`) interpolated linearly by s. The other shapes' one-metre polylines never
+/// get a speed (ClothoidShape, ClothoidSplineShape and NurbsShape::CalculatePolyLine leave
+/// TrajVertex::speed at 0), so they start the entity at rest: a step that moves it sets the
+/// speed from the distance, but one that is already past the last stamp leaves it at 0 (no
+/// distance left to run on), and a controller holding the longitudinal domain (an ACC) sees
+/// the speed drop to 0 and takes that as its new set speed.
+fn start_speed(s: f64, vertices: Option<&[(f64, f64, f64, f64)]>) -> f64 {
+    let Some(v) = vertices else { return 0.0 };
     let i = v.partition_point(|q| q.0 < s).saturating_sub(1).min(v.len().saturating_sub(1));
     match (v.get(i), v.get(i + 1)) {
         (Some(a), Some(b)) if b.0 - a.0 > SMALL => {

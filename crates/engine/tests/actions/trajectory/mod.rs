@@ -6,5 +6,6 @@ mod nurbs_headings;
 mod offset_start_time;
 mod past_road_end;
 mod reverse;
+mod start_at_rest;
 mod time_out_of_range;
 mod timing;
