@@ -12,6 +12,7 @@ use state::FollowTrajectoryRt;
 
 use super::state::ActionRt;
 use crate::dynamics::SMALL;
+use crate::roads::road_follow::wrap;
 use crate::sim::Sim;
 use openscenario::{FollowingMode, ReferenceContext, TimeReference, Trajectory};
 use trajectory::{Interpolation, Path, Pose, TimeDomain, TimeMapping};
@@ -178,13 +179,16 @@ impl<'a> Sim<'a> {
         // way the entity faces (against the path when reversing), and that sign is kept for
         // the whole action.
         let speed_sign = if timing.is_none() && entity_speed < 0.0 { -1.0 } else { 1.0 };
-        if speed_sign < 0.0 && explicit_headings(traj) {
-            // esmini then faces the entity as the vertices say and moves it by sign(speed)
-            // against that (IsHSetExplicitly): along a path whose headings point forward it
-            // backs off the start and the action ends at once.
+        // Started reversing on a polyline whose every vertex gives its heading, esmini faces the
+        // entity as the vertices say (IsHSetExplicitly) and takes its motion's sign from how
+        // that heading lies to the path (initialHeadingSign_: against it when more than π/2
+        // off): along a path whose headings point forward the entity backs off the start and
+        // the action ends at once.
+        let faces_vertex_headings = speed_sign < 0.0 && all_explicit_headings(traj);
+        if speed_sign < 0.0 && explicit_headings(traj) && !faces_vertex_headings {
             self.warn_action(
                 slot,
-                format!("FollowTrajectoryAction: trajectory `{}` is started reversing and its vertices give headings; esmini's motion along explicit vertex headings is not modelled (the entity faces against the path and advances along it)", traj.name),
+                format!("FollowTrajectoryAction: trajectory `{}` is started reversing and some of its vertices give headings; esmini's motion along partly explicit vertex headings is not modelled (the entity faces against the path and advances along it)", traj.name),
             );
         }
         // A timed polyline is timed vertex by vertex (PolyLineShape::CalculatePolyLine); the other
@@ -192,7 +196,12 @@ impl<'a> Sim<'a> {
         let vertices = if timing.is_some() && path.is_polyline() { polyline_timing(&path, mode == FollowingMode::Follow, entity_speed) } else { None };
         let start_speed = timing.map(|_| start_speed(s, vertices.as_deref()));
         let p = path.pose_at(s);
-        let heading = p.heading + if speed_sign < 0.0 { std::f64::consts::PI } else { 0.0 };
+        let (heading, heading_sign) = if faces_vertex_headings {
+            let off = wrap(p.heading - path.true_heading_at(s)).abs();
+            (p.heading, if off > std::f64::consts::FRAC_PI_2 + SMALL_NUMBER { -1.0 } else { 1.0 })
+        } else {
+            (p.heading + if speed_sign < 0.0 { std::f64::consts::PI } else { 0.0 }, speed_sign)
+        };
         let net = self.net;
         let en = &mut self.entities[e];
         en.set_world(net, p.x, p.y, None, heading);
@@ -213,7 +222,8 @@ impl<'a> Sim<'a> {
             time,
             clock,
             vertices,
-            heading_sign: speed_sign,
+            heading_sign,
+            faces_vertex_headings,
             elevated: elevated(traj),
             end_outside_times,
             clothoid_times,
@@ -228,6 +238,7 @@ impl<'a> Sim<'a> {
         let old_s = f.s;
         let len = f.path.length();
         let mut new_speed = speed;
+        let mut raw_s = None;
         // esmini's FollowTrajectoryAction::Move: without time stamps the entity moves along the
         // path in the direction sign(speed) × the heading sign fixed at the start (esmini's SIGN:
         // zero counts as positive). Started reversing, it advances along the path while its
@@ -240,7 +251,14 @@ impl<'a> Sim<'a> {
         let speed_held = f.timing.is_some() && self.long_domain_overridden(e);
         match f.timing.filter(|_| !speed_held) {
             None => {
-                f.s = move_s(&f.path, f.s, direction * speed.abs() * dt);
+                let ds = direction * speed.abs() * dt;
+                // esmini's PolyLineBase::Evaluate keeps an s below a polyline's start as it is
+                // (the pose stays at the first vertex): backing off the start leaves no distance
+                // over for the step's rest.
+                if f.path.is_polyline() && !f.path.is_closed() && f.s + ds < 0.0 {
+                    raw_s = Some(f.s + ds);
+                }
+                f.s = move_s(&f.path, f.s, ds);
             }
             Some(m) => {
                 match m.domain {
@@ -285,11 +303,11 @@ impl<'a> Sim<'a> {
         let (mut x, mut y) = (p.x, p.y);
         // The entity keeps facing the way it faced at the start (esmini's Move: turned by π
         // while the initial heading sign is negative), whatever the speed's sign now.
-        let heading = if f.heading_sign < 0.0 { p.heading + std::f64::consts::PI } else { p.heading };
+        let heading = if f.heading_sign < 0.0 && !f.faces_vertex_headings { p.heading + std::f64::consts::PI } else { p.heading };
         if done {
             // The rest of the step's distance continues along the final heading.
             let rest = match f.timing {
-                None => speed.abs() * dt - (f.s - old_s).abs(),
+                None => speed.abs() * dt - (raw_s.unwrap_or(f.s) - old_s).abs(),
                 Some(_) => (f.time + time_offset - f.path.time_range().map_or(0.0, |r| r.1)).max(0.0) * new_speed,
             };
             x += rest * p.heading.cos();
@@ -349,6 +367,14 @@ fn time_at_start(traj: &Trajectory, path: &Path, s: f64) -> Option<f64> {
         return Some(first);
     }
     Some(first + s.clamp(0.0, length.floor()) / length * last)
+}
+
+/// Whether every polyline vertex of `traj` gives a heading of its own.
+fn all_explicit_headings(traj: &Trajectory) -> bool {
+    match &traj.shape {
+        openscenario::Shape::Polyline(vs) => !vs.is_empty() && vs.iter().all(|v| trajectory::gives_heading(&v.position)),
+        _ => false,
+    }
 }
 
 /// Whether a polyline vertex of `traj` gives a heading of its own.
