@@ -20,7 +20,7 @@ fn reversing_onto_vertex_headings_moves_by_how_they_lie_to_the_path() {
     assert_esmini_pose_at(&run, "Along", 1.03, 59.95, -1.75, 0.0);
     assert_esmini_pose_at(&run, "Along", 4.0, 45.1, -1.75, 0.0);
     // Along the path, facing back as the vertices say.
-    assert_esmini_pose_at(&run, "Against", 4.0, 74.95, -5.25, 3.1416);
-    assert_esmini_pose_at(&run, "Against", 8.0, 94.810649, -7.286464, 3.066362);
+    assert_esmini_pose_at(&run, "Against", 4.0, 74.95, -5.25, 3.12);
+    assert_esmini_pose_at(&run, "Against", 8.0, 94.810649, -7.286464, 3.060757);
     assert_matches_esmini("trajectory_reverse_vertex_headings.xosc", &run, 1e-3);
 }
