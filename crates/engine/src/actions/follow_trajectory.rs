@@ -12,6 +12,7 @@ use state::FollowTrajectoryRt;
 
 use super::state::ActionRt;
 use crate::dynamics::SMALL;
+use crate::roads::road_follow::wrap;
 use crate::sim::Sim;
 use openscenario::{FollowingMode, ReferenceContext, TimeReference, Trajectory};
 use trajectory::{Interpolation, Path, Pose, TimeDomain, TimeMapping};
@@ -173,26 +174,34 @@ impl<'a> Sim<'a> {
         // it is the last vertex's time (PolyLineBase::Evaluate), so a path without length
         // that is timed relatively is over at once.
         let at_end = path.is_polyline() && s > path.length() - SMALL_NUMBER;
-        let time = if at_end { path.time_range().map_or(0.0, |r| r.1) } else { path.time_at(s).unwrap_or(0.0) };
+        let time = if at_end { path.time_range().map_or(0.0, |r| r.1) } else { time_at_start(traj, &path, s).unwrap_or(0.0) };
         // esmini's FollowTrajectoryAction::Start: without time stamps the speed's sign picks the
         // way the entity faces (against the path when reversing), and that sign is kept for
         // the whole action.
         let speed_sign = if timing.is_none() && entity_speed < 0.0 { -1.0 } else { 1.0 };
-        if speed_sign < 0.0 && explicit_headings(traj) {
-            // esmini then faces the entity as the vertices say and moves it by sign(speed)
-            // against that (IsHSetExplicitly): along a path whose headings point forward it
-            // backs off the start and the action ends at once.
+        // Started reversing on a polyline whose every vertex gives its heading, esmini faces the
+        // entity as the vertices say (IsHSetExplicitly) and takes its motion's sign from how
+        // that heading lies to the path (initialHeadingSign_: against it when more than π/2
+        // off): along a path whose headings point forward the entity backs off the start and
+        // the action ends at once.
+        let faces_vertex_headings = speed_sign < 0.0 && all_explicit_headings(traj);
+        if speed_sign < 0.0 && explicit_headings(traj) && !faces_vertex_headings {
             self.warn_action(
                 slot,
-                format!("FollowTrajectoryAction: trajectory `{}` is started reversing and its vertices give headings; esmini's motion along explicit vertex headings is not modelled (the entity faces against the path and advances along it)", traj.name),
+                format!("FollowTrajectoryAction: trajectory `{}` is started reversing and some of its vertices give headings; esmini's motion along partly explicit vertex headings is not modelled (the entity faces against the path and advances along it)", traj.name),
             );
         }
         // A timed polyline is timed vertex by vertex (PolyLineShape::CalculatePolyLine); the other
         // shapes' time runs linearly with their length.
         let vertices = if timing.is_some() && path.is_polyline() { polyline_timing(&path, mode == FollowingMode::Follow, entity_speed) } else { None };
-        let start_speed = timing.map(|_| start_speed(vertices.as_deref(), s));
+        let start_speed = timing.map(|_| start_speed(s, vertices.as_deref()));
         let p = path.pose_at(s);
-        let heading = p.heading + if speed_sign < 0.0 { std::f64::consts::PI } else { 0.0 };
+        let (heading, heading_sign) = if faces_vertex_headings {
+            let off = wrap(p.heading - path.true_heading_at(s)).abs();
+            (p.heading, if off > std::f64::consts::FRAC_PI_2 + SMALL_NUMBER { -1.0 } else { 1.0 })
+        } else {
+            (p.heading + if speed_sign < 0.0 { std::f64::consts::PI } else { 0.0 }, speed_sign)
+        };
         let net = self.net;
         let en = &mut self.entities[e];
         en.set_world(net, p.x, p.y, None, heading);
@@ -213,7 +222,8 @@ impl<'a> Sim<'a> {
             time,
             clock,
             vertices,
-            heading_sign: speed_sign,
+            heading_sign,
+            faces_vertex_headings,
             elevated: elevated(traj),
             end_outside_times,
             clothoid_times,
@@ -228,6 +238,7 @@ impl<'a> Sim<'a> {
         let old_s = f.s;
         let len = f.path.length();
         let mut new_speed = speed;
+        let mut raw_s = None;
         // esmini's FollowTrajectoryAction::Move: without time stamps the entity moves along the
         // path in the direction sign(speed) × the heading sign fixed at the start (esmini's SIGN:
         // zero counts as positive). Started reversing, it advances along the path while its
@@ -240,7 +251,14 @@ impl<'a> Sim<'a> {
         let speed_held = f.timing.is_some() && self.long_domain_overridden(e);
         match f.timing.filter(|_| !speed_held) {
             None => {
-                f.s = move_s(&f.path, f.s, direction * speed.abs() * dt);
+                let ds = direction * speed.abs() * dt;
+                // esmini's PolyLineBase::Evaluate keeps an s below a polyline's start as it is
+                // (the pose stays at the first vertex): backing off the start leaves no distance
+                // over for the step's rest.
+                if f.path.is_polyline() && !f.path.is_closed() && f.s + ds < 0.0 {
+                    raw_s = Some(f.s + ds);
+                }
+                f.s = move_s(&f.path, f.s, ds);
             }
             Some(m) => {
                 match m.domain {
@@ -285,11 +303,11 @@ impl<'a> Sim<'a> {
         let (mut x, mut y) = (p.x, p.y);
         // The entity keeps facing the way it faced at the start (esmini's Move: turned by π
         // while the initial heading sign is negative), whatever the speed's sign now.
-        let heading = if f.heading_sign < 0.0 { p.heading + std::f64::consts::PI } else { p.heading };
+        let heading = if f.heading_sign < 0.0 && !f.faces_vertex_headings { p.heading + std::f64::consts::PI } else { p.heading };
         if done {
             // The rest of the step's distance continues along the final heading.
             let rest = match f.timing {
-                None => speed.abs() * dt - (f.s - old_s).abs(),
+                None => speed.abs() * dt - (raw_s.unwrap_or(f.s) - old_s).abs(),
                 Some(_) => (f.time + time_offset - f.path.time_range().map_or(0.0, |r| r.1)).max(0.0) * new_speed,
             };
             x += rest * p.heading.cos();
@@ -300,6 +318,17 @@ impl<'a> Sim<'a> {
         en.set_world(net, x, y, None, heading);
         en.speed = new_speed;
         en.moved_by_action = true;
+        // ScenarioEngine::step, after every move: an entity whose position lies past the end of
+        // the road (POS_STATUS_END_OF_ROAD), already flagged there, and that did not move in the
+        // last step (its velocity, measured then, is zero) is stopped. A trajectory that ends
+        // past a dead end so leaves the entity standing where it is, rather than driving on
+        // along the road from the road's end.
+        if let (Some(net), Some(lp)) = (net, en.lane) {
+            en.at_road_end = crate::roads::past_end::past_road_end(net, lp.road, lp.s, x, y);
+            if en.at_road_end && en.end_of_road && en.vel.0.abs() < SMALL && en.vel.1.abs() < SMALL {
+                en.speed = 0.0;
+            }
+        }
         f.clock += dt;
         done
     }
@@ -314,6 +343,38 @@ fn esmini_clock(origin: f64, dt: f64, time: f64) -> f64 {
     }
     let n = ((time - origin) / dt).round().max(0.0) as u64;
     (0..n).fold(origin, |t, _| t + dt)
+}
+
+/// The trajectory time esmini reads where the entity is put on the path (RMTrajectory::GetTime
+/// after Position::SetTrajectoryS): the time of the shape's one-metre polyline at `s`. A
+/// Clothoid's and a ClothoidSpline's polyline times its vertices linearly by their distance,
+/// `first + (s_vertex / length) · last` (ClothoidShape and ClothoidSplineShape::
+/// CalculatePolyLine), where `last` is the clothoid's stopTime, or the spline's last segment's
+/// timeStart (not its timeEnd); the last vertex sits at the whole metres of the length. Only
+/// that start time differs from the time the shape is evaluated by (segment by segment), so a
+/// relatively timed trajectory started at an initial distance offset jumps back or forth at
+/// once; polylines and NURBS time their vertices as the path's time table does.
+fn time_at_start(traj: &Trajectory, path: &Path, s: f64) -> Option<f64> {
+    let points = path.time_table()?.points();
+    let first = points.first()?.1;
+    let last = match &traj.shape {
+        openscenario::Shape::Clothoid { .. } => points.last()?.1,
+        openscenario::Shape::ClothoidSpline { .. } => points.len().checked_sub(2).and_then(|i| points.get(i))?.1,
+        _ => return path.time_at(s),
+    };
+    let length = path.length();
+    if length <= 0.0 {
+        return Some(first);
+    }
+    Some(first + s.clamp(0.0, length.floor()) / length * last)
+}
+
+/// Whether every polyline vertex of `traj` gives a heading of its own.
+fn all_explicit_headings(traj: &Trajectory) -> bool {
+    match &traj.shape {
+        openscenario::Shape::Polyline(vs) => !vs.is_empty() && vs.iter().all(|v| trajectory::gives_heading(&v.position)),
+        _ => false,
+    }
 }
 
 /// Whether a polyline vertex of `traj` gives a heading of its own.
@@ -347,13 +408,14 @@ fn move_s(path: &Path, s: f64, ds: f64) -> f64 {
 }
 
 /// The speed esmini gives the entity when a timed trajectory starts at arc length `s`
-/// (RMTrajectory::GetSpeed, the shape's `current_val_.speed`): the vertex speeds interpolated
-/// linearly by s. Only a polyline's vertices carry speeds (PolyLineShape::CalculatePolyLine,
-/// here `polyline_timing`); ClothoidShape, ClothoidSplineShape and NurbsShape::CalculatePolyLine
-/// give their vertices a time but leave TrajVertex's speed at 0, so such a trajectory starts
-/// the entity at speed 0 — which an ACC in override mode, for which the action then moves the
-/// entity at its current speed, takes as its new set speed (ControllerACC::Step).
-fn start_speed(vertices: Option<&[(f64, f64, f64, f64)]>, s: f64) -> f64 {
+/// (FollowTrajectoryAction::Start: RMTrajectory::GetSpeed): a polyline's vertex speeds (from
+/// `polyline_timing`) interpolated linearly by s. The other shapes' one-metre polylines never
+/// get a speed (ClothoidShape, ClothoidSplineShape and NurbsShape::CalculatePolyLine leave
+/// TrajVertex::speed at 0), so they start the entity at rest: a step that moves it sets the
+/// speed from the distance, but one that is already past the last stamp leaves it at 0 (no
+/// distance left to run on), and a controller holding the longitudinal domain (an ACC) sees
+/// the speed drop to 0 and takes that as its new set speed.
+fn start_speed(s: f64, vertices: Option<&[(f64, f64, f64, f64)]>) -> f64 {
     let Some(v) = vertices else { return 0.0 };
     let i = v.partition_point(|q| q.0 < s).saturating_sub(1).min(v.len().saturating_sub(1));
     match (v.get(i), v.get(i + 1)) {

@@ -10,6 +10,7 @@ pub(crate) mod lane_slope;
 pub(crate) mod lane_snap;
 pub(crate) mod locate;
 pub(crate) mod offroad;
+pub(crate) mod past_end;
 pub(crate) mod pose_memo;
 pub(crate) mod road_distance;
 pub(crate) mod road_follow;

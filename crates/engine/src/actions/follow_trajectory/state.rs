@@ -21,6 +21,9 @@ pub(crate) struct FollowTrajectoryRt {
     /// −1 when the entity faces against the path (it started reversing), else 1; fixed at
     /// the start (esmini's `initialHeadingSign_`).
     pub heading_sign: f64,
+    /// Started reversing along vertices that all give headings: the entity faces as they say,
+    /// never turned by π (esmini's explicit_h_active_).
+    pub faces_vertex_headings: bool,
     /// Some vertex gives its height (a z or dz): the entity pitches with the path rather than
     /// with the road (`attitude.rs`).
     pub elevated: bool,

@@ -3,6 +3,10 @@
 mod clothoid_start_time;
 mod follow;
 mod nurbs_headings;
+mod offset_start_time;
+mod past_road_end;
 mod reverse;
+mod reverse_vertex_headings;
+mod start_at_rest;
 mod time_out_of_range;
 mod timing;

@@ -100,11 +100,11 @@ fn started_reversing_it_comes_back_along_the_path_once_the_speed_turns_positive(
 
 #[test]
 fn reversing_along_vertices_with_explicit_headings_is_a_positioned_warning() {
-    // With h given on the vertices esmini takes the direction of motion from them: started
-    // at −5 m/s on this path it backs off the start and the action ends at once (esmini 3.6.0
-    // run on this scenario). osc2cr does not model that and says so.
+    // With h given on some of the vertices only, esmini switches the direction of motion where
+    // the explicit headings end (FollowTrajectoryAction::Move); osc2cr does not model that and
+    // says so. (Every vertex with its h: `reverse_vertex_headings.rs`.)
     let v = |x: f64| format!(r#"<Position><WorldPosition x="{x}" y="-1.75" z="0" h="0"/></Position>"#);
-    let shape = format!("<Polyline><Vertex>{}</Vertex><Vertex>{}</Vertex></Polyline>", v(10.0), v(60.0));
+    let shape = format!(r#"<Polyline><Vertex>{}</Vertex><Vertex><Position><WorldPosition x="60" y="-1.75" z="0"/></Position></Vertex></Polyline>"#, v(10.0));
     let init = backing_along(&shape);
     let run = run(&xosc(&init, "", &stop_at(2.0)));
     let w: Vec<_> = run.warnings.iter().filter(|w| w.message.contains("explicit vertex headings")).collect();

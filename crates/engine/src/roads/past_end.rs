@@ -1,0 +1,20 @@
+//! Whether a world point lies beyond the end of the road it was located on: esmini's
+//! Position::XYZ2TrackPos sets POS_STATUS_END_OF_ROAD when the closest point of the road network
+//! does not fall inside any road's s range (`closestPointInside`), as for an entity a trajectory
+//! has carried past a dead end.
+
+use opendrive::projection::project_onto_road;
+use opendrive::RoadNetwork;
+
+/// Along-track distance beyond a road's end that counts (esmini's SMALL_NUMBER).
+const PAST: f64 = 1e-6;
+
+/// (x, y), located on road `road` at `s`, projects beyond that road's start or end.
+pub(crate) fn past_road_end(net: &RoadNetwork, road: usize, s: f64, x: f64, y: f64) -> bool {
+    let Some(r) = net.roads.get(road) else { return false };
+    if s > PAST && s < r.length - PAST {
+        return false;
+    }
+    let (_, _, along) = project_onto_road(r, x, y, s);
+    along.abs() > PAST
+}
