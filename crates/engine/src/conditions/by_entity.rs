@@ -45,6 +45,10 @@ impl<'a> Sim<'a> {
         if let C::RelativeAngle { .. } = cond {
             return self.warn_once(c, format!("{} is not supported; it never becomes true", cond.element_name()));
         }
+        let clearance = super::clearance::Clearance::of(cond);
+        // esmini's TrigByRelativeClearance keeps whether an entity was found in the area from
+        // one triggering entity to the next (see relative_clearance)
+        let mut clearance_found = false;
         let mut result = false;
         let sticky = matches!(cond, C::ReachPosition { .. } | C::EndOfRoad { .. } | C::Collision { .. });
         c.hits.clear();
@@ -60,7 +64,17 @@ impl<'a> Sim<'a> {
             if matches!(cond, C::Angle { coordinate_system: Some(CoordinateSystem::Trajectory), .. }) && self.trajectory_heading(idx).is_none() {
                 continue;
             }
-            let r = self.check_one(idx, c.other, point, cond);
+            let r = match &clearance {
+                Some(cl) => Some(self.relative_clearance(idx, cl, &mut clearance_found)),
+                None => self.check_one(idx, c.other, point, cond),
+            };
+            // esmini's TrigByTimeHeadway and TrigByTimeToCollision: an entity whose measure is
+            // not defined makes the result false but leaves the triggering-entities rule
+            // undecided, so the next entity is checked even under the rule `all`.
+            let Some(r) = r else {
+                result = false;
+                continue;
+            };
             // esmini's TrigByReachPosition, TrigByEndOfRoad and TrigByCollision only ever set
             // their result to true inside the loop over the triggering entities: once one
             // entity meets the condition the result stays true, so with the rule `all` the
@@ -89,14 +103,16 @@ impl<'a> Sim<'a> {
         })
     }
 
-    fn check_one(&self, idx: usize, other: Option<usize>, point: Option<(f64, f64)>, cond: &C) -> bool {
-        let Some(e) = self.entities.get(idx) else { return false };
+    /// The condition for triggering entity `idx`; `None` where its measure is not defined (a
+    /// time headway or time to collision of a target behind, at no distance, or moving apart).
+    fn check_one(&self, idx: usize, other: Option<usize>, point: Option<(f64, f64)>, cond: &C) -> Option<bool> {
+        let Some(e) = self.entities.get(idx) else { return Some(false) };
         if !e.active {
-            return false;
+            return Some(false);
         }
         let o = other.and_then(|i| self.entities.get(i));
         let t = self.time;
-        match cond {
+        Some(match cond {
             C::Speed { value, rule, direction } => compare(directed_speed(e, *direction), *value, *rule),
             C::Angle { angle_type, angle, tolerance, coordinate_system } => {
                 // esmini's TrigByAngle::CheckCondition: the angle in the frame (world by
@@ -142,19 +158,8 @@ impl<'a> Sim<'a> {
                 let current = crate::roads::road_follow::wrap(own - frame);
                 crate::roads::road_follow::wrap(current - angle).abs() < tolerance + SMALL
             }
-            C::RelativeClearance { entities, opposite_lanes, free_space, distance_forward, distance_backward, lane_ranges } => {
-                let (from, to) = lane_ranges.first().copied().unwrap_or((None, None));
-                let c = super::clearance::Clearance {
-                    entities,
-                    opposite_lanes: *opposite_lanes,
-                    free_space: *free_space,
-                    forward: distance_forward.unwrap_or(0.0),
-                    backward: distance_backward.unwrap_or(0.0),
-                    from: from.map_or(i64::MIN / 4, i64::from),
-                    to: to.map_or(i64::MAX / 4, i64::from),
-                };
-                self.relative_clearance(idx, &c)
-            }
+            // evaluated in check_entity: its result depends on the entities checked before
+            C::RelativeClearance { .. } => false,
             C::RelativeSpeed { value, rule, direction, .. } => o.is_some_and(|o| compare(relative_speed(e, o, *direction), *value, *rule)),
             C::Acceleration { value, rule, direction } => compare(directed_acceleration(e, *direction), *value, *rule),
             C::StandStill { duration } => e.standstill_since.is_some_and(|s| t - s >= duration - SMALL),
@@ -170,14 +175,15 @@ impl<'a> Sim<'a> {
                 let kind = options.relative_distance_type.unwrap_or(RelativeDistanceType::EuclidianDistance);
                 compare(between(self.net, e, o, cs_of(options), kind, options.freespace).abs(), *value, *rule)
             }),
-            C::TimeHeadway { value, rule, options, .. } => o.is_some_and(|o| {
+            C::TimeHeadway { value, rule, options, .. } => {
+                let Some(o) = o else { return Some(false) };
                 let kind = options.relative_distance_type.unwrap_or(RelativeDistanceType::EuclidianDistance);
                 let d = between(self.net, e, o, cs_of(options), kind, options.freespace);
                 if d < 0.0 || e.speed < SMALL {
-                    return false;
+                    return None;
                 }
                 compare((d / e.speed).abs(), *value, *rule)
-            }),
+            }
             C::TimeToCollision { value, rule, options, .. } => {
                 let kind = options.relative_distance_type.unwrap_or(RelativeDistanceType::EuclidianDistance);
                 let (d, rel_speed) = match (o, point) {
@@ -194,13 +200,16 @@ impl<'a> Sim<'a> {
                         (d, rel)
                     }
                     (None, Some((x, y))) => (to_point(self.net, e, x, y, cs_of(options), kind, options.freespace), e.speed),
-                    _ => return false,
+                    _ => return Some(false),
                 };
                 if d.abs() < SMALL || rel_speed.abs() < SMALL {
-                    return false;
+                    return None;
                 }
                 let ttc = d / rel_speed;
-                ttc >= 0.0 && compare(ttc, *value, *rule)
+                if ttc < 0.0 {
+                    return None;
+                }
+                compare(ttc, *value, *rule)
             }
             C::Collision { target } => {
                 let ca = corners(e);
@@ -221,7 +230,7 @@ impl<'a> Sim<'a> {
                 }
             }
             C::RelativeAngle { .. } => false,
-        }
+        })
     }
 }
 

@@ -3,6 +3,7 @@
 //! relative lane range, *and* the range names at least one existing driving lane at the
 //! entity's position (a free but non-existent lane is not clearance).
 
+use super::free_space::{free_space_road, FreeSpaceGap};
 use crate::entities::Entity;
 use crate::roads::road_distance::road_distance_within;
 use crate::sim::Sim;
@@ -20,22 +21,50 @@ pub(crate) struct Clearance<'c> {
     pub to: i64,
 }
 
+impl<'c> Clearance<'c> {
+    /// The parameters of `cond` when it is a RelativeClearanceCondition (esmini's defaults: no
+    /// distance, an unbounded lane range; only the first RelativeLaneRange counts).
+    pub(crate) fn of(cond: &'c openscenario::EntityCondition) -> Option<Self> {
+        let openscenario::EntityCondition::RelativeClearance { entities, opposite_lanes, free_space, distance_forward, distance_backward, lane_ranges } = cond
+        else {
+            return None;
+        };
+        let (from, to) = lane_ranges.first().copied().unwrap_or((None, None));
+        Some(Clearance {
+            entities,
+            opposite_lanes: *opposite_lanes,
+            free_space: *free_space,
+            forward: distance_forward.unwrap_or(0.0),
+            backward: distance_backward.unwrap_or(0.0),
+            from: from.map_or(i64::MIN / 4, i64::from),
+            to: to.map_or(i64::MAX / 4, i64::from),
+        })
+    }
+}
+
 impl<'a> Sim<'a> {
-    /// Whether entity `idx` has the clearance `c` around it.
-    pub(super) fn relative_clearance(&self, idx: usize, c: &Clearance) -> bool {
+    /// Whether entity `idx` has the clearance `c` around it. `found` is esmini's objFound in
+    /// TrigByRelativeClearance::CheckCondition: set by each entity it compares, and kept from
+    /// the previous triggering entity when none is compared (the only listed entity is the
+    /// triggering one itself), so that entity then has clearance only if the previous one had.
+    pub(super) fn relative_clearance(&self, idx: usize, c: &Clearance, found: &mut bool) -> bool {
         let (Some(net), Some(me)) = (self.net, self.entities.get(idx)) else { return false };
         let Some(lp) = me.lane else { return false };
         let Some(road) = net.roads.get(lp.road) else { return false };
         let others: Vec<usize> =
             if c.entities.is_empty() { (0..self.entities.len()).collect() } else { c.entities.iter().filter_map(|n| self.entity_index(n)).collect() };
-        let occupied = others.into_iter().filter(|&j| j != idx).filter_map(|j| self.entities.get(j)).any(|o| {
+        for o in others.into_iter().filter(|&j| j != idx).filter_map(|j| self.entities.get(j)) {
             if !o.active {
-                return false;
+                continue;
             }
-            let Some((ds, dlane, opposite)) = delta(net, me, o, c.forward.max(c.backward), c.free_space) else { return false };
-            ds >= -c.backward && ds <= c.forward && dlane >= c.from && dlane <= c.to && (c.opposite_lanes || !opposite)
-        });
-        !occupied && lane_exists(road, lp.s, lp.lane_id as i64, c)
+            *found = delta(net, me, o, c.forward.max(c.backward), c.free_space).is_some_and(|(ds, dlane, opposite)| {
+                ds >= -c.backward && ds <= c.forward && dlane >= c.from && dlane <= c.to && (c.opposite_lanes || !opposite)
+            });
+            if *found {
+                break;
+            }
+        }
+        !*found && lane_exists(road, lp.s, lp.lane_id as i64, c)
     }
 }
 
@@ -54,6 +83,36 @@ fn lane_exists(road: &Road, s: f64, own: i64, c: &Clearance) -> bool {
 /// and whether `b` is on a lane of the other direction. `None`: not within `max` along the roads.
 fn delta(net: &RoadNetwork, a: &Entity, b: &Entity, max: f64, free_space: bool) -> Option<(f64, i64, bool)> {
     let (la, lb) = (a.lane?, b.lane?);
+    // esmini's Object::FreeSpaceDistanceObjectRoadLane: the gap between the boxes' corners, and
+    // the lane difference of the last corners compared, the front right ones (0 when the boxes
+    // overlap). Measured here where every corner lies on one road.
+    let gap = if free_space && la.road == lb.road { free_space_road(net, a, b, la.road, la.dir) } else { None };
+    let (ds, la_id, lb_id) = match gap {
+        Some(FreeSpaceGap { front_right_lanes: None, .. }) => return Some((0.0, 0, false)),
+        Some(FreeSpaceGap { ds, front_right_lanes: Some((ia, ib)), .. }) => (ds, ia, ib),
+        None => {
+            let ds = centre_ds(net, a, b, max, free_space)?;
+            // esmini's Position::Delta: `a`'s lane carried along the lane links onto `b`'s road.
+            let la_id = if la.road == lb.road { la.lane_id } else { lane_on_linked_road(net, la, lb).unwrap_or(la.lane_id) };
+            (ds, la_id, lb.lane_id)
+        }
+    };
+    if ds.abs() > max + 1e-9 {
+        return None;
+    }
+    // across the reference line the centre lane is not counted
+    let mut dlane = lb_id as i64 - la_id as i64;
+    let opposite = (la_id as i64).signum() != (lb_id as i64).signum();
+    if opposite {
+        dlane = (dlane.abs() - 1) * dlane.signum();
+    }
+    Some((ds, dlane, opposite))
+}
+
+/// Signed ds from `a`'s reference point to `b`'s along the roads (less both boxes' extents along
+/// the way with `free_space`); `None`: not within `max`.
+fn centre_ds(net: &RoadNetwork, a: &Entity, b: &Entity, max: f64, free_space: bool) -> Option<f64> {
+    let (la, lb) = (a.lane?, b.lane?);
     let mut ds = if la.road == lb.road {
         (lb.s - la.s) * la.dir
     } else {
@@ -70,18 +129,7 @@ fn delta(net: &RoadNetwork, a: &Entity, b: &Entity, max: f64, free_space: bool) 
         let ext = if ds >= 0.0 { 0.5 * a.bbox[3] + a.bbox[0] + 0.5 * b.bbox[3] - b.bbox[0] } else { 0.5 * a.bbox[3] - a.bbox[0] + 0.5 * b.bbox[3] + b.bbox[0] };
         ds = if ds.abs() <= ext { 0.0 } else { ds - ext * ds.signum() };
     }
-    if ds.abs() > max + 1e-9 {
-        return None;
-    }
-    // esmini's Position::Delta: `a`'s lane carried along the lane links onto `b`'s road, then
-    // the difference; across the reference line the centre lane is not counted.
-    let la_id = if la.road == lb.road { la.lane_id } else { lane_on_linked_road(net, la, lb).unwrap_or(la.lane_id) };
-    let mut dlane = lb.lane_id as i64 - la_id as i64;
-    let opposite = (la_id as i64).signum() != (lb.lane_id as i64).signum();
-    if opposite {
-        dlane = (dlane.abs() - 1) * dlane.signum();
-    }
-    Some((ds, dlane, opposite))
+    Some(ds)
 }
 
 /// Steps a lane-link walk may take from one road to the next through its lane sections.

@@ -106,34 +106,26 @@ fn lane_scale(net: &RoadNetwork, lp: &crate::roads::LanePos) -> f64 {
 
 /// Distance from entity `a` to entity `b`.
 pub(crate) fn between(net: Option<&RoadNetwork>, a: &Entity, b: &Entity, cs: CoordinateSystem, kind: RelativeDistanceType, freespace: bool) -> f64 {
-    if matches!(cs, CoordinateSystem::Road | CoordinateSystem::Lane) {
+    // esmini's Position::Distance and Object::Distance measure a euclidean distance in the
+    // world (getRelativeDistance: negative when `b` is not ahead; FreeSpaceDistance for boxes)
+    // whatever the coordinate system; only longitudinal and lateral ones go along the road.
+    if matches!(cs, CoordinateSystem::Road | CoordinateSystem::Lane) && kind != RelativeDistanceType::EuclidianDistance {
         if let (Some(net), Some(ra), Some(rb)) = (net, net.and_then(|n| road_t(n, a)), net.and_then(|n| road_t(n, b))) {
             let _ = net;
             if ra.0 == rb.0 {
                 let ds = (rb.1 - ra.1) * ra.3;
                 let dt = (rb.2 - ra.2) * ra.3;
-                return match kind {
-                    RelativeDistanceType::Longitudinal => {
-                        if freespace {
-                            shrink(ds, a.bbox[3] * 0.5 + a.bbox[0] * ds.signum(), b.bbox[3] * 0.5 - b.bbox[0] * ds.signum())
-                        } else {
-                            ds
-                        }
+                // (a euclidean distance does not come here)
+                return if kind == RelativeDistanceType::Longitudinal {
+                    if freespace {
+                        shrink(ds, a.bbox[3] * 0.5 + a.bbox[0] * ds.signum(), b.bbox[3] * 0.5 - b.bbox[0] * ds.signum())
+                    } else {
+                        ds
                     }
-                    RelativeDistanceType::Lateral => {
-                        if freespace {
-                            shrink(dt, a.bbox[4] * 0.5, b.bbox[4] * 0.5)
-                        } else {
-                            dt
-                        }
-                    }
-                    RelativeDistanceType::EuclidianDistance => {
-                        if freespace {
-                            signed_box_distance(a, b)
-                        } else {
-                            ds.hypot(dt)
-                        }
-                    }
+                } else if freespace {
+                    shrink(dt, a.bbox[4] * 0.5, b.bbox[4] * 0.5)
+                } else {
+                    dt
                 };
             }
             if kind == RelativeDistanceType::Longitudinal && !freespace {

@@ -12,7 +12,6 @@
 //! formulas, in `distance_models.rs`). Distances are free space in road coordinates (s, t).
 
 mod distance_models;
-mod free_space;
 pub(crate) mod state;
 
 use state::{AlksR157Rt, Info, Mode, Model, Phase, Scen, Trigger};
@@ -197,9 +196,9 @@ impl<'a> Sim<'a> {
         }
         info.dlane = dlane;
         let Some(net) = self.net else { return false };
-        let Some((dl, dlat)) = free_space::free_space_road(net, &self.entities[e], &self.entities[o], fe.road, dir) else { return false };
-        info.dist_lat = dlat;
-        info.dist_long = dl;
+        let Some(gap) = crate::conditions::free_space::free_space_road(net, &self.entities[e], &self.entities[o], fe.road, dir) else { return false };
+        info.dist_lat = gap.dt;
+        info.dist_long = gap.ds;
         info.dv_s = (fe.v_s - fo.v_s) * dir;
         info.dv_t = (fe.v_t - fo.v_t) * sign(fo.t - fe.t);
         // the headway is measured whenever the ego moves along s, whatever the closing speed

@@ -1,0 +1,81 @@
+//! The free-space gap between two entities in road coordinates (esmini's
+//! Object::FreeSpaceDistanceObjectRoadLane with CS_ROAD), as the ALKS R157 models and the
+//! RelativeClearanceCondition measure it: every corner of both bounding boxes is mapped onto the
+//! road (Position::XYZ2TrackPos), and of the sixteen corner-to-corner deltas (Position::Delta)
+//! the smallest along s and the smallest across t are the gaps; a corner of the first box lying
+//! between the second's corners along s (or t) makes that gap zero, and overlapping boxes are
+//! zero in both. On a curved road this differs from turning the boxes rigidly into the road
+//! frame. The lane difference esmini reports with it is the one of the last pair of corners
+//! compared: the two front right corners.
+
+use crate::conditions::distance::{boxes_overlap, corners};
+use crate::entities::Entity;
+use crate::roads::locate::world_to_lane;
+use opendrive::{LanePosition, RoadNetwork};
+
+/// What FreeSpaceDistanceObjectRoadLane leaves in its PositionDiff.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct FreeSpaceGap {
+    /// Gap along s in the first entity's driving direction.
+    pub ds: f64,
+    /// Gap across t, as t grows.
+    pub dt: f64,
+    /// The lanes of the front right corners (first entity, second); `None` when the boxes
+    /// overlap (esmini then reports a lane difference of 0).
+    pub front_right_lanes: Option<(i32, i32)>,
+}
+
+/// The corners in esmini's order (first quadrant first, counter-clockwise: front left, rear
+/// left, rear right, front right) located on `road`. A corner past the road's end is where the
+/// road network puts it (XYZ2TrackPos follows the links: on a closed loop it is near s = 0 again,
+/// which makes the deltas change sign); `None` where a corner lies on another road (esmini then
+/// measures along a road path, which this does not model).
+fn road_corners(net: &RoadNetwork, e: &Entity, road: usize, hint_s: f64) -> Option<[LanePosition; 4]> {
+    let [fl, fr, rr, rl] = corners(e);
+    let mut out = [None; 4];
+    for (k, (x, y)) in [fl, rl, rr, fr].into_iter().enumerate() {
+        let p = world_to_lane(net, x, y, Some((road, hint_s)))?;
+        if p.road != road {
+            return None;
+        }
+        out[k] = Some(p);
+    }
+    let [a, b, c, d] = out;
+    Some([a?, b?, c?, d?])
+}
+
+/// Gaps from `a` to `b`, both on road `road`, `a` facing along s when `dir` is +1; `None`
+/// where a corner lies off that road.
+pub(crate) fn free_space_road(net: &RoadNetwork, a: &Entity, b: &Entity, road: usize, dir: f64) -> Option<FreeSpaceGap> {
+    if boxes_overlap(&corners(a), &corners(b)) {
+        return Some(FreeSpaceGap { ds: 0.0, dt: 0.0, front_right_lanes: None });
+    }
+    let hint = a.lane.map_or(0.0, |l| l.s);
+    let ca = road_corners(net, a, road, hint)?;
+    let cb = road_corners(net, b, road, b.lane.map_or(hint, |l| l.s))?;
+    let mut ds = [[0.0; 4]; 4];
+    let mut dt = [[0.0; 4]; 4];
+    let (mut min_ds, mut min_dt) = (0.0f64, 0.0f64);
+    for (i, pa) in ca.iter().enumerate() {
+        for (j, pb) in cb.iter().enumerate() {
+            // RoadPath::Calculate on one road: the s difference, turned for facing against s
+            ds[i][j] = (pb.s - pa.s) * dir;
+            dt[i][j] = pb.t - pa.t;
+            if (i == 0 && j == 0) || ds[i][j].abs() < min_ds.abs() {
+                min_ds = ds[i][j];
+            }
+            if (i == 0 && j == 0) || dt[i][j].abs() < min_dt.abs() {
+                min_dt = dt[i][j];
+            }
+        }
+    }
+    // esmini's SIGN: −1 below zero, +1 otherwise
+    let mixed = |row: &[f64; 4]| row.iter().any(|&v| (v < 0.0) != (row[0] < 0.0));
+    if ds.iter().any(mixed) {
+        min_ds = 0.0;
+    }
+    if dt.iter().any(mixed) {
+        min_dt = 0.0;
+    }
+    Some(FreeSpaceGap { ds: min_ds, dt: min_dt, front_right_lanes: Some((ca[3].lane_id, cb[3].lane_id)) })
+}
