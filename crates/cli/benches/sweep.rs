@@ -145,6 +145,26 @@ fn gb(b: u64) -> f64 {
     b as f64 / 1e9
 }
 
+/// A run's line of the table (the progress line after each run too): sweep, format,
+/// variations, wall s, variations/s, peak RSS MB, files, disk GB, bytes GB, per variation KB,
+/// maps.
+fn row(r: &Run) -> String {
+    format!(
+        "{:<9}  {:<6}  {:>10}  {:>7.1}  {:>12.1}  {:>11.1}  {:>6}  {:>8.3}  {:>8.3}  {:>16.1}  {:>4}",
+        r.sweep,
+        r.format,
+        r.variations,
+        r.wall_s,
+        r.variations as f64 / r.wall_s,
+        r.peak_rss_mb,
+        r.files,
+        gb(r.allocated),
+        gb(r.bytes),
+        r.allocated as f64 / r.variations as f64 / 1e3,
+        r.maps
+    )
+}
+
 fn main() {
     // `cargo bench` passes --bench; nothing else is read from the command line
     let jobs = std::env::var("OSC2CR_SWEEP_JOBS").unwrap_or_else(|_| "2".into());
@@ -173,17 +193,7 @@ fn main() {
             out.display()
         );
         let r = run(name, &sweep, format, n, &jobs, &out);
-        eprintln!(
-            "  {} variations, {:.1} s, {:.0} variations/s, peak {:.1} MB, {} files, {:.2} GB on disk ({:.2} GB of bytes), {} map(s)",
-            r.variations,
-            r.wall_s,
-            r.variations as f64 / r.wall_s,
-            r.peak_rss_mb,
-            r.files,
-            gb(r.allocated),
-            gb(r.bytes),
-            r.maps
-        );
+        eprintln!("  {}", row(&r));
         if !keep {
             let _ = std::fs::remove_dir_all(&out);
         }
@@ -192,20 +202,7 @@ fn main() {
     println!("\nsweeps with -j {jobs}, {} CPUs", std::thread::available_parallelism().map_or(1, |n| n.get()));
     println!("sweep      format  variations   wall s  variations/s  peak RSS MB  files   disk GB  bytes GB  per variation KB  maps");
     for r in &runs {
-        println!(
-            "{:<9}  {:<6}  {:>10}  {:>7.1}  {:>12.1}  {:>11.1}  {:>6}  {:>8.3}  {:>8.3}  {:>16.1}  {:>4}",
-            r.sweep,
-            r.format,
-            r.variations,
-            r.wall_s,
-            r.variations as f64 / r.wall_s,
-            r.peak_rss_mb,
-            r.files,
-            gb(r.allocated),
-            gb(r.bytes),
-            r.allocated as f64 / r.variations as f64 / 1e3,
-            r.maps
-        );
+        println!("{}", row(r));
     }
     println!("\nwhere the time goes (ms per variation, summed over the -j workers' threads):");
     for r in &runs {

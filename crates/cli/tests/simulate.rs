@@ -1,24 +1,12 @@
 //! `osc2cr simulate` end to end on a corpus scenario: the trace has the conformance header and
 //! one row per entity per step; bad arguments exit with status 2.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Command;
-
-fn shared() -> Option<PathBuf> {
-    let p = std::env::var_os("OSC2CR_SHARED").map(PathBuf::from).unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared"));
-    if p.join("corpus").exists() {
-        Some(p)
-    } else if std::env::var_os("CI").is_some() {
-        panic!("corpus not found at {}", p.display());
-    } else {
-        eprintln!("corpus not found: test skipped");
-        None
-    }
-}
 
 #[test]
 fn simulate_writes_trace_and_events() {
-    let Some(shared) = shared() else { return };
+    let Some(shared) = testkit::shared_dir() else { return };
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cli-simulate");
     std::fs::create_dir_all(&dir).expect("mkdir");
     let (trace, events) = (dir.join("t.csv"), dir.join("e.csv"));

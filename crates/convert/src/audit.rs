@@ -6,7 +6,7 @@
 use std::collections::{BTreeMap, BTreeSet};
 
 use commonroad::LaneletNetwork;
-use engine::Trace;
+use engine::{EntityTrace, Trace};
 use openscenario::{ActionKind, GlobalAction, PrivateAction, Scenario};
 
 /// A jump is a step longer than the speed explains by this factor plus [`JUMP_SLACK`].
@@ -145,40 +145,46 @@ impl<'a> ActionIndex<'a> {
     }
 }
 
-fn jumps(trace: &Trace, actions: &ActionIndex<'_>) -> Vec<String> {
+/// For every entity of `trace` but the ghosts, the largest `measure` of its steps (at the first
+/// step it is reached) and how many steps have one (`None`: the step is fine), said by `say`.
+fn worst_steps(trace: &Trace, measure: impl Fn(&EntityTrace, usize) -> Option<f64>, say: impl Fn(&EntityTrace, f64, usize, usize) -> String) -> Vec<String> {
     let mut out = Vec::new();
-    let dt = trace.step;
-    for e in &trace.entities {
-        if trace.ghosts.contains(&e.name) {
-            continue;
-        }
-        // the largest unexplained jump of the entity, said once
+    for e in trace.entities.iter().filter(|e| !trace.ghosts.contains(&e.name)) {
         let mut worst: Option<(f64, usize)> = None;
         let mut count = 0;
-        for k in 1..e.samples.len() {
-            let (Some(a), Some(b)) = (e.samples[k - 1], e.samples[k]) else { continue };
-            let d = (b.x - a.x).hypot(b.y - a.y);
-            let allowed = JUMP_FACTOR * a.speed.abs().max(b.speed.abs()) * dt + JUMP_SLACK;
-            if d <= allowed || actions.explains(&e.name, trace.time(k - 1), trace.time(k)) {
-                continue;
-            }
+        for k in 0..e.samples.len() {
+            let Some(d) = measure(e, k) else { continue };
             count += 1;
             if worst.is_none_or(|(w, _)| d > w) {
                 worst = Some((d, k));
             }
         }
         if let Some((d, k)) = worst {
-            let t = trace.time(k);
-            out.push(format!(
-                "entity `{}` jumps {d:.2} m between {:.2} s and {t:.2} s, more than its speed explains and with no teleport or other position-setting action{}; {}",
-                e.name,
-                trace.time(k - 1),
-                if count > 1 { format!(" ({count} such steps; the largest is given)") } else { String::new() },
-                actions.in_force(&e.name, t)
-            ));
+            out.push(say(e, d, k, count));
         }
     }
     out
+}
+
+/// The largest unexplained jump of each entity, said once.
+fn jumps(trace: &Trace, actions: &ActionIndex<'_>) -> Vec<String> {
+    let dt = trace.step;
+    let jump = |e: &EntityTrace, k: usize| {
+        let (Some(a), Some(b)) = (e.samples[k.checked_sub(1)?], e.samples[k]) else { return None };
+        let d = (b.x - a.x).hypot(b.y - a.y);
+        let allowed = JUMP_FACTOR * a.speed.abs().max(b.speed.abs()) * dt + JUMP_SLACK;
+        (d > allowed && !actions.explains(&e.name, trace.time(k - 1), trace.time(k))).then_some(d)
+    };
+    worst_steps(trace, jump, |e, d, k, count| {
+        let t = trace.time(k);
+        format!(
+            "entity `{}` jumps {d:.2} m between {:.2} s and {t:.2} s, more than its speed explains and with no teleport or other position-setting action{}; {}",
+            e.name,
+            trace.time(k - 1),
+            if count > 1 { format!(" ({count} such steps; the largest is given)") } else { String::new() },
+            actions.in_force(&e.name, t)
+        )
+    })
 }
 
 /// (min x, min y, max x, max y) of every lanelet bound point.
@@ -195,31 +201,15 @@ fn extent(map: &LaneletNetwork) -> Option<(f64, f64, f64, f64)> {
     b
 }
 
+/// The farthest point of each entity off the map, at the first time it is reached.
 fn far_outside(trace: &Trace, (x0, y0, x1, y1): (f64, f64, f64, f64), actions: &ActionIndex<'_>) -> Vec<String> {
     let margin = FAR_OUTSIDE.max((x1 - x0).max(y1 - y0));
-    let mut out = Vec::new();
-    for e in &trace.entities {
-        if trace.ghosts.contains(&e.name) {
-            continue;
-        }
-        let outside = |s: &engine::Sample| (x0 - s.x).max(s.x - x1).max(y0 - s.y).max(s.y - y1);
-        // the farthest point, at the first time it is reached
-        let mut worst: Option<(f64, usize)> = None;
-        for (k, s) in e.samples.iter().enumerate() {
-            let Some(s) = s else { continue };
-            let d = outside(s);
-            if d > margin && worst.is_none_or(|(w, _)| d > w) {
-                worst = Some((d, k));
-            }
-        }
-        if let Some((d, k)) = worst {
-            let t = trace.time(k);
-            out.push(format!(
-                "entity `{}` is {d:.0} m outside the map at {t:.2} s (more than {margin:.0} m beyond every lanelet); {}",
-                e.name,
-                actions.in_force(&e.name, t)
-            ));
-        }
-    }
-    out
+    let outside = |e: &EntityTrace, k: usize| {
+        let s = e.samples[k].as_ref()?;
+        Some((x0 - s.x).max(s.x - x1).max(y0 - s.y).max(s.y - y1)).filter(|&d| d > margin)
+    };
+    worst_steps(trace, outside, |e, d, k, _| {
+        let t = trace.time(k);
+        format!("entity `{}` is {d:.0} m outside the map at {t:.2} s (more than {margin:.0} m beyond every lanelet); {}", e.name, actions.in_force(&e.name, t))
+    })
 }

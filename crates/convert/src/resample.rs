@@ -95,6 +95,14 @@ mod tests {
         Sample { x: 3.0 * t + t * t, y: -2.0, z: 0.0, h: 0.1 * t, speed: 3.0 + 2.0 * t, acceleration: 2.0, yaw_rate: 0.1, road: None, visible: true }
     }
 
+    /// The engine's step of the traces here, s.
+    const STEP: f64 = 0.01;
+
+    /// [`sample`] at steps 0 to `last` of [`STEP`].
+    fn samples(last: u32) -> Vec<Option<Sample>> {
+        (0..=last).map(|i| Some(sample(f64::from(i) * STEP))).collect()
+    }
+
     #[test]
     fn counts_steps_covered_by_the_trace() {
         assert_eq!(cr_step_count(0, 0.01, 0.1), 0);
@@ -106,9 +114,7 @@ mod tests {
 
     #[test]
     fn whole_multiple_takes_every_kth_sample() {
-        let step = 0.01;
-        let samples: Vec<_> = (0..=250).map(|i| Some(sample(i as f64 * step))).collect();
-        let out = resample(&samples, step, 0.1);
+        let out = resample(&samples(250), STEP, 0.1);
         assert_eq!(out.len(), 26);
         for (n, p) in out.iter().enumerate() {
             let p = p.expect("present");
@@ -121,9 +127,7 @@ mod tests {
     #[test]
     fn other_ratios_interpolate() {
         // dt = 0.025 s over a 0.01 s trace: t = 0.025 lies halfway between 0.02 and 0.03
-        let step = 0.01;
-        let samples: Vec<_> = (0..=100).map(|i| Some(sample(i as f64 * step))).collect();
-        let out = resample(&samples, step, 0.025);
+        let out = resample(&samples(100), STEP, 0.025);
         assert_eq!(out.len(), 41);
         let p = out[1].expect("present");
         let lin = |a: f64, b: f64| 0.5 * (a + b);

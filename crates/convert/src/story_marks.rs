@@ -9,16 +9,7 @@ use openscenario::Scenario;
 /// (time, event name) of every Event start, in the log's order; times before 0 (a ghost's
 /// head start) are left out, as the CommonRoad scenario starts at 0.
 pub fn event_marks(scenario: &Scenario, log: &[StoryboardEvent]) -> Vec<(f64, String)> {
-    let names: BTreeSet<&str> = scenario
-        .storyboard
-        .stories
-        .iter()
-        .flat_map(|s| &s.acts)
-        .flat_map(|a| &a.maneuver_groups)
-        .flat_map(|g| &g.maneuvers)
-        .flat_map(|m| &m.events)
-        .map(|e| e.name.as_str())
-        .collect();
+    let names: BTreeSet<&str> = scenario.storyboard.events().map(|e| e.name.as_str()).collect();
     log.iter()
         .filter(|e| e.transition == "start" && e.to == "running" && e.time >= 0.0)
         .filter(|e| names.contains(e.element.as_str()))

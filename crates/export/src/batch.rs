@@ -16,7 +16,7 @@ use batch_inputs::MAX_FILES;
 
 use crate::map_file::{MapCache, MapFile};
 use crate::options::ExportOptions;
-use crate::report::{summarise, Failure, JsonReport, MapReport, Report, Skipped, Stage, Status, SummaryRow};
+use crate::report::{summarise, BatchTotals, Failure, MapReport, Report, Skipped, Stage, Status};
 use crate::source::{is_input, read_source, scenario_name};
 
 /// A batch's settings.
@@ -36,33 +36,6 @@ pub struct Found {
     pub folder: String,
     /// The output path under the output folder, without `.xosc`.
     pub output_stem: PathBuf,
-}
-
-/// What a batch did.
-#[derive(Debug, Clone, PartialEq)]
-pub struct BatchTotals {
-    pub exported: usize,
-    pub failed: usize,
-    pub warnings: usize,
-    pub skipped: Vec<Skipped>,
-    pub summary: Vec<SummaryRow>,
-    pub maps: Vec<MapReport>,
-    /// Every report, in input order.
-    pub reports: Vec<Report>,
-}
-
-impl BatchTotals {
-    /// The JSON report.
-    pub fn json(&self) -> JsonReport {
-        JsonReport {
-            exported: self.exported,
-            failed: self.failed,
-            skipped: self.skipped.clone(),
-            summary: self.summary.clone(),
-            maps: self.maps.clone(),
-            scenarios: self.reports.clone(),
-        }
-    }
 }
 
 /// A CommonRoad XML file names `<commonRoad` near its start; other XML files of a folder are

@@ -48,12 +48,12 @@ mod traj_filter;
 mod trajectory;
 mod xml;
 
-pub use batch::{discover, export_file, run_batch, BatchOptions, BatchTotals, Found};
+pub use batch::{discover, export_file, run_batch, BatchOptions, Found};
 pub use carrier::PLANNING_PROBLEM_PROPERTY;
 pub use entity::{ID_PROPERTY, TYPE_PROPERTY};
 pub use exported::{export, export_with, ExportError, Exported};
 pub use map_file::{map_file, MapCache, MapFile, MapResult};
 pub use options::{EgoController, ExportOptions, OscVersion};
-pub use report::{summarise, Failure, JsonReport, MapReport, Report, Skipped, Stage, Status, SummaryRow};
+pub use report::{summarise, BatchTotals, Failure, MapReport, Report, Skipped, Stage, Status, SummaryRow};
 pub use scenario::{document, Document, Facts};
 pub use source::{is_input, read_source, scenario_name, Source};

@@ -138,19 +138,24 @@ impl SummaryRow {
     }
 }
 
-/// The JSON report of a batch.
+/// What a batch did; serialised, it is the JSON report of `--report` (the warning count is the
+/// sum of what the reports list, so the report leaves it out).
 #[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct JsonReport {
+pub struct BatchTotals {
     pub exported: usize,
     pub failed: usize,
+    #[serde(skip)]
+    pub warnings: usize,
     pub skipped: Vec<Skipped>,
     pub summary: Vec<SummaryRow>,
     pub maps: Vec<MapReport>,
-    pub scenarios: Vec<Report>,
+    /// Every report, in input order.
+    #[serde(rename = "scenarios")]
+    pub reports: Vec<Report>,
 }
 
-impl JsonReport {
-    /// Writes the report, whole or not at all.
+impl BatchTotals {
+    /// Writes the JSON report, whole or not at all.
     pub fn write(&self, path: &Path) -> Result<(), String> {
         let text = serde_json::to_string_pretty(self).map_err(|e| format!("report: {e}"))?;
         commonroad::xml::write_atomic(path, text.as_bytes()).map_err(|e| e.to_string())

@@ -14,14 +14,13 @@
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
 use commonroad::{Scenario, Shape, State};
 
-use crate::common::{acceptance_scenarios, esmini, export_batch, fresh_dir, short};
+use crate::common::{acceptance_scenarios, export_batch, fresh_dir, short};
 
 /// The acceptance threshold, m.
 const TOLERANCE: f64 = 0.10;
@@ -58,17 +57,7 @@ fn parse_csv(text: &str, step: f64) -> Log {
 pub(crate) fn run_esmini(esmini: &Path, xosc: &Path, step: f64, extra: &[&str]) -> (Option<Log>, Vec<String>) {
     let csv = xosc.with_extension(if extra.is_empty() { "csv" } else { "nofilter.csv" });
     let log = xosc.with_extension(if extra.is_empty() { "log" } else { "nofilter.log" });
-    let child = Command::new(esmini)
-        .args(["--headless", "--fixed_timestep", &step.to_string(), "--osc"])
-        .arg(xosc)
-        .arg("--csv_logger")
-        .arg(&csv)
-        .arg("--logfile_path")
-        .arg(&log)
-        .args(extra)
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .spawn();
+    let child = testkit::esmini_command(esmini, step, xosc).arg("--csv_logger").arg(&csv).arg("--logfile_path").arg(&log).args(extra).spawn();
     let Ok(mut child) = child else { return (None, vec!["esmini does not start".into()]) };
     let start = Instant::now();
     let status = loop {
@@ -194,7 +183,7 @@ fn round_trip(esmini: &Path, input: &Path, exported: &Result<PathBuf, String>) -
 
 #[test]
 fn every_obstacle_replays_within_10_cm_in_esmini() {
-    let Some(esmini) = esmini() else { return };
+    let Some(esmini) = testkit::esmini(false) else { return };
     let inputs = acceptance_scenarios();
     if inputs.is_empty() {
         return;
@@ -255,7 +244,7 @@ fn write_synthetic(dir: &Path, goal: commonroad::GoalPosition, options: &export:
 
 #[test]
 fn obstacles_are_in_esmini_exactly_while_they_exist() {
-    let Some(esmini) = esmini() else { return };
+    let Some(esmini) = testkit::esmini(false) else { return };
     let dir = fresh_dir("esmini-synthetic");
     let options = export::ExportOptions { play_to_end: true, ..Default::default() };
     let (xosc, scenario) = write_synthetic(&dir, crate::synthetic::circle(60.0, 1.75, 3.0), &options);
@@ -277,7 +266,7 @@ fn obstacles_are_in_esmini_exactly_while_they_exist() {
 
 #[test]
 fn reaching_the_goal_ends_the_run_in_esmini() {
-    let Some(esmini) = esmini() else { return };
+    let Some(esmini) = testkit::esmini(false) else { return };
     let dir = fresh_dir("esmini-goal");
     // the ego starts at x = 10 at 10 m/s in its lane: it reaches the disc of 3 m around x = 60
     // (in the goal's time [2 s, 9 s], speed and heading) at 4.7 s; the obstacles go on to 10 s

@@ -9,7 +9,7 @@ use std::path::Path;
 
 use commonroad::{Scenario, State};
 
-use crate::common::{esmini, fresh_dir};
+use crate::common::fresh_dir;
 use crate::esmini_round_trip::{compare, expectations, run_esmini};
 
 const POSITION: f64 = 0.01;
@@ -108,7 +108,7 @@ fn stopping_and_creeping_road_users_are_cut_into_pieces_the_filter_keeps() {
 
 #[test]
 fn stopping_and_creeping_road_users_replay_within_a_centimetre_in_esmini() {
-    let Some(esmini) = esmini() else { return };
+    let Some(esmini) = testkit::esmini(false) else { return };
     let dir = fresh_dir("slow-esmini");
     let (xosc, scenario, _) = export_slow(&dir);
     let (log, problems) = run_esmini(&esmini, &xosc, 0.05, &[]);

@@ -6,23 +6,10 @@ use openscenario::{load, Content, LoadOptions};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+/// The `.xosc` files below `dir` but those of its `Catalogs` folders, sorted.
 fn xosc_files(dir: &Path) -> Vec<PathBuf> {
-    let mut out = Vec::new();
-    let mut stack = vec![dir.to_path_buf()];
-    while let Some(d) = stack.pop() {
-        let Ok(rd) = std::fs::read_dir(&d) else { continue };
-        for e in rd.flatten() {
-            let p = e.path();
-            if p.is_dir() {
-                if !p.ends_with("Catalogs") {
-                    stack.push(p);
-                }
-            } else if p.extension().is_some_and(|x| x == "xosc") {
-                out.push(p);
-            }
-        }
-    }
-    out.sort();
+    let mut out = testkit::files_with_ext(dir, "xosc");
+    out.retain(|p| !p.strip_prefix(dir).unwrap_or(p).components().any(|c| c.as_os_str() == "Catalogs"));
     out
 }
 

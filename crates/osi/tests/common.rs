@@ -26,17 +26,6 @@ pub(crate) fn shared() -> Option<PathBuf> {
     testkit::shared_dir()
 }
 
-/// esmini 3.6.0 built with OSI (`../shared/tools/esmini/bin/esmini-3.6.0-osi`).
-pub(crate) fn esmini_osi() -> Option<PathBuf> {
-    let bin = shared()?.join("tools/esmini/bin/esmini-3.6.0-osi");
-    let runs = bin.is_file() && Command::new(&bin).arg("--version").output().is_ok();
-    if runs {
-        Some(bin)
-    } else {
-        absent(&format!("{} cannot run here", bin.display()))
-    }
-}
-
 pub(crate) fn target() -> PathBuf {
     testkit::workspace_root().join("target")
 }

@@ -14,7 +14,7 @@ const SCENARIOS: [&str; 2] = ["esmini/xosc/acc-test.xosc", "esmini/xosc/slow-lea
 
 #[test]
 fn osc2crs_osi_messages_agree_with_esminis_field_by_field() {
-    let (Some(shared), Some(esmini)) = (shared(), esmini_osi()) else { return };
+    let (Some(shared), Some(esmini)) = (shared(), testkit::esmini(true)) else { return };
     let dir = work_dir("esmini_agreement");
     for rel in SCENARIOS {
         let xosc = shared.join("corpus").join(rel);

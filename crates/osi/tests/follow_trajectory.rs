@@ -63,14 +63,10 @@ impl udp::Observer for Collect {
 
 /// Runs esmini on `xosc` with the client until its trace holds `frames` messages.
 fn esmini_run(esmini: &Path, xosc: &Path, dir: &Path, trace: &Path, frames: usize) -> Vec<u8> {
-    let mut e = Command::new(esmini)
-        .args(["--headless", "--fixed_timestep", "0.01", "--osc"])
-        .arg(xosc)
+    let mut e = testkit::esmini_command(esmini, 0.01, xosc)
         .args(["--osi_receiver_ip", "127.0.0.1", "--osi_file"])
         .arg(trace)
         .current_dir(dir)
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
         .spawn()
         .expect("esmini starts");
     let start = Instant::now();
@@ -85,7 +81,7 @@ fn esmini_run(esmini: &Path, xosc: &Path, dir: &Path, trace: &Path, frames: usiz
 #[test]
 fn esminis_follow_trajectory_client_drives_osc2cr_as_it_drives_esmini() {
     let _ports = crate::UDP_PORTS.lock();
-    let Some(esmini) = esmini_osi() else { return };
+    let Some(esmini) = testkit::esmini(true) else { return };
     let dir = work_dir("follow_trajectory");
     let Some(tree) = esmini_files(&dir.join("esmini"), &["scripts/udp_driver", "resources/xosc/Catalogs"]) else { return };
     let scripts: PathBuf = tree.join("scripts/udp_driver");

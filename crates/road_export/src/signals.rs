@@ -54,6 +54,26 @@ struct Spot {
     orientation: &'static str,
 }
 
+impl Spot {
+    /// A signal named `name` standing here, valid on `validity`: static, of no country, kind or
+    /// value yet, subtype `-1` — the caller says what it is.
+    fn signal(&self, id: u64, name: String, validity: Vec<Validity>) -> Signal {
+        Signal {
+            id,
+            s: self.s,
+            t: self.t,
+            name,
+            dynamic: false,
+            orientation: self.orientation,
+            country: None,
+            kind: String::new(),
+            subtype: "-1".into(),
+            value: None,
+            validity,
+        }
+    }
+}
+
 impl Places<'_> {
     fn section_range(&self, p: Placed) -> (f64, f64) {
         let Some(road) = self.roads.get(p.road) else { return (0.0, 0.0) };
@@ -199,19 +219,7 @@ pub(crate) fn add_signals(pl: &Places, roads: &mut [Road], next_id: &mut u64, wa
                 ));
                 id
             };
-            let sig = Signal {
-                id,
-                s: spot.s,
-                t: spot.t,
-                name: format!("traffic sign {}", sign.id.get()),
-                dynamic: false,
-                orientation: spot.orientation,
-                country,
-                kind,
-                subtype,
-                value,
-                validity: validity.clone(),
-            };
+            let sig = Signal { country, kind, subtype, value, ..spot.signal(id, format!("traffic sign {}", sign.id.get()), validity.clone()) };
             put(roads, &spot, sig, if k == 0 { others.clone() } else { Vec::new() }, warnings, subject);
         }
     }
@@ -242,17 +250,10 @@ pub(crate) fn add_signals(pl: &Places, roads: &mut [Road], next_id: &mut u64, wa
         }
         let (validity, others) = attach(pl, host, &refs, light.id.get());
         let sig = Signal {
-            id: light.id.get(),
-            s: spot.s,
-            t: spot.t,
-            name: format!("traffic light {}", light.id.get()),
             dynamic: true,
-            orientation: spot.orientation,
             country: Some("OpenDRIVE".into()),
             kind: "1000001".into(),
-            subtype: "-1".into(),
-            value: None,
-            validity,
+            ..spot.signal(light.id.get(), format!("traffic light {}", light.id.get()), validity)
         };
         put(roads, &spot, sig, others, warnings, subject);
     }
@@ -269,19 +270,8 @@ pub(crate) fn add_signals(pl: &Places, roads: &mut [Road], next_id: &mut u64, wa
         let Some((spot, _)) = pl.spot(i, at) else { continue };
         let id = *next_id;
         *next_id += 1;
-        let sig = Signal {
-            id,
-            s: spot.s,
-            t: spot.t,
-            name: format!("stop line of lanelet {}", l.id.get()),
-            dynamic: false,
-            orientation: spot.orientation,
-            country: Some("DE".into()),
-            kind: "294".into(),
-            subtype: "-1".into(),
-            value: None,
-            validity: vec![Validity { from: p.lane, to: p.lane }],
-        };
+        let validity = vec![Validity { from: p.lane, to: p.lane }];
+        let sig = Signal { country: Some("DE".into()), kind: "294".into(), ..spot.signal(id, format!("stop line of lanelet {}", l.id.get()), validity) };
         put(roads, &spot, sig, Vec::new(), warnings, Subject::Lanelet(l.id.get()));
     }
 }

@@ -42,6 +42,15 @@ fn round_trip_of(net: &LaneletNetwork) -> (round_trip::Comparison, Vec<road_expo
     (c, e.warnings)
 }
 
+/// The round trip of `net`, asserted to pass and to keep all its `relations` (neighbours,
+/// successors).
+fn round_trip_keeping(net: &LaneletNetwork, relations: usize) -> (round_trip::Comparison, Vec<road_export::Warning>) {
+    let (c, warnings) = round_trip_of(net);
+    assert!(c.passes(0.05, 0.01), "{:?}", c.failures(0.05));
+    assert_eq!((c.relations_kept, c.relations), (relations, relations));
+    (c, warnings)
+}
+
 #[test]
 fn a_lane_that_begins_beside_a_longer_one_stays_its_neighbour() {
     // lanelet 2 begins 45 m along lanelet 1, on its left, and both end together; 3 follows 1
@@ -52,9 +61,7 @@ fn a_lane_that_begins_beside_a_longer_one_stays_its_neighbour() {
     long.successors = vec![id(3)];
     next.predecessors = vec![id(1)];
     let net = LaneletNetwork { lanelets: vec![long, short, next], ..Default::default() };
-    let (c, warnings) = round_trip_of(&net);
-    assert!(c.passes(0.05, 0.01), "{:?}", c.failures(0.05));
-    assert_eq!((c.relations_kept, c.relations), (4, 4));
+    let (c, warnings) = round_trip_keeping(&net, 4);
     // lanelet 1 comes back as two pieces
     let pieces = c.lanelets.iter().find(|l| l.id == 1).map_or(0, |l| l.matched.len());
     assert_eq!(pieces, 2);
@@ -69,9 +76,7 @@ fn staggered_lanelets_of_opposite_directions_stay_neighbours() {
     let mut b = lanelet(2, 130.0, 40.0, 7.0, 3.5);
     side_by_side(&mut a, &mut b, DrivingDir::Opposite);
     let net = LaneletNetwork { lanelets: vec![a, b], ..Default::default() };
-    let (c, _) = round_trip_of(&net);
-    assert!(c.passes(0.05, 0.01), "{:?}", c.failures(0.05));
-    assert_eq!((c.relations_kept, c.relations), (2, 2));
+    round_trip_keeping(&net, 2);
 }
 
 #[test]
@@ -103,9 +108,7 @@ fn neighbours_that_meet_halfway_are_neighbours_from_there_on() {
     side_by_side(&mut a, &mut b, DrivingDir::Same);
     side_by_side(&mut c, &mut a, DrivingDir::Same);
     let net = LaneletNetwork { lanelets: vec![a, b, c], ..Default::default() };
-    let (c, _) = round_trip_of(&net);
-    assert!(c.passes(0.05, 0.01), "{:?}", c.failures(0.05));
-    assert_eq!((c.relations_kept, c.relations), (4, 4));
+    round_trip_keeping(&net, 4);
 }
 
 #[test]

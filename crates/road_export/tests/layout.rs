@@ -24,6 +24,19 @@ fn straight(id_: u64, y0: f64, y1: f64, x0: f64, x1: f64) -> Lanelet {
     lanelet(id_, &[(x0, y1), (0.5 * (x0 + x1), y1), (x1, y1)], &[(x0, y0), (0.5 * (x0 + x1), y0), (x1, y0)])
 }
 
+/// `a` and `b` as each other's neighbour driving the opposite way, on the left of both (`left`)
+/// or on the right of both.
+fn opposite_neighbours(mut a: Lanelet, mut b: Lanelet, left: bool) -> LaneletNetwork {
+    let (of_a, of_b) =
+        (Some(Adjacent { lanelet: b.id, driving_dir: DrivingDir::Opposite }), Some(Adjacent { lanelet: a.id, driving_dir: DrivingDir::Opposite }));
+    if left {
+        (a.adjacent_left, b.adjacent_left) = (of_a, of_b);
+    } else {
+        (a.adjacent_right, b.adjacent_right) = (of_a, of_b);
+    }
+    LaneletNetwork { lanelets: vec![a, b], ..Default::default() }
+}
+
 fn round_trips(net: &LaneletNetwork) -> (road_export::RoadExport, round_trip::Comparison) {
     let e = export(net, &Options::default()).expect("exports");
     let back = read_back(&e.xodr);
@@ -34,12 +47,10 @@ fn round_trips(net: &LaneletNetwork) -> (road_export::RoadExport, round_trip::Co
 
 #[test]
 fn opposite_neighbours_are_one_road_with_a_centre_line() {
-    let mut a = straight(1, 0.0, 3.5, 0.0, 100.0);
+    let a = straight(1, 0.0, 3.5, 0.0, 100.0);
     // lanelet 2 drives towards −x on the left: its left bound is at y = 3.5
-    let mut b = straight(2, 7.0, 3.5, 100.0, 0.0);
-    a.adjacent_left = Some(Adjacent { lanelet: id(2), driving_dir: DrivingDir::Opposite });
-    b.adjacent_left = Some(Adjacent { lanelet: id(1), driving_dir: DrivingDir::Opposite });
-    let net = LaneletNetwork { lanelets: vec![a, b], ..Default::default() };
+    let b = straight(2, 7.0, 3.5, 100.0, 0.0);
+    let net = opposite_neighbours(a, b, true);
     let (e, c) = round_trips(&net);
     assert_eq!(e.xodr.matches("<road ").count(), 1);
     assert!(e.xodr.contains("rule=\"RHT\""));
@@ -51,11 +62,7 @@ fn opposite_neighbours_are_one_road_with_a_centre_line() {
 #[test]
 fn traffic_on_the_left_gives_a_left_hand_road() {
     // lanelet 1 drives +x above lanelet 2, which drives −x: left-hand traffic
-    let mut a = straight(1, 3.5, 7.0, 0.0, 80.0);
-    let mut b = straight(2, 3.5, 0.0, 80.0, 0.0);
-    a.adjacent_right = Some(Adjacent { lanelet: id(2), driving_dir: DrivingDir::Opposite });
-    b.adjacent_right = Some(Adjacent { lanelet: id(1), driving_dir: DrivingDir::Opposite });
-    let net = LaneletNetwork { lanelets: vec![a, b], ..Default::default() };
+    let net = opposite_neighbours(straight(1, 3.5, 7.0, 0.0, 80.0), straight(2, 3.5, 0.0, 80.0, 0.0), false);
     let (e, _) = round_trips(&net);
     assert!(e.xodr.contains("rule=\"LHT\""), "{}", e.xodr);
 }

@@ -96,9 +96,10 @@ def same(a, b, path, d):
         if na != nb or type(a).__name__ != type(b).__name__:
             d.add(path, f"{type(a).__name__}.{na} vs {type(b).__name__}.{nb}")
         return
-    if isinstance(a, bool) or isinstance(b, bool):
+    # booleans before numbers (a bool is an int), strings before arrays: equal, or named as they are
+    if isinstance(a, (bool, str)) or isinstance(b, (bool, str)):
         if a != b:
-            d.add(path, f"{a} vs {b}")
+            d.add(path, f"{a!r} vs {b!r}")
         return
     if is_num(a) and is_num(b):
         if isinstance(a, (int, np.integer)) and isinstance(b, (int, np.integer)):
@@ -114,10 +115,6 @@ def same(a, b, path, d):
         elif a.size and not np.all(np.abs(a - b) <= TOL):
             i = int(np.argmax(np.abs(a - b)))
             d.add(path, f"differs by {float(np.max(np.abs(a - b))):.3g} (at flat index {i})")
-        return
-    if isinstance(a, str) or isinstance(b, str):
-        if a != b:
-            d.add(path, f"{a!r} vs {b!r}")
         return
     if isinstance(a, (set, frozenset)) or isinstance(b, (set, frozenset)):
         if set(a) != set(b):

@@ -48,3 +48,19 @@ fn cr_check_reports_each_file_of_a_batch_in_order() {
     assert!(!r[2].ok);
     assert_eq!(r[2].error_counts.get("file"), Some(&1));
 }
+
+#[test]
+fn esmini_is_found_and_run_headless_at_a_fixed_step() {
+    let Some(bin) = testkit::esmini(false) else { return };
+    assert!(bin.ends_with("tools/esmini/bin/esmini-3.6.0"), "{}", bin.display());
+    let command = testkit::esmini_command(&bin, 0.05, std::path::Path::new("a.xosc"));
+    let args: Vec<String> = command.get_args().map(|a| a.to_string_lossy().into_owned()).collect();
+    assert_eq!(args, ["--headless", "--fixed_timestep", "0.05", "--osc", "a.xosc"]);
+}
+
+#[test]
+fn a_stochastic_set_names_its_scenario_parameter_and_distribution() {
+    let text = testkit::stochastic_set("s.xosc", "Speed", "<UniformDistribution/>");
+    assert!(text.contains(r#"<ScenarioFile filepath="s.xosc"/>"#), "{text}");
+    assert!(text.contains(r#"parameterName="Speed">"#) && text.contains("\n<UniformDistribution/>\n"), "{text}");
+}

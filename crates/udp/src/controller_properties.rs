@@ -121,10 +121,7 @@ pub fn udp_drivers(scenario: &Scenario) -> Vec<&Controller> {
     }
     let sb = &scenario.storyboard;
     found.extend(sb.init.private.iter().flat_map(|p| &p.actions).filter_map(assigned));
-    found.extend(
-        (sb.stories.iter().flat_map(|s| &s.acts).flat_map(|a| &a.maneuver_groups).flat_map(|g| &g.maneuvers).flat_map(|m| &m.events).flat_map(|e| &e.actions))
-            .filter_map(assigned),
-    );
+    found.extend(sb.events().flat_map(|e| &e.actions).filter_map(assigned));
     found.retain(|c| is_udp_driver(c));
     found
 }

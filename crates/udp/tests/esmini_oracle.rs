@@ -9,16 +9,15 @@
 use crate::common::*;
 
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
 use udp::serve;
 
+/// esmini, where it runs and `/proc/net/udp` tells when its port is open.
 fn esmini() -> Option<PathBuf> {
-    let bin = testkit::shared_dir()?.join("tools/esmini/bin/esmini-3.6.0");
-    let runs = Command::new(&bin).arg("--version").output().is_ok_and(|o| String::from_utf8_lossy(&o.stdout).contains("esmini"));
-    if !runs || !Path::new("/proc/net/udp").exists() {
-        eprintln!("notice: esmini cannot run here ({}); oracle comparison skipped", bin.display());
+    let bin = testkit::esmini(false)?;
+    if !Path::new("/proc/net/udp").exists() {
+        eprintln!("notice: /proc/net/udp is missing here; oracle comparison skipped");
         return None;
     }
     Some(bin)
@@ -58,14 +57,10 @@ fn run_esmini(bin: &Path, dir: &Path, port: u16, duration: f64, datagrams: &[Vec
     let xosc = dir.join("one_car.xosc");
     std::fs::write(&xosc, text).expect("scenario written");
     let csv = dir.join("esmini.csv");
-    let mut child = Command::new(bin)
-        .args(["--headless", "--fixed_timestep", "0.01", "--seed", "0", "--disable_stdout", "--osc"])
-        .arg(&xosc)
-        .arg("--csv_logger")
+    let mut child = testkit::esmini_command(bin, 0.01, &xosc)
+        .args(["--seed", "0", "--disable_stdout", "--csv_logger"])
         .arg(&csv)
         .current_dir(dir)
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
         .spawn()
         .expect("esmini starts");
     let start = Instant::now();

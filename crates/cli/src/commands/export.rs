@@ -89,7 +89,7 @@ pub(crate) fn run(args: &ExportArgs) -> Result<(), Failure> {
         }
     }
     if let Some(path) = &args.report {
-        totals.json().write(path).map_err(Failure::input)?;
+        totals.write(path).map_err(Failure::input)?;
     }
     for s in &totals.skipped {
         eprintln!("skipped {}: {}", s.path.display(), s.reason);

@@ -117,21 +117,7 @@ fn distribution(name: &str, parameter: &str, body: &str) -> (PathBuf, PathBuf) {
     let scenario = dir.join(format!("{name}.xosc"));
     std::fs::rename(&scenario, dir.join("cut_in.xosc")).expect("rename");
     let file = dir.join(format!("{name}_set.xosc"));
-    std::fs::write(
-        &file,
-        format!(
-            r#"<?xml version="1.0"?>
-<OpenSCENARIO>
-<FileHeader revMajor="1" revMinor="2" date="2024-01-01T00:00:00" description="" author=""/>
-<ParameterValueDistribution><ScenarioFile filepath="cut_in.xosc"/>
-<Stochastic numberOfTestRuns="5" randomSeed="1"><StochasticDistribution parameterName="{parameter}">
-{body}
-</StochasticDistribution></Stochastic>
-</ParameterValueDistribution>
-</OpenSCENARIO>"#
-        ),
-    )
-    .expect("write");
+    std::fs::write(&file, testkit::stochastic_set("cut_in.xosc", parameter, body)).expect("write");
     (dir, file)
 }
 

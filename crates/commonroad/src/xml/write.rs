@@ -399,45 +399,51 @@ fn state(e: &mut Emitter, tag: &str, s: &State) -> Result<(), Error> {
     r
 }
 
-fn static_obstacle(e: &mut Emitter, o: &StaticObstacle) -> Result<(), Error> {
-    e.open("staticObstacle", &id_attr(&o.id))?;
-    e.text("type", o.obstacle_type.as_str())?;
-    shape(e, &o.shape)?;
-    e.open("initialState", &[])?;
-    position(e, &Point::new(o.x, o.y))?;
-    exact(e, "orientation", o.orientation)?;
-    exact_int(e, "time", 0);
-    e.close("initialState");
-    e.close("staticObstacle");
+/// An obstacle element `tag` with its id and `type`, its content written by `body`.
+fn obstacle(e: &mut Emitter, tag: &str, id: &dyn std::fmt::Display, kind: &str, body: impl FnOnce(&mut Emitter) -> Result<(), Error>) -> Result<(), Error> {
+    e.open(tag, &id_attr(id))?;
+    e.text("type", kind)?;
+    body(e)?;
+    e.close(tag);
     Ok(())
+}
+
+fn static_obstacle(e: &mut Emitter, o: &StaticObstacle) -> Result<(), Error> {
+    obstacle(e, "staticObstacle", &o.id, o.obstacle_type.as_str(), |e| {
+        shape(e, &o.shape)?;
+        e.open("initialState", &[])?;
+        position(e, &Point::new(o.x, o.y))?;
+        exact(e, "orientation", o.orientation)?;
+        exact_int(e, "time", 0);
+        e.close("initialState");
+        Ok(())
+    })
 }
 
 fn dynamic_obstacle(e: &mut Emitter, o: &DynamicObstacle) -> Result<(), Error> {
-    e.open("dynamicObstacle", &id_attr(&o.id))?;
-    e.text("type", o.obstacle_type.as_str())?;
-    shape(e, &o.shape)?;
-    state(e, "initialState", &o.initial_state)?;
-    e.open("trajectory", &[])?;
-    for s in &o.trajectory {
-        state(e, "state", s)?;
-    }
-    e.close("trajectory");
-    e.close("dynamicObstacle");
-    Ok(())
+    obstacle(e, "dynamicObstacle", &o.id, o.obstacle_type.as_str(), |e| {
+        shape(e, &o.shape)?;
+        state(e, "initialState", &o.initial_state)?;
+        e.open("trajectory", &[])?;
+        for s in &o.trajectory {
+            state(e, "state", s)?;
+        }
+        e.close("trajectory");
+        Ok(())
+    })
 }
 
 fn environment_obstacle(e: &mut Emitter, o: &EnvironmentObstacle) -> Result<(), Error> {
-    e.open("environmentObstacle", &id_attr(&o.id))?;
-    e.text("type", o.obstacle_type.as_str())?;
-    e.open("shape", &[])?;
-    match &o.shape {
-        AbsoluteShape::Rectangle(r) => placed_rectangle(e, r)?,
-        AbsoluteShape::Circle(c) => placed_circle(e, c)?,
-        AbsoluteShape::Polygon(p) => polygon(e, p)?,
-    }
-    e.close("shape");
-    e.close("environmentObstacle");
-    Ok(())
+    obstacle(e, "environmentObstacle", &o.id, o.obstacle_type.as_str(), |e| {
+        e.open("shape", &[])?;
+        match &o.shape {
+            AbsoluteShape::Rectangle(r) => placed_rectangle(e, r)?,
+            AbsoluteShape::Circle(c) => placed_circle(e, c)?,
+            AbsoluteShape::Polygon(p) => polygon(e, p)?,
+        }
+        e.close("shape");
+        Ok(())
+    })
 }
 
 fn goal_state(e: &mut Emitter, g: &GoalState) -> Result<(), Error> {

@@ -93,18 +93,3 @@ pub(crate) fn short(p: &Path) -> String {
         None => s,
     }
 }
-
-/// esmini 3.6.0 of the shared tools, if it runs here.
-pub(crate) fn esmini() -> Option<PathBuf> {
-    let shared = testkit::shared_dir()?;
-    let bin = shared.join("tools/esmini/bin/esmini-3.6.0");
-    let runs = std::process::Command::new(&bin).arg("--version").output().is_ok_and(|o| o.status.success() || !o.stdout.is_empty());
-    if runs {
-        return Some(bin);
-    }
-    if std::env::var_os("CI").is_some() {
-        panic!("esmini {} does not run here (CI is set, so tests that need it fail)", bin.display());
-    }
-    eprintln!("notice: esmini {} does not run here; skipping this test", bin.display());
-    None
-}

@@ -1,23 +1,25 @@
 //! `<objects><object>` with repeat records. Outlines are not modelled (flagged instead).
 
-/// `<repeat>` of an object.
+/// A value at the start and at the end of a `<repeat>` (its attributes `…Start`, `…End`).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct RepeatEnds {
+    pub start: Option<f64>,
+    pub end: Option<f64>,
+}
+
+/// `<repeat>` of an object: from `s` over `length` m, every `distance` m.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct ObjectRepeat {
     pub s: f64,
     pub length: f64,
     pub distance: f64,
-    pub t_start: Option<f64>,
-    pub t_end: Option<f64>,
-    pub width_start: Option<f64>,
-    pub width_end: Option<f64>,
-    pub height_start: Option<f64>,
-    pub height_end: Option<f64>,
-    pub z_offset_start: Option<f64>,
-    pub z_offset_end: Option<f64>,
-    pub length_start: Option<f64>,
-    pub length_end: Option<f64>,
-    pub radius_start: Option<f64>,
-    pub radius_end: Option<f64>,
+    pub t: RepeatEnds,
+    pub width: RepeatEnds,
+    pub height: RepeatEnds,
+    pub z_offset: RepeatEnds,
+    /// The object's length (`lengthStart`, `lengthEnd`), not the repeat's.
+    pub object_length: RepeatEnds,
+    pub radius: RepeatEnds,
 }
 
 /// A road object.

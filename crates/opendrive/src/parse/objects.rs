@@ -2,7 +2,7 @@
 
 use super::xml::{elements, irrelevant, Ctx};
 use crate::error::Error;
-use crate::model::objects::{Object, ObjectRepeat};
+use crate::model::objects::{Object, ObjectRepeat, RepeatEnds};
 use roxmltree::Node;
 
 /// Hostile-input cap on objects per road.
@@ -51,18 +51,12 @@ fn parse_object(ctx: &mut Ctx, node: Node) -> Result<Object, Error> {
                 s: ctx.req_f64(child, "s")?,
                 length: ctx.req_f64(child, "length")?,
                 distance: ctx.f64_or(child, "distance", 0.0)?,
-                t_start: ctx.opt_f64(child, "tStart")?,
-                t_end: ctx.opt_f64(child, "tEnd")?,
-                width_start: ctx.opt_f64(child, "widthStart")?,
-                width_end: ctx.opt_f64(child, "widthEnd")?,
-                height_start: ctx.opt_f64(child, "heightStart")?,
-                height_end: ctx.opt_f64(child, "heightEnd")?,
-                z_offset_start: ctx.opt_f64(child, "zOffsetStart")?,
-                z_offset_end: ctx.opt_f64(child, "zOffsetEnd")?,
-                length_start: ctx.opt_f64(child, "lengthStart")?,
-                length_end: ctx.opt_f64(child, "lengthEnd")?,
-                radius_start: ctx.opt_f64(child, "radiusStart")?,
-                radius_end: ctx.opt_f64(child, "radiusEnd")?,
+                t: repeat_ends(ctx, child, "t")?,
+                width: repeat_ends(ctx, child, "width")?,
+                height: repeat_ends(ctx, child, "height")?,
+                z_offset: repeat_ends(ctx, child, "zOffset")?,
+                object_length: repeat_ends(ctx, child, "length")?,
+                radius: repeat_ends(ctx, child, "radius")?,
             }),
             "outline" | "outlines" => {
                 if !o.has_outline {
@@ -76,4 +70,9 @@ fn parse_object(ctx: &mut Ctx, node: Node) -> Result<Object, Error> {
         }
     }
     Ok(o)
+}
+
+/// The attributes `<name>Start` and `<name>End` of a `<repeat>`.
+fn repeat_ends(ctx: &Ctx, node: Node, name: &str) -> Result<RepeatEnds, Error> {
+    Ok(RepeatEnds { start: ctx.opt_f64(node, &format!("{name}Start"))?, end: ctx.opt_f64(node, &format!("{name}End"))? })
 }

@@ -12,6 +12,13 @@ pub struct Storyboard {
     pub stop_trigger: Option<Trigger>,
 }
 
+impl Storyboard {
+    /// Every Event of every story, act, maneuver group and maneuver, in document order.
+    pub fn events(&self) -> impl Iterator<Item = &Event> {
+        self.stories.iter().flat_map(|s| &s.acts).flat_map(|a| &a.maneuver_groups).flat_map(|g| &g.maneuvers).flat_map(|m| &m.events)
+    }
+}
+
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
 pub struct Init {
     pub global: Vec<Action>,

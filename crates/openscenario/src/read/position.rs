@@ -37,20 +37,17 @@ pub(crate) fn read_position_kind(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<Po
             p: cx.opt_f64(e, "p")?,
             r: cx.opt_f64(e, "r")?,
         },
-        "RelativeWorldPosition" => Position::RelativeWorld {
-            entity: cx.reference(e, "entityRef")?,
-            dx: cx.f64(e, "dx")?,
-            dy: cx.f64(e, "dy")?,
-            dz: cx.opt_f64(e, "dz")?,
-            orientation: orientation(cx, e)?,
-        },
-        "RelativeObjectPosition" => Position::RelativeObject {
-            entity: cx.reference(e, "entityRef")?,
-            dx: cx.f64(e, "dx")?,
-            dy: cx.f64(e, "dy")?,
-            dz: cx.opt_f64(e, "dz")?,
-            orientation: orientation(cx, e)?,
-        },
+        // the two share their attributes; only the frame of (dx, dy, dz) differs
+        "RelativeWorldPosition" | "RelativeObjectPosition" => {
+            let entity = cx.reference(e, "entityRef")?;
+            let (dx, dy, dz) = (cx.f64(e, "dx")?, cx.f64(e, "dy")?, cx.opt_f64(e, "dz")?);
+            let orientation = orientation(cx, e)?;
+            if e.name == "RelativeWorldPosition" {
+                Position::RelativeWorld { entity, dx, dy, dz, orientation }
+            } else {
+                Position::RelativeObject { entity, dx, dy, dz, orientation }
+            }
+        }
         "RoadPosition" => Position::Road { road_id: cx.reference(e, "roadId")?, s: cx.f64(e, "s")?, t: cx.f64(e, "t")?, orientation: orientation(cx, e)? },
         "RelativeRoadPosition" => {
             Position::RelativeRoad { entity: cx.reference(e, "entityRef")?, ds: cx.f64(e, "ds")?, dt: cx.f64(e, "dt")?, orientation: orientation(cx, e)? }

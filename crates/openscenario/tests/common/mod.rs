@@ -5,15 +5,7 @@ use std::path::{Path, PathBuf};
 
 /// `../shared` (or $OSC2CR_SHARED). None (with a notice) when absent, unless CI is set.
 pub(crate) fn shared() -> Option<PathBuf> {
-    let dir = std::env::var_os("OSC2CR_SHARED").map(PathBuf::from).unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared"));
-    if dir.join("corpus").is_dir() {
-        return Some(dir);
-    }
-    if std::env::var_os("CI").is_some() {
-        panic!("corpus not found at {} (set OSC2CR_SHARED)", dir.display());
-    }
-    eprintln!("notice: corpus not found at {}; test skipped", dir.display());
-    None
+    testkit::shared_dir()
 }
 
 /// Every `.xosc` under `dir`, sorted.
@@ -43,15 +35,7 @@ pub(crate) fn pos_of(text: &str, needle: &str) -> (u32, u32) {
     (line, col)
 }
 
-pub(crate) const VEHICLE: &str = r#"<Vehicle name="car" vehicleCategory="car">
-          <BoundingBox><Center x="1.5" y="0" z="0.9"/><Dimensions width="2" length="4.5" height="1.5"/></BoundingBox>
-          <Performance maxSpeed="70" maxAcceleration="5" maxDeceleration="9"/>
-          <Axles>
-            <FrontAxle maxSteering="0.5" wheelDiameter="0.6" trackWidth="1.8" positionX="3" positionZ="0.3"/>
-            <RearAxle maxSteering="0" wheelDiameter="0.6" trackWidth="1.8" positionX="0" positionZ="0.3"/>
-          </Axles>
-          <Properties/>
-        </Vehicle>"#;
+pub(crate) use testkit::VEHICLE;
 
 /// A minimal scenario with the given parts.
 pub(crate) fn scenario(params: &str, catalogs: &str, entities: &str, init: &str, stories: &str) -> String {

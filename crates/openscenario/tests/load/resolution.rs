@@ -188,12 +188,7 @@ fn corpus_catalog_lookup_by_file_name() {
     let (s, _) = load_scenario(&f, &LoadOptions::default()).expect("load");
     let env = s
         .storyboard
-        .stories
-        .iter()
-        .flat_map(|st| &st.acts)
-        .flat_map(|a| &a.maneuver_groups)
-        .flat_map(|g| &g.maneuvers)
-        .flat_map(|m| &m.events)
+        .events()
         .flat_map(|e| &e.actions)
         .find_map(|a| match &a.kind {
             ActionKind::Global(GlobalAction::Environment(e)) if e.name == "winter" => Some(e),

@@ -125,17 +125,7 @@ fn an_override_of_an_undeclared_parameter() {
 }
 
 fn stochastic(distribution: &str) -> String {
-    format!(
-        r#"<?xml version="1.0"?>
-<OpenSCENARIO>
-<FileHeader revMajor="1" revMinor="2" date="2024-01-01T00:00:00" description="" author=""/>
-<ParameterValueDistribution><ScenarioFile filepath="strict.xosc"/>
-<Stochastic numberOfTestRuns="5" randomSeed="1"><StochasticDistribution parameterName="Speed">
-{distribution}
-</StochasticDistribution></Stochastic>
-</ParameterValueDistribution>
-</OpenSCENARIO>"#
-    )
+    testkit::stochastic_set("strict.xosc", "Speed", distribution)
 }
 
 #[test]

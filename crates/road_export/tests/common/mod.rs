@@ -105,15 +105,7 @@ pub(crate) fn load_check_scenario(xodr: &Path, road: &str, lane: i32, s: f64) ->
   <RoadNetwork><LogicFile filepath="{}"/></RoadNetwork>
   <Entities>
     <ScenarioObject name="Car">
-      <Vehicle name="car" vehicleCategory="car">
-        <BoundingBox><Center x="1.4" y="0" z="0.75"/><Dimensions width="1.8" length="4.5" height="1.5"/></BoundingBox>
-        <Performance maxSpeed="50" maxAcceleration="5" maxDeceleration="10"/>
-        <Axles>
-          <FrontAxle maxSteering="0.5" wheelDiameter="0.6" trackWidth="1.6" positionX="2.8" positionZ="0.3"/>
-          <RearAxle maxSteering="0" wheelDiameter="0.6" trackWidth="1.6" positionX="0" positionZ="0.3"/>
-        </Axles>
-        <Properties/>
-      </Vehicle>
+      {vehicle}
     </ScenarioObject>
   </Entities>
   <Storyboard>
@@ -126,7 +118,8 @@ pub(crate) fn load_check_scenario(xodr: &Path, road: &str, lane: i32, s: f64) ->
   </Storyboard>
 </OpenSCENARIO>
 "#,
-        xodr.display()
+        xodr.display(),
+        vehicle = testkit::VEHICLE
     )
 }
 
