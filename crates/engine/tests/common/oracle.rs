@@ -145,3 +145,17 @@ pub(crate) fn assert_esmini_pose_at(run: &Run, entity: &str, t: f64, x: f64, y: 
         s.h
     );
 }
+
+/// esmini's pose of an entity at a time: (entity, t, x, y, heading).
+pub(crate) type EsminiPose<'a> = (&'a str, f64, f64, f64, f64);
+
+/// The run of fixture `name` (up to `max_time`), checked against esmini's `poses` (noted from a
+/// confirmed run) and, where esmini runs here, against its whole run within 1 mm.
+pub(crate) fn assert_fixture_matches_esmini(name: &str, max_time: f64, poses: &[EsminiPose]) -> Run {
+    let run = run_fixture_scenario(name, max_time);
+    for &(entity, t, x, y, h) in poses {
+        assert_esmini_pose_at(&run, entity, t, x, y, h);
+    }
+    assert_matches_esmini(name, &run, 1e-3);
+    run
+}

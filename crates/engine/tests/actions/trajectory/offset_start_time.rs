@@ -10,18 +10,22 @@
 //! 2 s) and 40.6 m (end 4 s), and a 40 m clothoid (stamps 1–3 s), both started at 1 s 20 m in.
 //! The numbers are esmini 3.6.0's run; where esmini runs here the whole run is compared.
 
-use crate::common::oracle::{assert_esmini_pose_at, assert_matches_esmini, run_fixture_scenario};
+use crate::common::oracle::assert_fixture_matches_esmini;
 
 #[test]
 fn a_relatively_timed_clothoid_started_at_an_offset_runs_from_its_polyline_time() {
-    let run = run_fixture_scenario("trajectory_offset_start_time.xosc", 20.0);
-    // The first step after the start: about 10 m along, not 20.
-    assert_esmini_pose_at(&run, "SplineOffset", 1.02, 30.12539, -1.706602, 0.01283);
-    assert_esmini_pose_at(&run, "ClothoidOffset", 1.02, 30.199558, -5.179255, 0.020808);
-    assert_esmini_pose_at(&run, "SplineOffset", 2.0, 49.689235, -0.655815, 0.110476);
-    assert_esmini_pose_at(&run, "ClothoidOffset", 2.0, 49.787204, -4.71691, 0.08);
-    // After the trajectories' ends, going on along their final headings.
-    assert_esmini_pose_at(&run, "SplineOffset", 4.5, 98.108416, 14.246316, 0.403);
-    assert_esmini_pose_at(&run, "ClothoidOffset", 4.5, 99.787204, -4.71691, 0.08);
-    assert_matches_esmini("trajectory_offset_start_time.xosc", &run, 1e-3);
+    assert_fixture_matches_esmini(
+        "trajectory_offset_start_time.xosc",
+        20.0,
+        &[
+            // The first step after the start: about 10 m along, not 20.
+            ("SplineOffset", 1.02, 30.12539, -1.706602, 0.01283),
+            ("ClothoidOffset", 1.02, 30.199558, -5.179255, 0.020808),
+            ("SplineOffset", 2.0, 49.689235, -0.655815, 0.110476),
+            ("ClothoidOffset", 2.0, 49.787204, -4.71691, 0.08),
+            // After the trajectories' ends, going on along their final headings.
+            ("SplineOffset", 4.5, 98.108416, 14.246316, 0.403),
+            ("ClothoidOffset", 4.5, 99.787204, -4.71691, 0.08),
+        ],
+    );
 }

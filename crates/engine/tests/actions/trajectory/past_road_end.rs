@@ -11,17 +11,21 @@
 //! clothoid splines from 960 m, 50.6 m and 50 m long, at 10 m/s. The numbers are esmini 3.6.0's
 //! run; where esmini runs here the whole run is compared.
 
-use crate::common::oracle::{assert_esmini_pose_at, assert_matches_esmini, run_fixture_scenario};
+use crate::common::oracle::assert_fixture_matches_esmini;
 
 #[test]
 fn a_car_standing_past_a_dead_end_on_its_trajectory_is_stopped_there() {
-    let run = run_fixture_scenario("trajectory_past_road_end.xosc", 20.0);
-    assert_esmini_pose_at(&run, "Fraction", 6.0, 1010.436809, -2.172786, 6.258043);
-    // Stopped where the trajectory held it, past the road's end.
-    assert_esmini_pose_at(&run, "Fraction", 8.0, 1010.596761, -2.176707, 6.257885);
-    // Ended moving: back at the road's end.
-    assert_esmini_pose_at(&run, "Whole", 8.0, 1000.0, -5.666648, 6.258185);
+    let run = assert_fixture_matches_esmini(
+        "trajectory_past_road_end.xosc",
+        20.0,
+        &[
+            ("Fraction", 6.0, 1010.436809, -2.172786, 6.258043),
+            // Stopped where the trajectory held it, past the road's end.
+            ("Fraction", 8.0, 1010.596761, -2.176707, 6.257885),
+            // Ended moving: back at the road's end.
+            ("Whole", 8.0, 1000.0, -5.666648, 6.258185),
+        ],
+    );
     let last_speed = run.trace.entities.iter().find(|e| e.name == "Fraction").and_then(|e| e.samples.iter().rev().flatten().next()).map(|s| s.speed);
     assert_eq!(last_speed, Some(0.0));
-    assert_matches_esmini("trajectory_past_road_end.xosc", &run, 1e-3);
 }

@@ -10,17 +10,21 @@
 //! whose polylines (60 → 100 m) start at 1 s. The numbers are esmini 3.6.0's run; where esmini
 //! runs here the whole run is compared.
 
-use crate::common::oracle::{assert_esmini_pose_at, assert_matches_esmini, run_fixture_scenario};
+use crate::common::oracle::assert_fixture_matches_esmini;
 
 #[test]
 fn reversing_onto_vertex_headings_moves_by_how_they_lie_to_the_path() {
-    let run = run_fixture_scenario("trajectory_reverse_vertex_headings.xosc", 20.0);
+    let run = assert_fixture_matches_esmini(
+        "trajectory_reverse_vertex_headings.xosc",
+        20.0,
+        &[
+            // Put on the start, then reversing along the road, facing forward.
+            ("Along", 1.03, 59.95, -1.75, 0.0),
+            ("Along", 4.0, 45.1, -1.75, 0.0),
+            // Along the path, facing back as the vertices say.
+            ("Against", 4.0, 74.95, -5.25, 3.12),
+            ("Against", 8.0, 94.810649, -7.286464, 3.060757),
+        ],
+    );
     assert!(run.warnings.iter().all(|w| !w.message.contains("explicit vertex headings")), "{:?}", run.warnings);
-    // Put on the start, then reversing along the road, facing forward.
-    assert_esmini_pose_at(&run, "Along", 1.03, 59.95, -1.75, 0.0);
-    assert_esmini_pose_at(&run, "Along", 4.0, 45.1, -1.75, 0.0);
-    // Along the path, facing back as the vertices say.
-    assert_esmini_pose_at(&run, "Against", 4.0, 74.95, -5.25, 3.12);
-    assert_esmini_pose_at(&run, "Against", 8.0, 94.810649, -7.286464, 3.060757);
-    assert_matches_esmini("trajectory_reverse_vertex_headings.xosc", &run, 1e-3);
 }

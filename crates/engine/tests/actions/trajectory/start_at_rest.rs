@@ -11,17 +11,21 @@
 //! started at 1 s at 10 m/s. The numbers are esmini 3.6.0's run; where esmini runs here the
 //! whole run is compared.
 
-use crate::common::oracle::{assert_esmini_pose_at, assert_matches_esmini, run_fixture_scenario};
+use crate::common::oracle::assert_fixture_matches_esmini;
 
 #[test]
 fn timed_clothoids_and_nurbs_start_the_entity_at_rest() {
-    let run = run_fixture_scenario("trajectory_start_at_rest.xosc", 20.0);
-    // At the path's end at once, and standing there.
-    assert_esmini_pose_at(&run, "SplinePast", 1.02, 49.93257, -0.252409, 0.15);
-    assert_esmini_pose_at(&run, "NurbsPast", 1.02, 49.99997, -2.000006, 0.213265);
-    assert_esmini_pose_at(&run, "NurbsPast", 4.0, 49.99997, -2.000006, 0.213265);
-    // The ACC brakes to the new set speed, 0.
-    assert_esmini_pose_at(&run, "AccClothoid", 2.0, 116.928152, -1.739015, 0.004771);
-    assert_esmini_pose_at(&run, "AccClothoid", 4.0, 117.232773, -1.737388, 0.005231);
-    assert_matches_esmini("trajectory_start_at_rest.xosc", &run, 1e-3);
+    assert_fixture_matches_esmini(
+        "trajectory_start_at_rest.xosc",
+        20.0,
+        &[
+            // At the path's end at once, and standing there.
+            ("SplinePast", 1.02, 49.93257, -0.252409, 0.15),
+            ("NurbsPast", 1.02, 49.99997, -2.000006, 0.213265),
+            ("NurbsPast", 4.0, 49.99997, -2.000006, 0.213265),
+            // The ACC brakes to the new set speed, 0.
+            ("AccClothoid", 2.0, 116.928152, -1.739015, 0.004771),
+            ("AccClothoid", 4.0, 117.232773, -1.737388, 0.005231),
+        ],
+    );
 }
