@@ -156,7 +156,9 @@ impl<'a> Sim<'a> {
             }
             if en.on_road || en.lane.is_none() && self.net.is_none() {
                 en.offroad_since = None;
-            } else {
+            } else if time > crate::dynamics::ESMINI_SMALL_NUMBER {
+                // esmini's Object::IsOffRoad reads a time stamp of 0 as on the road: an entity
+                // off the road from the start is noted so at the next step
                 en.offroad_since.get_or_insert(time);
             }
         }

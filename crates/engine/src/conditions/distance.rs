@@ -3,6 +3,7 @@
 //! world; longitudinal, lateral or euclidean; between reference points or bounding boxes
 //! (freespace). Longitudinal and lateral results are signed: positive ahead / to the left.
 
+use super::free_space::free_space_road;
 use crate::entities::Entity;
 use crate::roads::lane_geometry::lane_center_t;
 use opendrive::RoadNetwork;
@@ -113,6 +114,15 @@ pub(crate) fn between(net: Option<&RoadNetwork>, a: &Entity, b: &Entity, cs: Coo
         if let (Some(net), Some(ra), Some(rb)) = (net, net.and_then(|n| road_t(n, a)), net.and_then(|n| road_t(n, b))) {
             let _ = net;
             if ra.0 == rb.0 {
+                // esmini's Object::Distance with freeSpace in road coordinates:
+                // FreeSpaceDistanceObjectRoadLane, corner by corner (dt as t grows, whichever
+                // way `a` faces); where a corner lies off the road the boxes are turned rigidly.
+                // A point (to_point: no box) is FreeSpaceDistancePointRoadLane's, not this.
+                if freespace && b.bbox[3] > 0.0 {
+                    if let Some(gap) = free_space_road(net, a, b, ra.0, ra.3) {
+                        return if kind == RelativeDistanceType::Longitudinal { gap.ds } else { gap.dt };
+                    }
+                }
                 let ds = (rb.1 - ra.1) * ra.3;
                 let dt = (rb.2 - ra.2) * ra.3;
                 // (a euclidean distance does not come here)

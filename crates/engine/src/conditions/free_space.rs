@@ -9,7 +9,8 @@
 //! compared: the two front right corners.
 
 use crate::conditions::distance::{boxes_overlap, corners};
-use crate::entities::Entity;
+use crate::entities::{Entity, EntityKind};
+use crate::roads::lane_snap::snap;
 use crate::roads::locate::world_to_lane;
 use opendrive::{LanePosition, RoadNetwork};
 
@@ -29,14 +30,19 @@ pub(crate) struct FreeSpaceGap {
 /// left, rear right, front right) located on `road`. A corner past the road's end is where the
 /// road network puts it (XYZ2TrackPos follows the links: on a closed loop it is near s = 0 again,
 /// which makes the deltas change sign); `None` where a corner lies on another road (esmini then
-/// measures along a road path, which this does not model).
-fn road_corners(net: &RoadNetwork, e: &Entity, road: usize, hint_s: f64) -> Option<[LanePosition; 4]> {
+/// measures along a road path, which this does not model). Each corner's lane is the one
+/// esmini snaps a position to (LaneSection::GetClosestLaneIdx with the lane types of the
+/// measuring entity's position: `sidewalks` for a pedestrian).
+fn road_corners(net: &RoadNetwork, e: &Entity, road: usize, hint_s: f64, sidewalks: bool) -> Option<[LanePosition; 4]> {
     let [fl, fr, rr, rl] = corners(e);
     let mut out = [None; 4];
     for (k, (x, y)) in [fl, rl, rr, fr].into_iter().enumerate() {
-        let p = world_to_lane(net, x, y, Some((road, hint_s)))?;
+        let mut p = world_to_lane(net, x, y, Some((road, hint_s)))?;
         if p.road != road {
             return None;
+        }
+        if let Some((lane, offset)) = net.roads.get(road).and_then(|r| snap(r, p.section, p.s, p.t, sidewalks)) {
+            (p.lane_id, p.offset) = (lane, offset);
         }
         out[k] = Some(p);
     }
@@ -51,8 +57,9 @@ pub(crate) fn free_space_road(net: &RoadNetwork, a: &Entity, b: &Entity, road: u
         return Some(FreeSpaceGap { ds: 0.0, dt: 0.0, front_right_lanes: None });
     }
     let hint = a.lane.map_or(0.0, |l| l.s);
-    let ca = road_corners(net, a, road, hint)?;
-    let cb = road_corners(net, b, road, b.lane.map_or(hint, |l| l.s))?;
+    let sidewalks = a.kind == EntityKind::Pedestrian;
+    let ca = road_corners(net, a, road, hint, sidewalks)?;
+    let cb = road_corners(net, b, road, b.lane.map_or(hint, |l| l.s), sidewalks)?;
     let mut ds = [[0.0; 4]; 4];
     let mut dt = [[0.0; 4]; 4];
     let (mut min_ds, mut min_dt) = (0.0f64, 0.0f64);

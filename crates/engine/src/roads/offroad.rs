@@ -7,10 +7,11 @@ use opendrive::{LaneType, Road};
 use super::lane_geometry::lane_borders;
 
 /// `t` (from the reference line, + left) is further out than the outermost border of a lane that
-/// is not of type `none` on the side `t` lies on. The lane offset is not part of the comparison
-/// (widths are summed from the centre lane), as in esmini.
+/// is not of type `none` on its side of the centre lane: esmini's Position::IsOffRoad measures
+/// from the centre lane (t less the road's lane offset) against the widths summed from it.
 pub(crate) fn is_off_road(road: &Road, s: f64, t: f64) -> bool {
-    t.abs() > road_width(road, s, t >= 0.0) + 1e-9
+    let from_centre = t - road.lane_offset_at(s);
+    from_centre.abs() > road_width(road, s, from_centre >= 0.0) + 1e-9
 }
 
 /// Distance from the centre lane to the outer border of the outermost non-`none` lane of a side.

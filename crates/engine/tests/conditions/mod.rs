@@ -9,5 +9,6 @@ mod clearance_offroad_headway;
 mod directed_speed;
 mod freespace_distance_sign;
 mod ignored_value_conditions;
+mod offroad_lane_offset;
 mod reach_position_all;
 mod undefined_headway_ttc;
