@@ -69,6 +69,13 @@ fn run(text: &str, max_time: f64) -> Run {
     run_on(text, "straight.xodr", &Settings { step: DT, max_time })
 }
 
+/// Ego with the driver (lane-change gain threshold `gain`) and the two other cars placed as
+/// `init` says, run until `stop`.
+fn drive_with_gain(gain: f64, init: [String; 3], stop: f64) -> Run {
+    let text = scenario(&format!(r#"<Property name="laneChangeAccGain" value="{gain}"/>"#), &init.concat(), stop);
+    run(&text, stop)
+}
+
 /// Parked far away, out of every look-ahead.
 fn parked(entity: &str) -> String {
     place(entity, 950.0, -2, 0.0)
@@ -104,12 +111,7 @@ fn following_a_slower_car_settles_at_the_idm_equilibrium_gap() {
     // s = 20 / √(1 − 1/16) = 20.656 m of free space. The driver measures it after the leader
     // moved and before its own move (esmini steps controllers last), so the recorded gap is
     // v·dt = 0.1 m shorter.
-    let text = scenario(
-        r#"<Property name="laneChangeAccGain" value="1000"/>"#,
-        &format!("{}{}{}", place("Ego", 10.0, -1, 10.0), place("Target", 60.0, -1, 10.0), parked("Blocker")),
-        60.0,
-    );
-    let run = run(&text, 60.0);
+    let run = drive_with_gain(1000.0, [place("Ego", 10.0, -1, 10.0), place("Target", 60.0, -1, 10.0), parked("Blocker")], 60.0);
     let gap = (S0 + 10.0 * T) / (1.0 - (10.0_f64 / V0).powi(4)).sqrt() - 10.0 * DT;
     let (e, g) = (at(&run, "Ego", 59.0), at(&run, "Target", 59.0));
     assert!(close(g.x - e.x - OVERHANG, gap, 0.005), "free space {} vs {gap}", g.x - e.x - OVERHANG);
@@ -125,12 +127,7 @@ fn overtakes_into_a_free_lane_at_once_and_holds_its_speed_meanwhile() {
     // the MOBIL gain is far above 0.3, so the driver injects a lane change on the first frame.
     // It starts on the next (storyboard time 0), runs 3 s sinusoidally from y = -1.75 to -5.25
     // (param = t - 0.01 at row t: half way at row 1.51), and the speed stays 20 m/s meanwhile.
-    let text = scenario(
-        r#"<Property name="laneChangeAccGain" value="0.3"/>"#,
-        &format!("{}{}{}", place("Ego", 10.0, -1, 20.0), place("Target", 50.0, -1, 10.0), parked("Blocker")),
-        6.0,
-    );
-    let run = run(&text, 6.0);
+    let run = drive_with_gain(0.3, [place("Ego", 10.0, -1, 20.0), place("Target", 50.0, -1, 10.0), parked("Blocker")], 6.0);
     assert_eq!(event_time(&run, "LaneChangeAction_0", "start"), Some(0.0));
     let end = event_time(&run, "LaneChangeAction_0", "end").expect("lane change ends");
     assert!(close(end, 3.0, 1e-6), "{end}");
@@ -153,12 +150,7 @@ fn does_not_change_into_an_occupied_lane() {
     // so the predicted acceleration there is hopeless and no change is tried; braking at most
     // 4 m/s² the Ego falls at most 2 m behind within 1 s, still less than the 4.5 m the boxes
     // overlap, so for that second it stays in lane -1.
-    let text = scenario(
-        r#"<Property name="laneChangeAccGain" value="0.3"/>"#,
-        &format!("{}{}{}", place("Ego", 10.0, -1, 20.0), place("Target", 50.0, -1, 10.0), place("Blocker", 10.0, -2, 20.0)),
-        6.0,
-    );
-    let run = run(&text, 6.0);
+    let run = drive_with_gain(0.3, [place("Ego", 10.0, -1, 20.0), place("Target", 50.0, -1, 10.0), place("Blocker", 10.0, -2, 20.0)], 6.0);
     let start = event_time(&run, "LaneChangeAction_0", "start");
     assert!(start.is_none_or(|t| t > 1.0), "{start:?}");
     assert!(close(at(&run, "Ego", 1.0).y, -1.75, 1e-9));
@@ -171,12 +163,7 @@ fn returns_to_its_route_lane_when_that_is_free_and_stays_there() {
     // Alone in lane -2 at its desired speed with route lane -1: into the route lane only the
     // braking limits count (nobody brakes on an empty road), so it changes at once although
     // nothing is gained; back in lane -1, lane -2 gains nothing (0 < 0.3) and it stays.
-    let text = scenario(
-        r#"<Property name="laneChangeAccGain" value="0.3"/>"#,
-        &format!("{}{}{}", place("Ego", 10.0, -2, 20.0), parked("Target"), parked("Blocker")),
-        10.0,
-    );
-    let run = run(&text, 10.0);
+    let run = drive_with_gain(0.3, [place("Ego", 10.0, -2, 20.0), parked("Target"), parked("Blocker")], 10.0);
     assert_eq!(event_time(&run, "LaneChangeAction_0", "start"), Some(0.0));
     assert!(close(at(&run, "Ego", 1.51).y, -3.5, 1e-6));
     assert!(close(at(&run, "Ego", 9.9).y, -1.75, 1e-9));
