@@ -1,7 +1,8 @@
 //! Entity conditions, evaluated for each triggering entity and combined by the
 //! triggering-entities rule (any: one true is enough; all: every one must be true).
 
-use super::distance::{between, boxes_overlap, corners, to_point};
+use super::boxes::{boxes_overlap, corners};
+use super::distance::{between, to_point};
 use super::ConditionRt;
 use crate::dynamics::SMALL;
 use crate::entities::EntityKind;

@@ -8,7 +8,7 @@
 //! frame. The lane difference esmini reports with it is the one of the last pair of corners
 //! compared: the two front right corners.
 
-use crate::conditions::distance::{boxes_overlap, corners};
+use crate::conditions::boxes::{boxes_overlap, corners};
 use crate::entities::{Entity, EntityKind};
 use crate::roads::lane_snap::snap;
 use crate::roads::locate::world_to_lane;

@@ -3,6 +3,7 @@
 //! evaluating after its first false condition unless a later one has a delay; a rising or
 //! falling edge needs one evaluation before it can fire; a fired trigger re-arms its edges).
 
+pub(crate) mod boxes;
 pub(crate) mod by_entity;
 pub(crate) mod by_value;
 pub(crate) mod clearance;
