@@ -3,11 +3,9 @@
 //! does not fall inside any road's s range (`closestPointInside`), as for an entity a trajectory
 //! has carried past a dead end.
 
+use crate::dynamics::ESMINI_SMALL_NUMBER as PAST;
 use opendrive::projection::project_onto_road;
 use opendrive::RoadNetwork;
-
-/// Along-track distance beyond a road's end that counts (esmini's SMALL_NUMBER).
-const PAST: f64 = 1e-6;
 
 /// (x, y), located on road `road` at `s`, projects beyond that road's start or end.
 pub(crate) fn past_road_end(net: &RoadNetwork, road: usize, s: f64, x: f64, y: f64) -> bool {
