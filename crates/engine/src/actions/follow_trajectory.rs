@@ -184,8 +184,9 @@ impl<'a> Sim<'a> {
         // that heading lies to the path (initialHeadingSign_: against it when more than π/2
         // off): along a path whose headings point forward the entity backs off the start and
         // the action ends at once.
-        let faces_vertex_headings = speed_sign < 0.0 && all_explicit_headings(traj);
-        if speed_sign < 0.0 && explicit_headings(traj) && !faces_vertex_headings {
+        let (some_headings, all_headings) = vertex_headings(traj);
+        let faces_vertex_headings = speed_sign < 0.0 && all_headings;
+        if speed_sign < 0.0 && some_headings && !faces_vertex_headings {
             self.warn_action(
                 slot,
                 format!("FollowTrajectoryAction: trajectory `{}` is started reversing and some of its vertices give headings; esmini's motion along partly explicit vertex headings is not modelled (the entity faces against the path and advances along it)", traj.name),
@@ -369,19 +370,15 @@ fn time_at_start(traj: &Trajectory, path: &Path, s: f64) -> Option<f64> {
     Some(first + s.clamp(0.0, length.floor()) / length * last)
 }
 
-/// Whether every polyline vertex of `traj` gives a heading of its own.
-fn all_explicit_headings(traj: &Trajectory) -> bool {
+/// Whether some and whether every polyline vertex of `traj` gives a heading of its own (both
+/// false for other shapes and an empty polyline).
+fn vertex_headings(traj: &Trajectory) -> (bool, bool) {
     match &traj.shape {
-        openscenario::Shape::Polyline(vs) => !vs.is_empty() && vs.iter().all(|v| trajectory::gives_heading(&v.position)),
-        _ => false,
-    }
-}
-
-/// Whether a polyline vertex of `traj` gives a heading of its own.
-fn explicit_headings(traj: &Trajectory) -> bool {
-    match &traj.shape {
-        openscenario::Shape::Polyline(vs) => vs.iter().any(|v| trajectory::gives_heading(&v.position)),
-        _ => false,
+        openscenario::Shape::Polyline(vs) => {
+            let giving = vs.iter().filter(|v| trajectory::gives_heading(&v.position)).count();
+            (giving > 0, giving > 0 && giving == vs.len())
+        }
+        _ => (false, false),
     }
 }
 
