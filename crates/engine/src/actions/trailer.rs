@@ -88,12 +88,13 @@ impl<'a> Sim<'a> {
         }
     }
 
-    /// DisconnectTrailerAction: the trailer stays where it is, standing still.
+    /// DisconnectTrailerAction: the link goes, nothing else (esmini's Vehicle::DisconnectTrailer).
+    /// The trailer keeps the speed its tow vehicle last gave it, and from the next step
+    /// ScenarioEngine::defaultController moves it along its lane like any entity no action
+    /// moves (where there is no road it stops there, as in esmini's trailer_connect).
     pub(crate) fn disconnect_trailer(&mut self, tow: usize) {
-        if let Some(t) = self.trailers.links.get_mut(tow).and_then(|l| l.take()) {
-            if let Some(en) = self.entities.get_mut(t) {
-                en.speed = 0.0;
-            }
+        if let Some(l) = self.trailers.links.get_mut(tow) {
+            *l = None;
         }
     }
 

@@ -1,7 +1,8 @@
 //! Trailers: a trailer named by its tow vehicle's model (TrailerRef) or connected by
 //! ConnectTrailerAction is pulled so that its coupler sits on the tow vehicle's hitch; checked on
 //! a straight road and against the closed-form steady state of a constant-radius turn; a towed
-//! trailer ignores TeleportActions (checked against esmini on a fixture).
+//! trailer ignores TeleportActions and a disconnected one drives on (checked against esmini on
+//! fixtures).
 
 use crate::common::*;
 
@@ -104,7 +105,7 @@ fn articulation_in_a_constant_radius_turn_approaches_the_closed_form_steady_stat
 }
 
 #[test]
-fn connect_puts_the_coupler_on_the_hitch_and_disconnect_leaves_the_trailer_standing() {
+fn connect_puts_the_coupler_on_the_hitch_and_disconnect_lets_the_trailer_roll_on() {
     // On lane -1 of the straight road: the trailer's coupler 2 m behind the hitch; Car drives
     // at 2 m/s from 1 s; connected at 0.5 s, disconnected at 3 s.
     let init = format!("{}{}", teleport("Car", 20.0, -1), teleport("Trailer", 20.0 + HITCH - COUPLER - 2.0, -1));
@@ -131,9 +132,24 @@ fn connect_puts_the_coupler_on_the_hitch_and_disconnect_leaves_the_trailer_stand
     assert!(close(connected.x, 20.0 + HITCH - COUPLER, 1e-9), "connected x {}", connected.x);
     let pulled = at(&run, "Trailer", 2.5);
     assert!(close(pulled.x, at(&run, "Car", 2.5).x + HITCH - COUPLER, 1e-9) && close(pulled.speed, 2.0, 1e-9));
+    // Disconnected, it keeps its last speed and the default controller moves it on.
     let (a, b) = (at(&run, "Trailer", 3.5), at(&run, "Trailer", 4.5));
-    assert!(close(a.x, b.x, 1e-12) && close(b.speed, 0.0, 1e-12));
+    assert!(close(b.x - a.x, 2.0, 1e-9) && close(b.speed, 2.0, 1e-12), "trailer {} -> {} at {}", a.x, b.x, b.speed);
     assert!(at(&run, "Car", 4.5).x > at(&run, "Car", 3.5).x + 1.9);
+}
+
+#[test]
+fn a_disconnected_trailer_drives_on_at_its_last_speed_and_stops_at_the_road_end() {
+    // esmini's Vehicle::DisconnectTrailer only drops the link: the trailer keeps the speed its
+    // tow vehicle last set and ScenarioEngine::defaultController moves it along its lane, while
+    // the car slows down; it stops at the road's end (s = 1000). Fixture
+    // trailer_disconnected_drives_on.xosc (numbers from esmini 3.6.0's run of it).
+    let run = crate::common::oracle::run_fixture_scenario("trailer_disconnected_drives_on.xosc", 20.0);
+    crate::common::oracle::assert_esmini_pose_at(&run, "Trailer", 5.4, 960.35, -1.75, 0.0);
+    let end = at(&run, "Trailer", 9.9);
+    assert!(close(end.x, 1000.0, 1e-6) && close(end.speed, 0.0, 1e-12), "trailer at {} speed {}", end.x, end.speed);
+    assert!(at(&run, "Car", 9.9).x < 980.0);
+    crate::common::oracle::assert_matches_esmini("trailer_disconnected_drives_on.xosc", &run, 1e-3);
 }
 
 #[test]
