@@ -107,21 +107,23 @@ impl<'a> Sim<'a> {
         // head start sees them moving, not standing.
         let held = self.ghost.as_ref().filter(|g| g.mode == GhostMode::Restarting && dt > 0.0).map(|g| g.entity);
         for (i, (en, b)) in self.entities.iter_mut().zip(before).enumerate() {
+            // ScenarioEngine::prepareGroundTruth measures the active entities only: a deleted
+            // one keeps its last state (`snapshot` in run.rs) and its "teleported" mark.
+            if !en.active {
+                continue;
+            }
             let (dx, dy) = (en.x - b.x, en.y - b.y);
             let old_vel = en.vel;
-            if held.is_some_and(|g| g != i) && !en.teleported && !en.appeared {
+            // An entity added back is measured from where it was last active (AddEntityAction
+            // moves its position without a teleport mark): its jump is travel, and a standing
+            // one takes jump / dt as its speed and drives off at it. One never active before
+            // still has the mark Entities::addObject gave it ("virgin location"): a teleport.
+            let appeared = std::mem::take(&mut en.appeared);
+            if held.is_some_and(|g| g != i) && !en.teleported && !appeared {
                 // not measured this frame
             } else if restarted == Some(i) {
                 // The dirty bits are cleared all the same: the teleport does not carry over.
                 en.teleported = false;
-            } else if en.appeared {
-                // Just added: where it was before (deleted, or never placed) says nothing
-                // about its motion.
-                en.appeared = false;
-                en.vel = (en.speed * en.h.cos(), en.speed * en.h.sin());
-                en.accel = 0.0;
-                en.acc_vec = (0.0, 0.0);
-                en.yaw_rate = 0.0;
             } else if en.teleported {
                 // ScenarioEngine::prepareStep/step: a teleport is no travel
                 en.teleported = false;

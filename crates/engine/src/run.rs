@@ -343,7 +343,9 @@ fn snapshot(sim: &Sim, before: &mut [Before]) {
     // A ghost restarted in the last step keeps its state from before it (`Sim::after_move`).
     let unmeasured = sim.ghost.as_ref().and_then(|g| g.unmeasured.then_some(g.entity));
     for (i, (b, e)) in before.iter_mut().zip(&sim.entities).enumerate() {
-        if unmeasured == Some(i) {
+        // esmini stores the old state of active entities only (ScenarioEngine::prepareGroundTruth):
+        // a deleted entity is measured, once added back, from where it last was.
+        if unmeasured == Some(i) || !e.active {
             continue;
         }
         *b = Before { x: e.x, y: e.y, h: e.h, speed: e.speed };

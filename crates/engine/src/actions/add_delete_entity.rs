@@ -30,6 +30,9 @@ impl<'a> Sim<'a> {
         }
         for (en, a) in self.entities.iter_mut().zip(active) {
             en.active = a;
+            // Entities::addObject marks every new object teleported ("virgin location"); only
+            // the active ones have their marks cleared, so one added later still has it.
+            en.teleported |= !a;
         }
     }
 
@@ -70,13 +73,15 @@ impl<'a> Sim<'a> {
         }
         // AddEntityAction::Start moves the entity's position itself (no TeleportAction): no
         // "moved" mark, so the default controller drives it on in this very step, unless an
-        // action moved it while it was away (the mark stayed: run.rs). Unlike a TeleportAction
-        // it places the entity also while a controller in override mode drives it.
-        let held = self.entities.get(e).is_some_and(|en| en.moved_by_action);
+        // action moved it while it was away (the mark stayed: run.rs). Nor a "teleported"
+        // mark: the one it has is what it kept while away (motion.rs measures the jump unless
+        // it has one). Unlike a TeleportAction it places the entity also while a controller in
+        // override mode drives it.
+        let (held, jumped) = self.entities.get(e).map_or((false, false), |en| (en.moved_by_action, en.teleported));
         self.put_at(slot, e, pos, "AddEntityAction");
         if let Some(en) = self.entities.get_mut(e) {
             en.moved_by_action = held;
-            en.teleported = false;
+            en.teleported = jumped;
         }
         self.align_chain(e);
     }

@@ -204,3 +204,25 @@ fn a_position_that_cannot_be_resolved_is_warned_about_under_the_action_that_gave
     assert!(msgs.iter().any(|m| m.starts_with("AddEntityAction: ") && m.contains("stays where it is")), "{msgs:?}");
     assert!(!msgs.iter().any(|m| m.starts_with("TeleportAction")), "{msgs:?}");
 }
+
+#[test]
+fn an_entity_added_back_is_measured_from_where_it_was_last_active() {
+    // esmini stores the old state of active entities only and AddEntityAction sets no teleport
+    // mark (ScenarioEngine::prepareGroundTruth): Back, standing at s = 20 in lane 1 when deleted
+    // at 1 s, is added at s = 60 at 2 s and takes 40 m / 0.01 s as its speed, then drives off
+    // at 4000 m/s against s and stops at the road's start. Late, never active before, still
+    // has the mark Entities::addObject gave it and stays standing; Moving keeps its 5 m/s
+    // (the default controller sets it). Fixture added_entity_measured_from_last_state.xosc
+    // (numbers from esmini 3.6.0's run of it).
+    let name = "added_entity_measured_from_last_state.xosc";
+    let run = crate::common::oracle::run_fixture_scenario(name, 10.0);
+    let back = at(&run, "Back", 2.02);
+    assert!(close(back.x, 60.0, 1e-9) && close(back.speed, 4000.0, 1e-6), "{back:?}");
+    crate::common::oracle::assert_esmini_pose_at(&run, "Back", 2.03, 20.0, 1.75, std::f64::consts::PI);
+    let gone = at(&run, "Back", 2.5);
+    assert!(close(gone.x, 0.0, 1e-9) && gone.speed == 0.0, "{gone:?}");
+    let late = at(&run, "Late", 2.0);
+    assert!(close(late.x, 50.0, 1e-9) && late.speed == 0.0, "{late:?}");
+    assert!(close(at(&run, "Moving", 2.52).x, 200.05, 1e-9));
+    crate::common::oracle::assert_matches_esmini(name, &run, 1e-3);
+}
