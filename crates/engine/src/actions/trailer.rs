@@ -26,6 +26,7 @@ impl Trailers {
             t.hitch.push(h);
             t.coupler.push(c);
             t.links.push(None);
+            t.towed_by.push(None);
         }
         for (i, e) in scenario.entities.iter().enumerate() {
             let mut tow = i;
@@ -35,6 +36,9 @@ impl Trailers {
                 match &v.trailer {
                     Some(Trailer::Ref(name)) => {
                         t.links[tow] = scenario.entities.iter().position(|o| &o.name == name).filter(|&k| k != tow);
+                        if let Some(k) = t.links[tow] {
+                            t.towed_by[k] = Some(tow);
+                        }
                         break;
                     }
                     Some(Trailer::Entity(inner)) => {
@@ -46,6 +50,7 @@ impl Trailers {
                         t.hitch.push(h);
                         t.coupler.push(c);
                         t.links.push(None);
+                        t.towed_by.push(Some(tow));
                         t.links[tow] = Some(k);
                         tow = k;
                         model = inner;
@@ -67,24 +72,37 @@ fn joints(e: &openscenario::Entity) -> (Option<f64>, Option<f64>) {
 }
 
 impl<'a> Sim<'a> {
-    /// ConnectTrailerAction: `tow` now pulls `trailer` (both need a hitch/coupler).
+    /// ConnectTrailerAction as esmini's ConnectTrailerAction::Start and Vehicle::ConnectTrailer:
+    /// a trailer `tow` already pulls is kept; another one is disconnected first. Then the
+    /// trailer's coupler names `tow` (if it has a coupler) and `tow`'s hitch the trailer (if
+    /// both have theirs). A vehicle that towed the trailer before keeps it on its hitch and
+    /// goes on pulling it; a trailer coupled to a vehicle without a hitch is towed by nobody
+    /// (Object::TowVehicle), so the default controller moves it too.
     pub(crate) fn connect_trailer(&mut self, slot: usize, tow: usize, trailer_name: &str) {
         let Some(trailer) = self.entity_index(trailer_name) else {
             self.warn_action(slot, format!("ConnectTrailerAction: unknown trailer entity `{trailer_name}`"));
             return;
         };
-        if trailer == tow || self.trailers.hitch.get(tow).copied().flatten().is_none() || self.trailers.coupler.get(trailer).copied().flatten().is_none() {
+        let has = |v: &[Option<f64>], e: usize| v.get(e).copied().flatten().is_some();
+        let (hitch, coupler) = (has(&self.trailers.hitch, tow), has(&self.trailers.coupler, trailer));
+        if trailer == tow || !hitch || !coupler {
             self.warn_action(slot, format!("ConnectTrailerAction: `{trailer_name}` needs a TrailerCoupler and the tow vehicle a TrailerHitch"));
-            return;
-        }
-        // A trailer hangs on one hitch only.
-        for l in self.trailers.links.iter_mut() {
-            if *l == Some(trailer) {
-                *l = None;
+            if trailer == tow {
+                return;
             }
         }
-        if let Some(l) = self.trailers.links.get_mut(tow) {
-            *l = Some(trailer);
+        let current = self.trailers.links.get(tow).copied().flatten();
+        if current == Some(trailer) {
+            return;
+        }
+        if current.is_some() {
+            self.disconnect_trailer(tow);
+        }
+        if coupler {
+            self.trailers.towed_by[trailer] = Some(tow);
+            if hitch {
+                self.trailers.links[tow] = Some(trailer);
+            }
         }
     }
 
@@ -93,22 +111,25 @@ impl<'a> Sim<'a> {
     /// ScenarioEngine::defaultController moves it along its lane like any entity no action
     /// moves (where there is no road it stops there, as in esmini's trailer_connect).
     pub(crate) fn disconnect_trailer(&mut self, tow: usize) {
-        if let Some(l) = self.trailers.links.get_mut(tow) {
-            *l = None;
+        if let Some(t) = self.trailers.links.get_mut(tow).and_then(|l| l.take()) {
+            if let Some(c) = self.trailers.towed_by.get_mut(t) {
+                *c = None;
+            }
         }
     }
 
+    /// esmini's Object::TowVehicle: the vehicle `e`'s coupler names, if that one has a hitch.
     pub(crate) fn is_towed(&self, e: usize) -> bool {
-        self.trailers.links.contains(&Some(e))
+        let tow = self.trailers.towed_by.get(e).copied().flatten();
+        tow.is_some_and(|t| self.trailers.hitch.get(t).copied().flatten().is_some())
     }
 
-    /// Keep the default controller off towed trailers: their tow vehicle moves them.
+    /// Keep the default controller off towed trailers: their tow vehicle moves them
+    /// (ScenarioEngine::step skips an entity with a TowVehicle).
     pub(crate) fn hold_trailers(&mut self) {
-        for k in 0..self.trailers.links.len() {
-            if let Some(t) = self.trailers.links[k] {
-                if let Some(en) = self.entities.get_mut(t) {
-                    en.moved_by_action = true;
-                }
+        for e in 0..self.entities.len() {
+            if self.is_towed(e) {
+                self.entities[e].moved_by_action = true;
             }
         }
     }

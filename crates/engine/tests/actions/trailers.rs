@@ -167,3 +167,21 @@ fn a_towed_trailer_ignores_teleport_actions_and_is_pulled_from_where_it_was_made
     assert!(close(b.x, 204.45, 1e-9) && close(b.y, 1.75, 1e-9), "TrailerB at ({}, {})", b.x, b.y);
     crate::common::oracle::assert_matches_esmini("trailer_teleported_while_towed.xosc", &run, 1e-3);
 }
+
+#[test]
+fn a_trailer_connected_to_a_second_vehicle_stays_on_the_first_ones_hitch() {
+    // esmini's ConnectTrailerAction sets the trailer's coupler and the new tow vehicle's hitch
+    // and clears neither side of the old link (Vehicle::ConnectTrailer). TrailerA, coupled at
+    // 0.3 s to CarB, which has no hitch, is towed by nobody (Object::TowVehicle): the default
+    // controller moves it along its lane and CarA, whose hitch still holds it, pulls it after.
+    // TrailerC, coupled at 1 s to CarD (with a hitch, one lane over), is pulled by CarC and
+    // then by CarD in every step. Fixture trailer_connected_to_a_second_vehicle.xosc (numbers
+    // from esmini 3.6.0's run of it).
+    let name = "trailer_connected_to_a_second_vehicle.xosc";
+    let run = crate::common::oracle::run_fixture_scenario(name, 10.0);
+    crate::common::oracle::assert_esmini_pose_at(&run, "TrailerA", 1.3, 108.55, -1.728, 6.276);
+    crate::common::oracle::assert_esmini_pose_at(&run, "TrailerC", 1.3, 331.188, -4.753, 6.13);
+    assert!(close(at(&run, "TrailerC", 1.3).speed, 12.0, 1e-12));
+    assert!(run.warnings.iter().any(|w| w.message.contains("needs a TrailerCoupler and the tow vehicle a TrailerHitch")));
+    crate::common::oracle::assert_matches_esmini(name, &run, 1e-3);
+}

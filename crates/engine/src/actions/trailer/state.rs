@@ -4,8 +4,12 @@
 /// point), indexed like the run's entities (scenario entities, then inline trailers).
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Trailers {
-    /// `links[tow] = Some(trailer)`.
+    /// The hitch side, `links[tow] = Some(trailer)` (esmini's TrailerHitch::trailer_vehicle_).
     pub links: Vec<Option<usize>>,
+    /// The coupler side, `towed_by[trailer] = Some(tow)` (TrailerCoupler::tow_vehicle_). The
+    /// two sides disagree after a ConnectTrailerAction on a trailer another vehicle tows, or
+    /// from a vehicle without a hitch: esmini sets each side it can and clears neither.
+    pub towed_by: Vec<Option<usize>>,
     pub hitch: Vec<Option<f64>>,
     pub coupler: Vec<Option<f64>>,
 }
