@@ -202,5 +202,11 @@ impl<'a> Sim<'a> {
             en.moved_by_action = true;
         }
         en.speed = a.current_speed;
+        // Controller::Step marks the longitudinal domain as driven; an active entity's marks are
+        // cleared after the step, a deleted one keeps it, so the default controller does not
+        // move it in the step it is added back.
+        if !en.active {
+            en.moved_by_action = true;
+        }
     }
 }

@@ -47,7 +47,12 @@ impl<'a> Sim<'a> {
             return;
         }
         for e in 0..self.controllers.len() {
-            if !self.entities.get(e).is_some_and(|en| en.active) {
+            // esmini's ScenarioEngine::step steps every active controller whether or not its
+            // entity is in the simulation. Done so for the ACC (a deleted entity's speed goes on
+            // changing: fixture acc_steps_while_away.xosc); the other models wait while their
+            // entity is deleted.
+            let away_acc = matches!(self.controllers.get(e), Some(Some(ControllerRt::Acc(_))));
+            if !away_acc && !self.entities.get(e).is_some_and(|en| en.active) {
                 continue;
             }
             let Some(mut c) = self.controllers.get_mut(e).and_then(Option::take) else { continue };

@@ -226,3 +226,20 @@ fn an_entity_added_back_is_measured_from_where_it_was_last_active() {
     assert!(close(at(&run, "Moving", 2.52).x, 200.05, 1e-9));
     crate::common::oracle::assert_matches_esmini(name, &run, 1e-3);
 }
+
+#[test]
+fn an_acc_steps_on_while_its_entity_is_away() {
+    // esmini's ScenarioEngine::step steps every active controller whether or not its entity is
+    // in the simulation. Add (ACC, additive) accelerates from 13.5 m/s at its deletion at
+    // 1.51 s towards 30 m/s at 7 m/s² while away: 24.07 m/s when added back at 3.02 s, where
+    // it stays in that step (Controller::Step's longitudinal mark is never cleared while it is
+    // away, so the default controller leaves it). Over (override) keeps its 10 m/s and moves
+    // itself; Ego only stands far away. Fixture acc_steps_while_away.xosc (numbers from esmini
+    // 3.6.0's run of it).
+    let run = crate::common::oracle::run_fixture_scenario("acc_steps_while_away.xosc", 10.0);
+    let add = at(&run, "Add", 3.02);
+    assert!(close(add.x, 300.0, 1e-9) && close(add.speed, 24.07, 1e-9), "{add:?}");
+    crate::common::oracle::assert_esmini_pose_at(&run, "Add", 4.0, 326.811, -1.75, 0.0);
+    crate::common::oracle::assert_esmini_pose_at(&run, "Over", 4.0, 309.9, -5.25, 0.0);
+    crate::common::oracle::assert_matches_esmini("acc_steps_while_away.xosc", &run, 1e-3);
+}
