@@ -7,15 +7,23 @@
 
 use crate::common::*;
 
-/// Ego on lane -2, the last right lane of the fixture road (3.5 m wide, centre y = -5.25), at
-/// 10 m/s from s = 50; at 1 s a linear lane change one lane further right over 2 s.
-fn scenario() -> String {
-    let change = r#"<PrivateAction><LateralAction><LaneChangeAction><LaneChangeActionDynamics dynamicsShape="linear" value="2" dynamicsDimension="time"/><LaneChangeTarget><RelativeTargetLane entityRef="Ego" value="-1"/></LaneChangeTarget></LaneChangeAction></LateralAction></PrivateAction>"#;
+/// Ego on lane `lane` at 10 m/s from s = 50; at 1 s a linear lane change to `target` (a
+/// LaneChangeTarget's content) over 2 s.
+fn lane_change_from(lane: i32, target: &str) -> String {
+    let change = format!(
+        r#"<PrivateAction><LateralAction><LaneChangeAction><LaneChangeActionDynamics dynamicsShape="linear" value="2" dynamicsDimension="time"/><LaneChangeTarget>{target}</LaneChangeTarget></LaneChangeAction></LateralAction></PrivateAction>"#
+    );
     xosc(
-        &format!("{}{}", placed_in_one_private("Ego", 50.0, -2, 10.0), teleport("Target", 300.0, -1)),
-        &story("Ego", &event("Change", "parallel", change, &trigger(&sim_time(1.0, "greaterOrEqual", "none", 0.0)))),
+        &format!("{}{}", placed_in_one_private("Ego", 50.0, lane, 10.0), teleport("Target", 300.0, -1)),
+        &story("Ego", &event("Change", "parallel", &change, &trigger(&sim_time(1.0, "greaterOrEqual", "none", 0.0)))),
         &stop_at(4.0),
     )
+}
+
+/// Ego on lane -2, the last right lane of the fixture road (3.5 m wide, centre y = -5.25): a
+/// lane change one lane further right.
+fn scenario() -> String {
+    lane_change_from(-2, r#"<RelativeTargetLane entityRef="Ego" value="-1"/>"#)
 }
 
 #[test]
@@ -30,15 +38,10 @@ fn a_missing_target_lane_moves_as_esmini_moves() {
     assert!(run.warnings.iter().any(|w| w.message.contains("lane -3 does not exist")), "{:?}", run.warnings);
 }
 
-/// Ego on lane -1 at 10 m/s from s = 50; at 1 s a linear lane change to lane 2, which the
-/// fixture road does not have, on the other side of the centre line, over 2 s.
+/// Ego on lane -1: a lane change to lane 2, which the fixture road does not have, on the other
+/// side of the centre line.
 fn scenario_across() -> String {
-    let change = r#"<PrivateAction><LateralAction><LaneChangeAction><LaneChangeActionDynamics dynamicsShape="linear" value="2" dynamicsDimension="time"/><LaneChangeTarget><AbsoluteTargetLane value="2"/></LaneChangeTarget></LaneChangeAction></LateralAction></PrivateAction>"#;
-    xosc(
-        &format!("{}{}", placed_in_one_private("Ego", 50.0, -1, 10.0), teleport("Target", 300.0, -1)),
-        &story("Ego", &event("Change", "parallel", change, &trigger(&sim_time(1.0, "greaterOrEqual", "none", 0.0)))),
-        &stop_at(4.0),
-    )
+    lane_change_from(-1, r#"<AbsoluteTargetLane value="2"/>"#)
 }
 
 /// In the first step esmini's failed SetLanePos (LatLaneChangeAction::Step) keeps the offset
