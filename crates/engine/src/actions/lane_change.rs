@@ -139,7 +139,8 @@ impl<'a> Sim<'a> {
         if let Some(en) = self.entities.get_mut(e) {
             en.yaw_offset = 0.0;
         }
-        ActionRt::LaneChange(LaneChangeRt { transition: t, internal })
+        let missing_lane_sign = (internal_lane != target_lane).then_some(lane_sign);
+        ActionRt::LaneChange(LaneChangeRt { transition: t, internal, missing_lane_sign })
     }
 
     pub(crate) fn step_lane_change(&mut self, e: usize, l: &mut LaneChangeRt) -> bool {
@@ -185,7 +186,11 @@ impl<'a> Sim<'a> {
             t.value()
         };
         let lane_sign = sign(f64::from(l.internal.lane_id));
-        l.internal.offset = agnostic * lane_sign;
+        // In the first step to a missing lane esmini's Position::SetLanePos fails on the target
+        // lane's id but has already stored the offset made for it (sign of the target lane), which
+        // the move along s then applies in the entity's own lane; from the next step on, the
+        // internal position is in the entity's lane (LatLaneChangeAction::Step).
+        l.internal.offset = agnostic * l.missing_lane_sign.take().unwrap_or(lane_sign);
         let d_long = if instant {
             sign(speed) * step_len
         } else if time_like {

@@ -267,7 +267,7 @@ impl<'a> Sim<'a> {
         let mut t = Transition::new(DynamicsShape::Sinusoidal, DynamicsDimension::Time, time);
         t.set_start(lane_sign * offset_in_target);
         t.set_target(0.0);
-        Some(LaneChangeRt { transition: t, internal })
+        Some(LaneChangeRt { transition: t, internal, missing_lane_sign: None })
     }
 
     /// esmini's `CanChangeLane`: not while changing lane; the lane must exist here, be wide

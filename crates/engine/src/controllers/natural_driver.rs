@@ -274,7 +274,7 @@ impl<'a> Sim<'a> {
         t.set_start(lane_sign * offset);
         t.set_target(0.0);
         en.yaw_offset = 0.0;
-        Some(LaneChangeRt { transition: t, internal: LanePos { lane_id: lane, offset, ..lp } })
+        Some(LaneChangeRt { transition: t, internal: LanePos { lane_id: lane, offset, ..lp }, missing_lane_sign: None })
     }
 
     fn nd_event(&mut self, time: f64, name: &str, from: &str, transition: &str, to: &str) {
