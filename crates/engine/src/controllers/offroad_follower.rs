@@ -5,9 +5,12 @@
 //! − 0.5 · (own speed − the other's) (limited to ±1), its top speed 1.2 × the road's speed
 //! limit (esmini's Position::GetSpeedLimit: the road type's, else 120 km/h with more than one
 //! driving lane on its side, 60 km/h with one, 70 km/h off any road), at most the vehicle's.
-//! It works on both domains in override mode (the Controller base's defaults): the default
-//! controller leaves the entity alone, and it steps after the default controller has moved
-//! the one it follows.
+//! It operates on both domains in override mode (the Controller base's defaults) and steps
+//! after the default controller has moved the one it follows. Active on the lateral domain
+//! only, the default controller moves the entity along its lane first
+//! (ScenarioEngine::defaultController: the longitudinal domain is not overridden); the model
+//! then measures direction and distance from there but drives on from its own pose, which it
+//! writes back (ControllerOffroadFollower::Step ignores its domains).
 
 pub(crate) mod state;
 
@@ -25,6 +28,8 @@ impl OffroadFollowerRt {
         let num = |n: &str, d: f64| c.properties.get(n).and_then(|v| v.trim().parse::<f64>().ok()).filter(|v| v.is_finite()).unwrap_or(d);
         OffroadFollowerRt {
             active: false,
+            lateral: false,
+            longitudinal: false,
             follow: c.properties.get("followEntity").map(str::trim).filter(|s| !s.is_empty()).map(str::to_string),
             target_distance: num("targetDistance", 20.0),
             steering_rate: num("steeringRate", 4.0),
@@ -32,12 +37,26 @@ impl OffroadFollowerRt {
         }
     }
 
-    /// Switched on (ControllerOffroadFollower::Activate): the model starts from the entity's
-    /// pose and speed.
-    pub(crate) fn activate(&mut self, en: &crate::entities::Entity) {
-        self.active = true;
+    /// Switched on (ControllerOffroadFollower::Activate) on the given domains: the model starts
+    /// from the entity's pose and speed.
+    pub(crate) fn activate(&mut self, en: &crate::entities::Entity, lateral: bool, longitudinal: bool) {
+        self.active = lateral || longitudinal;
+        (self.lateral, self.longitudinal) = (lateral, longitudinal);
         let car = KinematicVehicle::new(en.x, en.y, en.h, en.speed, en.bbox[3], en.max_speed);
         self.vehicle = Some(AnalogVehicle::new(car, en.max_acc, en.max_dec, self.steering_rate));
+    }
+}
+
+impl OffroadFollowerRt {
+    /// Whether it holds the longitudinal domain: then esmini's default controller leaves the
+    /// entity alone (`IsControllerModeOnDomains(MODE_OVERRIDE, DOMAIN_MASK_LONG)`).
+    pub(crate) fn holds_longitudinal(&self) -> bool {
+        self.active && self.longitudinal
+    }
+
+    /// Whether it holds the lateral domain (lane changes and offsets wait).
+    pub(crate) fn holds_lateral(&self) -> bool {
+        self.active && self.lateral
     }
 }
 

@@ -4,6 +4,7 @@
 //! limit. Fixture `offroad_follower.xosc` (straight road): Lead at 12 m/s changes to lane 1 at
 //! t > 3; Follower starts 40 m behind in lane -2 at 5 m/s and follows it at 12 m. Expected
 //! values: esmini 3.6.0 on the same fixture (osc2cr drove the follower along its lane before).
+//! `offroad_follower_lateral_only.xosc`: the same, activated on the lateral domain only.
 
 use crate::common::*;
 
@@ -26,6 +27,28 @@ fn a_lead_right_behind_turns_the_follower_left_and_frame_0_caps_its_speed() {
     for (t, x, y, v) in
         [(0.0, 80.0, -1.75, 40.0), (0.01, 80.3992, -1.749744, 39.92), (1.0, 106.793604, 5.329344, 20.0), (6.0, 109.384025, -4.070577, 13.494833)]
     {
+        let e = at(&run, "Follower", t);
+        assert!(close(e.x, x, 1e-3) && close(e.y, y, 1e-3) && close(e.speed, v, 1e-4), "t {t}: {e:?}");
+    }
+}
+
+#[test]
+fn an_offroad_follower_active_laterally_only_measures_after_the_default_controller_moved_it() {
+    // offroad_follower_lateral_only.xosc: offroad_follower.xosc with the controller activated on
+    // the lateral domain only. esmini's default controller moves the follower along its lane
+    // first (ScenarioEngine::defaultController: the longitudinal domain is not overridden), so
+    // the controller measures the distance to the lead from a point one step ahead; its vehicle
+    // model then drives on from its own pose. Values: esmini 3.6.0 on the fixture (0.13–0.23 m
+    // away from t = 5 s when the default controller is kept off).
+    let run = run_fixture("offroad_follower_lateral_only.xosc", "straight.xodr");
+    assert!(run.warnings.is_empty(), "{:?}", run.warnings);
+    for (t, x, y, v) in [
+        (1.0, 27.518695, -4.976945, 10.0),
+        (5.0, 103.339109, -1.121961, 19.71956),
+        (6.0, 119.231585, 0.441235, 13.285308),
+        (8.0, 143.77127, 1.971088, 12.032209),
+        (12.0, 191.789134, 1.753248, 12.00006),
+    ] {
         let e = at(&run, "Follower", t);
         assert!(close(e.x, x, 1e-3) && close(e.y, y, 1e-3) && close(e.speed, v, 1e-4), "t {t}: {e:?}");
     }
