@@ -203,9 +203,10 @@ impl<'a> Sim<'a> {
 
     /// Whether an active controller of entity `e` in override mode holds its lateral domain
     /// (esmini's `IsControllerModeOnDomains(MODE_OVERRIDE, DOMAIN_MASK_LAT)`), under which a
-    /// lane change or a lane offset does nothing and never ends (LatLaneChangeAction,
-    /// LatLaneOffsetAction: Start and Step return early; a lateral distance action waits on
-    /// the longitudinal domain instead, `long_domain_overridden`): an ALKS R157 controller activated laterally in override mode, an
+    /// lane change, a lane offset or a trajectory does nothing and never ends
+    /// (LatLaneChangeAction, LatLaneOffsetAction, FollowTrajectoryAction: Start and Step return
+    /// early; a lateral distance action waits on the longitudinal domain instead,
+    /// `long_domain_overridden`): an ALKS R157 controller activated laterally in override mode, an
     /// OffroadFollower, a FollowReference following another entity. (ACC, ALKS, Looming and
     /// NaturalDriver operate on the longitudinal domain only; a ghost follower's actions drive
     /// its ghost.)

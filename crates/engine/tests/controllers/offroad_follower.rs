@@ -8,14 +8,34 @@
 
 use crate::common::*;
 
+/// esmini 3.6.0's follower in `offroad_follower.xosc`: (t, x, y, speed).
+const FOLLOWER: [(f64, f64, f64, f64); 4] =
+    [(1.0, 27.519, -4.977, 10.0), (4.0, 80.018, -2.238, 25.0), (6.0, 119.463, 0.442, 13.23), (12.0, 191.909, 1.753, 12.0)];
+
+fn assert_follower(run: &engine::Run) {
+    for (t, x, y, v) in FOLLOWER {
+        let e = at(run, "Follower", t);
+        assert!(close(e.x, x, 2e-3) && close(e.y, y, 2e-3) && close(e.speed, v, 6e-3), "t {t}: {e:?}");
+    }
+}
+
 #[test]
 fn an_offroad_follower_drives_after_its_lead() {
     let run = run_fixture("offroad_follower.xosc", "straight.xodr");
     assert!(run.warnings.is_empty(), "{:?}", run.warnings);
-    for (t, x, y, v) in [(1.0, 27.519, -4.977, 10.0), (4.0, 80.018, -2.238, 25.0), (6.0, 119.463, 0.442, 13.23), (12.0, 191.909, 1.753, 12.0)] {
-        let e = at(&run, "Follower", t);
-        assert!(close(e.x, x, 2e-3) && close(e.y, y, 2e-3) && close(e.speed, v, 6e-3), "t {t}: {e:?}");
-    }
+    assert_follower(&run);
+}
+
+#[test]
+fn a_trajectory_waits_while_an_offroad_follower_holds_the_lateral_domain() {
+    // offroad_follower_trajectory.xosc: a FollowTrajectoryAction swerving away at t > 1 s.
+    // esmini's FollowTrajectoryAction::Start and ::Step return at once under a controller in
+    // override mode on the lateral domain: its run is offroad_follower.xosc's to the last digit,
+    // and the action runs on until the end (osc2cr drove the trajectory: 104 m away).
+    let run = run_fixture("offroad_follower_trajectory.xosc", "straight.xodr");
+    assert_follower(&run);
+    let traj = |transition: &str| run.trace.events.iter().any(|ev| ev.element.ends_with("Traj") && ev.transition == transition);
+    assert!(traj("start") && !traj("end"), "the trajectory starts and never ends by itself: {:?}", run.trace.events);
 }
 
 #[test]
