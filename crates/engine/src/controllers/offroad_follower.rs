@@ -20,6 +20,8 @@ use super::analog_vehicle::AnalogVehicle;
 use super::kinematic_vehicle::KinematicVehicle;
 use super::looming::view::angle_difference;
 use crate::actions::lat_distance::entity_frame::angle_of_vector;
+use crate::dynamics::ESMINI_SMALL_NUMBER;
+use crate::entities::wrap_2pi;
 use crate::sim::Sim;
 use openscenario::Controller;
 
@@ -42,9 +44,22 @@ impl OffroadFollowerRt {
     pub(crate) fn activate(&mut self, en: &crate::entities::Entity, lateral: bool, longitudinal: bool) {
         self.active = lateral || longitudinal;
         (self.lateral, self.longitudinal) = (lateral, longitudinal);
-        let car = KinematicVehicle::new(en.x, en.y, en.h, en.speed, en.bbox[3], en.max_speed);
+        let car = KinematicVehicle::new(en.x, en.y, esmini_reported_heading(en.h), en.speed, en.bbox[3], en.max_speed);
         self.vehicle = Some(AnalogVehicle::new(car, en.max_acc, en.max_dec, self.steering_rate));
     }
+}
+
+/// The heading esmini reports for an entity facing `h` (Object::pos_.GetH()): Position::
+/// EvaluateHPR composes the road's rotation with the relative one (R0R12EulerAngles), whose
+/// guard against gimbal lock sets a cosine smaller than 1e-6 to ±1e-6, so a heading within a
+/// micro-radian of ±π/2 comes out 1e-6 rad from it. A lead exactly ahead or behind on a road
+/// along ±y lies on the side of π that this offset picks.
+fn esmini_reported_heading(h: f64) -> f64 {
+    let (sin, cos) = h.sin_cos();
+    if cos.abs() >= ESMINI_SMALL_NUMBER {
+        return h;
+    }
+    wrap_2pi(sin.atan2(if cos < 0.0 { -ESMINI_SMALL_NUMBER } else { ESMINI_SMALL_NUMBER }))
 }
 
 impl OffroadFollowerRt {
@@ -98,8 +113,9 @@ impl<'a> Sim<'a> {
         v.car.max_speed = (1.2 * self.speed_limit(e)).min(me.max_speed);
         let (dx, dy) = (lead.x - me.x, lead.y - me.y);
         // GetAngleDifference(GetAngleOfVector(dx, dy), h): a lead exactly behind is +π (the
-        // direction's x nudged off zero), which turns left.
-        let direction = angle_difference(angle_of_vector(dx, dy), me.h);
+        // direction's x nudged off zero), which turns left; along a road heading ±π/2 the
+        // heading esmini reports decides which side of π the lead lies.
+        let direction = angle_difference(angle_of_vector(dx, dy), esmini_reported_heading(me.h));
         let dist = dx.hypot(dy);
         let steering = direction.clamp(-1.0, 1.0);
         let throttle = (0.5 * (dist - f.target_distance) - 0.5 * (me.speed - lead.speed)).clamp(-1.0, 1.0);

@@ -5,6 +5,7 @@
 //! t > 3; Follower starts 40 m behind in lane -2 at 5 m/s and follows it at 12 m. Expected
 //! values: esmini 3.6.0 on the same fixture (osc2cr drove the follower along its lane before).
 //! `offroad_follower_lateral_only.xosc`: the same, activated on the lateral domain only.
+//! `straight_south.xodr`: `straight.xodr` heading south (hdg 4.7123889804).
 
 use crate::common::*;
 
@@ -47,6 +48,19 @@ fn a_lead_right_behind_turns_the_follower_left_and_frame_0_caps_its_speed() {
     for (t, x, y, v) in
         [(0.0, 80.0, -1.75, 40.0), (0.01, 80.3992, -1.749744, 39.92), (1.0, 106.793604, 5.329344, 20.0), (6.0, 109.384025, -4.070577, 13.494833)]
     {
+        let e = at(&run, "Follower", t);
+        assert!(close(e.x, x, 1e-3) && close(e.y, y, 1e-3) && close(e.speed, v, 1e-4), "t {t}: {e:?}");
+    }
+}
+
+#[test]
+fn a_lead_right_behind_on_a_road_heading_south_turns_the_follower_left_too() {
+    // offroad_follower_behind_south.xosc: the same on a road heading 4.7123889804 rad, where the
+    // lead lies 4.6e-10 m west of the follower. esmini reports the follower's heading as
+    // 3π/2 + 1e-6 (R0R12EulerAngles' gimbal-lock guard), which puts the lead at π − 1e-6: a
+    // left turn, the east run turned by −π/2 (osc2cr turned right: 109 m away).
+    let run = run_fixture("offroad_follower_behind_south.xosc", "straight_south.xodr");
+    for (t, x, y, v) in [(0.01, -1.749743, -80.3992, 39.92), (1.0, 5.329371, -106.793597, 20.0), (6.0, -4.070577, -109.384024, 13.494833)] {
         let e = at(&run, "Follower", t);
         assert!(close(e.x, x, 1e-3) && close(e.y, y, 1e-3) && close(e.speed, v, 1e-4), "t {t}: {e:?}");
     }
