@@ -64,9 +64,10 @@ impl<'a> Sim<'a> {
     fn overridden_on(&mut self, slot: usize, e: usize, p: &PrivateAction, tell: bool) -> Overridden {
         if !self.outside(e) {
             // a controller in override mode on the lateral domain holds the lateral actions
-            // (controllers::lateral_overridden)
+            // (controllers::lateral_overridden), a trajectory too: FollowTrajectoryAction::Start
+            // and ::Step return at once then, so it neither moves the entity nor ends
             // (a LateralDistanceAction is held by the longitudinal one instead: `idles_under_override`)
-            let lateral = matches!(p, PrivateAction::LaneChange { .. } | PrivateAction::LaneOffset { .. });
+            let lateral = matches!(p, PrivateAction::LaneChange { .. } | PrivateAction::LaneOffset { .. } | PrivateAction::FollowTrajectory { .. });
             return if lateral && self.lateral_overridden(e) { Overridden::Idles } else { Overridden::Runs };
         }
         let fate = overridden(p);

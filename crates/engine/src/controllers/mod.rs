@@ -141,7 +141,7 @@ impl<'a> Sim<'a> {
             }
             Some(Some(ControllerRt::OffroadFollower(f))) => {
                 if let Some(en) = self.entities.get(e) {
-                    f.activate(en);
+                    f.activate(en, lateral, longitudinal);
                 }
             }
             _ => {}
@@ -159,7 +159,7 @@ impl<'a> Sim<'a> {
         match self.controllers.get(e) {
             Some(Some(ControllerRt::Acc(a))) => a.overrides_longitudinal(),
             Some(Some(ControllerRt::FollowRoute(f))) => f.overrides_longitudinal(),
-            Some(Some(ControllerRt::OffroadFollower(f))) => f.active,
+            Some(Some(ControllerRt::OffroadFollower(f))) => f.holds_longitudinal(),
             // ControllerLooming operates on the longitudinal domain, in override mode unless
             // its `mode` says additive.
             Some(Some(ControllerRt::Looming(l))) => l.active && l.override_mode,
@@ -208,16 +208,17 @@ impl<'a> Sim<'a> {
 
     /// Whether an active controller of entity `e` in override mode holds its lateral domain
     /// (esmini's `IsControllerModeOnDomains(MODE_OVERRIDE, DOMAIN_MASK_LAT)`), under which a
-    /// lane change or a lane offset does nothing and never ends (LatLaneChangeAction,
-    /// LatLaneOffsetAction: Start and Step return early; a lateral distance action waits on
-    /// the longitudinal domain instead, `long_domain_overridden`): an ALKS R157 controller activated laterally in override mode, an
+    /// lane change, a lane offset or a trajectory does nothing and never ends
+    /// (LatLaneChangeAction, LatLaneOffsetAction, FollowTrajectoryAction: Start and Step return
+    /// early; a lateral distance action waits on the longitudinal domain instead,
+    /// `long_domain_overridden`): an ALKS R157 controller activated laterally in override mode, an
     /// OffroadFollower, a FollowReference following another entity. (ACC, ALKS, Looming and
     /// NaturalDriver operate on the longitudinal domain only; a ghost follower's actions drive
     /// its ghost.)
     pub(crate) fn lateral_overridden(&self, e: usize) -> bool {
         match self.controllers.get(e) {
             Some(Some(ControllerRt::AlksR157(a))) => a.active && a.override_mode && a.lateral,
-            Some(Some(ControllerRt::OffroadFollower(f))) => f.active,
+            Some(Some(ControllerRt::OffroadFollower(f))) => f.holds_lateral(),
             Some(Some(ControllerRt::FollowReference(f))) => f.active && !f.uses_ghost(),
             _ => false,
         }
@@ -254,7 +255,8 @@ impl<'a> Sim<'a> {
                 // until then the default controller leaves the entity alone.
                 ControllerRt::FollowGhost(f) => self.hold_follower(e, f.active),
                 ControllerRt::FollowReference(f) => self.hold_follower(e, f.active),
-                ControllerRt::OffroadFollower(f) => self.hold_follower(e, f.active),
+                // Active on the lateral domain only, the default controller moves it first.
+                ControllerRt::OffroadFollower(f) => self.hold_follower(e, f.holds_longitudinal()),
                 // Steps after the default controller (`step_route_followers`); its running lane
                 // change moves the entity instead of the default controller (esmini's override).
                 ControllerRt::FollowRoute(f) => self.hold_follower(e, f.holds_entity()),

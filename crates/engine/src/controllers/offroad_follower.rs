@@ -5,9 +5,12 @@
 //! − 0.5 · (own speed − the other's) (limited to ±1), its top speed 1.2 × the road's speed
 //! limit (esmini's Position::GetSpeedLimit: the road type's, else 120 km/h with more than one
 //! driving lane on its side, 60 km/h with one, 70 km/h off any road), at most the vehicle's.
-//! It works on both domains in override mode (the Controller base's defaults): the default
-//! controller leaves the entity alone, and it steps after the default controller has moved
-//! the one it follows.
+//! It operates on both domains in override mode (the Controller base's defaults) and steps
+//! after the default controller has moved the one it follows. Active on the lateral domain
+//! only, the default controller moves the entity along its lane first
+//! (ScenarioEngine::defaultController: the longitudinal domain is not overridden); the model
+//! then measures direction and distance from there but drives on from its own pose, which it
+//! writes back (ControllerOffroadFollower::Step ignores its domains).
 
 pub(crate) mod state;
 
@@ -17,6 +20,8 @@ use super::analog_vehicle::AnalogVehicle;
 use super::kinematic_vehicle::KinematicVehicle;
 use super::looming::view::angle_difference;
 use crate::actions::lat_distance::entity_frame::angle_of_vector;
+use crate::dynamics::ESMINI_SMALL_NUMBER;
+use crate::entities::wrap_2pi;
 use crate::sim::Sim;
 use openscenario::Controller;
 
@@ -25,6 +30,8 @@ impl OffroadFollowerRt {
         let num = |n: &str, d: f64| c.properties.get(n).and_then(|v| v.trim().parse::<f64>().ok()).filter(|v| v.is_finite()).unwrap_or(d);
         OffroadFollowerRt {
             active: false,
+            lateral: false,
+            longitudinal: false,
             follow: c.properties.get("followEntity").map(str::trim).filter(|s| !s.is_empty()).map(str::to_string),
             target_distance: num("targetDistance", 20.0),
             steering_rate: num("steeringRate", 4.0),
@@ -32,12 +39,39 @@ impl OffroadFollowerRt {
         }
     }
 
-    /// Switched on (ControllerOffroadFollower::Activate): the model starts from the entity's
-    /// pose and speed.
-    pub(crate) fn activate(&mut self, en: &crate::entities::Entity) {
-        self.active = true;
-        let car = KinematicVehicle::new(en.x, en.y, en.h, en.speed, en.bbox[3], en.max_speed);
+    /// Switched on (ControllerOffroadFollower::Activate) on the given domains: the model starts
+    /// from the entity's pose and speed.
+    pub(crate) fn activate(&mut self, en: &crate::entities::Entity, lateral: bool, longitudinal: bool) {
+        self.active = lateral || longitudinal;
+        (self.lateral, self.longitudinal) = (lateral, longitudinal);
+        let car = KinematicVehicle::new(en.x, en.y, esmini_reported_heading(en.h), en.speed, en.bbox[3], en.max_speed);
         self.vehicle = Some(AnalogVehicle::new(car, en.max_acc, en.max_dec, self.steering_rate));
+    }
+}
+
+/// The heading esmini reports for an entity facing `h` (Object::pos_.GetH()): Position::
+/// EvaluateHPR composes the road's rotation with the relative one (R0R12EulerAngles), whose
+/// guard against gimbal lock sets a cosine smaller than 1e-6 to ±1e-6, so a heading within a
+/// micro-radian of ±π/2 comes out 1e-6 rad from it. A lead exactly ahead or behind on a road
+/// along ±y lies on the side of π that this offset picks.
+fn esmini_reported_heading(h: f64) -> f64 {
+    let (sin, cos) = h.sin_cos();
+    if cos.abs() >= ESMINI_SMALL_NUMBER {
+        return h;
+    }
+    wrap_2pi(sin.atan2(if cos < 0.0 { -ESMINI_SMALL_NUMBER } else { ESMINI_SMALL_NUMBER }))
+}
+
+impl OffroadFollowerRt {
+    /// Whether it holds the longitudinal domain: then esmini's default controller leaves the
+    /// entity alone (`IsControllerModeOnDomains(MODE_OVERRIDE, DOMAIN_MASK_LONG)`).
+    pub(crate) fn holds_longitudinal(&self) -> bool {
+        self.active && self.longitudinal
+    }
+
+    /// Whether it holds the lateral domain (lane changes and offsets wait).
+    pub(crate) fn holds_lateral(&self) -> bool {
+        self.active && self.lateral
     }
 }
 
@@ -79,8 +113,9 @@ impl<'a> Sim<'a> {
         v.car.max_speed = (1.2 * self.speed_limit(e)).min(me.max_speed);
         let (dx, dy) = (lead.x - me.x, lead.y - me.y);
         // GetAngleDifference(GetAngleOfVector(dx, dy), h): a lead exactly behind is +π (the
-        // direction's x nudged off zero), which turns left.
-        let direction = angle_difference(angle_of_vector(dx, dy), me.h);
+        // direction's x nudged off zero), which turns left; along a road heading ±π/2 the
+        // heading esmini reports decides which side of π the lead lies.
+        let direction = angle_difference(angle_of_vector(dx, dy), esmini_reported_heading(me.h));
         let dist = dx.hypot(dy);
         let steering = direction.clamp(-1.0, 1.0);
         let throttle = (0.5 * (dist - f.target_distance) - 0.5 * (me.speed - lead.speed)).clamp(-1.0, 1.0);

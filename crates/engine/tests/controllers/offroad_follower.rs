@@ -4,17 +4,39 @@
 //! limit. Fixture `offroad_follower.xosc` (straight road): Lead at 12 m/s changes to lane 1 at
 //! t > 3; Follower starts 40 m behind in lane -2 at 5 m/s and follows it at 12 m. Expected
 //! values: esmini 3.6.0 on the same fixture (osc2cr drove the follower along its lane before).
+//! `offroad_follower_lateral_only.xosc`: the same, activated on the lateral domain only.
+//! `straight_south.xodr`: `straight.xodr` heading south (hdg 4.7123889804).
 
 use crate::common::*;
+
+/// esmini 3.6.0's follower in `offroad_follower.xosc`: (t, x, y, speed).
+const FOLLOWER: [(f64, f64, f64, f64); 4] =
+    [(1.0, 27.519, -4.977, 10.0), (4.0, 80.018, -2.238, 25.0), (6.0, 119.463, 0.442, 13.23), (12.0, 191.909, 1.753, 12.0)];
+
+fn assert_follower(run: &engine::Run) {
+    for (t, x, y, v) in FOLLOWER {
+        let e = at(run, "Follower", t);
+        assert!(close(e.x, x, 2e-3) && close(e.y, y, 2e-3) && close(e.speed, v, 6e-3), "t {t}: {e:?}");
+    }
+}
 
 #[test]
 fn an_offroad_follower_drives_after_its_lead() {
     let run = run_fixture("offroad_follower.xosc", "straight.xodr");
     assert!(run.warnings.is_empty(), "{:?}", run.warnings);
-    for (t, x, y, v) in [(1.0, 27.519, -4.977, 10.0), (4.0, 80.018, -2.238, 25.0), (6.0, 119.463, 0.442, 13.23), (12.0, 191.909, 1.753, 12.0)] {
-        let e = at(&run, "Follower", t);
-        assert!(close(e.x, x, 2e-3) && close(e.y, y, 2e-3) && close(e.speed, v, 6e-3), "t {t}: {e:?}");
-    }
+    assert_follower(&run);
+}
+
+#[test]
+fn a_trajectory_waits_while_an_offroad_follower_holds_the_lateral_domain() {
+    // offroad_follower_trajectory.xosc: a FollowTrajectoryAction swerving away at t > 1 s.
+    // esmini's FollowTrajectoryAction::Start and ::Step return at once under a controller in
+    // override mode on the lateral domain: its run is offroad_follower.xosc's to the last digit,
+    // and the action runs on until the end (osc2cr drove the trajectory: 104 m away).
+    let run = run_fixture("offroad_follower_trajectory.xosc", "straight.xodr");
+    assert_follower(&run);
+    let traj = |transition: &str| run.trace.events.iter().any(|ev| ev.element.ends_with("Traj") && ev.transition == transition);
+    assert!(traj("start") && !traj("end"), "the trajectory starts and never ends by itself: {:?}", run.trace.events);
 }
 
 #[test]
@@ -26,6 +48,41 @@ fn a_lead_right_behind_turns_the_follower_left_and_frame_0_caps_its_speed() {
     for (t, x, y, v) in
         [(0.0, 80.0, -1.75, 40.0), (0.01, 80.3992, -1.749744, 39.92), (1.0, 106.793604, 5.329344, 20.0), (6.0, 109.384025, -4.070577, 13.494833)]
     {
+        let e = at(&run, "Follower", t);
+        assert!(close(e.x, x, 1e-3) && close(e.y, y, 1e-3) && close(e.speed, v, 1e-4), "t {t}: {e:?}");
+    }
+}
+
+#[test]
+fn a_lead_right_behind_on_a_road_heading_south_turns_the_follower_left_too() {
+    // offroad_follower_behind_south.xosc: the same on a road heading 4.7123889804 rad, where the
+    // lead lies 4.6e-10 m west of the follower. esmini reports the follower's heading as
+    // 3π/2 + 1e-6 (R0R12EulerAngles' gimbal-lock guard), which puts the lead at π − 1e-6: a
+    // left turn, the east run turned by −π/2 (osc2cr turned right: 109 m away).
+    let run = run_fixture("offroad_follower_behind_south.xosc", "straight_south.xodr");
+    for (t, x, y, v) in [(0.01, -1.749743, -80.3992, 39.92), (1.0, 5.329371, -106.793597, 20.0), (6.0, -4.070577, -109.384024, 13.494833)] {
+        let e = at(&run, "Follower", t);
+        assert!(close(e.x, x, 1e-3) && close(e.y, y, 1e-3) && close(e.speed, v, 1e-4), "t {t}: {e:?}");
+    }
+}
+
+#[test]
+fn an_offroad_follower_active_laterally_only_measures_after_the_default_controller_moved_it() {
+    // offroad_follower_lateral_only.xosc: offroad_follower.xosc with the controller activated on
+    // the lateral domain only. esmini's default controller moves the follower along its lane
+    // first (ScenarioEngine::defaultController: the longitudinal domain is not overridden), so
+    // the controller measures the distance to the lead from a point one step ahead; its vehicle
+    // model then drives on from its own pose. Values: esmini 3.6.0 on the fixture (0.13–0.23 m
+    // away from t = 5 s when the default controller is kept off).
+    let run = run_fixture("offroad_follower_lateral_only.xosc", "straight.xodr");
+    assert!(run.warnings.is_empty(), "{:?}", run.warnings);
+    for (t, x, y, v) in [
+        (1.0, 27.518695, -4.976945, 10.0),
+        (5.0, 103.339109, -1.121961, 19.71956),
+        (6.0, 119.231585, 0.441235, 13.285308),
+        (8.0, 143.77127, 1.971088, 12.032209),
+        (12.0, 191.789134, 1.753248, 12.00006),
+    ] {
         let e = at(&run, "Follower", t);
         assert!(close(e.x, x, 1e-3) && close(e.y, y, 1e-3) && close(e.speed, v, 1e-4), "t {t}: {e:?}");
     }

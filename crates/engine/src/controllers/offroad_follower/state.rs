@@ -5,6 +5,9 @@ use crate::controllers::analog_vehicle::AnalogVehicle;
 #[derive(Debug, Clone)]
 pub(crate) struct OffroadFollowerRt {
     pub active: bool,
+    /// The domains it is active on (ActivateControllerAction's `lateral`, `longitudinal`).
+    pub(super) lateral: bool,
+    pub(super) longitudinal: bool,
     /// `followEntity` (esmini does nothing without it).
     pub(super) follow: Option<String>,
     /// `targetDistance`, m (20 by default).
