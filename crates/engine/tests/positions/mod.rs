@@ -11,3 +11,4 @@ mod route_position_against_lane;
 mod route_position_dropped_waypoints;
 mod route_position_from_current_entity;
 mod route_position_missing_lane_waypoint;
+mod world_point_on_overlapping_roads;
