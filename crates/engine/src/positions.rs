@@ -21,6 +21,10 @@ pub(crate) struct Placement {
     pub h: f64,
     /// The exact lane position when the position was given in road terms.
     pub lane: Option<LanePos>,
+    /// The world point is not the lane position's: esmini set the road coordinates but left
+    /// the world point (a RoutePosition on a lane the road does not have); moving goes on from
+    /// the lane position.
+    pub world_left: bool,
 }
 
 /// Why a position could not be resolved.
@@ -51,15 +55,15 @@ pub(crate) fn resolve_with_route(
                 Some(o) => {
                     let (x, y, _) = o.apply(*x, *y, 0.0);
                     let h = (h + o.hdg).rem_euclid(std::f64::consts::TAU);
-                    Ok(Placement { x, y, z: z.map(|z| z + o.z), h, lane: None })
+                    Ok(Placement { x, y, z: z.map(|z| z + o.z), h, lane: None, world_left: false })
                 }
-                None => Ok(Placement { x: *x, y: *y, z: *z, h, lane: None }),
+                None => Ok(Placement { x: *x, y: *y, z: *z, h, lane: None, world_left: false }),
             }
         }
         Position::RelativeWorld { entity, dx, dy, dz, orientation } => {
             let e = find(entity)?;
             let h = orient(e.h, orientation.as_ref());
-            Ok(Placement { x: e.x + dx, y: e.y + dy, z: dz.map(|d| e.z + d), h, lane: None })
+            Ok(Placement { x: e.x + dx, y: e.y + dy, z: dz.map(|d| e.z + d), h, lane: None, world_left: false })
         }
         Position::RelativeObject { entity, dx, dy, dz, orientation } => {
             let e = find(entity)?;
@@ -69,7 +73,7 @@ pub(crate) fn resolve_with_route(
             // sloped road the offsets shrink horizontally.
             let (pitch, roll) = net.map_or((0.0, 0.0), |n| crate::attitude::surface_pitch_roll(n, e));
             let [vx, vy, vz] = rotate_hpr(e.h, pitch, roll, [*dx, *dy, dz.unwrap_or(0.0)]);
-            Ok(Placement { x: e.x + vx, y: e.y + vy, z: dz.map(|_| e.z + vz), h, lane: None })
+            Ok(Placement { x: e.x + vx, y: e.y + vy, z: dz.map(|_| e.z + vz), h, lane: None, world_left: false })
         }
         Position::Lane { road_id, lane_id, s, offset, orientation } => {
             let net = net.ok_or("a LanePosition needs a road network")?;
@@ -169,7 +173,7 @@ pub(crate) fn place(
     // Facing the other way than the lane's direction makes the entity drive against s.
     let rel = wrap(h - pose.road_heading);
     lp.dir = if rel.abs() <= std::f64::consts::FRAC_PI_2 + 1e-9 { 1.0 } else { -1.0 };
-    Ok(Placement { x: pose.x, y: pose.y, z: Some(pose.z), h, lane: Some(lp) })
+    Ok(Placement { x: pose.x, y: pose.y, z: Some(pose.z), h, lane: Some(lp), world_left: false })
 }
 
 /// Face `p` as esmini faces a road position (OSCPositionRoad, a RELATIVE_ROAD position): an

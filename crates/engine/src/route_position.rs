@@ -74,7 +74,8 @@ pub(crate) fn plan_route(route: &Route, net: &RoadNetwork, entities: &[Entity]) 
 /// - FromRoadCoordinates' t is read as an integer (ScenarioReader's strtoi: 2.6 is 2);
 /// - a lane the road does not have there leaves the position where a new one is, the world
 ///   origin, turned by the angle above taken on lane 0 (Position::SetLanePosMode fails before
-///   Track2XYZ and before it sets the lane id);
+///   Track2XYZ and before it sets the lane id), yet with the road, s and offset set: moving
+///   goes on from lane 0 there;
 /// - FromCurrentEntity is not implemented by esmini: its position is the world origin, heading 0.
 pub(crate) fn route_placement(
     route: &Route,
@@ -95,7 +96,7 @@ pub(crate) fn esmini_deviation(pos: &openscenario::Position, net: Option<&RoadNe
 
 /// The world origin, where esmini leaves a position it could not set.
 fn origin(h: f64) -> Placement {
-    Placement { x: 0.0, y: 0.0, z: Some(0.0), h, lane: None }
+    Placement { x: 0.0, y: 0.0, z: Some(0.0), h, lane: None, world_left: false }
 }
 
 fn resolve_route(
@@ -162,7 +163,20 @@ fn resolve_route(
                 (_, h) => h.unwrap_or(0.0),
             };
             notes.push(format!("RoutePosition: {e}; the position is the world origin, as esmini 3.6 leaves it"));
-            return Ok((origin(turn), Some(notes.join("; "))));
+            // Position::SetLanePosMode has set road and s (SetLongitudinalTrackPos) and the
+            // offset before it finds the lane missing; its lane id stays 0. The world point is
+            // not recomputed (no Track2XYZ), but the default controller moves the entity on from
+            // those road coordinates: lane 0, the RoutePosition's offset.
+            let mut p = origin(turn);
+            p.world_left = true;
+            p.lane = (lane.is_some() && road < net.roads.len()).then_some(crate::roads::lane_position::LanePos {
+                road,
+                lane_id: 0,
+                s,
+                offset,
+                dir: if turn.cos() >= 0.0 { 1.0 } else { -1.0 },
+            });
+            return Ok((p, Some(notes.join("; "))));
         }
     };
     let turn = match (lane, h) {

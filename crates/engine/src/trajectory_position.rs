@@ -27,7 +27,7 @@ pub(crate) fn trajectory_placement(
         Some(Orientation { h: Some(h), .. }) => p.heading + h,
         _ => p.heading,
     };
-    Ok(Placement { x, y, z: None, h, lane: None })
+    Ok(Placement { x, y, z: None, h, lane: None, world_left: false })
 }
 
 /// The world pose of a position resolved for a trajectory's vertex or control point. A world

@@ -68,6 +68,9 @@ impl<'a> Sim<'a> {
                 }
                 en.set_lane_pos(net, lp);
                 en.h = crate::entities::wrap_2pi(placement.h);
+                if placement.world_left {
+                    (en.x, en.y, en.z) = (placement.x, placement.y, placement.z.unwrap_or(0.0));
+                }
             }
             _ => en.set_world_snapping(net, placement.x, placement.y, placement.z, placement.h, false),
         }
