@@ -18,8 +18,8 @@ pub(crate) mod view;
 use state::LoomingRt;
 
 use super::analog_vehicle::AnalogVehicle;
-use crate::roads::move_along_s;
 use crate::roads::road_follow::at_dead_end;
+use crate::roads::{move_along_route_drawing, move_along_s};
 use crate::sim::Sim;
 use openscenario::Controller;
 
@@ -146,15 +146,19 @@ impl<'a> Sim<'a> {
 
     /// ControllerLooming::GetProbeInfo(distance, LOOKAHEADMODE_AT_LANE_CENTER).relative_h: the
     /// angle, from the entity's heading, to the lane centre `distance` ahead along the road
-    /// (and its point).
-    fn looming_probe(&self, e: usize, distance: f64) -> Option<(f64, f64, f64)> {
+    /// (and its point). The probe is a copy of the position without its route moved by
+    /// Position::MoveAlongS with junction selector angle 0: at a junction whose arms turn
+    /// alike (the two arms of a T) MoveToConnectingRoad draws from esmini's global generator,
+    /// so every probe across such a junction takes its arm by a draw and moves the sequence on.
+    fn looming_probe(&mut self, e: usize, distance: f64) -> Option<(f64, f64, f64)> {
         let net = self.net?;
         let en = self.entities.get(e)?;
         let mut lp = en.lane?;
         lp.offset = 0.0;
         if distance.abs() > SMALL_NUMBER {
-            move_along_s(net, &mut lp, distance);
+            move_along_route_drawing(net, &mut lp, distance, None, &mut self.random, false);
         }
+        let en = self.entities.get(e)?;
         let p = lp.pose(net)?;
         let (dx, dy) = (p.x - en.x, p.y - en.y);
         let (sn, cs) = (-en.h).sin_cos();
@@ -175,6 +179,7 @@ impl<'a> Sim<'a> {
         let current = me.speed;
         let mut far_dist = FAR_POINT;
         let near = self.looming_probe(e, NEAR_POINT).map_or(0.0, |p| p.0);
+        let Some(me) = self.entities.get(e) else { return };
         // The far tangent point on the lane edges.
         let mut far = None;
         let mut intersection = false;
@@ -256,9 +261,15 @@ impl<'a> Sim<'a> {
             if let Some(v) = l.vehicle.map(|v| v.car) {
                 let before = en.lane;
                 // Locate it first on the road its lane leads to (esmini keeps the connecting
-                // road it is on where junction roads overlap).
-                if let (Some(net), Some(mut lp)) = (net, en.lane) {
+                // road it is on where junction roads overlap); entering a junction, on the
+                // connecting road XYZ2TrackPos prefers (`junction_entry`).
+                if let (Some(net), Some(mut lp), Some(b)) = (net, en.lane, before) {
                     move_along_s(net, &mut lp, l.speed() * dt);
+                    if lp.road != b.road {
+                        if let Some(p) = crate::roads::junction_entry::entry_connector(net, &b, v.x, v.y) {
+                            lp = crate::roads::LanePos { road: p.road, lane_id: p.lane_id, s: p.s, offset: p.offset, dir: lp.dir };
+                        }
+                    }
                     en.lane = Some(lp);
                 }
                 // Position::SetLockOnLane(true), then SetInertiaPos.

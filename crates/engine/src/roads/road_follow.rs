@@ -8,9 +8,10 @@
 //! far end turns least from the driving direction of the entity's lane wins (whichever way the
 //! entity faces or moves); a later one that turns less
 //! wins outright, one that turns as much (within 1e-10 rad, e.g. the two ±90° arms of a T) wins
-//! when a coin drawn from esmini's global generator says 1 (`esmini_random`). Only the default
-//! controller's move draws (`move_along_route_drawing`); probes and other moves keep the earlier
-//! arm at a tie, so they never disturb the generator's sequence.
+//! when a coin drawn from esmini's global generator says 1 (`esmini_random`). The default
+//! controller's move draws (`move_along_route_drawing`), and so do the looming controller's
+//! lane-centre probes (Position::GetProbeInfo moves a copy of the position the same way); other
+//! moves keep the earlier arm at a tie, so they never disturb the generator's sequence.
 
 use super::lane_geometry::lane_borders;
 use super::lane_position::LanePos;

@@ -124,3 +124,28 @@ fn looming_advanced_test_goes_through_the_junction_as_esmini() {
     }
     assert!(close(r.trace.end_time(), 41.38, 1e-9), "{}", r.trace.end_time());
 }
+
+#[test]
+fn at_a_t_junction_the_probes_draw_and_the_car_takes_the_arm_esmini_attaches_it_to() {
+    // looming_tee.xosc on tee_lht.xodr (the difftest generator's left-hand-traffic T): the car
+    // drives up the stem (road 3) into the junction alone. Its lane-centre probes at 10 and 80 m
+    // cross the junction, whose two arms turn alike: each probe takes its arm by a draw from
+    // esmini's generator (Position::MoveToConnectingRoad, junction selector angle 0), so the far
+    // point flips between the arms and the car wobbles before the junction. Entering it, the
+    // car's world pose is attached to the later arm in the file (road 105, turning left:
+    // Position::XYZ2TrackPos prefers among directly connected roads the one that bends least,
+    // a later one at equal bend). (entity, time, x, y, h) from esmini 3.6.0's trace.
+    let r = crate::common::run_fixture("looming_tee.xosc", "tee_lht.xodr");
+    let rows = [
+        ("Ego", 5.0, -1.702535, -65.009038, 1.576907),
+        ("Ego", 6.0, -1.831787, -50.011303, 1.571637),
+        ("Ego", 8.0, -1.699638, -20.017195, 1.551424),
+        ("Ego", 8.5, -3.090714, -12.726137, 1.978605),
+        ("Ego", 9.0, -8.13998, -7.295732, 2.520276),
+        ("Ego", 10.0, -22.246439, -2.436198, 2.934438),
+        ("Ego", 12.0, -52.131593, -0.697289, 3.161905),
+    ];
+    crate::common::assert_esmini_poses(&r, &rows, 1e-3, 1e-4);
+    let road = at(&r, "Ego", 8.5).road.expect("on a road");
+    assert_eq!(road.road, 8, "the left arm, road 105 (the ninth road): {road:?}");
+}
