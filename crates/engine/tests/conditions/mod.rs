@@ -11,4 +11,5 @@ mod freespace_distance_sign;
 mod ignored_value_conditions;
 mod offroad_lane_offset;
 mod reach_position_all;
+mod standstill_clock;
 mod undefined_headway_ttc;
