@@ -267,14 +267,10 @@ fn directed_acceleration(e: &crate::entities::Entity, direction: Option<openscen
     use openscenario::DirectionalDimension as D;
     let (along, lateral) = in_frame(e.acc_vec, e.h);
     match direction {
+        // Position::GetAcc: the magnitude signed by the component along the heading with
+        // CommonMini's SIGN, which is +1 for 0 (a purely sideways acceleration is positive)
         None => {
-            let sign = if along > 0.0 {
-                1.0
-            } else if along < 0.0 {
-                -1.0
-            } else {
-                0.0
-            };
+            let sign = if along < 0.0 { -1.0 } else { 1.0 };
             sign * e.acc_vec.0.hypot(e.acc_vec.1)
         }
         Some(D::Longitudinal) => along,
