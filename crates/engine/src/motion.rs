@@ -74,7 +74,7 @@ impl<'a> Sim<'a> {
 
     /// Update derived quantities after the moves of a step of length `dt`.
     pub(crate) fn after_move(&mut self, before: &[Before], dt: f64) {
-        let time = self.time;
+        let (time, clock) = (self.time, self.clock);
         // ScenarioEngine::prepareStep measures no motion of a ghost restarted in this step
         // (RESTART mode): no odometer, rates or stored old state, so the next step measures
         // the jump back to its entity as travel (its odometer counts it) — `snapshot` in
@@ -151,17 +151,19 @@ impl<'a> Sim<'a> {
             } else if !en.at_road_end {
                 en.end_of_road = false;
             }
-            if en.speed.abs() < STAND_STILL {
-                en.standstill_since.get_or_insert(time);
-            } else {
+            // ScenarioEngine::step stamps both on its accumulated clock (`Sim::clock`), and
+            // Object::IsStandStill / IsOffRoad read a time stamp of 0 as "no": an entity
+            // standing or off the road from the start is noted so at the next step.
+            let stamp = (clock > crate::dynamics::ESMINI_SMALL_NUMBER).then_some(clock);
+            if en.speed.abs() >= STAND_STILL {
                 en.standstill_since = None;
+            } else if en.standstill_since.is_none() {
+                en.standstill_since = stamp;
             }
             if en.on_road || en.lane.is_none() && self.net.is_none() {
                 en.offroad_since = None;
-            } else if time > crate::dynamics::ESMINI_SMALL_NUMBER {
-                // esmini's Object::IsOffRoad reads a time stamp of 0 as on the road: an entity
-                // off the road from the start is noted so at the next step
-                en.offroad_since.get_or_insert(time);
+            } else if en.offroad_since.is_none() {
+                en.offroad_since = stamp;
             }
         }
     }

@@ -122,6 +122,7 @@ impl<'a> Simulation<'a> {
         let (sim, before) = (&mut self.sim, &mut self.before);
         let root = 0;
         sim.time = self.t0;
+        sim.clock = self.t0;
         sim.align_trailers();
         // sim.rs put the Init actions in esmini's order (init_order.rs)
         for slot in sim.init_actions.clone() {
@@ -305,6 +306,7 @@ fn frame(sim: &mut Sim, before: &mut [Before], t: f64, dt: f64) -> bool {
     // (RESTARTING turned RESTART) lets everything move again from here on.
     let restarting = sim.ghost_restarting();
     sim.time = t + dt;
+    sim.clock += dt;
     if restarting {
         sim.hold_during_restart();
     } else {

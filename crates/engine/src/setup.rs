@@ -22,6 +22,7 @@ impl<'a> Sim<'a> {
             net,
             dt,
             time: 0.0,
+            clock: 0.0,
             entities: Entity::from_scenario(scenario),
             nodes: Vec::new(),
             triggers: Vec::new(),

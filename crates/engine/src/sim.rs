@@ -21,6 +21,11 @@ pub(crate) struct Sim<'a> {
     pub dt: f64,
     /// Simulation time of the storyboard step in progress, s.
     pub time: f64,
+    /// esmini's `simulationTime_`, which `ScenarioEngine::step` accumulates by adding the step
+    /// each frame (and a ghost restart rewinds): `time` is the step count times the step, and
+    /// the two differ in the last bits. The stand-still and off-road durations are measured on
+    /// this one, as esmini measures them, because its strict comparison decides on those bits.
+    pub clock: f64,
     pub entities: Vec<Entity>,
     pub nodes: Vec<Node>,
     pub triggers: Vec<TriggerRt<'a>>,

@@ -163,10 +163,13 @@ impl<'a> Sim<'a> {
             C::RelativeClearance { .. } => false,
             C::RelativeSpeed { value, rule, direction, .. } => o.is_some_and(|o| compare(relative_speed(e, o, *direction), *value, *rule)),
             C::Acceleration { value, rule, direction } => compare(directed_acceleration(e, *direction), *value, *rule),
-            C::StandStill { duration } => e.standstill_since.is_some_and(|s| t - s >= duration - SMALL),
+            // TrigByStandStill and TrigByOffRoad: strictly longer than the duration, on esmini's
+            // accumulated clock (`Sim::clock`; an exact duration of whole steps is usually one
+            // step short there)
+            C::StandStill { duration } => e.standstill_since.is_some_and(|s| self.clock - s > *duration),
             C::TraveledDistance { value } => e.odometer >= *value,
             C::EndOfRoad { duration } => e.end_of_road && t - e.end_of_road_since >= duration - SMALL,
-            C::Offroad { duration } => e.offroad_since.is_some_and(|s| t - s >= duration - SMALL),
+            C::Offroad { duration } => e.offroad_since.is_some_and(|s| self.clock - s > *duration),
             C::ReachPosition { tolerance, .. } => point.is_some_and(|(x, y)| (e.x - x).hypot(e.y - y) < *tolerance),
             C::Distance { value, rule, options, .. } => point.is_some_and(|(x, y)| {
                 let kind = options.relative_distance_type.unwrap_or(RelativeDistanceType::EuclidianDistance);
@@ -264,14 +267,10 @@ fn directed_acceleration(e: &crate::entities::Entity, direction: Option<openscen
     use openscenario::DirectionalDimension as D;
     let (along, lateral) = in_frame(e.acc_vec, e.h);
     match direction {
+        // Position::GetAcc: the magnitude signed by the component along the heading with
+        // CommonMini's SIGN, which is +1 for 0 (a purely sideways acceleration is positive)
         None => {
-            let sign = if along > 0.0 {
-                1.0
-            } else if along < 0.0 {
-                -1.0
-            } else {
-                0.0
-            };
+            let sign = if along < 0.0 { -1.0 } else { 1.0 };
             sign * e.acc_vec.0.hypot(e.acc_vec.1)
         }
         Some(D::Longitudinal) => along,

@@ -106,6 +106,12 @@ impl<'a> Sim<'a> {
         // the ACC then takes as its set speed and brakes to). The default controller's entities
         // get this in `default_controller`; the ACC moves its own in override mode.
         if a.override_mode {
+            // ...and notes the end of the road (the EndOfRoadCondition's time stamp) from the
+            // status of that last move: one step after the arrival, where the default
+            // controller's move is noted in its own step.
+            if let Some(en) = self.entities.get_mut(e) {
+                en.at_road_end = a.at_end;
+            }
             if !a.at_end {
                 a.end_seen = false;
             } else if !a.end_seen {
@@ -189,7 +195,10 @@ impl<'a> Sim<'a> {
                 (Some(net), Some(mut lp)) => {
                     let pedestrian = en.kind == crate::entities::EntityKind::Pedestrian;
                     let status = move_along_route_drawing(net, &mut lp, a.current_speed * dt, en.route.as_deref(), random, pedestrian);
-                    a.at_end = status == MoveStatus::EndOfRoad;
+                    // Position::MoveAlongS flags the end of a road without a successor
+                    // after any move, one of 0 m too: a stopped ACC stays at the end.
+                    let stays = a.at_end && a.current_speed * dt == 0.0;
+                    a.at_end = stays || status == MoveStatus::EndOfRoad;
                     en.set_lane_pos(net, lp);
                 }
                 _ => {

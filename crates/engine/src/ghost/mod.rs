@@ -241,6 +241,7 @@ impl<'a> Sim<'a> {
         match g.mode {
             GhostMode::Restart => {
                 g.clock -= g.headstart;
+                self.clock -= g.headstart;
                 g.mode = GhostMode::Restarting;
                 true
             }

@@ -20,3 +20,14 @@ fn an_acceleration_condition_sees_the_centripetal_acceleration() {
     assert_eq!(start("Signed"), None);
     assert_eq!(start("Longitudinal"), None);
 }
+
+/// Position::GetAcc signs the magnitude with CommonMini's SIGN, +1 for a component of 0: a
+/// purely sideways acceleration (a step lane offset) is positive both when the entity jumps
+/// sideways and when it stops moving sideways. Fixture `acceleration_sideways_sign.xosc`:
+/// esmini 3.6.0 starts Up (> 2.06) at 1.02 s and Down (< -2.06) never.
+#[test]
+fn a_purely_sideways_acceleration_counts_as_positive() {
+    let run = run_fixture_on("acceleration_sideways_sign.xosc", "straight.xodr", 3.0);
+    assert!(event_time(&run, "Up", "start").is_some_and(|t| close(t, 1.02, 1e-9)), "{:?}", event_time(&run, "Up", "start"));
+    assert_eq!(event_time(&run, "Down", "start"), None);
+}
