@@ -143,6 +143,9 @@ impl<'a> Simulation<'a> {
             sim.step_acc_controllers(0.0);
             sim.step_alks_r157_controllers(0.0);
             sim.step_looming_controllers(0.0);
+            // ControllerFollowRoute::Step too: a route it cannot plan (start and target on the
+            // same road and lane) deactivates it here, and in test mode stops the entity at once
+            sim.step_route_followers(0.0);
             sim.step_offroad_followers_frame0();
         }
         sim.pull_trailers();

@@ -581,10 +581,11 @@ impl<'a> Sim<'a> {
         let speed = if self.alks_check_critical(e, a, v) { self.alks_react(a, v) } else { self.alks_cruise(e, a, v) };
         let net = self.net;
         let Some(en) = self.entities.get_mut(e) else { return };
-        // frame 0 (dt 0) moves nothing: only the model's state and the speed are set. Active
-        // on the lateral domain only, the default controller has moved the entity already, and
-        // this moves it again (ControllerALKS_R157SM::Step moves it in override mode).
-        if a.override_mode && !a.moved_by_action && dt > 0.0 {
+        // Active on the lateral domain only, the default controller has moved the entity
+        // already, and this moves it again (ControllerALKS_R157SM::Step moves it in override
+        // mode). In frame 0 (dt 0) esmini's MoveAlongS(0) still puts the entity where its road
+        // coordinates are: one placed before the road's start or past its end lands on it.
+        if a.override_mode && !a.moved_by_action {
             match (net, en.lane) {
                 (Some(net), Some(mut lp)) => {
                     move_along_s(net, &mut lp, speed * dt);

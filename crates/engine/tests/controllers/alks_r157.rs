@@ -70,3 +70,17 @@ fn a_speed_action_ends_at_once_under_the_controller_in_override_mode() {
         assert!(close(e.speed, 20.0, 1e-9) && close(e.x, 20.0 + 20.0 * t, 1e-6), "t {t}: {e:?}");
     }
 }
+
+#[test]
+fn frame_0_puts_an_entity_placed_before_the_road_start_on_the_road() {
+    // alks_r157_placed_before_road_start: Ego, with an ALKS R157 controller (RSS, override),
+    // is put 10 m behind Watcher (road 1, s = 5): 5 m before road 1's start. esmini steps the
+    // controller in frame 0 (dt 0) and ControllerALKS_R157SM::Step's MoveAlongS(0) puts Ego
+    // where its road coordinates are, s = 0. esmini: Ego at x = 0 at 0 s, 0.1 at 0.01 s, 10 at 1 s.
+    let run = run_fixture("alks_r157_placed_before_road_start.xosc", "two_roads.xodr");
+    assert!(run.warnings.is_empty(), "{:?}", run.warnings);
+    for (t, x) in [(0.0, 0.0), (0.01, 0.1), (1.0, 10.0)] {
+        let e = at(&run, "Ego", t);
+        assert!(close(e.x, x, 1e-9) && close(e.y, -1.75, 1e-12), "{t}: {e:?}");
+    }
+}

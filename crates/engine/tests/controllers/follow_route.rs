@@ -146,3 +146,23 @@ fn a_waypoint_given_in_the_world_is_followed_as_a_lane_position() {
     let e = at(&run, "Ego", 7.02);
     assert!(close(e.speed, 0.0, 1e-12) && close(e.x, 150.273861, 1e-5) && close(e.y, -5.25, 1e-9), "{e:?}");
 }
+
+#[test]
+fn a_route_it_cannot_plan_stops_a_test_mode_entity_in_frame_0() {
+    // follow_route_same_lane_target: Ego (20 m/s, road 1, lane −1, s = 10) gets in the Init a
+    // route whose waypoints are on its own road and lane, then the controller. esmini steps
+    // every active controller in frame 0 (ScenarioEngine::step, dt 0): ControllerFollowRoute
+    // finds no path (LaneIndependentRouter::CalculatePath: start and target on the same road
+    // and lane), deactivates, and test mode sets speed 0 there. So Ego never moves, and
+    // Watcher's "Ego slower than 1 m/s" teleport (road 2, s = 100) fires in the first
+    // storyboard evaluation after frame 0. esmini: Ego at x = 10 with speed 0 from 0 s on;
+    // Watcher at x = 200 at 0.01 s, 200.1 at 0.02 s.
+    let run = run_fixture("follow_route_same_lane_target.xosc");
+    assert!(run.warnings.is_empty(), "{:?}", run.warnings);
+    for t in [0.0, 0.01, 2.0] {
+        let e = at(&run, "Ego", t);
+        assert!(close(e.speed, 0.0, 1e-12) && close(e.x, 10.0, 1e-12), "{t}: {e:?}");
+    }
+    assert!(close(at(&run, "Watcher", 0.01).x, 200.0, 1e-9));
+    assert!(close(at(&run, "Watcher", 0.02).x, 200.1, 1e-9));
+}
