@@ -149,10 +149,11 @@ impl RoadNetwork {
     }
 
     /// Nearest lane of (x, y). A point on several roads (junctions) prefers `hint` (the road
-    /// the caller was on), then the road that comes first in the network (esmini's
-    /// Position::XYZ2TrackPos walks the roads in order and replaces a road the point lies on
-    /// only by one it is strictly nearer to); an off-road point gets the road whose lanes are
-    /// nearest. `None` only for a network without roads.
+    /// the caller was on), then, with a hint, the lane whose centre is nearest; without one
+    /// (a position nobody was at: esmini's fresh Position has no current road) the road that
+    /// comes first in the network (Position::XYZ2TrackPos walks the roads in order and
+    /// replaces a road the point lies on only by one it is strictly nearer to). An off-road
+    /// point gets the road whose lanes are nearest. `None` only for a network without roads.
     pub fn world_to_lane(&self, x: f64, y: f64, hint: Option<usize>) -> Option<LanePosition> {
         self.world_to_lane_by(x, y, hint, &|_, _, t| t)
     }
@@ -183,12 +184,15 @@ impl RoadNetwork {
             let better = match &best {
                 None => true,
                 Some(b) => {
-                    let key = |q: &LanePosition| (q.distance, if Some(q.road) == hint { 0 } else { 1 }, q.road);
+                    // With a current road esmini weighs roads by their connection to it
+                    // (not modelled): the nearest lane centre stands in for that.
+                    let centre = |q: &LanePosition| if hint.is_some() { q.offset.abs() } else { 0.0 };
+                    let key = |q: &LanePosition| (q.distance, if Some(q.road) == hint { 0 } else { 1 }, centre(q), q.road);
                     let (kp, kb) = (key(&p), key(b));
                     if p.distance == 0.0 && b.distance == 0.0 {
-                        (kp.1, kp.2) < (kb.1, kb.2)
+                        (kp.1, kp.2, kp.3) < (kb.1, kb.2, kb.3)
                     } else {
-                        kp.0 < kb.0 || (kp.0 == kb.0 && kp.2 < kb.2)
+                        kp.0 < kb.0 || (kp.0 == kb.0 && kp.3 < kb.3)
                     }
                 }
             };
