@@ -1,6 +1,7 @@
 //! FollowGhostController, as esmini has it: the storyboard's actions drive a ghost copy of the
 //! entity that starts `headstartTime` seconds early (see `ghost`); the entity itself, in
-//! override mode on both domains, follows the ghost's trail with a simple driver model. In
+//! override mode (activated laterally only, esmini's default controller moves it along its
+//! lane before the controller measures), follows the ghost's trail with a simple driver model. In
 //! `position` mode it finds the trail point nearest to itself, takes the ghost's speed at
 //! `max(minLookaheadSpeed, lookaheadSpeed · speed)` metres further along the trail as its
 //! target speed and steers towards the trail point `max(minLookaheadSteering,
@@ -45,14 +46,17 @@ impl FollowGhostRt {
             min_lookahead_steering: num("minLookaheadSteering", 1.0),
             steering_scale: num("steeringSpeedInertia", 0.01),
             vehicle: None,
+            longitudinal: true,
             follow_index: 0,
             closest_s: 0.0,
         }
     }
 
-    /// Switched on: the driver model starts from the entity's pose and speed.
-    pub(crate) fn activate(&mut self, en: &Entity) {
+    /// Switched on (on the longitudinal domain too or not): the driver model starts from the
+    /// entity's pose and speed.
+    pub(crate) fn activate(&mut self, en: &Entity, longitudinal: bool) {
         self.active = true;
+        self.longitudinal = longitudinal;
         self.vehicle = Some(KinematicVehicle::new(en.x, en.y, en.h, en.speed, en.bbox[3], MAX_SPEED));
     }
 }
@@ -61,8 +65,14 @@ impl<'a> Sim<'a> {
     /// One step of the follower `e` (after the ghost moved this step).
     pub(super) fn step_follow_ghost(&mut self, e: usize, f: &mut FollowGhostRt, dt: f64) {
         let (Some(ghost), Some(mut car)) = (self.ghost.as_ref().filter(|g| g.owner == e), f.vehicle) else { return };
-        // In override mode nothing else moves the entity: its state is the body's.
-        let (x, y, h, speed) = (car.x, car.y, car.h, car.speed);
+        // ControllerFollowGhost::Step measures from the entity's position and heading and
+        // drives the body from its own: the same pose while the controller holds the
+        // longitudinal domain; active laterally only, the default controller has moved the
+        // entity along its lane first.
+        let (x, y, h, speed) = match self.entities.get(e).filter(|_| !f.longitudinal) {
+            Some(en) => (en.x, en.y, en.h, car.speed),
+            None => (car.x, car.y, car.h, car.speed),
+        };
         let trail = &ghost.trail;
         let (speed_point, steer_point): (Option<TrailPoint>, Option<TrailPoint>) = match f.mode {
             FollowMode::Position => {

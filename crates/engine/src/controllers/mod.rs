@@ -121,7 +121,7 @@ impl<'a> Sim<'a> {
             Some(Some(ControllerRt::NaturalDriver(a))) => a.activate(speed, longitudinal),
             Some(Some(ControllerRt::FollowGhost(f))) => {
                 if let Some(en) = self.entities.get(e) {
-                    f.activate(en);
+                    f.activate(en, longitudinal);
                 }
             }
             Some(Some(ControllerRt::FollowReference(f))) => {
@@ -253,7 +253,7 @@ impl<'a> Sim<'a> {
                 }
                 // Steer after the default controller moved what they follow (`step_followers`);
                 // until then the default controller leaves the entity alone.
-                ControllerRt::FollowGhost(f) => self.hold_follower(e, f.active),
+                ControllerRt::FollowGhost(f) => self.hold_follower(e, f.active && f.longitudinal),
                 ControllerRt::FollowReference(f) => self.hold_follower(e, f.active),
                 // Active on the lateral domain only, the default controller moves it first.
                 ControllerRt::OffroadFollower(f) => self.hold_follower(e, f.holds_longitudinal()),

@@ -5,5 +5,6 @@ mod act_of_other_entity;
 mod follow;
 mod head_start_holds_others;
 mod init_trajectory_position;
+mod lateral_only;
 mod restart;
 mod trail_end_lookahead;

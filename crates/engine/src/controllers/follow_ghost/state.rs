@@ -11,6 +11,9 @@ pub(crate) enum FollowMode {
 #[derive(Debug, Clone)]
 pub(crate) struct FollowGhostRt {
     pub active: bool,
+    /// Active on the longitudinal domain (else esmini's default controller moves the entity
+    /// along its lane before the controller measures from there).
+    pub longitudinal: bool,
     pub headstart: f64,
     pub(super) mode: FollowMode,
     pub(super) lookahead_speed: f64,
