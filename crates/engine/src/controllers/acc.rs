@@ -18,6 +18,7 @@ use state::AccRt;
 use crate::conditions::distance::between;
 use crate::roads::lane_geometry::lane_center_t;
 use crate::roads::road_distance::road_distance_within;
+use crate::roads::road_follow::at_unlinked_road_end;
 use crate::roads::{move_along_route_drawing, move_along_s, LanePos, MoveStatus};
 use crate::sim::Sim;
 use opendrive::RoadNetwork;
@@ -195,10 +196,10 @@ impl<'a> Sim<'a> {
                 (Some(net), Some(mut lp)) => {
                     let pedestrian = en.kind == crate::entities::EntityKind::Pedestrian;
                     let status = move_along_route_drawing(net, &mut lp, a.current_speed * dt, en.route.as_deref(), random, pedestrian);
-                    // Position::MoveAlongS flags the end of a road without a successor
-                    // after any move, one of 0 m too: a stopped ACC stays at the end.
-                    let stays = a.at_end && a.current_speed * dt == 0.0;
-                    a.at_end = stays || status == MoveStatus::EndOfRoad;
+                    // Position::MoveAlongS flags the end of the road when no connection
+                    // continues the lane, and after any move that ends at a road end without
+                    // a road link (one of 0 m too: a stopped ACC stays at the end).
+                    a.at_end = status == MoveStatus::EndOfRoad || at_unlinked_road_end(net, &lp);
                     en.set_lane_pos(net, lp);
                 }
                 _ => {

@@ -36,6 +36,15 @@ pub(crate) fn at_dead_end(net: &RoadNetwork, lp: &LanePos) -> bool {
     })
 }
 
+/// Position::MoveAlongS's last word on POS_STATUS_END_OF_ROAD after a move that stays on a
+/// road: set when the position ends within esmini's SMALL_NUMBER of either end of its road and
+/// the road has no link at that end, whichever way the entity moved (a move of 0 m, or a
+/// creep back by a rounding error, keeps a car at a dead end flagged), cleared otherwise.
+pub(crate) fn at_unlinked_road_end(net: &RoadNetwork, lp: &LanePos) -> bool {
+    use crate::dynamics::ESMINI_SMALL_NUMBER as SMALL;
+    net.roads.get(lp.road).is_some_and(|r| (lp.s < SMALL && r.predecessor.is_none()) || (lp.s > r.length - SMALL && r.successor.is_none()))
+}
+
 /// Most road changes one move may cross (guards against zero-length road loops).
 const MAX_HOPS: usize = 16;
 
