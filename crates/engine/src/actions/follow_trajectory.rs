@@ -36,8 +36,7 @@ impl FollowTrajectoryRt {
     }
 }
 
-/// esmini's SMALL_NUMBER.
-const SMALL_NUMBER: f64 = 1e-6;
+use crate::dynamics::ESMINI_SMALL_NUMBER as SMALL_NUMBER;
 
 /// esmini's SIGN: zero counts as positive.
 fn esmini_sign(x: f64) -> f64 {

@@ -31,8 +31,7 @@ const LOOKAHEAD: f64 = 130.0;
 const MIN_LATERAL_DIST: f64 = 5.0;
 /// vehicle.cpp: MAX_SPEED_DEFAULT.
 const VEHICLE_MAX_SPEED: f64 = 70.0;
-/// CommonMini's SMALL_NUMBER.
-const SMALL_NUMBER: f64 = 1e-6;
+use crate::dynamics::ESMINI_SMALL_NUMBER as SMALL_NUMBER;
 const LARGE: f64 = 1e10;
 /// ControllerLooming's steering rate.
 const STEERING_RATE: f64 = 4.0;

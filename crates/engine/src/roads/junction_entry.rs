@@ -12,8 +12,8 @@
 use super::LanePos;
 use opendrive::{ContactPoint, ElementType, LanePosition, Road, RoadNetwork, Shape};
 
-/// esmini's SMALL_NUMBER: a spiral whose end curvatures differ by less is a line or an arc.
-const SMALL_NUMBER: f64 = 1e-6;
+// esmini's SMALL_NUMBER: a spiral whose end curvatures differ by less is a line or an arc.
+use crate::dynamics::ESMINI_SMALL_NUMBER as SMALL_NUMBER;
 
 /// The curvature Road::IsDirectlyConnected reports at a connecting road's contact point: its
 /// first geometry at the start or its last at the end, as esmini evaluates it

@@ -29,7 +29,7 @@ pub(crate) enum MoveStatus {
 /// Whether `lp` is at the end of its road in the direction it faces, with no road beyond
 /// (esmini's POS_STATUS_END_OF_ROAD after Position::SetInertiaPos).
 pub(crate) fn at_dead_end(net: &RoadNetwork, lp: &LanePos) -> bool {
-    const SMALL_NUMBER: f64 = 1e-6;
+    use crate::dynamics::ESMINI_SMALL_NUMBER as SMALL_NUMBER;
     net.roads.get(lp.road).is_some_and(|r| {
         let end = if lp.dir > 0.0 { lp.s >= r.length - SMALL_NUMBER } else { lp.s <= SMALL_NUMBER };
         end && if lp.dir > 0.0 { r.successor.is_none() } else { r.predecessor.is_none() }

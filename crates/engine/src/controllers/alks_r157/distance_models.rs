@@ -8,8 +8,8 @@
 use super::state::{AlksR157Rt, Info, Mode, Scen};
 use super::Frame;
 
-/// CommonMini's SMALL_NUMBER, which these models compare against.
-const SMALL_NUMBER: f64 = 1e-6;
+// CommonMini's SMALL_NUMBER, which these models compare against.
+use crate::dynamics::ESMINI_SMALL_NUMBER as SMALL_NUMBER;
 /// Both models' jerk when building up braking (min_jerk_), m/s³.
 const MIN_JERK: f64 = 12.65;
 /// Model::max_acc_ and max_acc_lat_ (m/s²): the accelerations RSS assumes of the others.

@@ -9,7 +9,7 @@ use crate::roads::LanePos;
 use opendrive::{ContactPoint, ElementType, Road, RoadNetwork};
 use std::collections::HashMap;
 
-const SMALL_NUMBER: f64 = 1e-6;
+use crate::dynamics::ESMINI_SMALL_NUMBER as SMALL_NUMBER;
 
 /// One OSI point of a lane centre: s, x, y, road heading.
 #[derive(Debug, Clone, Copy)]
