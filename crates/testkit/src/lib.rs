@@ -4,7 +4,7 @@
 //! batches of files, returning its JSON findings as data, and compares the CommonRoad 2020a and
 //! 2024 renderings of a conversion with commonroad-io (`py/compare_2024.py`), and finds the
 //! shared esmini binaries the oracle comparisons run; and writes the OpenSCENARIO texts the
-//! tests of several crates need alike.
+//! tests of several crates need alike; and gives tests scratch directories that go away with them.
 //!
 //! It knows the layout of `../shared/tools` and nothing of the converter's crates.
 
@@ -17,6 +17,7 @@ mod cr_check;
 mod esmini;
 mod generated;
 mod python;
+mod scratch_dir;
 mod shared;
 mod xosc;
 
@@ -25,5 +26,6 @@ pub use cr_check::{cr_check, CrCheckResult, Finding};
 pub use esmini::{esmini, esmini_command};
 pub use generated::{assert_generated, rs_files};
 pub use python::{python_envs, PyEnvs};
+pub use scratch_dir::ScratchDir;
 pub use shared::{compared_scenarios, corpus_files, files_with_ext, shared_dir, workspace_root};
 pub use xosc::{stochastic_set, VEHICLE};

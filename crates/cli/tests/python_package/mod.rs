@@ -107,11 +107,9 @@ fn env() -> Option<&'static Env> {
     }
 }
 
-fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("osc2cr-py-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).expect("temp dir");
-    d
+/// A scratch directory removed when the test passes (a wheel's venv is ~440 MB).
+fn tmp(name: &str) -> testkit::ScratchDir {
+    testkit::ScratchDir::new(&format!("py-{name}"))
 }
 
 fn corpus(rel: &str) -> PathBuf {

@@ -18,12 +18,9 @@ pub(crate) fn rel(corpus: &Path, p: &Path) -> String {
     p.strip_prefix(corpus).unwrap_or(p).to_string_lossy().replace('\\', "/")
 }
 
-/// A fresh directory under the system temp dir for one test.
-pub(crate) fn temp_dir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("osc2cr-openscenario-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).expect("create temp dir");
-    d
+/// A fresh directory under the system temp dir for one test, removed when the test passes.
+pub(crate) fn temp_dir(name: &str) -> testkit::ScratchDir {
+    testkit::ScratchDir::new(&format!("openscenario-{name}"))
 }
 
 /// 1-based (line, column) of the first occurrence of `needle` in `text`.

@@ -157,7 +157,7 @@ fn write_catalog(dir: &Path) {
 
 /// Loads a scenario in a fresh folder `name` beside the catalog `write_catalog` writes, with the
 /// one ScenarioObject `entity`: the scenario's text, its folder and the error it fails with.
-fn fail_with_catalog(name: &str, entity: &str) -> (String, std::path::PathBuf, Error) {
+fn fail_with_catalog(name: &str, entity: &str) -> (String, testkit::ScratchDir, Error) {
     let dir = temp_dir(name);
     write_catalog(&dir);
     let text = scenario("", r#"<VehicleCatalog><Directory path="Vehicles"/></VehicleCatalog>"#, entity, "", "");
