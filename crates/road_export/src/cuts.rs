@@ -36,6 +36,10 @@ const PASSES: usize = 6;
 const STEP: f64 = 0.25;
 /// A neighbour piece whose bound is farther than this from a piece's bound is not beside it (m).
 const BESIDE: f64 = 1.0;
+/// The shortest end piece where two forked lanelets come side by side at their ends (m).
+const MIN_END_PIECE: f64 = 0.05;
+/// Step of the walk back from the end of a bound that meets its neighbour's only there (m).
+const FINE: f64 = 0.005;
 
 /// The network with its lanelets cut, and where each piece came from.
 pub(crate) struct Cut {
@@ -177,15 +181,58 @@ fn meeting_points(mine: &[V2], theirs: &[V2]) -> Vec<(f64, f64)> {
     out
 }
 
-/// Cut parameters of each lanelet (sorted, inside it), from its neighbours' ends.
-fn cut_params(net: &LaneletNetwork, pos: &BTreeMap<u64, usize>, keep: &BTreeMap<usize, u64>) -> Vec<Vec<f64>> {
-    let mut out = vec![Vec::new(); net.lanelets.len()];
+/// Where `mine` comes within [`CLOSE`] of `theirs` for good when that happens only in the
+/// last [`SHARED_ENDS`] of it, after running farther than [`SHARED`] from it: two "adjacent"
+/// lanelets that fork from one cross-section and end side by side, touching only near their
+/// ends. Their ends are neighbours there (a border [`CLOSE`] from each bound), so the last
+/// stretch becomes a piece of its own: (arc length, parameter) of the cut, if the piece is at
+/// least [`MIN_END_PIECE`] long.
+fn fork_end(mine: &[V2], theirs: &[V2]) -> Option<(f64, f64)> {
+    let total = length(mine);
+    let index = SegmentIndex::new(std::iter::once(theirs), 2.0);
+    let near = |arc: f64| index.distance(walk(mine, arc), 4.0 * SHARED);
+    if near(total) > CLOSE || total <= SHARED_ENDS {
+        return None;
+    }
+    // the close stretch at the end, walked back in fine steps
+    let mut back = 0.0;
+    while back + FINE < SHARED_ENDS && near(total - back - FINE) <= CLOSE {
+        back += FINE;
+    }
+    if back + FINE >= SHARED_ENDS || back < MIN_END_PIECE {
+        return None;
+    }
+    // farther than SHARED somewhere before it: not one shared bound
+    let n = ((total / STEP).ceil() as usize).clamp(1, 1_000_000);
+    let parts = (0..n).any(|k| near(total * k as f64 / n as f64) > SHARED);
+    if !parts {
+        return None;
+    }
+    let arc = total - back;
+    Some((arc, locate(mine, walk(mine, arc)).1))
+}
+
+/// Where one lanelet is cut.
+#[derive(Clone, Default)]
+struct Plan {
+    /// Cut parameters (sorted, inside the lanelet).
+    at: Vec<f64>,
+    /// Length of the last piece when it is a forked pair's side-by-side end ([`fork_end`]),
+    /// on the (left, right) side: that piece alone is beside the neighbour there, and beside
+    /// nothing on its other side.
+    fork: [Option<f64>; 2],
+}
+
+/// Where each lanelet is cut, from its neighbours' ends.
+fn cut_params(net: &LaneletNetwork, pos: &BTreeMap<u64, usize>, keep: &BTreeMap<usize, u64>) -> Vec<Plan> {
+    let mut out = vec![Plan::default(); net.lanelets.len()];
     for (i, l) in net.lanelets.iter().enumerate() {
         if keep.contains_key(&i) {
             continue;
         }
         let mut found: Vec<(f64, f64)> = Vec::new();
         let mut runs: Vec<(f64, f64)> = Vec::new();
+        let mut fork_ends: Vec<(f64, f64, usize)> = Vec::new();
         for (left, adj) in [(true, l.adjacent_left), (false, l.adjacent_right)] {
             let Some(adj) = adj else { continue };
             let Some(n) = pos.get(&adj.lanelet.get()).and_then(|&j| net.lanelets.get(j)) else { continue };
@@ -194,6 +241,7 @@ fn cut_params(net: &LaneletNetwork, pos: &BTreeMap<u64, usize>, keep: &BTreeMap<
             let total = length(&mine);
             // where the bounds meet or part (a lane forking off on top of its neighbour
             // shares a bound with it only after the fork)
+            fork_ends.extend(fork_end(&mine, &theirs).map(|(arc, u)| (arc, u, usize::from(!left))));
             for (arc, u) in meeting_points(&mine, &theirs) {
                 if arc > SHARED_ENDS && arc < total - SHARED_ENDS {
                     runs.push((arc, u));
@@ -219,7 +267,20 @@ fn cut_params(net: &LaneletNetwork, pos: &BTreeMap<u64, usize>, keep: &BTreeMap<
                 kept.push(c);
             }
         }
-        out[i] = kept.into_iter().map(|c| c.1).collect();
+        // a forked pair's side-by-side ends: a short last piece
+        let mut fork = [None, None];
+        for (arc, u, side) in fork_ends {
+            let total = v2(if side == 0 { l.bounds.left() } else { l.bounds.right() }).map_or(0.0, |b| length(&b));
+            match kept.last() {
+                Some(last) if last.1 == u => fork[side] = Some(total - arc),
+                Some(last) if arc - last.0 < MIN_PIECE || u <= last.1 => {}
+                _ => {
+                    kept.push((arc, u));
+                    fork[side] = Some(total - arc);
+                }
+            }
+        }
+        out[i] = Plan { at: kept.into_iter().map(|c| c.1).collect(), fork };
     }
     out
 }
@@ -266,14 +327,15 @@ fn cut_once(net: &LaneletNetwork) -> Option<Cut> {
     let pos: BTreeMap<u64, usize> = net.lanelets.iter().enumerate().map(|(i, l)| (l.id.get(), i)).collect();
     let keep = intersection_of(net);
     let params = cut_params(net, &pos, &keep);
-    if params.iter().all(Vec::is_empty) {
+    if params.iter().all(|p| p.at.is_empty()) {
         return None;
     }
     let mut next = net.max_id() + 1;
     let mut origin = BTreeMap::new();
     // pieces of every lanelet, in order (an uncut lanelet is its own single piece)
     let mut pieces: Vec<Vec<Lanelet>> = Vec::with_capacity(net.lanelets.len());
-    for (l, cuts) in net.lanelets.iter().zip(&params) {
+    for (l, plan) in net.lanelets.iter().zip(&params) {
+        let cuts = &plan.at;
         if cuts.is_empty() {
             pieces.push(vec![l.clone()]);
             continue;
@@ -320,7 +382,7 @@ fn cut_once(net: &LaneletNetwork) -> Option<Cut> {
     let last = |id: LaneletId| pos.get(&id.get()).and_then(|&j| pieces.get(j)).and_then(|p| p.last()).map_or(id, |p| p.id);
     let mut lanelets = Vec::new();
     let mut warnings = Vec::new();
-    for (l, ps) in net.lanelets.iter().zip(&pieces) {
+    for ((l, ps), plan) in net.lanelets.iter().zip(&pieces).zip(&params) {
         let n = ps.len();
         // whether some piece kept its left / right neighbour
         let mut kept = [l.adjacent_left.is_none(), l.adjacent_right.is_none()];
@@ -339,6 +401,18 @@ fn cut_once(net: &LaneletNetwork) -> Option<Cut> {
                 let Some(theirs) = pos.get(&adj.lanelet.get()).and_then(|&j| pieces.get(j)) else { continue };
                 if n == 1 && theirs.len() == 1 {
                     kept[usize::from(!left)] = true;
+                    continue;
+                }
+                // a forked pair is beside each other only at its end piece, which is
+                // beside nothing else
+                let end_piece = k + 1 == n && plan.fork.iter().any(Option::is_some);
+                if plan.fork[usize::from(!left)].is_some() != end_piece {
+                    let none = None;
+                    if left {
+                        p.adjacent_left = none;
+                    } else {
+                        p.adjacent_right = none;
+                    }
                     continue;
                 }
                 let mine = v2(if left { p.bounds.left() } else { p.bounds.right() }).unwrap_or_default();
@@ -360,6 +434,17 @@ fn cut_once(net: &LaneletNetwork) -> Option<Cut> {
                 }
             }
             lanelets.push(p);
+        }
+        for (side, (fork, adj)) in ["left", "right"].iter().zip(plan.fork.iter().zip([l.adjacent_left, l.adjacent_right])) {
+            if let (Some(len), Some(adj)) = (fork, adj) {
+                warnings.push(Warning::new(
+                    Subject::Lanelet(l.id.get()),
+                    format!(
+                        "adjacent {side} lanelet {} overlaps it and shares its bound (within {CLOSE} m) only over its last {len:.2} m: that end is a lane section of its own, where they are adjacent; before it they are lanes of different roads",
+                        adj.lanelet.get()
+                    ),
+                ));
+            }
         }
         for (side, (ok, adj)) in ["left", "right"].iter().zip(kept.iter().zip([l.adjacent_left, l.adjacent_right])) {
             if let (false, Some(adj)) = (ok, adj) {

@@ -129,3 +129,32 @@ fn a_neighbour_beside_no_piece_is_a_warning() {
         assert!(said, "no warning about lanelet {lanelet}'s {side} neighbour: {warnings:?}");
     }
 }
+
+#[test]
+fn a_fork_on_top_of_its_neighbour_is_its_neighbour_at_the_end() {
+    // 1 forks into 2 (straight on) and 3, which starts on the same cross-section as 2 and
+    // ends beside it on its right: their facing bounds meet only at the end (10 degrees
+    // apart), yet CommonRoad calls them adjacent; 4 follows 2, 5 follows 3
+    let mut before = lanelet(1, -20.0, 0.0, 0.0, 3.5);
+    let mut straight = lanelet(2, 0.0, 20.0, 0.0, 3.5);
+    let line = |pts: &[(f64, f64)]| pts.iter().map(|&(x, y)| Point::new(x, y)).collect::<Vec<_>>();
+    let bounds = LaneletBounds::new(line(&[(0.0, 3.5), (10.0, 1.75), (20.0, 0.0)]), line(&[(0.0, 0.0), (10.0, -1.75), (20.0, -3.5)])).expect("valid bounds");
+    let mut fork = Lanelet::new(id(3), bounds, LaneletType::Urban);
+    let mut after_straight = lanelet(4, 20.0, 40.0, 0.0, 3.5);
+    let bounds = LaneletBounds::new(line(&[(20.0, 0.0), (40.0, -3.5)]), line(&[(20.0, -3.5), (40.0, -7.0)])).expect("valid bounds");
+    let mut after_fork = Lanelet::new(id(5), bounds, LaneletType::Urban);
+    side_by_side(&mut fork, &mut straight, DrivingDir::Same);
+    before.successors = vec![id(2), id(3)];
+    (straight.predecessors, straight.successors) = (vec![id(1)], vec![id(4)]);
+    (fork.predecessors, fork.successors) = (vec![id(1)], vec![id(5)]);
+    after_straight.predecessors = vec![id(2)];
+    after_fork.predecessors = vec![id(3)];
+    let net = LaneletNetwork { lanelets: vec![before, straight, fork, after_straight, after_fork], ..Default::default() };
+    let (c, warnings) = round_trip_keeping(&net, 10);
+    // each comes back as the fork and a short end beside the other
+    for n in [2, 3] {
+        assert_eq!(c.lanelets.iter().find(|l| l.id == n).map_or(0, |l| l.matched.len()), 2, "lanelet {n}");
+        let said = warnings.iter().any(|w| w.subject == Subject::Lanelet(n) && w.message.contains("overlaps it"));
+        assert!(said, "lanelet {n}: {warnings:?}");
+    }
+}
