@@ -3,7 +3,8 @@
 //!
 //! - [`JsonReport`] (`--report FILE`): `{"scenarios": [...], "skipped": [...], "summary": [...],
 //!   "planned": N}`, one scenario per line, written to a temporary file beside `FILE` and renamed
-//!   to it when the batch ends (whole or not at all, like every output);
+//!   to it when the batch ends (whole or not at all, like every output; a device or pipe such as
+//!   `/dev/null` is written in place, never renamed over);
 //! - [`Table`] (`--table FILE`): one tab-separated line per conversion in batch order (status,
 //!   stage, files, counts, time, the failure's first line, the parameters), flushed line by line,
 //!   so that it shows how far a running batch is and what an interrupted one did.
@@ -22,6 +23,8 @@ fn io_error(path: &Path, e: impl std::fmt::Display) -> String {
 pub struct JsonReport {
     path: PathBuf,
     tmp: PathBuf,
+    /// The target is a device or pipe, written in place (`tmp` is the target itself).
+    in_place: bool,
     out: BufWriter<File>,
     first: bool,
 }
@@ -30,14 +33,15 @@ impl JsonReport {
     /// Starts the report that will be `path`.
     pub fn create(path: &Path) -> Result<Self, String> {
         let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_else(|| "report".into());
-        let tmp = path.with_file_name(format!(".{name}.{}.stream.tmp", std::process::id()));
+        let in_place = commonroad::xml::is_special_file(path);
+        let tmp = if in_place { path.to_path_buf() } else { path.with_file_name(format!(".{name}.{}.stream.tmp", std::process::id())) };
         if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
             std::fs::create_dir_all(dir).map_err(|e| io_error(path, e))?;
         }
         let file = File::create(&tmp).map_err(|e| io_error(&tmp, e))?;
         let mut out = BufWriter::new(file);
         out.write_all(b"{\n\"scenarios\": [").map_err(|e| io_error(&tmp, e))?;
-        Ok(JsonReport { path: path.to_path_buf(), tmp, out, first: true })
+        Ok(JsonReport { path: path.to_path_buf(), tmp, in_place, out, first: true })
     }
 
     /// Adds one conversion.
@@ -60,7 +64,11 @@ impl JsonReport {
             self.out.flush()?;
             Ok(())
         })();
-        let result = tail.map_err(|e| io_error(&self.tmp, e)).and_then(|()| std::fs::rename(&self.tmp, &self.path).map_err(|e| io_error(&self.path, e)));
+        let result = tail.map_err(|e| io_error(&self.tmp, e));
+        if self.in_place {
+            return result;
+        }
+        let result = result.and_then(|()| std::fs::rename(&self.tmp, &self.path).map_err(|e| io_error(&self.path, e)));
         if result.is_err() {
             let _ = std::fs::remove_file(&self.tmp);
         }

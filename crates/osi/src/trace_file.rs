@@ -1,6 +1,7 @@
 //! OSI trace files as esmini writes them (`--osi_file`): each message preceded by its length as
 //! a 4-byte little-endian unsigned integer, nothing else. The writer streams into a temporary
-//! file beside the target and renames it when finished, so a trace file that exists is whole;
+//! file beside the target and renames it when finished, so a trace file that exists is whole (a
+//! device or pipe such as `/dev/null` is written in place: a rename would replace it);
 //! `read` splits a file back into its messages (a cut-off last message is an error).
 
 use std::fs::File;
@@ -16,6 +17,8 @@ pub struct TraceWriter {
     out: Option<BufWriter<File>>,
     temporary: PathBuf,
     path: PathBuf,
+    /// The target is a device or pipe, written in place (`temporary` is the target itself).
+    in_place: bool,
     messages: usize,
 }
 
@@ -29,9 +32,10 @@ impl TraceWriter {
         let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
         let name = path.file_name().ok_or_else(|| format!("{}: not a file name", path.display()))?;
         std::fs::create_dir_all(dir).map_err(|e| io_error(dir, e))?;
-        let temporary = dir.join(format!(".{}.{}.osi.tmp", name.to_string_lossy(), std::process::id()));
+        let in_place = std::fs::metadata(path).is_ok_and(|m| !m.is_file() && !m.is_dir());
+        let temporary = if in_place { path.to_path_buf() } else { dir.join(format!(".{}.{}.osi.tmp", name.to_string_lossy(), std::process::id())) };
         let file = File::create(&temporary).map_err(|e| io_error(&temporary, e))?;
-        Ok(TraceWriter { out: Some(BufWriter::new(file)), temporary, path: path.to_path_buf(), messages: 0 })
+        Ok(TraceWriter { out: Some(BufWriter::new(file)), temporary, path: path.to_path_buf(), in_place, messages: 0 })
     }
 
     /// Appends one encoded message.
@@ -52,6 +56,10 @@ impl TraceWriter {
     pub fn finish(mut self) -> Result<PathBuf, String> {
         let Some(out) = self.out.take() else { return Err(format!("{}: already finished", self.path.display())) };
         let file = out.into_inner().map_err(|e| io_error(&self.temporary, e.into_error()))?;
+        if self.in_place {
+            // a device or pipe: nothing to sync (fsync on /dev/null fails) or rename
+            return Ok(self.path.clone());
+        }
         file.sync_all().map_err(|e| io_error(&self.temporary, e))?;
         drop(file);
         std::fs::rename(&self.temporary, &self.path).map_err(|e| io_error(&self.path, e))?;
@@ -61,8 +69,8 @@ impl TraceWriter {
 
 impl Drop for TraceWriter {
     fn drop(&mut self) {
-        // not finished: no trace file
-        if self.out.is_some() {
+        // not finished: no trace file (a device or pipe written in place is never removed)
+        if self.out.is_some() && !self.in_place {
             let _ = std::fs::remove_file(&self.temporary);
         }
     }

@@ -52,3 +52,14 @@ fn trace_files_hold_each_message_after_its_length() {
         "no file left"
     );
 }
+
+/// A trace written to a pipe (or `/dev/null`) goes through it, and the pipe stays a pipe.
+#[test]
+fn a_trace_file_that_is_a_pipe_is_written_in_place() {
+    let dir = work_dir("framing-fifo");
+    let path = dir.join("t.osi");
+    let _ = std::fs::remove_file(&path);
+    let Some(fifo) = testkit::Fifo::new(&path) else { return };
+    osi::trace_file::write(&path, &[vec![7u8, 8]]).expect("written");
+    assert_eq!(fifo.received(), [2, 0, 0, 0, 7, 8]);
+}

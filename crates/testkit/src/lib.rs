@@ -4,7 +4,7 @@
 //! batches of files, returning its JSON findings as data, and compares the CommonRoad 2020a and
 //! 2024 renderings of a conversion with commonroad-io (`py/compare_2024.py`), and finds the
 //! shared esmini binaries the oracle comparisons run; and writes the OpenSCENARIO texts the
-//! tests of several crates need alike; and gives tests scratch directories that go away with them.
+//! tests of several crates need alike; gives tests scratch directories that go away with them and pipes to write into.
 //!
 //! It knows the layout of `../shared/tools` and nothing of the converter's crates.
 
@@ -15,6 +15,7 @@
 mod compare_2024;
 mod cr_check;
 mod esmini;
+mod fifo;
 mod generated;
 mod python;
 mod scratch_dir;
@@ -24,6 +25,7 @@ mod xosc;
 pub use compare_2024::{compare_2024, Case2024, Comparison2024};
 pub use cr_check::{cr_check, CrCheckResult, Finding};
 pub use esmini::{esmini, esmini_command};
+pub use fifo::Fifo;
 pub use generated::{assert_generated, rs_files};
 pub use python::{python_envs, PyEnvs};
 pub use scratch_dir::ScratchDir;

@@ -12,6 +12,10 @@
 //!
 //! A process killed between the two steps leaves its temporary file (`.<name>.<pid>.<n>.tmp`),
 //! never a final name; [`remove_stale_temporaries`] clears those of processes that are gone.
+//!
+//! A target that is a device or a pipe (`--csv /dev/null`, a FIFO a reader waits on) is written
+//! in place: a rename would replace it with a regular file — run as root, `/dev/null` itself
+//! (which happened here once). See [`is_special_file`].
 
 use std::fs::{self, File, OpenOptions};
 use std::io::Write;
@@ -23,12 +27,23 @@ use crate::Error;
 /// Distinguishes temporary files of parallel writers within one process.
 static COUNTER: AtomicU64 = AtomicU64::new(0);
 
-/// Writes `bytes` to `path` atomically (temp file in the same directory + rename).
+/// Whether `path` exists and is neither a regular file nor a directory (following links): a
+/// character or block device, a FIFO or a socket. Such a target is written in place, never
+/// replaced by a rename.
+pub fn is_special_file(path: &Path) -> bool {
+    fs::metadata(path).is_ok_and(|m| !m.is_file() && !m.is_dir())
+}
+
+/// Writes `bytes` to `path` atomically (temp file in the same directory + rename); a device or
+/// pipe is written in place ([`is_special_file`]).
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), Error> {
     let io_err = |p: &Path| {
         let p = p.to_path_buf();
         move |source| Error::WriteFile { path: p, source: std::sync::Arc::new(source) }
     };
+    if is_special_file(path) {
+        return OpenOptions::new().write(true).open(path).and_then(|mut f| f.write_all(bytes)).map_err(io_err(path));
+    }
     let file_name = path.file_name().ok_or_else(|| Error::WriteFile {
         path: path.to_path_buf(),
         source: std::sync::Arc::new(std::io::Error::new(std::io::ErrorKind::InvalidInput, "the path names no file")),

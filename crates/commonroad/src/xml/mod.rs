@@ -8,7 +8,7 @@ mod number;
 mod read;
 mod write;
 
-pub use atomic::{remove_stale_temporaries, write_atomic};
+pub use atomic::{is_special_file, remove_stale_temporaries, write_atomic};
 pub use escape::escape;
 pub use number::{format_decimal, is_written_positive, DECIMALS};
 pub use read::{read_planning_problem_str, read_scenario_file, read_scenario_str, ReadPlanningProblem, ReadScenario, MAX_FILE_BYTES};

@@ -84,3 +84,17 @@ fn concurrent_writers_leave_one_complete_version() {
 fn a_path_without_file_name_is_an_error() {
     assert!(matches!(write_atomic(std::path::Path::new("/"), b"x"), Err(Error::WriteFile { .. })));
 }
+
+/// A pipe (like a device such as `/dev/null`) is written in place: a rename over it would leave
+/// a regular file where the pipe was (as root, over `/dev/null`, a broken machine).
+#[test]
+fn a_fifo_target_is_written_in_place_and_stays_a_fifo() {
+    let d = fresh_dir("fifo");
+    let p = d.join("pipe");
+    let Some(fifo) = testkit::Fifo::new(&p) else { return };
+    assert!(commonroad::xml::is_special_file(&p));
+    write_atomic(&p, b"through the pipe").unwrap();
+    assert_eq!(fifo.received(), b"through the pipe");
+    assert_eq!(entries(&d), vec!["pipe"]);
+    assert!(!commonroad::xml::is_special_file(&d.join("absent")));
+}
