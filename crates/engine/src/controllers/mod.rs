@@ -8,6 +8,21 @@
 //! naming it; the ones that need a human or an outside process (Interactive, External, SUMO,
 //! HID, UDP driver) say so.
 
+/// `$sim.for_each_controller` over the active controllers of one `ControllerRt` variant:
+/// `step_active!(self, Acc, |sim, e, a| sim.step_acc(e, a, dt))`.
+macro_rules! step_active {
+    ($sim:expr, $variant:ident, |$s:ident, $e:ident, $x:ident| $body:expr) => {
+        $sim.for_each_controller(
+            |c| matches!(c, $crate::controllers::state::ControllerRt::$variant(x) if x.active),
+            |$s, $e, c| {
+                if let $crate::controllers::state::ControllerRt::$variant($x) = c {
+                    $body;
+                }
+            },
+        )
+    };
+}
+
 pub(crate) mod acc;
 pub(crate) mod alks;
 pub(crate) mod alks_r157;
