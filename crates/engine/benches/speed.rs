@@ -8,6 +8,12 @@ use std::time::{Duration, Instant};
 
 const RUNS: usize = 7;
 
+/// Runs per scenario: RUNS, or `OSC2CR_BENCH_RUNS` (1 is a quick pass for instruction counts
+/// under callgrind, where the count does not vary from run to run).
+fn runs() -> usize {
+    std::env::var("OSC2CR_BENCH_RUNS").ok().and_then(|v| v.parse().ok()).filter(|&n| n > 0).unwrap_or(RUNS)
+}
+
 fn median(v: &mut [Duration]) -> Duration {
     v.sort();
     v.get(v.len() / 2).copied().unwrap_or_default()
@@ -25,6 +31,7 @@ fn main() {
     let settings = engine::Settings::default();
     let (mut simulated, mut total, mut fastest_total) = (0.0, Duration::ZERO, Duration::ZERO);
     let mut rows = Vec::new();
+    let runs = runs();
     for f in &files {
         let rel = f.strip_prefix(&corpus).unwrap_or(f).with_extension("");
         if !reference.join(rel.with_extension("json")).exists() {
@@ -32,9 +39,9 @@ fn main() {
         }
         let Ok((scenario, _)) = openscenario::load_scenario(f, &Default::default()) else { continue };
         let net = scenario.road_network.logic_file.as_ref().and_then(|p| opendrive::load(p).ok()).map(|l| l.network);
-        let mut times = Vec::with_capacity(RUNS);
+        let mut times = Vec::with_capacity(runs);
         let mut duration = 0.0;
-        for _ in 0..RUNS {
+        for _ in 0..runs {
             let t0 = Instant::now();
             let Ok(run) = engine::simulate(&scenario, net.as_ref(), &settings) else { break };
             times.push(t0.elapsed());
@@ -53,7 +60,7 @@ fn main() {
     rows.sort_by_key(|r| std::cmp::Reverse(r.0));
     // OSC2CR_BENCH_ALL=1 lists every scenario (to compare two builds scenario by scenario)
     let shown = if std::env::var_os("OSC2CR_BENCH_ALL").is_some() { rows.len() } else { 8 };
-    println!("slowest scenarios (median of {RUNS}):");
+    println!("slowest scenarios (median of {runs}):");
     for (m, name, d) in rows.iter().take(shown) {
         println!("  {:>8.2} ms  {:>6.2} s  {:>8.0}x  {name}", m.as_secs_f64() * 1e3, d, d / m.as_secs_f64());
     }

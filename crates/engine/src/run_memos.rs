@@ -10,8 +10,12 @@
 use crate::position_cache;
 use crate::roads::{junction_connections, lane_shape, locate, pose_memo};
 
-/// The memo entries of one run.
-pub(crate) struct RunMemos {
+/// The memo entries of one run; `None` while they are held in the thread's slots for all of
+/// a run's frames ([`RunMemos::take`]).
+pub(crate) struct RunMemos(Option<Stores>);
+
+/// The entries themselves.
+struct Stores {
     poses: pose_memo::Store,
     shapes: lane_shape::Store,
     located: locate::Store,
@@ -22,22 +26,34 @@ pub(crate) struct RunMemos {
 impl RunMemos {
     /// No entries yet (a run starts).
     pub(crate) fn new() -> RunMemos {
-        RunMemos {
+        RunMemos(Some(Stores {
             poses: pose_memo::Store::new(),
             shapes: lane_shape::Store::new(),
             located: locate::Store::new(),
             positions: position_cache::Store::new(),
             connections: junction_connections::Store::new(),
-        }
+        }))
     }
 
     /// This run's entries in the thread's slots until the guard drops (then the slots hold
-    /// what they held before).
+    /// what they held before). Nothing to do while the entries are taken: whoever took them
+    /// holds them in the slots already.
     pub(crate) fn enter(&mut self) -> Entered<'_> {
-        self.swap();
-        Entered(self)
+        let mut stores = self.0.as_mut();
+        if let Some(s) = &mut stores {
+            s.swap();
+        }
+        Entered(stores)
     }
 
+    /// The entries, leaving `self` without them, so that the taker can enter them once for
+    /// many frames (each [`RunMemos::enter`] of `self` then leaves the slots as they are).
+    pub(crate) fn take(&mut self) -> RunMemos {
+        RunMemos(self.0.take())
+    }
+}
+
+impl Stores {
     fn swap(&mut self) {
         self.poses.swap_with_thread();
         self.shapes.swap_with_thread();
@@ -48,10 +64,12 @@ impl RunMemos {
 }
 
 /// While alive, the thread's memo slots hold one run's entries.
-pub(crate) struct Entered<'m>(&'m mut RunMemos);
+pub(crate) struct Entered<'m>(Option<&'m mut Stores>);
 
 impl Drop for Entered<'_> {
     fn drop(&mut self) {
-        self.0.swap();
+        if let Some(s) = &mut self.0 {
+            s.swap();
+        }
     }
 }

@@ -1,6 +1,7 @@
 //! World → road: nearest (road, lane, s, t) of a point, via the spatial index and a Newton
 //! projection onto the exact reference line.
 
+use crate::geometry::CurvePose;
 use crate::model::road::Road;
 use crate::network::RoadNetwork;
 use crate::road_geometry::LaneBorders;
@@ -37,10 +38,20 @@ const END_TOLERANCE: f64 = 1e-6;
 /// Project (x, y) onto the reference line of `road` starting from `s_guess`.
 /// Returns (s, t, along-track residual; non-zero only past the road's ends).
 pub fn project_onto_road(road: &Road, x: f64, y: f64, s_guess: f64) -> (f64, f64, f64) {
+    let (s, t, along, _) = project_with_heading(road, x, y, s_guess);
+    (s, t, along)
+}
+
+/// [`project_onto_road`] and the reference heading at the s found.
+fn project_with_heading(road: &Road, x: f64, y: f64, s_guess: f64) -> (f64, f64, f64, f64) {
     let mut s = s_guess.clamp(0.0, road.length);
+    // The last pose evaluated, with the s it was evaluated at and its heading's sin/cos: when
+    // the iteration ends on that very s (same bits), the final pose is that one, not recomputed.
+    let mut last: Option<(u64, CurvePose, f64, f64)> = None;
     for _ in 0..40 {
         let p = road.reference_pose(s);
         let (sin, cos) = p.hdg.sin_cos();
+        last = Some((s.to_bits(), p, sin, cos));
         let (dx, dy) = (x - p.x, y - p.y);
         let along = dx * cos + dy * sin;
         let lat = -dx * sin + dy * cos;
@@ -53,10 +64,16 @@ pub fn project_onto_road(road: &Road, x: f64, y: f64, s_guess: f64) -> (f64, f64
             break;
         }
     }
-    let p = road.reference_pose(s);
-    let (sin, cos) = p.hdg.sin_cos();
+    let (p, sin, cos) = match last {
+        Some((bits, p, sin, cos)) if bits == s.to_bits() => (p, sin, cos),
+        _ => {
+            let p = road.reference_pose(s);
+            let (sin, cos) = p.hdg.sin_cos();
+            (p, sin, cos)
+        }
+    };
     let (dx, dy) = (x - p.x, y - p.y);
-    (s, -dx * sin + dy * cos, dx * cos + dy * sin)
+    (s, -dx * sin + dy * cos, dx * cos + dy * sin, p.hdg)
 }
 
 /// Lane of `road` at (s, t): the lane whose borders contain t, or the outermost lane on
@@ -114,13 +131,13 @@ impl RoadNetwork {
     /// (a simulator that lays t along a banked road's tilted surface divides by cos(roll)).
     pub fn locate_on_road_by(&self, road: usize, x: f64, y: f64, s_guess: f64, surface_t: &dyn Fn(&Road, f64, f64) -> f64) -> Option<LanePosition> {
         let r = self.roads.get(road)?;
-        let (s, t, along) = project_onto_road(r, x, y, s_guess);
+        let (s, t, along, heading) = project_with_heading(r, x, y, s_guess);
         let t = surface_t(r, s, t);
         let section = r.section_index_at(s);
         let (lane_id, borders, lateral) = lane_at(r, section, s, t)?;
         let off_end = if along.abs() > END_TOLERANCE { along.abs() } else { 0.0 };
         let distance = if off_end > 0.0 || lateral > 0.0 { off_end.hypot(lateral) } else { 0.0 };
-        Some(LanePosition { road, section, lane_id, s, t, offset: t - borders.center(), distance, heading: r.reference_pose(s).hdg })
+        Some(LanePosition { road, section, lane_id, s, t, offset: t - borders.center(), distance, heading })
     }
 
     /// Best s guess per road from the candidate segments: (road, s, squared distance).

@@ -80,7 +80,7 @@ impl RefLine {
                 continue;
             }
             let pp = ParamPoly3::new(u, v, PRange::Normalized, len);
-            geometries.push(Geometry { s, x: w[0].p.x, y: w[0].p.y, hdg: w[0].hdg, length: len, shape: Shape::ParamPoly3(pp) });
+            geometries.push(Geometry::new(s, w[0].p.x, w[0].p.y, w[0].hdg, len, Shape::ParamPoly3(pp)));
             s += len;
             knots_s.push(s);
         }

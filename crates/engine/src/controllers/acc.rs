@@ -92,13 +92,7 @@ pub(super) fn lane_delta(net: &RoadNetwork, a: LanePos, b: LanePos, max: f64) ->
 impl<'a> Sim<'a> {
     /// Step every active ACC (and ALKS) controller by `dt`, after the default controller.
     pub(crate) fn step_acc_controllers(&mut self, dt: f64) {
-        self.for_each_controller(|sim, e, c| {
-            if let super::state::ControllerRt::Acc(a) = c {
-                if a.active {
-                    sim.step_acc(e, a, dt);
-                }
-            }
-        });
+        step_active!(self, Acc, |sim, e, a| sim.step_acc(e, a, dt));
     }
 
     fn step_acc(&mut self, e: usize, a: &mut AccRt, dt: f64) {

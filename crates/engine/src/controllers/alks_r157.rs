@@ -558,13 +558,7 @@ impl<'a> Sim<'a> {
     /// the first step), so it detects its target without closing speed and runs its cruise
     /// control, whose acceleration the reaction phase of the next steps keeps (Model::Step).
     pub(crate) fn step_alks_r157_controllers(&mut self, dt: f64) {
-        self.for_each_controller(|sim, e, c| {
-            if let super::state::ControllerRt::AlksR157(a) = c {
-                if a.active {
-                    sim.step_alks_r157(e, a, dt);
-                }
-            }
-        });
+        step_active!(self, AlksR157, |sim, e, a| sim.step_alks_r157(e, a, dt));
     }
 
     pub(super) fn step_alks_r157(&mut self, e: usize, a: &mut AlksR157Rt, dt: f64) {

@@ -199,13 +199,7 @@ impl<'a> Sim<'a> {
 
     /// Step every active FollowRoute controller by `dt`, after the default controller.
     pub(crate) fn step_route_followers(&mut self, dt: f64) {
-        self.for_each_controller(|sim, e, c| {
-            if let super::state::ControllerRt::FollowRoute(f) = c {
-                if f.active {
-                    sim.step_follow_route(e, f, dt);
-                }
-            }
-        });
+        step_active!(self, FollowRoute, |sim, e, f| sim.step_follow_route(e, f, dt));
     }
 
     /// esmini's `ControllerFollowRoute::Step`.

@@ -134,13 +134,7 @@ impl<'a> Sim<'a> {
     /// Step every active LoomingController by `dt`, after the default controller (esmini steps
     /// its controllers then, in frame 0 too with dt = 0).
     pub(crate) fn step_looming_controllers(&mut self, dt: f64) {
-        self.for_each_controller(|sim, e, c| {
-            if let super::state::ControllerRt::Looming(l) = c {
-                if l.active {
-                    sim.step_looming(e, l, dt);
-                }
-            }
-        });
+        step_active!(self, Looming, |sim, e, l| sim.step_looming(e, l, dt));
     }
 
     /// ControllerLooming::GetProbeInfo(distance, LOOKAHEADMODE_AT_LANE_CENTER).relative_h: the

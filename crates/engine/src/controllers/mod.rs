@@ -8,6 +8,21 @@
 //! naming it; the ones that need a human or an outside process (Interactive, External, SUMO,
 //! HID, UDP driver) say so.
 
+/// `$sim.for_each_controller` over the active controllers of one `ControllerRt` variant:
+/// `step_active!(self, Acc, |sim, e, a| sim.step_acc(e, a, dt))`.
+macro_rules! step_active {
+    ($sim:expr, $variant:ident, |$s:ident, $e:ident, $x:ident| $body:expr) => {
+        $sim.for_each_controller(
+            |c| matches!(c, $crate::controllers::state::ControllerRt::$variant(x) if x.active),
+            |$s, $e, c| {
+                if let $crate::controllers::state::ControllerRt::$variant($x) = c {
+                    $body;
+                }
+            },
+        )
+    };
+}
+
 pub(crate) mod acc;
 pub(crate) mod alks;
 pub(crate) mod alks_r157;
@@ -41,12 +56,17 @@ pub(crate) fn controller_type(c: &Controller) -> &str {
 impl<'a> Sim<'a> {
     /// Runs `step` on each entity's controller, the entity being in the run: the controller is
     /// taken out of its slot meanwhile (so that `step` may use the whole simulation) and put
-    /// back after. Each kind's stepping picks its own variant.
-    pub(crate) fn for_each_controller(&mut self, mut step: impl FnMut(&mut Self, usize, &mut ControllerRt)) {
+    /// back after. Each kind's stepping picks its own variant; `wants` says beforehand which
+    /// controllers `step` acts on (its variant, active), so that the others are not moved out
+    /// and back for nothing (a controller's state is large; `step` leaves them as they are).
+    pub(crate) fn for_each_controller(&mut self, wants: impl Fn(&ControllerRt) -> bool, mut step: impl FnMut(&mut Self, usize, &mut ControllerRt)) {
         if !self.any_controller {
             return;
         }
         for e in 0..self.controllers.len() {
+            if !self.controllers.get(e).and_then(Option::as_ref).is_some_and(&wants) {
+                continue;
+            }
             // esmini's ScenarioEngine::step steps every active controller whether or not its
             // entity is in the simulation. Done so for the ACC (a deleted entity's speed goes on
             // changing: fixture acc_steps_while_away.xosc); the other models wait while their

@@ -108,13 +108,7 @@ impl<'a> Sim<'a> {
     /// Step every active NaturalDriver by `dt`, after the default controller moved the others
     /// (also at frame 0 with `dt` = 0, as esmini steps its controllers there too).
     pub(crate) fn step_natural_drivers(&mut self, dt: f64) {
-        self.for_each_controller(|sim, e, c| {
-            if let ControllerRt::NaturalDriver(nd) = c {
-                if nd.active {
-                    sim.step_natural_driver(e, nd, dt);
-                }
-            }
-        });
+        step_active!(self, NaturalDriver, |sim, e, nd| sim.step_natural_driver(e, nd, dt));
     }
 
     /// Before the default controller: start or step the injected lane change, and keep the

@@ -97,13 +97,7 @@ impl<'a> Sim<'a> {
     /// an OffroadFollower's vehicle model caps the speed at its limit at once
     /// (ControllerOffroadFollower::Step: SetMaxSpeed, DrivingControlAnalog).
     pub(crate) fn step_offroad_followers_frame0(&mut self) {
-        self.for_each_controller(|sim, e, c| {
-            if let super::state::ControllerRt::OffroadFollower(f) = c {
-                if f.active {
-                    sim.step_offroad_follower(e, f, 0.0);
-                }
-            }
-        });
+        step_active!(self, OffroadFollower, |sim, e, f| sim.step_offroad_follower(e, f, 0.0));
     }
 
     /// One step of OffroadFollower `e` (after the default controller).

@@ -34,9 +34,39 @@ pub struct Geometry {
     pub hdg: f64,
     pub length: f64,
     pub shape: Shape,
+    /// `hdg.sin_cos()` and the bits of the `hdg` it was computed from: every world pose needs
+    /// them, and `hdg` (a public field) is checked against the bits before the pair is used.
+    hdg_trig: (u64, f64, f64),
+}
+
+fn trig_of(hdg: f64) -> (u64, f64, f64) {
+    let (sin, cos) = hdg.sin_cos();
+    (hdg.to_bits(), sin, cos)
 }
 
 impl Geometry {
+    /// A primitive placed at (x, y, hdg) from `s` for `length`.
+    pub fn new(s: f64, x: f64, y: f64, hdg: f64, length: f64, shape: Shape) -> Geometry {
+        Geometry { s, x, y, hdg, length, shape, hdg_trig: trig_of(hdg) }
+    }
+
+    /// Turn the start heading to `hdg`.
+    pub fn set_hdg(&mut self, hdg: f64) {
+        self.hdg = hdg;
+        self.hdg_trig = trig_of(hdg);
+    }
+
+    /// `self.hdg.sin_cos()`: the stored pair when `hdg` still has the bits it was computed
+    /// from (the same call on the same value, so the same bits), else computed afresh.
+    fn hdg_sin_cos(&self) -> (f64, f64) {
+        let (bits, sin, cos) = self.hdg_trig;
+        if bits == self.hdg.to_bits() {
+            (sin, cos)
+        } else {
+            self.hdg.sin_cos()
+        }
+    }
+
     /// Local-frame pose `ds` past the geometry start.
     pub fn local_at(&self, ds: f64) -> CurvePose {
         match &self.shape {
@@ -51,7 +81,7 @@ impl Geometry {
     /// World pose `ds` past the geometry start.
     pub fn pose_at(&self, ds: f64) -> CurvePose {
         let l = self.local_at(ds);
-        let (sin, cos) = self.hdg.sin_cos();
+        let (sin, cos) = self.hdg_sin_cos();
         CurvePose { x: self.x + l.x * cos - l.y * sin, y: self.y + l.x * sin + l.y * cos, hdg: self.hdg + l.hdg, curvature: l.curvature }
     }
 

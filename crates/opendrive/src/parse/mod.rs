@@ -95,7 +95,7 @@ fn apply_header_offset(roads: &mut [crate::model::road::Road], offset: &crate::m
             let (x, y, _) = offset.apply(g.x, g.y, 0.0);
             g.x = x;
             g.y = y;
-            g.hdg = (g.hdg + offset.hdg).rem_euclid(std::f64::consts::TAU);
+            g.set_hdg((g.hdg + offset.hdg).rem_euclid(std::f64::consts::TAU));
         }
         for e in &mut road.elevation {
             e.a += offset.z;

@@ -63,7 +63,7 @@ pub(super) fn parse_plan_view(ctx: &mut Ctx, node: Node) -> Result<Vec<Geometry>
             }
         }
         let shape = shape.ok_or_else(|| ctx.error(g, "<geometry> needs one of <line>, <arc>, <spiral>, <poly3>, <paramPoly3>"))?;
-        out.push(Geometry { s, x, y, hdg, length, shape });
+        out.push(Geometry::new(s, x, y, hdg, length, shape));
     }
     out.sort_by(|a, b| a.s.total_cmp(&b.s));
     Ok(out)
