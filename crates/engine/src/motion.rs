@@ -3,7 +3,7 @@
 //! ahead when there is no road); then speed-derived quantities, odometer and the timers of the
 //! stand-still, off-road and end-of-road conditions are updated.
 
-use crate::dynamics::SMALL;
+use crate::dynamics::{ESMINI_SMALL_NUMBER, SMALL};
 use crate::ghost::state::GhostMode;
 use crate::roads::road_follow::wrap;
 use crate::roads::{move_along_route_drawing, MoveStatus};
@@ -27,7 +27,8 @@ impl<'a> Sim<'a> {
         let net = self.net;
         let random = &mut self.random;
         for en in &mut self.entities {
-            if !en.active || en.outside || en.moved_by_action || en.speed.abs() <= SMALL {
+            // ScenarioEngine::step: no default move at |speed| <= SMALL_NUMBER (1e-6).
+            if !en.active || en.outside || en.moved_by_action || en.speed.abs() <= ESMINI_SMALL_NUMBER {
                 continue;
             }
             if en.roadless {
@@ -97,7 +98,7 @@ impl<'a> Sim<'a> {
             !en.speed_set
                 && en.active
                 && !en.outside
-                && en.speed.abs() <= SMALL
+                && en.speed.abs() <= ESMINI_SMALL_NUMBER
                 && !links.contains(&Some(i))
                 && !controllers.get(i).is_some_and(|c| c.as_ref().is_some_and(|c| c.sets_speed()))
         };

@@ -28,18 +28,48 @@ pub(crate) fn banked(road: &Road, s: f64, t: f64, curvature: f64) -> (f64, f64, 
     (th, t * sin, turn)
 }
 
+/// cos(AVOID_ZERO(0)) = cos(1e-6) = 1 − 5e-13: `Position::XYZ2TrackPos` divides the lateral
+/// distance of a world point by cos(AVOID_ZERO(roll)), so on a road without banking too a point
+/// given in the world lands a few 1e-13 m further from the reference line than it is; moved
+/// along its lane it keeps that t, so an entity placed by a WorldPosition on a lane centre
+/// drives on a hair outside it. Only a tie notices (a follower exactly in line with its lead
+/// decides which way to turn by the sign of that hair).
+const FLAT_ROAD_COS: f64 = 0.999_999_999_999_5;
+
+/// esmini's AVOID_ZERO (CommonMini.hpp): a magnitude below SMALL_NUMBER becomes SMALL_NUMBER,
+/// 0 counting as positive.
+fn esmini_avoid_zero(x: f64) -> f64 {
+    let sign = if x < 0.0 { -1.0 } else { 1.0 };
+    sign * x.abs().max(crate::dynamics::ESMINI_SMALL_NUMBER)
+}
+
 /// The inverse of [`banked`]'s lateral part, as esmini's `Position::XYZ2TrackPos` does it: a
 /// world point's horizontal distance `th` from the reference line at `s` is divided by
 /// cos(roll) ("compensate for banking"), so its t is measured along the tilted surface.
 pub(crate) fn surface_t(road: &Road, s: f64, th: f64) -> f64 {
     if road.superelevation.is_empty() {
-        return th;
+        // The roll is 0, which esmini's AVOID_ZERO turns into SMALL_NUMBER: the distance
+        // grows by 1/cos(1e-6), about 5e-13 of itself (see `FLAT_ROAD_COS`).
+        return th / FLAT_ROAD_COS;
     }
-    let cos = roll_at(road, s).0.cos();
+    let cos = esmini_avoid_zero(roll_at(road, s).0).cos();
     // A road rolled to the vertical has no horizontal extent: keep the distance as it is.
     if cos.abs() < 1e-9 {
         th
     } else {
         th / cos
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_flat_roads_cosine_is_that_of_esminis_small_number() {
+        assert_eq!(FLAT_ROAD_COS, crate::dynamics::ESMINI_SMALL_NUMBER.cos());
+        assert_eq!(esmini_avoid_zero(0.0), crate::dynamics::ESMINI_SMALL_NUMBER);
+        assert_eq!(esmini_avoid_zero(-1e-9), -crate::dynamics::ESMINI_SMALL_NUMBER);
+        assert_eq!(esmini_avoid_zero(0.2), 0.2);
     }
 }

@@ -25,3 +25,17 @@ fn a_standing_car_whose_controller_is_off_takes_its_sideways_rate_as_speed() {
     let on = at(&run, "AccOn", 4.0);
     assert!(close(on.x, 343.937143, 1e-4) && close(on.speed, 15.0, 1e-6), "{on:?}");
 }
+
+/// A standing car placed by a WorldPosition off its lane centre: the hair by which esmini's
+/// XYZ2TrackPos puts it further out (cos(1e-6)) moves it 3.5e-12 m in the first step of a
+/// LaneOffsetAction, a derived speed of 3.5e-10 m/s that ScenarioEngine::step still counts as
+/// standing (|speed| <= SMALL_NUMBER, 1e-6): the sideways rate becomes its speed as without the
+/// hair. Fixture `world_placed_standing_lane_offset.xosc`; expected values from esmini 3.6.0.
+#[test]
+fn a_hair_of_motion_leaves_a_standing_car_standing_for_the_default_controller() {
+    let run = run_fixture_on("world_placed_standing_lane_offset.xosc", "straight.xodr", 5.0);
+    let a = at(&run, "Car", 1.5);
+    assert!(close(a.x, 100.183303, 1e-5) && close(a.y, -6.812878, 1e-5) && close(a.speed, 0.381881, 1e-5), "{a:?}");
+    let b = at(&run, "Car", 4.0);
+    assert!(close(b.x, 101.138006, 1e-5) && close(b.y, -5.858175, 1e-5) && close(b.speed, 0.381881, 1e-5), "{b:?}");
+}

@@ -11,6 +11,12 @@
 //! DistanceFromPointToLine2DWithAngle (x·sin − y·cos) gives +0. Fixture
 //! `follow_reference_reversing_on_line.xosc`: the reference 70 m behind in the same lane.
 //!
+//! The same with the reference placed by a WorldPosition on the lane centre: esmini's
+//! Position::XYZ2TrackPos divides a world point's lateral offset by cos(AVOID_ZERO(0)) =
+//! cos(1e-6), so the reference drives 5e-13 of its t further right, the Ego is a hair left of
+//! its line and the turn goes the other way. Fixture
+//! `follow_reference_reversing_world_placed.xosc`.
+//!
 //! Numbers from esmini 3.6.0's runs.
 
 use crate::common::oracle::{assert_esmini_pose_at, assert_matches_esmini, run_fixture_scenario};
@@ -18,6 +24,7 @@ use crate::common::*;
 
 const FIXTURE: &str = "follow_reference_facing_away.xosc";
 const REVERSING: &str = "follow_reference_reversing_on_line.xosc";
+const WORLD_PLACED: &str = "follow_reference_reversing_world_placed.xosc";
 
 #[test]
 fn a_reference_facing_the_other_way_turns_the_follower_left() {
@@ -41,4 +48,19 @@ fn reversing_on_the_references_line_turns_the_wheels_left() {
     assert_esmini_pose_at(&run, "Ego", 1.0, 88.106302, -0.148681, 4.947992);
     assert_esmini_pose_at(&run, "Ego", 5.0, 84.999724, 2.672464, 0.229354);
     assert_matches_esmini(REVERSING, &run, 1e-3);
+}
+
+#[test]
+fn a_reference_placed_in_the_world_lies_a_hair_right_of_its_lane_centre() {
+    let run = run_fixture_scenario(WORLD_PLACED, 20.0);
+    // Forward for a moment, steering right by a hair (the heading wraps just below 2π), then
+    // backwards with the wheels turned right: the rear swings left of the lane centre.
+    let first = at(&run, "Ego", 0.02);
+    assert!(first.h > 6.0 && first.speed > 0.0, "{first:?}");
+    let early = at(&run, "Ego", 0.5);
+    assert!(early.speed < 0.0 && early.y > -1.75, "{early:?}");
+    assert_esmini_pose_at(&run, "Ego", 0.5, 93.107972, -0.190816, 5.630792);
+    assert_esmini_pose_at(&run, "Ego", 1.0, 88.106302, -3.351319, 1.335193);
+    assert_esmini_pose_at(&run, "Ego", 5.0, 84.999724, -6.172464, 6.053831);
+    assert_matches_esmini(WORLD_PLACED, &run, 1e-3);
 }
