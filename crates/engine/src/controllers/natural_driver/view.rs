@@ -28,17 +28,21 @@ pub(crate) const RIGHT_FOLLOW: usize = 5;
 pub(crate) type Vois = [Option<(usize, f64)>; 6];
 
 /// Road delta from `a` to `b` as esmini's `Position::Delta` has it: signed distance along the
-/// roads (positive ahead of the way `a` faces) and lane difference (positive towards the road
-/// centre as `a` sees it, the centre lane skipped). On one road the distance is the difference
-/// of s whatever its size; across roads the shortest chain within `max`, searched forward and,
-/// when `both`, backward. `None` when no path is found.
+/// roads (positive ahead of the way `a` faces) and lane difference (b's lane id minus a's, by
+/// one less across the centre lane: whatever side of the road `a` drives on, as esmini's
+/// `diff.dLaneId`). On one road the distance is the difference of s whatever its size; across
+/// roads the shortest chain within `max`, searched forward and, when `both`, backward. `None`
+/// when no path is found.
 pub(crate) fn road_delta(net: &RoadNetwork, a: &LanePos, b: &LanePos, both: bool, max: f64) -> Option<(f64, i32)> {
+    // esmini's SIGN counts 0 as positive.
+    let side = |id: i32| if id < 0 { -1 } else { 1 };
     let lane_diff = |from: i32, to: i32| {
-        let mut d = -from.signum() * (to - from);
-        if from.signum() != to.signum() && from != 0 && to != 0 {
-            d -= d.signum();
+        let d = to - from;
+        if side(from) != side(to) {
+            (d.abs() - 1) * side(d)
+        } else {
+            d
         }
-        d
     };
     if a.road == b.road {
         return Some(((b.s - a.s) * a.dir, lane_diff(a.lane_id, b.lane_id)));
@@ -118,8 +122,9 @@ impl<'a> Sim<'a> {
         found.unwrap_or((LARGE_NUMBER, 0))
     }
 
-    /// The vehicles of interest of entity `e` among `around` (esmini's UpdateSurroundingVehicles;
-    /// the left/right test multiplies the lane sign in twice, as esmini does).
+    /// The vehicles of interest of entity `e` among `around` (esmini's UpdateSurroundingVehicles:
+    /// the lane difference times minus the sign of its own lane, 1 left and -1 right, so a car
+    /// on a positive lane files the lane further out as its right one, as esmini does).
     pub(super) fn nd_vois(&self, e: usize, around: &[usize], lookahead: f64) -> Vois {
         let mut v: Vois = [None; 6];
         let my_lane = self.entities.get(e).and_then(|x| x.lane).map_or(0, |l| l.lane_id);
