@@ -13,6 +13,7 @@ mod holds_lateral;
 mod looming;
 mod natural_driver;
 mod natural_driver_additive;
+mod natural_driver_junction_outer_lane;
 mod natural_driver_left_hand_lanes;
 mod natural_driver_standing_start;
 mod offroad_follower;

@@ -85,7 +85,13 @@ pub(crate) fn desired_gap(p: &NdParams, follow_speed: f64, lead_speed: f64) -> f
 }
 
 /// The driving lanes to the left and right of `lp` (0: none), or `None` when its side of the
-/// road has at most one driving lane.
+/// road has at most one driving lane (esmini's ControllerNaturalDriver::AdjacentLanesAvailable).
+/// esmini keeps a section's lanes sorted by id, + to − with the centre lane, and decides the
+/// side away from the outer edge by the lane's index: on the right-hand side a lane whose index
+/// is the largest minus the number of left lanes has no left neighbour (the outer lane of a road
+/// with right lanes only, e.g. a junction's connecting road), on the left-hand side a lane whose
+/// index + 1 is the number of right lanes; otherwise the neighbour must be a driving lane (the
+/// centre lane never is).
 pub(crate) fn adjacent_lanes(net: &RoadNetwork, lp: &LanePos) -> Option<[i32; 2]> {
     let road = net.roads.get(lp.road)?;
     let sec = road.lane_sections.get(road.section_index_at(lp.s.clamp(0.0, road.length)))?;
@@ -98,8 +104,16 @@ pub(crate) fn adjacent_lanes(net: &RoadNetwork, lp: &LanePos) -> Option<[i32; 2]
         return None;
     }
     let driving = |id: i32| id != 0 && id.signum() == cur.signum() && side.iter().any(|l| l.id == id && l.kind.is_any_driving());
+    let centre = usize::from(sec.center.is_some());
+    let max_idx = (sec.left.len() + centre + sec.right.len()).saturating_sub(1);
+    let idx = sec.left.iter().filter(|l| l.id > cur).count() + if cur < 0 { centre } else { 0 } + sec.right.iter().filter(|l| l.id > cur).count();
     let (left, right) = (cur - cur.signum(), cur + cur.signum());
-    Some([if driving(left) { left } else { 0 }, if driving(right) { right } else { 0 }])
+    let (left_ok, right_ok) = if cur < 0 {
+        (idx != max_idx.saturating_sub(sec.left.len()) && driving(left), idx != max_idx && driving(right))
+    } else {
+        (idx + 1 != sec.right.len() && driving(left), idx != 0 && driving(right))
+    };
+    Some([if left_ok { left } else { 0 }, if right_ok { right } else { 0 }])
 }
 
 impl<'a> Sim<'a> {
