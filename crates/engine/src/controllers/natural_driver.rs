@@ -18,9 +18,10 @@
 //!
 //! Like esmini: the speed jumps down to `desiredSpeed` when above it, a second NaturalDriver
 //! changing into the same lane close by aborts the change, a positive `maxDec` is a lower bound
-//! of the acceleration (ControllerNaturalDriver::Step clips from below at it). Unlike esmini, no
-//! lane change is injected while standing still. In the additive `mode` the default controller
-//! moves the entity by its speed before the driver moves it again, as in esmini.
+//! of the acceleration (ControllerNaturalDriver::Step clips from below at it), and a change found
+//! worth it while standing still is injected towards lane 0 (the reference line) without leaving
+//! the driving state. In the additive `mode` the default controller moves the entity by its speed
+//! before the driver moves it again, as in esmini.
 
 pub(crate) mod state;
 mod view;
@@ -168,8 +169,9 @@ impl<'a> Sim<'a> {
                     break;
                 }
             }
-            // esmini would inject towards a stale target when standing still; osc2cr does not.
-            initiate &= moving;
+            // Standing still, esmini keeps the flag of the last lane checked and injects all the
+            // same (ControllerNaturalDriver::Step): towards the target it has, 0 while driving,
+            // so the car slides onto the reference line and stays in DRIVE, accelerating.
         }
         if initiate {
             if self.nd_abort_lane_change(e, nd, &around, &vois) {

@@ -13,5 +13,7 @@ mod holds_lateral;
 mod looming;
 mod natural_driver;
 mod natural_driver_additive;
+mod natural_driver_lanes_beside;
+mod natural_driver_standing_start;
 mod offroad_follower;
 mod teleport_under_controllers;

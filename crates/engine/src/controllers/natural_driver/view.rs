@@ -28,17 +28,21 @@ pub(crate) const RIGHT_FOLLOW: usize = 5;
 pub(crate) type Vois = [Option<(usize, f64)>; 6];
 
 /// Road delta from `a` to `b` as esmini's `Position::Delta` has it: signed distance along the
-/// roads (positive ahead of the way `a` faces) and lane difference (positive towards the road
-/// centre as `a` sees it, the centre lane skipped). On one road the distance is the difference
-/// of s whatever its size; across roads the shortest chain within `max`, searched forward and,
-/// when `both`, backward. `None` when no path is found.
+/// roads (positive ahead of the way `a` faces) and lane difference (b's lane id minus a's, by
+/// one less across the centre lane: whatever side of the road `a` drives on, as esmini's
+/// `diff.dLaneId`). On one road the distance is the difference of s whatever its size; across
+/// roads the shortest chain within `max`, searched forward and, when `both`, backward. `None`
+/// when no path is found.
 pub(crate) fn road_delta(net: &RoadNetwork, a: &LanePos, b: &LanePos, both: bool, max: f64) -> Option<(f64, i32)> {
+    // esmini's SIGN counts 0 as positive.
+    let side = |id: i32| if id < 0 { -1 } else { 1 };
     let lane_diff = |from: i32, to: i32| {
-        let mut d = -from.signum() * (to - from);
-        if from.signum() != to.signum() && from != 0 && to != 0 {
-            d -= d.signum();
+        let d = to - from;
+        if side(from) != side(to) {
+            (d.abs() - 1) * side(d)
+        } else {
+            d
         }
-        d
     };
     if a.road == b.road {
         return Some(((b.s - a.s) * a.dir, lane_diff(a.lane_id, b.lane_id)));
@@ -81,7 +85,13 @@ pub(crate) fn desired_gap(p: &NdParams, follow_speed: f64, lead_speed: f64) -> f
 }
 
 /// The driving lanes to the left and right of `lp` (0: none), or `None` when its side of the
-/// road has at most one driving lane.
+/// road has at most one driving lane (esmini's ControllerNaturalDriver::AdjacentLanesAvailable).
+/// esmini keeps a section's lanes sorted by id, + to − with the centre lane, and decides the
+/// side away from the outer edge by the lane's index: on the right-hand side a lane whose index
+/// is the largest minus the number of left lanes has no left neighbour (the outer lane of a road
+/// with right lanes only, e.g. a junction's connecting road), on the left-hand side a lane whose
+/// index + 1 is the number of right lanes; otherwise the neighbour must be a driving lane (the
+/// centre lane never is).
 pub(crate) fn adjacent_lanes(net: &RoadNetwork, lp: &LanePos) -> Option<[i32; 2]> {
     let road = net.roads.get(lp.road)?;
     let sec = road.lane_sections.get(road.section_index_at(lp.s.clamp(0.0, road.length)))?;
@@ -94,8 +104,16 @@ pub(crate) fn adjacent_lanes(net: &RoadNetwork, lp: &LanePos) -> Option<[i32; 2]
         return None;
     }
     let driving = |id: i32| id != 0 && id.signum() == cur.signum() && side.iter().any(|l| l.id == id && l.kind.is_any_driving());
+    let centre = usize::from(sec.center.is_some());
+    let max_idx = (sec.left.len() + centre + sec.right.len()).saturating_sub(1);
+    let idx = sec.left.iter().filter(|l| l.id > cur).count() + if cur < 0 { centre } else { 0 } + sec.right.iter().filter(|l| l.id > cur).count();
     let (left, right) = (cur - cur.signum(), cur + cur.signum());
-    Some([if driving(left) { left } else { 0 }, if driving(right) { right } else { 0 }])
+    let (left_ok, right_ok) = if cur < 0 {
+        (idx != max_idx.saturating_sub(sec.left.len()) && driving(left), idx != max_idx && driving(right))
+    } else {
+        (idx + 1 != sec.right.len() && driving(left), idx != 0 && driving(right))
+    };
+    Some([if left_ok { left } else { 0 }, if right_ok { right } else { 0 }])
 }
 
 impl<'a> Sim<'a> {
@@ -118,8 +136,9 @@ impl<'a> Sim<'a> {
         found.unwrap_or((LARGE_NUMBER, 0))
     }
 
-    /// The vehicles of interest of entity `e` among `around` (esmini's UpdateSurroundingVehicles;
-    /// the left/right test multiplies the lane sign in twice, as esmini does).
+    /// The vehicles of interest of entity `e` among `around` (esmini's UpdateSurroundingVehicles:
+    /// the lane difference times minus the sign of its own lane, 1 left and -1 right, so a car
+    /// on a positive lane files the lane further out as its right one, as esmini does).
     pub(super) fn nd_vois(&self, e: usize, around: &[usize], lookahead: f64) -> Vois {
         let mut v: Vois = [None; 6];
         let my_lane = self.entities.get(e).and_then(|x| x.lane).map_or(0, |l| l.lane_id);
