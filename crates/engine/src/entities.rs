@@ -156,6 +156,20 @@ impl Entity {
         }
     }
 
+    /// Turn the entity to the absolute heading `h` as esmini's Position::SetHeading does
+    /// (EvaluateHPR with H_ABS): the angle to the road (h_relative, less the lane's drift) is
+    /// what later moves along the lane keep, and they go the way it faces (MoveAlongS's
+    /// HEADING_DIRECTION: IsAngleForward of that angle).
+    pub(crate) fn set_heading_on_lane(&mut self, net: &RoadNetwork, h: f64) {
+        self.h = wrap_2pi(h);
+        let Some(mut lp) = self.lane else { return };
+        let Some(p) = lp.pose(net) else { return };
+        lp.dir = if wrap(self.h - p.road_heading).abs() <= std::f64::consts::FRAC_PI_2 { 1.0 } else { -1.0 };
+        let drift = self.drift(net, &lp);
+        self.yaw_offset = wrap(self.h - drift - lp.facing_heading(&p));
+        self.lane = Some(lp);
+    }
+
     /// The heading drift on lane position `lp` (see `lane_slope`); remembers a section where the
     /// lane runs parallel, so that the next steps there skip the question.
     pub(crate) fn drift(&mut self, net: &RoadNetwork, lp: &LanePos) -> f64 {

@@ -212,7 +212,7 @@ impl<'a> Sim<'a> {
                 }
                 en.set_lane_pos(net, lp);
                 let done = !r.continuous && error.abs() < THRESHOLD;
-                Self::head_along(en, r);
+                Self::head_along(net, en, r);
                 return done;
             }
             Phase::Dynamic => {}
@@ -248,15 +248,19 @@ impl<'a> Sim<'a> {
         move_along_route_drawing(net, &mut lp, long_vel * dt, en.route.as_deref(), &mut self.random, pedestrian);
         lp.offset += r.lat_vel * dt;
         en.set_lane_pos(net, lp);
-        Self::head_along(en, r);
+        Self::head_along(net, en, r);
         en.moved_by_action = true;
         done
     }
 
-    fn head_along(en: &mut crate::entities::Entity, r: &mut LatDistanceRt) {
+    /// esmini's SetHeading(atan2 of the displacement since the last step): an absolute
+    /// heading, so the angle it makes with the road stays through the default controller's
+    /// move in this step (a rigid jump's row faces along the jump, and a lateral speed
+    /// condition sees none) and after the action, until something turns the entity again.
+    fn head_along(net: &opendrive::RoadNetwork, en: &mut crate::entities::Entity, r: &mut LatDistanceRt) {
         let (dx, dy) = (en.x - r.old.0, en.y - r.old.1);
         if dx * dx + dy * dy > 0.0 {
-            en.h = crate::entities::wrap_2pi(dy.atan2(dx));
+            en.set_heading_on_lane(net, dy.atan2(dx));
         }
         r.old = (en.x, en.y);
     }

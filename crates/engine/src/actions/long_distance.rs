@@ -15,7 +15,7 @@ use state::LongDistanceRt;
 
 use super::state::ActionRt;
 use crate::conditions::distance::between;
-use crate::roads::move_along_s;
+use crate::roads::move_along_s_drawn;
 use crate::sim::Sim;
 use openscenario::{CoordinateSystem, DynamicConstraints, LongitudinalDisplacement, RelativeDistanceType};
 
@@ -112,7 +112,9 @@ impl<'a> Sim<'a> {
             if let Some(en) = self.entities.get_mut(e) {
                 match (net, en.lane) {
                     (Some(net), Some(mut lp)) => {
-                        move_along_s(net, &mut lp, diff);
+                        // LongDistanceAction::Step: pos_.MoveAlongS(distance_diff), junction
+                        // selector angle −1: an arm is drawn (after a route's).
+                        move_along_s_drawn(net, &mut lp, diff, en.route.as_deref(), &mut self.random);
                         en.set_lane_pos(net, lp);
                     }
                     _ => {

@@ -12,6 +12,8 @@
 //! controller's move draws (`move_along_route_drawing`), and so do the looming controller's
 //! lane-centre probes (Position::GetProbeInfo moves a copy of the position the same way); other
 //! moves keep the earlier arm at a tie, so they never disturb the generator's sequence.
+//! A move with junction selector angle −1 (Position::MoveAlongS's two-argument form, which a
+//! rigid LongitudinalDistanceAction uses) draws the arm itself (`move_along_s_drawn`).
 
 use super::lane_geometry::lane_borders;
 use super::lane_position::LanePos;
@@ -54,6 +56,16 @@ const MAX_HOPS: usize = 16;
 /// ~1e-8 rad: a tie for esmini, decided by its draw.
 const TIE: f64 = 1e-6;
 
+/// How a move without a route picks among a junction's arms.
+enum Arms<'r> {
+    /// The arm that turns least (junction selector angle 0); a tie on esmini's coin when a
+    /// generator is given, else the earlier arm.
+    Straightest(Option<&'r mut EsminiRandom>),
+    /// Any arm, drawn from esmini's generator: Position::MoveToConnectingRoad with a junction
+    /// selector angle below 0 takes connection GetNumberBetween(0, n − 1) of the lane's n.
+    Drawn(&'r mut EsminiRandom),
+}
+
 /// Move `pos` by `dist` metres along the direction it faces (negative: backwards).
 pub(crate) fn move_along_s(net: &RoadNetwork, pos: &mut LanePos, dist: f64) -> MoveStatus {
     move_along_route(net, pos, dist, None)
@@ -61,7 +73,13 @@ pub(crate) fn move_along_s(net: &RoadNetwork, pos: &mut LanePos, dist: f64) -> M
 
 /// [`move_along_s`], taking at junctions the road an assigned route continues on.
 pub(crate) fn move_along_route(net: &RoadNetwork, pos: &mut LanePos, dist: f64, route: Option<&routing::Route>) -> MoveStatus {
-    move_along(net, pos, dist, route, None, false, true)
+    move_along(net, pos, dist, route, Arms::Straightest(None), false, true)
+}
+
+/// [`move_along_route`] as esmini's `Position::MoveAlongS(ds)` (junction selector angle −1):
+/// without a route, a junction's arm is drawn from esmini's generator.
+pub(crate) fn move_along_s_drawn(net: &RoadNetwork, pos: &mut LanePos, dist: f64, route: Option<&routing::Route>, random: &mut EsminiRandom) -> MoveStatus {
+    move_along(net, pos, dist, route, Arms::Drawn(random), false, true)
 }
 
 /// Move `pos` by `ds` in road s (not a distance along its lane) in the direction it faces,
@@ -76,7 +94,7 @@ pub(crate) fn move_along_road_s(
     route: Option<&routing::Route>,
     random: Option<&mut EsminiRandom>,
 ) -> MoveStatus {
-    move_along(net, pos, ds, route, random, false, false)
+    move_along(net, pos, ds, route, Arms::Straightest(random), false, false)
 }
 
 /// [`move_along_route`] for an entity's own move by the default controller: a junction tie is
@@ -90,7 +108,7 @@ pub(crate) fn move_along_route_drawing(
     random: &mut EsminiRandom,
     sidewalks: bool,
 ) -> MoveStatus {
-    move_along(net, pos, dist, route, Some(random), sidewalks, true)
+    move_along(net, pos, dist, route, Arms::Straightest(Some(random)), sidewalks, true)
 }
 
 /// `along_lane`: `dist` is a distance along the lane (scaled to road s on curves), else road s.
@@ -99,7 +117,7 @@ fn move_along(
     pos: &mut LanePos,
     dist: f64,
     route: Option<&routing::Route>,
-    mut random: Option<&mut EsminiRandom>,
+    mut arms: Arms,
     sidewalks: bool,
     along_lane: bool,
 ) -> MoveStatus {
@@ -136,7 +154,7 @@ fn move_along(
         let against_s = if opendrive::drives_along_s(road.rule, pos.lane_id) { 0.0 } else { std::f64::consts::PI };
         let heading_in = super::pose_memo::reference_pose(road, s_here.clamp(0.0, road.length)).hdg + against_s;
         let routed = route.and_then(|r| routed_continuation(net, r, here, end));
-        let Some((next, contact)) = routed.or_else(|| choose_continuation(net, here, end, heading_in, random.as_deref_mut())) else {
+        let Some((next, contact)) = routed.or_else(|| choose_continuation(net, here, end, heading_in, &mut arms)) else {
             pos.s = s.clamp(0.0, road.length);
             return MoveStatus::EndOfRoad;
         };
@@ -233,13 +251,7 @@ fn far_end(net: &RoadNetwork, road: usize, incoming: usize) -> Option<usize> {
 
 /// The lane continuing `here` across its `end`, and the contact point on that lane's road.
 /// `heading_in`: the road heading the entity drives in where it is.
-fn choose_continuation(
-    net: &RoadNetwork,
-    here: LaneRef,
-    end: ContactPoint,
-    heading_in: f64,
-    mut random: Option<&mut EsminiRandom>,
-) -> Option<(LaneRef, ContactPoint)> {
+fn choose_continuation(net: &RoadNetwork, here: LaneRef, end: ContactPoint, heading_in: f64, arms: &mut Arms) -> Option<(LaneRef, ContactPoint)> {
     let mut cands = net.lanes_across(here, end);
     if cands.is_empty() {
         return None;
@@ -259,19 +271,29 @@ fn choose_continuation(
     if let Some(j) = junction {
         cands = junction_arms(net, here, j, cands);
     }
+    // Only lanes leading away in the same travel sense (lanes_across gives lane links, which
+    // are directional already).
+    let contact_at = |c: &LaneRef| -> ContactPoint {
+        if c.road != here.road {
+            contact_of(c.road)
+        } else if end == ContactPoint::End {
+            ContactPoint::Start
+        } else {
+            ContactPoint::End
+        }
+    };
+    let mut random = match arms {
+        Arms::Drawn(g) if junction.is_some() => {
+            let n = i32::try_from(cands.len()).unwrap_or(i32::MAX);
+            let k = if n > 1 { usize::try_from(g.number_between(0, n - 1)).unwrap_or(0) } else { 0 };
+            return cands.get(k).map(|c| (*c, contact_at(c)));
+        }
+        Arms::Drawn(_) => None,
+        Arms::Straightest(g) => g.as_deref_mut(),
+    };
     let mut best: Option<(f64, LaneRef, ContactPoint)> = None;
     for c in cands {
-        // Only lanes leading away in the same travel sense (lanes_across gives lane links, which
-        // are directional already).
-        let contact = if c.road == here.road {
-            if end == ContactPoint::End {
-                ContactPoint::Start
-            } else {
-                ContactPoint::End
-            }
-        } else {
-            contact_of(c.road)
-        };
+        let contact = contact_at(&c);
         let Some(r) = net.roads.get(c.road) else { continue };
         let far_heading = match contact {
             ContactPoint::Start => r.reference_pose(r.length).hdg,

@@ -4,5 +4,6 @@ mod across_junction;
 mod across_roads;
 mod domain;
 mod entity_frame;
+mod rigid_heading;
 mod road_coordinates;
 mod road_ends;
