@@ -20,4 +20,4 @@ pub(crate) mod road_path;
 pub(crate) mod zero_width;
 
 pub(crate) use lane_position::LanePos;
-pub(crate) use road_follow::{move_along_road_s, move_along_route, move_along_route_drawing, move_along_s, MoveStatus};
+pub(crate) use road_follow::{move_along_drawn_arm, move_along_road_s, move_along_route, move_along_route_drawing, move_along_s, MoveStatus};

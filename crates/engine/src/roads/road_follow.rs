@@ -12,6 +12,12 @@
 //! controller's move draws (`move_along_route_drawing`), and so do the looming controller's
 //! lane-centre probes (Position::GetProbeInfo moves a copy of the position the same way); other
 //! moves keep the earlier arm at a tie, so they never disturb the generator's sequence.
+//!
+//! A LaneChangeAction's move is different: esmini's LatLaneChangeAction::Step calls
+//! Position::MoveAlongS with junction selector angle −1, so at a junction without a route
+//! MoveToConnectingRoad draws the connection itself, uniformly among the lane's connections
+//! (`GetNumberBetween(0, n − 1)`, none when there is only one), straight arm or not
+//! (`move_along_drawn_arm`).
 
 use super::lane_geometry::lane_borders;
 use super::lane_position::LanePos;
@@ -54,6 +60,15 @@ const MAX_HOPS: usize = 16;
 /// ~1e-8 rad: a tie for esmini, decided by its draw.
 const TIE: f64 = 1e-6;
 
+/// How a move without a route picks a junction arm.
+enum ArmChoice<'r> {
+    /// The straightest (junction selector angle 0); a tie goes to a coin from the generator
+    /// when given, else to the earlier arm.
+    Straightest(Option<&'r mut EsminiRandom>),
+    /// Any of the lane's connections, drawn from the generator (junction selector angle −1).
+    Drawn(&'r mut EsminiRandom),
+}
+
 /// Move `pos` by `dist` metres along the direction it faces (negative: backwards).
 pub(crate) fn move_along_s(net: &RoadNetwork, pos: &mut LanePos, dist: f64) -> MoveStatus {
     move_along_route(net, pos, dist, None)
@@ -61,7 +76,7 @@ pub(crate) fn move_along_s(net: &RoadNetwork, pos: &mut LanePos, dist: f64) -> M
 
 /// [`move_along_s`], taking at junctions the road an assigned route continues on.
 pub(crate) fn move_along_route(net: &RoadNetwork, pos: &mut LanePos, dist: f64, route: Option<&routing::Route>) -> MoveStatus {
-    move_along(net, pos, dist, route, None, false, true)
+    move_along(net, pos, dist, route, ArmChoice::Straightest(None), false, true)
 }
 
 /// Move `pos` by `ds` in road s (not a distance along its lane) in the direction it faces,
@@ -76,7 +91,15 @@ pub(crate) fn move_along_road_s(
     route: Option<&routing::Route>,
     random: Option<&mut EsminiRandom>,
 ) -> MoveStatus {
-    move_along(net, pos, ds, route, random, false, false)
+    move_along(net, pos, ds, route, ArmChoice::Straightest(random), false, false)
+}
+
+/// [`move_along_s`] as a LaneChangeAction moves its entity (esmini's LatLaneChangeAction::Step:
+/// Position::DistanceToDS, then Position::MoveAlongS with junction selector angle −1): into a
+/// junction without a route, the arm is drawn from esmini's generator among the lane's
+/// connections in esmini's order (Position::MoveToConnectingRoad, "randomize").
+pub(crate) fn move_along_drawn_arm(net: &RoadNetwork, pos: &mut LanePos, dist: f64, route: Option<&routing::Route>, random: &mut EsminiRandom) -> MoveStatus {
+    move_along(net, pos, dist, route, ArmChoice::Drawn(random), false, true)
 }
 
 /// [`move_along_route`] for an entity's own move by the default controller: a junction tie is
@@ -90,7 +113,7 @@ pub(crate) fn move_along_route_drawing(
     random: &mut EsminiRandom,
     sidewalks: bool,
 ) -> MoveStatus {
-    move_along(net, pos, dist, route, Some(random), sidewalks, true)
+    move_along(net, pos, dist, route, ArmChoice::Straightest(Some(random)), sidewalks, true)
 }
 
 /// `along_lane`: `dist` is a distance along the lane (scaled to road s on curves), else road s.
@@ -99,7 +122,7 @@ fn move_along(
     pos: &mut LanePos,
     dist: f64,
     route: Option<&routing::Route>,
-    mut random: Option<&mut EsminiRandom>,
+    mut arms: ArmChoice<'_>,
     sidewalks: bool,
     along_lane: bool,
 ) -> MoveStatus {
@@ -136,7 +159,7 @@ fn move_along(
         let against_s = if opendrive::drives_along_s(road.rule, pos.lane_id) { 0.0 } else { std::f64::consts::PI };
         let heading_in = super::pose_memo::reference_pose(road, s_here.clamp(0.0, road.length)).hdg + against_s;
         let routed = route.and_then(|r| routed_continuation(net, r, here, end));
-        let Some((next, contact)) = routed.or_else(|| choose_continuation(net, here, end, heading_in, random.as_deref_mut())) else {
+        let Some((next, contact)) = routed.or_else(|| choose_continuation(net, here, end, heading_in, &mut arms)) else {
             pos.s = s.clamp(0.0, road.length);
             return MoveStatus::EndOfRoad;
         };
@@ -233,13 +256,7 @@ fn far_end(net: &RoadNetwork, road: usize, incoming: usize) -> Option<usize> {
 
 /// The lane continuing `here` across its `end`, and the contact point on that lane's road.
 /// `heading_in`: the road heading the entity drives in where it is.
-fn choose_continuation(
-    net: &RoadNetwork,
-    here: LaneRef,
-    end: ContactPoint,
-    heading_in: f64,
-    mut random: Option<&mut EsminiRandom>,
-) -> Option<(LaneRef, ContactPoint)> {
+fn choose_continuation(net: &RoadNetwork, here: LaneRef, end: ContactPoint, heading_in: f64, arms: &mut ArmChoice<'_>) -> Option<(LaneRef, ContactPoint)> {
     let mut cands = net.lanes_across(here, end);
     if cands.is_empty() {
         return None;
@@ -257,8 +274,15 @@ fn choose_continuation(
     };
     let junction = junction_at(net, here, end);
     if let Some(j) = junction {
+        if let ArmChoice::Drawn(random) = arms {
+            return drawn_arm(net, here, j, &cands, random).map(|c| (c, contact_of(c.road)));
+        }
         cands = junction_arms(net, here, j, cands);
     }
+    let mut random = match arms {
+        ArmChoice::Straightest(r) => r.as_deref_mut(),
+        ArmChoice::Drawn(_) => None,
+    };
     let mut best: Option<(f64, LaneRef, ContactPoint)> = None;
     for c in cands {
         // Only lanes leading away in the same travel sense (lanes_across gives lane links, which
@@ -291,6 +315,24 @@ fn choose_continuation(
         }
     }
     best.map(|(_, l, c)| (l, c))
+}
+
+/// The arm esmini's Position::MoveToConnectingRoad takes with junction selector angle −1 and
+/// no route: connection `GetNumberBetween(0, n − 1)` of the n lane links leaving `here` in
+/// esmini's connection order (Junction::GetRoadConnectionByIdx; no draw when n is 1). `cands`:
+/// the lanes a lane link leads to.
+fn drawn_arm(net: &RoadNetwork, here: LaneRef, junction: &opendrive::Junction, cands: &[LaneRef], random: &mut EsminiRandom) -> Option<LaneRef> {
+    let ji = net.junction_index(&junction.id)?;
+    let conns = super::junction_connections::entering(net, ji, here.road);
+    let links = || conns.iter().flat_map(|c| c.lane_links.iter().filter(|l| l.0 == here.lane).map(move |l| (c.connecting, l.1)));
+    let n = links().count();
+    let idx = match n {
+        0 => return None,
+        1 => 0,
+        _ => usize::try_from(random.number_between(0, i32::try_from(n - 1).unwrap_or(i32::MAX))).unwrap_or(0),
+    };
+    let (road, lane) = links().nth(idx)?;
+    cands.iter().copied().find(|c| c.road == road && c.lane == lane)
 }
 
 /// The junction `here` leaves into across `end`, when there is one (not a lane-section change
