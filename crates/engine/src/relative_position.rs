@@ -112,9 +112,16 @@ pub(crate) fn relative_lane(
     let road = net.roads.get(lp.road).ok_or("road missing")?;
     let o = relative_heading(orientation);
     if lane_borders(road, road.section_index_at(lp.s), lane_id, lp.s).is_none() {
-        // No such lane: esmini's SetLanePos fails and the position keeps where the copy went.
+        // No such lane: esmini's SetLanePos fails and the position keeps where the copy went,
+        // its lane id and world point, but SetLanePosMode has already stored the asked offset:
+        // the first move goes on from there (the copy's offset is gone).
         let along_s = !along_lane || drives_along_s(road.rule, lp.lane_id);
-        return place(net, lp.road, lp.lane_id, lp.s, lp.offset, along_s, Some(&o));
+        let mut p = place(net, lp.road, lp.lane_id, lp.s, lp.offset, along_s, Some(&o))?;
+        if let Some(kept) = p.lane.as_mut().filter(|l| l.offset != offset) {
+            kept.offset = offset;
+            p.world_left = true;
+        }
+        return Ok(p);
     }
     // Without an absolute heading the entity faces from the road's s direction, turned by π
     // with `dsLane` where the new lane drives against s (esmini's SetHeadingRelative).

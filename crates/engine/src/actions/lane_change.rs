@@ -14,7 +14,7 @@ use super::state::ActionRt;
 use crate::dynamics::{sign, Transition, ESMINI_SMALL_NUMBER, SMALL};
 use crate::positions::step_lane;
 use crate::roads::lane_geometry::{lane_borders, lane_center_t};
-use crate::roads::{move_along_s, LanePos, MoveStatus};
+use crate::roads::{move_along_s_drawn, LanePos, MoveStatus};
 use crate::sim::Sim;
 use opendrive::RoadNetwork;
 use openscenario::{DynamicsDimension, DynamicsShape, LaneChangeTarget, TransitionDynamics};
@@ -200,7 +200,10 @@ impl<'a> Sim<'a> {
             // start, also in the last step, where the clamped parameter moves less sideways.
             sign(speed) * step_len / (1.0 + rate_before * rate_before).sqrt()
         };
-        let status = move_along_s(net, &mut l.internal, d_long);
+        // esmini moves with junction selector angle −1 here: into a junction without a route
+        // the arm is drawn, straight on or not (LatLaneChangeAction::Step).
+        let route = self.entities.get(e).and_then(|en| en.route.as_deref());
+        let status = move_along_s_drawn(net, &mut l.internal, d_long, route, &mut self.random);
         let done = t.done(agnostic);
         let yaw = if done {
             0.0
@@ -212,7 +215,9 @@ impl<'a> Sim<'a> {
             } else {
                 rate_before.atan()
             };
-            l.internal.dir * lane_sign * angle
+            // esmini turns by the lane the move ended in (Position::GetLaneId after MoveAlongS):
+            // entering a road the other way round flips both the direction and the lane's side.
+            l.internal.dir * sign(f64::from(l.internal.lane_id)) * angle
         };
         let mut attached = l.internal;
         // XYZ2TrackPos re-attaches the position to the lane it is in, unless it is locked on

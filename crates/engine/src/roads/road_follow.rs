@@ -13,7 +13,9 @@
 //! lane-centre probes (Position::GetProbeInfo moves a copy of the position the same way); other
 //! moves keep the earlier arm at a tie, so they never disturb the generator's sequence.
 //! A move with junction selector angle −1 (Position::MoveAlongS's two-argument form, which a
-//! rigid LongitudinalDistanceAction uses) draws the arm itself (`move_along_s_drawn`).
+//! rigid LongitudinalDistanceAction and a LaneChangeAction's step — LatLaneChangeAction::Step —
+//! use) draws the arm itself, uniformly among the lane's connections in esmini's order, straight
+//! arm or not (`move_along_s_drawn`).
 
 use super::lane_geometry::lane_borders;
 use super::lane_position::LanePos;

@@ -4,6 +4,7 @@ mod lane_drift_headings;
 mod relative_across_junctions;
 mod relative_junction_tie;
 mod relative_lane_ds;
+mod relative_lane_missing_lane;
 mod road_id_leading_number;
 mod road_position_against_lane;
 mod road_position_heading;

@@ -1,5 +1,7 @@
-//! LaneChangeAction: its transition, a step of it, a target lane the road does not have.
+//! LaneChangeAction: its transition, a step of it, a target lane the road does not have, a
+//! change going on into a junction.
 
+mod into_junction;
 mod missing_lane;
 mod step;
 mod too_fast_and_road_end;
