@@ -186,6 +186,7 @@ impl<'a> Sim<'a> {
         if let (Some(net), Some(lp)) = (self.net, me.lane) {
             let h_road = lp.pose(net).map_or(me.h, |p| p.road_heading);
             let forward = lp.dir > 0.0;
+            let lp = view::at_last_osi_point(net, lp);
             let t = view::far_tangent(net, &mut l.osi, view::Viewpoint { lane: lp, x: me.x, y: me.y, h_road, forward }, far_dist);
             far = t.point;
             intersection = t.intersection;
