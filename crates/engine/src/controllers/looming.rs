@@ -62,6 +62,7 @@ impl LoomingRt {
             steering: 0.0,
             osi: Default::default(),
             end_of_road: false,
+            placed_at: None,
         }
     }
 
@@ -180,6 +181,7 @@ impl<'a> Sim<'a> {
         if let (Some(net), Some(lp)) = (self.net, me.lane) {
             let h_road = lp.pose(net).map_or(me.h, |p| p.road_heading);
             let forward = lp.dir > 0.0;
+            let lp = if l.placed_at == Some((lp.road, lp.s)) { view::at_last_osi_point(net, lp) } else { lp };
             let t = view::far_tangent(net, &mut l.osi, view::Viewpoint { lane: lp, x: me.x, y: me.y, h_road, forward }, far_dist);
             far = t.point;
             intersection = t.intersection;
@@ -269,6 +271,7 @@ impl<'a> Sim<'a> {
                 en.set_world_lane_locked(net, v.x, v.y, v.h, before);
                 // ScenarioEngine::step reads the position's end-of-road status before it steps
                 // the controllers: what this move finds is seen in the next step.
+                l.placed_at = en.lane.map(|lp| (lp.road, lp.s));
                 en.at_road_end = l.end_of_road;
                 l.end_of_road = match (net, before, en.lane) {
                     (Some(net), Some(_), Some(lp)) => at_dead_end(net, &lp),

@@ -149,3 +149,24 @@ fn at_a_t_junction_the_probes_draw_and_the_car_takes_the_arm_esmini_attaches_it_
     let road = at(&r, "Ego", 8.5).road.expect("on a road");
     assert_eq!(road.road, 8, "the left arm, road 105 (the ninth road): {road:?}");
 }
+
+#[test]
+fn past_a_dead_end_the_far_tangent_search_skips_the_lanes_last_osi_point() {
+    // looming_past_road_end.xosc: the car drives past the dead end of straight.xodr (s = 1000),
+    // steers round and comes back. Beyond the end esmini's position has the s of the reference
+    // line's last OSI point, SMALL_NUMBER / 2 short of the end (Position::XYZ2TrackPos), so once
+    // the car faces back (4.05 s) the far-tangent search does not take the lane's last OSI point
+    // as ahead of it and the far point is the lane centre 80 m back. (entity, time, x, y, h)
+    // from esmini 3.6.0's trace.
+    let r = crate::common::run_fixture("looming_past_road_end.xosc", "straight.xodr");
+    let rows = [
+        ("Ego", 3.0, 1004.961057, -2.199819, 6.094282),
+        ("Ego", 4.5, 1011.253239, -19.888874, 4.117776),
+        ("Ego", 5.0, 1005.331432, -24.341426, 3.569078),
+        ("Ego", 6.0, 990.620133, -24.079161, 2.860964),
+        ("Ego", 8.0, 964.706055, -9.207752, 2.624917),
+        ("Ego", 10.0, 936.20899, -0.294334, 3.018246),
+        ("Ego", 12.0, 906.260109, -0.837463, 3.197896),
+    ];
+    crate::common::assert_esmini_poses(&r, &rows, 1e-3, 1e-4);
+}

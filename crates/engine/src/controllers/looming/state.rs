@@ -19,4 +19,7 @@ pub(crate) struct LoomingRt {
     pub(super) osi: OsiMemo,
     /// The last move ended at a road end (seen by the next step).
     pub(super) end_of_road: bool,
+    /// The road and s where its last step attached the entity (by XYZ2TrackPos): a position
+    /// still there is the controller's own, which esmini holds at a road end's last OSI point.
+    pub(super) placed_at: Option<(usize, f64)>,
 }

@@ -41,6 +41,22 @@ pub(crate) fn lane_osi_points(net: &RoadNetwork, road_idx: usize, j: usize, lane
     opendrive::osi_points(lsec.s, s_end, xy).into_iter().filter_map(|s| centre(net, road_idx, lane_id, s)).collect()
 }
 
+/// Where esmini's position, attached to the road by Position::XYZ2TrackPos, is at or past the
+/// end of its road: XYZ2TrackPos takes the s of the closest OSI point of the reference line
+/// when the point lies beyond the last one (the "same point" case), and the last OSI point of
+/// a lane section lies `SMALL_NUMBER / 2` short of its end (OpenDrive::SetLaneOSIPoints). So
+/// the far-tangent search, which looks only at OSI points strictly ahead of the entity's s,
+/// skips a lane's last point there. (A position stopped at the end by Position::MoveAlongS
+/// has the road's length as its s.)
+pub(crate) fn at_last_osi_point(net: &RoadNetwork, lp: LanePos) -> LanePos {
+    let last = net.roads.get(lp.road).map_or(f64::INFINITY, |r| r.length - SMALL_NUMBER / 2.0);
+    if lp.s > last {
+        LanePos { s: last, ..lp }
+    } else {
+        lp
+    }
+}
+
 pub(crate) fn angle_pi(a: f64) -> f64 {
     // GetAngleInIntervalMinusPIPlusPI
     let mut b = a % (2.0 * std::f64::consts::PI);
