@@ -11,6 +11,18 @@ use std::path::PathBuf;
 
 /// The largest difference between the two runs' rows (x, y, z, h, speed, acceleration, yaw
 /// rate of every entity at every step), and where; infinite when their shapes differ.
+/// `a − b` wrapped into (−π, π]: a heading and the same heading 2π on are one direction (a rigid
+/// lateral jump's heading is an atan2 of its displacement, whose wrap a 1e-9 difference in the
+/// driven entity's pose can flip from π to −π).
+fn angle_difference(a: f64, b: f64) -> f64 {
+    let d = (a - b).rem_euclid(std::f64::consts::TAU);
+    if d > std::f64::consts::PI {
+        d - std::f64::consts::TAU
+    } else {
+        d
+    }
+}
+
 fn worst_difference(open: &engine::Trace, closed: &engine::Trace) -> (f64, String) {
     if closed.len != open.len {
         return (f64::INFINITY, format!("{} rows, open loop {}", closed.len, open.len));
@@ -19,9 +31,11 @@ fn worst_difference(open: &engine::Trace, closed: &engine::Trace) -> (f64, Strin
     for (a, b) in open.entities.iter().zip(&closed.entities) {
         for (k, (sa, sb)) in a.samples.iter().zip(&b.samples).enumerate() {
             let d = match (sa, sb) {
-                (Some(x), Some(y)) => [x.x - y.x, x.y - y.y, x.z - y.z, x.h - y.h, x.speed - y.speed, x.acceleration - y.acceleration, x.yaw_rate - y.yaw_rate]
-                    .iter()
-                    .fold(0.0f64, |m, v| m.max(v.abs())),
+                (Some(x), Some(y)) => {
+                    [x.x - y.x, x.y - y.y, x.z - y.z, angle_difference(x.h, y.h), x.speed - y.speed, x.acceleration - y.acceleration, x.yaw_rate - y.yaw_rate]
+                        .iter()
+                        .fold(0.0f64, |m, v| m.max(v.abs()))
+                }
                 (None, None) => 0.0,
                 _ => f64::INFINITY,
             };
