@@ -48,6 +48,12 @@ pub(crate) fn avoid_zero(x: f64) -> f64 {
     }
 }
 
+/// esmini's AVOID_ZERO itself (CommonMini.hpp): a magnitude below SMALL_NUMBER becomes
+/// SMALL_NUMBER, 0 counting as positive ([`avoid_zero`] keeps the engine's 1e-10 instead).
+pub(crate) fn esmini_avoid_zero(x: f64) -> f64 {
+    sign(x) * x.abs().max(ESMINI_SMALL_NUMBER)
+}
+
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Transition {
     pub shape: DynamicsShape,

@@ -36,13 +36,6 @@ pub(crate) fn banked(road: &Road, s: f64, t: f64, curvature: f64) -> (f64, f64, 
 /// decides which way to turn by the sign of that hair).
 const FLAT_ROAD_COS: f64 = 0.999_999_999_999_5;
 
-/// esmini's AVOID_ZERO (CommonMini.hpp): a magnitude below SMALL_NUMBER becomes SMALL_NUMBER,
-/// 0 counting as positive.
-fn esmini_avoid_zero(x: f64) -> f64 {
-    let sign = if x < 0.0 { -1.0 } else { 1.0 };
-    sign * x.abs().max(crate::dynamics::ESMINI_SMALL_NUMBER)
-}
-
 /// The inverse of [`banked`]'s lateral part, as esmini's `Position::XYZ2TrackPos` does it: a
 /// world point's horizontal distance `th` from the reference line at `s` is divided by
 /// cos(roll) ("compensate for banking"), so its t is measured along the tilted surface.
@@ -52,7 +45,7 @@ pub(crate) fn surface_t(road: &Road, s: f64, th: f64) -> f64 {
         // grows by 1/cos(1e-6), about 5e-13 of itself (see `FLAT_ROAD_COS`).
         return th / FLAT_ROAD_COS;
     }
-    let cos = esmini_avoid_zero(roll_at(road, s).0).cos();
+    let cos = crate::dynamics::esmini_avoid_zero(roll_at(road, s).0).cos();
     // A road rolled to the vertical has no horizontal extent: keep the distance as it is.
     if cos.abs() < 1e-9 {
         th
@@ -68,8 +61,8 @@ mod tests {
     #[test]
     fn a_flat_roads_cosine_is_that_of_esminis_small_number() {
         assert_eq!(FLAT_ROAD_COS, crate::dynamics::ESMINI_SMALL_NUMBER.cos());
-        assert_eq!(esmini_avoid_zero(0.0), crate::dynamics::ESMINI_SMALL_NUMBER);
-        assert_eq!(esmini_avoid_zero(-1e-9), -crate::dynamics::ESMINI_SMALL_NUMBER);
-        assert_eq!(esmini_avoid_zero(0.2), 0.2);
+        assert_eq!(crate::dynamics::esmini_avoid_zero(0.0), crate::dynamics::ESMINI_SMALL_NUMBER);
+        assert_eq!(crate::dynamics::esmini_avoid_zero(-1e-9), -crate::dynamics::ESMINI_SMALL_NUMBER);
+        assert_eq!(crate::dynamics::esmini_avoid_zero(0.2), 0.2);
     }
 }
