@@ -212,7 +212,9 @@ impl<'a> Sim<'a> {
     /// mode as esmini gives it: ACC/ALKS additive unless `mode` says override (ControllerACC);
     /// Looming, NaturalDriver and ALKS R157 override unless it says additive (the Controller
     /// base); FollowGhost and FollowReference always override; FollowRoute only while it
-    /// changes lanes.
+    /// changes lanes; an OffroadFollower on whichever domain it is active (ControllerOffroadFollower
+    /// keeps the Controller base's mode, override unless a `mode` property says additive; the
+    /// engine reads no `mode` for it).
     pub(crate) fn overrides_motion(&self, e: usize) -> bool {
         match self.controllers.get(e) {
             Some(Some(ControllerRt::Acc(a))) => a.overrides_longitudinal(),
@@ -222,6 +224,7 @@ impl<'a> Sim<'a> {
             Some(Some(ControllerRt::FollowGhost(f))) => f.active,
             Some(Some(ControllerRt::FollowReference(f))) => f.active,
             Some(Some(ControllerRt::FollowRoute(f))) => f.overrides_longitudinal(),
+            Some(Some(ControllerRt::OffroadFollower(f))) => f.active,
             _ => false,
         }
     }

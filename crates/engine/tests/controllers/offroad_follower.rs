@@ -87,3 +87,16 @@ fn an_offroad_follower_active_laterally_only_measures_after_the_default_controll
         assert!(close(e.x, x, 1e-3) && close(e.y, y, 1e-3) && close(e.speed, v, 1e-4), "t {t}: {e:?}");
     }
 }
+
+#[test]
+fn a_teleport_is_ignored_under_an_offroad_follower() {
+    // offroad_follower_teleport.xosc: offroad_follower.xosc with a TeleportAction of the
+    // follower 500 m along at t > 2. ControllerOffroadFollower keeps the Controller base's
+    // override mode, so TeleportAction::Start does nothing (IsControllerModeOnAnyOfDomains).
+    // Expected values: esmini 3.6.0 (osc2cr jumped the follower to s 500).
+    let run = run_fixture("offroad_follower_teleport.xosc", "straight.xodr");
+    for (t, x, y, v) in [(2.02, 40.3141, -4.0857, 15.1), (5.0, 103.4727, -1.1261, 19.8867)] {
+        let e = at(&run, "Follower", t);
+        assert!(close(e.x, x, 1e-3) && close(e.y, y, 1e-3) && close(e.speed, v, 1e-3), "t {t}: {e:?}");
+    }
+}
