@@ -143,16 +143,13 @@ impl<'a> Simulation<'a> {
         let restarting = sim.ghost_restarting();
         storyboard_step(sim, 0.0);
         if !restarting {
-            sim.step_natural_drivers(0.0);
             // esmini's ScenarioEngine::step steps every active controller in frame 0 too (dt 0):
-            // an ACC already stops for a lead closer than 1 m (ControllerACC::Step)
-            sim.step_acc_controllers(0.0);
-            sim.step_alks_r157_controllers(0.0);
-            sim.step_looming_controllers(0.0);
-            // ControllerFollowRoute::Step too: a route it cannot plan (start and target on the
-            // same road and lane) deactivates it here, and in test mode stops the entity at once
-            sim.step_route_followers(0.0);
-            sim.step_offroad_followers_frame0();
+            // an ACC already stops for a lead closer than 1 m (ControllerACC::Step); a
+            // FollowRoute that cannot plan its route (start and target on the same road and
+            // lane) deactivates here, and in test mode stops the entity at once; an
+            // OffroadFollower's vehicle model caps the speed at its limit at once
+            // (ControllerOffroadFollower::Step: SetMaxSpeed, DrivingControlAnalog)
+            sim.step_controllers_in_order(0.0, true);
         }
         sim.pull_trailers();
         sim.after_move(before, 0.0);
@@ -325,12 +322,7 @@ fn frame(sim: &mut Sim, before: &mut [Before], t: f64, dt: f64) -> bool {
     sim.default_controller(dt);
     if !restarting {
         sim.apply_external(dt, ScriptedMotion::Overridden);
-        sim.step_followers(dt);
-        sim.step_acc_controllers(dt);
-        sim.step_alks_r157_controllers(dt);
-        sim.step_looming_controllers(dt);
-        sim.step_route_followers(dt);
-        sim.step_natural_drivers(dt);
+        sim.step_controllers_in_order(dt, false);
         sim.apply_external(dt, ScriptedMotion::Replaced);
     }
     sim.pull_trailers();

@@ -35,6 +35,8 @@ impl<'a> Sim<'a> {
             warnings: Vec::new(),
             controllers: vec![None; scenario.entities.len()],
             any_controller: false,
+            controller_order: Vec::new(),
+            controller_rank: Vec::new(),
             trailers: Default::default(),
             ghost: None,
             triggering_actors: Vec::new(),

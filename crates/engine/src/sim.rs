@@ -43,6 +43,12 @@ pub(crate) struct Sim<'a> {
     /// Some entity has a modelled controller: without one the controller steps of a frame are
     /// skipped outright (most scenarios have none).
     pub any_controller: bool,
+    /// The entities in the order esmini made their controllers (`controllers/step_order.rs`);
+    /// empty while that is the entities' order (no AssignControllerAction ran).
+    pub controller_order: Vec<usize>,
+    /// Each entity's place in esmini's `controller_` (its index, or past every entity for an
+    /// assigned controller); empty until an AssignControllerAction runs.
+    pub controller_rank: Vec<usize>,
     /// Who pulls whom (actions/trailer.rs).
     pub trailers: crate::actions::trailer::state::Trailers,
     /// The ghost of a FollowGhost / FollowReference controller (ghost/).

@@ -7,7 +7,7 @@
 //!
 //! esmini steps its controllers after the default controller has moved every entity: so the
 //! controller sees the others where they are at the end of the step, and in additive mode the
-//! entity moves by the speed the controller set one step earlier. `Sim::step_acc_controllers`
+//! entity moves by the speed the controller set one step earlier. `Sim::step_acc`
 //! runs after the default controller; before it, `hold_for_override` keeps the default controller off
 //! an entity the controller moves itself (override mode).
 
@@ -90,12 +90,9 @@ pub(super) fn lane_delta(net: &RoadNetwork, a: LanePos, b: LanePos, max: f64) ->
 }
 
 impl<'a> Sim<'a> {
-    /// Step every active ACC (and ALKS) controller by `dt`, after the default controller.
-    pub(crate) fn step_acc_controllers(&mut self, dt: f64) {
-        step_active!(self, Acc, |sim, e, a| sim.step_acc(e, a, dt));
-    }
-
-    fn step_acc(&mut self, e: usize, a: &mut AccRt, dt: f64) {
+    /// One step of the ACC (or ALKS) controller of entity `e`, after the default controller
+    /// (`step_controllers_in_order`).
+    pub(super) fn step_acc(&mut self, e: usize, a: &mut AccRt, dt: f64) {
         // esmini's ScenarioEngine::step, before it steps the controllers: an entity at the end of
         // its road since the step before that did not move in the last step gets speed 0 (which
         // the ACC then takes as its set speed and brakes to). The default controller's entities

@@ -557,10 +557,7 @@ impl<'a> Sim<'a> {
     /// (dt 0), after the Init actions: the model sees no velocities yet (none is measured before
     /// the first step), so it detects its target without closing speed and runs its cruise
     /// control, whose acceleration the reaction phase of the next steps keeps (Model::Step).
-    pub(crate) fn step_alks_r157_controllers(&mut self, dt: f64) {
-        step_active!(self, AlksR157, |sim, e, a| sim.step_alks_r157(e, a, dt));
-    }
-
+    /// Stepped by `step_controllers_in_order`.
     pub(super) fn step_alks_r157(&mut self, e: usize, a: &mut AlksR157Rt, dt: f64) {
         let Some(v) = self.entities.get(e).map(|en| en.speed) else { return };
         a.speed_now = v;

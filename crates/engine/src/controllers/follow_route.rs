@@ -197,13 +197,9 @@ impl<'a> Sim<'a> {
         }
     }
 
-    /// Step every active FollowRoute controller by `dt`, after the default controller.
-    pub(crate) fn step_route_followers(&mut self, dt: f64) {
-        step_active!(self, FollowRoute, |sim, e, f| sim.step_follow_route(e, f, dt));
-    }
-
-    /// esmini's `ControllerFollowRoute::Step`.
-    fn step_follow_route(&mut self, e: usize, f: &mut FollowRouteRt, _dt: f64) {
+    /// esmini's `ControllerFollowRoute::Step`, after the default controller
+    /// (`step_controllers_in_order`).
+    pub(super) fn step_follow_route(&mut self, e: usize, f: &mut FollowRouteRt, _dt: f64) {
         let Some(net) = self.net else { return };
         if self.entities[e].route.is_none() || f.scenario.is_empty() {
             return;

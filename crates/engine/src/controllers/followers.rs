@@ -1,39 +1,14 @@
-//! Stepping the controllers that follow another entity (FollowGhost, FollowReference). esmini
-//! steps controllers after its default controller has moved every entity, so the ghost or the
-//! reference has already moved when its follower steers: they step after the default
-//! controller, where `step_controllers` only keeps the default controller off the follower.
+//! What the controllers that drive their entity themselves share (FollowGhost,
+//! FollowReference, OffroadFollower, ACC, looming): esmini steps controllers after its default
+//! controller has moved every entity (`step_order`), so the ghost or the reference has already
+//! moved when its follower steers; before that, `step_controllers` only keeps the default
+//! controller off the entity (`hold_follower`, `hold_for_override`), and the model's pose is
+//! written back by `place_driven`.
 
 use super::kinematic_vehicle::KinematicVehicle;
-use super::ControllerRt;
 use crate::sim::Sim;
 
 impl<'a> Sim<'a> {
-    /// Step every active follower by `dt` (after the default controller).
-    pub(crate) fn step_followers(&mut self, dt: f64) {
-        if !self.any_controller {
-            return;
-        }
-        for e in 0..self.controllers.len() {
-            let is_follower = matches!(
-                self.controllers.get(e),
-                Some(Some(ControllerRt::FollowGhost(_) | ControllerRt::FollowReference(_) | ControllerRt::OffroadFollower(_)))
-            );
-            if !is_follower || !self.entities.get(e).is_some_and(|en| en.active) {
-                continue;
-            }
-            let Some(mut rt) = self.controllers.get_mut(e).and_then(|c| c.take()) else { continue };
-            match &mut rt {
-                ControllerRt::FollowGhost(f) if f.active => self.step_follow_ghost(e, f, dt),
-                ControllerRt::FollowReference(f) if f.active => self.step_follow_reference(e, f, dt),
-                ControllerRt::OffroadFollower(f) if f.active => self.step_offroad_follower(e, f, dt),
-                _ => {}
-            }
-            if let Some(slot) = self.controllers.get_mut(e) {
-                *slot = Some(rt);
-            }
-        }
-    }
-
     /// Put follower `e` where its vehicle model drove it; false (nothing changed) when the
     /// model's state is not finite (absurd gains: stop driving rather than write such a pose).
     pub(super) fn place_driven(&mut self, e: usize, car: &KinematicVehicle) -> bool {

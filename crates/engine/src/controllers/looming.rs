@@ -132,12 +132,6 @@ impl<'a> Sim<'a> {
         en.set_world(Some(net), en.x, en.y, Some(en.z), h);
     }
 
-    /// Step every active LoomingController by `dt`, after the default controller (esmini steps
-    /// its controllers then, in frame 0 too with dt = 0).
-    pub(crate) fn step_looming_controllers(&mut self, dt: f64) {
-        step_active!(self, Looming, |sim, e, l| sim.step_looming(e, l, dt));
-    }
-
     /// ControllerLooming::GetProbeInfo(distance, LOOKAHEADMODE_AT_LANE_CENTER).relative_h: the
     /// angle, from the entity's heading, to the lane centre `distance` ahead along the road
     /// (and its point). The probe is a copy of the position without its route moved by
@@ -168,7 +162,7 @@ impl<'a> Sim<'a> {
     }
 
     /// ControllerLooming::Step.
-    fn step_looming(&mut self, e: usize, l: &mut LoomingRt, dt: f64) {
+    pub(super) fn step_looming(&mut self, e: usize, l: &mut LoomingRt, dt: f64) {
         let Some(me) = self.entities.get(e) else { return };
         let current = me.speed;
         let mut far_dist = FAR_POINT;

@@ -8,21 +8,6 @@
 //! naming it; the ones that need a human or an outside process (Interactive, External, SUMO,
 //! HID, UDP driver) say so.
 
-/// `$sim.for_each_controller` over the active controllers of one `ControllerRt` variant:
-/// `step_active!(self, Acc, |sim, e, a| sim.step_acc(e, a, dt))`.
-macro_rules! step_active {
-    ($sim:expr, $variant:ident, |$s:ident, $e:ident, $x:ident| $body:expr) => {
-        $sim.for_each_controller(
-            |c| matches!(c, $crate::controllers::state::ControllerRt::$variant(x) if x.active),
-            |$s, $e, c| {
-                if let $crate::controllers::state::ControllerRt::$variant($x) = c {
-                    $body;
-                }
-            },
-        )
-    };
-}
-
 pub(crate) mod acc;
 pub(crate) mod alks;
 pub(crate) mod alks_r157;
@@ -38,6 +23,7 @@ pub(crate) mod looming;
 pub(crate) mod natural_driver;
 pub(crate) mod offroad_follower;
 pub(crate) mod state;
+pub(crate) mod step_order;
 
 use self::state::ControllerRt;
 use crate::sim::Sim;
@@ -54,16 +40,17 @@ pub(crate) fn controller_type(c: &Controller) -> &str {
 }
 
 impl<'a> Sim<'a> {
-    /// Runs `step` on each entity's controller, the entity being in the run: the controller is
-    /// taken out of its slot meanwhile (so that `step` may use the whole simulation) and put
-    /// back after. Each kind's stepping picks its own variant; `wants` says beforehand which
+    /// Runs `step` on each entity's controller in esmini's order (`step_order`), the entity
+    /// being in the run: the controller is taken out of its slot meanwhile (so that `step` may
+    /// use the whole simulation) and put back after. Each kind's stepping picks its own variant; `wants` says beforehand which
     /// controllers `step` acts on (its variant, active), so that the others are not moved out
     /// and back for nothing (a controller's state is large; `step` leaves them as they are).
     pub(crate) fn for_each_controller(&mut self, wants: impl Fn(&ControllerRt) -> bool, mut step: impl FnMut(&mut Self, usize, &mut ControllerRt)) {
         if !self.any_controller {
             return;
         }
-        for e in 0..self.controllers.len() {
+        for k in 0..self.controllers.len() {
+            let e = self.controller_order.get(k).copied().unwrap_or(k);
             if !self.controllers.get(e).and_then(Option::as_ref).is_some_and(&wants) {
                 continue;
             }
@@ -256,34 +243,34 @@ impl<'a> Sim<'a> {
             let Some(mut rt) = self.controllers.get_mut(e).and_then(|c| c.take()) else { continue };
             match &mut rt {
                 ControllerRt::Acc(a) => {
-                    // Stepped after the default controller (`step_acc_controllers`).
+                    // Stepped after the default controller (`step_controllers_in_order`).
                     if a.active && self.entities.get(e).is_some_and(|en| en.active) {
                         self.hold_for_override(e, &mut a.moved_by_action, a.override_mode);
                     }
                 }
                 ControllerRt::AlksR157(a) => {
-                    // Stepped after the default controller (`step_alks_r157_controllers`), which
+                    // Stepped after the default controller (`step_controllers_in_order`), which
                     // leaves the entity alone when the model holds the longitudinal domain.
                     if a.active && self.entities.get(e).is_some_and(|en| en.active) {
                         self.hold_for_override(e, &mut a.moved_by_action, a.override_mode && a.longitudinal);
                     }
                 }
                 ControllerRt::NaturalDriver(a) => {
-                    // Decides and moves after the default controller (`step_natural_drivers`).
+                    // Decides and moves after the default controller (`step_controllers_in_order`).
                     if a.active && self.entities.get(e).is_some_and(|en| en.active) {
                         self.step_natural_driver_action(e, a, dt);
                     }
                 }
-                // Steer after the default controller moved what they follow (`step_followers`);
+                // Steer after the default controller moved what they follow (`step_controllers_in_order`);
                 // until then the default controller leaves the entity alone.
                 ControllerRt::FollowGhost(f) => self.hold_follower(e, f.active && f.longitudinal),
                 ControllerRt::FollowReference(f) => self.hold_follower(e, f.active),
                 // Active on the lateral domain only, the default controller moves it first.
                 ControllerRt::OffroadFollower(f) => self.hold_follower(e, f.holds_longitudinal()),
-                // Steps after the default controller (`step_route_followers`); its running lane
+                // Steps after the default controller (`step_controllers_in_order`); its running lane
                 // change moves the entity instead of the default controller (esmini's override).
                 ControllerRt::FollowRoute(f) => self.hold_follower(e, f.holds_entity()),
-                // Steps after the default controller (`step_looming_controllers`).
+                // Steps after the default controller (`step_controllers_in_order`).
                 ControllerRt::Looming(l) => {
                     let held = l.active && l.override_mode && self.entities.get(e).is_some_and(|en| en.active);
                     self.hold_follower(e, held);

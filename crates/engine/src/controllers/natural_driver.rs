@@ -106,12 +106,6 @@ impl NaturalDriverRt {
 }
 
 impl<'a> Sim<'a> {
-    /// Step every active NaturalDriver by `dt`, after the default controller moved the others
-    /// (also at frame 0 with `dt` = 0, as esmini steps its controllers there too).
-    pub(crate) fn step_natural_drivers(&mut self, dt: f64) {
-        step_active!(self, NaturalDriver, |sim, e, nd| sim.step_natural_driver(e, nd, dt));
-    }
-
     /// Before the default controller: start or step the injected lane change, and keep the
     /// default controller off the entity in override mode or while that lane change steps. In
     /// additive mode esmini's default controller moves the entity by its speed first and

@@ -93,13 +93,6 @@ impl<'a> Sim<'a> {
         }
     }
 
-    /// Frame 0 (dt 0): esmini's ScenarioEngine::step steps every active controller then too;
-    /// an OffroadFollower's vehicle model caps the speed at its limit at once
-    /// (ControllerOffroadFollower::Step: SetMaxSpeed, DrivingControlAnalog).
-    pub(crate) fn step_offroad_followers_frame0(&mut self) {
-        step_active!(self, OffroadFollower, |sim, e, f| sim.step_offroad_follower(e, f, 0.0));
-    }
-
     /// One step of OffroadFollower `e` (after the default controller).
     pub(super) fn step_offroad_follower(&mut self, e: usize, f: &mut OffroadFollowerRt, dt: f64) {
         let Some(lead) = f.follow.as_deref().and_then(|n| self.entities.iter().find(|o| o.name == n)) else { return };

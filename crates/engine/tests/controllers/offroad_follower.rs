@@ -89,6 +89,28 @@ fn an_offroad_follower_active_laterally_only_measures_after_the_default_controll
 }
 
 #[test]
+fn controllers_step_in_the_order_esmini_made_them() {
+    // offroad_follower_controller_order.xosc (straight road): LeadA has an ACC in override mode
+    // as its ObjectController (it moves in its own Step) and FollowerA, declared after it,
+    // follows it; LeadB gets the same ACC from an AssignControllerAction in the Init, so esmini
+    // made that controller after FollowerB's ObjectController (ScenarioEngine::step walks
+    // ScenarioReader::controller_ in that order): FollowerA steers at LeadA's new position,
+    // FollowerB at LeadB's old one. Expected values: esmini 3.6.0 on the same fixture (osc2cr
+    // stepped every follower before every ACC: FollowerA was off, FollowerB right).
+    let run = run_fixture("offroad_follower_controller_order.xosc", "straight.xodr");
+    assert!(run.warnings.is_empty(), "{:?}", run.warnings);
+    for (name, t, x, y, v) in [
+        ("FollowerA", 5.0, 121.4170, -1.5993, 18.2489),
+        ("FollowerB", 5.0, 521.2848, -1.5996, 18.1825),
+        ("FollowerA", 8.0, 168.1423, -1.7603, 15.0138),
+        ("FollowerB", 8.0, 567.9921, -1.7601, 15.0141),
+    ] {
+        let e = at(&run, name, t);
+        assert!(close(e.x, x, 1e-3) && close(e.y, y, 1e-3) && close(e.speed, v, 1e-3), "{name} at {t}: {e:?}");
+    }
+}
+
+#[test]
 fn a_teleport_is_ignored_under_an_offroad_follower() {
     // offroad_follower_teleport.xosc: offroad_follower.xosc with a TeleportAction of the
     // follower 500 m along at t > 2. ControllerOffroadFollower keeps the Controller base's
