@@ -87,26 +87,43 @@ impl FollowRouteRt {
     }
 }
 
-/// esmini's detailed route waypoints' roads for `route` through `scenario` waypoints: each
-/// scenario waypoint's road and, between two, each road the planned route passes.
-pub(crate) fn route_roads(route: &routing::Route, scenario: &[(LaneSpot, Strategy)]) -> Vec<usize> {
-    let mut out = Vec::new();
-    for (i, (w, _)) in scenario.iter().enumerate() {
+/// esmini's route waypoints for `route` through `scenario` waypoints, as Route::AddWaypoint
+/// keeps them: the roads of every waypoint added (`all_waypoints_`: each scenario waypoint's
+/// road and, between two, each road the planned route passes), and the scenario waypoints the
+/// controller steers to (`scenario_waypoints_`). Before adding a waypoint AddWaypoint drops
+/// the last anchor (`minimal_waypoints_`) when the new waypoint is on its road, or when the
+/// first two anchors share a road, and with it the last scenario waypoint (while more than
+/// one is left); `all_waypoints_` keeps every one.
+pub(crate) fn route_waypoints(route: &routing::Route, scenario: &[(LaneSpot, Strategy)]) -> (Vec<usize>, Vec<(LaneSpot, Strategy)>) {
+    let mut all = Vec::new();
+    let mut minimal: Vec<usize> = Vec::new();
+    let mut kept = Vec::with_capacity(scenario.len());
+    for (i, &(w, strategy)) in scenario.iter().enumerate() {
+        let n = minimal.len();
+        if n > 1 && ((n == 2 && minimal[0] == minimal[1]) || minimal[n - 1] == w.road) {
+            minimal.pop();
+            if kept.len() > 1 {
+                kept.pop();
+            }
+        }
         if i > 0 {
             let (from, to) = (route.waypoint_route_s(i - 1), route.waypoint_route_s(i));
             if let (Some(a), Some(b)) = (from, to) {
                 let mut last = scenario[i - 1].0.road;
                 for leg in route.legs().iter().filter(|l| l.route_s >= a && l.route_s < b) {
                     if leg.road != last && leg.road != w.road {
-                        out.push(leg.road);
+                        all.push(leg.road);
+                        minimal.push(leg.road);
                     }
                     last = leg.road;
                 }
             }
         }
-        out.push(w.road);
+        all.push(w.road);
+        minimal.push(w.road);
+        kept.push((w, strategy));
     }
-    out
+    (all, kept)
 }
 
 /// The lane position esmini's controller sees: during its lane change esmini keeps the entity
@@ -191,9 +208,9 @@ impl<'a> Sim<'a> {
     }
 
     fn give_route_follower(&mut self, e: usize, scenario: Vec<(LaneSpot, Strategy)>, planned: &routing::Route) {
-        let roads = route_roads(planned, &scenario);
+        let (roads, kept) = route_waypoints(planned, &scenario);
         if let Some(Some(super::state::ControllerRt::FollowRoute(f))) = self.controllers.get_mut(e) {
-            f.set_route(scenario, roads);
+            f.set_route(kept, roads);
         }
     }
 

@@ -166,3 +166,20 @@ fn a_route_it_cannot_plan_stops_a_test_mode_entity_in_frame_0() {
     assert!(close(at(&run, "Watcher", 0.01).x, 200.0, 1e-9));
     assert!(close(at(&run, "Watcher", 0.02).x, 200.1, 1e-9));
 }
+
+#[test]
+fn a_scenario_waypoint_followed_by_one_on_its_road_is_dropped() {
+    // Waypoints road 1 s = 20, road 1 s = 60, road 2 s = 50 (lane −1 each): esmini's
+    // Route::AddWaypoint drops the waypoint at s = 60 from the scenario waypoints when the
+    // next is added ("Removing previous waypoint for same road 1"), so the controller plans
+    // from road 1 straight to road 2 (a path to s = 60 on Ego's own lane would not exist and
+    // would deactivate it at once). esmini: 20 m/s at 7.0 s (x 150), stopped from 7.01 s at
+    // x 150.2.
+    let run = run_fixture("follow_route_dropped_waypoint.xosc");
+    assert!(run.warnings.is_empty(), "{:?}", run.warnings);
+    let e = at(&run, "Ego", 1.0);
+    assert!(close(e.speed, 20.0, 1e-12) && close(e.x, 30.0, 1e-9), "{e:?}");
+    assert!(close(at(&run, "Ego", 7.0).speed, 20.0, 1e-12));
+    let e = at(&run, "Ego", 7.01);
+    assert!(close(e.speed, 0.0, 1e-12) && close(e.x, 150.2, 1e-9), "{e:?}");
+}
