@@ -13,7 +13,7 @@ pub(crate) mod state;
 
 use state::FollowRouteRt;
 
-use super::lane_router::{calculate_path, connecting_lane_id, next_roads, path_waypoints, LaneSpot};
+use super::lane_router::{calculate_path, connected_lane_at_s, connecting_lane_id, next_roads, path_waypoints, LaneSpot};
 use crate::actions::lane_change::state::LaneChangeRt;
 use crate::dynamics::{sign, Transition};
 use crate::roads::lane_geometry::{lane_borders, lane_center_t};
@@ -135,44 +135,6 @@ fn route_lane(sim: &Sim, e: usize, f: &FollowRouteRt) -> Option<crate::roads::La
 /// Where an entity is, as a lane spot, and whether it drives along s.
 fn spot_of(lp: &crate::roads::LanePos) -> (LaneSpot, bool) {
     (LaneSpot { road: lp.road, lane: lp.lane_id, s: lp.s }, lp.dir > 0.0)
-}
-
-/// esmini's `Road::GetConnectedLaneIdAtS`: the lane `lane` at `s_start` runs into through
-/// the road's lane sections towards `s_target`. esmini steps while the start of the section
-/// it just crossed is short of the target, so it follows the lane one section past the one
-/// holding the target.
-fn connected_lane_at_s(net: &RoadNetwork, road: usize, lane: i32, s_start: f64, s_target: f64) -> i32 {
-    let Some(r) = net.roads.get(road) else { return 0 };
-    let n = r.lane_sections.len();
-    if n == 0 {
-        return 0;
-    }
-    let link = |j: usize, id: i32, succ: bool| -> i32 {
-        match r.lane_sections.get(j).and_then(|sec| sec.lane(id)) {
-            None => 0,
-            Some(l) => {
-                let ids = if succ { &l.successors } else { &l.predecessors };
-                ids.first().copied().unwrap_or(id)
-            }
-        }
-    };
-    let mut id = lane;
-    let mut j = r.section_index_at(s_start);
-    let mut s = s_start;
-    if s_target > s_start - SMALL {
-        while id != 0 && j < n - 1 && s < s_target {
-            id = link(j, id, true);
-            s = r.lane_sections[j].s;
-            j += 1;
-        }
-    } else {
-        while id != 0 && j > 0 && s > s_target {
-            id = link(j, id, false);
-            s = r.lane_sections[j].s;
-            j -= 1;
-        }
-    }
-    id
 }
 
 impl<'a> Sim<'a> {

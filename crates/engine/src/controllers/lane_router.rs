@@ -100,6 +100,44 @@ pub(crate) fn connecting_lane_id(net: &RoadNetwork, link: Link, from_lane: i32, 
     }
 }
 
+/// esmini's `Road::GetConnectedLaneIdAtS`: the lane `lane` at `s_start` runs into through
+/// the road's lane sections towards `s_target`. esmini steps while the start of the section
+/// it just crossed is short of the target, so it follows the lane one section past the one
+/// holding the target.
+pub(crate) fn connected_lane_at_s(net: &RoadNetwork, road: usize, lane: i32, s_start: f64, s_target: f64) -> i32 {
+    let Some(r) = net.roads.get(road) else { return 0 };
+    let n = r.lane_sections.len();
+    if n == 0 {
+        return 0;
+    }
+    let link = |j: usize, id: i32, succ: bool| -> i32 {
+        match r.lane_sections.get(j).and_then(|sec| sec.lane(id)) {
+            None => 0,
+            Some(l) => {
+                let ids = if succ { &l.successors } else { &l.predecessors };
+                ids.first().copied().unwrap_or(id)
+            }
+        }
+    };
+    let mut id = lane;
+    let mut j = r.section_index_at(s_start);
+    let mut s = s_start;
+    if s_target > s_start - crate::dynamics::ESMINI_SMALL_NUMBER {
+        while id != 0 && j < n - 1 && s < s_target {
+            id = link(j, id, true);
+            s = r.lane_sections[j].s;
+            j += 1;
+        }
+    } else {
+        while id != 0 && j > 0 && s > s_target {
+            id = link(j, id, false);
+            s = r.lane_sections[j].s;
+            j -= 1;
+        }
+    }
+    id
+}
+
 /// Roads a link leads to: the linked road, or every connecting road of the junction whose
 /// incoming road is `road`, in connection order (esmini's `GetNextRoads`).
 pub(crate) fn next_roads(net: &RoadNetwork, link: Link) -> Vec<usize> {

@@ -1,0 +1,27 @@
+//! Whether a vehicle on the next road is in the ACC's lane is esmini's Position::Delta
+//! dLaneId: the lane the link leads to, walked through the next road's lane sections from the
+//! end esmini takes the path to enter by — the far end when the last road before it is left at
+//! its end (a path along s), so a lane id that changes between the sections changes the
+//! answer. Fixture `acc_lead_after_section_walk.xosc` on `section_border_after_link.xodr`
+//! (road 1, 100 m, lanes −1 and −2, continues as road 2, 200 m; road 2's lane −2 ends at
+//! s = 100, where its border lane −3 becomes lane −2): Ego (override ACC, set speed 30 m/s)
+//! on road 1, lane −2, s = 70 at 10 m/s with Lead on road 2, lane −2, s = 10 at 10 m/s;
+//! Ego2 the same on lane −1. esmini walks Ego's lane −2 back from road 2's end to −3
+//! (dLaneId 1: no lead) and cruises up at 0.7 × maxAcceleration, while Ego2 follows Lead2.
+//! Expected values: esmini 3.6.0 on the same fixture (osc2cr found Lead in Ego's lane).
+
+use crate::common::*;
+
+#[test]
+fn a_lane_id_walked_through_the_next_roads_sections_hides_the_lead() {
+    let run = run_fixture("acc_lead_after_section_walk.xosc", "section_border_after_link.xodr");
+    for (name, rows) in [
+        ("Ego", [(0.01, 70.1007, 10.07), (0.5, 75.8925, 13.5), (1.0, 83.535, 17.0)]),
+        ("Ego2", [(0.01, 70.101, 10.1), (0.5, 76.275, 15.0), (1.0, 84.822396, 18.292903)]),
+    ] {
+        for (t, x, v) in rows {
+            let e = at(&run, name, t);
+            assert!(close(e.x, x, 1e-4) && close(e.speed, v, 1e-4), "{name} t {t}: {e:?}");
+        }
+    }
+}
