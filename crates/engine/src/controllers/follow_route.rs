@@ -132,6 +132,12 @@ fn route_lane(sim: &Sim, e: usize, f: &FollowRouteRt) -> Option<crate::roads::La
     f.lane_change.as_ref().map(|l| l.internal).or_else(|| sim.entities.get(e).and_then(|en| en.lane))
 }
 
+/// esmini's `Position::GetDrivingDirectionRelativeRoad`: whether traffic in the entity's lane
+/// drives along s (the lane's side and the road's rule, not the way the entity faces).
+fn lane_drives_along_s(net: &RoadNetwork, lp: &crate::roads::LanePos) -> bool {
+    net.roads.get(lp.road).is_none_or(|r| opendrive::drives_along_s(r.rule, lp.lane_id))
+}
+
 /// Where an entity is, as a lane spot, and whether it drives along s.
 fn spot_of(lp: &crate::roads::LanePos) -> (LaneSpot, bool) {
     (LaneSpot { road: lp.road, lane: lp.lane_id, s: lp.s }, lp.dir > 0.0)
@@ -300,9 +306,11 @@ impl<'a> Sim<'a> {
                 // The scenario waypoint on this road (the last detailed one) counts only while
                 // it is still ahead.
                 let last_s = if i + 1 == f.route_roads.len() { f.scenario.last().map(|(w, _)| w.s) } else { None };
+                // esmini asks the lane's driving direction here, not the entity's heading.
+                let along = lane_drives_along_s(net, &lp);
                 let ahead = match last_s {
                     None => true,
-                    Some(ws) => (forward && start.s < ws - SMALL) || (!forward && start.s > ws + SMALL),
+                    Some(ws) => (along && start.s < ws - SMALL) || (!along && start.s > ws + SMALL),
                 };
                 if ahead {
                     f.scenario_index = j.min(n - 1);
@@ -369,7 +377,10 @@ impl<'a> Sim<'a> {
     fn deactivate_follow_route(&mut self, e: usize, f: &mut FollowRouteRt) {
         if let Some(en) = self.entities.get_mut(e) {
             if f.test_mode {
+                // Object::SetSpeed marks the speed as set: prepareGroundTruth does not take
+                // the step's displacement (a lane change's jump) as speed instead.
                 en.speed = 0.0;
+                en.speed_set = true;
             }
             en.route = None;
             en.controller_active = false;
@@ -380,9 +391,11 @@ impl<'a> Sim<'a> {
 
 /// esmini's `GetWaypointStatus`: on the waypoint's road, at or past its s: passed when on its
 /// lane, else missed; on the road after it, passed when the entity's lane leads back to the
-/// waypoint's lane, else missed; otherwise not reached.
+/// waypoint's lane, else missed; otherwise not reached. "Past" and "after" follow the driving
+/// direction of the entity's lane (GetDrivingDirectionRelativeRoad), whichever way it faces:
+/// an entity put into a lane of the other direction has missed its waypoint at once.
 fn waypoint_status(net: &RoadNetwork, vehicle: &crate::roads::LanePos, wp: &LaneSpot) -> WaypointStatus {
-    let forward = vehicle.dir > 0.0;
+    let forward = lane_drives_along_s(net, vehicle);
     let same_lane = wp.lane == vehicle.lane_id;
     if wp.road == vehicle.road {
         let past = (forward && vehicle.s > wp.s - SMALL) || (!forward && vehicle.s < wp.s + SMALL);
