@@ -85,12 +85,16 @@ pub(crate) fn connecting_lane_id(net: &RoadNetwork, link: Link, from_lane: i32, 
         }
         ElementType::Junction => {
             let Some(j) = net.junction(&rl.element_id) else { return 0 };
+            // esmini reads a direct junction's connection road from `linkedRoad`
+            // (OpenDrive::LoadOpenDriveFile), any other junction's from `connectingRoad`.
+            let direct = j.kind == JunctionType::Direct;
             for c in &j.connections {
                 if c.incoming_road.as_deref() != Some(road.id.as_str()) {
                     continue;
                 }
+                let leads_to = if direct { c.linked_road.as_deref() } else { c.connecting_road.as_deref() };
                 for ll in c.lane_links.iter().filter(|ll| ll.from == from_lane) {
-                    if c.connecting_road.as_deref() == Some(next.id.as_str()) {
+                    if leads_to == Some(next.id.as_str()) {
                         return ll.to;
                     }
                 }

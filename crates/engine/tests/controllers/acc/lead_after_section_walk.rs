@@ -12,16 +12,34 @@
 
 use crate::common::*;
 
-#[test]
-fn a_lane_id_walked_through_the_next_roads_sections_hides_the_lead() {
-    let run = run_fixture("acc_lead_after_section_walk.xosc", "section_border_after_link.xodr");
-    for (name, rows) in [
-        ("Ego", [(0.01, 70.1007, 10.07), (0.5, 75.8925, 13.5), (1.0, 83.535, 17.0)]),
-        ("Ego2", [(0.01, 70.101, 10.1), (0.5, 76.275, 15.0), (1.0, 84.822396, 18.292903)]),
-    ] {
+/// Ego's and Ego2's (t, x, speed) rows of esmini's run, each within 1e-4.
+fn assert_rows(map: &str, rows: [(&str, [(f64, f64, f64); 3]); 2]) {
+    let run = run_fixture("acc_lead_after_section_walk.xosc", map);
+    for (name, rows) in rows {
         for (t, x, v) in rows {
             let e = at(&run, name, t);
-            assert!(close(e.x, x, 1e-4) && close(e.speed, v, 1e-4), "{name} t {t}: {e:?}");
+            assert!(close(e.x, x, 1e-4) && close(e.speed, v, 1e-4), "{map} {name} t {t}: {e:?}");
         }
     }
+}
+
+#[test]
+fn a_lane_id_walked_through_the_next_roads_sections_hides_the_lead() {
+    assert_rows(
+        "section_border_after_link.xodr",
+        [
+            ("Ego", [(0.01, 70.1007, 10.07), (0.5, 75.8925, 13.5), (1.0, 83.535, 17.0)]),
+            ("Ego2", [(0.01, 70.101, 10.1), (0.5, 76.275, 15.0), (1.0, 84.822396, 18.292903)]),
+        ],
+    );
+}
+
+#[test]
+fn a_direct_junction_leads_by_its_linked_road() {
+    // The same cars on `direct_junction_two_roads.xodr`: road 1 runs into road 2 (one lane
+    // section) through a direct junction, whose connection names road 2 as `linkedRoad`
+    // (esmini reads a direct junction's connecting road from it). Both leads are in their
+    // ACC's lane: esmini follows each (osc2cr found no connecting lane and lost Ego's lead).
+    let follow = [(0.01, 70.101, 10.1), (0.5, 76.275, 15.0), (1.0, 84.822396, 18.292903)];
+    assert_rows("direct_junction_two_roads.xodr", [("Ego", follow), ("Ego2", follow)]);
 }
