@@ -12,8 +12,11 @@
 
 use crate::common::*;
 
-/// Ego's and Ego2's (t, x, speed) rows of esmini's run, each within 1e-4.
-fn assert_rows(map: &str, rows: [(&str, [(f64, f64, f64); 3]); 2]) {
+/// (t, x, speed) rows of esmini's run.
+type Rows = [(f64, f64, f64); 3];
+
+/// Ego's and Ego2's rows of esmini's run, each within 1e-4.
+fn assert_rows(map: &str, rows: [(&str, Rows); 2]) {
     let run = run_fixture("acc_lead_after_section_walk.xosc", map);
     for (name, rows) in rows {
         for (t, x, v) in rows {
