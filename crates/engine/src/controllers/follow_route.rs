@@ -13,7 +13,7 @@ pub(crate) mod state;
 
 use state::FollowRouteRt;
 
-use super::lane_router::{calculate_path, connecting_lane_id, next_roads, path_waypoints, LaneSpot};
+use super::lane_router::{calculate_path, connected_lane_at_s, connecting_lane_id, next_roads, path_waypoints, LaneSpot};
 use crate::actions::lane_change::state::LaneChangeRt;
 use crate::dynamics::{sign, Transition};
 use crate::roads::lane_geometry::{lane_borders, lane_center_t};
@@ -87,26 +87,43 @@ impl FollowRouteRt {
     }
 }
 
-/// esmini's detailed route waypoints' roads for `route` through `scenario` waypoints: each
-/// scenario waypoint's road and, between two, each road the planned route passes.
-pub(crate) fn route_roads(route: &routing::Route, scenario: &[(LaneSpot, Strategy)]) -> Vec<usize> {
-    let mut out = Vec::new();
-    for (i, (w, _)) in scenario.iter().enumerate() {
+/// esmini's route waypoints for `route` through `scenario` waypoints, as Route::AddWaypoint
+/// keeps them: the roads of every waypoint added (`all_waypoints_`: each scenario waypoint's
+/// road and, between two, each road the planned route passes), and the scenario waypoints the
+/// controller steers to (`scenario_waypoints_`). Before adding a waypoint AddWaypoint drops
+/// the last anchor (`minimal_waypoints_`) when the new waypoint is on its road, or when the
+/// first two anchors share a road, and with it the last scenario waypoint (while more than
+/// one is left); `all_waypoints_` keeps every one.
+pub(crate) fn route_waypoints(route: &routing::Route, scenario: &[(LaneSpot, Strategy)]) -> (Vec<usize>, Vec<(LaneSpot, Strategy)>) {
+    let mut all = Vec::new();
+    let mut minimal: Vec<usize> = Vec::new();
+    let mut kept = Vec::with_capacity(scenario.len());
+    for (i, &(w, strategy)) in scenario.iter().enumerate() {
+        let n = minimal.len();
+        if n > 1 && ((n == 2 && minimal[0] == minimal[1]) || minimal[n - 1] == w.road) {
+            minimal.pop();
+            if kept.len() > 1 {
+                kept.pop();
+            }
+        }
         if i > 0 {
             let (from, to) = (route.waypoint_route_s(i - 1), route.waypoint_route_s(i));
             if let (Some(a), Some(b)) = (from, to) {
                 let mut last = scenario[i - 1].0.road;
                 for leg in route.legs().iter().filter(|l| l.route_s >= a && l.route_s < b) {
                     if leg.road != last && leg.road != w.road {
-                        out.push(leg.road);
+                        all.push(leg.road);
+                        minimal.push(leg.road);
                     }
                     last = leg.road;
                 }
             }
         }
-        out.push(w.road);
+        all.push(w.road);
+        minimal.push(w.road);
+        kept.push((w, strategy));
     }
-    out
+    (all, kept)
 }
 
 /// The lane position esmini's controller sees: during its lane change esmini keeps the entity
@@ -115,47 +132,15 @@ fn route_lane(sim: &Sim, e: usize, f: &FollowRouteRt) -> Option<crate::roads::La
     f.lane_change.as_ref().map(|l| l.internal).or_else(|| sim.entities.get(e).and_then(|en| en.lane))
 }
 
+/// esmini's `Position::GetDrivingDirectionRelativeRoad`: whether traffic in the entity's lane
+/// drives along s (the lane's side and the road's rule, not the way the entity faces).
+fn lane_drives_along_s(net: &RoadNetwork, lp: &crate::roads::LanePos) -> bool {
+    net.roads.get(lp.road).is_none_or(|r| opendrive::drives_along_s(r.rule, lp.lane_id))
+}
+
 /// Where an entity is, as a lane spot, and whether it drives along s.
 fn spot_of(lp: &crate::roads::LanePos) -> (LaneSpot, bool) {
     (LaneSpot { road: lp.road, lane: lp.lane_id, s: lp.s }, lp.dir > 0.0)
-}
-
-/// esmini's `Road::GetConnectedLaneIdAtS`: the lane `lane` at `s_start` runs into through
-/// the road's lane sections towards `s_target`. esmini steps while the start of the section
-/// it just crossed is short of the target, so it follows the lane one section past the one
-/// holding the target.
-fn connected_lane_at_s(net: &RoadNetwork, road: usize, lane: i32, s_start: f64, s_target: f64) -> i32 {
-    let Some(r) = net.roads.get(road) else { return 0 };
-    let n = r.lane_sections.len();
-    if n == 0 {
-        return 0;
-    }
-    let link = |j: usize, id: i32, succ: bool| -> i32 {
-        match r.lane_sections.get(j).and_then(|sec| sec.lane(id)) {
-            None => 0,
-            Some(l) => {
-                let ids = if succ { &l.successors } else { &l.predecessors };
-                ids.first().copied().unwrap_or(id)
-            }
-        }
-    };
-    let mut id = lane;
-    let mut j = r.section_index_at(s_start);
-    let mut s = s_start;
-    if s_target > s_start - SMALL {
-        while id != 0 && j < n - 1 && s < s_target {
-            id = link(j, id, true);
-            s = r.lane_sections[j].s;
-            j += 1;
-        }
-    } else {
-        while id != 0 && j > 0 && s > s_target {
-            id = link(j, id, false);
-            s = r.lane_sections[j].s;
-            j -= 1;
-        }
-    }
-    id
 }
 
 impl<'a> Sim<'a> {
@@ -191,9 +176,9 @@ impl<'a> Sim<'a> {
     }
 
     fn give_route_follower(&mut self, e: usize, scenario: Vec<(LaneSpot, Strategy)>, planned: &routing::Route) {
-        let roads = route_roads(planned, &scenario);
+        let (roads, kept) = route_waypoints(planned, &scenario);
         if let Some(Some(super::state::ControllerRt::FollowRoute(f))) = self.controllers.get_mut(e) {
-            f.set_route(scenario, roads);
+            f.set_route(kept, roads);
         }
     }
 
@@ -317,9 +302,11 @@ impl<'a> Sim<'a> {
                 // The scenario waypoint on this road (the last detailed one) counts only while
                 // it is still ahead.
                 let last_s = if i + 1 == f.route_roads.len() { f.scenario.last().map(|(w, _)| w.s) } else { None };
+                // esmini asks the lane's driving direction here, not the entity's heading.
+                let along = lane_drives_along_s(net, &lp);
                 let ahead = match last_s {
                     None => true,
-                    Some(ws) => (forward && start.s < ws - SMALL) || (!forward && start.s > ws + SMALL),
+                    Some(ws) => (along && start.s < ws - SMALL) || (!along && start.s > ws + SMALL),
                 };
                 if ahead {
                     f.scenario_index = j.min(n - 1);
@@ -386,7 +373,10 @@ impl<'a> Sim<'a> {
     fn deactivate_follow_route(&mut self, e: usize, f: &mut FollowRouteRt) {
         if let Some(en) = self.entities.get_mut(e) {
             if f.test_mode {
+                // Object::SetSpeed marks the speed as set: prepareGroundTruth does not take
+                // the step's displacement (a lane change's jump) as speed instead.
                 en.speed = 0.0;
+                en.speed_set = true;
             }
             en.route = None;
             en.controller_active = false;
@@ -397,9 +387,11 @@ impl<'a> Sim<'a> {
 
 /// esmini's `GetWaypointStatus`: on the waypoint's road, at or past its s: passed when on its
 /// lane, else missed; on the road after it, passed when the entity's lane leads back to the
-/// waypoint's lane, else missed; otherwise not reached.
+/// waypoint's lane, else missed; otherwise not reached. "Past" and "after" follow the driving
+/// direction of the entity's lane (GetDrivingDirectionRelativeRoad), whichever way it faces:
+/// an entity put into a lane of the other direction has missed its waypoint at once.
 fn waypoint_status(net: &RoadNetwork, vehicle: &crate::roads::LanePos, wp: &LaneSpot) -> WaypointStatus {
-    let forward = vehicle.dir > 0.0;
+    let forward = lane_drives_along_s(net, vehicle);
     let same_lane = wp.lane == vehicle.lane_id;
     if wp.road == vehicle.road {
         let past = (forward && vehicle.s > wp.s - SMALL) || (!forward && vehicle.s < wp.s + SMALL);

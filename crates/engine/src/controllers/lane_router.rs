@@ -85,12 +85,16 @@ pub(crate) fn connecting_lane_id(net: &RoadNetwork, link: Link, from_lane: i32, 
         }
         ElementType::Junction => {
             let Some(j) = net.junction(&rl.element_id) else { return 0 };
+            // esmini reads a direct junction's connection road from `linkedRoad`
+            // (OpenDrive::LoadOpenDriveFile), any other junction's from `connectingRoad`.
+            let direct = j.kind == JunctionType::Direct;
             for c in &j.connections {
                 if c.incoming_road.as_deref() != Some(road.id.as_str()) {
                     continue;
                 }
+                let leads_to = if direct { c.linked_road.as_deref() } else { c.connecting_road.as_deref() };
                 for ll in c.lane_links.iter().filter(|ll| ll.from == from_lane) {
-                    if c.connecting_road.as_deref() == Some(next.id.as_str()) {
+                    if leads_to == Some(next.id.as_str()) {
                         return ll.to;
                     }
                 }
@@ -98,6 +102,44 @@ pub(crate) fn connecting_lane_id(net: &RoadNetwork, link: Link, from_lane: i32, 
             0
         }
     }
+}
+
+/// esmini's `Road::GetConnectedLaneIdAtS`: the lane `lane` at `s_start` runs into through
+/// the road's lane sections towards `s_target`. esmini steps while the start of the section
+/// it just crossed is short of the target, so it follows the lane one section past the one
+/// holding the target.
+pub(crate) fn connected_lane_at_s(net: &RoadNetwork, road: usize, lane: i32, s_start: f64, s_target: f64) -> i32 {
+    let Some(r) = net.roads.get(road) else { return 0 };
+    let n = r.lane_sections.len();
+    if n == 0 {
+        return 0;
+    }
+    let link = |j: usize, id: i32, succ: bool| -> i32 {
+        match r.lane_sections.get(j).and_then(|sec| sec.lane(id)) {
+            None => 0,
+            Some(l) => {
+                let ids = if succ { &l.successors } else { &l.predecessors };
+                ids.first().copied().unwrap_or(id)
+            }
+        }
+    };
+    let mut id = lane;
+    let mut j = r.section_index_at(s_start);
+    let mut s = s_start;
+    if s_target > s_start - crate::dynamics::ESMINI_SMALL_NUMBER {
+        while id != 0 && j < n - 1 && s < s_target {
+            id = link(j, id, true);
+            s = r.lane_sections[j].s;
+            j += 1;
+        }
+    } else {
+        while id != 0 && j > 0 && s > s_target {
+            id = link(j, id, false);
+            s = r.lane_sections[j].s;
+            j -= 1;
+        }
+    }
+    id
 }
 
 /// Roads a link leads to: the linked road, or every connecting road of the junction whose

@@ -45,8 +45,10 @@ impl NdParams {
         NdParams {
             desired_distance: num("desiredDistance", 20.0),
             desired_speed: num("desiredSpeed", 15.0).max(SMALL_NUMBER),
-            // esmini keeps the duration as a float.
-            lane_change_duration: num("laneChangeDuration", 3.0) as f32 as f64,
+            // A double, as ControllerNaturalDriver keeps it: its lane-change cooldown
+            // (duration + delay, counted down by dt each step) ends on the step the double
+            // says; the lane change it injects runs over the duration as a float.
+            lane_change_duration: num("laneChangeDuration", 3.0),
             lookahead: num("lookAheadDistance", 115.0),
             // As given: esmini clips the acceleration from below at `maxDec`, so a positive
             // value makes the car speed up at least that hard, and the desired gap's √(−a·b)
@@ -117,7 +119,7 @@ impl<'a> Sim<'a> {
         nd.action_yaw = 0.0;
         let mut stepped = false;
         if let Some((lane, name)) = nd.pending.take() {
-            if let Some(rt) = self.nd_start_lane_change(e, lane, nd.p.lane_change_duration) {
+            if let Some(rt) = self.nd_start_lane_change(e, lane, nd.p.lane_change_duration as f32 as f64) {
                 self.nd_event(time, &name, "init", "start", "running");
                 nd.lane_change = Some((rt, name));
             }

@@ -166,3 +166,35 @@ fn a_route_it_cannot_plan_stops_a_test_mode_entity_in_frame_0() {
     assert!(close(at(&run, "Watcher", 0.01).x, 200.0, 1e-9));
     assert!(close(at(&run, "Watcher", 0.02).x, 200.1, 1e-9));
 }
+
+#[test]
+fn a_scenario_waypoint_followed_by_one_on_its_road_is_dropped() {
+    // Waypoints road 1 s = 20, road 1 s = 60, road 2 s = 50 (lane −1 each): esmini's
+    // Route::AddWaypoint drops the waypoint at s = 60 from the scenario waypoints when the
+    // next is added ("Removing previous waypoint for same road 1"), so the controller plans
+    // from road 1 straight to road 2 (a path to s = 60 on Ego's own lane would not exist and
+    // would deactivate it at once). esmini: 20 m/s at 7.0 s (x 150), stopped from 7.01 s at
+    // x 150.2.
+    let run = run_fixture("follow_route_dropped_waypoint.xosc");
+    assert!(run.warnings.is_empty(), "{:?}", run.warnings);
+    let e = at(&run, "Ego", 1.0);
+    assert!(close(e.speed, 20.0, 1e-12) && close(e.x, 30.0, 1e-9), "{e:?}");
+    assert!(close(at(&run, "Ego", 7.0).speed, 20.0, 1e-12));
+    let e = at(&run, "Ego", 7.01);
+    assert!(close(e.speed, 0.0, 1e-12) && close(e.x, 150.2, 1e-9), "{e:?}");
+}
+
+#[test]
+fn a_lane_change_into_the_other_direction_misses_the_waypoint_and_no_path_is_found() {
+    // Ego follows its route along road 1, lane −1 (to road 2, lane −1, s = 150) at 20 m/s; at
+    // 1 s a step LaneChangeAction puts it on lane 1, still facing +s. esmini's
+    // GetWaypointStatus takes "past the waypoint" in the lane's driving direction (lane 1
+    // drives against s): the waypoint is missed, the path from lane 1 finds no lane to road 2's
+    // lane −1 ("Path not found, deactivating controller") and test mode stops Ego. esmini:
+    // 20 m/s at x 30 at 1.0 s, stopped from 1.01 s at x 30.2 on lane 1 (y 1.75).
+    let run = run_fixture("follow_route_against_lane.xosc");
+    for (t, x, y, v) in [(1.0, 30.0, -1.75, 20.0), (1.01, 30.2, 1.75, 0.0), (11.0, 30.2, 1.75, 0.0)] {
+        let e = at(&run, "Ego", t);
+        assert!(close(e.speed, v, 1e-12) && close(e.x, x, 1e-9) && close(e.y, y, 1e-9), "{t}: {e:?}");
+    }
+}

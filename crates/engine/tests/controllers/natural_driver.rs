@@ -193,3 +193,18 @@ fn in_additive_mode_the_default_controller_moves_the_car_too() {
         assert!(close(e.x, 20.0 + 20.0 * t, 1e-6) && close(e.speed, 10.0, 1e-9), "t {t}: {e:?}");
     }
 }
+
+#[test]
+fn the_lane_change_cooldown_counts_a_double_duration() {
+    // Fixture natural_driver_cooldown.xosc: the overtake above at 15 m/s with a lane change of
+    // 3.78 s. ControllerNaturalDriver keeps laneChangeDuration as a double: its cooldown
+    // (3.78 + 1 s, less dt each step) reaches the delay only after 379 steps, so the speed is
+    // held through row 3.79 and the IDM acceleration shows from row 3.80 (a float 3.78 ends
+    // one step sooner). esmini 3.6.0: 15 m/s at 3.79 s, 15.013672 at 3.80 s, 15.027321 at 3.81 s.
+    let run = crate::common::run_fixture("natural_driver_cooldown.xosc", "straight.xodr");
+    for (t, v) in [(3.78, 15.0), (3.79, 15.0), (3.8, 15.013672), (3.81, 15.027321)] {
+        let e = at(&run, "Ego", t);
+        assert!(close(e.speed, v, 1e-5), "t={t}: {e:?}");
+    }
+    assert!(close(at(&run, "Ego", 3.79).y, -5.25, 1e-9));
+}
