@@ -15,6 +15,7 @@ pub(crate) mod state;
 
 use state::AccRt;
 
+use super::forward_delta::forward_delta;
 use crate::conditions::distance::between;
 use crate::roads::lane_geometry::lane_center_t;
 use crate::roads::road_distance::road_distance_within;
@@ -133,7 +134,10 @@ impl<'a> Sim<'a> {
                 continue;
             }
             if let (Some(net), Some(la), Some(lb)) = (self.net, me.lane, p.lane) {
-                if let Some((ds, same_lane, dt_lat)) = lane_delta(net, la, lb, lookahead) {
+                // ControllerACC::Step: Position::Delta forward only (RoadPath::Calculate), which
+                // reaches a lead on any junction branch; dLaneId 0 is "in my lane".
+                if let Some(d) = forward_delta(net, &la, me.h, &lb, lookahead) {
+                    let (ds, same_lane, dt_lat) = (d.ds, d.d_lane == 0, d.dt);
                     let dh = crate::roads::road_follow::wrap(me.h - p.h).abs();
                     let front = me.bbox[3] / 2.0 + me.bbox[0];
                     let back = if dh < std::f64::consts::FRAC_PI_2 { p.bbox[3] / 2.0 - p.bbox[0] } else { p.bbox[3] / 2.0 + p.bbox[0] };

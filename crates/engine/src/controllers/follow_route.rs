@@ -124,7 +124,7 @@ fn spot_of(lp: &crate::roads::LanePos) -> (LaneSpot, bool) {
 /// the road's lane sections towards `s_target`. esmini steps while the start of the section
 /// it just crossed is short of the target, so it follows the lane one section past the one
 /// holding the target.
-fn connected_lane_at_s(net: &RoadNetwork, road: usize, lane: i32, s_start: f64, s_target: f64) -> i32 {
+pub(crate) fn connected_lane_at_s(net: &RoadNetwork, road: usize, lane: i32, s_start: f64, s_target: f64) -> i32 {
     let Some(r) = net.roads.get(road) else { return 0 };
     let n = r.lane_sections.len();
     if n == 0 {
