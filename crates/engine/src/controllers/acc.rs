@@ -200,11 +200,9 @@ impl<'a> Sim<'a> {
                     a.at_end = status == MoveStatus::EndOfRoad || at_unlinked_road_end(net, &lp);
                     en.set_lane_pos(net, lp);
                 }
-                _ => {
-                    a.at_end = false;
-                    en.x += a.current_speed * dt * en.h.cos();
-                    en.y += a.current_speed * dt * en.h.sin();
-                }
+                // Off every road (no road network, or a position esmini never placed on one):
+                // Position::MoveAlongS returns an error without moving (track_idx_ undefined).
+                _ => a.at_end = false,
             }
             a.moved = (en.x - x0).hypot(en.y - y0) > 1e-9;
             en.moved_by_action = true;

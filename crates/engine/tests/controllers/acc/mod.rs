@@ -9,6 +9,7 @@ mod lookahead_same_road;
 mod override_add_entity;
 mod override_distance_actions;
 mod override_moves;
+mod override_off_road;
 mod override_route;
 mod override_speed_action;
 mod override_speed_profile;
