@@ -9,6 +9,7 @@
 
 use super::follow_route::connected_lane_at_s;
 use super::lane_router::connecting_lane_id;
+use crate::roads::junction_connections;
 use crate::roads::lane_geometry::lane_center_t;
 use crate::roads::LanePos;
 use opendrive::{ContactPoint, ElementType, JunctionType, RoadNetwork};
@@ -86,7 +87,7 @@ pub(crate) fn forward_delta(net: &RoadNetwork, a: &LanePos, a_h: f64, b: &LanePo
             ContactPoint::End => (0.0, len, rb.length),
         };
         adj = connected_lane_at_s(net, n.road, n.from_lane, from_s, to_s);
-        adj = connecting_lane_id(net, (n.road, n.end), adj, b.road);
+        adj = connecting_lane(net, (n.road, n.end), adj, b.road);
         adj = connected_lane_at_s(net, b.road, adj, b_from, b.s);
     }
     let mut d_lane = b.lane_id - adj;
@@ -139,15 +140,16 @@ fn search(net: &RoadNetwork, a: &LanePos, forward: bool, b: &LanePos, max: f64) 
                     }
                 }
             }
-            Some(_) => {
-                // Every connection whose incoming road is this one, in order; reaching the
-                // target's road by several adds its part once for each (as esmini does).
-                for e in crate::roads::road_path::next_roads(net, node.road, node.end) {
-                    if e.road == b.road {
-                        tmp += along_b(Some(e.contact));
+            Some(l) => {
+                // Every connection whose incoming road is this one, in esmini's order (its
+                // counter connections too); reaching the target's road by several adds its
+                // part once for each (as esmini does).
+                for (next, contact) in junction_next(net, node.road, node.end, &l.element_id) {
+                    if next == b.road {
+                        tmp += along_b(Some(contact));
                         found = true;
                     } else {
-                        check_road(net, e.road, &node, &visited, &mut unvisited);
+                        check_road(net, next, &node, &visited, &mut unvisited);
                     }
                 }
             }
@@ -161,11 +163,39 @@ fn search(net: &RoadNetwork, a: &LanePos, forward: bool, b: &LanePos, max: f64) 
     Some((tmp, *visited.last()?))
 }
 
+/// The roads a junction leads to from `road`'s end `end` and the contact point each is entered
+/// by (Junction::GetConnectingRoadIdFromIncomingRoadId over esmini's connections: a default
+/// junction's with the counter connections esmini adds at load, `junction_connections`; a
+/// direct junction's as `road_path` has them).
+fn junction_next(net: &RoadNetwork, road: usize, end: ContactPoint, junction: &str) -> Vec<(usize, ContactPoint)> {
+    match net.junction_index(junction) {
+        Some(j) if net.junctions.get(j).is_some_and(|j| j.kind != JunctionType::Direct) => {
+            junction_connections::entering(net, j, road).into_iter().map(|c| (c.connecting, c.contact)).collect()
+        }
+        _ => crate::roads::road_path::next_roads(net, road, end).into_iter().map(|e| (e.road, e.contact)).collect(),
+    }
+}
+
+/// Road::GetConnectingLaneId: the lane `lane` of the link's road leads to on `next`; through a
+/// default junction by esmini's connections (counter connections too), else as the file says.
+fn connecting_lane(net: &RoadNetwork, link: (usize, ContactPoint), lane: i32, next: usize) -> i32 {
+    let junction = net.roads.get(link.0).and_then(|r| r.link_at(link.1)).filter(|l| l.element_type == ElementType::Junction);
+    let j = junction.and_then(|l| net.junction_index(&l.element_id));
+    match j {
+        Some(j) if net.junctions.get(j).is_some_and(|j| j.kind != JunctionType::Direct) => junction_connections::entering(net, j, link.0)
+            .iter()
+            .filter(|c| c.connecting == next)
+            .find_map(|c| c.lane_links.iter().find(|l| l.0 == lane).map(|l| l.1))
+            .unwrap_or(0),
+        _ => connecting_lane_id(net, link, lane, next),
+    }
+}
+
 /// RoadPath::CheckRoad: step from `src`'s link onto `check` when `src`'s lane continues there,
 /// queueing the link at `check`'s far end (always as a new node, as esmini's list scan leaves
 /// its index at the end; an equal link already queued only gets the shorter distance).
 fn check_road(net: &RoadNetwork, check: usize, src: &Node, visited: &[Node], unvisited: &mut Vec<Node>) {
-    let lane = connecting_lane_id(net, (src.road, src.end), src.from_lane, check);
+    let lane = connecting_lane(net, (src.road, src.end), src.from_lane, check);
     if lane == 0 {
         return;
     }
