@@ -177,7 +177,8 @@ fn junction_next(net: &RoadNetwork, road: usize, end: ContactPoint, junction: &s
 }
 
 /// Road::GetConnectingLaneId: the lane `lane` of the link's road leads to on `next`; through a
-/// default junction by esmini's connections (counter connections too), else as the file says.
+/// default junction by esmini's connections (counter connections too), through a direct one by
+/// its linked roads, else by the lane's own link.
 fn connecting_lane(net: &RoadNetwork, link: (usize, ContactPoint), lane: i32, next: usize) -> i32 {
     let junction = net.roads.get(link.0).and_then(|r| r.link_at(link.1)).filter(|l| l.element_type == ElementType::Junction);
     let j = junction.and_then(|l| net.junction_index(&l.element_id));
@@ -187,8 +188,30 @@ fn connecting_lane(net: &RoadNetwork, link: (usize, ContactPoint), lane: i32, ne
             .filter(|c| c.connecting == next)
             .find_map(|c| c.lane_links.iter().find(|l| l.0 == lane).map(|l| l.1))
             .unwrap_or(0),
-        _ => connecting_lane_id(net, link, lane, next),
+        Some(j) => direct_connecting_lane(net, j, link.0, lane, next),
+        None => connecting_lane_id(net, link, lane, next),
     }
+}
+
+/// Road::GetConnectingLaneId through a direct junction: the connection from `road` to `next`
+/// (its `linkedRoad`), else the counter connection esmini adds for the linked road (incoming
+/// and linked road swapped, lane links turned round).
+fn direct_connecting_lane(net: &RoadNetwork, j: usize, road: usize, lane: i32, next: usize) -> i32 {
+    let (Some(junction), Some(r), Some(n)) = (net.junctions.get(j), net.roads.get(road), net.roads.get(next)) else { return 0 };
+    let (id, next_id) = (Some(r.id.as_str()), Some(n.id.as_str()));
+    let forward = junction
+        .connections
+        .iter()
+        .filter(|c| c.incoming_road.as_deref() == id && c.target_road() == next_id)
+        .find_map(|c| c.lane_links.iter().find(|l| l.from == lane).map(|l| l.to));
+    let counter = || {
+        junction
+            .connections
+            .iter()
+            .filter(|c| c.target_road() == id && c.incoming_road.as_deref() == next_id)
+            .find_map(|c| c.lane_links.iter().find(|l| l.to == lane).map(|l| l.from))
+    };
+    forward.or_else(counter).unwrap_or(0)
 }
 
 /// RoadPath::CheckRoad: step from `src`'s link onto `check` when `src`'s lane continues there,
