@@ -9,13 +9,12 @@
 
 use super::follow_route::connected_lane_at_s;
 use super::lane_router::connecting_lane_id;
+use super::natural_driver::view::LARGE_NUMBER;
 use crate::roads::junction_connections;
 use crate::roads::lane_geometry::lane_center_t;
 use crate::roads::LanePos;
 use opendrive::{ContactPoint, ElementType, JunctionType, RoadNetwork};
 
-/// esmini's LARGE_NUMBER.
-const LARGE_NUMBER: f64 = 1e10;
 /// RoadPath::Calculate's cap on expansions.
 const MAX_EXPANSIONS: usize = 100;
 

@@ -4,9 +4,7 @@
 mod first_frame;
 mod lane_change_off_driving_lanes;
 mod lane_change_on_route;
-mod lead_across_direct_junction;
-mod lead_on_counter_connection;
-mod lead_on_other_branch;
+mod leads_across_junctions;
 mod lookahead_same_road;
 mod override_add_entity;
 mod override_distance_actions;
