@@ -15,6 +15,7 @@ pub(crate) mod state;
 
 use state::AccRt;
 
+use super::forward_delta::forward_delta;
 use crate::conditions::distance::between;
 use crate::roads::lane_geometry::lane_center_t;
 use crate::roads::road_distance::road_distance_within;
@@ -166,7 +167,10 @@ impl<'a> Sim<'a> {
                 continue;
             }
             if let (Some(net), Some(la), Some(lb)) = (self.net, me.lane, p.lane) {
-                if let Some((ds, same_lane, dt_lat)) = lane_delta(net, la, lb, lookahead) {
+                // ControllerACC::Step: Position::Delta forward only (RoadPath::Calculate), which
+                // reaches a lead on any junction branch; dLaneId 0 is "in my lane".
+                if let Some(d) = forward_delta(net, &la, me.h, &lb, lookahead) {
+                    let (ds, same_lane, dt_lat) = (d.ds, d.d_lane == 0, d.dt);
                     let dh = crate::roads::road_follow::wrap(me.h - p.h).abs();
                     let front = me.bbox[3] / 2.0 + me.bbox[0];
                     let back = if dh < std::f64::consts::FRAC_PI_2 { p.bbox[3] / 2.0 - p.bbox[0] } else { p.bbox[3] / 2.0 + p.bbox[0] };
@@ -229,11 +233,9 @@ impl<'a> Sim<'a> {
                     a.at_end = status == MoveStatus::EndOfRoad || at_unlinked_road_end(net, &lp);
                     en.set_lane_pos(net, lp);
                 }
-                _ => {
-                    a.at_end = false;
-                    en.x += a.current_speed * dt * en.h.cos();
-                    en.y += a.current_speed * dt * en.h.sin();
-                }
+                // Off every road (no road network, or a position esmini never placed on one):
+                // Position::MoveAlongS returns an error without moving (track_idx_ undefined).
+                _ => a.at_end = false,
             }
             a.moved = (en.x - x0).hypot(en.y - y0) > 1e-9;
             en.moved_by_action = true;

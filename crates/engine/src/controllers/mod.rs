@@ -16,6 +16,7 @@ pub(crate) mod follow_ghost;
 pub(crate) mod follow_reference;
 pub(crate) mod follow_route;
 pub(crate) mod followers;
+pub(crate) mod forward_delta;
 pub(crate) mod kinematic_vehicle;
 pub(crate) mod lane_lock;
 pub(crate) mod lane_router;

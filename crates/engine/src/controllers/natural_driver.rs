@@ -24,7 +24,7 @@
 //! before the driver moves it again, as in esmini.
 
 pub(crate) mod state;
-mod view;
+pub(crate) mod view;
 
 use state::{Mode, NaturalDriverRt, NdParams};
 

@@ -74,7 +74,7 @@ pub(crate) fn path_ends(net: &RoadNetwork, a: usize, sa: f64, b: usize) -> Optio
 /// them (OpenDrive::CheckConnectedRoad adds a counter connection per connection whose linked
 /// road links back to the junction: incoming road and linked road swapped, entered at the end
 /// of the original incoming road that touches the junction, its successor end first).
-fn next_roads(net: &RoadNetwork, road: usize, exit: ContactPoint) -> Vec<RoadEnd> {
+pub(crate) fn next_roads(net: &RoadNetwork, road: usize, exit: ContactPoint) -> Vec<RoadEnd> {
     let Some(r) = net.roads.get(road) else { return Vec::new() };
     match r.link_at(exit) {
         Some(l) if l.element_type == ElementType::Junction => {
