@@ -87,6 +87,17 @@ pub(crate) struct Entity {
 }
 
 impl Entity {
+    /// esmini's ScenarioEngine::step, after every object's (default) move: an object whose
+    /// position status says end of road (`at_road_end`), already flagged there in an earlier
+    /// step (`end_of_road`), and whose velocity, measured at the last step, is zero is stopped
+    /// ("object at end of road and not moving, enforce zero speed").
+    pub(crate) fn stop_if_stuck_at_road_end(&mut self) {
+        use crate::dynamics::SMALL;
+        if self.at_road_end && self.end_of_road && self.vel.0.abs() < SMALL && self.vel.1.abs() < SMALL {
+            self.speed = 0.0;
+        }
+    }
+
     pub(crate) fn from_scenario(scenario: &Scenario) -> Vec<Entity> {
         scenario.entities.iter().map(Entity::from_model).collect()
     }

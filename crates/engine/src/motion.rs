@@ -27,6 +27,13 @@ impl<'a> Sim<'a> {
         let net = self.net;
         let random = &mut self.random;
         for en in &mut self.entities {
+            // A teleport keeps the position status (Position::TeleportTo copies the location
+            // only, CopyLocation leaves `status_`), and ScenarioEngine::step checks it after
+            // the (here skipped) default move: an entity stuck at a dead end and teleported
+            // away stays stopped, whatever speed an action set meanwhile.
+            if en.teleported && en.active && !en.outside && !en.roadless {
+                en.stop_if_stuck_at_road_end();
+            }
             // ScenarioEngine::step: no default move at |speed| <= SMALL_NUMBER (1e-6).
             if !en.active || en.outside || en.moved_by_action || en.speed.abs() <= ESMINI_SMALL_NUMBER {
                 continue;
@@ -54,10 +61,8 @@ impl<'a> Sim<'a> {
                         // step that reached it) whose velocity is zero (`vel` is still the last
                         // step's: the step after the arrival, stuck) is stopped. So the speed
                         // drops two steps after the arrival, not one (a SpeedCondition sees it).
-                        if en.end_of_road && en.vel.0.abs() < SMALL && en.vel.1.abs() < SMALL {
-                            en.speed = 0.0;
-                        }
                         en.at_road_end = true;
+                        en.stop_if_stuck_at_road_end();
                     } else {
                         en.at_road_end = false;
                     }

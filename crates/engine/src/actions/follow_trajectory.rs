@@ -325,9 +325,7 @@ impl<'a> Sim<'a> {
         // along the road from the road's end.
         if let (Some(net), Some(lp)) = (net, en.lane) {
             en.at_road_end = crate::roads::past_end::past_road_end(net, lp.road, lp.s, x, y);
-            if en.at_road_end && en.end_of_road && en.vel.0.abs() < SMALL && en.vel.1.abs() < SMALL {
-                en.speed = 0.0;
-            }
+            en.stop_if_stuck_at_road_end();
         }
         f.clock += dt;
         done

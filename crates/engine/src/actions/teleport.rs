@@ -57,7 +57,9 @@ impl<'a> Sim<'a> {
         };
         let net = self.net;
         let Some(en) = self.entities.get_mut(e) else { return false };
-        en.at_road_end = false;
+        // The position status (end of road) is not the target's: esmini's Position::TeleportTo
+        // copies the location only (CopyLocation leaves `status_`), so the entity keeps the
+        // status of its last move until its next one (motion.rs).
         en.roadless = false;
         match (placement.lane, net) {
             (Some(lp), Some(net)) => {

@@ -1,4 +1,5 @@
 //! TeleportAction rules found in esmini's source and by the differential tester.
 
 mod domains_and_relative_road;
+mod stuck_at_road_end;
 mod travel_and_missing_lane;
