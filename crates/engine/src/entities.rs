@@ -291,6 +291,47 @@ pub(crate) fn wrap_2pi(a: f64) -> f64 {
     }
 }
 
+/// R0R12EulerAngles' guard against gimbal lock: a cosine of magnitude below SMALL_NUMBER
+/// becomes ±SMALL_NUMBER (0 counting as positive).
+fn gimbal_guard(cos: f64) -> f64 {
+    let small = crate::dynamics::ESMINI_SMALL_NUMBER;
+    if cos.abs() >= small {
+        cos
+    } else if cos < 0.0 {
+        -small
+    } else {
+        small
+    }
+}
+
+/// The heading esmini reports for an entity facing `h` (Object::pos_.GetH()): Position::
+/// EvaluateHPR composes the road's rotation with the relative one (R0R12EulerAngles), whose
+/// guard against gimbal lock sets a cosine smaller than 1e-6 to ±1e-6, so a heading within a
+/// micro-radian of ±π/2 comes out 1e-6 rad from it. A lead exactly ahead or behind on a road
+/// along ±y lies on the side of π that this offset picks.
+pub(crate) fn esmini_reported_heading(h: f64) -> f64 {
+    let (sin, cos) = h.sin_cos();
+    if cos.abs() >= crate::dynamics::ESMINI_SMALL_NUMBER {
+        return h;
+    }
+    wrap_2pi(sin.atan2(gimbal_guard(cos)))
+}
+
+/// The heading esmini's position holds when turned by `h_rel` from a level road's heading
+/// `h_road` (Position::EvaluateHPR: R0R12EulerAngles multiplies the two rotation matrices and
+/// takes atan2 of the product's first column, its cosine guarded against gimbal lock, in
+/// [0, 2π)). The product's terms in esmini's order, so the result is esmini's to the last bit
+/// on a road without pitch or roll: a heading along ±y comes out 1e-6 rad off, and one along
+/// ±x can differ from `h_road + h_rel` by an ulp, which is what decides which way a looming
+/// car turns past a dead end.
+pub(crate) fn esmini_euler_heading(h_road: f64, h_rel: f64) -> f64 {
+    let (s0, c0) = (h_road.sin(), h_road.cos());
+    let (s1, c1) = (h_rel.sin(), h_rel.cos());
+    let m00 = c0 * c1 + -s0 * s1;
+    let m10 = s0 * c1 + c0 * s1;
+    wrap_2pi(m10.atan2(gimbal_guard(m00)))
+}
+
 /// Each entity's bounding box `(cx, cy, cz, length, width, height)`, in the order of the
 /// trace's entities (the argument [`crate::Trace::to_csv`] takes).
 pub fn bounding_boxes(scenario: &Scenario) -> Vec<[f64; 6]> {

@@ -18,6 +18,7 @@ pub(crate) mod view;
 use state::LoomingRt;
 
 use super::analog_vehicle::AnalogVehicle;
+use crate::entities::{esmini_euler_heading, esmini_reported_heading};
 use crate::roads::road_follow::at_dead_end;
 use crate::roads::{move_along_route_drawing, move_along_s};
 use crate::sim::Sim;
@@ -63,13 +64,15 @@ impl LoomingRt {
             osi: Default::default(),
             end_of_road: false,
             placed_at: None,
+            placed_h: None,
         }
     }
 
     /// ControllerLooming::Activate: the vehicle model starts at the entity's speed; the set
     /// speed is the entity's speed unless given in override mode. The controller operates on
     /// the longitudinal domain only.
-    pub(crate) fn activate(&mut self, en: &crate::entities::Entity, longitudinal: bool) {
+    /// `h` is the heading esmini's position holds ([`position_heading`]).
+    pub(crate) fn activate(&mut self, en: &crate::entities::Entity, longitudinal: bool, h: f64) {
         let (speed, max_acc, max_dec) = (en.speed, en.max_acc, en.max_dec);
         if !longitudinal {
             return;
@@ -78,7 +81,8 @@ impl LoomingRt {
         if !self.override_mode || !self.set_speed_given {
             self.set_speed = speed;
         }
-        let car = super::kinematic_vehicle::KinematicVehicle::new(en.x, en.y, en.h, speed, en.bbox[3], VEHICLE_MAX_SPEED);
+        // vehicle_.SetPos(..., object_->pos_.GetH())
+        let car = super::kinematic_vehicle::KinematicVehicle::new(en.x, en.y, h, speed, en.bbox[3], VEHICLE_MAX_SPEED);
         self.vehicle = Some(AnalogVehicle::new(car, max_acc, max_dec, STEERING_RATE));
     }
 
@@ -110,6 +114,16 @@ fn lead_delta(
     Some((d, a.lane_id == b.lane_id, b.offset))
 }
 
+/// Object::pos_.GetH() of entity `en`: its heading as esmini's position holds it, composed
+/// with its road's (Position::EvaluateHPR with an absolute heading, turned from the road's by
+/// GetAngleDifference: `esmini_euler_heading`).
+pub(crate) fn position_heading(net: Option<&opendrive::RoadNetwork>, en: &crate::entities::Entity) -> f64 {
+    match net.zip(en.lane).and_then(|(net, lp)| lp.pose(net)) {
+        Some(p) => esmini_euler_heading(p.road_heading, view::angle_difference(en.h, p.road_heading)),
+        None => esmini_reported_heading(en.h),
+    }
+}
+
 impl<'a> Sim<'a> {
     /// Whether entity `e`'s position is locked on its lane: a looming controller has driven it
     /// (ControllerLooming::Step sets the lock and nothing clears it).
@@ -138,7 +152,7 @@ impl<'a> Sim<'a> {
     /// Position::MoveAlongS with junction selector angle 0: at a junction whose arms turn
     /// alike (the two arms of a T) MoveToConnectingRoad draws from esmini's global generator,
     /// so every probe across such a junction takes its arm by a draw and moves the sequence on.
-    fn looming_probe(&mut self, e: usize, distance: f64) -> Option<(f64, f64, f64)> {
+    fn looming_probe(&mut self, e: usize, distance: f64, h: f64) -> Option<(f64, f64, f64)> {
         let net = self.net?;
         let en = self.entities.get(e)?;
         let mut lp = en.lane?;
@@ -149,11 +163,12 @@ impl<'a> Sim<'a> {
         let en = self.entities.get(e)?;
         let p = lp.pose(net)?;
         let (dx, dy) = (p.x - en.x, p.y - en.y);
-        let (sn, cs) = (-en.h).sin_cos();
+        // Position::CalcProbeInfo turns by GetH().
+        let (sn, cs) = (-h).sin_cos();
         let rx = dx * cs - dy * sn;
         let ry = dx * sn + dy * cs;
         let rel_h = if rx.abs() < SMALL_NUMBER && ry.abs() < SMALL_NUMBER {
-            en.h
+            h
         } else {
             let dot = rx / (rx * rx + ry * ry).sqrt();
             (if ry < 0.0 { -1.0 } else { 1.0 }) * dot.clamp(-1.0, 1.0).acos()
@@ -165,8 +180,13 @@ impl<'a> Sim<'a> {
     pub(super) fn step_looming(&mut self, e: usize, l: &mut LoomingRt, dt: f64) {
         let Some(me) = self.entities.get(e) else { return };
         let current = me.speed;
+        // GetH(): what its last step left, else the heading composed as esmini's position does.
+        let h_me = match l.placed_h {
+            Some((h, composed)) if h == me.h => composed,
+            _ => position_heading(self.net, me),
+        };
         let mut far_dist = FAR_POINT;
-        let near = self.looming_probe(e, NEAR_POINT).map_or(0.0, |p| p.0);
+        let near = self.looming_probe(e, NEAR_POINT, h_me).map_or(0.0, |p| p.0);
         let Some(me) = self.entities.get(e) else { return };
         // The far tangent point on the lane edges.
         let mut far = None;
@@ -212,12 +232,12 @@ impl<'a> Sim<'a> {
                         break;
                     }
                     has_lead_far = true;
-                    far_angle = view::angle_pi((me.y - p.y).atan2(me.x - p.x) - me.h);
+                    far_angle = view::angle_pi((me.y - p.y).atan2(me.x - p.x) - h_me);
                 }
             }
         }
         if far.is_none() && !has_lead_far {
-            far_angle = self.looming_probe(e, far_dist).map_or(0.0, |p| p.0);
+            far_angle = self.looming_probe(e, far_dist, h_me).map_or(0.0, |p| p.0);
         }
         let acc = match lead.and_then(|i| self.entities.get(i)) {
             Some(_) if min_gap < 1.0 => 0.0,
@@ -261,8 +281,12 @@ impl<'a> Sim<'a> {
                     }
                     en.lane = Some(lp);
                 }
-                // Position::SetLockOnLane(true), then SetInertiaPos.
+                // Position::SetLockOnLane(true), then SetInertiaPos, whose EvaluateHPR composes
+                // the heading with the road's (`position_heading`); the vehicle keeps its own.
+                // The entity keeps the vehicle's heading (what reads it applies esmini's guard
+                // where it matters); the controller's own probes take the composed one.
                 en.set_world_lane_locked(net, v.x, v.y, v.h, before);
+                l.placed_h = Some((en.h, position_heading(net, en)));
                 // ScenarioEngine::step reads the position's end-of-road status before it steps
                 // the controllers: what this move finds is seen in the next step.
                 l.placed_at = en.lane.map(|lp| (lp.road, lp.s));

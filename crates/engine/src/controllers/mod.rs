@@ -141,7 +141,7 @@ impl<'a> Sim<'a> {
             Some(Some(ControllerRt::FollowRoute(f))) => f.activate(longitudinal),
             Some(Some(ControllerRt::Looming(l))) => {
                 if let Some(en) = self.entities.get(e) {
-                    l.activate(en, longitudinal);
+                    l.activate(en, longitudinal, looming::position_heading(self.net, en));
                 }
                 if lateral {
                     self.align_to_road_heading(e);

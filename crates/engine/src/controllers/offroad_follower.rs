@@ -20,8 +20,7 @@ use super::analog_vehicle::AnalogVehicle;
 use super::kinematic_vehicle::KinematicVehicle;
 use super::looming::view::angle_difference;
 use crate::actions::lat_distance::entity_frame::angle_of_vector;
-use crate::dynamics::ESMINI_SMALL_NUMBER;
-use crate::entities::wrap_2pi;
+use crate::entities::esmini_reported_heading;
 use crate::sim::Sim;
 use openscenario::Controller;
 
@@ -47,19 +46,6 @@ impl OffroadFollowerRt {
         let car = KinematicVehicle::new(en.x, en.y, esmini_reported_heading(en.h), en.speed, en.bbox[3], en.max_speed);
         self.vehicle = Some(AnalogVehicle::new(car, en.max_acc, en.max_dec, self.steering_rate));
     }
-}
-
-/// The heading esmini reports for an entity facing `h` (Object::pos_.GetH()): Position::
-/// EvaluateHPR composes the road's rotation with the relative one (R0R12EulerAngles), whose
-/// guard against gimbal lock sets a cosine smaller than 1e-6 to ±1e-6, so a heading within a
-/// micro-radian of ±π/2 comes out 1e-6 rad from it. A lead exactly ahead or behind on a road
-/// along ±y lies on the side of π that this offset picks.
-fn esmini_reported_heading(h: f64) -> f64 {
-    let (sin, cos) = h.sin_cos();
-    if cos.abs() >= ESMINI_SMALL_NUMBER {
-        return h;
-    }
-    wrap_2pi(sin.atan2(if cos < 0.0 { -ESMINI_SMALL_NUMBER } else { ESMINI_SMALL_NUMBER }))
 }
 
 impl OffroadFollowerRt {

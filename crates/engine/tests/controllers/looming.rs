@@ -170,3 +170,25 @@ fn past_a_dead_end_the_far_tangent_search_skips_the_lanes_last_osi_point() {
     ];
     crate::common::assert_esmini_poses(&r, &rows, 1e-3, 1e-4);
 }
+
+#[test]
+fn past_a_dead_end_along_y_the_micro_radian_of_esmini_heading_picks_the_turn() {
+    // looming_dead_end_along_y.xosc on tee_lht.xodr: the car drives along road 3 (heading
+    // 4.7123889804, along -y) past its dead end at s = 300. esmini's position reports a heading
+    // within 1e-6 rad of 3π/2 as 3π/2 + 1e-6 (Position::EvaluateHPR, R0R12EulerAngles'
+    // gimbal-lock guard); the vehicle model starts from that heading, the probes turn by it
+    // and every placement passes it again, and which way the car turns once its probes,
+    // stopped at the road's end, fall behind it follows from that micro-radian.
+    // (entity, time, x, y, h) from esmini 3.6.0's trace.
+    let r = crate::common::run_fixture("looming_dead_end_along_y.xosc", "tee_lht.xodr");
+    let rows = [
+        ("Ego", 1.5, 0.969159, -326.149926, 4.437908),
+        ("Ego", 2.0, -3.477967, -332.014564, 3.786154),
+        ("Ego", 3.0, -17.311176, -330.520400, 2.453379),
+        ("Ego", 4.0, -21.854779, -316.815470, 1.501625),
+        ("Ego", 5.0, -17.198514, -302.656783, 1.098326),
+        ("Ego", 6.0, -9.052983, -290.079947, 0.965721),
+        ("Ego", 8.0, 2.081983, -262.425922, 1.347107),
+    ];
+    crate::common::assert_esmini_poses(&r, &rows, 1e-3, 1e-4);
+}

@@ -22,4 +22,7 @@ pub(crate) struct LoomingRt {
     /// The road and s where its last step attached the entity (by XYZ2TrackPos): a position
     /// still there is the controller's own, which esmini holds at a road end's last OSI point.
     pub(super) placed_at: Option<(usize, f64)>,
+    /// The heading its last step gave the entity, and that heading as esmini's position holds
+    /// it (composed with the road's: `position_heading`).
+    pub(super) placed_h: Option<(f64, f64)>,
 }
