@@ -14,6 +14,7 @@
 //!   west on road 3, lane −1, 3 m left of Car2: y = −4.75 (lane 2, offset −0.5).
 
 use crate::common::*;
+use std::f64::consts::PI;
 
 #[test]
 fn the_road_path_follows_the_reference_lane_as_esmini() {
@@ -22,12 +23,12 @@ fn the_road_path_follows_the_reference_lane_as_esmini() {
     assert!(w.is_empty(), "{w:?}");
     // (entity, time, x, y, heading) rows of esmini's log: the jump's row faces along the jump.
     let rows = [
-        ("Car1", 0.51, -125.1, -1.75, 3.141593),
+        ("Car1", 0.51, -125.1, -1.75, PI),
         ("Car1", 0.52, -125.2, 1.25, 1.604117),
-        ("Car1", 2.0, -140.0, 1.25, 3.141593),
-        ("Car3", 0.51, -174.08, 1.75, 3.141593),
+        ("Car1", 2.0, -140.0, 1.25, PI),
+        ("Car3", 0.51, -174.08, 1.75, PI),
         ("Car3", 0.52, -174.16, -4.75, 4.700082),
-        ("Car3", 2.0, -186.0, -4.75, 3.141593),
+        ("Car3", 2.0, -186.0, -4.75, PI),
     ];
     assert_esmini_poses(&run, &rows, 2e-6, 1e-5);
 }
