@@ -141,7 +141,7 @@ impl<'a> Sim<'a> {
         let (ref_t, same_direction) = if a.road == b.road {
             (tb, ref_forward == actor_forward)
         } else {
-            let path = path_ends(net, b.road, b.s, a.road)?;
+            let path = path_ends(net, b.road, b.s, b.lane_id, a.road)?;
             // Position::Delta: lanes of A mapped along the path to B's road.
             let ref_t = if path.lanes_flip { -tb } else { tb };
             let a_forward = path.last_exit == ContactPoint::Start;

@@ -1,10 +1,11 @@
 //! The shape of the road path between two road positions as esmini's `Position::Delta` uses
 //! it for a lateral distance (RoadPath::Calculate): a shortest chain of linked roads searched
-//! from the first position in both directions, of which only the ends matter — which end of
-//! the first road it leaves by, which end of the last road before the second position's road
-//! it leaves by, and whether a lane id keeps its sign along the chain.
+//! from the first position in both directions, following its lane (RoadPath::CheckRoad drops
+//! a road its lane does not continue into, Road::GetConnectingLaneId), of which only the ends
+//! matter — which end of the first road it leaves by, which end of the last road before the
+//! second position's road it leaves by, and whether a lane id keeps its sign along the chain.
 
-use opendrive::{ContactPoint, ElementType, JunctionType, RoadEnd, RoadNetwork};
+use opendrive::{section_at_end, ContactPoint, ElementType, JunctionType, LaneRef, RoadEnd, RoadNetwork};
 
 /// Most road ends the search settles (hostile input: bounded work per call).
 const MAX_SETTLED: usize = 512;
@@ -21,29 +22,38 @@ pub(crate) struct PathEnds {
     pub lanes_flip: bool,
 }
 
-/// One reached road end: distance so far, road, the end it was entered by, and the path's
-/// first exit, last exit and lane flip up to it.
-type Reached = (f64, usize, ContactPoint, ContactPoint, ContactPoint, bool);
+/// One reached road end: distance so far, road, the end it was entered by, the lane entered
+/// by, and the path's first exit, last exit and lane flip up to it.
+type Reached = (f64, usize, ContactPoint, i32, ContactPoint, ContactPoint, bool);
 
-/// The path from (road `a`, s `sa`) to road `b` ≠ `a`; `None` when no chain of linked roads
-/// joins them. As esmini's Dijkstra the nearest road end is expanded first, the start of
-/// road `a` before its end on a tie.
-pub(crate) fn path_ends(net: &RoadNetwork, a: usize, sa: f64, b: usize) -> Option<PathEnds> {
+/// The path from (road `a`, s `sa`, lane `lane_a`) to road `b` ≠ `a`; `None` when no chain of
+/// linked roads joins them. As esmini's Dijkstra the nearest road end is expanded first, the
+/// start of road `a` before its end on a tie.
+pub(crate) fn path_ends(net: &RoadNetwork, a: usize, sa: f64, lane_a: i32, b: usize) -> Option<PathEnds> {
     if a == b {
         return None;
     }
     let ra = net.roads.get(a)?;
     let mut frontier: Vec<Reached> = Vec::new();
     let mut settled: Vec<(usize, ContactPoint)> = Vec::new();
-    let push = |frontier: &mut Vec<Reached>, road: usize, exit: ContactPoint, d: f64, first: Option<ContactPoint>, flip: bool| {
+    let section_a = ra.section_index_at(sa);
+    let push = |frontier: &mut Vec<Reached>, road: usize, section: usize, lane: i32, exit: ContactPoint, d: f64, first: Option<ContactPoint>, flip: bool| {
+        // The lane at the end left by (Road::GetConnectedLaneIdAtS across the lane sections).
+        // Where it stops, lane 0: no step but to the target road.
+        let lane = lane_to_end(net, LaneRef { road, section, lane }, exit).unwrap_or(0);
+        let beyond = net.lanes_across(LaneRef { road, section: net.roads.get(road).map_or(0, |r| section_at_end(r, exit)), lane }, exit);
         for e in next_roads(net, road, exit) {
+            // RoadPath::CheckRoad: a road the lane does not continue into is no step, unless
+            // it is the target (reached before its lane is looked at).
+            let next_lane = beyond.iter().find(|l| l.road == e.road).map(|l| l.lane);
+            let Some(next_lane) = next_lane.or((e.road == b).then_some(0)) else { continue };
             // Entering by the same kind of end as left by turns the lane numbering around.
             let f = flip ^ (e.contact == exit);
-            frontier.push((d, e.road, e.contact, first.unwrap_or(exit), exit, f));
+            frontier.push((d, e.road, e.contact, next_lane, first.unwrap_or(exit), exit, f));
         }
     };
-    push(&mut frontier, a, ContactPoint::Start, sa.clamp(0.0, ra.length), None, false);
-    push(&mut frontier, a, ContactPoint::End, (ra.length - sa).max(0.0), None, false);
+    push(&mut frontier, a, section_a, lane_a, ContactPoint::Start, sa.clamp(0.0, ra.length), None, false);
+    push(&mut frontier, a, section_a, lane_a, ContactPoint::End, (ra.length - sa).max(0.0), None, false);
     while settled.len() < MAX_SETTLED {
         // The first of the nearest, as esmini's strict minimum over its list in order.
         let mut k = None;
@@ -52,7 +62,7 @@ pub(crate) fn path_ends(net: &RoadNetwork, a: usize, sa: f64, b: usize) -> Optio
                 k = Some(i);
             }
         }
-        let (d, road, entry, first, last, flip) = frontier.remove(k?);
+        let (d, road, entry, lane, first, last, flip) = frontier.remove(k?);
         if settled.contains(&(road, entry)) {
             continue;
         }
@@ -61,9 +71,19 @@ pub(crate) fn path_ends(net: &RoadNetwork, a: usize, sa: f64, b: usize) -> Optio
             return Some(PathEnds { first_exit: first, last_exit: last, lanes_flip: flip });
         }
         let Some(r) = net.roads.get(road) else { continue };
-        push(&mut frontier, road, entry.opposite(), d + r.length, Some(first), flip);
+        push(&mut frontier, road, section_at_end(r, entry), lane, entry.opposite(), d + r.length, Some(first), flip);
     }
     None
+}
+
+/// The lane `lane` continues into at the `end` of its road, section by section (the first
+/// link of each, as esmini's Road::GetConnectedLaneIdAtS); `None` where it stops.
+fn lane_to_end(net: &RoadNetwork, mut lane: LaneRef, end: ContactPoint) -> Option<i32> {
+    let last = section_at_end(net.roads.get(lane.road)?, end);
+    while lane.section != last {
+        lane = *net.lanes_across(lane, end).first()?;
+    }
+    Some(lane.lane)
 }
 
 /// The roads the search steps to from `road`'s end `exit`. Into a junction esmini's
@@ -73,7 +93,8 @@ pub(crate) fn path_ends(net: &RoadNetwork, a: usize, sa: f64, b: usize) -> Optio
 /// this road. A direct junction's connections also count the other way round, after all of
 /// them (OpenDrive::CheckConnectedRoad adds a counter connection per connection whose linked
 /// road links back to the junction: incoming road and linked road swapped, entered at the end
-/// of the original incoming road that touches the junction, its successor end first).
+/// of the original incoming road that touches the junction, its successor end first); a
+/// default junction's connecting roads that end at this road count too, after them.
 pub(crate) fn next_roads(net: &RoadNetwork, road: usize, exit: ContactPoint) -> Vec<RoadEnd> {
     let Some(r) = net.roads.get(road) else { return Vec::new() };
     match r.link_at(exit) {
@@ -102,6 +123,21 @@ pub(crate) fn next_roads(net: &RoadNetwork, road: usize, exit: ContactPoint) -> 
                     let end = RoadEnd { road: inc, contact };
                     if !next.contains(&end) {
                         next.push(end);
+                    }
+                }
+            } else {
+                // OpenDrive::CheckJunctionConnection: a connecting road that leads from another
+                // incoming road to this one is also a connection from this one (a counter
+                // connection, entered at the end that touches this road), after the others.
+                for c in j.connections.iter().filter(|c| c.incoming_road.as_deref() != Some(r.id.as_str())) {
+                    let Some(ci) = c.connecting_road.as_deref().and_then(|id| net.road_index(id)) else { continue };
+                    let Some(cr) = net.roads.get(ci) else { continue };
+                    for contact in [ContactPoint::Start, ContactPoint::End] {
+                        let back = cr.link_at(contact).is_some_and(|l| l.element_type == ElementType::Road && l.element_id == r.id);
+                        let end = RoadEnd { road: ci, contact };
+                        if back && !next.contains(&end) {
+                            next.push(end);
+                        }
                     }
                 }
             }

@@ -4,6 +4,7 @@ mod across_junction;
 mod across_roads;
 mod domain;
 mod entity_frame;
+mod lane_path;
 mod rigid_heading;
 mod road_coordinates;
 mod road_ends;
