@@ -480,6 +480,18 @@ fn cut_once(net: &LaneletNetwork) -> Option<Cut> {
             }
         }
     }
+    let network = rebuilt(net, lanelets, last, first);
+    Some(Cut { network, origin, warnings })
+}
+
+/// `net` with new `lanelets`; its intersections name a cut lanelet's piece at the end that
+/// stands there (`last` for incoming lanelets, `first` for their successors).
+pub(crate) fn rebuilt(
+    net: &LaneletNetwork,
+    lanelets: Vec<Lanelet>,
+    last: impl Fn(LaneletId) -> LaneletId,
+    first: impl Fn(LaneletId) -> LaneletId,
+) -> LaneletNetwork {
     let mut network = LaneletNetwork {
         lanelets,
         traffic_signs: net.traffic_signs.clone(),
@@ -494,7 +506,7 @@ fn cut_once(net: &LaneletNetwork) -> Option<Cut> {
             }
         }
     }
-    Some(Cut { network, origin, warnings })
+    network
 }
 
 /// The point `d` m along `line`.

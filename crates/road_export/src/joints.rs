@@ -352,18 +352,6 @@ pub(crate) fn slice(net: &LaneletNetwork) -> Option<Cut> {
         }
         lanelets.push(l);
     }
-    let mut network = LaneletNetwork {
-        lanelets,
-        traffic_signs: net.traffic_signs.clone(),
-        traffic_lights: net.traffic_lights.clone(),
-        intersections: net.intersections.clone(),
-    };
-    for inter in &mut network.intersections {
-        for inc in &mut inter.incomings {
-            for list in [&mut inc.incoming_lanelets, &mut inc.successors_right, &mut inc.successors_straight, &mut inc.successors_left] {
-                *list = list.iter().map(|&x| first(x)).collect();
-            }
-        }
-    }
+    let network = crate::cuts::rebuilt(net, lanelets, first, first);
     Some(Cut { network, origin, warnings: Vec::new() })
 }

@@ -120,6 +120,13 @@ pub(crate) struct LaneSpec {
     pub taper_out: Option<f64>,
 }
 
+impl LaneSpec {
+    /// A lane of width `w` over the whole road.
+    pub(crate) fn plain(w: f64, reversed: bool) -> Self {
+        Self { w0: w, w1: w, reversed, first: 0, last: 0, taper_in: None, taper_out: None }
+    }
+}
+
 /// How points are placed along a road.
 #[derive(Clone, Copy)]
 pub(crate) struct Style {
@@ -145,6 +152,13 @@ pub(crate) struct RoadSpec {
     pub start_points: Option<Vec<P>>,
     pub end_points: Option<Vec<P>>,
     pub kind: LaneletType,
+}
+
+impl RoadSpec {
+    /// A road of one piece `len` m along the path, its cross-sections square to it.
+    pub(crate) fn whole(path: Path, len: f64, lanes: Vec<LaneSpec>, style: Style, kind: LaneletType) -> Self {
+        Self { path, lanes, cuts: vec![0.0, len], slant: vec![], style, start_points: None, end_points: None, kind }
+    }
 }
 
 /// A built road: lanelet ids per lane and piece, and its border points at the cuts.

@@ -174,21 +174,8 @@ fn split(rng: &mut Rng, net: &mut Net, st: Style, fork: bool) -> String {
     let len_b = rng.range(30.0, 100.0);
     let k_b = if fork { rng.range(0.0, 1.0 / 200.0) } else { rng.range(-1.0 / 300.0, 1.0 / 300.0) };
     let path_b = Path::new((ex, ey, a.heading_end), &[(len_b, 0.0, k_b)]);
-    let lanes_b: Vec<LaneSpec> =
-        widths[keep..].iter().map(|&w| LaneSpec { w0: w, w1: w, reversed: false, first: 0, last: 0, taper_in: None, taper_out: None }).collect();
-    let b = net.road(
-        rng,
-        &RoadSpec {
-            path: path_b,
-            lanes: lanes_b,
-            cuts: vec![0.0, len_b],
-            slant: vec![],
-            style: st,
-            start_points: Some(a.end[keep..].to_vec()),
-            end_points: None,
-            kind: LaneletType::Highway,
-        },
-    );
+    let lanes_b: Vec<LaneSpec> = widths[keep..].iter().map(|&w| LaneSpec::plain(w, false)).collect();
+    let b = net.road(rng, &RoadSpec { start_points: Some(a.end[keep..].to_vec()), ..RoadSpec::whole(path_b, len_b, lanes_b, st, LaneletType::Highway) });
     for i in keep..fwd {
         if let (Some(x), Some(y)) = (a.at(i, true), b.at(i - keep, false)) {
             net.link(x, y);
@@ -200,7 +187,7 @@ fn split(rng: &mut Rng, net: &mut Net, st: Style, fork: bool) -> String {
     let radius = rng.range(40.0, 150.0);
     let straight = if fork { 0.0 } else { rng.range(0.0, 20.0) };
     let turn = rng.range(0.3, 1.2) * radius;
-    let lane_r = LaneSpec { w0: w, w1: w, reversed: false, first: 0, last: 0, taper_in: None, taper_out: None };
+    let lane_r = LaneSpec::plain(w, false);
     // the branch's reference line is its left edge (its lane lies on the right)
     let path_r =
         Path::new((mx, my, a.heading_end), &[(straight + 0.1, 0.0, 0.0), (turn * 0.4, 0.0, -1.0 / radius), (turn * 0.6, -1.0 / radius, -1.0 / radius)]);
@@ -346,23 +333,8 @@ fn roundabout(rng: &mut Rng, net: &mut Net, st: Style) -> String {
         let r_end = radius + gap;
         let start = (th.cos() * (r_end + len), th.sin() * (r_end + len), th + PI);
         let arm_path = Path::new(start, &[(len, 0.0, 0.0)]);
-        let ls = vec![
-            LaneSpec { w0: w, w1: w, reversed: false, first: 0, last: 0, taper_in: None, taper_out: None },
-            LaneSpec { w0: w, w1: w, reversed: true, first: 0, last: 0, taper_in: None, taper_out: None },
-        ];
-        let arm = net.road(
-            rng,
-            &RoadSpec {
-                path: arm_path,
-                lanes: ls,
-                cuts: vec![0.0, len],
-                slant: vec![],
-                style: st,
-                start_points: None,
-                end_points: None,
-                kind: LaneletType::Urban,
-            },
-        );
+        let ls = vec![LaneSpec::plain(w, false), LaneSpec::plain(w, true)];
+        let arm = net.road(rng, &RoadSpec::whole(arm_path, len, ls, st, LaneletType::Urban));
         let (Some(k_exit), Some(k_entry)) = (piece_at(th - delta), piece_at(th + delta)) else { continue };
         // the outer ring lane is lane 0
         let into = ring.ids[0][k_entry % pieces];

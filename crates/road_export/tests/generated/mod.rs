@@ -142,6 +142,13 @@ fn generated_networks_at_scale() {
     print(&table);
 }
 
+/// A lanelet's point count and the ends of its bounds, as text.
+fn ends(l: &commonroad::Lanelet) -> String {
+    let (a, b) = (l.bounds.left(), l.bounds.right());
+    let p = |q: Option<&commonroad::Point>| q.map_or(String::new(), |q| format!("({:.2},{:.2})", q.x, q.y));
+    format!("points {} left {}->{} right {}->{}", a.len(), p(a.first()), p(a.last()), p(b.first()), p(b.last()))
+}
+
 /// One network in detail: `GENERATED_ONE=<seed>:<index>` (and `GENERATED_DUMP=<dir>` for its
 /// CommonRoad XML and OpenDRIVE files).
 #[test]
@@ -166,19 +173,10 @@ fn generated_network_in_detail() {
         eprintln!("lanelet {} matched {:?}", r.id, r.matched);
     }
     for l in &g.network.lanelets {
-        let (a, b) = (l.bounds.left(), l.bounds.right());
         eprintln!(
-            "lanelet {} points {} left ({:.2},{:.2})->({:.2},{:.2}) right ({:.2},{:.2})->({:.2},{:.2}) succ {:?} pred {:?} adj {:?} {:?}",
+            "lanelet {} {} succ {:?} pred {:?} adj {:?} {:?}",
             l.id,
-            a.len(),
-            a[0].x,
-            a[0].y,
-            a[a.len() - 1].x,
-            a[a.len() - 1].y,
-            b[0].x,
-            b[0].y,
-            b[b.len() - 1].x,
-            b[b.len() - 1].y,
+            ends(l),
             l.successors.iter().map(|x| x.get()).collect::<Vec<_>>(),
             l.predecessors.iter().map(|x| x.get()).collect::<Vec<_>>(),
             l.adjacent_left.map(|x| (x.lanelet.get(), x.driving_dir)),
@@ -186,20 +184,7 @@ fn generated_network_in_detail() {
         );
     }
     for l in &back.lanelets {
-        let (a, b) = (l.bounds.left(), l.bounds.right());
-        eprintln!(
-            "back {} points {} left ({:.2},{:.2})->({:.2},{:.2}) right ({:.2},{:.2})->({:.2},{:.2})",
-            l.id,
-            a.len(),
-            a[0].x,
-            a[0].y,
-            a[a.len() - 1].x,
-            a[a.len() - 1].y,
-            b[0].x,
-            b[0].y,
-            b[b.len() - 1].x,
-            b[b.len() - 1].y
-        );
+        eprintln!("back {} {}", l.id, ends(l));
     }
     if let Some(dir) = std::env::var_os("GENERATED_DUMP") {
         let dir = std::path::PathBuf::from(dir);
