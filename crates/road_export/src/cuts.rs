@@ -51,6 +51,19 @@ pub(crate) struct Cut {
 }
 
 impl Cut {
+    /// This cut followed by `next` (made on this one's network): pieces of pieces name the
+    /// lanelet of the original network they come from.
+    pub(crate) fn then(self, next: Cut) -> Cut {
+        let mut origin = self.origin;
+        for (piece, from) in next.origin {
+            let root = origin.get(&from).copied().unwrap_or(from);
+            origin.insert(piece, root);
+        }
+        let mut warnings = self.warnings;
+        warnings.extend(next.warnings);
+        Cut { network: next.network, origin, warnings }
+    }
+
     /// Warnings about pieces name the lanelet they were cut from (each said once).
     pub(crate) fn rename(&self, warnings: Vec<Warning>) -> Vec<Warning> {
         let mut out: Vec<Warning> = Vec::with_capacity(warnings.len());
@@ -307,16 +320,7 @@ pub(crate) fn cut(net: &LaneletNetwork) -> Option<Cut> {
         let Some(next) = cut_once(done.as_ref().map_or(net, |c| &c.network)) else { break };
         done = Some(match done {
             None => next,
-            Some(prev) => {
-                let mut origin = prev.origin;
-                for (piece, from) in next.origin {
-                    let root = origin.get(&from).copied().unwrap_or(from);
-                    origin.insert(piece, root);
-                }
-                let mut warnings = prev.warnings;
-                warnings.extend(next.warnings);
-                Cut { network: next.network, origin, warnings }
-            }
+            Some(prev) => prev.then(next),
         });
     }
     done
@@ -476,6 +480,18 @@ fn cut_once(net: &LaneletNetwork) -> Option<Cut> {
             }
         }
     }
+    let network = rebuilt(net, lanelets, last, first);
+    Some(Cut { network, origin, warnings })
+}
+
+/// `net` with new `lanelets`; its intersections name a cut lanelet's piece at the end that
+/// stands there (`last` for incoming lanelets, `first` for their successors).
+pub(crate) fn rebuilt(
+    net: &LaneletNetwork,
+    lanelets: Vec<Lanelet>,
+    last: impl Fn(LaneletId) -> LaneletId,
+    first: impl Fn(LaneletId) -> LaneletId,
+) -> LaneletNetwork {
     let mut network = LaneletNetwork {
         lanelets,
         traffic_signs: net.traffic_signs.clone(),
@@ -490,7 +506,7 @@ fn cut_once(net: &LaneletNetwork) -> Option<Cut> {
             }
         }
     }
-    Some(Cut { network, origin, warnings })
+    network
 }
 
 /// The point `d` m along `line`.

@@ -37,6 +37,7 @@
 
 mod cuts;
 mod groups;
+mod joints;
 mod lane_kind;
 mod lanelets;
 mod marks;
@@ -97,7 +98,15 @@ pub fn export(network: &LaneletNetwork, options: &Options) -> Result<RoadExport,
         return Err(Error::TooLarge { what: "the number of points of a bound", got: most, max: MAX_BOUND_POINTS });
     }
     let tol = options.tolerance.filter(|t| t.is_finite() && *t > 0.0).unwrap_or(DEFAULT_TOLERANCE).max(1e-4);
-    let cut = cuts::cut(network);
+    // zig-zag joints are sliced first: the cuts then follow the slices into neighbours
+    let sliced = joints::slice(network);
+    let cut = match sliced {
+        None => cuts::cut(network),
+        Some(s) => match cuts::cut(&s.network) {
+            Some(c) => Some(s.then(c)),
+            None => Some(s),
+        },
+    };
     let network = cut.as_ref().map_or(network, |c| &c.network);
     let mut warnings = cut.as_ref().map(|c| c.warnings.clone()).unwrap_or_default();
     let prep = lanelets::prepare_all(network, &mut warnings);

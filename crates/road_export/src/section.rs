@@ -210,8 +210,20 @@ pub(crate) fn build(
     // a line that follows the middle closely can bend tighter than the road is wide (its
     // normals would cross inside the road): then it is allowed to cut the bend more
     let mut best: Option<(SectionGeom, f64)> = None;
-    for ref_tol in REFERENCE_TOLS {
-        let knots = knots_along(&middle, start_knot, end_knot, ref_tol, middle.len() + 2);
+    // between parallel cuts, a straight line square to both is a last resort: the lanes may
+    // cross it obliquely (a thin slice of a zig-zag joint, see `joints`), the lane offsets
+    // then carry the sideways drift instead of a reference line bent back and forth
+    let straight = (heading_diff(h0, h1) < 1e-6).then(|| {
+        let along = end_knot.p.sub(start_knot.p).dot(t0);
+        vec![start_knot, Knot { p: start_knot.p.add(t0.scale(along)), hdg: h1 }]
+    });
+    let candidates = REFERENCE_TOLS.iter().map(Some).chain(straight.iter().map(|_| None));
+    for ref_tol in candidates {
+        let knots = match (ref_tol, &straight) {
+            (Some(&tol), _) => knots_along(&middle, start_knot, end_knot, tol, middle.len() + 2),
+            (None, Some(k)) => k.clone(),
+            (None, None) => continue,
+        };
         let line = RefLine::through(&knots);
         if line.length.is_nan() || line.length <= 0.0 {
             continue;

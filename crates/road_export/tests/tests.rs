@@ -3,6 +3,7 @@
 mod common;
 
 mod esmini_load;
+mod generated;
 mod hostile;
 mod lane_sections;
 mod layout;
