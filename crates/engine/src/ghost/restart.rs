@@ -63,7 +63,9 @@ impl<'a> Sim<'a> {
         let restart = self.time > ESMINI_SMALL_NUMBER;
         if let Some(en) = self.entities.get_mut(ghost) {
             if restart {
-                // Position::Duplicate of the entity's position, and its speed.
+                // Position::Duplicate of the entity's position (its status too: the ghost is at
+                // a road's end only if the entity is, unlike a TeleportTo), and its speed.
+                en.at_road_end = src.at_road_end;
                 en.x = src.x;
                 en.y = src.y;
                 en.z = src.z;

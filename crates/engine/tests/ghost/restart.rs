@@ -207,3 +207,31 @@ fn a_restart_counts_the_ghosts_jump_back_as_travel() {
     let ghost = at(&run, "Ego_ghost", 4.5);
     assert!(near_xy(ghost, 119.6, -1.25) && close(ghost.speed, 20.0, 1e-9), "{:?} {}", xy(ghost), ghost.speed);
 }
+
+/// Ego at s = 985 (10 m/s, head start 2 s) on the 1,000 m road: its ghost is stuck at the
+/// road's end from −0.5 s. `Drift` starts when the Ego is within 12 m of the end (0.3 s) and
+/// restarts the ghost there.
+fn restart_at_road_end() -> String {
+    // One Private per entity: esmini 3.6.0 fails to start a scenario with the Ego's in three.
+    let ego = placed_in_one_private("Ego", 985.0, -1, 10.0)
+        .replace("</Private>", r#"<PrivateAction><ActivateControllerAction longitudinal="true" lateral="true"/></PrivateAction></Private>"#);
+    let init = format!("{ego}{}", teleport("Target", 300.0, -1));
+    let end = r#"<Condition name="end" delay="0" conditionEdge="none"><ByEntityCondition><TriggeringEntities triggeringEntitiesRule="any"><EntityRef entityRef="Ego"/></TriggeringEntities><EntityCondition><DistanceCondition value="12" freespace="false" rule="lessThan" relativeDistanceType="longitudinal" coordinateSystem="road"><Position><LanePosition roadId="1" laneId="-1" s="1000" offset="0"/></Position></DistanceCondition></EntityCondition></ByEntityCondition></Condition>"#;
+    let offset = r#"<PrivateAction><LateralAction><LaneOffsetAction continuous="false"><LaneOffsetActionDynamics maxLateralAcc="2" dynamicsShape="cubic"/><LaneOffsetTarget><AbsoluteTargetLaneOffset value="0.5"/></LaneOffsetTarget></LaneOffsetAction></LateralAction></PrivateAction>"#;
+    let stories = story("Ego", &event("Drift", "overwrite", offset, &format!("<StartTrigger>{}</StartTrigger>", group(end))));
+    with_follow_ghost(&xosc(&init, &stories, &stop_at(2.0)), 2.0)
+}
+
+#[test]
+fn a_restarted_ghost_takes_its_entity_s_road_status_and_drives_on_from_a_dead_end() {
+    // TeleportAction::Start restarts a ghost by Position::Duplicate of its entity's position,
+    // status included: the ghost, stuck at the road's end, is not at an end any more and drives
+    // on from the Ego's place (988.2 m at −1.7 s). A TeleportTo would keep the ghost's status.
+    // esmini 3.6.0 on this scenario: the replayed ghost at (992.9, −1.579799) at −1.2 s and
+    // (998.9, −1.2693) at −0.6 s, back at the end (1000, −1.25) from 0 s on.
+    let run = run(&restart_at_road_end());
+    assert_eq!(run.trace.replays.len(), 1);
+    assert!(near_xy(replayed(&run, "Ego_ghost", -1.2), 992.9, -1.579799), "{:?}", xy(replayed(&run, "Ego_ghost", -1.2)));
+    assert!(near_xy(replayed(&run, "Ego_ghost", -0.6), 998.9, -1.2693), "{:?}", xy(replayed(&run, "Ego_ghost", -0.6)));
+    assert!(near_xy(at(&run, "Ego_ghost", 1.0), 1000.0, -1.25), "{:?}", xy(at(&run, "Ego_ghost", 1.0)));
+}
