@@ -17,12 +17,9 @@ use state::AccRt;
 
 use super::forward_delta::forward_delta;
 use crate::conditions::distance::between;
-use crate::roads::lane_geometry::lane_center_t;
-use crate::roads::road_distance::road_distance_within;
 use crate::roads::road_follow::at_unlinked_road_end;
-use crate::roads::{move_along_route_drawing, move_along_s, LanePos, MoveStatus};
+use crate::roads::{move_along_route_drawing, MoveStatus};
 use crate::sim::Sim;
-use opendrive::RoadNetwork;
 use openscenario::{Controller, CoordinateSystem, RelativeDistanceType};
 
 const LARGE: f64 = 1e10;
@@ -64,66 +61,6 @@ impl AccRt {
             self.set_speed = speed;
         }
     }
-}
-
-/// esmini's `Position::Delta` from `a` forward to `b` (within `max`): the signed distance along
-/// the lanes, whether `b` is in the lane `a`'s lane leads to (dLaneId 0) and dt, `b`'s t less
-/// `a`'s (each on its own road; on roads run against each other, their sum).
-pub(super) fn lane_delta(net: &RoadNetwork, a: LanePos, b: LanePos, max: f64) -> Option<(f64, bool, f64)> {
-    let t = |p: &LanePos| net.roads.get(p.road).and_then(|r| lane_center_t(r, p.lane_id, p.s)).map(|c| c + p.offset);
-    if a.road == b.road {
-        // esmini's Position::Delta: found only within `maxDist`, on the same road too
-        let ds = (b.s - a.s) * a.dir;
-        if ds.abs() >= max {
-            return None;
-        }
-        return Some((ds, a.lane_id == b.lane_id, (t(&b)? - t(&a)?) * a.dir));
-    }
-    let d = road_distance_within(net, a.road, a.s, b.road, b.s, max)?;
-    if d > max {
-        return None;
-    }
-    let mut p = a;
-    move_along_s(net, &mut p, d);
-    if p.road != b.road {
-        return None;
-    }
-    let lane_a = delta_lane_on_b(net, a, &p, b.s, d);
-    // esmini's SIGN counts 0 as positive; across the centre lane the difference is one less.
-    let side = |id: i32| if id < 0 { -1 } else { 1 };
-    let mut dlane = b.lane_id - lane_a;
-    if side(b.lane_id) != side(lane_a) {
-        dlane = (dlane.abs() - 1) * side(dlane);
-    }
-    // Position::Delta's dt compares the two roads' own t (summed where the lane ids differ in
-    // sign), not t measured in one road's frame.
-    let dt = if side(lane_a) == side(a.lane_id) { t(&b)? - t(&a)? } else { t(&b)? + t(&a)? };
-    Some((d, dlane == 0, dt))
-}
-
-/// The lane id esmini's `Position::Delta` gives entity `a` on the road of `b` (reached as `p`,
-/// `d` metres along): from the last road `r` before `b`'s road on the path, the lane `a`'s
-/// lane has at `r`'s far end, and the end `r` is left by, esmini takes the path to enter `b`'s
-/// road at its start when `r` is left at its start, else at its end, and walks the lane
-/// through `r`'s lane sections to that end again (`Road::GetConnectedLaneIdAtS`), across the
-/// link (`Road::GetConnectingLaneId`) and through `b`'s road's sections from that end to
-/// `b`'s s. On roads of one lane section each this is the lane the link leads to.
-fn delta_lane_on_b(net: &RoadNetwork, a: LanePos, p: &LanePos, b_s: f64, d: f64) -> i32 {
-    use super::lane_router::{connected_lane_at_s, connecting_lane_id};
-    use opendrive::ContactPoint;
-    let Some(rb) = net.roads.get(p.road) else { return 0 };
-    let along_b = if p.dir > 0.0 { p.s } else { rb.length - p.s };
-    // Back off a hair from where the path enters `b`'s road: on the last road before it.
-    let mut q = a;
-    move_along_s(net, &mut q, (d - along_b - 1e-6).max(0.0));
-    let Some(r) = net.roads.get(q.road) else { return 0 };
-    if q.road == p.road {
-        return p.lane_id;
-    }
-    let (exit, from_s, to_s, b_start) = if q.dir > 0.0 { (ContactPoint::End, 0.0, r.length, rb.length) } else { (ContactPoint::Start, r.length, 0.0, 0.0) };
-    let lane = connected_lane_at_s(net, q.road, q.lane_id, from_s, to_s);
-    let lane = connecting_lane_id(net, (q.road, exit), lane, p.road);
-    connected_lane_at_s(net, p.road, lane, b_start, b_s)
 }
 
 impl<'a> Sim<'a> {

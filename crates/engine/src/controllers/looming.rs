@@ -92,28 +92,6 @@ impl LoomingRt {
     }
 }
 
-/// Position::Delta from `a` to `b` within the look-ahead: distance along the roads, whether
-/// `b` is in the lane `a`'s lane leads to, and its lateral offset from there. esmini finds the
-/// path to `b`'s road whichever junction branch it is on: when the junction rule of
-/// `move_along_s` takes another branch, `b` (ahead of `a`) counts in the same lane if it has the
-/// same lane id, offset by its own offset from its lane centre.
-fn lead_delta(
-    net: &opendrive::RoadNetwork,
-    a: crate::roads::LanePos,
-    b: crate::roads::LanePos,
-    (ax, ay, ah): (f64, f64, f64),
-    (bx, by): (f64, f64),
-) -> Option<(f64, bool, f64)> {
-    if let Some(d) = super::acc::lane_delta(net, a, b, LOOKAHEAD) {
-        return Some(d);
-    }
-    if a.road == b.road || (bx - ax) * ah.cos() + (by - ay) * ah.sin() <= 0.0 {
-        return None;
-    }
-    let d = crate::roads::road_distance::road_distance_within(net, a.road, a.s, b.road, b.s, LOOKAHEAD)?;
-    Some((d, a.lane_id == b.lane_id, b.offset))
-}
-
 /// Object::pos_.GetH() of entity `en`: its heading as esmini's position holds it, composed
 /// with its road's (Position::EvaluateHPR with an absolute heading, turned from the road's by
 /// GetAngleDifference: `esmini_euler_heading`).
@@ -211,8 +189,10 @@ impl<'a> Sim<'a> {
                 continue;
             }
             let (Some(net), Some(la), Some(lb)) = (self.net, me.lane, p.lane) else { continue };
-            // Position::Delta, reference point to reference point, then the bounding boxes.
-            let Some((ds, same_lane, dt_lat)) = lead_delta(net, la, lb, (me.x, me.y, me.h), (p.x, p.y)) else { continue };
+            // ControllerLooming::Step: Position::Delta forward only, as the ACC's (reference
+            // point to reference point), then the bounding boxes.
+            let Some(d) = super::forward_delta::forward_delta(net, &la, me.h, &lb, LOOKAHEAD) else { continue };
+            let (ds, same_lane, dt_lat) = (d.ds, d.d_lane == 0, d.dt);
             if ds.abs() > LOOKAHEAD {
                 continue;
             }
