@@ -9,6 +9,7 @@
 
 use super::lane_router::connected_lane_at_s;
 use super::lane_router::connecting_lane_id;
+use super::looming::view::angle_difference;
 use super::natural_driver::view::LARGE_NUMBER;
 use crate::roads::junction_connections;
 use crate::roads::lane_geometry::lane_center_t;
@@ -64,14 +65,7 @@ pub(crate) fn forward_delta(net: &RoadNetwork, a: &LanePos, a_h: f64, b: &LanePo
         // [-pi, pi], so only one turned to the left of it).
         let road_h = a.pose(net)?.road_heading;
         let drive_h = opendrive::driving_direction::driving_heading(ra.rule, a.lane_id, road_h);
-        let rel = (a_h - drive_h) % std::f64::consts::TAU;
-        let rel = if rel < -std::f64::consts::PI {
-            rel + std::f64::consts::TAU
-        } else if rel > std::f64::consts::PI {
-            rel - std::f64::consts::TAU
-        } else {
-            rel
-        };
+        let rel = angle_difference(a_h, drive_h);
         (if rel > std::f64::consts::FRAC_PI_2 { -d } else { d }, Some(last))
     };
     if ds.abs() >= max {
