@@ -94,51 +94,40 @@ fn lane_to_end(net: &RoadNetwork, mut lane: LaneRef, end: ContactPoint) -> Optio
 /// them (OpenDrive::CheckConnectedRoad adds a counter connection per connection whose linked
 /// road links back to the junction: incoming road and linked road swapped, entered at the end
 /// of the original incoming road that touches the junction, its successor end first); a
-/// default junction's connecting roads that end at this road count too, after them.
+/// default junction's are `junction_connections::entering`'s, its counter connections after
+/// its own (the ACC's `forward_delta` reads the same).
 pub(crate) fn next_roads(net: &RoadNetwork, road: usize, exit: ContactPoint) -> Vec<RoadEnd> {
     let Some(r) = net.roads.get(road) else { return Vec::new() };
     match r.link_at(exit) {
         Some(l) if l.element_type == ElementType::Junction => {
-            let Some(j) = net.junction(&l.element_id) else { return Vec::new() };
+            let Some(ji) = net.junction_index(&l.element_id) else { return Vec::new() };
+            let Some(j) = net.junctions.get(ji) else { return Vec::new() };
+            if j.kind != JunctionType::Direct {
+                // A default junction's connections as esmini holds them, its counter connections
+                // (OpenDrive::CheckJunctionConnection) after the junction's own.
+                return super::junction_connections::entering(net, ji, road).into_iter().map(|c| RoadEnd { road: c.connecting, contact: c.contact }).collect();
+            }
             let mut next: Vec<RoadEnd> = j
                 .connections
                 .iter()
                 .filter(|c| c.incoming_road.as_deref() == Some(r.id.as_str()))
                 .filter_map(|c| Some(RoadEnd { road: net.road_index(c.target_road()?)?, contact: c.contact_point.unwrap_or(ContactPoint::Start) }))
                 .collect();
-            if j.kind == JunctionType::Direct {
-                let touches = |inc: &opendrive::Road, end: ContactPoint| {
-                    inc.link_at(end).is_some_and(|l| l.element_type == ElementType::Junction && l.element_id == j.id)
+            let touches =
+                |inc: &opendrive::Road, end: ContactPoint| inc.link_at(end).is_some_and(|l| l.element_type == ElementType::Junction && l.element_id == j.id);
+            for c in j.connections.iter().filter(|c| c.linked_road.as_deref() == Some(r.id.as_str())) {
+                let Some(inc) = c.incoming_road.as_deref().and_then(|id| net.road_index(id)) else { continue };
+                let Some(inc_road) = net.roads.get(inc) else { continue };
+                let contact = if touches(inc_road, ContactPoint::End) {
+                    ContactPoint::End
+                } else if touches(inc_road, ContactPoint::Start) {
+                    ContactPoint::Start
+                } else {
+                    continue;
                 };
-                for c in j.connections.iter().filter(|c| c.linked_road.as_deref() == Some(r.id.as_str())) {
-                    let Some(inc) = c.incoming_road.as_deref().and_then(|id| net.road_index(id)) else { continue };
-                    let Some(inc_road) = net.roads.get(inc) else { continue };
-                    let contact = if touches(inc_road, ContactPoint::End) {
-                        ContactPoint::End
-                    } else if touches(inc_road, ContactPoint::Start) {
-                        ContactPoint::Start
-                    } else {
-                        continue;
-                    };
-                    let end = RoadEnd { road: inc, contact };
-                    if !next.contains(&end) {
-                        next.push(end);
-                    }
-                }
-            } else {
-                // OpenDrive::CheckJunctionConnection: a connecting road that leads from another
-                // incoming road to this one is also a connection from this one (a counter
-                // connection, entered at the end that touches this road), after the others.
-                for c in j.connections.iter().filter(|c| c.incoming_road.as_deref() != Some(r.id.as_str())) {
-                    let Some(ci) = c.connecting_road.as_deref().and_then(|id| net.road_index(id)) else { continue };
-                    let Some(cr) = net.roads.get(ci) else { continue };
-                    for contact in [ContactPoint::Start, ContactPoint::End] {
-                        let back = cr.link_at(contact).is_some_and(|l| l.element_type == ElementType::Road && l.element_id == r.id);
-                        let end = RoadEnd { road: ci, contact };
-                        if back && !next.contains(&end) {
-                            next.push(end);
-                        }
-                    }
+                let end = RoadEnd { road: inc, contact };
+                if !next.contains(&end) {
+                    next.push(end);
                 }
             }
             next
