@@ -133,11 +133,12 @@ fn search(net: &RoadNetwork, a: &LanePos, forward: bool, b: &LanePos, max: f64) 
                     }
                 }
             }
-            Some(l) => {
+            Some(_) => {
                 // Every connection whose incoming road is this one, in esmini's order (its
-                // counter connections too); reaching the target's road by several adds its
-                // part once for each (as esmini does).
-                for (next, contact) in junction_next(net, node.road, node.end, &l.element_id) {
+                // counter connections too: `road_path::next_roads`); reaching the target's road
+                // by several adds its part once for each (as esmini does).
+                for e in crate::roads::road_path::next_roads(net, node.road, node.end) {
+                    let (next, contact) = (e.road, e.contact);
                     if next == b.road {
                         tmp += along_b(Some(contact));
                         found = true;
@@ -154,19 +155,6 @@ fn search(net: &RoadNetwork, a: &LanePos, forward: bool, b: &LanePos, max: f64) 
         return None;
     }
     Some((tmp, *visited.last()?))
-}
-
-/// The roads a junction leads to from `road`'s end `end` and the contact point each is entered
-/// by (Junction::GetConnectingRoadIdFromIncomingRoadId over esmini's connections: a default
-/// junction's with the counter connections esmini adds at load, `junction_connections`; a
-/// direct junction's as `road_path` has them).
-fn junction_next(net: &RoadNetwork, road: usize, end: ContactPoint, junction: &str) -> Vec<(usize, ContactPoint)> {
-    match net.junction_index(junction) {
-        Some(j) if net.junctions.get(j).is_some_and(|j| j.kind != JunctionType::Direct) => {
-            junction_connections::entering(net, j, road).into_iter().map(|c| (c.connecting, c.contact)).collect()
-        }
-        _ => crate::roads::road_path::next_roads(net, road, end).into_iter().map(|e| (e.road, e.contact)).collect(),
-    }
 }
 
 /// Road::GetConnectingLaneId: the lane `lane` of the link's road leads to on `next`; through a
