@@ -150,6 +150,14 @@ impl<'a> Sim<'a> {
         if speed.abs() < ESMINI_SMALL_NUMBER {
             return false;
         }
+        // esmini puts the entity back on its internal position with Position::SetLanePos, which
+        // keeps the entity's heading relative to the road it is on (LatLaneChangeAction::Step):
+        // where a controller moved it on since (an ACC in override mode: MoveAlongS) onto a road
+        // that runs the other way, it faces the other way on the internal position's road and
+        // the step moves it back.
+        if let Some(cur) = en.lane {
+            l.internal.dir = cur.dir;
+        }
         let dt = self.dt;
         let t = &mut l.transition;
         let step_len = (speed * dt).abs();

@@ -4,6 +4,7 @@
 mod first_frame;
 mod lane_change_off_driving_lanes;
 mod lane_change_on_route;
+mod lane_change_onto_opposite_road;
 mod lead_after_section_walk;
 mod leads_across_junctions;
 mod lookahead_same_road;
