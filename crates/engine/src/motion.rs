@@ -151,16 +151,19 @@ impl<'a> Sim<'a> {
                     en.yaw_rate = wrap(en.h - b.h) / dt;
                 }
             }
+            // ScenarioEngine::step stamps these on its accumulated clock (`Sim::clock`), and
+            // Object::IsEndOfRoad / IsStandStill / IsOffRoad read a time stamp at or below
+            // SMALL_NUMBER as "no": an entity standing or off the road from the start is noted
+            // so at the next step, and a ghost reaching a road's end during its head start
+            // (negative time) is stamped anew every step and never counts as there, so its
+            // speed is not zeroed (`stop_if_stuck_at_road_end`) before time 0 is passed.
+            let stamp = (clock > crate::dynamics::ESMINI_SMALL_NUMBER).then_some(clock);
             if en.at_road_end && !en.end_of_road {
-                en.end_of_road = true;
+                en.end_of_road = stamp.is_some();
                 en.end_of_road_since = time;
             } else if !en.at_road_end {
                 en.end_of_road = false;
             }
-            // ScenarioEngine::step stamps both on its accumulated clock (`Sim::clock`), and
-            // Object::IsStandStill / IsOffRoad read a time stamp of 0 as "no": an entity
-            // standing or off the road from the start is noted so at the next step.
-            let stamp = (clock > crate::dynamics::ESMINI_SMALL_NUMBER).then_some(clock);
             if en.speed.abs() >= STAND_STILL {
                 en.standstill_since = None;
             } else if en.standstill_since.is_none() {
