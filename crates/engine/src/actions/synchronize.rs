@@ -45,7 +45,7 @@ impl<'a> Sim<'a> {
             return ActionRt::Done;
         };
         let (tm, t) = match (resolve(target_master, self.net, &self.entities), resolve(target, self.net, &self.entities)) {
-            (Ok(a), Ok(b)) => (a, b),
+            (Ok(a), Ok(b)) => (self.on_road(a), self.on_road(b)),
             (Err(e), _) | (_, Err(e)) => {
                 self.warn_action(slot, format!("SynchronizeAction: target position: {e}; the action completes at once"));
                 return ActionRt::Done;
@@ -84,6 +84,24 @@ impl<'a> Sim<'a> {
             rt.steady_dist = Some(st * self.final_speed_value(&rt));
         }
         ActionRt::Synchronize(Box::new(rt))
+    }
+
+    /// A target given in the world (a WorldPosition, relative world or object positions) in
+    /// road coordinates too: esmini's target is a roadmanager::Position, which
+    /// Position::SetInertiaPos attaches to the nearest lane (XYZ2TrackPos), so
+    /// SynchronizeAction::Step measures to it along the road (Position::Delta), not in a
+    /// straight line.
+    fn on_road(&self, mut p: Placement) -> Placement {
+        if let (None, Some(net)) = (p.lane, self.net) {
+            p.lane = crate::roads::locate::world_to_lane(net, p.x, p.y, None).map(|lp| crate::roads::LanePos {
+                road: lp.road,
+                lane_id: lp.lane_id,
+                s: lp.s,
+                offset: lp.offset,
+                dir: 1.0,
+            });
+        }
+        p
     }
 
     fn final_speed_value(&self, s: &SynchronizeRt) -> f64 {

@@ -4,3 +4,4 @@ mod basic;
 mod master_moving_away;
 mod master_standing;
 mod tolerance;
+mod world_targets;
