@@ -21,6 +21,9 @@ use std::collections::{BTreeMap, BTreeSet};
 const STRAIGHT: f64 = 0.25;
 /// Largest spacing of the slicing lines (m).
 const SLICE: f64 = 0.5;
+/// Closest spacing of the slicing lines (m): an end point nearer than this to a line is
+/// left inside a slice.
+const MIN_SLICE: f64 = 0.1;
 /// The joint's end points of two lanelets in a chain must meet within this (m).
 const MEET: f64 = 0.01;
 /// Joints spread wider than this are left as they are (m).
@@ -65,6 +68,13 @@ fn chain_next(net: &LaneletNetwork, pos: &BTreeMap<u64, usize>, a: usize) -> Opt
     (p.get() == l.id.get() && b != a).then_some(b)
 }
 
+/// `b`'s only predecessor, whose only successor is `b`.
+fn chain_prev(net: &LaneletNetwork, pos: &BTreeMap<u64, usize>, b: usize) -> Option<usize> {
+    let [p] = net.lanelets.get(b)?.predecessors.as_slice() else { return None };
+    let a = *pos.get(&p.get())?;
+    (chain_next(net, pos, a) == Some(b)).then_some(a)
+}
+
 /// The neighbour of `l` on the side that is `left` along the first lane's direction.
 fn beside(l: &Lanelet, reversed: bool, left: bool) -> Option<Adjacent> {
     if left != reversed {
@@ -81,14 +91,42 @@ fn group(net: &LaneletNetwork, pos: &BTreeMap<u64, usize>, a: usize) -> Option<V
     let mut lanes = vec![Pair { a, b, reversed: false }];
     for left in [true, false] {
         let (mut before, mut after, mut rev) = (a, b, false);
-        while let (Some(n1), Some(n2)) = (beside(&net.lanelets[before], rev, left), beside(&net.lanelets[after], rev, left)) {
-            if n1.driving_dir != n2.driving_dir {
-                break;
-            }
-            let (Some(&x1), Some(&x2)) = (pos.get(&n1.lanelet.get()), pos.get(&n2.lanelet.get())) else { break };
-            let nrev = rev != (n1.driving_dir == DrivingDir::Opposite);
-            // x1 lies beside the part before the joint: the lane's first lanelet unless it drives the other way
-            let pair = if nrev { Pair { a: x2, b: x1, reversed: true } } else { Pair { a: x1, b: x2, reversed: false } };
+        loop {
+            let (n1, n2) = (beside(&net.lanelets[before], rev, left), beside(&net.lanelets[after], rev, left));
+            let pair = match (n1, n2) {
+                (Some(n1), Some(n2)) => {
+                    if n1.driving_dir != n2.driving_dir {
+                        break;
+                    }
+                    let (Some(&x1), Some(&x2)) = (pos.get(&n1.lanelet.get()), pos.get(&n2.lanelet.get())) else { break };
+                    // x1 lies beside the part before the joint: the lane's first lanelet unless it drives the other way
+                    if rev != (n1.driving_dir == DrivingDir::Opposite) {
+                        Pair { a: x2, b: x1, reversed: true }
+                    } else {
+                        Pair { a: x1, b: x2, reversed: false }
+                    }
+                }
+                // a neighbour on one side of the joint only, whose lane goes on beside nothing
+                // on the other: the lanes fan out into separate roads (or come together from
+                // them), as a connecting road of several lanes whose end meets two roads
+                (Some(n), None) | (None, Some(n)) if !rev && n.driving_dir == DrivingDir::Same => {
+                    let Some(&x) = pos.get(&n.lanelet.get()) else { break };
+                    let pair = if n1.is_some() {
+                        let Some(b) = chain_next(net, pos, x) else { break };
+                        Pair { a: x, b, reversed: false }
+                    } else {
+                        let Some(a) = chain_prev(net, pos, x) else { break };
+                        Pair { a, b: x, reversed: false }
+                    };
+                    let lone = if n1.is_some() { pair.b } else { pair.a };
+                    if beside(&net.lanelets[lone], false, !left).is_some() {
+                        break;
+                    }
+                    pair
+                }
+                _ => break,
+            };
+            let nrev = pair.reversed;
             if chain_next(net, pos, pair.a) != Some(pair.b) || lanes.iter().any(|p| p.a == pair.a) {
                 break;
             }
@@ -191,21 +229,84 @@ fn pieces(a: &Lanelet, b: &Lanelet, n: V2, lines: &[f64]) -> Option<Vec<LaneletB
     ul.windows(2).zip(ur.windows(2)).map(|(l, r)| bounds(part(&left, l[0], l[1]), part(&right, r[0], r[1]))).collect()
 }
 
+/// The slicing lines from `lo` to `hi` (along their normal): one through every end point
+/// (`ends`, where a bound kinks from one lanelet into the next: a section boundary there keeps
+/// the corner, which a border fitted across it would cut), none closer than [`MIN_SLICE`] to
+/// another, at most [`SLICE`] apart.
+fn slicing_lines(mut ends: Vec<f64>, lo: f64, hi: f64) -> Vec<f64> {
+    ends.sort_by(f64::total_cmp);
+    let mut fixed = vec![lo];
+    for e in ends.into_iter().chain([hi]) {
+        let close = fixed.last().is_some_and(|&last| e - last < MIN_SLICE);
+        // the outermost lines stay where they are
+        if close && e == hi && fixed.len() > 1 {
+            fixed.pop();
+        }
+        if !close || e == hi {
+            fixed.push(e);
+        }
+    }
+    let mut out = Vec::new();
+    for w in fixed.windows(2) {
+        let m = ((w[1] - w[0]) / SLICE).ceil().max(1.0) as usize;
+        out.extend((0..m).map(|j| w[0] + (w[1] - w[0]) * j as f64 / m as f64));
+    }
+    out.push(hi);
+    out
+}
+
+/// The slicing lines' normal near `n` (±30°) along which each lane's own two end points lie
+/// closest together: a slice then holds the end of one lanelet beside the start of its
+/// successor over as little of the lane's length as can be, so each piece stays within a
+/// metre of the lanelets it comes from. Where the lanes fan out (their ends on lines at an
+/// angle) the line through the outermost ends can be a metre off a wide lane's own end.
+fn least_slanted(lanes: &[Pair], net: &LaneletNetwork, n: V2) -> V2 {
+    let own: Vec<V2> = lanes
+        .iter()
+        .filter_map(|p| {
+            let b = &net.lanelets.get(p.a)?.bounds;
+            Some(V2::of(b.left().last()?).sub(V2::of(b.right().last()?)))
+        })
+        .collect();
+    let slant = |m: V2| own.iter().map(|d| d.dot(m).abs()).fold(0.0, f64::max);
+    let base = n.y.atan2(n.x);
+    let mut best = (slant(n), n);
+    for k in -120i32..=120 {
+        let m = V2::unit(base + f64::from(k) * 0.25f64.to_radians());
+        // only a real gain turns the lines
+        let s = slant(m);
+        if s < best.0 - 0.01 {
+            best = (s, m);
+        }
+    }
+    best.1
+}
+
 /// The network with every zig-zag joint sliced; `None` when there is none.
 pub(crate) fn slice(net: &LaneletNetwork) -> Option<Cut> {
     let pos = pos_of(net);
     let keep = intersection_of(net);
     let mut used: BTreeSet<usize> = BTreeSet::new();
-    // per lanelet a or b of a sliced joint: its pieces (bounds) and whether it is the b
-    let mut plans: Vec<(Vec<Pair>, Vec<Vec<LaneletBounds>>)> = Vec::new();
+    // per sliced joint: its lanes, their pieces (bounds) and whether the slices belong to
+    // the lanelets after the joint (the ones before it are an intersection's)
+    let mut plans: Vec<(Vec<Pair>, Vec<Vec<LaneletBounds>>, bool)> = Vec::new();
     for a in 0..net.lanelets.len() {
-        if used.contains(&a) || keep.contains_key(&a) {
+        if used.contains(&a) {
             continue;
         }
         let Some(lanes) = group(net, &pos, a) else { continue };
-        if lanes.iter().any(|p| used.contains(&p.a) || used.contains(&p.b) || keep.contains_key(&p.a) || keep.contains_key(&p.b)) {
+        if lanes.iter().any(|p| used.contains(&p.a) || used.contains(&p.b)) {
             continue;
         }
+        // a joint at an intersection's edge is sliced outside it (its lanelets, the
+        // connecting roads, are not cut: the slices go to the road they meet); one inside
+        // an intersection, or half in it, is left as it is
+        let inside = |i: usize| keep.contains_key(&i);
+        let (ka, kb) = (lanes.iter().map(|p| inside(p.a)).collect::<BTreeSet<_>>(), lanes.iter().map(|p| inside(p.b)).collect::<BTreeSet<_>>());
+        if ka.len() > 1 || kb.len() > 1 || ka.contains(&true) && kb.contains(&true) {
+            continue;
+        }
+        let slices_after = ka.contains(&true);
         let ends: Vec<V2> = lanes
             .iter()
             .flat_map(|p| {
@@ -235,9 +336,12 @@ pub(crate) fn slice(net: &LaneletNetwork) -> Option<Cut> {
         if hi - lo <= STRAIGHT || hi - lo > MAX_SPREAD {
             continue;
         }
-        let (lo, hi) = (lo - 1e-3, hi + 1e-3);
-        let m = ((hi - lo) / SLICE).ceil().max(1.0) as usize;
-        let lines: Vec<f64> = (0..=m).map(|j| lo + (hi - lo) * j as f64 / m as f64).collect();
+        let n = least_slanted(&lanes, net, n);
+        let (lo, hi) = spread_along(n);
+        if hi - lo > MAX_SPREAD {
+            continue;
+        }
+        let lines = slicing_lines(ends.iter().map(|p| p.dot(n)).collect(), lo - 1e-3, hi + 1e-3);
         let back: Vec<f64> = lines.iter().rev().copied().collect();
         let cut: Option<Vec<Vec<LaneletBounds>>> = lanes
             .iter()
@@ -255,7 +359,7 @@ pub(crate) fn slice(net: &LaneletNetwork) -> Option<Cut> {
             used.insert(p.a);
             used.insert(p.b);
         }
-        plans.push((lanes, cut));
+        plans.push((lanes, cut, slices_after));
     }
     if plans.is_empty() {
         return None;
@@ -265,7 +369,7 @@ pub(crate) fn slice(net: &LaneletNetwork) -> Option<Cut> {
     // old id → (first piece, last piece)
     let mut renamed: BTreeMap<u64, (LaneletId, LaneletId)> = BTreeMap::new();
     let mut made: Vec<Lanelet> = Vec::new();
-    for (lanes, cut) in &plans {
+    for (lanes, cut, slices_after) in &plans {
         let mut ids: Vec<Vec<LaneletId>> = Vec::new();
         for (p, parts) in lanes.iter().zip(cut) {
             let (la, lb) = (&net.lanelets[p.a], &net.lanelets[p.b]);
@@ -273,7 +377,7 @@ pub(crate) fn slice(net: &LaneletNetwork) -> Option<Cut> {
             for (k, bd) in parts.iter().enumerate() {
                 let id = LaneletId::new(next)?;
                 next += 1;
-                let from = if k + 1 == parts.len() { lb } else { la };
+                let from = if k + 1 == parts.len() || (k > 0 && *slices_after) { lb } else { la };
                 origin.insert(id.get(), from.id.get());
                 let mut piece = Lanelet::new(id, bd.clone(), commonroad::LaneletType::Unknown);
                 piece.lanelet_types = from.lanelet_types.clone();
@@ -285,7 +389,7 @@ pub(crate) fn slice(net: &LaneletNetwork) -> Option<Cut> {
                     piece.predecessors = la.predecessors.clone();
                     piece.traffic_sign_refs = la.traffic_sign_refs.clone();
                 }
-                if k + 2 == parts.len() {
+                if (k + 2 == parts.len() && !slices_after) || (k == 0 && *slices_after) {
                     piece.stop_line = la.stop_line.clone();
                     piece.traffic_light_refs = la.traffic_light_refs.clone();
                 }
@@ -334,6 +438,12 @@ pub(crate) fn slice(net: &LaneletNetwork) -> Option<Cut> {
                 }
                 if i == 0 && (k == 0 || k == last) {
                     right = beside(outer, rev, false);
+                }
+                // where the lanes fan out into separate roads, the end pieces are beside
+                // what their own lanelets are beside
+                if k == 0 || k == last {
+                    left = left.filter(|_| beside(outer, rev, true).is_some());
+                    right = right.filter(|_| beside(outer, rev, false).is_some());
                 }
                 (made[x].adjacent_left, made[x].adjacent_right) = if rev { (right, left) } else { (left, right) };
             }

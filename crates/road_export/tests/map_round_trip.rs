@@ -8,10 +8,7 @@
 use crate::common::{exports, read_back};
 
 /// Maps that do not pass yet, and why.
-const KNOWN: &[(&str, &str)] = &[(
-    "test_reading_complex_tl",
-    "a five-lane connecting road of an intersection (lanelets 3667, 3665, 3606, 3608, 3610) whose ends lie on a curve (no strip narrower than 1.46 m holds them): a lane section ends on one straight cross-section, which must cover every end, so the outer lanes read back up to 1.6 m longer (more than the measure's 1 m for a piece of the lanelet); intersection lanelets are not cut (a junction's connecting road would become a chain of roads inside the junction)",
-)];
+const KNOWN: &[(&str, &str)] = &[];
 
 #[test]
 fn every_map_round_trips_within_5_cm() {

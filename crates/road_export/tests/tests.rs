@@ -5,6 +5,7 @@ mod common;
 mod esmini_load;
 mod generated;
 mod hostile;
+mod joints;
 mod lane_sections;
 mod layout;
 mod map_round_trip;
