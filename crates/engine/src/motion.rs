@@ -105,7 +105,7 @@ impl<'a> Sim<'a> {
                 && !en.outside
                 && en.speed.abs() <= ESMINI_SMALL_NUMBER
                 && !links.contains(&Some(i))
-                && !controllers.get(i).is_some_and(|c| c.as_ref().is_some_and(|c| c.sets_speed()))
+                && !controllers.iter().any(|c| c.entity == i && c.rt.as_ref().is_some_and(|c| c.sets_speed()))
         };
         // While the ghost runs ahead (RESTARTING), ScenarioEngine::prepareGroundTruth measures
         // the motion of the ghost only: the others, held, keep the velocity they had (frame 0's,

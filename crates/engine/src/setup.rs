@@ -33,10 +33,9 @@ impl<'a> Sim<'a> {
             events: Vec::new(),
             state_log: Vec::new(),
             warnings: Vec::new(),
-            controllers: vec![None; scenario.entities.len()],
+            controllers: Vec::new(),
             any_controller: false,
-            controller_order: Vec::new(),
-            controller_rank: Vec::new(),
+            assignments: 0,
             trailers: Default::default(),
             ghost: None,
             triggering_actors: Vec::new(),
@@ -52,7 +51,7 @@ impl<'a> Sim<'a> {
         sim.initial_presence();
         for (i, e) in scenario.entities.iter().enumerate() {
             for c in &e.controllers {
-                sim.assign_controller(i, c);
+                sim.assign_controller(i, c, None);
             }
         }
         sim.name_external(external)?;

@@ -38,17 +38,14 @@ pub(crate) struct Sim<'a> {
     /// Every state change (node, new state, transition), read by StoryboardElementState conditions.
     pub state_log: Vec<(usize, State, Transition)>,
     pub warnings: Vec<Diagnostic>,
-    /// Each entity's assigned controller (None: the default controller).
-    pub controllers: Vec<Option<crate::controllers::state::ControllerRt>>,
+    /// Every controller assigned to an entity, in the order esmini steps them
+    /// (`controllers/step_order.rs`); an entity without one has the default controller.
+    pub controllers: Vec<crate::controllers::state::ControllerSlot>,
     /// Some entity has a modelled controller: without one the controller steps of a frame are
     /// skipped outright (most scenarios have none).
     pub any_controller: bool,
-    /// The entities in the order esmini made their controllers (`controllers/step_order.rs`);
-    /// empty while that is the entities' order (no AssignControllerAction ran).
-    pub controller_order: Vec<usize>,
-    /// Each entity's place in esmini's `controller_` (its index, or past every entity for an
-    /// assigned controller); empty until an AssignControllerAction runs.
-    pub controller_rank: Vec<usize>,
+    /// How many assignments were made (orders an entity's controllers by their last one).
+    pub assignments: u64,
     /// Who pulls whom (actions/trailer.rs).
     pub trailers: crate::actions::trailer::state::Trailers,
     /// The ghost of a FollowGhost / FollowReference controller (ghost/).

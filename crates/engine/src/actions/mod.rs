@@ -200,8 +200,7 @@ impl<'a> Sim<'a> {
             }
             PrivateAction::AssignController { controller, activate_longitudinal, activate_lateral, .. } => {
                 if let Some(c) = controller {
-                    self.assign_controller(e, c);
-                    self.order_assigned_controller(e, slot);
+                    self.assign_controller(e, c, Some(slot));
                     let (lat, long) = (*activate_lateral == Some(true), *activate_longitudinal == Some(true));
                     if lat || long {
                         self.activate_outside_driver(slot, e, lat, long);

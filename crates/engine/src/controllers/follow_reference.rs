@@ -66,8 +66,10 @@ impl<'a> Sim<'a> {
     /// Warn about FollowReference controllers whose `referenceEntity` does not exist (esmini
     /// quits; here the entity stands still).
     pub(crate) fn check_follow_references(&mut self) {
-        for e in 0..self.controllers.len() {
-            let Some(Some(super::state::ControllerRt::FollowReference(f))) = self.controllers.get(e) else { continue };
+        for k in 0..self.controllers.len() {
+            let Some(slot) = self.controllers.get(k) else { continue };
+            let e = slot.entity;
+            let Some(super::state::ControllerRt::FollowReference(f)) = &slot.rt else { continue };
             let Some(name) = f.reference_name.clone() else { continue };
             if self.entity_index(&name).is_none() {
                 if let Some(m) = self.scenario.entities.get(e) {

@@ -147,7 +147,7 @@ impl<'a> Sim<'a> {
     /// A route was assigned to entity `e`: a FollowRoute controller of it keeps the route's
     /// scenario waypoints (resolved now) and the roads between them.
     pub(crate) fn tell_route_follower(&mut self, e: usize, route: &openscenario::Route, planned: &routing::Route) {
-        if !matches!(self.controllers.get(e), Some(Some(super::state::ControllerRt::FollowRoute(_)))) {
+        if !self.controllers_of(e).any(|c| matches!(c, super::state::ControllerRt::FollowRoute(_))) {
             return;
         }
         let Some(net) = self.net else { return };
@@ -177,7 +177,8 @@ impl<'a> Sim<'a> {
 
     fn give_route_follower(&mut self, e: usize, scenario: Vec<(LaneSpot, Strategy)>, planned: &routing::Route) {
         let (roads, kept) = route_waypoints(planned, &scenario);
-        if let Some(Some(super::state::ControllerRt::FollowRoute(f))) = self.controllers.get_mut(e) {
+        let follower = self.controller_of_mut(e, |c| if let super::state::ControllerRt::FollowRoute(f) = c { Some(f) } else { None });
+        if let Some(f) = follower {
             f.set_route(kept, roads);
         }
     }

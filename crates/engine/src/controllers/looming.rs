@@ -106,7 +106,7 @@ impl<'a> Sim<'a> {
     /// Whether entity `e`'s position is locked on its lane: a looming controller has driven it
     /// (ControllerLooming::Step sets the lock and nothing clears it).
     pub(crate) fn lane_locked(&self, e: usize) -> bool {
-        matches!(self.controllers.get(e), Some(Some(super::state::ControllerRt::Looming(l))) if l.vehicle.is_some())
+        self.controllers_of(e).any(|c| matches!(c, super::state::ControllerRt::Looming(l) if l.vehicle.is_some()))
     }
 
     /// Controller::Activate of a controller that aligns to the road on activation (the

@@ -26,7 +26,7 @@ pub(crate) mod offroad_follower;
 pub(crate) mod state;
 pub(crate) mod step_order;
 
-use self::state::ControllerRt;
+use self::state::{ControllerRt, ControllerSlot};
 use crate::sim::Sim;
 use crate::Diagnostic;
 use openscenario::Controller;
@@ -41,38 +41,60 @@ pub(crate) fn controller_type(c: &Controller) -> &str {
 }
 
 impl<'a> Sim<'a> {
-    /// Runs `step` on each entity's controller in esmini's order (`step_order`), the entity
-    /// being in the run: the controller is taken out of its slot meanwhile (so that `step` may
-    /// use the whole simulation) and put back after. Each kind's stepping picks its own variant; `wants` says beforehand which
-    /// controllers `step` acts on (its variant, active), so that the others are not moved out
-    /// and back for nothing (a controller's state is large; `step` leaves them as they are).
+    /// Runs `step` on each controller in esmini's order (`step_order`), its entity being in the
+    /// run: the controller is taken out of its slot meanwhile (so that `step` may use the whole
+    /// simulation) and put back after. Each kind's stepping picks its own variant; `wants` says
+    /// beforehand which controllers `step` acts on (its variant, active), so that the others are
+    /// not moved out and back for nothing (a controller's state is large; `step` leaves them as
+    /// they are).
     pub(crate) fn for_each_controller(&mut self, wants: impl Fn(&ControllerRt) -> bool, mut step: impl FnMut(&mut Self, usize, &mut ControllerRt)) {
         if !self.any_controller {
             return;
         }
         for k in 0..self.controllers.len() {
-            let e = self.controller_order.get(k).copied().unwrap_or(k);
-            if !self.controllers.get(e).and_then(Option::as_ref).is_some_and(&wants) {
+            let Some(slot) = self.controllers.get(k) else { continue };
+            let e = slot.entity;
+            if !slot.rt.as_ref().is_some_and(&wants) {
                 continue;
             }
             // esmini's ScenarioEngine::step steps every active controller whether or not its
             // entity is in the simulation. Done so for the ACC (a deleted entity's speed goes on
             // changing: fixture acc_steps_while_away.xosc); the other models wait while their
             // entity is deleted.
-            let away_acc = matches!(self.controllers.get(e), Some(Some(ControllerRt::Acc(_))));
+            let away_acc = matches!(slot.rt, Some(ControllerRt::Acc(_)));
             if !away_acc && !self.entities.get(e).is_some_and(|en| en.active) {
                 continue;
             }
-            let Some(mut c) = self.controllers.get_mut(e).and_then(Option::take) else { continue };
+            let Some(mut c) = self.controllers.get_mut(k).and_then(|s| s.rt.take()) else { continue };
             step(self, e, &mut c);
-            if let Some(slot) = self.controllers.get_mut(e) {
-                *slot = Some(c);
+            if let Some(slot) = self.controllers.get_mut(k) {
+                slot.rt = Some(c);
             }
         }
     }
 
-    /// Assign controller `c` to entity `e`; warns when its type is not modelled.
-    pub(crate) fn assign_controller(&mut self, e: usize, c: &Controller) {
+    /// The modelled controllers assigned to entity `e`, in esmini's order.
+    pub(crate) fn controllers_of(&self, e: usize) -> impl Iterator<Item = &ControllerRt> {
+        self.controllers.iter().filter(move |c| c.entity == e).filter_map(|c| c.rt.as_ref())
+    }
+
+    /// The first modelled controller of entity `e` that `pick` takes.
+    pub(crate) fn controller_of_mut<T>(&mut self, e: usize, pick: impl FnMut(&mut ControllerRt) -> Option<&mut T>) -> Option<&mut T> {
+        self.controllers.iter_mut().filter(|c| c.entity == e).filter_map(|c| c.rt.as_mut()).find_map(pick)
+    }
+
+    /// Assign controller `c` to entity `e` (by the AssignControllerAction in action slot
+    /// `assigned_by`, else as its ObjectController); warns when its type is not modelled. esmini
+    /// keeps the entity's other controllers, active or not (Object::AssignController appends);
+    /// an AssignControllerAction that runs again assigns its own controller again, which keeps
+    /// its state and becomes the entity's most recent one.
+    pub(crate) fn assign_controller(&mut self, e: usize, c: &Controller, assigned_by: Option<usize>) {
+        self.assignments += 1;
+        let assigned = self.assignments;
+        if let Some(again) = self.controllers.iter_mut().find(|x| x.entity == e && assigned_by.is_some() && x.assigned_by == assigned_by) {
+            again.assigned = assigned;
+            return;
+        }
         if self.named_external(e) {
             let name = self.entities.get(e).map_or("", |en| en.name.as_str());
             self.warnings.push(Diagnostic::at(&c.origin, format!("controller `{}` of `{name}` is not stepped: the entity is driven from outside", c.name)));
@@ -113,46 +135,45 @@ impl<'a> Sim<'a> {
             ));
         }
         self.any_controller |= rt.is_some();
-        if let Some(slot) = self.controllers.get_mut(e) {
-            *slot = rt;
-        }
+        let rank = self.controller_rank(assigned_by);
+        let at = self.controllers.iter().position(|x| x.rank > rank).unwrap_or(self.controllers.len());
+        self.controllers.insert(at, ControllerSlot { entity: e, rank, assigned_by, assigned, rt });
+    }
+
+    /// The controller an ActivateControllerAction naming none activates: entity `e`'s most
+    /// recently assigned (esmini's `controllers_.back()`); `None` when that is not modelled.
+    fn last_assigned_mut(&mut self, e: usize) -> Option<&mut ControllerRt> {
+        self.controllers.iter_mut().filter(|c| c.entity == e).max_by_key(|c| c.assigned).and_then(|c| c.rt.as_mut())
     }
 
     /// ActivateControllerAction (or an AssignControllerAction that activates) on entity `e` for
-    /// the given domains. esmini activates a controller on the requested domains it operates on
-    /// (Controller::Activate): ACC, ALKS, NaturalDriver and Looming on the longitudinal one only.
+    /// the given domains: its most recently assigned controller (the one the AssignControllerAction
+    /// just assigned). esmini activates a controller on the requested domains it operates on
+    /// (Controller::Activate): ACC, ALKS, NaturalDriver and Looming on the longitudinal one only;
+    /// the entity's other active controllers stay on (OpenSCENARIO 1.3: ActivateControllerAction::
+    /// Start switches the domains off on the controller it then activates; an
+    /// AssignControllerAction switches none off).
     pub(crate) fn activate_controller(&mut self, e: usize, lateral: bool, longitudinal: bool) {
         let Some(speed) = self.entities.get(e).map(|en| en.speed) else { return };
-        match self.controllers.get_mut(e) {
-            Some(Some(ControllerRt::Acc(a))) => a.activate(speed, longitudinal),
-            Some(Some(ControllerRt::AlksR157(a))) => a.activate(speed, lateral, longitudinal),
-            Some(Some(ControllerRt::NaturalDriver(a))) => a.activate(speed, longitudinal),
-            Some(Some(ControllerRt::FollowGhost(f))) => {
-                if let Some(en) = self.entities.get(e) {
-                    f.activate(en, longitudinal);
-                }
+        let (net, scenario) = (self.net, self.scenario);
+        let Some(en) = self.entities.get(e).cloned() else { return };
+        let mut align = false;
+        match self.last_assigned_mut(e) {
+            Some(ControllerRt::Acc(a)) => a.activate(speed, longitudinal),
+            Some(ControllerRt::AlksR157(a)) => a.activate(speed, lateral, longitudinal),
+            Some(ControllerRt::NaturalDriver(a)) => a.activate(speed, longitudinal),
+            Some(ControllerRt::FollowGhost(f)) => f.activate(&en, longitudinal),
+            Some(ControllerRt::FollowReference(f)) => f.activate(&en, follow_reference::wheelbase(scenario, e)),
+            Some(ControllerRt::FollowRoute(f)) => f.activate(longitudinal),
+            Some(ControllerRt::Looming(l)) => {
+                l.activate(&en, longitudinal, looming::position_heading(net, &en));
+                align = lateral;
             }
-            Some(Some(ControllerRt::FollowReference(f))) => {
-                let wheelbase = follow_reference::wheelbase(self.scenario, e);
-                if let Some(en) = self.entities.get(e) {
-                    f.activate(en, wheelbase);
-                }
-            }
-            Some(Some(ControllerRt::FollowRoute(f))) => f.activate(longitudinal),
-            Some(Some(ControllerRt::Looming(l))) => {
-                if let Some(en) = self.entities.get(e) {
-                    l.activate(en, longitudinal, looming::position_heading(self.net, en));
-                }
-                if lateral {
-                    self.align_to_road_heading(e);
-                }
-            }
-            Some(Some(ControllerRt::OffroadFollower(f))) => {
-                if let Some(en) = self.entities.get(e) {
-                    f.activate(en, lateral, longitudinal);
-                }
-            }
-            _ => {}
+            Some(ControllerRt::OffroadFollower(f)) => f.activate(&en, lateral, longitudinal),
+            None => {}
+        }
+        if align {
+            self.align_to_road_heading(e);
         }
     }
 
@@ -164,17 +185,17 @@ impl<'a> Sim<'a> {
         if self.outside(e) {
             return true;
         }
-        match self.controllers.get(e) {
-            Some(Some(ControllerRt::Acc(a))) => a.overrides_longitudinal(),
-            Some(Some(ControllerRt::FollowRoute(f))) => f.overrides_longitudinal(),
-            Some(Some(ControllerRt::OffroadFollower(f))) => f.holds_longitudinal(),
+        self.controllers_of(e).any(|c| match c {
+            ControllerRt::Acc(a) => a.overrides_longitudinal(),
+            ControllerRt::FollowRoute(f) => f.overrides_longitudinal(),
+            ControllerRt::OffroadFollower(f) => f.holds_longitudinal(),
             // ControllerLooming operates on the longitudinal domain, in override mode unless
             // its `mode` says additive.
-            Some(Some(ControllerRt::Looming(l))) => l.active && l.override_mode,
+            ControllerRt::Looming(l) => l.active && l.override_mode,
             // ControllerALKS_R157SM operates on both domains (the Controller default).
-            Some(Some(ControllerRt::AlksR157(a))) => a.active && a.override_mode && a.longitudinal,
+            ControllerRt::AlksR157(a) => a.active && a.override_mode && a.longitudinal,
             _ => false,
-        }
+        })
     }
 
     /// Whether any active controller of entity `e` holds its longitudinal domain in override mode:
@@ -187,11 +208,11 @@ impl<'a> Sim<'a> {
         if self.longitudinal_overridden(e) {
             return true;
         }
-        match self.controllers.get(e) {
-            Some(Some(ControllerRt::NaturalDriver(n))) => n.active && n.override_mode,
-            Some(Some(ControllerRt::FollowReference(f))) => f.active && !f.uses_ghost(),
+        self.controllers_of(e).any(|c| match c {
+            ControllerRt::NaturalDriver(n) => n.active && n.override_mode,
+            ControllerRt::FollowReference(f) => f.active && !f.uses_ghost(),
             _ => false,
-        }
+        })
     }
 
     /// Whether an active controller of entity `e` in override mode owns its lateral or
@@ -204,17 +225,16 @@ impl<'a> Sim<'a> {
     /// keeps the Controller base's mode, override unless a `mode` property says additive; the
     /// engine reads no `mode` for it).
     pub(crate) fn overrides_motion(&self, e: usize) -> bool {
-        match self.controllers.get(e) {
-            Some(Some(ControllerRt::Acc(a))) => a.overrides_longitudinal(),
-            Some(Some(ControllerRt::Looming(l))) => l.active && l.override_mode,
-            Some(Some(ControllerRt::NaturalDriver(n))) => n.active && n.override_mode,
-            Some(Some(ControllerRt::AlksR157(a))) => a.active && a.override_mode,
-            Some(Some(ControllerRt::FollowGhost(f))) => f.active,
-            Some(Some(ControllerRt::FollowReference(f))) => f.active,
-            Some(Some(ControllerRt::FollowRoute(f))) => f.overrides_longitudinal(),
-            Some(Some(ControllerRt::OffroadFollower(f))) => f.active,
-            _ => false,
-        }
+        self.controllers_of(e).any(|c| match c {
+            ControllerRt::Acc(a) => a.overrides_longitudinal(),
+            ControllerRt::Looming(l) => l.active && l.override_mode,
+            ControllerRt::NaturalDriver(n) => n.active && n.override_mode,
+            ControllerRt::AlksR157(a) => a.active && a.override_mode,
+            ControllerRt::FollowGhost(f) => f.active,
+            ControllerRt::FollowReference(f) => f.active,
+            ControllerRt::FollowRoute(f) => f.overrides_longitudinal(),
+            ControllerRt::OffroadFollower(f) => f.active,
+        })
     }
 
     /// Whether an active controller of entity `e` in override mode holds its lateral domain
@@ -227,12 +247,12 @@ impl<'a> Sim<'a> {
     /// NaturalDriver operate on the longitudinal domain only; a ghost follower's actions drive
     /// its ghost.)
     pub(crate) fn lateral_overridden(&self, e: usize) -> bool {
-        match self.controllers.get(e) {
-            Some(Some(ControllerRt::AlksR157(a))) => a.active && a.override_mode && a.lateral,
-            Some(Some(ControllerRt::OffroadFollower(f))) => f.holds_lateral(),
-            Some(Some(ControllerRt::FollowReference(f))) => f.active && !f.uses_ghost(),
+        self.controllers_of(e).any(|c| match c {
+            ControllerRt::AlksR157(a) => a.active && a.override_mode && a.lateral,
+            ControllerRt::OffroadFollower(f) => f.holds_lateral(),
+            ControllerRt::FollowReference(f) => f.active && !f.uses_ghost(),
             _ => false,
-        }
+        })
     }
 
     /// Step every active controller by `dt` (after the storyboard, before the default controller).
@@ -240,8 +260,9 @@ impl<'a> Sim<'a> {
         if !self.any_controller {
             return;
         }
-        for e in 0..self.controllers.len() {
-            let Some(mut rt) = self.controllers.get_mut(e).and_then(|c| c.take()) else { continue };
+        for k in 0..self.controllers.len() {
+            let Some(e) = self.controllers.get(k).map(|c| c.entity) else { continue };
+            let Some(mut rt) = self.controllers.get_mut(k).and_then(|c| c.rt.take()) else { continue };
             match &mut rt {
                 ControllerRt::Acc(a) => {
                     // Stepped after the default controller (`step_controllers_in_order`).
@@ -277,8 +298,8 @@ impl<'a> Sim<'a> {
                     self.hold_follower(e, held);
                 }
             }
-            if let Some(slot) = self.controllers.get_mut(e) {
-                *slot = Some(rt);
+            if let Some(slot) = self.controllers.get_mut(k) {
+                slot.rt = Some(rt);
             }
         }
     }

@@ -225,7 +225,7 @@ impl<'a> Sim<'a> {
     fn nd_abort_lane_change(&self, e: usize, nd: &NaturalDriverRt, around: &[usize], v: &Vois) -> bool {
         let Some(me) = self.entities.get(e) else { return false };
         around.iter().any(|&i| {
-            let Some(Some(ControllerRt::NaturalDriver(other))) = self.controllers.get(i) else { return false };
+            let Some(other) = self.controllers_of(i).find_map(|c| if let ControllerRt::NaturalDriver(x) = c { Some(x) } else { None }) else { return false };
             let Some(o) = self.entities.get(i) else { return false };
             if !other.active {
                 return false;
@@ -245,8 +245,13 @@ impl<'a> Sim<'a> {
     /// while the previous is still listed.
     fn nd_inject(&mut self, nd: &mut NaturalDriverRt) {
         if nd.pending.is_none() && nd.lane_change.is_none() {
-            let n: u32 =
-                self.controllers.iter().flatten().map(|c| if let ControllerRt::NaturalDriver(x) = c { x.injections } else { 0 }).sum::<u32>() + nd.injections;
+            let n: u32 = self
+                .controllers
+                .iter()
+                .filter_map(|c| c.rt.as_ref())
+                .map(|c| if let ControllerRt::NaturalDriver(x) = c { x.injections } else { 0 })
+                .sum::<u32>()
+                + nd.injections;
             nd.pending = Some((nd.target_lane, format!("LaneChangeAction_{n}")));
             nd.injections += 1;
         }

@@ -1,5 +1,25 @@
-//! What the driver models hold while a run goes on: one controller state per entity (each
-//! model's own `state` module). Data only: the modules of `controllers/` change it.
+//! What the driver models hold while a run goes on: every controller assigned to an entity,
+//! with its state (each model's own `state` module). Data only: the modules of `controllers/`
+//! change it.
+
+/// One controller assigned to an entity, as esmini keeps it: an entity holds a list of them
+/// (Object::controllers_), an AssignControllerAction appends one without switching off the
+/// others, and every active one steps.
+#[derive(Debug, Clone)]
+pub(crate) struct ControllerSlot {
+    pub entity: usize,
+    /// The controller's place in esmini's list of controllers (ScenarioReader::controller_, the
+    /// order they step in): the ObjectControllers first, then the AssignControllerActions' by
+    /// their action slots (`step_order.rs`).
+    pub rank: usize,
+    /// The action slot of the AssignControllerAction that made it; `None`: an ObjectController.
+    pub assigned_by: Option<usize>,
+    /// When it was last assigned (a count): the entity's most recent one is the one an
+    /// ActivateControllerAction naming no controller activates (`controllers_.back()`).
+    pub assigned: u64,
+    /// Its state; `None` for a type osc2cr does not model (and while it steps).
+    pub rt: Option<ControllerRt>,
+}
 
 /// A controller's state during a run.
 #[derive(Debug, Clone)]

@@ -12,25 +12,22 @@
 use super::state::ControllerRt;
 use crate::sim::Sim;
 
+/// More ObjectControllers than any scenario has: the ranks of the assigned controllers start here.
+const OBJECT_CONTROLLERS_MAX: usize = usize::MAX / 2;
+
 impl<'a> Sim<'a> {
-    /// Entity `e` got its controller from the AssignControllerAction in action slot `slot`:
-    /// esmini made that controller after every ObjectController, in the order the actions are
-    /// written (the slots' order), so it steps after them.
-    pub(crate) fn order_assigned_controller(&mut self, e: usize, slot: usize) {
-        let n = self.controllers.len();
-        if self.controller_rank.is_empty() {
-            self.controller_rank = (0..n).collect();
+    /// esmini's place in `controller_` of a controller: an ObjectController's is its index
+    /// among them (entity order), an AssignControllerAction's (action slot `slot`) comes after
+    /// every ObjectController, in the order the actions are written (the slots' order).
+    pub(crate) fn controller_rank(&self, assigned_by: Option<usize>) -> usize {
+        match assigned_by {
+            None => self.controllers.iter().filter(|c| c.assigned_by.is_none()).count(),
+            Some(slot) => OBJECT_CONTROLLERS_MAX + slot,
         }
-        if let Some(r) = self.controller_rank.get_mut(e) {
-            *r = n + slot;
-        }
-        let mut order: Vec<usize> = (0..n).collect();
-        order.sort_by_key(|&i| (self.controller_rank.get(i).copied().unwrap_or(i), i));
-        self.controller_order = order;
     }
 
-    /// Step every active controller by `dt`, one entity after another in declaration order
-    /// (ScenarioEngine::step's loop over `controller_`). In frame 0 (`frame0`, dt 0) esmini steps
+    /// Step every active controller by `dt`, in esmini's order (ScenarioEngine::step's loop over
+    /// `controller_`). In frame 0 (`frame0`, dt 0) esmini steps
     /// them too; the ghost followers are left out there, their ghost not yet having a trail.
     pub(crate) fn step_controllers_in_order(&mut self, dt: f64, frame0: bool) {
         self.for_each_controller(

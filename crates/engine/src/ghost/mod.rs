@@ -64,10 +64,13 @@ impl<'a> Sim<'a> {
     /// Create the ghost of the first entity whose controller needs one (after `build`).
     pub(crate) fn setup_ghost(&mut self) {
         self.check_follow_references();
-        let found = self.controllers.iter().enumerate().find_map(|(e, c)| match c {
-            Some(ControllerRt::FollowGhost(f)) => Some((e, f.headstart)),
-            Some(ControllerRt::FollowReference(f)) if f.uses_ghost() => Some((e, 0.0)),
-            _ => None,
+        let n = self.scenario.entities.len();
+        let found = (0..n).find_map(|e| {
+            self.controllers_of(e).find_map(|c| match c {
+                ControllerRt::FollowGhost(f) => Some((e, f.headstart)),
+                ControllerRt::FollowReference(f) if f.uses_ghost() => Some((e, 0.0)),
+                _ => None,
+            })
         });
         let Some((owner, headstart)) = found else { return };
         self.warn_other_followers(owner);
@@ -155,12 +158,12 @@ impl<'a> Sim<'a> {
 
     /// esmini gives only the first such entity a ghost; the others' controllers do nothing.
     fn warn_other_followers(&mut self, owner: usize) {
-        for e in owner + 1..self.controllers.len() {
-            let needs_ghost = match &self.controllers[e] {
-                Some(ControllerRt::FollowGhost(_)) => true,
-                Some(ControllerRt::FollowReference(f)) => f.uses_ghost(),
+        for e in owner + 1..self.scenario.entities.len() {
+            let needs_ghost = self.controllers_of(e).any(|c| match c {
+                ControllerRt::FollowGhost(_) => true,
+                ControllerRt::FollowReference(f) => f.uses_ghost(),
                 _ => false,
-            };
+            });
             if let (true, Some(m)) = (needs_ghost, self.scenario.entities.get(e)) {
                 let msg = format!(
                     "entity `{}`: only the first entity with a ghost-following controller gets a ghost (esmini); its controller leaves it standing",
