@@ -90,9 +90,10 @@ impl Entity {
     /// esmini's ScenarioEngine::step, after every object's (default) move: an object whose
     /// position status says end of road (`at_road_end`), already flagged there in an earlier
     /// step (`end_of_road`), and whose velocity, measured at the last step, is zero is stopped
-    /// ("object at end of road and not moving, enforce zero speed").
+    /// ("object at end of road and not moving, enforce zero speed"). Not moving is NEAR_ZERO:
+    /// below SMALL_NUMBER (1e-6 m/s), so the rounding left by the move onto the end counts.
     pub(crate) fn stop_if_stuck_at_road_end(&mut self) {
-        use crate::dynamics::SMALL;
+        use crate::dynamics::ESMINI_SMALL_NUMBER as SMALL;
         if self.at_road_end && self.end_of_road && self.vel.0.abs() < SMALL && self.vel.1.abs() < SMALL {
             self.speed = 0.0;
         }

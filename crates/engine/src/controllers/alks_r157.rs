@@ -19,6 +19,7 @@ use state::{AlksR157Rt, Info, Mode, Model, Phase, Scen, Trigger};
 use crate::entities::EntityKind;
 use crate::roads::move_along_s;
 use crate::roads::road_follow::wrap;
+use crate::roads::road_follow::{at_unlinked_road_end, MoveStatus};
 use crate::sim::Sim;
 use openscenario::{Controller, EntityObject};
 
@@ -103,6 +104,7 @@ impl AlksR157Rt {
             speed_now: 0.0,
             dt: 0.0,
             moved_by_action: false,
+            at_end: false,
             rt_counter: 0.0,
             cfs: 0.0,
             pfs: 0.0,
@@ -559,6 +561,17 @@ impl<'a> Sim<'a> {
     /// control, whose acceleration the reaction phase of the next steps keeps (Model::Step).
     /// Stepped by `step_controllers_in_order`.
     pub(super) fn step_alks_r157(&mut self, e: usize, a: &mut AlksR157Rt, dt: f64) {
+        // ScenarioEngine::step checks every object's position status before it steps the
+        // controllers, whoever moved it: the status the model's last move left is noted (the
+        // EndOfRoadCondition's stamp, in `after_move`), and an entity noted there a step before
+        // that did not move since gets speed 0 ("enforce zero speed"), which the model reads.
+        // (Active laterally only, the default controller moves it and checks that itself.)
+        if a.override_mode && a.longitudinal {
+            if let Some(en) = self.entities.get_mut(e) {
+                en.at_road_end = a.at_end;
+                en.stop_if_stuck_at_road_end();
+            }
+        }
         let Some(v) = self.entities.get(e).map(|en| en.speed) else { return };
         a.speed_now = v;
         a.dt = dt;
@@ -579,10 +592,15 @@ impl<'a> Sim<'a> {
         if a.override_mode && !a.moved_by_action {
             match (net, en.lane) {
                 (Some(net), Some(mut lp)) => {
-                    move_along_s(net, &mut lp, speed * dt);
+                    let status = move_along_s(net, &mut lp, speed * dt);
+                    // As the ACC's move (`acc.rs`): Position::MoveAlongS flags the end of the
+                    // road when no connection continues the lane, or a move ends at an end
+                    // without a road link.
+                    a.at_end = status == MoveStatus::EndOfRoad || at_unlinked_road_end(net, &lp);
                     en.set_lane_pos(net, lp);
                 }
                 _ => {
+                    a.at_end = false;
                     en.x += speed * dt * en.h.cos();
                     en.y += speed * dt * en.h.sin();
                 }

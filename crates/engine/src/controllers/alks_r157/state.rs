@@ -96,6 +96,9 @@ pub(crate) struct AlksR157Rt {
     pub(super) dt: f64,
     /// An action moved the entity in this step's storyboard step (then the model does not).
     pub(in crate::controllers) moved_by_action: bool,
+    /// Where the model's own last move left the entity: at a road's end, no road beyond
+    /// (Position::MoveAlongS's POS_STATUS_END_OF_ROAD), seen by the next step.
+    pub(super) at_end: bool,
     // RSS and FSM
     /// Reaction timer counting down from `rt` once a situation turns critical (Model::rt_counter_).
     pub(super) rt_counter: f64,
