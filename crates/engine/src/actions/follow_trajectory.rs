@@ -118,6 +118,15 @@ pub(crate) fn build_path(sim: &Sim, traj: &Trajectory, current: Pose) -> Result<
 }
 
 impl<'a> Sim<'a> {
+    /// The trajectory entity `e` follows now, if any: esmini's `Position::GetTrajectory`, set
+    /// while a FollowTrajectoryAction of the entity runs (FollowTrajectoryAction::Start, End).
+    pub(crate) fn running_trajectory(&self, e: usize) -> Option<&FollowTrajectoryRt> {
+        self.actions.iter().filter(|a| a.running).flat_map(|a| a.instances.iter()).find_map(|inst| match &inst.rt {
+            ActionRt::FollowTrajectory(f) if inst.entity == Some(e) => Some(&**f),
+            _ => None,
+        })
+    }
+
     pub(super) fn start_follow_trajectory(
         &mut self,
         slot: usize,

@@ -7,8 +7,9 @@
 //! the final speed when that fits (linear), else accelerate-then-decelerate or the reverse
 //! (non-linear, convex or concave, switching to linear at the apex), or stop and wait when even
 //! that would need a negative speed; without a final speed, the constant acceleration that
-//! covers the distance in the master's time. Distances are measured along the roads when both
-//! ends are on the road network, else in a straight line. The action ends when the actor or the
+//! covers the distance in the master's time. Distances are measured along the trajectory an
+//! entity follows (to the path's point nearest the target), else along the roads (a target
+//! given in the world attached to the road where it lies), else in a straight line. The action ends when the actor or the
 //! master is within its tolerance, when either distance starts to grow (a target was passed),
 //! or when the master arrives within the next step; then the actor takes the final speed. While
 //! the master stands still the actor stands too.
@@ -18,11 +19,14 @@ pub(crate) mod state;
 use state::{Final, Mode, Submode, SynchronizeRt};
 
 use super::state::ActionRt;
+use crate::controllers::looming::view::angle_difference;
+use crate::entities::wrap_2pi;
 use crate::positions::{resolve, Placement};
-use crate::roads::road_distance::{road_distance, road_path};
+use crate::roads::road_path::path_ends;
 use crate::sim::Sim;
 use opendrive::ContactPoint;
 use openscenario::{FinalSpeed, Position, SpeedTargetValueType, SteadyState};
+use std::f64::consts::{FRAC_PI_2, PI};
 
 /// esmini's SMALL_NUMBER, every tolerance of SynchronizeAction::Step.
 const SMALL: f64 = crate::dynamics::ESMINI_SMALL_NUMBER;
@@ -114,12 +118,20 @@ impl<'a> Sim<'a> {
         }
     }
 
-    /// Distance of entity `e` to a placement: along the roads when both are on the network.
+    /// Distance of entity `e` to a placement, as SynchronizeAction::Step measures it: along the
+    /// trajectory the entity follows, else along esmini's road path (Position::Delta:
+    /// RoadPath::Calculate follows the entity's lane, `path_ends`), else in a straight line.
     fn distance_to(&self, e: usize, p: &Placement) -> f64 {
         let Some(en) = self.entities.get(e) else { return 0.0 };
+        if let Some(d) = self.along_trajectory(e, p) {
+            return d.abs();
+        }
         if let (Some(net), Some(a), Some(b)) = (self.net, en.lane, p.lane) {
-            if let Some(d) = road_distance(net, a.road, a.s, b.road, b.s) {
-                return d;
+            if a.road == b.road {
+                return (b.s - a.s).abs();
+            }
+            if let Some(path) = path_ends(net, a.road, a.s, a.lane_id, b.road) {
+                return path.length_to(b.s, net.roads.get(b.road).map_or(0.0, |r| r.length));
             }
         }
         (en.x - p.x).hypot(en.y - p.y)
@@ -129,36 +141,66 @@ impl<'a> Sim<'a> {
     /// behind (-1), as SynchronizeAction::Step reads them from Position::Delta: on one road
     /// the sign of the s difference seen in the direction the master faces (RoadPath::Calculate's
     /// same-road case); across roads, whether the shortest chain leaves the master's road ahead
-    /// of it, turned round when the master faces against its lane's driving direction (the end
-    /// of RoadPath::Calculate); off the network, whether the straight line to the target points
+    /// of it, turned round when the master faces against its lane's driving direction, turned
+    /// to the left of it (the end of RoadPath::Calculate); off the network, whether the straight line to the target points
     /// forward of the master's heading. A master driving away from its target makes the actor
     /// wait (stand) as a master standing still does.
     fn master_distance(&self, m: usize, p: &Placement) -> (f64, f64) {
         let Some(en) = self.entities.get(m) else { return (0.0, 1.0) };
         let sign = |x: f64| if x < 0.0 { -1.0 } else { 1.0 };
+        if let Some(d) = self.along_trajectory(m, p) {
+            // On a trajectory the direction is the distance's sign, turned round when the
+            // master faces against the path (IsAngleForward of GetAngleDifference(GetHTrue, H)).
+            let Some(f) = self.running_trajectory(m) else { return (d.abs(), sign(d)) };
+            let facing = angle_difference(f.path.true_heading_at(f.s), en.h).abs() <= FRAC_PI_2;
+            return (d.abs(), sign(d) * if facing { 1.0 } else { -1.0 });
+        }
         if let (Some(net), Some(a), Some(b)) = (self.net, en.lane, p.lane) {
             let facing_along = (a.dir >= 0.0) == (en.yaw_offset.cos() >= 0.0);
             let ahead = if facing_along { 1.0 } else { -1.0 };
-            match road_path(net, a.road, a.s, b.road, b.s) {
-                Some((_, None)) => {
-                    let ds = (b.s - a.s) * ahead;
-                    return (ds.abs(), sign(ds));
-                }
-                Some((d, Some(first))) => {
-                    let leaves_ahead = (first == ContactPoint::End) == facing_along;
-                    let mut dir = if leaves_ahead { 1.0 } else { -1.0 };
-                    let drives_along = net.roads.get(a.road).is_none_or(|r| opendrive::drives_along_s(r.rule, a.lane_id));
-                    if drives_along != facing_along {
+            if a.road == b.road {
+                let ds = (b.s - a.s) * ahead;
+                return (ds.abs(), sign(ds));
+            }
+            if let Some(path) = path_ends(net, a.road, a.s, a.lane_id, b.road) {
+                let d = path.length_to(b.s, net.roads.get(b.road).map_or(0.0, |r| r.length));
+                let leaves_ahead = (path.first_exit == ContactPoint::End) == facing_along;
+                let mut dir = if leaves_ahead { 1.0 } else { -1.0 };
+                // RoadPath::Calculate turns the sign for a master facing against its lane's
+                // driving direction by GetHRelativeDrivingDirection in (pi/2, 3pi/2): an
+                // angle difference in [-pi, pi], so only one turned to the left of it. For a
+                // master facing exactly against it the difference is ±pi by rounding;
+                // Position::GetDrivingDirection's own arithmetic decides (the road heading,
+                // turned by pi into [0, 2pi) for a left lane and again for left-hand
+                // traffic).
+                if let (Some(r), Some(pose)) = (net.roads.get(a.road), a.pose(net)) {
+                    let mut drive_h = pose.road_heading;
+                    if a.lane_id > 0 {
+                        drive_h = wrap_2pi(drive_h + PI);
+                    }
+                    if r.rule == opendrive::TrafficRule::LeftHand {
+                        drive_h = wrap_2pi(drive_h + PI);
+                    }
+                    if angle_difference(en.h, drive_h) > FRAC_PI_2 {
                         dir = -dir;
                     }
-                    return (d, if d == 0.0 { 1.0 } else { dir });
                 }
-                None => {}
+                return (d, if d == 0.0 { 1.0 } else { dir });
             }
         }
         let (vx, vy) = (p.x - en.x, p.y - en.y);
         let forward = (vy.atan2(vx) - en.h).cos() >= 0.0;
         (vx.hypot(vy), if forward { 1.0 } else { -1.0 })
+    }
+
+    /// The distance along the trajectory entity `e` follows, if it follows one, to the path's
+    /// point nearest the target: SynchronizeAction::Step asks an entity on a trajectory first
+    /// for Position::Distance in the trajectory's frame (longitudinal: the s of
+    /// FindClosestPoint less the entity's trajectory s), and only without one for
+    /// Position::Delta along the roads.
+    fn along_trajectory(&self, e: usize, p: &Placement) -> Option<f64> {
+        let f = self.running_trajectory(e)?;
+        Some(f.path.closest_s(p.x, p.y) - f.s)
     }
 
     /// The velocity projected on the road's s axis, with the sign of the speed (esmini's

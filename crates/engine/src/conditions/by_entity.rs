@@ -98,10 +98,7 @@ impl<'a> Sim<'a> {
 
     /// The direction of the path of the trajectory entity `idx` follows, where it is now.
     fn trajectory_heading(&self, idx: usize) -> Option<f64> {
-        self.actions.iter().filter(|a| a.running).flat_map(|a| a.instances.iter()).find_map(|inst| match &inst.rt {
-            crate::actions::state::ActionRt::FollowTrajectory(f) if inst.entity == Some(idx) => Some(f.path.true_heading_at(f.s)),
-            _ => None,
-        })
+        self.running_trajectory(idx).map(|f| f.path.true_heading_at(f.s))
     }
 
     /// The condition for triggering entity `idx`; `None` where its measure is not defined (a

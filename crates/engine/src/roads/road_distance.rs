@@ -1,7 +1,7 @@
 //! Distance along the road network between two road positions: the shortest chain of linked
 //! roads (through junctions), measured along the reference lines, as esmini's position delta
-//! measures it for SynchronizeAction (road-level, either direction from the start, lanes
-//! ignored).
+//! measures it road-level (either direction from the start, lanes ignored). A
+//! SynchronizeAction's distances follow the lane instead (`road_path::path_ends`).
 
 use opendrive::{ContactPoint, RoadNetwork};
 
@@ -18,36 +18,24 @@ pub(crate) fn road_distance(net: &RoadNetwork, a: usize, sa: f64, b: usize, sb: 
 /// exceeds `max`, found without searching the roads beyond (every road end the search settles
 /// before reaching `b` is no farther than the result).
 pub(crate) fn road_distance_within(net: &RoadNetwork, a: usize, sa: f64, b: usize, sb: f64, max: f64) -> Option<f64> {
-    road_path_within(net, a, sa, b, sb, max).map(|(d, _)| d)
-}
-
-/// [`road_distance`] and the end of road `a` the shortest chain leaves it by (`None` when `a`
-/// is `b`): which way the path starts, as esmini's RoadPath::Calculate records in its first
-/// node (the sign of a position delta).
-pub(crate) fn road_path(net: &RoadNetwork, a: usize, sa: f64, b: usize, sb: f64) -> Option<(f64, Option<ContactPoint>)> {
-    road_path_within(net, a, sa, b, sb, f64::INFINITY)
-}
-
-fn road_path_within(net: &RoadNetwork, a: usize, sa: f64, b: usize, sb: f64, max: f64) -> Option<(f64, Option<ContactPoint>)> {
     if a == b {
-        return Some(((sb - sa).abs(), None));
+        return Some((sb - sa).abs());
     }
     let ra = net.roads.get(a)?;
     let rb = net.roads.get(b)?;
-    // Frontier of reached road ends (the far side of a link), with the distance driven so far
-    // and the end of road `a` the chain left by.
-    let mut frontier: Vec<(f64, usize, ContactPoint, ContactPoint)> = Vec::new();
+    // Frontier of reached road ends (the far side of a link), with the distance driven so far.
+    let mut frontier: Vec<(f64, usize, ContactPoint)> = Vec::new();
     let mut settled: Vec<(usize, ContactPoint)> = Vec::new();
-    let push_links = |frontier: &mut Vec<(f64, usize, ContactPoint, ContactPoint)>, road: usize, end: ContactPoint, d: f64, first: ContactPoint| {
+    let push_links = |frontier: &mut Vec<(f64, usize, ContactPoint)>, road: usize, end: ContactPoint, d: f64| {
         for e in net.roads_at(road, end) {
-            frontier.push((d, e.road, e.contact, first));
+            frontier.push((d, e.road, e.contact));
         }
     };
-    push_links(&mut frontier, a, ContactPoint::Start, sa.clamp(0.0, ra.length), ContactPoint::Start);
-    push_links(&mut frontier, a, ContactPoint::End, (ra.length - sa).max(0.0), ContactPoint::End);
+    push_links(&mut frontier, a, ContactPoint::Start, sa.clamp(0.0, ra.length));
+    push_links(&mut frontier, a, ContactPoint::End, (ra.length - sa).max(0.0));
     while settled.len() < MAX_SETTLED {
         let k = (0..frontier.len()).min_by(|&i, &j| frontier[i].0.total_cmp(&frontier[j].0))?;
-        let (d, road, entry, first) = frontier.swap_remove(k);
+        let (d, road, entry) = frontier.swap_remove(k);
         if d > max {
             return None;
         }
@@ -60,14 +48,14 @@ fn road_path_within(net: &RoadNetwork, a: usize, sa: f64, b: usize, sb: f64, max
                 ContactPoint::Start => sb,
                 ContactPoint::End => rb.length - sb,
             };
-            return Some((d + along.max(0.0), Some(first)));
+            return Some(d + along.max(0.0));
         }
         let Some(r) = net.roads.get(road) else { continue };
         let exit = match entry {
             ContactPoint::Start => ContactPoint::End,
             ContactPoint::End => ContactPoint::Start,
         };
-        push_links(&mut frontier, road, exit, d + r.length, first);
+        push_links(&mut frontier, road, exit, d + r.length);
     }
     None
 }

@@ -1,9 +1,10 @@
 //! The shape of the road path between two road positions as esmini's `Position::Delta` uses
 //! it for a lateral distance (RoadPath::Calculate): a shortest chain of linked roads searched
 //! from the first position in both directions, following its lane (RoadPath::CheckRoad drops
-//! a road its lane does not continue into, Road::GetConnectingLaneId), of which only the ends
-//! matter — which end of the first road it leaves by, which end of the last road before the
-//! second position's road it leaves by, and whether a lane id keeps its sign along the chain.
+//! a road its lane does not continue into, Road::GetConnectingLaneId): which end of the first
+//! road it leaves by, which end of the last road before the second position's road it leaves
+//! by, whether a lane id keeps its sign along the chain, and its length (a SynchronizeAction's
+//! distances).
 
 use opendrive::{section_at_end, ContactPoint, ElementType, JunctionType, LaneRef, RoadEnd, RoadNetwork};
 
@@ -11,7 +12,7 @@ use opendrive::{section_at_end, ContactPoint, ElementType, JunctionType, LaneRef
 const MAX_SETTLED: usize = 512;
 
 /// The ends of the path from road `a` to another road (see the module doc).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct PathEnds {
     /// The end of road `a` the path leaves by.
     pub first_exit: ContactPoint,
@@ -20,6 +21,22 @@ pub(crate) struct PathEnds {
     /// Lane ids change sign along the path (an odd number of end-to-end or start-to-start
     /// links: the roads run against each other).
     pub lanes_flip: bool,
+    /// The end of the target road the path enters by, and the distance to it from the first
+    /// position (RoadPath::Calculate's distance less the part on the target road).
+    pub entry: ContactPoint,
+    pub to_entry: f64,
+}
+
+impl PathEnds {
+    /// RoadPath::Calculate's (unsigned) length of the path to s `sb` on the target road of
+    /// length `length_b`.
+    pub(crate) fn length_to(&self, sb: f64, length_b: f64) -> f64 {
+        self.to_entry
+            + match self.entry {
+                ContactPoint::Start => sb,
+                ContactPoint::End => length_b - sb,
+            }
+    }
 }
 
 /// One reached road end: distance so far, road, the end it was entered by, the lane entered
@@ -68,7 +85,7 @@ pub(crate) fn path_ends(net: &RoadNetwork, a: usize, sa: f64, lane_a: i32, b: us
         }
         settled.push((road, entry));
         if road == b {
-            return Some(PathEnds { first_exit: first, last_exit: last, lanes_flip: flip });
+            return Some(PathEnds { first_exit: first, last_exit: last, lanes_flip: flip, entry, to_entry: d });
         }
         let Some(r) = net.roads.get(road) else { continue };
         push(&mut frontier, road, section_at_end(r, entry), lane, entry.opposite(), d + r.length, Some(first), flip);

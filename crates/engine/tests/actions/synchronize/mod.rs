@@ -3,5 +3,6 @@
 mod basic;
 mod master_moving_away;
 mod master_standing;
+mod on_trajectories;
 mod tolerance;
 mod world_targets;
