@@ -1,11 +1,11 @@
 //! Pitch and roll of an entity as esmini's AngleCondition reads them (TrigByAngle, with
-//! Position's road pitch and roll). On a road the entity lies on the surface: the road's
-//! pitch (−atan of the elevation slope, nose down positive) and roll (the superelevation),
-//! both turned around when it faces against s. Following a polyline trajectory whose vertices
+//! Position's pitch and roll). On a road the entity lies on the surface: esmini composes the
+//! road's rotation (reference heading, pitch −atan of the elevation slope, roll the
+//! superelevation) with the entity's own (its heading from the road, and the pitch offset
+//! GetPOffset adds where the superelevation changes) as full rotations (Position::EvaluateHPR,
+//! R0R12EulerAngles: `compose`, `on_road`). Following a polyline trajectory whose vertices
 //! give their own heights, it pitches with the path instead (esmini's trajectory vertex
-//! pitch, corner-blended). esmini composes road and relative angles as full rotations
-//! (R0R12EulerAngles) and adds a pitch offset on banked roads; those second-order terms are
-//! not reproduced.
+//! pitch, corner-blended).
 
 use crate::actions::state::ActionRt;
 use crate::entities::Entity;
@@ -13,7 +13,7 @@ use crate::roads::banking::roll_at;
 use crate::roads::road_follow::wrap;
 use crate::roads::LanePos;
 use crate::sim::Sim;
-use opendrive::RoadNetwork;
+use opendrive::{Road, RoadNetwork};
 use std::f64::consts::FRAC_PI_2;
 
 /// The road's pitch and roll along its s direction at `lp`.
@@ -23,13 +23,77 @@ pub(crate) fn road_pitch_roll(net: &RoadNetwork, lp: &LanePos) -> (f64, f64) {
     (-road.elevation_slope_at(s).atan(), roll_at(road, s).0)
 }
 
-/// Pitch and roll of entity `e` lying on the road surface where it is (turned around when it
-/// faces against s); (0, 0) off the road.
+/// Pitch and roll of entity `e` lying on the road surface where it is: the road's rotation
+/// composed with the entity's heading from the road and GetPOffset's pitch (`on_road`; on a
+/// level stretch the road's own, turned around when the entity faces against s); (0, 0) off
+/// the road.
 pub(crate) fn surface_pitch_roll(net: &RoadNetwork, e: &Entity) -> (f64, f64) {
     let Some(lp) = e.lane else { return (0.0, 0.0) };
+    let Some(road) = net.roads.get(lp.road) else { return (0.0, 0.0) };
+    let s = lp.s.clamp(0.0, road.length);
+    if let Some(t) = lp.pose(net).map(|q| q.t) {
+        // esmini's h_relative: the turn from the road that moving keeps (the yaw offset from
+        // the way the entity faces), and the lane's drift GetHOffset adds to it.
+        let h_relative = e.yaw_offset + if lp.dir < 0.0 { std::f64::consts::PI } else { 0.0 };
+        let drift = crate::positions::lane_drift(net, lp.road, lp.lane_id, s);
+        if let Some([_, p, r]) = on_road(road, s, t, h_relative + drift, h_relative) {
+            return (p, r);
+        }
+    }
     let (p, r) = road_pitch_roll(net, &lp);
-    let facing = lp.pose(net).map_or(1.0, |q| if wrap(e.h - q.road_heading).abs() <= FRAC_PI_2 { 1.0 } else { -1.0 });
+    let h_ref = crate::roads::pose_memo::reference_pose(road, s).hdg;
+    let facing = if wrap(e.h - h_ref).abs() <= FRAC_PI_2 { 1.0 } else { -1.0 };
     (p * facing, r * facing)
+}
+
+/// esmini's R0R12EulerAngles: the rotation `road` = (heading, pitch, roll), Rz·Ry·Rx,
+/// followed by `rel`, as heading in [0, 2π), pitch and roll in (−π, π] (esmini puts those in
+/// [0, 2π) too: the same angles). The matrix product's terms in esmini's order, and its
+/// guard against gimbal lock; with no pitch and roll the heading is `entities::
+/// esmini_euler_heading`'s to the bit.
+pub(crate) fn compose(road: [f64; 3], rel: [f64; 3]) -> [f64; 3] {
+    let m0 = rotation(road);
+    let m1 = rotation(rel);
+    let mut m = [[0.0; 3]; 3];
+    for (i, row) in m.iter_mut().enumerate() {
+        for (j, v) in row.iter_mut().enumerate() {
+            for k in 0..3 {
+                *v += m0[i][k] * m1[k][j];
+            }
+        }
+    }
+    m[0][0] = crate::entities::gimbal_guard(m[0][0]);
+    m[2][2] = crate::entities::gimbal_guard(m[2][2]);
+    let h = crate::entities::wrap_2pi(m[1][0].atan2(m[0][0]));
+    let p = (-m[2][0]).atan2((m[2][1] * m[2][1] + m[2][2] * m[2][2]).sqrt());
+    let r = m[2][1].atan2(m[2][2]);
+    [h, p, r]
+}
+
+/// Rz(h)·Ry(p)·Rx(r), each entry as esmini's R0R12EulerAngles writes it.
+fn rotation([h, p, r]: [f64; 3]) -> [[f64; 3]; 3] {
+    let (sx, cx) = h.sin_cos();
+    let (sy, cy) = p.sin_cos();
+    let (sz, cz) = r.sin_cos();
+    [[cx * cy, cx * sy * sz - sx * cz, sx * sz + cx * sy * cz], [sx * cy, cx * cz + sx * sy * sz, sx * sy * cz - cx * sz], [-sy, cy * sz, cy * cz]]
+}
+
+/// The orientation (heading, pitch, roll) esmini gives a position at (s, t) of `road` (t along
+/// the surface) turned by `h_rel` from the road's reference heading, with no pitch or roll of
+/// its own (Position::EvaluateHPR): the road's rotation composed with (h_rel, GetPOffset, 0),
+/// where GetPOffset = cos(h_relative)·atan(tan(superelevation′)·−t) reads the relative heading
+/// the position held before (`offset_h_rel`: 0 for a position made afresh, such as a
+/// scenario's WorldPosition). `None` where the road is level there (no slope, roll or change
+/// of roll): then the heading is the plain sum and pitch and roll are 0.
+pub(crate) fn on_road(road: &Road, s: f64, t: f64, h_rel: f64, offset_h_rel: f64) -> Option<[f64; 3]> {
+    let slope = road.elevation_slope_at(s);
+    let (roll, rate) = roll_at(road, s);
+    if slope == 0.0 && roll == 0.0 && rate == 0.0 {
+        return None;
+    }
+    let h_road = crate::roads::pose_memo::reference_pose(road, s).hdg;
+    let p_offset = offset_h_rel.cos() * (rate.tan() * -t).atan();
+    Some(compose([h_road, -slope.atan(), roll], [h_rel, p_offset, 0.0]))
 }
 
 impl<'a> Sim<'a> {

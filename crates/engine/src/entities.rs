@@ -198,7 +198,9 @@ impl Entity {
     /// of the types esmini snaps the entity's own position to (a pedestrian's include sidewalks).
     pub(crate) fn set_world(&mut self, net: Option<&RoadNetwork>, x: f64, y: f64, z: Option<f64>, h: f64) {
         let sidewalks = self.kind == EntityKind::Pedestrian;
-        self.set_world_snapping(net, x, y, z, h, sidewalks);
+        // The entity's own position: GetPOffset reads the heading from the road it held.
+        let prior_h_rel = self.lane.map_or(0.0, |l| self.yaw_offset + if l.dir < 0.0 { std::f64::consts::PI } else { 0.0 });
+        self.place_world(net, x, y, z, h, sidewalks, prior_h_rel);
     }
 
     /// Where esmini leaves an entity whose position it could not set: the origin, heading 0,
@@ -218,6 +220,19 @@ impl Entity {
     /// position of its own, which snaps to driving lanes only, whatever the entity (esmini's
     /// TeleportAction: Position::CopyLocation).
     pub(crate) fn set_world_snapping(&mut self, net: Option<&RoadNetwork>, x: f64, y: f64, z: Option<f64>, h: f64, sidewalks: bool) {
+        // The teleport's position was made afresh (relative heading 0 for GetPOffset).
+        self.place_world(net, x, y, z, h, sidewalks, 0.0);
+    }
+
+    /// Place the entity at a world pose facing `h` (esmini's Position::SetInertiaPosMode with
+    /// an absolute heading): where the road is sloped or banked, the heading esmini's position
+    /// then holds is the road's rotation composed with the turn from it (EvaluateHPR, see
+    /// `attitude::on_road`: on a banked road GetPOffset's pitch turns it), which a
+    /// RelativeObjectPosition or a trajectory starting there takes; the turn from the lane
+    /// (what moving along it keeps) is the plain difference; beyond the road's end the road
+    /// is taken as level. `prior_h_rel`: the heading from the road the position held before.
+    #[allow(clippy::too_many_arguments)]
+    fn place_world(&mut self, net: Option<&RoadNetwork>, x: f64, y: f64, z: Option<f64>, h: f64, sidewalks: bool, prior_h_rel: f64) {
         self.x = x;
         self.y = y;
         self.h = wrap_2pi(h);
@@ -243,6 +258,13 @@ impl Entity {
                 // EvaluateHPR: h_relative = h − h_road − h_offset), which moving adds back.
                 let drift = self.drift(net, &l);
                 self.yaw_offset = wrap(h - drift - if dir < 0.0 { lp.heading + std::f64::consts::PI } else { lp.heading });
+                // Beyond the road's end XYZ2TrackPos leaves the road's pitch and roll at 0.
+                let past_end = crate::roads::past_end::past_road_end(net, lp.road, lp.s, x, y);
+                let tilted =
+                    net.roads.get(lp.road).filter(|_| !past_end).and_then(|r| crate::attitude::on_road(r, lp.s, lp.t, wrap(h - lp.heading), prior_h_rel));
+                if let Some([h3, _, _]) = tilted {
+                    self.h = h3;
+                }
                 self.z = z.unwrap_or_else(|| net.roads.get(lp.road).map_or(0.0, |r| r.elevation_at(lp.s)));
             }
             None => {
@@ -294,7 +316,7 @@ pub(crate) fn wrap_2pi(a: f64) -> f64 {
 
 /// R0R12EulerAngles' guard against gimbal lock: a cosine of magnitude below SMALL_NUMBER
 /// becomes ±SMALL_NUMBER (0 counting as positive).
-fn gimbal_guard(cos: f64) -> f64 {
+pub(crate) fn gimbal_guard(cos: f64) -> f64 {
     let small = crate::dynamics::ESMINI_SMALL_NUMBER;
     if cos.abs() >= small {
         cos
@@ -326,11 +348,7 @@ pub(crate) fn esmini_reported_heading(h: f64) -> f64 {
 /// ±x can differ from `h_road + h_rel` by an ulp, which is what decides which way a looming
 /// car turns past a dead end.
 pub(crate) fn esmini_euler_heading(h_road: f64, h_rel: f64) -> f64 {
-    let (s0, c0) = (h_road.sin(), h_road.cos());
-    let (s1, c1) = (h_rel.sin(), h_rel.cos());
-    let m00 = c0 * c1 + -s0 * s1;
-    let m10 = s0 * c1 + c0 * s1;
-    wrap_2pi(m10.atan2(gimbal_guard(m00)))
+    crate::attitude::compose([h_road, 0.0, 0.0], [h_rel, 0.0, 0.0])[0]
 }
 
 /// Each entity's bounding box `(cx, cy, cz, length, width, height)`, in the order of the

@@ -33,13 +33,23 @@ pub(crate) fn trajectory_placement(
 /// The world pose of a position resolved for a trajectory's vertex or control point. A world
 /// position without a heading faces the road's reference direction where it lies, plus the
 /// lane's drift (esmini's OSCPositionWorld sets such a heading relative to the road, at 0:
-/// Position::SetInertiaPosMode, EvaluateHPR); off the roads, 0.
+/// Position::SetInertiaPosMode, EvaluateHPR); off the roads, 0. On a sloped or banked road
+/// a world position's heading is the one esmini's position holds there, the road's rotation
+/// composed with the turn from it (`attitude::on_road`, a fresh position; level beyond the
+/// road's end).
 pub(crate) fn vertex_pose(pos: &openscenario::Position, net: Option<&RoadNetwork>, entities: &[Entity]) -> Option<Pose> {
     let p = resolve(pos, net, entities).ok()?;
     let h = match (pos, net) {
-        (openscenario::Position::World { h: None, .. }, Some(net)) => {
-            crate::roads::locate::world_to_lane(net, p.x, p.y, None).map_or(p.h, |lp| lp.heading + crate::positions::lane_drift(net, lp.road, lp.lane_id, lp.s))
-        }
+        (openscenario::Position::World { h, .. }, Some(net)) => match crate::roads::locate::world_to_lane(net, p.x, p.y, None) {
+            Some(lp) => {
+                let h = h.map_or_else(|| lp.heading + crate::positions::lane_drift(net, lp.road, lp.lane_id, lp.s), |_| p.h);
+                let past_end = crate::roads::past_end::past_road_end(net, lp.road, lp.s, p.x, p.y);
+                let road = net.roads.get(lp.road).filter(|_| !past_end);
+                let tilted = road.and_then(|r| crate::attitude::on_road(r, lp.s, lp.t, crate::roads::road_follow::wrap(h - lp.heading), 0.0));
+                tilted.map_or(h, |o| o[0])
+            }
+            None => p.h,
+        },
         _ => p.h,
     };
     Some(Pose::new(p.x, p.y, p.z.unwrap_or(0.0), h))

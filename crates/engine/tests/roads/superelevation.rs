@@ -85,11 +85,41 @@ const BESIDE: [(f64, f64, f64, f64); 2] = [(0.0, 40.001531, 1.45188, 5.0), (2.0,
 fn a_relative_object_position_turns_with_the_entity_s_roll() {
     // esmini's Position::EvaluateRelation (RELATIVE_OBJECT) turns (dx, dy, dz) by the entity's
     // heading, pitch and roll (RotateVec3d): rolled 0.5 rad, dy = 3.5 reaches 3.5·cos 0.5 =
-    // 3.07 m across, not 3.5 m. esmini also gives Ego a small pitch (0.02 rad) composed from
-    // the road's roll and the heading the banking adds, which the engine leaves out: it moves
-    // Beside by 0.03 m along x. Found by crates/difftest (m5005/s5005_00182, velodrome.xodr);
-    // expected values: esmini 3.6.0 on the fixture.
+    // 3.07 m across, not 3.5 m. Ego's pitch is not the level road's 0 but the road's roll
+    // composed with the pitch GetPOffset adds where the roll changes, atan(tan 0.01 · 1.75)
+    // (Position::EvaluateHPR, R0R12EulerAngles): 0.02 rad, which moves Beside 0.03 m along x.
+    // Found by crates/difftest (m5005/s5005_00182, velodrome.xodr); expected values: esmini
+    // 3.6.0 on the fixture.
     let run = run_fixture_on("relative_object_banked.xosc", "banked.xodr", 2.0);
     assert_esmini_rows(&run, "Ego", &BANKED_EGO, 1e-3);
-    assert_esmini_rows(&run, "Beside", &BESIDE, 0.05);
+    assert_esmini_rows(&run, "Beside", &BESIDE, 1e-3);
+}
+
+/// esmini's rows (time, x, y, speed) of `banked_world_heading.xosc` (banked.xodr): Ego placed
+/// by a WorldPosition 3 m right of the reference line at s = 50 facing 0.1 rad (absolute),
+/// Beside by a RelativeObjectPosition 20 m behind and 2 m right of Ego, OnSpline by a
+/// TrajectoryPosition 40 m along a straight clothoid spline starting at a WorldPosition
+/// (20, −4) facing 0.
+const WORLD_EGO: [(f64, f64, f64, f64); 3] = [(0.0, 50.0, -3.0, 10.0), (1.0, 60.0, -2.821395, 10.0), (2.0, 70.0, -2.614599, 10.0)];
+const WORLD_BESIDE: [(f64, f64, f64, f64); 3] = [(0.0, 30.311202, -6.825216, 5.0), (1.0, 35.311202, -6.710002, 5.0), (2.0, 40.311202, -6.578016, 5.0)];
+const ON_SPLINE: [(f64, f64, f64, f64); 2] = [(0.0, 59.998685, -3.675664, 0.0), (2.0, 59.998685, -3.675664, 0.0)];
+
+#[test]
+fn a_world_position_on_a_banked_road_holds_the_heading_composed_with_the_road_s_rotation() {
+    // esmini's Position::EvaluateHPR composes the road's rotation (roll 0.5 rad at s = 50)
+    // with the position's own: the absolute heading less the road's (0.1) and the pitch
+    // GetPOffset adds where the roll changes, atan(tan 0.01 · 3.42) with t = −3.42 along the
+    // surface (R0R12EulerAngles). The position then faces 0.1041, not 0.1, and is pitched
+    // 0.034 rad: Beside, turned by that heading, pitch and roll, lands 0.2 m further left
+    // than by the road's roll alone; the spline starts along 0.0081 rad (roll 0.2 and pitch
+    // 0.041 at s = 20, heading 0), so 40 m on it lies 0.32 m left of its start line. Found by
+    // crates/difftest
+    // (s31031_00999, s31031_00657 on pitch_by_super_elevation.xodr); expected values: esmini
+    // 3.6.0 on the fixture.
+    let run = run_fixture_on("banked_world_heading.xosc", "banked.xodr", 2.0);
+    assert_esmini_rows(&run, "Ego", &WORLD_EGO, 1e-3);
+    assert_esmini_rows(&run, "Beside", &WORLD_BESIDE, 1e-3);
+    assert_esmini_rows(&run, "OnSpline", &ON_SPLINE, 1e-3);
+    let e = at(&run, "Ego", 0.0);
+    assert!(close(e.h, 0.104146, 1e-5), "{e:?}");
 }
