@@ -18,7 +18,7 @@ use std::collections::{BTreeMap, BTreeSet};
 
 /// Joints whose end points lie within a strip this wide are left as they are: the section
 /// is cut a little further out, which the lanelets on either side tolerate (m).
-const STRAIGHT: f64 = 0.25;
+pub(crate) const STRAIGHT: f64 = 0.25;
 /// Largest spacing of the slicing lines (m).
 const SLICE: f64 = 0.5;
 /// Closest spacing of the slicing lines (m): an end point nearer than this to a line is
@@ -27,7 +27,7 @@ const MIN_SLICE: f64 = 0.1;
 /// The joint's end points of two lanelets in a chain must meet within this (m).
 const MEET: f64 = 0.01;
 /// Joints spread wider than this are left as they are (m).
-const MAX_SPREAD: f64 = 10.0;
+pub(crate) const MAX_SPREAD: f64 = 10.0;
 
 /// One lane through a joint: the lanelet before it and its successor (in the lane's driving
 /// direction), and whether the lane drives against the first lane of the joint.
@@ -55,7 +55,7 @@ impl Pair {
     }
 }
 
-fn pos_of(net: &LaneletNetwork) -> BTreeMap<u64, usize> {
+pub(crate) fn pos_of(net: &LaneletNetwork) -> BTreeMap<u64, usize> {
     net.lanelets.iter().enumerate().map(|(i, l)| (l.id.get(), i)).collect()
 }
 
@@ -76,7 +76,7 @@ fn chain_prev(net: &LaneletNetwork, pos: &BTreeMap<u64, usize>, b: usize) -> Opt
 }
 
 /// The neighbour of `l` on the side that is `left` along the first lane's direction.
-fn beside(l: &Lanelet, reversed: bool, left: bool) -> Option<Adjacent> {
+pub(crate) fn beside(l: &Lanelet, reversed: bool, left: bool) -> Option<Adjacent> {
     if left != reversed {
         l.adjacent_left
     } else {
@@ -151,7 +151,7 @@ fn group(net: &LaneletNetwork, pos: &BTreeMap<u64, usize>, a: usize) -> Option<V
 
 /// The parameter (vertex index + fraction) where `line` crosses {p : p·n = s}, the crossing
 /// nearest to `near`.
-fn crossing(line: &[V2], n: V2, s: f64, near: V2) -> Option<f64> {
+pub(crate) fn crossing(line: &[V2], n: V2, s: f64, near: V2) -> Option<f64> {
     let mut best: Option<(f64, f64)> = None;
     for (k, w) in line.windows(2).enumerate() {
         let (fa, fb) = (w[0].dot(n) - s, w[1].dot(n) - s);
@@ -178,7 +178,7 @@ fn at(line: &[Point], u: f64) -> Point {
 }
 
 /// The part of `line` between parameters `u0` < `u1`.
-fn part(line: &[Point], u0: f64, u1: f64) -> Vec<Point> {
+pub(crate) fn part(line: &[Point], u0: f64, u1: f64) -> Vec<Point> {
     let mut out = vec![at(line, u0)];
     out.extend(line.iter().enumerate().filter(|&(v, _)| (v as f64) > u0 && (v as f64) < u1).map(|(_, p)| *p));
     out.push(at(line, u1));
@@ -197,7 +197,7 @@ fn grow(mut line: Vec<Point>, n: usize) -> Vec<Point> {
 }
 
 /// Bounds from two parts (made the same length).
-fn bounds(left: Vec<Point>, right: Vec<Point>) -> Option<LaneletBounds> {
+pub(crate) fn bounds(left: Vec<Point>, right: Vec<Point>) -> Option<LaneletBounds> {
     let n = left.len().max(right.len());
     LaneletBounds::new(grow(left, n), grow(right, n)).ok()
 }
@@ -233,7 +233,7 @@ fn pieces(a: &Lanelet, b: &Lanelet, n: V2, lines: &[f64]) -> Option<Vec<LaneletB
 /// (`ends`, where a bound kinks from one lanelet into the next: a section boundary there keeps
 /// the corner, which a border fitted across it would cut), none closer than [`MIN_SLICE`] to
 /// another, at most [`SLICE`] apart.
-fn slicing_lines(mut ends: Vec<f64>, lo: f64, hi: f64) -> Vec<f64> {
+pub(crate) fn slicing_lines(mut ends: Vec<f64>, lo: f64, hi: f64) -> Vec<f64> {
     ends.sort_by(f64::total_cmp);
     let mut fixed = vec![lo];
     for e in ends.into_iter().chain([hi]) {
@@ -255,19 +255,13 @@ fn slicing_lines(mut ends: Vec<f64>, lo: f64, hi: f64) -> Vec<f64> {
     out
 }
 
-/// The slicing lines' normal near `n` (±30°) along which each lane's own two end points lie
+/// The slicing lines' normal near `n` (±30°) along which each lane's own two end points (`own`:
+/// from the right one to the left one) lie
 /// closest together: a slice then holds the end of one lanelet beside the start of its
 /// successor over as little of the lane's length as can be, so each piece stays within a
 /// metre of the lanelets it comes from. Where the lanes fan out (their ends on lines at an
 /// angle) the line through the outermost ends can be a metre off a wide lane's own end.
-fn least_slanted(lanes: &[Pair], net: &LaneletNetwork, n: V2) -> V2 {
-    let own: Vec<V2> = lanes
-        .iter()
-        .filter_map(|p| {
-            let b = &net.lanelets.get(p.a)?.bounds;
-            Some(V2::of(b.left().last()?).sub(V2::of(b.right().last()?)))
-        })
-        .collect();
+pub(crate) fn least_slanted(own: &[V2], n: V2) -> V2 {
     let slant = |m: V2| own.iter().map(|d| d.dot(m).abs()).fold(0.0, f64::max);
     let base = n.y.atan2(n.x);
     let mut best = (slant(n), n);
@@ -336,7 +330,14 @@ pub(crate) fn slice(net: &LaneletNetwork) -> Option<Cut> {
         if hi - lo <= STRAIGHT || hi - lo > MAX_SPREAD {
             continue;
         }
-        let n = least_slanted(&lanes, net, n);
+        let own: Vec<V2> = lanes
+            .iter()
+            .filter_map(|p| {
+                let b = &net.lanelets.get(p.a)?.bounds;
+                Some(V2::of(b.left().last()?).sub(V2::of(b.right().last()?)))
+            })
+            .collect();
+        let n = least_slanted(&own, n);
         let (lo, hi) = spread_along(n);
         if hi - lo > MAX_SPREAD {
             continue;

@@ -36,6 +36,7 @@
 #![cfg_attr(not(test), deny(clippy::print_stdout, clippy::print_stderr))]
 
 mod cuts;
+mod free_ends;
 mod groups;
 mod joints;
 mod lane_kind;
@@ -98,15 +99,18 @@ pub fn export(network: &LaneletNetwork, options: &Options) -> Result<RoadExport,
         return Err(Error::TooLarge { what: "the number of points of a bound", got: most, max: MAX_BOUND_POINTS });
     }
     let tol = options.tolerance.filter(|t| t.is_finite() && *t > 0.0).unwrap_or(DEFAULT_TOLERANCE).max(1e-4);
-    // zig-zag joints are sliced first: the cuts then follow the slices into neighbours
-    let sliced = joints::slice(network);
-    let cut = match sliced {
-        None => cuts::cut(network),
-        Some(s) => match cuts::cut(&s.network) {
-            Some(c) => Some(s.then(c)),
-            None => Some(s),
-        },
-    };
+    // bowed free ends and zig-zag joints are sliced first: the cuts then follow the slices
+    // into neighbours
+    let mut cut: Option<cuts::Cut> = None;
+    let stages: [fn(&LaneletNetwork) -> Option<cuts::Cut>; 3] = [free_ends::slice, joints::slice, cuts::cut];
+    for stage in stages {
+        if let Some(next) = stage(cut.as_ref().map_or(network, |c| &c.network)) {
+            cut = Some(match cut {
+                None => next,
+                Some(prev) => prev.then(next),
+            });
+        }
+    }
     let network = cut.as_ref().map_or(network, |c| &c.network);
     let mut warnings = cut.as_ref().map(|c| c.warnings.clone()).unwrap_or_default();
     let prep = lanelets::prepare_all(network, &mut warnings);

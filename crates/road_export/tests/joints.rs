@@ -1,7 +1,8 @@
-//! Joints whose end points lie on no straight line, sliced (`joints.rs`): here the end of an
-//! intersection's connecting road of four lanes that fans out into two roads, its lanes
-//! ending on two lines at an angle (`test_reading_complex_tl`'s five-lane connecting road
-//! 3667 … 3610, whose ends lie 1.46 m off any straight line).
+//! Joints and free road ends whose end points lie on no straight line, sliced (`joints.rs`,
+//! `free_ends.rs`): the end of an intersection's connecting road of four lanes that fans out
+//! into two roads, its lanes ending on two lines at an angle (`test_reading_complex_tl`'s
+//! five-lane connecting road 3667 … 3610, whose ends lie 1.46 m off any straight line), and a
+//! road of two lanes each way whose free end is bowed (the generator's intersection arms).
 
 use crate::common::read_back;
 use commonroad::*;
@@ -89,4 +90,44 @@ fn a_connecting_road_that_fans_out_on_a_bent_end_round_trips() {
     assert!(c.passes(0.05, 0.01), "{:?}", c.failures(0.05));
     assert_eq!(c.relations_kept, c.relations);
     assert!(e.xodr.contains("type=\"default\""), "still a junction of the intersection");
+}
+
+#[test]
+fn a_bowed_free_end_round_trips() {
+    // three lanes each way along x, from a bowed end x = 1.5 (y / 10.5)² (the middle 1.5 m
+    // ahead of the outer edges; the outer lanes' own ends slanted by 0.83 m) to x = 60;
+    // lanes 1, 2, 3 drive +x (y from -10.5 to 0), lanes 4, 5, 6 drive -x
+    let bow = |y: f64| 1.5 * (y / 10.5) * (y / 10.5);
+    let along = |y: f64, forward: bool| -> Vec<(f64, f64)> {
+        let x0 = bow(y);
+        let v: Vec<(f64, f64)> = (0..=12).map(|k| (x0 + (60.0 - x0) * f64::from(k) / 12.0, y)).collect();
+        if forward {
+            v
+        } else {
+            v.into_iter().rev().collect()
+        }
+    };
+    let mut l = Vec::new();
+    for k in 0..3u64 {
+        // lane k + 1 drives +x between y = -10.5 + 3.5 k and 3.5 above; lane k + 4 mirrors it
+        let (yr, yl) = (-10.5 + 3.5 * k as f64, -7.0 + 3.5 * k as f64);
+        l.push(lanelet(k + 1, &along(yl, true), &along(yr, true), LaneletType::Urban));
+    }
+    for k in 0..3u64 {
+        let (yl, yr) = (3.5 * k as f64, 3.5 * (k + 1) as f64);
+        l.push(lanelet(k + 4, &along(yl, false), &along(yr, false), LaneletType::Urban));
+    }
+    neighbours(&mut l, 0, 1);
+    neighbours(&mut l, 1, 2);
+    neighbours(&mut l, 4, 3); // lane 5's left is lane 4 (both drive -x)
+    neighbours(&mut l, 5, 4);
+    l[2].adjacent_left = Some(Adjacent { lanelet: id(4), driving_dir: DrivingDir::Opposite });
+    l[3].adjacent_left = Some(Adjacent { lanelet: id(3), driving_dir: DrivingDir::Opposite });
+    let net = LaneletNetwork { lanelets: l, ..Default::default() };
+    let e = export(&net, &Options::default()).expect("exports");
+    let c = round_trip::compare(&net, &read_back(&e.xodr));
+    // before: the road's lane section began on a straight line holding the whole bow, so the
+    // outer lanes came back 1.5 m longer and matched nothing
+    assert!(c.passes(0.05, 0.01), "{:?}", c.failures(0.05));
+    assert_eq!(c.relations_kept, c.relations);
 }
