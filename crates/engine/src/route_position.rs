@@ -64,7 +64,8 @@ pub(crate) fn plan_route(route: &Route, net: &RoadNetwork, entities: &[Entity]) 
 /// - the place is the route's road and s at `pathS`, with the lane id (or t) as written — the
 ///   route's direction does not mirror it; a `pathS` outside [0, route length], or a route
 ///   esmini finds no way along, leaves the route at its first waypoint (SetPathS returns before
-///   moving it);
+///   moving it); a path s its anchors carry beyond the last waypoint goes on along the last
+///   road up to its end (`past_route_end`);
 /// - the heading is the road's reference direction turned by a relative angle, never the
 ///   route's direction of travel: FromLaneCoordinates without an orientation turns by π on a
 ///   lane with a positive id (whatever the traffic rule), with one by its h, plus π where the
@@ -134,7 +135,7 @@ fn resolve_route(
             let (true_s, length) = mapped.unwrap_or((path_s, planned.length()));
             if (0.0..=length).contains(&path_s) {
                 let rp = planned.locate(true_s).ok_or("route position outside the route")?;
-                (rp.road, rp.s)
+                past_route_end(net, &planned, true_s).unwrap_or((rp.road, rp.s))
             } else {
                 notes.push(format!(
                     "RoutePosition pathS = {path_s} lies outside route `{}` (0 to {length:.3} m): the position is the route's first waypoint, as in esmini 3.6",
@@ -204,6 +205,22 @@ fn waypoint_roads(route: &Route, net: &RoadNetwork, entities: &[Entity]) -> Opti
 /// The road and s of a route's first waypoint (esmini's route before SetPathS moves it). A
 /// LanePosition on a lane its road does not have there still gives its road and s: esmini's
 /// Position::SetLanePosMode sets both (SetLongitudinalTrackPos) before it finds the lane
+/// Where Route::SetPathS puts a path s that lands beyond the planned route's end (esmini's
+/// anchors count short after a dropped waypoint, `route_anchors`, so a path s within its route
+/// length can): it goes on past the last waypoint along the last road, from where the route
+/// enters it, by what is left, and Position::SetLanePos holds s within that road's ends
+/// ("Unexpected: local_s … out of range"): not the last waypoint but the road's end.
+fn past_route_end(net: &RoadNetwork, planned: &routing::Route, true_s: f64) -> Option<(usize, f64)> {
+    let over = true_s - planned.length();
+    if over <= 0.0 || planned.is_closed() {
+        return None;
+    }
+    let end = planned.locate(planned.length())?;
+    let length = net.roads.get(end.road)?.length;
+    let s = if end.along_s { end.s + over } else { end.s - over };
+    Some((end.road, s.clamp(0.0, length)))
+}
+
 /// missing, and Route::AddWaypoint keeps that waypoint (with lane id 0).
 fn first_waypoint(route: &Route, net: &RoadNetwork, entities: &[Entity]) -> Result<(usize, f64), PositionError> {
     let w = route.waypoints.first().ok_or_else(|| format!("route `{}` has no waypoint", route.name))?;
