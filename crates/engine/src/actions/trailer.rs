@@ -91,7 +91,7 @@ impl<'a> Sim<'a> {
                 return;
             }
         }
-        let current = self.trailers.links.get(tow).copied().flatten();
+        let current = self.trailers.trailer_of(tow);
         if current == Some(trailer) {
             return;
         }
@@ -100,8 +100,9 @@ impl<'a> Sim<'a> {
         }
         if coupler {
             self.trailers.towed_by[trailer] = Some(tow);
-            if hitch {
-                self.trailers.links[tow] = Some(trailer);
+            let slot = self.trailers.hitch_slot(tow);
+            if let (true, Some(l)) = (hitch, self.trailers.links.get_mut(slot)) {
+                *l = Some(trailer);
             }
         }
     }
@@ -111,7 +112,8 @@ impl<'a> Sim<'a> {
     /// ScenarioEngine::defaultController moves it along its lane like any entity no action
     /// moves (where there is no road it stops there, as in esmini's trailer_connect).
     pub(crate) fn disconnect_trailer(&mut self, tow: usize) {
-        if let Some(t) = self.trailers.links.get_mut(tow).and_then(|l| l.take()) {
+        let slot = self.trailers.hitch_slot(tow);
+        if let Some(t) = self.trailers.links.get_mut(slot).and_then(|l| l.take()) {
             if let Some(c) = self.trailers.towed_by.get_mut(t) {
                 *c = None;
             }
@@ -135,14 +137,17 @@ impl<'a> Sim<'a> {
     }
 
     /// Pull every trailer chain behind its front tow vehicle.
+    /// A ghost sharing its owner's hitch pulls the owner's trailer too, after the owner
+    /// (ScenarioEngine::step updates the chains of every front tow vehicle in entity order, the
+    /// ghost last): during the head start the trailer follows the ghost.
     pub(crate) fn pull_trailers(&mut self) {
         for front in 0..self.trailers.links.len() {
-            if self.trailers.links[front].is_none() || self.is_towed(front) {
+            if self.trailers.trailer_of(front).is_none() || self.is_towed(front) {
                 continue;
             }
             let mut tow = front;
             for _ in 0..MAX_CHAIN {
-                let Some(trailer) = self.trailers.links.get(tow).copied().flatten() else { break };
+                let Some(trailer) = self.trailers.trailer_of(tow) else { break };
                 self.pull(tow, trailer);
                 tow = trailer;
             }
@@ -166,7 +171,7 @@ impl<'a> Sim<'a> {
         let (c, s) = (h.cos(), h.sin());
         let mut tow = front;
         for _ in 0..MAX_CHAIN {
-            let Some(trailer) = self.trailers.links.get(tow).copied().flatten() else { break };
+            let Some(trailer) = self.trailers.trailer_of(tow) else { break };
             let hitch = self.trailers.hitch.get(tow).copied().flatten().unwrap_or(0.0);
             let coupler = self.trailers.coupler.get(trailer).copied().flatten().unwrap_or(0.0);
             let Some(tv) = self.entities.get(tow) else { break };

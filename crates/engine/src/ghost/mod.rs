@@ -79,6 +79,7 @@ impl<'a> Sim<'a> {
         copy.controller_active = false;
         self.entities.push(copy);
         let ghost = self.entities.len() - 1;
+        self.share_hitch_with_ghost(ghost, owner);
 
         // Init actions: copies for the ghost, after all others.
         for k in 0..self.init_actions.len() {
@@ -154,6 +155,27 @@ impl<'a> Sim<'a> {
             start_shift: 0.0,
             unmeasured: false,
         });
+    }
+
+    /// esmini's ghost is a copy of its vehicle (Vehicle's copy constructor): with no trailer on
+    /// the owner's hitch yet, the copy keeps the very same TrailerHitch, so a trailer connected
+    /// later (a ConnectTrailerAction in the Init) hangs on both and the ghost pulls it too. (An
+    /// owner already towing gets a ghost with a copy of its trailer in esmini; not modelled:
+    /// that ghost has no hitch here.)
+    fn share_hitch_with_ghost(&mut self, ghost: usize, owner: usize) {
+        let t = &mut self.trailers;
+        if t.links.len() != ghost {
+            return;
+        }
+        let hitch = t.hitch.get(owner).copied().flatten();
+        let shared = hitch.is_some() && t.links.get(owner).copied().flatten().is_none();
+        t.hitch.push(if shared { hitch } else { None });
+        t.coupler.push(t.coupler.get(owner).copied().flatten());
+        t.links.push(None);
+        t.towed_by.push(None);
+        if shared {
+            t.shared_hitch = Some((ghost, owner));
+        }
     }
 
     /// esmini gives only the first such entity a ghost; the others' controllers do nothing.

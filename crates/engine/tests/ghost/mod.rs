@@ -8,4 +8,5 @@ mod head_start_holds_others;
 mod init_trajectory_position;
 mod lateral_only;
 mod restart;
+mod shares_trailer_hitch;
 mod trail_end_lookahead;

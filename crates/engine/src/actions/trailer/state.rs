@@ -12,4 +12,23 @@ pub(crate) struct Trailers {
     pub towed_by: Vec<Option<usize>>,
     pub hitch: Vec<Option<f64>>,
     pub coupler: Vec<Option<f64>>,
+    /// `(ghost, owner)` when the ghost shares its owner's hitch: esmini's ghost is a copy of the
+    /// vehicle (Vehicle's copy constructor) that keeps the same TrailerHitch when no trailer was
+    /// on it yet, so a trailer connected to either later is on both hitches.
+    pub shared_hitch: Option<(usize, usize)>,
+}
+
+impl Trailers {
+    /// Where the hitch side of `e` is kept: its owner's for a ghost sharing it.
+    pub(crate) fn hitch_slot(&self, e: usize) -> usize {
+        match self.shared_hitch {
+            Some((ghost, owner)) if ghost == e => owner,
+            _ => e,
+        }
+    }
+
+    /// The trailer on `e`'s hitch.
+    pub(crate) fn trailer_of(&self, e: usize) -> Option<usize> {
+        self.links.get(self.hitch_slot(e)).copied().flatten()
+    }
 }
