@@ -1,4 +1,5 @@
-//! Global actions: parameter and variable set / modify, traffic-signal state and controller
+//! Global actions: parameter set (a parameter modify is only a warning, as esmini 3.6.0 reads
+//! none), variable set / modify, traffic-signal state and controller
 //! phase (`traffic_signal.rs`; the phase is only a warning, as esmini 3.6.0 runs no
 //! controller), add / delete entity (`add_delete_entity.rs`), environment (recorded in
 //! `Run::environment`); everything else is a warning.
@@ -14,11 +15,13 @@ impl<'a> Sim<'a> {
                     self.warn_action(slot, format!("ParameterSetAction: parameter `{parameter}` was not declared"));
                 }
             }
-            GlobalAction::ParameterModify { parameter, rule } => {
-                if !self.params.modify(parameter, rule) {
-                    self.warn_action(slot, format!("ParameterModifyAction: parameter `{parameter}` is missing or not a number"));
-                }
-            }
+            // esmini 3.6.0 reads only a ParameterAction's SetAction ("ParameterAction
+            // ModifyAction not supported yet", ScenarioReader::parseOSCGlobalAction): the event
+            // runs without it and the parameter keeps its value.
+            GlobalAction::ParameterModify { parameter, .. } => self.warn_action(
+                slot,
+                format!("ParameterModifyAction on `{parameter}` is not supported by esmini 3.6.0; the parameter keeps its value"),
+            ),
             GlobalAction::VariableSet { variable, value } => {
                 if !self.vars.set(variable, value) {
                     self.warn_action(slot, format!("VariableSetAction: variable `{variable}` was not declared"));

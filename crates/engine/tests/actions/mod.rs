@@ -9,6 +9,7 @@ mod longitudinal_distance_and_acc;
 mod longitudinal_distance_freespace;
 mod longitudinal_distance_junction_arm;
 mod override_controller_value;
+mod parameter_modify_ignored;
 mod recorded;
 mod route_world_waypoints;
 mod routes;
