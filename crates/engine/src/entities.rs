@@ -245,8 +245,12 @@ impl Entity {
         let hint = self.lane.map(|l| (l.road, l.s));
         match crate::roads::locate::world_to_lane(net, x, y, hint) {
             Some(lp) => {
-                let rel = wrap(h - lp.heading);
-                let dir = if rel.abs() <= std::f64::consts::FRAC_PI_2 + 1e-9 { 1.0 } else { -1.0 };
+                // esmini's IsAngleForward of the heading its position holds (a heading within a
+                // micro-radian of ±π/2 is 1e-6 off, `esmini_reported_heading`): against the
+                // road only strictly beyond a right angle, so a car facing +y put across a road
+                // along +x by a heading rounded a hair past π/2 drives against s.
+                let rel = wrap(esmini_reported_heading(h) - lp.heading);
+                let dir = if rel.abs() <= std::f64::consts::FRAC_PI_2 { 1.0 } else { -1.0 };
                 // esmini attaches the entity to the nearest lane of the types it snaps to
                 // (LaneSection::GetClosestLaneIdx), measuring the offset from that lane's centre.
                 let (lane_id, offset) =

@@ -64,13 +64,12 @@ impl AccRt {
 }
 
 impl<'a> Sim<'a> {
-    /// One step of the ACC (or ALKS) controller of entity `e`, after the default controller
-    /// (`step_controllers_in_order`).
-    pub(super) fn step_acc(&mut self, e: usize, a: &mut AccRt, dt: f64) {
-        // esmini's ScenarioEngine::step, before it steps the controllers: an entity at the end of
-        // its road since the step before that did not move in the last step gets speed 0 (which
-        // the ACC then takes as its set speed and brakes to). The default controller's entities
-        // get this in `default_controller`; the ACC moves its own in override mode.
+    /// esmini's ScenarioEngine::step, before it steps any controller: an entity at the end of
+    /// its road since the step before that did not move in the last step gets speed 0 (which
+    /// its ACC then takes as its set speed and brakes to; a controller stepping before that ACC
+    /// sees the 0). The default controller's entities get this in `default_controller`; the ACC
+    /// moves its own in override mode.
+    pub(crate) fn acc_stop_at_road_end(&mut self, e: usize, a: &mut AccRt) {
         if a.override_mode {
             // ...and notes the end of the road (the EndOfRoadCondition's time stamp) from the
             // status of that last move: one step after the arrival, where the default
@@ -88,6 +87,11 @@ impl<'a> Sim<'a> {
                 }
             }
         }
+    }
+
+    /// One step of the ACC (or ALKS) controller of entity `e`, after the default controller
+    /// (`step_controllers_in_order`).
+    pub(super) fn step_acc(&mut self, e: usize, a: &mut AccRt, dt: f64) {
         let Some(me) = self.entities.get(e) else { return };
         // A speed another action (or controller) set becomes the new set speed, in either mode
         // (esmini's ControllerACC::Step: its additive-only test is commented out). In override

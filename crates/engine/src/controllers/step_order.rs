@@ -30,6 +30,15 @@ impl<'a> Sim<'a> {
     /// `controller_`). In frame 0 (`frame0`, dt 0) esmini steps
     /// them too; the ghost followers are left out there, their ghost not yet having a trail.
     pub(crate) fn step_controllers_in_order(&mut self, dt: f64, frame0: bool) {
+        // The engine's stop at a road's end comes before every controller's step.
+        self.for_each_controller(
+            |c| matches!(c, ControllerRt::Acc(a) if a.active),
+            |sim, e, c| {
+                if let ControllerRt::Acc(a) = c {
+                    sim.acc_stop_at_road_end(e, a);
+                }
+            },
+        );
         self.for_each_controller(
             |c| match c {
                 ControllerRt::FollowGhost(f) => f.active && !frame0,

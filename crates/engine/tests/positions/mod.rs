@@ -1,5 +1,6 @@
 //! Positions given in road and lane terms, as esmini resolves them.
 
+mod heading_across_road;
 mod lane_drift_headings;
 mod relative_across_junctions;
 mod relative_junction_tie;
