@@ -8,6 +8,12 @@
 //! line, thin slices between the lines, and the part of its successor after the last. Every
 //! piece lies within a metre of the lanelets it comes from, so a reader's chain of pieces
 //! compares as those lanelets; no area is added or lost (the pieces tile the two lanelets).
+//!
+//! The lanes may also fan out into separate roads there (or come together from them): a
+//! connecting road of five lanes whose first two go on into one road and the other three into
+//! another, its end bent where they part. At an intersection's edge the slices belong to the
+//! road outside it (the connecting road, which is not cut, ends on the first line); a joint
+//! inside an intersection is left as it is.
 //! Warnings about a piece name the lanelet it was cut from.
 
 use crate::cuts::Cut;

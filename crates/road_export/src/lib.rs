@@ -1,8 +1,9 @@
 //! `road_export` — a CommonRoad lanelet network as an OpenDRIVE 1.8 road network (it knows
 //! nothing of OpenSCENARIO).
 //!
-//! A lanelet beside a shorter neighbour is first cut where the neighbour starts or ends
-//! (`cuts`). Lanelets side by side that share their bounds become the lanes of one lane
+//! Free road ends and joints whose points lie on no straight line are first sliced on straight
+//! lines (`free_ends`, `joints`), and a lanelet beside a shorter neighbour is cut where the
+//! neighbour starts or ends (`cuts`). Lanelets side by side that share their bounds become the lanes of one lane
 //! section (`groups`); each section gets a reference line along its middle, perpendicular to its
 //! first and last cross-section (`reference`, `section`), and every lane border is written as
 //! cubic offsets from it, fitted to the lanelet bounds within [`Options::tolerance`]
