@@ -195,6 +195,7 @@ impl<'a> Sim<'a> {
                 if let Some(en) = self.entities.get_mut(e) {
                     en.controller_active = on;
                 }
+                self.switch_off_conflicting(e, *lateral, *longitudinal);
                 self.activate_controller(e, lateral.unwrap_or(true), longitudinal.unwrap_or(true));
                 ActionRt::Done
             }

@@ -85,6 +85,12 @@ impl FollowRouteRt {
     pub(crate) fn overrides_longitudinal(&self) -> bool {
         self.holds_entity() && self.longitudinal
     }
+
+    /// Whether it is active on the longitudinal domain (it operates on both; `longitudinal`
+    /// says whether its activation asked for this one).
+    pub(crate) fn active_longitudinal(&self) -> bool {
+        self.active && self.longitudinal
+    }
 }
 
 /// esmini's route waypoints for `route` through `scenario` waypoints, as Route::AddWaypoint
@@ -371,7 +377,7 @@ impl<'a> Sim<'a> {
     }
 
     /// esmini's `ControllerFollowRoute::Deactivate`: drop the route; stop in test mode.
-    fn deactivate_follow_route(&mut self, e: usize, f: &mut FollowRouteRt) {
+    pub(super) fn deactivate_follow_route(&mut self, e: usize, f: &mut FollowRouteRt) {
         if let Some(en) = self.entities.get_mut(e) {
             if f.test_mode {
                 // Object::SetSpeed marks the speed as set: prepareGroundTruth does not take

@@ -146,6 +146,42 @@ impl<'a> Sim<'a> {
         self.controllers.iter_mut().filter(|c| c.entity == e).max_by_key(|c| c.assigned).and_then(|c| c.rt.as_mut())
     }
 
+    /// Before OpenSCENARIO 1.3 only one controller is active at a time: esmini's
+    /// ActivateControllerAction::Start first switches off, whole, the first controller of the
+    /// entity's list (assignment order) active on a domain the action turns on ("true"; the
+    /// longitudinal domain asked first), one at most (`Object::GetControllerActiveOnDomainMask`,
+    /// `Controller::Deactivate`). From 1.3 on it switches no other controller off.
+    pub(crate) fn switch_off_conflicting(&mut self, e: usize, lateral: Option<bool>, longitudinal: Option<bool>) {
+        if self.scenario.header.rev_minor >= 3 {
+            return;
+        }
+        for domain_lateral in [false, true] {
+            let asked = if domain_lateral { lateral } else { longitudinal };
+            if asked != Some(true) {
+                continue;
+            }
+            let first = (0..self.controllers.len())
+                .filter(|&k| self.controllers.get(k).is_some_and(|c| c.entity == e && c.rt.as_ref().is_some_and(|rt| rt.active_on(domain_lateral))))
+                .min_by_key(|&k| self.controllers.get(k).map_or(0, |c| c.assigned));
+            let Some(k) = first else { continue };
+            let Some(mut rt) = self.controllers.get_mut(k).and_then(|c| c.rt.take()) else { return };
+            match &mut rt {
+                ControllerRt::Acc(a) => a.active = false,
+                ControllerRt::AlksR157(a) => a.active = false,
+                ControllerRt::NaturalDriver(n) => n.active = false,
+                ControllerRt::FollowGhost(f) => f.active = false,
+                ControllerRt::FollowReference(f) => f.active = false,
+                ControllerRt::FollowRoute(f) => self.deactivate_follow_route(e, f),
+                ControllerRt::Looming(l) => l.active = false,
+                ControllerRt::OffroadFollower(f) => f.active = false,
+            }
+            if let Some(c) = self.controllers.get_mut(k) {
+                c.rt = Some(rt);
+            }
+            return;
+        }
+    }
+
     /// ActivateControllerAction (or an AssignControllerAction that activates) on entity `e` for
     /// the given domains: its most recently assigned controller (the one the AssignControllerAction
     /// just assigned). esmini activates a controller on the requested domains it operates on

@@ -52,4 +52,34 @@ impl ControllerRt {
             ControllerRt::OffroadFollower(f) => f.active,
         }
     }
+
+    /// Whether it is active on the lateral (`lateral`) or the longitudinal domain, as esmini's
+    /// `Controller::IsActiveOnDomains` asks: the ACC, the looming controller and NaturalDriver
+    /// operate on the longitudinal domain only; the others on both, on those their activation
+    /// asked for where the state keeps that (a ghost follower, FollowReference and FollowRoute
+    /// keep no lateral flag: active is active on it).
+    pub(crate) fn active_on(&self, lateral: bool) -> bool {
+        match self {
+            ControllerRt::Acc(a) => !lateral && a.active,
+            ControllerRt::Looming(l) => !lateral && l.active,
+            ControllerRt::NaturalDriver(n) => !lateral && n.active,
+            ControllerRt::AlksR157(a) => a.active && if lateral { a.lateral } else { a.longitudinal },
+            ControllerRt::FollowGhost(f) => f.active && (lateral || f.longitudinal),
+            ControllerRt::FollowReference(f) => f.active,
+            ControllerRt::FollowRoute(f) => {
+                if lateral {
+                    f.active
+                } else {
+                    f.active_longitudinal()
+                }
+            }
+            ControllerRt::OffroadFollower(f) => {
+                if lateral {
+                    f.holds_lateral()
+                } else {
+                    f.holds_longitudinal()
+                }
+            }
+        }
+    }
 }

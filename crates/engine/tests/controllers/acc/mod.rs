@@ -1,6 +1,7 @@
 //! The ACC: what a controller in override mode does to the storyboard's actions on its entity,
 //! its first frame and its look-ahead.
 
+mod activate_before_1_3_switches_off;
 mod assigned_beside_looming;
 mod first_frame;
 mod lane_change_off_driving_lanes;
