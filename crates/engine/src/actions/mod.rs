@@ -189,14 +189,20 @@ impl<'a> Sim<'a> {
                 }
                 ActionRt::Done
             }
-            PrivateAction::ActivateController { lateral, longitudinal, .. } => {
+            PrivateAction::ActivateController { lateral, longitudinal, controller_ref, object_controller_ref, .. } => {
+                // esmini's ScenarioReader::parseActivateControllerAction reads the name from
+                // `controllerRef`, and from a 1.3 file from `objectControllerRef` instead.
+                let name = if self.scenario.header.rev_minor >= 3 { object_controller_ref } else { controller_ref };
                 let on = lateral.unwrap_or(true) || longitudinal.unwrap_or(true);
                 self.activate_outside_driver(slot, e, lateral.unwrap_or(true), longitudinal.unwrap_or(true));
                 if let Some(en) = self.entities.get_mut(e) {
                     en.controller_active = on;
                 }
-                self.switch_off_conflicting(e, *lateral, *longitudinal);
-                self.activate_controller(e, lateral.unwrap_or(true), longitudinal.unwrap_or(true));
+                // a name that names none of the entity's controllers activates nothing
+                if name.as_deref().is_none_or(|n| self.controllers.iter().any(|c| c.entity == e && c.name == n)) {
+                    self.switch_off_conflicting(e, *lateral, *longitudinal);
+                }
+                self.activate_controller(e, name.as_deref(), lateral.unwrap_or(true), longitudinal.unwrap_or(true));
                 ActionRt::Done
             }
             PrivateAction::AssignController { controller, activate_longitudinal, activate_lateral, .. } => {
@@ -207,7 +213,7 @@ impl<'a> Sim<'a> {
                         self.activate_outside_driver(slot, e, lat, long);
                     }
                     if lat || long {
-                        self.activate_controller(e, lat, long);
+                        self.activate_controller(e, None, lat, long);
                     }
                 }
                 ActionRt::Done

@@ -137,13 +137,20 @@ impl<'a> Sim<'a> {
         self.any_controller |= rt.is_some();
         let rank = self.controller_rank(assigned_by);
         let at = self.controllers.iter().position(|x| x.rank > rank).unwrap_or(self.controllers.len());
-        self.controllers.insert(at, ControllerSlot { entity: e, rank, assigned_by, assigned, rt });
+        self.controllers.insert(at, ControllerSlot { entity: e, rank, assigned_by, assigned, name: c.name.clone(), rt });
     }
 
-    /// The controller an ActivateControllerAction naming none activates: entity `e`'s most
-    /// recently assigned (esmini's `controllers_.back()`); `None` when that is not modelled.
-    fn last_assigned_mut(&mut self, e: usize) -> Option<&mut ControllerRt> {
-        self.controllers.iter_mut().filter(|c| c.entity == e).max_by_key(|c| c.assigned).and_then(|c| c.rt.as_mut())
+    /// The controller an ActivateControllerAction activates: the entity's first one of that
+    /// name in its list (Object::GetController; none when no such name: esmini logs an error
+    /// and activates nothing), or, naming none, entity `e`'s most recently assigned (esmini's
+    /// `controllers_.back()`); `None` also when that is not modelled.
+    fn to_activate_mut(&mut self, e: usize, name: Option<&str>) -> Option<&mut ControllerRt> {
+        let mine = self.controllers.iter_mut().filter(|c| c.entity == e);
+        match name {
+            Some(name) => mine.filter(|c| c.name == name).min_by_key(|c| c.assigned),
+            None => mine.max_by_key(|c| c.assigned),
+        }
+        .and_then(|c| c.rt.as_mut())
     }
 
     /// Before OpenSCENARIO 1.3 only one controller is active at a time: esmini's
@@ -189,12 +196,12 @@ impl<'a> Sim<'a> {
     /// the entity's other active controllers stay on (OpenSCENARIO 1.3: ActivateControllerAction::
     /// Start switches the domains off on the controller it then activates; an
     /// AssignControllerAction switches none off).
-    pub(crate) fn activate_controller(&mut self, e: usize, lateral: bool, longitudinal: bool) {
+    pub(crate) fn activate_controller(&mut self, e: usize, name: Option<&str>, lateral: bool, longitudinal: bool) {
         let Some(speed) = self.entities.get(e).map(|en| en.speed) else { return };
         let (net, scenario) = (self.net, self.scenario);
         let Some(en) = self.entities.get(e).cloned() else { return };
         let mut align = false;
-        match self.last_assigned_mut(e) {
+        match self.to_activate_mut(e, name) {
             Some(ControllerRt::Acc(a)) => a.activate(speed, longitudinal),
             Some(ControllerRt::AlksR157(a)) => a.activate(speed, lateral, longitudinal),
             Some(ControllerRt::NaturalDriver(a)) => a.activate(speed, longitudinal),

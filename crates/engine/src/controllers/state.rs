@@ -17,6 +17,8 @@ pub(crate) struct ControllerSlot {
     /// When it was last assigned (a count): the entity's most recent one is the one an
     /// ActivateControllerAction naming no controller activates (`controllers_.back()`).
     pub assigned: u64,
+    /// Its name (Object::GetController finds a controller by it).
+    pub name: String,
     /// Its state; `None` for a type osc2cr does not model (and while it steps).
     pub rt: Option<ControllerRt>,
 }

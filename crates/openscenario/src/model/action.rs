@@ -198,7 +198,10 @@ pub enum PrivateAction {
         longitudinal: Option<bool>,
         lighting: Option<bool>,
         animation: Option<bool>,
+        /// `controllerRef` (before 1.3).
         controller_ref: Option<String>,
+        /// `objectControllerRef` (1.3).
+        object_controller_ref: Option<String>,
     },
     AssignController {
         /// None: the action names no controller (e.g. an empty ObjectController).

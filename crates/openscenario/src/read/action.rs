@@ -256,6 +256,7 @@ fn activate_controller(cx: &Cx, e: &Elem) -> Result<PrivateAction, Error> {
         lighting: cx.opt_bool(e, "lighting")?,
         animation: cx.opt_bool(e, "animation")?,
         controller_ref: cx.opt_reference(e, "controllerRef")?,
+        object_controller_ref: cx.opt_reference(e, "objectControllerRef")?,
     })
 }
 

@@ -164,7 +164,8 @@ fn version_1_0_forms_read_into_the_same_model() {
             longitudinal: Some(true),
             lighting: None,
             animation: None,
-            controller_ref: None
+            controller_ref: None,
+            object_controller_ref: None
         })
     );
 }

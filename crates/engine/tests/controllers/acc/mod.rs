@@ -2,6 +2,7 @@
 //! its first frame and its look-ahead.
 
 mod activate_before_1_3_switches_off;
+mod activate_by_controller_ref;
 mod assigned_beside_looming;
 mod first_frame;
 mod lane_change_off_driving_lanes;
