@@ -120,6 +120,17 @@ fn scan_side(road: &Road, section: usize, left: bool, s: f64, t: f64) -> SideSca
     out
 }
 
+/// The lane position of a point at (s, horizontal t) of `road`, `along` its along-track
+/// residual (non-zero only past the road's ends).
+fn lane_position(road: usize, r: &Road, s: f64, t: f64, along: f64, heading: f64, surface_t: &dyn Fn(&Road, f64, f64) -> f64) -> Option<LanePosition> {
+    let t = surface_t(r, s, t);
+    let section = r.section_index_at(s);
+    let (lane_id, borders, lateral) = lane_at(r, section, s, t)?;
+    let off_end = if along.abs() > END_TOLERANCE { along.abs() } else { 0.0 };
+    let distance = if off_end > 0.0 || lateral > 0.0 { off_end.hypot(lateral) } else { 0.0 };
+    Some(LanePosition { road, section, lane_id, s, t, offset: t - borders.center(), distance, heading })
+}
+
 impl RoadNetwork {
     /// Locate (x, y) on road `road` starting the projection at `s_guess`.
     pub fn locate_on_road(&self, road: usize, x: f64, y: f64, s_guess: f64) -> Option<LanePosition> {
@@ -132,12 +143,19 @@ impl RoadNetwork {
     pub fn locate_on_road_by(&self, road: usize, x: f64, y: f64, s_guess: f64, surface_t: &dyn Fn(&Road, f64, f64) -> f64) -> Option<LanePosition> {
         let r = self.roads.get(road)?;
         let (s, t, along, heading) = project_with_heading(r, x, y, s_guess);
-        let t = surface_t(r, s, t);
-        let section = r.section_index_at(s);
-        let (lane_id, borders, lateral) = lane_at(r, section, s, t)?;
-        let off_end = if along.abs() > END_TOLERANCE { along.abs() } else { 0.0 };
-        let distance = if off_end > 0.0 || lateral > 0.0 { off_end.hypot(lateral) } else { 0.0 };
-        Some(LanePosition { road, section, lane_id, s, t, offset: t - borders.center(), distance, heading })
+        lane_position(road, r, s, t, along, heading, surface_t)
+    }
+
+    /// (x, y) placed on road `road` at the given `s` (found by another rule than the exact
+    /// projection): t is the signed distance from the reference line's tangent at s, and the
+    /// point counts as within the road's s range.
+    pub fn locate_at_s_by(&self, road: usize, x: f64, y: f64, s: f64, surface_t: &dyn Fn(&Road, f64, f64) -> f64) -> Option<LanePosition> {
+        let r = self.roads.get(road)?;
+        let s = s.clamp(0.0, r.length);
+        let p = r.reference_pose(s);
+        let (sin, cos) = p.hdg.sin_cos();
+        let (dx, dy) = (x - p.x, y - p.y);
+        lane_position(road, r, s, -dx * sin + dy * cos, 0.0, p.hdg, surface_t)
     }
 
     /// Best s guess per road from the candidate segments: (road, s, squared distance).

@@ -17,6 +17,7 @@ pub(crate) mod road_distance;
 pub(crate) mod road_follow;
 pub(crate) mod road_id;
 pub(crate) mod road_path;
+pub(crate) mod track_pos;
 pub(crate) mod zero_width;
 
 pub(crate) use lane_position::LanePos;

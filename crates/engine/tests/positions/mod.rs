@@ -16,3 +16,4 @@ mod route_position_missing_lane_waypoint;
 mod route_position_on_missing_lane;
 mod route_position_past_route_end;
 mod world_point_on_overlapping_roads;
+mod world_position_on_a_hill;

@@ -1,0 +1,199 @@
+//! esmini's choice of the reference-line segment a world point is placed on
+//! (`Position::XYZ2TrackPos`, RoadManager.cpp), for one road. esmini walks the OSI points of
+//! lane 0 and weighs each segment by the point's distance from it beyond the road's width,
+//! adds |z_input − z of the segment| when that exceeds 2 m (a WorldPosition without z asks
+//! at z = 0) and 3 m when the point lies outside the sector between the segment's end normals;
+//! the s then comes from the segment's closest vertex and its neighbour on the point's side:
+//! on a straight piece the unsigned distance from the first vertex (a point behind it is
+//! mirrored), on a curved one the angle between the normals. Where the road climbs more than
+//! 2 m, the z penalty can pick a segment far from the exact projection (a road going up and
+//! down again: the descending half), which this reproduces.
+
+use crate::controllers::looming::view::angle_difference;
+use opendrive::model::road::Road;
+use std::f64::consts::FRAC_PI_2;
+
+const SMALL_NUMBER: f64 = 1e-6;
+/// XYZ2TrackPos: a z difference above this is added to the segment's distance.
+const Z_THRESHOLD: f64 = 2.0;
+/// XYZ2TrackPos: the penalty of a segment whose sector does not hold the point.
+const OUTSIDE_PENALTY: f64 = 3.0;
+
+/// One OSI point of lane 0 (PointStruct): s, position, elevation and heading.
+#[derive(Clone, Copy)]
+struct Vertex {
+    s: f64,
+    x: f64,
+    y: f64,
+    z: f64,
+    h: f64,
+}
+
+fn lane0(road: &Road, s: f64) -> Vertex {
+    let p = road.reference_pose(s);
+    let t = road.lane_offset_at(s);
+    let (sin, cos) = p.hdg.sin_cos();
+    Vertex { s, x: p.x - t * sin, y: p.y + t * cos, z: road.elevation_at(s), h: p.hdg }
+}
+
+/// Lane 0's OSI points over the road's lane sections, the duplicate first point of each
+/// following section left out (OpenDrive::SetLaneOSIPoints).
+fn vertices(road: &Road) -> Vec<Vertex> {
+    let mut out: Vec<Vertex> = Vec::new();
+    let n = road.lane_sections.len();
+    for j in 0..n {
+        let Some((a, b)) = road.section_range(j) else { continue };
+        let xy = |s: f64| {
+            let v = lane0(road, s);
+            Some((v.x, v.y))
+        };
+        let mut pts: Vec<Vertex> = opendrive::road_osi_points(road, a, b, xy).into_iter().map(|s| lane0(road, s)).collect();
+        if j + 1 < n && pts.len() > 1 {
+            pts.pop();
+        }
+        out.extend(pts);
+    }
+    out
+}
+
+/// The road's width on the side of `sign` at s (Road::GetWidth): the outer border's distance
+/// from lane 0.
+fn width(road: &Road, s: f64, left: bool) -> f64 {
+    let section = road.section_index_at(s);
+    let centre = road.lane_offset_at(s);
+    road.side_border_iter(section, left, s).map(|(_, b)| (b.outer - centre).abs()).fold(0.0, f64::max)
+}
+
+/// DistanceFromPointToLine2D (the distance to the point itself for a degenerate line).
+fn line_distance(px: f64, py: f64, (ax, ay): (f64, f64), (bx, by): (f64, f64)) -> f64 {
+    let (dx, dy) = (bx - ax, by - ay);
+    let len = dx.hypot(dy);
+    if len < 1e-300 {
+        return (px - ax).hypot(py - ay);
+    }
+    ((px - ax) * dy - (py - ay) * dx).abs() / len
+}
+
+/// IsPointWithinSectorBetweenTwoLines: whether p lies between the normal lines at a and b,
+/// and its normalised place between them (negative or a distance when outside).
+fn sector(p: (f64, f64), a: (f64, f64), na: (f64, f64), b: (f64, f64), nb: (f64, f64)) -> (bool, f64) {
+    let cross = |(ux, uy): (f64, f64), (vx, vy): (f64, f64)| ux * vy - uy * vx;
+    let d0 = cross((p.0 - a.0, p.1 - a.1), na);
+    let d1 = cross((p.0 - b.0, p.1 - b.1), nb);
+    let dist0 = line_distance(p.0, p.1, a, (a.0 + na.0, a.1 + na.1));
+    let dist1 = line_distance(p.0, p.1, b, (b.0 + nb.0, b.1 + nb.1));
+    let s_norm = dist0 / SMALL_NUMBER.max(dist0 + dist1);
+    if d0 > 0.0 && d1 < 0.0 {
+        (true, s_norm)
+    } else if d0 < 0.0 && d1 > 0.0 {
+        (true, -s_norm)
+    } else if dist0 < dist1 {
+        (false, -dist0)
+    } else {
+        (false, dist1)
+    }
+}
+
+fn normal(h: f64) -> (f64, f64) {
+    let (sin, cos) = (h + FRAC_PI_2).sin_cos();
+    (cos, sin)
+}
+
+/// Where XYZ2TrackPos puts (x, y) at height `z_input` on `road` alone: the s and the s range
+/// of the segment it chose. `None` for a road without OSI points.
+pub(crate) fn segment_s(road: &Road, x: f64, y: f64, z_input: f64) -> Option<(f64, f64, f64)> {
+    let pts = vertices(road);
+    let n = pts.len();
+    if n < 2 {
+        return None;
+    }
+    // The vertices of the scan: the road's own start and end poses at the ends.
+    let end = lane0(road, road.length);
+    let pos = |i: usize| if i + 1 == n { (end.x, end.y) } else { (pts[i].x, pts[i].y) };
+    let z = |i: usize| if i + 1 == n { end.z } else { pts[i].z };
+    let heading = |i: usize| if i + 1 < n { (pos(i + 1).1 - pos(i).1).atan2(pos(i + 1).0 - pos(i).0) } else { end.h };
+    let norm = |i: usize| {
+        if i == 0 {
+            normal(pts[0].h)
+        } else if i + 1 == n {
+            normal(end.h)
+        } else {
+            normal(heading(i - 1) + 0.5 * angle_difference(heading(i), heading(i - 1)))
+        }
+    };
+    let mut best = f64::INFINITY;
+    let mut chosen: Option<(usize, usize, usize)> = None;
+    // The segments, and the last vertex alone (the scan's extra round).
+    for (a, b) in (0..n - 1).map(|i| (i, i + 1)).chain(std::iter::once((n - 1, n - 1))) {
+        let (pa, pb) = (pos(a), pos(b));
+        let cp = pts[a].h.cos() * (y - pa.1) - pts[a].h.sin() * (x - pa.0);
+        let w = width(road, pts[a].s, cp > 0.0);
+        let (inside, s_norm) = sector((x, y), pa, norm(a), pb, norm(b));
+        let inside = inside && s_norm >= 0.0;
+        let mut dist = (line_distance(x, y, pa, pb) - w).max(0.0);
+        let zs = if inside { (1.0 - s_norm) * z(a) + s_norm * z(b) } else { z(b) };
+        if !inside {
+            dist = dist.hypot(s_norm);
+        }
+        let mut weighted = dist;
+        if (z_input - zs).abs() > Z_THRESHOLD {
+            weighted += (z_input - zs).abs();
+        }
+        if !inside {
+            weighted += OUTSIDE_PENALTY;
+        }
+        if weighted < best {
+            best = weighted;
+            let d2 = |(px, py): (f64, f64)| (x - px).powi(2) + (y - py).powi(2);
+            let k = if d2(pa) < d2(pb) { a } else { b };
+            chosen = Some((k, a, b));
+        }
+    }
+    let (k, a, b) = chosen?;
+    // The s from the closest vertex and its neighbour on the point's side.
+    let c = pts[k];
+    let (nx, ny) = normal(c.h);
+    let cross = nx * (y - c.y) - ny * (x - c.x);
+    let (first, second) = if cross < 0.0 { (k, (k + 1).min(n - 1)) } else { (k.saturating_sub(1), k) };
+    let (f, g) = (pts[first], pts[second]);
+    let s = if first == second {
+        f.s
+    } else {
+        let s_norm = if (f.h - g.h).abs() < 1e-5 {
+            // ProjectPointOnLine2D, then the unsigned distance from the first vertex.
+            let (dx, dy) = (g.x - f.x, g.y - f.y);
+            let len2 = dx * dx + dy * dy;
+            let u = ((x - f.x) * dx + (y - f.y) * dy) / len2;
+            (u * dx).hypot(u * dy) / len2.sqrt()
+        } else {
+            let (n0, n1) = (normal(f.h), normal(g.h));
+            // GetIntersectionOfTwoLineSegments of the two normal lines.
+            let den = n0.0 * n1.1 - n0.1 * n1.0;
+            let tt = ((g.x - f.x) * n1.1 - (g.y - f.y) * n1.0) / den;
+            let (ix, iy) = (f.x + tt * n0.0, f.y + tt * n0.1);
+            let unit = |(ux, uy): (f64, f64)| {
+                let l = ux.hypot(uy);
+                (ux / l, uy / l)
+            };
+            let (m0, m1) = (unit((f.x - ix, f.y - iy)), unit((g.x - ix, g.y - iy)));
+            let between = (m0.0 * m1.0 + m0.1 * m1.1).clamp(-1.0, 1.0).acos();
+            let l = unit((ix - x, iy - y));
+            let to_pos = (-m0.0 * l.0 - m0.1 * l.1).clamp(-1.0, 1.0).acos();
+            if between.abs() < SMALL_NUMBER {
+                0.0
+            } else {
+                to_pos / between
+            }
+        };
+        // Coincident points or parallel normals (hostile input): the first vertex.
+        let s_norm = if s_norm.is_finite() { s_norm } else { 0.0 };
+        ((1.0 - s_norm) * f.s + s_norm * g.s).clamp(0.0, road.length)
+    };
+    Some((s, pts[a].s, if b + 1 == n { road.length } else { pts[b].s }))
+}
+
+/// Whether the road's reference line climbs or falls more than 2 m anywhere (where the z
+/// penalty can decide), judged at its elevation records and its end.
+pub(crate) fn climbs(road: &Road) -> bool {
+    road.elevation.iter().map(|e| e.s).chain([road.length]).any(|s| road.elevation_at(s).abs() > Z_THRESHOLD)
+}
