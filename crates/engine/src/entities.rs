@@ -247,10 +247,12 @@ impl Entity {
             Some(lp) => {
                 // esmini's IsAngleForward of the heading its position holds (a heading within a
                 // micro-radian of ±π/2 is 1e-6 off, `esmini_reported_heading`): against the
-                // road only strictly beyond a right angle, so a car facing +y put across a road
-                // along +x by a heading rounded a hair past π/2 drives against s.
+                // road only beyond a right angle, so a car facing +y put across a road along +x
+                // by a heading rounded a hair past π/2 drives against s. An exact right angle
+                // is forward; 1e-9 absorbs the last bits in which our road heading may differ
+                // from esmini's (h 0 across a road along −y drives along it, as in esmini).
                 let rel = wrap(esmini_reported_heading(h) - lp.heading);
-                let dir = if rel.abs() <= std::f64::consts::FRAC_PI_2 { 1.0 } else { -1.0 };
+                let dir = if rel.abs() <= std::f64::consts::FRAC_PI_2 + 1e-9 { 1.0 } else { -1.0 };
                 // esmini attaches the entity to the nearest lane of the types it snaps to
                 // (LaneSection::GetClosestLaneIdx), measuring the offset from that lane's centre.
                 let (lane_id, offset) =
