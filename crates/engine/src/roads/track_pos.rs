@@ -10,10 +10,10 @@
 //! down again: the descending half), which this reproduces.
 
 use crate::controllers::looming::view::angle_difference;
+use crate::dynamics::ESMINI_SMALL_NUMBER as SMALL_NUMBER;
 use opendrive::model::road::Road;
 use std::f64::consts::FRAC_PI_2;
 
-const SMALL_NUMBER: f64 = 1e-6;
 /// XYZ2TrackPos: a z difference above this is added to the segment's distance.
 const Z_THRESHOLD: f64 = 2.0;
 /// XYZ2TrackPos: the penalty of a segment whose sector does not hold the point.
