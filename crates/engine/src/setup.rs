@@ -51,7 +51,7 @@ impl<'a> Sim<'a> {
         sim.initial_presence();
         for (i, e) in scenario.entities.iter().enumerate() {
             for c in &e.controllers {
-                sim.assign_controller(i, c, None);
+                sim.assign_controller(i, c, &c.name, None);
             }
         }
         sim.name_external(external)?;

@@ -192,22 +192,28 @@ impl<'a> Sim<'a> {
             PrivateAction::ActivateController { lateral, longitudinal, controller_ref, object_controller_ref, .. } => {
                 // esmini's ScenarioReader::parseActivateControllerAction reads the name from
                 // `controllerRef`, and from a 1.3 file from `objectControllerRef` instead.
+                // (an empty name names none: esmini then takes the most recently assigned)
                 let name = if self.scenario.header.rev_minor >= 3 { object_controller_ref } else { controller_ref };
+                let name = name.as_ref().filter(|n| !n.is_empty());
                 let on = lateral.unwrap_or(true) || longitudinal.unwrap_or(true);
                 self.activate_outside_driver(slot, e, lateral.unwrap_or(true), longitudinal.unwrap_or(true));
                 if let Some(en) = self.entities.get_mut(e) {
                     en.controller_active = on;
                 }
                 // a name that names none of the entity's controllers activates nothing
-                if name.as_deref().is_none_or(|n| self.controllers.iter().any(|c| c.entity == e && c.name == n)) {
+                if name.is_none_or(|n| self.controllers.iter().any(|c| c.entity == e && &c.name == n)) {
                     self.switch_off_conflicting(e, *lateral, *longitudinal);
                 }
-                self.activate_controller(e, name.as_deref(), lateral.unwrap_or(true), longitudinal.unwrap_or(true));
+                self.activate_controller(e, name.map(String::as_str), lateral.unwrap_or(true), longitudinal.unwrap_or(true));
                 ActionRt::Done
             }
-            PrivateAction::AssignController { controller, activate_longitudinal, activate_lateral, .. } => {
+            PrivateAction::AssignController { controller, object_controller_name, activate_longitudinal, activate_lateral, .. } => {
                 if let Some(c) = controller {
-                    self.assign_controller(e, c, Some(slot));
+                    // esmini's ScenarioReader names an assigned controller after its
+                    // ObjectController wrapper, which only a 1.3 file has, and gives it the
+                    // empty name otherwise: an activation by the Controller's own name finds none.
+                    let name = if self.scenario.header.rev_minor >= 3 { object_controller_name.clone().unwrap_or_default() } else { String::new() };
+                    self.assign_controller(e, c, &name, Some(slot));
                     let (lat, long) = (*activate_lateral == Some(true), *activate_longitudinal == Some(true));
                     if lat || long {
                         self.activate_outside_driver(slot, e, lat, long);

@@ -83,12 +83,13 @@ impl<'a> Sim<'a> {
         self.controllers.iter_mut().filter(|c| c.entity == e).filter_map(|c| c.rt.as_mut()).find_map(pick)
     }
 
-    /// Assign controller `c` to entity `e` (by the AssignControllerAction in action slot
-    /// `assigned_by`, else as its ObjectController); warns when its type is not modelled. esmini
+    /// Assign controller `c`, known as `name` to activations, to entity `e` (by the
+    /// AssignControllerAction in action slot `assigned_by`, else as its ObjectController);
+    /// warns when its type is not modelled. esmini
     /// keeps the entity's other controllers, active or not (Object::AssignController appends);
     /// an AssignControllerAction that runs again assigns its own controller again, which keeps
     /// its state and becomes the entity's most recent one.
-    pub(crate) fn assign_controller(&mut self, e: usize, c: &Controller, assigned_by: Option<usize>) {
+    pub(crate) fn assign_controller(&mut self, e: usize, c: &Controller, name: &str, assigned_by: Option<usize>) {
         self.assignments += 1;
         let assigned = self.assignments;
         if let Some(again) = self.controllers.iter_mut().find(|x| x.entity == e && assigned_by.is_some() && x.assigned_by == assigned_by) {
@@ -137,7 +138,7 @@ impl<'a> Sim<'a> {
         self.any_controller |= rt.is_some();
         let rank = self.controller_rank(assigned_by);
         let at = self.controllers.iter().position(|x| x.rank > rank).unwrap_or(self.controllers.len());
-        self.controllers.insert(at, ControllerSlot { entity: e, rank, assigned_by, assigned, name: c.name.clone(), rt });
+        self.controllers.insert(at, ControllerSlot { entity: e, rank, assigned_by, assigned, name: name.to_string(), rt });
     }
 
     /// The controller an ActivateControllerAction activates: the entity's first one of that

@@ -206,6 +206,9 @@ pub enum PrivateAction {
     AssignController {
         /// None: the action names no controller (e.g. an empty ObjectController).
         controller: Option<Controller>,
+        /// The `name` of the ObjectController that wraps the controller (OpenSCENARIO 1.3);
+        /// None when there is no wrapper or it has no name.
+        object_controller_name: Option<String>,
         activate_lateral: Option<bool>,
         activate_longitudinal: Option<bool>,
         activate_lighting: Option<bool>,

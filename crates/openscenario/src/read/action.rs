@@ -121,6 +121,10 @@ pub(crate) fn read_private_action(r: &mut Reader, cx: &Cx, wrapper: &Elem) -> Re
                 "ActivateControllerAction" => activate_controller(cx, c)?,
                 "AssignControllerAction" => PrivateAction::AssignController {
                     controller: read_object_controller(r, cx, c)?,
+                    object_controller_name: match c.child("ObjectController") {
+                        Some(w) => cx.opt_text(w, "name")?,
+                        None => None,
+                    },
                     activate_lateral: cx.opt_bool(c, "activateLateral")?,
                     activate_longitudinal: cx.opt_bool(c, "activateLongitudinal")?,
                     activate_lighting: cx.opt_bool(c, "activateLighting")?,

@@ -36,7 +36,12 @@ pub(crate) fn read_scenario_object(r: &mut Reader, cx: &Cx, e: &Elem) -> Result<
     for c in e.children() {
         match c.name.as_str() {
             "ObjectController" => {
-                if let Some(ctrl) = read_object_controller(r, cx, c)? {
+                if let Some(mut ctrl) = read_object_controller(r, cx, c)? {
+                    // The wrapper's name, when it has one, is the controller's name (esmini's
+                    // ScenarioReader::parseEntities: Controller::SetName); activations use it.
+                    if let Some(n) = cx.opt_text(c, "name")?.filter(|n| !n.is_empty()) {
+                        ctrl.name = n;
+                    }
                     controllers.push(ctrl);
                 }
             }

@@ -4,6 +4,8 @@
 mod activate_before_1_3_switches_off;
 mod activate_by_controller_ref;
 mod assigned_beside_looming;
+mod assigned_controller_unnamed_before_1_3;
+mod controller_named_by_its_object_controller;
 mod first_frame;
 mod lane_change_off_driving_lanes;
 mod lane_change_on_route;
