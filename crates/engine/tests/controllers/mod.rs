@@ -15,6 +15,7 @@ mod looming;
 mod natural_driver;
 mod natural_driver_additive;
 mod natural_driver_lanes_beside;
+mod natural_driver_leader_across_junction;
 mod natural_driver_standing_start;
 mod offroad_follower;
 mod teleport_under_controllers;

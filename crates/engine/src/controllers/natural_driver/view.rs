@@ -10,7 +10,7 @@ use crate::roads::road_distance::road_distance_within;
 use crate::roads::road_follow::wrap;
 use crate::roads::{move_along_s, LanePos};
 use crate::sim::Sim;
-use opendrive::RoadNetwork;
+use opendrive::{ContactPoint, RoadNetwork};
 
 /// esmini's SMALL_NUMBER and LARGE_NUMBER.
 pub(crate) const SMALL_NUMBER: f64 = 1e-10;
@@ -59,6 +59,18 @@ pub(crate) fn road_delta(net: &RoadNetwork, a: &LanePos, b: &LanePos, both: bool
         if p.road == b.road {
             return Some((-d, lane_diff(p.lane_id, b.lane_id)));
         }
+    }
+    // `a`'s lane leads elsewhere, but b's road is linked to a's own end (by a road link or a
+    // junction connection): esmini's RoadPath::Calculate takes that last step whatever the lane,
+    // and Position::Delta then finds no connecting lane into b's road (Road::GetConnectingLaneId
+    // gives 0), so it measures b's lane from the reference lane 0.
+    let linked = |end: ContactPoint| net.roads_at(a.road, end).iter().any(|e| e.road == b.road);
+    let (ahead, behind) = if a.dir >= 0.0 { (ContactPoint::End, ContactPoint::Start) } else { (ContactPoint::Start, ContactPoint::End) };
+    if linked(ahead) {
+        return Some((d, lane_diff(0, b.lane_id)));
+    }
+    if both && linked(behind) {
+        return Some((-d, lane_diff(0, b.lane_id)));
     }
     None
 }
