@@ -38,11 +38,17 @@ pub(crate) fn world_to_lane(net: &RoadNetwork, x: f64, y: f64, hint: Option<(usi
 /// A point nobody was at (esmini's fresh Position: no current road, z asked at 0) on a road
 /// that climbs more than 2 m: where XYZ2TrackPos's z penalty picks a segment of the road that
 /// does not hold the exact projection, the point is placed at that segment's s
-/// (`track_pos::segment_s`). Otherwise `None` (the exact projection stands).
+/// (`track_pos::segment_s`); an off-road point on any road takes the s XYZ2TrackPos
+/// interpolates on its OSI segment (the exact projection drifts 1-2 m from it near a change
+/// of curvature). Otherwise `None` (the exact projection stands).
 fn on_chosen_segment(net: &RoadNetwork, lp: LanePosition, x: f64, y: f64) -> Option<LanePosition> {
-    let road = net.roads.get(lp.road).filter(|r| super::track_pos::climbs(r))?;
+    let road = net.roads.get(lp.road)?;
+    let off_road = !lp.is_on_road();
+    if !off_road && !super::track_pos::climbs(road) {
+        return None;
+    }
     let (s, lo, hi) = super::track_pos::segment_s(road, x, y, 0.0)?;
-    if lp.s >= lo - 1e-6 && lp.s <= hi + 1e-6 {
+    if !off_road && lp.s >= lo - 1e-6 && lp.s <= hi + 1e-6 {
         return None;
     }
     net.locate_at_s_by(lp.road, x, y, s, &surface_t)

@@ -15,5 +15,6 @@ mod route_position_from_current_entity;
 mod route_position_missing_lane_waypoint;
 mod route_position_on_missing_lane;
 mod route_position_past_route_end;
+mod world_point_off_road;
 mod world_point_on_overlapping_roads;
 mod world_position_on_a_hill;
