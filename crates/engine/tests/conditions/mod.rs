@@ -14,3 +14,4 @@ mod offroad_lane_offset;
 mod reach_position_all;
 mod standstill_clock;
 mod undefined_headway_ttc;
+mod vertical_motion;
