@@ -34,6 +34,11 @@ impl<'a> Sim<'a> {
         }
         // Positions are resolved once per evaluation (they may be relative to moving entities).
         let point = match cond {
+            // esmini's TrigByTimeToCollision::CheckCondition reads its position's x and y without
+            // Position::EvaluateRelation (TrigByReachPosition and TrigByDistance call it), and a
+            // position relative to an entity is only ever set up as a relation (the
+            // OSCPositionRelative* constructors): its point stays at Position::Init's origin.
+            C::TimeToCollision { target: TtcTarget::Position(position), .. } if relative_to_entity(position) => Some((0.0, 0.0)),
             C::ReachPosition { position, .. } | C::Distance { position, .. } | C::TimeToCollision { target: TtcTarget::Position(position), .. } => {
                 match resolve(position, self.net, &self.entities) {
                     Ok(p) => Some((p.x, p.y)),
@@ -233,6 +238,13 @@ impl<'a> Sim<'a> {
             C::RelativeAngle { .. } => false,
         })
     }
+}
+
+/// Whether `position` is placed relative to an entity (a RelativeWorld-, RelativeObject-,
+/// RelativeRoad- or RelativeLanePosition).
+fn relative_to_entity(position: &openscenario::Position) -> bool {
+    use openscenario::Position as P;
+    matches!(position, P::RelativeWorld { .. } | P::RelativeObject { .. } | P::RelativeRoad { .. } | P::RelativeLane { .. })
 }
 
 /// (longitudinal, lateral) parts of a velocity in a frame turned by `h` (esmini's RotateVec2D
