@@ -278,7 +278,10 @@ impl Entity {
                 if let Some([h3, _, _]) = tilted {
                     self.h = h3;
                 }
-                self.z = z.unwrap_or_else(|| net.roads.get(lp.road).map_or(0.0, |r| r.elevation_at(lp.s)));
+                // the road's surface there, its banking included (the height a move along the
+                // lane then keeps: a step's vertical speed reads the difference)
+                self.z =
+                    z.unwrap_or_else(|| net.roads.get(lp.road).map_or(0.0, |r| r.elevation_at(lp.s) + crate::roads::banking::banked(r, lp.s, lp.t, 0.0).1));
             }
             None => {
                 self.lane = None;
