@@ -37,6 +37,11 @@ pub(crate) struct Entity {
     /// World acceleration of the last step: the change of `vel` over it (esmini's object
     /// acceleration, ScenarioEngine::prepareGroundTruth; AccelerationConditions read it).
     pub acc_vec: (f64, f64),
+    /// Vertical velocity and acceleration of the last step: the change of `z`, and of that
+    /// rate, over it (esmini's velZ_ / accZ_; a teleport's velocity has none). The vertical
+    /// Speed-, RelativeSpeed- and AccelerationConditions read them.
+    pub vel_z: f64,
+    pub acc_z: f64,
     /// Nearest lane (also when off the road), `None` without a road network.
     pub lane: Option<LanePos>,
     /// Whether the reference point lies on a lane.
@@ -129,6 +134,8 @@ impl Entity {
             yaw_rate: 0.0,
             vel: (0.0, 0.0),
             acc_vec: (0.0, 0.0),
+            vel_z: 0.0,
+            acc_z: 0.0,
             lane: None,
             on_road: false,
             yaw_offset: 0.0,
@@ -271,7 +278,10 @@ impl Entity {
                 if let Some([h3, _, _]) = tilted {
                     self.h = h3;
                 }
-                self.z = z.unwrap_or_else(|| net.roads.get(lp.road).map_or(0.0, |r| r.elevation_at(lp.s)));
+                // the road's surface there, its banking included (the height a move along the
+                // lane then keeps: a step's vertical speed reads the difference)
+                self.z =
+                    z.unwrap_or_else(|| net.roads.get(lp.road).map_or(0.0, |r| r.elevation_at(lp.s) + crate::roads::banking::banked(r, lp.s, lp.t, 0.0).1));
             }
             None => {
                 self.lane = None;

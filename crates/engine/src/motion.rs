@@ -17,6 +17,7 @@ const STAND_STILL: f64 = 1e-3;
 pub(crate) struct Before {
     pub x: f64,
     pub y: f64,
+    pub z: f64,
     pub h: f64,
     pub speed: f64,
 }
@@ -120,6 +121,7 @@ impl<'a> Sim<'a> {
             }
             let (dx, dy) = (en.x - b.x, en.y - b.y);
             let old_vel = en.vel;
+            let old_vel_z = en.vel_z;
             // An entity added back is measured from where it was last active (AddEntityAction
             // moves its position without a teleport mark): its jump is travel, and a standing
             // one takes jump / dt as its speed and drives off at it. One never active before
@@ -133,21 +135,26 @@ impl<'a> Sim<'a> {
             } else if en.teleported {
                 // ScenarioEngine::prepareStep/step: a teleport is no travel
                 en.teleported = false;
+                // (a teleport's velocity has no vertical part)
                 en.vel = (en.speed * en.h.cos(), en.speed * en.h.sin());
+                en.vel_z = 0.0;
                 if dt > SMALL {
                     en.accel = (en.speed - b.speed) / dt;
                     en.acc_vec = ((en.vel.0 - old_vel.0) / dt, (en.vel.1 - old_vel.1) / dt);
+                    en.acc_z = -old_vel_z / dt;
                     en.yaw_rate = wrap(en.h - b.h) / dt;
                 }
             } else {
                 en.odometer += (dx * dx + dy * dy).sqrt();
                 if dt > SMALL {
                     en.vel = (dx / dt, dy / dt);
+                    en.vel_z = (en.z - b.z) / dt;
                     if derives_speed(i, en) {
                         en.speed = dx.hypot(dy) / dt;
                     }
                     en.accel = (en.speed - b.speed) / dt;
                     en.acc_vec = ((en.vel.0 - old_vel.0) / dt, (en.vel.1 - old_vel.1) / dt);
+                    en.acc_z = (en.vel_z - old_vel_z) / dt;
                     en.yaw_rate = wrap(en.h - b.h) / dt;
                 }
             }

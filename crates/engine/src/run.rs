@@ -351,7 +351,7 @@ fn snapshot(sim: &Sim, before: &mut [Before]) {
         if unmeasured == Some(i) || !e.active {
             continue;
         }
-        *b = Before { x: e.x, y: e.y, h: e.h, speed: e.speed };
+        *b = Before { x: e.x, y: e.y, z: e.z, h: e.h, speed: e.speed };
     }
 }
 

@@ -34,6 +34,11 @@ impl<'a> Sim<'a> {
         }
         // Positions are resolved once per evaluation (they may be relative to moving entities).
         let point = match cond {
+            // esmini's TrigByTimeToCollision::CheckCondition reads its position's x and y without
+            // Position::EvaluateRelation (TrigByReachPosition and TrigByDistance call it), and a
+            // position relative to an entity is only ever set up as a relation (the
+            // OSCPositionRelative* constructors): its point stays at Position::Init's origin.
+            C::TimeToCollision { target: TtcTarget::Position(position), .. } if relative_to_entity(position) => Some((0.0, 0.0)),
             C::ReachPosition { position, .. } | C::Distance { position, .. } | C::TimeToCollision { target: TtcTarget::Position(position), .. } => {
                 match resolve(position, self.net, &self.entities) {
                     Ok(p) => Some((p.x, p.y)),
@@ -235,6 +240,13 @@ impl<'a> Sim<'a> {
     }
 }
 
+/// Whether `position` is placed relative to an entity (a RelativeWorld-, RelativeObject-,
+/// RelativeRoad- or RelativeLanePosition).
+fn relative_to_entity(position: &openscenario::Position) -> bool {
+    use openscenario::Position as P;
+    matches!(position, P::RelativeWorld { .. } | P::RelativeObject { .. } | P::RelativeRoad { .. } | P::RelativeLane { .. })
+}
+
 /// (longitudinal, lateral) parts of a velocity in a frame turned by `h` (esmini's RotateVec2D
 /// by −h, as in Position::GetVelLong / GetVelLat).
 fn in_frame((vx, vy): (f64, f64), h: f64) -> (f64, f64) {
@@ -243,14 +255,14 @@ fn in_frame((vx, vy): (f64, f64), h: f64) -> (f64, f64) {
 }
 
 /// A SpeedCondition's speed: the signed speed, or with a direction the velocity along the
-/// entity's own axes (esmini's TrigBySpeed::CheckCondition; vertical is 0 on our flat model).
+/// entity's own axes, vertical the world one (esmini's TrigBySpeed::CheckCondition, GetVelZ).
 fn directed_speed(e: &crate::entities::Entity, direction: Option<openscenario::DirectionalDimension>) -> f64 {
     use openscenario::DirectionalDimension as D;
     match direction {
         None => e.speed,
         Some(D::Longitudinal) => in_frame(e.vel, e.h).0,
         Some(D::Lateral) => in_frame(e.vel, e.h).1,
-        Some(D::Vertical) => 0.0,
+        Some(D::Vertical) => e.vel_z,
     }
 }
 
@@ -259,7 +271,8 @@ fn directed_speed(e: &crate::entities::Entity, direction: Option<openscenario::D
 /// reads it: without a direction Position::GetAcc — the vector's length, signed as its
 /// component along the heading (so a car at constant speed in a curve has its centripetal
 /// acceleration, positive or not by its sign along the heading); with one, the component along
-/// the entity's own axes (GetAccLong, GetAccLat; vertical is 0 on our flat model).
+/// the entity's own axes (GetAccLong, GetAccLat), vertical the world one (GetAccZ: on a slope the
+/// step after a teleport, whose velocity has no vertical part, jumps by the vertical speed / dt).
 fn directed_acceleration(e: &crate::entities::Entity, direction: Option<openscenario::DirectionalDimension>) -> f64 {
     use openscenario::DirectionalDimension as D;
     let (along, lateral) = in_frame(e.acc_vec, e.h);
@@ -272,7 +285,7 @@ fn directed_acceleration(e: &crate::entities::Entity, direction: Option<openscen
         }
         Some(D::Longitudinal) => along,
         Some(D::Lateral) => lateral,
-        Some(D::Vertical) => 0.0,
+        Some(D::Vertical) => e.acc_z,
     }
 }
 
@@ -285,6 +298,6 @@ fn relative_speed(e: &crate::entities::Entity, o: &crate::entities::Entity, dire
         None => e.speed - o.speed,
         Some(D::Longitudinal) => in_frame(e.vel, o.h).0 - in_frame(o.vel, o.h).0,
         Some(D::Lateral) => in_frame(e.vel, o.h).1 - in_frame(o.vel, o.h).1,
-        Some(D::Vertical) => 0.0,
+        Some(D::Vertical) => e.vel_z - o.vel_z,
     }
 }

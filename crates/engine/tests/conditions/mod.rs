@@ -13,4 +13,6 @@ mod ignored_value_conditions;
 mod offroad_lane_offset;
 mod reach_position_all;
 mod standstill_clock;
+mod ttc_relative_position;
 mod undefined_headway_ttc;
+mod vertical_motion;

@@ -73,6 +73,14 @@ fn a_world_point_on_a_banked_road_has_its_t_along_the_tilted_surface() {
     let run = run_fixture_on("banked_world_position.xosc", "banked.xodr", 2.0);
     assert_esmini_rows(&run, "Ego", &EGO, 1e-3);
     assert_esmini_rows(&run, "Ahead", &AHEAD, 1e-3);
+    // the point's height is the banked surface's, t·sin(roll) below the reference line, from
+    // the start (esmini's z: −1.638907 at 0 s, −1.641907 at 0.01 s), so the first step's
+    // vertical speed is the climb's alone (found by crates/difftest: s26026_00317 on
+    // velodrome.xodr, a vertical SpeedCondition)
+    for (t, z) in [(0.0, -1.638907), (0.01, -1.641907)] {
+        let e = at(&run, "Ego", t);
+        assert!(close(e.z, z, 1e-5), "at {t}: {e:?}, esmini z {z}");
+    }
 }
 
 /// esmini's rows (time, x, y, speed) of `relative_object_banked.xosc` (banked.xodr): Ego on
