@@ -77,8 +77,11 @@ impl<'a> Sim<'a> {
                 en.route = src.route.clone();
                 en.speed = src.speed;
             } else {
-                // A relative object position with no offsets: the entity's pose.
+                // A relative object position with no offsets: the entity's pose. It is a real
+                // position, so a ghost its Init left nowhere (a TrajectoryPosition copy) is on
+                // the map again and its moves no longer fail (Position::TeleportTo).
                 en.set_world(self.net, src.x, src.y, None, src.h);
+                en.roadless = false;
             }
             // Both branches mark the move (esmini's dirty bits): no default controller this step.
             en.teleported = true;
