@@ -89,7 +89,7 @@ pub(crate) struct Entity {
 impl Entity {
     /// The acceleration vector's component along the heading (esmini's Position::GetAccLong,
     /// RotateVec2D by −h): a car turning at constant speed has one, its speed's rate has none.
-    pub fn acc_long(&self) -> f64 {
+    pub(crate) fn acc_long(&self) -> f64 {
         let (sin, cos) = self.h.sin_cos();
         self.acc_vec.0 * cos + self.acc_vec.1 * sin
     }
