@@ -92,6 +92,13 @@ pub(crate) struct Entity {
 }
 
 impl Entity {
+    /// The acceleration vector's component along the heading (esmini's Position::GetAccLong,
+    /// RotateVec2D by −h): a car turning at constant speed has one, its speed's rate has none.
+    pub(crate) fn acc_long(&self) -> f64 {
+        let (sin, cos) = self.h.sin_cos();
+        self.acc_vec.0 * cos + self.acc_vec.1 * sin
+    }
+
     /// esmini's ScenarioEngine::step, after every object's (default) move: an object whose
     /// position status says end of road (`at_road_end`), already flagged there in an earlier
     /// step (`end_of_road`), and whose velocity, measured at the last step, is zero is stopped

@@ -90,7 +90,9 @@ impl<'a> Sim<'a> {
             None => 0.0,
         };
         let lim = limits(constraints, en.max_speed, en.max_acc, en.max_dec);
-        let segments = plan(self.time, en.speed, en.accel, offset, mode == FollowingMode::Follow, lim, entries);
+        // LongSpeedProfileAction::Start: init_acc_ is Position::GetAccLong, the world
+        // acceleration's component along the heading, not the speed's rate of change
+        let segments = plan(self.time, en.speed, en.acc_long(), offset, mode == FollowingMode::Follow, lim, entries);
         ActionRt::SpeedProfile(SpeedProfileRt { segments, current: 0, speed: en.speed, entries: entries.len() })
     }
 

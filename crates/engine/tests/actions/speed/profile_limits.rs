@@ -29,3 +29,23 @@ fn an_entry_too_steep_for_the_limit_is_stretched_to_it() {
     assert!(close(at(&run, "Ego", 10.0).speed, 9.71875, 1e-9) && close(at(&run, "Ego", 10.0).x, 57.587662, 1e-5));
     assert!(close(at(&run, "Ego", 13.0).x, 87.51875, 1e-5));
 }
+
+#[test]
+fn a_profile_starts_from_the_acceleration_along_the_heading() {
+    // A sinusoidal LaneOffsetAction turns the car at a constant 10 m/s when a follow-mode
+    // SpeedProfileAction starts at 0.5 s: esmini's LongSpeedProfileAction::Start reads its initial
+    // acceleration from Position::GetAccLong (the world acceleration's part along the heading,
+    // here negative), not from the speed's rate (zero). esmini 3.6.0's speeds (run by hand).
+    let run = run_straight_fixture("speed_profile_initial_acc_of_turning.xosc", 6.0);
+    for (t, v, x) in [
+        (0.51, 6.295706, 15.062957),
+        (0.52, 6.251950, 15.125477),
+        (1.0, 5.033667, 17.758843),
+        (2.0, 7.537035, 23.623598),
+        (4.0, 15.537035, 46.737668),
+        (6.0, 19.986604, 83.603977),
+    ] {
+        let s = at(&run, "Ego", t);
+        assert!(close(s.speed, v, 1e-5) && close(s.x, x, 1e-5), "t {t}: {} {} (esmini {v} {x})", s.speed, s.x);
+    }
+}
