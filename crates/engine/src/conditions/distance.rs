@@ -77,6 +77,13 @@ pub(crate) fn between(net: Option<&RoadNetwork>, a: &Entity, b: &Entity, cs: Coo
                     return ds;
                 }
             }
+            // Position::Delta's dt across roads: b's t less a's, or plus it where the path
+            // turns the lane ids around (a's lane mapped onto b's road changes sign)
+            if kind == RelativeDistanceType::Lateral && !freespace {
+                if let Some(path) = a.lane.and_then(|la| crate::roads::road_path::path_ends(net, ra.0, ra.1, la.lane_id, rb.0)) {
+                    return if path.lanes_flip { rb.2 + ra.2 } else { rb.2 - ra.2 };
+                }
+            }
         }
     }
     let (ux, uy) = (a.h.cos(), a.h.sin());
@@ -148,7 +155,10 @@ pub(crate) fn to_point(net: Option<&RoadNetwork>, a: &Entity, x: f64, y: f64, cs
     p.bbox = [0.0; 6];
     if matches!(cs, CoordinateSystem::Road | CoordinateSystem::Lane) {
         if let Some(n) = net {
-            let hint = a.lane.map(|l| (l.road, l.s));
+            // esmini's Position::Distance maps the point by a fresh Position (a search of all
+            // roads), Object::FreeSpaceDistancePointRoadLane by a copy of the entity's own
+            // (its road first, then the roads connected to it)
+            let hint = a.lane.filter(|_| freespace).map(|l| (l.road, l.s));
             if let Some(lp) = crate::roads::locate::world_to_lane_memo(n, x, y, hint) {
                 p.lane = Some(crate::roads::LanePos { road: lp.road, lane_id: lp.lane_id, s: lp.s, offset: lp.offset, dir: 1.0 });
             }
