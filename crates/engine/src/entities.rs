@@ -91,12 +91,18 @@ pub(crate) struct Entity {
     pub route: Option<std::sync::Arc<routing::Route>>,
 }
 
+/// (longitudinal, lateral) parts of a world vector in a frame turned by `h` (esmini's
+/// RotateVec2D by −h, as in Position::GetVelLong / GetVelLat / GetAccLong).
+pub(crate) fn in_frame((vx, vy): (f64, f64), h: f64) -> (f64, f64) {
+    let (sin, cos) = h.sin_cos();
+    (vx * cos + vy * sin, -vx * sin + vy * cos)
+}
+
 impl Entity {
-    /// The acceleration vector's component along the heading (esmini's Position::GetAccLong,
-    /// RotateVec2D by −h): a car turning at constant speed has one, its speed's rate has none.
+    /// The acceleration vector's component along the heading (esmini's Position::GetAccLong):
+    /// a car turning at constant speed has one, its speed's rate has none.
     pub(crate) fn acc_long(&self) -> f64 {
-        let (sin, cos) = self.h.sin_cos();
-        self.acc_vec.0 * cos + self.acc_vec.1 * sin
+        in_frame(self.acc_vec, self.h).0
     }
 
     /// esmini's ScenarioEngine::step, after every object's (default) move: an object whose

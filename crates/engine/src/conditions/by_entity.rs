@@ -5,7 +5,7 @@ use super::boxes::{boxes_overlap, corners};
 use super::distance::{between, to_point};
 use super::ConditionRt;
 use crate::dynamics::SMALL;
-use crate::entities::EntityKind;
+use crate::entities::{in_frame, EntityKind};
 use crate::positions::resolve;
 use crate::rules::compare;
 use crate::sim::Sim;
@@ -245,13 +245,6 @@ impl<'a> Sim<'a> {
 fn relative_to_entity(position: &openscenario::Position) -> bool {
     use openscenario::Position as P;
     matches!(position, P::RelativeWorld { .. } | P::RelativeObject { .. } | P::RelativeRoad { .. } | P::RelativeLane { .. })
-}
-
-/// (longitudinal, lateral) parts of a velocity in a frame turned by `h` (esmini's RotateVec2D
-/// by −h, as in Position::GetVelLong / GetVelLat).
-fn in_frame((vx, vy): (f64, f64), h: f64) -> (f64, f64) {
-    let (sin, cos) = h.sin_cos();
-    (vx * cos + vy * sin, -vx * sin + vy * cos)
 }
 
 /// A SpeedCondition's speed: the signed speed, or with a direction the velocity along the
