@@ -3,7 +3,7 @@
 //! OffroadFollower), and the controller actions: activating one (Init or story, longitudinal
 //! and/or lateral), assigning one in the story.
 
-use super::Gen;
+use super::{Area, Gen};
 
 /// The controller types the generator assigns.
 pub(super) const TYPES: [&str; 10] = [
@@ -112,10 +112,24 @@ impl Gen<'_> {
         before.filter(|n| !n.starts_with("Obj") && !n.starts_with("Trailer")).last().cloned()
     }
 
-    /// An ActivateControllerAction for a controller of type `kind`, longitudinal and/or
-    /// lateral (both mostly; always both for FollowReference, which esmini activates on both
-    /// domains only).
-    pub(crate) fn activate_controller_action(&mut self, kind: &str) -> String {
+    /// The opening `<ObjectController>` tag of `owner`'s controller: named `{owner}Ctrl` at
+    /// times in a 1.3 file (esmini then renames the controller after it; the name attribute
+    /// is new in 1.3).
+    pub(crate) fn object_controller_open(&mut self, owner: &str) -> String {
+        if self.rev_minor >= 3 && self.rich(Area::Controllers) && self.chance(0.4) {
+            self.feature("controller:named-object-controller");
+            self.named_wrappers.push(owner.to_string());
+            return format!(r#"<ObjectController name="{owner}Ctrl">"#);
+        }
+        "<ObjectController>".into()
+    }
+
+    /// An ActivateControllerAction for `owner`'s controller of type `kind`, longitudinal
+    /// and/or lateral (both mostly; always both for FollowReference, which esmini activates on
+    /// both domains only), at times naming the controller: `objectControllerRef` in 1.3 (the
+    /// wrapper's name, or now and then the Controller's own, which esmini no longer knows by
+    /// it), `controllerRef` in 1.2 and, deprecated, in 1.3 (where esmini ignores it).
+    pub(crate) fn activate_controller_action(&mut self, owner: &str, kind: &str) -> String {
         let (long, lat) = match self.pick_index(5) {
             0 if kind != "FollowReferenceController" => (true, false),
             1 if kind != "FollowReferenceController" => (false, true),
@@ -124,7 +138,36 @@ impl Gen<'_> {
         if !(long && lat) {
             self.feature(format!("controller:activate/longitudinal={long}/lateral={lat}"));
         }
-        format!(r#"<PrivateAction><ControllerAction><ActivateControllerAction longitudinal="{long}" lateral="{lat}"/></ControllerAction></PrivateAction>"#)
+        let mut reference = String::new();
+        if self.rev_minor >= 2 && self.rich(Area::Controllers) && self.chance(0.35) {
+            let wrapped = self.named_wrappers.iter().any(|n| n == owner);
+            let own = format!("{owner}Driver");
+            reference = match (self.rev_minor, wrapped) {
+                (2, _) => {
+                    self.feature("controller:activate-by-name/controllerRef");
+                    format!(r#" controllerRef="{own}""#)
+                }
+                _ if self.chance(0.15) => {
+                    self.feature("controller:activate-by-name/deprecated-controllerRef");
+                    format!(r#" controllerRef="{own}""#)
+                }
+                (_, true) if self.chance(0.8) => {
+                    self.feature("controller:activate-by-name/object-controller-name");
+                    format!(r#" objectControllerRef="{owner}Ctrl""#)
+                }
+                (_, true) => {
+                    self.feature("controller:activate-by-name/renamed-controller");
+                    format!(r#" objectControllerRef="{own}""#)
+                }
+                (_, false) => {
+                    self.feature("controller:activate-by-name/controller-name");
+                    format!(r#" objectControllerRef="{own}""#)
+                }
+            };
+        }
+        format!(
+            r#"<PrivateAction><ControllerAction><ActivateControllerAction{reference} longitudinal="{long}" lateral="{lat}"/></ControllerAction></PrivateAction>"#
+        )
     }
 
     /// An OverrideControllerValueAction: a throttle and/or a steering-wheel value, switched on
@@ -146,14 +189,28 @@ impl Gen<'_> {
         )
     }
 
-    /// An AssignControllerAction in the story, activating what it assigns.
+    /// An AssignControllerAction in the story, activating what it assigns: in 1.3 the
+    /// Controller inside an ObjectController (named at times: esmini names the assigned
+    /// controller after it), before 1.3 the Controller alone; 1.0 has no activate attributes
+    /// (esmini reads them all the same).
     pub(crate) fn assign_controller_action(&mut self, actor: &str) -> String {
         // (a NaturalDriver assigned in the story makes esmini 3.6.0 crash)
         let kind = self.pick(&["ACCController", "ALKS_R157SM_Controller", "LoomingController"]);
         let controller = self.controller_xml(kind, actor);
         self.feature("action:AssignControllerAction");
+        let body = if self.rev_minor >= 3 {
+            if self.chance(0.4) {
+                self.feature("controller:assigned-named-object-controller");
+                format!(r#"<ObjectController name="{actor}Assigned">{controller}</ObjectController>"#)
+            } else {
+                format!("<ObjectController>{controller}</ObjectController>")
+            }
+        } else {
+            self.feature("controller:assigned-without-object-controller");
+            controller
+        };
         format!(
-            r#"<PrivateAction><ControllerAction><AssignControllerAction activateLongitudinal="true" activateLateral="true"><ObjectController>{controller}</ObjectController></AssignControllerAction></ControllerAction></PrivateAction>"#
+            r#"<PrivateAction><ControllerAction><AssignControllerAction activateLongitudinal="true" activateLateral="true">{body}</AssignControllerAction></ControllerAction></PrivateAction>"#
         )
     }
 }

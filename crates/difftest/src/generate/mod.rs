@@ -145,6 +145,11 @@ pub(crate) struct Gen<'a> {
     serial: u32,
     /// The areas drawn from their whole grammar (bit per `Area::ALL` index).
     rich: u16,
+    /// The FileHeader's `revMinor` (OpenSCENARIO 1.0 to 1.3): esmini reads some elements
+    /// differently before 1.3 (an Orientation without a type, a controller's name).
+    pub rev_minor: u32,
+    /// Entities whose ObjectController wrapper has a name (`{entity}Ctrl`).
+    pub named_wrappers: Vec<String>,
 }
 
 impl<'a> Gen<'a> {
@@ -164,11 +169,14 @@ impl<'a> Gen<'a> {
             forced_condition: None,
             serial: 0,
             rich: 0,
+            rev_minor: 3,
+            named_wrappers: Vec::new(),
         }
     }
 
-    /// Chooses the scenario's focus and the areas drawn in with it (named as features).
-    fn choose_areas(&mut self) {
+    /// Chooses the scenario's focus and the areas drawn in with it (named as features), and its
+    /// OpenSCENARIO version (`rev_minor` when given).
+    fn choose_areas(&mut self, rev_minor: Option<u32>) {
         let focus = self.rng.gen_range(0..Area::ALL.len());
         self.feature(format!("focus:{}", Area::ALL[focus].label()));
         for (i, a) in Area::ALL.iter().enumerate() {
@@ -177,6 +185,14 @@ impl<'a> Gen<'a> {
                 self.feature(format!("area:{}", a.label()));
             }
         }
+        // mostly 1.3; older files as users still write them
+        if self.rng.gen_bool(0.25) {
+            self.rev_minor = self.rng.gen_range(0..3);
+        }
+        if let Some(v) = rev_minor {
+            self.rev_minor = v;
+        }
+        self.feature(format!("header:OpenSCENARIO 1.{}", self.rev_minor));
     }
 
     /// Whether `area` draws from its whole grammar in this scenario.
@@ -250,13 +266,33 @@ pub(crate) fn f3(v: f64) -> String {
 }
 
 /// Scenario `index` of `seed` on one of `maps` (referred to by `map.name` from the folder the
-/// scenario is written to).
+/// scenario is written to). A quarter of them are written as OpenSCENARIO 1.0, 1.1 or 1.2, the
+/// versions users' older files have; one that uses what its version's schema does not have is
+/// written again as 1.3 (the same draws otherwise), so every file is valid for its own version.
 pub fn generate(seed: u64, index: u64, maps: &[MapChoice]) -> Generated {
+    let older = generate_as(seed, index, maps, None);
+    if older.rev_minor >= 3 || valid_for_its_version(&older) {
+        return older.generated;
+    }
+    generate_as(seed, index, maps, Some(3)).generated
+}
+
+struct Draft {
+    generated: Generated,
+    rev_minor: u32,
+}
+
+fn generate_as(seed: u64, index: u64, maps: &[MapChoice], rev_minor: Option<u32>) -> Draft {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     rng.set_stream(index);
     let map = &maps[rng.gen_range(0..maps.len())];
     let mut g = Gen::new(rng, map);
-    g.choose_areas();
+    g.choose_areas(rev_minor);
     let xosc = g.scenario(seed, index);
-    Generated { name: format!("s{seed}_{index:05}"), xosc, features: g.features }
+    Draft { generated: Generated { name: format!("s{seed}_{index:05}"), xosc, features: g.features }, rev_minor: g.rev_minor }
+}
+
+fn valid_for_its_version(d: &Draft) -> bool {
+    let path = std::path::Path::new(&d.generated.name);
+    openscenario::validate::validate_str(path, &d.generated.xosc, &[]).iter().all(|f| f.severity != openscenario::validate::Severity::Error)
 }

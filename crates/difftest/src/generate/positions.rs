@@ -35,12 +35,26 @@ impl Gen<'_> {
             self.feature(format!("{prefix}orientation:relative"));
             // the file's text: half a turn is written as 3.1416, as authors do
             let h = self.pick(&["0", "3.1416", "0.2", "-0.3"]);
-            (format!(r#"<Orientation type="relative" h="{h}"/>"#), h == "3.1416")
+            let kind = self.orientation_type("relative", prefix);
+            // (untyped before 1.3 it is absolute: not facing back)
+            let back = h == "3.1416" && (!kind.is_empty() || self.rev_minor >= 3);
+            (format!(r#"<Orientation{kind} h="{h}"/>"#), back)
         } else {
             self.feature(format!("{prefix}orientation:absolute"));
             let h = self.num(-PI, PI);
-            (format!(r#"<Orientation type="absolute" h="{h}"/>"#), false)
+            let kind = self.orientation_type("absolute", prefix);
+            (format!(r#"<Orientation{kind} h="{h}"/>"#), false)
         }
+    }
+
+    /// The ` type="…"` of an Orientation, or nothing at times: esmini then reads it as
+    /// absolute before OpenSCENARIO 1.3 and as relative from 1.3 on.
+    fn orientation_type(&mut self, kind: &str, prefix: &str) -> String {
+        if self.chance(0.25) {
+            self.feature(format!("{prefix}orientation:untyped/1.{}", self.rev_minor));
+            return String::new();
+        }
+        format!(r#" type="{kind}""#)
     }
 
     /// A LanePosition of `place` with lateral `offset`.

@@ -115,7 +115,7 @@ impl Gen<'_> {
         if controller.is_some() && (!self.rich(Area::Controllers) || self.chance(0.6)) {
             self.feature("controller:activated-in-init");
             let kind = controller.clone().unwrap_or_default();
-            actions.push_str(&self.activate_controller_action(&kind));
+            actions.push_str(&self.activate_controller_action(name, &kind));
         }
         actions
     }
@@ -136,7 +136,7 @@ impl Gen<'_> {
                 self.feature("controller:activated-in-story");
                 self.feature("action:ActivateControllerAction");
                 let kind = self.entity(&actor).and_then(|e| e.controller.clone()).unwrap_or_default();
-                self.activate_controller_action(&kind)
+                self.activate_controller_action(&actor, &kind)
             } else if self.rich(Area::Controllers) && self.entity(&actor).is_some_and(|e| e.vehicle() && e.controller.is_none()) && self.chance(0.15) {
                 // (the override's draw only in this branch: other scenarios keep their bytes)
                 if self.chance(0.3) {
@@ -223,7 +223,8 @@ impl Gen<'_> {
                     t = "ACCController";
                 }
                 ghost_taken |= t == "FollowGhostController";
-                controller_xml = format!("<ObjectController>{}</ObjectController>", self.controller_xml(t, &name));
+                let wrapper = self.object_controller_open(&name);
+                controller_xml = format!("{wrapper}{}</ObjectController>", self.controller_xml(t, &name));
                 controller = Some(t.to_string());
             }
             let _ = write!(definitions, r#"<ScenarioObject name="{name}">{definition}{controller_xml}</ScenarioObject>"#);
@@ -274,7 +275,7 @@ impl Gen<'_> {
         format!(
             r#"<?xml version="1.0" encoding="UTF-8"?>
 <OpenSCENARIO>
-<FileHeader revMajor="1" revMinor="3" date="2026-01-01T00:00:00" description="difftest seed {seed} scenario {index}" author="osc2cr difftest"/>
+<FileHeader revMajor="1" revMinor="{rev_minor}" date="2026-01-01T00:00:00" description="difftest seed {seed} scenario {index}" author="osc2cr difftest"/>
 {parameters}{variables}
 <CatalogLocations/>
 <RoadNetwork><LogicFile filepath="{map}"/>{signals}</RoadNetwork>
@@ -289,7 +290,8 @@ impl Gen<'_> {
 </Storyboard>
 </OpenSCENARIO>
 "#,
-            map = self.map.name
+            map = self.map.name,
+            rev_minor = self.rev_minor
         )
     }
 }
