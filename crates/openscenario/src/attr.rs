@@ -55,6 +55,8 @@ macro_rules! xml_enum {
 pub(crate) struct Record {
     pub sites: RefCell<Vec<ReferenceSite>>,
     pub problems: RefCell<Vec<Diagnostic>>,
+    /// The scenario's `revMinor` once its FileHeader is read: some defaults depend on it.
+    pub rev_minor: std::cell::Cell<Option<u32>>,
 }
 
 /// Where we are: the file being read, the parameters in scope and the reading's record.

@@ -2,6 +2,7 @@
 
 mod heading_across_road;
 mod lane_drift_headings;
+mod orientation_untyped;
 mod relative_across_junctions;
 mod relative_junction_tie;
 mod relative_lane_ds;

@@ -7,7 +7,9 @@ crate::xml_enum! {
     ReferenceContext { Relative = "relative", Absolute = "absolute" }
 }
 
-/// Orientation; a missing angle is `None` (the standard's default is 0, relative).
+/// Orientation; a missing angle is `None` (the standard's default is 0, relative). A missing
+/// `type` is read as the file's version makes it (absolute up to 1.2, relative from 1.3, as
+/// esmini reads it); `None` only outside a scenario (a catalog read alone).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
 pub struct Orientation {
     pub reference: Option<ReferenceContext>,

@@ -13,9 +13,22 @@ pub(crate) fn read_position(r: &mut Reader, cx: &Cx, wrapper: &Elem) -> Result<P
     read_position_kind(r, cx, e)
 }
 
+/// An Orientation without a `type` takes its file's default, as esmini reads it
+/// (ScenarioReader::parseOSCOrientation): absolute up to OpenSCENARIO 1.2, relative from 1.3
+/// (the standard's 1.3 default).
 fn orientation(cx: &Cx, e: &Elem) -> Result<Option<Orientation>, Error> {
     e.child("Orientation")
-        .map(|o| Ok(Orientation { reference: cx.opt_enum(o, "type")?, h: cx.opt_f64(o, "h")?, p: cx.opt_f64(o, "p")?, r: cx.opt_f64(o, "r")? }))
+        .map(|o| {
+            let reference = match cx.opt_enum(o, "type")? {
+                Some(kind) => Some(kind),
+                None => match cx.record.rev_minor.get() {
+                    Some(minor) if minor <= 2 => Some(ReferenceContext::Absolute),
+                    Some(_) => Some(ReferenceContext::Relative),
+                    None => None,
+                },
+            };
+            Ok(Orientation { reference, h: cx.opt_f64(o, "h")?, p: cx.opt_f64(o, "p")?, r: cx.opt_f64(o, "r")? })
+        })
         .transpose()
 }
 

@@ -65,6 +65,8 @@ pub(crate) fn read_scenario(
         }
     };
 
+    record.rev_minor.set(Some(header.rev_minor));
+
     let road_network = read_road_network(r, &cx, root.child("RoadNetwork"), &dir)?;
     let (entities, entity_selections) = match root.child("Entities") {
         Some(e) => read_entities(r, &cx, e)?,
