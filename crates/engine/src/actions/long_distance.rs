@@ -76,7 +76,7 @@ impl<'a> Sim<'a> {
             freespace: spec.freespace,
             continuous: spec.continuous,
             cs: spec.coordinate_system.unwrap_or(CoordinateSystem::Entity),
-            side: 1.0,
+            side: Some(1.0),
             max_acc: c.max_acceleration.unwrap_or(LARGE),
             max_dec: c.max_deceleration.unwrap_or(LARGE),
             max_acc_rate: c.max_acceleration_rate.unwrap_or(LARGE),
@@ -84,14 +84,18 @@ impl<'a> Sim<'a> {
             max_speed: c.max_speed.unwrap_or(LARGE),
             acceleration: 0.0,
         };
+        // Before 1.1 esmini reads no displacement and keeps the sign of the distance or time
+        // gap (ScenarioReader::parseOSCPrivateAction, LongDistanceAction::Step: displacement
+        // NONE); from 1.1 on it takes the magnitude and the displacement's side.
         rt.side = match spec.displacement.unwrap_or(LongitudinalDisplacement::TrailingReferencedEntity) {
-            LongitudinalDisplacement::TrailingReferencedEntity => 1.0,
-            LongitudinalDisplacement::LeadingReferencedEntity => -1.0,
+            _ if self.scenario.header.rev_minor < 1 => None,
+            LongitudinalDisplacement::TrailingReferencedEntity => Some(1.0),
+            LongitudinalDisplacement::LeadingReferencedEntity => Some(-1.0),
             LongitudinalDisplacement::Any => {
                 if self.long_gap(e, &rt) < 0.0 {
-                    -1.0
+                    Some(-1.0)
                 } else {
-                    1.0
+                    Some(1.0)
                 }
             }
         };
@@ -104,7 +108,11 @@ impl<'a> Sim<'a> {
         let distance = self.long_gap(e, r);
         let (Some(me), Some(other)) = (self.entities.get(e), self.entities.get(r.target)) else { return true };
         let (speed, ref_speed) = (me.speed, other.speed);
-        let requested = r.side * if r.time_gap { ref_speed.abs() * r.value } else { r.value }.abs();
+        let written = if r.time_gap { ref_speed.abs() * r.value } else { r.value };
+        let requested = match r.side {
+            Some(side) => side * written.abs(),
+            None => written,
+        };
         let diff = distance - requested;
         let done = !r.continuous && diff.abs() < THRESHOLD;
         if r.max_acc >= LARGE && r.max_dec >= LARGE {

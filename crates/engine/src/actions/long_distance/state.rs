@@ -11,8 +11,9 @@ pub(crate) struct LongDistanceRt {
     pub(super) freespace: bool,
     pub(super) continuous: bool,
     pub(super) cs: CoordinateSystem,
-    /// +1 trailing (reference ahead), -1 leading.
-    pub(super) side: f64,
+    /// +1 trailing (reference ahead), -1 leading; `None`: the value's own sign (OpenSCENARIO
+    /// 1.0, which has no displacement).
+    pub(super) side: Option<f64>,
     pub(super) max_acc: f64,
     pub(super) max_dec: f64,
     pub(super) max_acc_rate: f64,
