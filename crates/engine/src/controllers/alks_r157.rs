@@ -12,6 +12,7 @@
 //! formulas, in `distance_models.rs`). Distances are free space in road coordinates (s, t).
 
 mod distance_models;
+mod overlap;
 pub(crate) mod state;
 
 use state::{AlksR157Rt, Info, Mode, Model, Phase, Scen, Trigger};
@@ -23,9 +24,9 @@ use crate::roads::road_follow::{at_unlinked_road_end, MoveStatus};
 use crate::sim::Sim;
 use openscenario::{Controller, EntityObject};
 
-const SMALL: f64 = 1e-10;
+// CommonMini's SMALL_NUMBER (1e-6), every tolerance of ControllerALKS_R157SM
+use crate::dynamics::ESMINI_SMALL_NUMBER as SMALL;
 const LARGE: f64 = 1e10;
-const G: f64 = 9.8;
 
 impl Info {
     fn empty() -> Info {
@@ -62,12 +63,18 @@ impl AlksR157Rt {
             "FSM" => (Model::Fsm, None),
             other => (Model::ReferenceDriver, Some(format!("ALKS_R157SM model `{other}` is not modelled; ReferenceDriver drives"))),
         };
-        let (rt, max_dec, max_range) = match model {
+        let (rt, mut max_dec, max_range) = match model {
             Model::Regulation => (0.35, 6.0, 46.0),
             Model::ReferenceDriver | Model::Rss => (0.75, 0.774 * 9.81, 100.0),
             // FSM's detection range is the Regulation's (ControllerALKS_R157SM::FSM::FSM)
             Model::Fsm => (0.75, 0.774 * 9.81, 46.0),
         };
+        // the ReferenceDriver's braking properties (ControllerALKS_R157SM's constructor reads
+        // them for that model only; a negative deceleration has its sign swapped)
+        let reference = model == Model::ReferenceDriver;
+        if let Some(d) = num("driverDeceleration").filter(|_| reference) {
+            max_dec = d.abs();
+        }
         let lat_trig = num("lateralTrigDistance");
         let trigger = match lat_trig {
             Some(th) => Trigger { wandering: false, base: th, threshold: th, active: false, obj: None, t0: 0.0 },
@@ -99,7 +106,9 @@ impl AlksR157Rt {
             ped_eval_time: num("pedestrianRiskEvaluationTime").unwrap_or(0.4),
             aeb_ttc: num("aebTTC").unwrap_or(1.5),
             aeb_active: false,
-            overlap_tol: num("overlapTolerance").unwrap_or(0.2),
+            aeb_dec: num("aebDeceleration").filter(|_| reference).map_or(0.85 * 9.81, f64::abs),
+            aeb_available: !(reference && p("aebAvailable").as_deref() == Some("false")),
+            overlap_tol: num("overlapTolerance").unwrap_or(0.1),
             trigger,
             speed_now: 0.0,
             dt: 0.0,
@@ -145,15 +154,8 @@ impl AlksR157Rt {
     }
 }
 
-fn sign(x: f64) -> f64 {
-    if x > 0.0 {
-        1.0
-    } else if x < 0.0 {
-        -1.0
-    } else {
-        0.0
-    }
-}
+// esmini's SIGN: 1 for zero
+use distance_models::esmini_sign as sign;
 
 impl<'a> Sim<'a> {
     fn alks_frame(&self, i: usize) -> Option<Frame> {
@@ -361,26 +363,6 @@ impl<'a> Sim<'a> {
         a.focus.obj.and_then(|o| self.entities.get(o)).map(|en| en.speed).unwrap_or(0.0)
     }
 
-    fn alks_overlapping_front(&self, e: usize, o: usize, tol: f64) -> bool {
-        let (Some(fe), Some(fo)) = (self.alks_frame(e), self.alks_frame(o)) else { return false };
-        let (be, bo) = (self.entities[e].bbox, self.entities[o].bbox);
-        let ce = fe.t + be[1];
-        let (e0, e1) = (ce - be[4] / 2.0, ce + be[4] / 2.0);
-        // the other's lateral extent in road coordinates
-        let mut t0 = f64::MAX;
-        let mut t1 = f64::MIN;
-        for (dx, dy) in [(1.0, 1.0), (1.0, -1.0), (-1.0, 1.0), (-1.0, -1.0)] {
-            let x = bo[0] + dx * bo[3] / 2.0;
-            let y = bo[1] + dy * bo[4] / 2.0;
-            let t = fo.t + x * fo.hrel.sin() + y * fo.hrel.cos();
-            t0 = t0.min(t);
-            t1 = t1.max(t);
-        }
-        let inside = t0 > e0 - tol && t1 < e1 + tol;
-        let covering = t0 < e0 + tol && t1 > e1 - tol;
-        inside || covering
-    }
-
     fn alks_check_critical(&self, e: usize, a: &mut AlksR157Rt, v: f64) -> bool {
         let dt = a.dt;
         match a.model {
@@ -425,8 +407,13 @@ impl<'a> Sim<'a> {
                 } else if (v > SMALL && a.focus.dist_long > 0.0) || a.full_stop {
                     self.alks_check_critical_condition(a);
                 }
+                // ReferenceDriver::UpdateAEB
                 if let Some(o) = a.focus.obj {
-                    if !a.aeb_active && a.focus.ttc < a.aeb_ttc && self.alks_overlapping_front(e, o, a.overlap_tol) {
+                    if a.aeb_available
+                        && !a.aeb_active
+                        && a.focus.ttc < a.aeb_ttc
+                        && overlap::covers_or_inside_front(&self.entities[e], &self.entities[o], a.overlap_tol)
+                    {
                         a.aeb_active = true;
                     }
                 }
@@ -542,12 +529,12 @@ impl<'a> Sim<'a> {
                 if a.phase == Phase::React {
                     a.acc = (-0.4f64).min(a.acc);
                 } else if a.phase == Phase::BrakeRef {
-                    a.acc -= dt * 0.774 * G / 0.6;
+                    a.acc -= dt * a.max_dec / 0.6;
                 }
                 if a.aeb_active {
-                    a.acc -= dt * 0.85 * G / 0.6;
+                    a.acc -= dt * a.aeb_dec / 0.6;
                 }
-                a.acc = if a.aeb_active { a.acc.max(-0.85 * G) } else { a.acc.max(-0.774 * G) };
+                a.acc = if a.aeb_active { a.acc.max(-a.aeb_dec) } else { a.acc.max(-a.max_dec) };
                 (v + a.acc * dt).max(0.0)
             }
         }

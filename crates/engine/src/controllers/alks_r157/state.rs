@@ -88,6 +88,9 @@ pub(crate) struct AlksR157Rt {
     pub(super) ped_eval_time: f64,
     pub(super) aeb_ttc: f64,
     pub(super) aeb_active: bool,
+    /// The AEB's deceleration (`aebDeceleration`, 0.85 g) and whether it exists (`aebAvailable`).
+    pub(super) aeb_dec: f64,
+    pub(super) aeb_available: bool,
     pub(super) overlap_tol: f64,
     pub(super) trigger: Trigger,
     /// Ego speed at the start of the current step.
