@@ -22,7 +22,7 @@ use crate::roads::move_along_s;
 use crate::roads::road_follow::wrap;
 use crate::roads::road_follow::{at_unlinked_road_end, MoveStatus};
 use crate::sim::Sim;
-use openscenario::{Controller, EntityObject};
+use openscenario::{Controller, EntityObject, VehicleCategory};
 
 // CommonMini's SMALL_NUMBER (1e-6), every tolerance of ControllerALKS_R157SM
 use crate::dynamics::ESMINI_SMALL_NUMBER as SMALL;
@@ -227,10 +227,14 @@ impl<'a> Sim<'a> {
             tr.active = true;
             tr.t0 = fo.t;
             if tr.wandering {
+                // WanderingTrigger::Update: a motorbike already on the ego's side of its lane
+                // centre keeps the plain threshold
+                let motorbike =
+                    matches!(self.scenario.entities.get(o).map(|x| &x.object), Some(EntityObject::Vehicle(v)) if v.category == VehicleCategory::Motorbike);
                 tr.threshold = tr.base;
                 if (fo.t > fe.t && fo.offset > 0.0) || (fo.t < fe.t && fo.offset < 0.0) {
                     tr.threshold += fo.offset.abs();
-                } else {
+                } else if !motorbike {
                     tr.threshold = (tr.threshold - fo.offset.abs()).max(0.0);
                 }
             }

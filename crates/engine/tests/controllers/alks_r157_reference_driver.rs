@@ -8,6 +8,12 @@
 //! TTC is under 1.5 s — only when the lead covers the follower's front face within the overlap
 //! tolerance, 0.1 m by default (Object::OverlappingFront): the aligned lead does, the one
 //! 0.15 m to the side does not, so that follower stops braking when the gap opens again.
+//!
+//! `alks_r157_motorbike_wandering.xosc`: a car and a motorbike, each 0.3 m from its lane's
+//! centre towards a follower's lane, drift towards it. The wandering trigger
+//! (WanderingTrigger::Update) lowers its 0.375 m threshold by that offset for the car, not for
+//! the motorbike: the car is perceived cutting in and braked for, the motorbike later, too late
+//! to be critical.
 
 use crate::common::*;
 
@@ -29,6 +35,23 @@ fn the_reference_driver_brakes_to_its_max_deceleration_and_its_aeb_needs_the_lea
             ("OffsetEgo", 4.00, 470.882524, 8.344837),
             ("OffsetEgo", 5.00, 475.537192, 2.194556),
             ("OffsetEgo", 6.50, 478.829026, 2.194556),
+        ],
+        1e-5,
+    );
+}
+
+#[test]
+fn the_wandering_trigger_keeps_its_threshold_for_a_motorbike() {
+    let run = run_fixture("alks_r157_motorbike_wandering.xosc", "straight.xodr");
+    assert_esmini_x_speed(
+        &run,
+        &[
+            ("CarEgo", 2.50, 100.0, 20.0),
+            ("CarEgo", 3.00, 109.798028, 19.202741),
+            ("CarEgo", 4.00, 129.000769, 19.202741),
+            ("CarEgo", 6.00, 167.406252, 19.202741),
+            ("BikeEgo", 3.00, 460.0, 20.0),
+            ("BikeEgo", 6.00, 520.0, 20.0),
         ],
         1e-5,
     );
