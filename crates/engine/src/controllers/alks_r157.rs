@@ -18,7 +18,7 @@ pub(crate) mod state;
 use state::{AlksR157Rt, Info, Mode, Model, Phase, Scen, Trigger};
 
 use crate::entities::EntityKind;
-use crate::roads::move_along_s;
+use crate::roads::move_along_route_drawing;
 use crate::roads::road_follow::wrap;
 use crate::roads::road_follow::{at_unlinked_road_end, MoveStatus};
 use crate::sim::Sim;
@@ -575,15 +575,18 @@ impl<'a> Sim<'a> {
         }
         let speed = if self.alks_check_critical(e, a, v) { self.alks_react(a, v) } else { self.alks_cruise(e, a, v) };
         let net = self.net;
+        let random = &mut self.random;
         let Some(en) = self.entities.get_mut(e) else { return };
         // Active on the lateral domain only, the default controller has moved the entity
         // already, and this moves it again (ControllerALKS_R157SM::Step moves it in override
         // mode). In frame 0 (dt 0) esmini's MoveAlongS(0) still puts the entity where its road
         // coordinates are: one placed before the road's start or past its end lands on it.
+        // The move is Object::MoveAlongS, the default controller's and the ACC's: it follows an
+        // assigned route and takes a junction arm by the object's selector angle.
         if a.override_mode && !a.moved_by_action {
             match (net, en.lane) {
                 (Some(net), Some(mut lp)) => {
-                    let status = move_along_s(net, &mut lp, speed * dt);
+                    let status = move_along_route_drawing(net, &mut lp, speed * dt, en.route.as_deref(), random, false);
                     // As the ACC's move (`acc.rs`): Position::MoveAlongS flags the end of the
                     // road when no connection continues the lane, or a move ends at an end
                     // without a road link.
