@@ -112,7 +112,6 @@ impl AlksR157Rt {
             trigger,
             speed_now: 0.0,
             dt: 0.0,
-            moved_by_action: false,
             at_end: false,
             rt_counter: 0.0,
             cfs: 0.0,
@@ -582,8 +581,10 @@ impl<'a> Sim<'a> {
         // mode). In frame 0 (dt 0) esmini's MoveAlongS(0) still puts the entity where its road
         // coordinates are: one placed before the road's start or past its end lands on it.
         // The move is Object::MoveAlongS, the default controller's and the ACC's: it follows an
-        // assigned route and takes a junction arm by the object's selector angle.
-        if a.override_mode && !a.moved_by_action {
+        // assigned route and takes a junction arm by the object's selector angle. It is made
+        // whatever moved the entity before in this step (another controller in override mode
+        // beside it, an action).
+        if a.override_mode {
             match (net, en.lane) {
                 (Some(net), Some(mut lp)) => {
                     let status = move_along_route_drawing(net, &mut lp, speed * dt, en.route.as_deref(), random, false);

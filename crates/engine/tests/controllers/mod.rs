@@ -3,6 +3,7 @@
 mod acc;
 mod alks;
 mod alks_r157;
+mod alks_r157_beside_acc;
 mod alks_r157_end_of_road;
 mod alks_r157_one_domain;
 mod alks_r157_reference_driver;
