@@ -177,17 +177,21 @@ impl<'a> Sim<'a> {
             return false;
         }
         let (Some(fe), Some(fo)) = (self.alks_frame(e), self.alks_frame(o)) else { return false };
-        if fe.road != fo.road {
-            return false;
-        }
+        let Some(net) = self.net else { return false };
         let dir = if fe.hrel.abs() > std::f64::consts::FRAC_PI_2 { -1.0 } else { 1.0 };
-        let ds_ref = (fo.s - fe.s) * dir;
+        let (ds_ref, mut dlane) = if fe.road == fo.road {
+            // Position::Delta's dLaneId is the plain difference of the lane ids (the road's
+            // frame, not the ego's), less the centre lane between them (below)
+            (((fo.s - fe.s) * dir), fo.lane - fe.lane)
+        } else {
+            // on another road: Position::Delta forward along the road path, within the range
+            let (Some(la), Some(lb)) = (self.entities[e].lane, self.entities[o].lane) else { return false };
+            let Some(d) = crate::controllers::forward_delta::forward_delta(net, &la, self.entities[e].h, &lb, a.max_range) else { return false };
+            (d.ds, d.d_lane)
+        };
         if ds_ref.abs() > a.max_range {
             return false;
         }
-        // Position::Delta's dLaneId is the plain difference of the lane ids (the road's frame,
-        // not the ego's), less the centre lane between them
-        let mut dlane = fo.lane - fe.lane;
         if dlane == 2 && fo.lane == 1 && fe.lane == -1 {
             dlane = 1;
         } else if dlane == -2 && fo.lane == -1 && fe.lane == 1 {
@@ -198,8 +202,12 @@ impl<'a> Sim<'a> {
             return false;
         }
         info.dlane = dlane;
-        let Some(net) = self.net else { return false };
-        let Some(gap) = crate::conditions::free_space::free_space_road(net, &self.entities[e], &self.entities[o], fe.road, dir) else { return false };
+        // Object::FreeSpaceDistanceObjectRoadLane: corners off the ego's road are measured
+        // along the road path
+        let (ego, other) = (&self.entities[e], &self.entities[o]);
+        let gap = crate::conditions::free_space::free_space_road(net, ego, other, fe.road, dir)
+            .or_else(|| crate::conditions::free_space::free_space_roads(net, ego, other, fe.road));
+        let Some(gap) = gap else { return false };
         info.dist_lat = gap.dt;
         info.dist_long = gap.ds;
         info.dv_s = (fe.v_s - fo.v_s) * dir;

@@ -5,6 +5,7 @@ mod alks;
 mod alks_r157;
 mod alks_r157_beside_acc;
 mod alks_r157_end_of_road;
+mod alks_r157_lead_on_next_road;
 mod alks_r157_one_domain;
 mod alks_r157_reference_driver;
 mod alks_r157_reversing_set_speed;
