@@ -222,7 +222,9 @@ impl<'a> Sim<'a> {
                         self.activate_controller(e, None, lat, long);
                     }
                 }
-                ActionRt::Done
+                // AssignControllerAction::Step does nothing and nothing ends it: it runs on
+                // (its event does not complete) until something else ends it
+                ActionRt::Overridden
             }
             PrivateAction::LightState { light_type, state, transition_time } => {
                 let (time, entity) = (self.time, self.entities.get(e).map_or(String::new(), |en| en.name.clone()));

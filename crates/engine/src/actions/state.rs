@@ -21,8 +21,8 @@ pub(crate) enum ActionRt {
     LatDistance(Box<super::lat_distance::state::LatDistanceRt>),
     /// Nothing left to do.
     Done,
-    /// Started on an entity driven from outside: runs without effect and never ends
-    /// (external/overridden.rs).
+    /// Runs without effect and never ends: started on an entity driven from outside
+    /// (external/overridden.rs), or an AssignControllerAction (esmini's Step does nothing).
     Overridden,
     /// Ended in its start, as esmini's actions that call `OSCAction::End` from `Start`: the
     /// action is complete before the triggers later in the storyboard are evaluated.

@@ -34,14 +34,20 @@ pub(crate) struct FreeSpaceGap {
 /// esmini snaps a position to (LaneSection::GetClosestLaneIdx with the lane types of the
 /// measuring entity's position: `sidewalks` for a pedestrian).
 fn road_corners(net: &RoadNetwork, e: &Entity, road: usize, hint_s: f64, sidewalks: bool) -> Option<[LanePosition; 4]> {
+    located_corners(net, e, road, hint_s, sidewalks, true)
+}
+
+/// [`road_corners`], each corner on the road `world_to_lane` puts it on from a start on `road`
+/// (`only_road`: `None` where one lies on another road).
+fn located_corners(net: &RoadNetwork, e: &Entity, road: usize, hint_s: f64, sidewalks: bool, only_road: bool) -> Option<[LanePosition; 4]> {
     let [fl, fr, rr, rl] = corners(e);
     let mut out = [None; 4];
     for (k, (x, y)) in [fl, rl, rr, fr].into_iter().enumerate() {
         let mut p = world_to_lane(net, x, y, Some((road, hint_s)))?;
-        if p.road != road {
+        if only_road && p.road != road {
             return None;
         }
-        if let Some((lane, offset)) = net.roads.get(road).and_then(|r| snap(r, p.section, p.s, p.t, sidewalks)) {
+        if let Some((lane, offset)) = net.roads.get(p.road).and_then(|r| snap(r, p.section, p.s, p.t, sidewalks)) {
             (p.lane_id, p.offset) = (lane, offset);
         }
         out[k] = Some(p);
@@ -60,14 +66,20 @@ pub(crate) fn free_space_road(net: &RoadNetwork, a: &Entity, b: &Entity, road: u
     let sidewalks = a.kind == EntityKind::Pedestrian;
     let ca = road_corners(net, a, road, hint, sidewalks)?;
     let cb = road_corners(net, b, road, b.lane.map_or(hint, |l| l.s), sidewalks)?;
+    // RoadPath::Calculate on one road: the s difference, turned for facing against s
+    gap_of(&ca, &cb, |pa, pb| Some(((pb.s - pa.s) * dir, pb.t - pa.t)))
+}
+
+/// The smallest of the sixteen corner-to-corner deltas `delta` gives along s and across t
+/// (`None` where one is not found), zero where a corner of the first box lies between the
+/// second's.
+fn gap_of(ca: &[LanePosition; 4], cb: &[LanePosition; 4], delta: impl Fn(&LanePosition, &LanePosition) -> Option<(f64, f64)>) -> Option<FreeSpaceGap> {
     let mut ds = [[0.0; 4]; 4];
     let mut dt = [[0.0; 4]; 4];
     let (mut min_ds, mut min_dt) = (0.0f64, 0.0f64);
     for (i, pa) in ca.iter().enumerate() {
         for (j, pb) in cb.iter().enumerate() {
-            // RoadPath::Calculate on one road: the s difference, turned for facing against s
-            ds[i][j] = (pb.s - pa.s) * dir;
-            dt[i][j] = pb.t - pa.t;
+            (ds[i][j], dt[i][j]) = delta(pa, pb)?;
             if (i == 0 && j == 0) || ds[i][j].abs() < min_ds.abs() {
                 min_ds = ds[i][j];
             }
@@ -85,4 +97,42 @@ pub(crate) fn free_space_road(net: &RoadNetwork, a: &Entity, b: &Entity, road: u
         min_dt = 0.0;
     }
     Some(FreeSpaceGap { ds: min_ds, dt: min_dt, front_right_lanes: Some((ca[3].lane_id, cb[3].lane_id)) })
+}
+
+/// [`free_space_road`] where the corners may lie on other roads than `road` (`a`'s), as
+/// FreeSpaceDistanceObjectRoadLane has it: each corner is located from `a`'s position
+/// (XYZ2TrackPos, the roads connected to it) keeping `a`'s heading, and a pair of corners on
+/// two roads is measured by Position::Delta along the road path between them (RoadPath::
+/// Calculate in both directions: its length, negative when the path leaves the corner's road
+/// behind it, turned again for a heading against the corner's lane's driving direction; across,
+/// the t difference, or the sum where the path turns the lane ids around). `None` where a
+/// corner is on no road or two corners are not joined by a path (esmini: not measured).
+pub(crate) fn free_space_roads(net: &RoadNetwork, a: &Entity, b: &Entity, road: usize) -> Option<FreeSpaceGap> {
+    if boxes_overlap(&corners(a), &corners(b)) {
+        return Some(FreeSpaceGap { ds: 0.0, dt: 0.0, front_right_lanes: None });
+    }
+    let hint = a.lane.map_or(0.0, |l| l.s);
+    let sidewalks = a.kind == EntityKind::Pedestrian;
+    let ca = located_corners(net, a, road, hint, sidewalks, false)?;
+    let cb = located_corners(net, b, road, b.lane.map_or(hint, |l| l.s), sidewalks, false)?;
+    let h = a.h;
+    // the corner position faces against its road (GetHRelative in (pi/2, 3pi/2))
+    let backwards = |p: &LanePosition| (h - p.heading).cos() < 0.0;
+    gap_of(&ca, &cb, |pa, pb| {
+        if pa.road == pb.road {
+            return Some(((pb.s - pa.s) * if backwards(pa) { -1.0 } else { 1.0 }, pb.t - pa.t));
+        }
+        let ra = net.roads.get(pa.road)?;
+        let rb = net.roads.get(pb.road)?;
+        let path = crate::roads::road_path::path_ends(net, pa.road, pa.s, pa.lane_id, pb.road)?;
+        // RoadPath::Calculate's direction_: +1 when the path leaves by the end the corner faces
+        let ahead = (path.first_exit == opendrive::ContactPoint::End) != backwards(pa);
+        let mut dist = path.length_to(pb.s, rb.length) * if ahead { 1.0 } else { -1.0 };
+        // GetHRelativeDrivingDirection in (pi/2, 3pi/2) as an angle difference in [-pi, pi]
+        let drive_h = opendrive::driving_direction::driving_heading(ra.rule, pa.lane_id, pa.heading);
+        if crate::controllers::looming::view::angle_difference(h, drive_h) > std::f64::consts::FRAC_PI_2 {
+            dist = -dist;
+        }
+        Some((dist, if path.lanes_flip { pb.t + pa.t } else { pb.t - pa.t }))
+    })
 }

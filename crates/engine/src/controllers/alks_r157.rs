@@ -12,20 +12,21 @@
 //! formulas, in `distance_models.rs`). Distances are free space in road coordinates (s, t).
 
 mod distance_models;
+mod overlap;
 pub(crate) mod state;
 
 use state::{AlksR157Rt, Info, Mode, Model, Phase, Scen, Trigger};
 
 use crate::entities::EntityKind;
-use crate::roads::move_along_s;
+use crate::roads::move_along_route_drawing;
 use crate::roads::road_follow::wrap;
 use crate::roads::road_follow::{at_unlinked_road_end, MoveStatus};
 use crate::sim::Sim;
-use openscenario::{Controller, EntityObject};
+use openscenario::{Controller, EntityObject, VehicleCategory};
 
-const SMALL: f64 = 1e-10;
+// CommonMini's SMALL_NUMBER (1e-6), every tolerance of ControllerALKS_R157SM
+use crate::dynamics::ESMINI_SMALL_NUMBER as SMALL;
 const LARGE: f64 = 1e10;
-const G: f64 = 9.8;
 
 impl Info {
     fn empty() -> Info {
@@ -62,12 +63,18 @@ impl AlksR157Rt {
             "FSM" => (Model::Fsm, None),
             other => (Model::ReferenceDriver, Some(format!("ALKS_R157SM model `{other}` is not modelled; ReferenceDriver drives"))),
         };
-        let (rt, max_dec, max_range) = match model {
+        let (rt, mut max_dec, max_range) = match model {
             Model::Regulation => (0.35, 6.0, 46.0),
             Model::ReferenceDriver | Model::Rss => (0.75, 0.774 * 9.81, 100.0),
             // FSM's detection range is the Regulation's (ControllerALKS_R157SM::FSM::FSM)
             Model::Fsm => (0.75, 0.774 * 9.81, 46.0),
         };
+        // the ReferenceDriver's braking properties (ControllerALKS_R157SM's constructor reads
+        // them for that model only; a negative deceleration has its sign swapped)
+        let reference = model == Model::ReferenceDriver;
+        if let Some(d) = num("driverDeceleration").filter(|_| reference) {
+            max_dec = d.abs();
+        }
         let lat_trig = num("lateralTrigDistance");
         let trigger = match lat_trig {
             Some(th) => Trigger { wandering: false, base: th, threshold: th, active: false, obj: None, t0: 0.0 },
@@ -99,11 +106,12 @@ impl AlksR157Rt {
             ped_eval_time: num("pedestrianRiskEvaluationTime").unwrap_or(0.4),
             aeb_ttc: num("aebTTC").unwrap_or(1.5),
             aeb_active: false,
-            overlap_tol: num("overlapTolerance").unwrap_or(0.2),
+            aeb_dec: num("aebDeceleration").filter(|_| reference).map_or(0.85 * 9.81, f64::abs),
+            aeb_available: !(reference && p("aebAvailable").as_deref() == Some("false")),
+            overlap_tol: num("overlapTolerance").unwrap_or(0.1),
             trigger,
             speed_now: 0.0,
             dt: 0.0,
-            moved_by_action: false,
             at_end: false,
             rt_counter: 0.0,
             cfs: 0.0,
@@ -145,15 +153,8 @@ impl AlksR157Rt {
     }
 }
 
-fn sign(x: f64) -> f64 {
-    if x > 0.0 {
-        1.0
-    } else if x < 0.0 {
-        -1.0
-    } else {
-        0.0
-    }
-}
+// esmini's SIGN: 1 for zero
+use distance_models::esmini_sign as sign;
 
 impl<'a> Sim<'a> {
     fn alks_frame(&self, i: usize) -> Option<Frame> {
@@ -176,17 +177,21 @@ impl<'a> Sim<'a> {
             return false;
         }
         let (Some(fe), Some(fo)) = (self.alks_frame(e), self.alks_frame(o)) else { return false };
-        if fe.road != fo.road {
-            return false;
-        }
+        let Some(net) = self.net else { return false };
         let dir = if fe.hrel.abs() > std::f64::consts::FRAC_PI_2 { -1.0 } else { 1.0 };
-        let ds_ref = (fo.s - fe.s) * dir;
+        let (ds_ref, mut dlane) = if fe.road == fo.road {
+            // Position::Delta's dLaneId is the plain difference of the lane ids (the road's
+            // frame, not the ego's), less the centre lane between them (below)
+            (((fo.s - fe.s) * dir), fo.lane - fe.lane)
+        } else {
+            // on another road: Position::Delta forward along the road path, within the range
+            let (Some(la), Some(lb)) = (self.entities[e].lane, self.entities[o].lane) else { return false };
+            let Some(d) = crate::controllers::forward_delta::forward_delta(net, &la, self.entities[e].h, &lb, a.max_range) else { return false };
+            (d.ds, d.d_lane)
+        };
         if ds_ref.abs() > a.max_range {
             return false;
         }
-        // Position::Delta's dLaneId is the plain difference of the lane ids (the road's frame,
-        // not the ego's), less the centre lane between them
-        let mut dlane = fo.lane - fe.lane;
         if dlane == 2 && fo.lane == 1 && fe.lane == -1 {
             dlane = 1;
         } else if dlane == -2 && fo.lane == -1 && fe.lane == 1 {
@@ -197,8 +202,12 @@ impl<'a> Sim<'a> {
             return false;
         }
         info.dlane = dlane;
-        let Some(net) = self.net else { return false };
-        let Some(gap) = crate::conditions::free_space::free_space_road(net, &self.entities[e], &self.entities[o], fe.road, dir) else { return false };
+        // Object::FreeSpaceDistanceObjectRoadLane: corners off the ego's road are measured
+        // along the road path
+        let (ego, other) = (&self.entities[e], &self.entities[o]);
+        let gap = crate::conditions::free_space::free_space_road(net, ego, other, fe.road, dir)
+            .or_else(|| crate::conditions::free_space::free_space_roads(net, ego, other, fe.road));
+        let Some(gap) = gap else { return false };
         info.dist_lat = gap.dt;
         info.dist_long = gap.ds;
         info.dv_s = (fe.v_s - fo.v_s) * dir;
@@ -225,10 +234,14 @@ impl<'a> Sim<'a> {
             tr.active = true;
             tr.t0 = fo.t;
             if tr.wandering {
+                // WanderingTrigger::Update: a motorbike already on the ego's side of its lane
+                // centre keeps the plain threshold
+                let motorbike =
+                    matches!(self.scenario.entities.get(o).map(|x| &x.object), Some(EntityObject::Vehicle(v)) if v.category == VehicleCategory::Motorbike);
                 tr.threshold = tr.base;
                 if (fo.t > fe.t && fo.offset > 0.0) || (fo.t < fe.t && fo.offset < 0.0) {
                     tr.threshold += fo.offset.abs();
-                } else {
+                } else if !motorbike {
                     tr.threshold = (tr.threshold - fo.offset.abs()).max(0.0);
                 }
             }
@@ -361,26 +374,6 @@ impl<'a> Sim<'a> {
         a.focus.obj.and_then(|o| self.entities.get(o)).map(|en| en.speed).unwrap_or(0.0)
     }
 
-    fn alks_overlapping_front(&self, e: usize, o: usize, tol: f64) -> bool {
-        let (Some(fe), Some(fo)) = (self.alks_frame(e), self.alks_frame(o)) else { return false };
-        let (be, bo) = (self.entities[e].bbox, self.entities[o].bbox);
-        let ce = fe.t + be[1];
-        let (e0, e1) = (ce - be[4] / 2.0, ce + be[4] / 2.0);
-        // the other's lateral extent in road coordinates
-        let mut t0 = f64::MAX;
-        let mut t1 = f64::MIN;
-        for (dx, dy) in [(1.0, 1.0), (1.0, -1.0), (-1.0, 1.0), (-1.0, -1.0)] {
-            let x = bo[0] + dx * bo[3] / 2.0;
-            let y = bo[1] + dy * bo[4] / 2.0;
-            let t = fo.t + x * fo.hrel.sin() + y * fo.hrel.cos();
-            t0 = t0.min(t);
-            t1 = t1.max(t);
-        }
-        let inside = t0 > e0 - tol && t1 < e1 + tol;
-        let covering = t0 < e0 + tol && t1 > e1 - tol;
-        inside || covering
-    }
-
     fn alks_check_critical(&self, e: usize, a: &mut AlksR157Rt, v: f64) -> bool {
         let dt = a.dt;
         match a.model {
@@ -425,8 +418,13 @@ impl<'a> Sim<'a> {
                 } else if (v > SMALL && a.focus.dist_long > 0.0) || a.full_stop {
                     self.alks_check_critical_condition(a);
                 }
+                // ReferenceDriver::UpdateAEB
                 if let Some(o) = a.focus.obj {
-                    if !a.aeb_active && a.focus.ttc < a.aeb_ttc && self.alks_overlapping_front(e, o, a.overlap_tol) {
+                    if a.aeb_available
+                        && !a.aeb_active
+                        && a.focus.ttc < a.aeb_ttc
+                        && overlap::covers_or_inside_front(&self.entities[e], &self.entities[o], a.overlap_tol)
+                    {
                         a.aeb_active = true;
                     }
                 }
@@ -542,12 +540,12 @@ impl<'a> Sim<'a> {
                 if a.phase == Phase::React {
                     a.acc = (-0.4f64).min(a.acc);
                 } else if a.phase == Phase::BrakeRef {
-                    a.acc -= dt * 0.774 * G / 0.6;
+                    a.acc -= dt * a.max_dec / 0.6;
                 }
                 if a.aeb_active {
-                    a.acc -= dt * 0.85 * G / 0.6;
+                    a.acc -= dt * a.aeb_dec / 0.6;
                 }
-                a.acc = if a.aeb_active { a.acc.max(-0.85 * G) } else { a.acc.max(-0.774 * G) };
+                a.acc = if a.aeb_active { a.acc.max(-a.aeb_dec) } else { a.acc.max(-a.max_dec) };
                 (v + a.acc * dt).max(0.0)
             }
         }
@@ -584,15 +582,20 @@ impl<'a> Sim<'a> {
         }
         let speed = if self.alks_check_critical(e, a, v) { self.alks_react(a, v) } else { self.alks_cruise(e, a, v) };
         let net = self.net;
+        let random = &mut self.random;
         let Some(en) = self.entities.get_mut(e) else { return };
         // Active on the lateral domain only, the default controller has moved the entity
         // already, and this moves it again (ControllerALKS_R157SM::Step moves it in override
         // mode). In frame 0 (dt 0) esmini's MoveAlongS(0) still puts the entity where its road
         // coordinates are: one placed before the road's start or past its end lands on it.
-        if a.override_mode && !a.moved_by_action {
+        // The move is Object::MoveAlongS, the default controller's and the ACC's: it follows an
+        // assigned route and takes a junction arm by the object's selector angle. It is made
+        // whatever moved the entity before in this step (another controller in override mode
+        // beside it, an action).
+        if a.override_mode {
             match (net, en.lane) {
                 (Some(net), Some(mut lp)) => {
-                    let status = move_along_s(net, &mut lp, speed * dt);
+                    let status = move_along_route_drawing(net, &mut lp, speed * dt, en.route.as_deref(), random, false);
                     // As the ACC's move (`acc.rs`): Position::MoveAlongS flags the end of the
                     // road when no connection continues the lane, or a move ends at an end
                     // without a road link.

@@ -318,7 +318,8 @@ impl<'a> Sim<'a> {
                     // Stepped after the default controller (`step_controllers_in_order`), which
                     // leaves the entity alone when the model holds the longitudinal domain.
                     if a.active && self.entities.get(e).is_some_and(|en| en.active) {
-                        self.hold_for_override(e, &mut a.moved_by_action, a.override_mode && a.longitudinal);
+                        // (the model moves the entity whatever moved it before: what the hold notes is unused)
+                        self.hold_for_override(e, &mut false, a.override_mode && a.longitudinal);
                     }
                 }
                 ControllerRt::NaturalDriver(a) => {

@@ -1,6 +1,7 @@
 //! Each action, checked against hand computations or esmini 3.6.0's runs.
 
 mod add_delete_entity;
+mod assign_controller_never_ends;
 mod basic;
 mod lane_change;
 mod lane_offset_relative;

@@ -3,9 +3,13 @@
 mod acc;
 mod alks;
 mod alks_r157;
+mod alks_r157_beside_acc;
 mod alks_r157_end_of_road;
+mod alks_r157_lead_on_next_road;
 mod alks_r157_one_domain;
+mod alks_r157_reference_driver;
 mod alks_r157_reversing_set_speed;
+mod alks_r157_route;
 mod alks_r157_rss_fsm;
 mod controllers_off_speed_from_displacement;
 mod follow_reference_ties;

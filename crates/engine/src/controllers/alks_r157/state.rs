@@ -88,14 +88,15 @@ pub(crate) struct AlksR157Rt {
     pub(super) ped_eval_time: f64,
     pub(super) aeb_ttc: f64,
     pub(super) aeb_active: bool,
+    /// The AEB's deceleration (`aebDeceleration`, 0.85 g) and whether it exists (`aebAvailable`).
+    pub(super) aeb_dec: f64,
+    pub(super) aeb_available: bool,
     pub(super) overlap_tol: f64,
     pub(super) trigger: Trigger,
     /// Ego speed at the start of the current step.
     pub(super) speed_now: f64,
     /// The current step's length (Model::dt_): 0 in frame 0, where esmini steps it too.
     pub(super) dt: f64,
-    /// An action moved the entity in this step's storyboard step (then the model does not).
-    pub(in crate::controllers) moved_by_action: bool,
     /// Where the model's own last move left the entity: at a road's end, no road beyond
     /// (Position::MoveAlongS's POS_STATUS_END_OF_ROAD), seen by the next step.
     pub(super) at_end: bool,
