@@ -222,7 +222,8 @@ impl<'a> Sim<'a> {
                         self.activate_controller(e, None, lat, long);
                     }
                 }
-                ActionRt::Done
+                // AssignControllerAction::Start never ends it, and its Step is empty.
+                ActionRt::Lingers
             }
             PrivateAction::LightState { light_type, state, transition_time } => {
                 let (time, entity) = (self.time, self.entities.get(e).map_or(String::new(), |en| en.name.clone()));
@@ -315,7 +316,7 @@ impl<'a> Sim<'a> {
                 ActionRt::Synchronize(y) => self.step_synchronize(e, y),
                 ActionRt::LongDistance(d) => self.step_long_distance(e, d),
                 ActionRt::LatDistance(d) => self.step_lat_distance(e, d),
-                ActionRt::Overridden => false,
+                ActionRt::Overridden | ActionRt::Lingers => false,
                 ActionRt::Done | ActionRt::EndedAtStart => true,
             };
             self.time = saved;

@@ -24,6 +24,9 @@ pub(crate) enum ActionRt {
     /// Started on an entity driven from outside: runs without effect and never ends
     /// (external/overridden.rs).
     Overridden,
+    /// Started, without anything left to do, and never ends: esmini's AssignControllerAction,
+    /// whose Step does nothing and which nothing ends (its event runs on until the stop).
+    Lingers,
     /// Ended in its start, as esmini's actions that call `OSCAction::End` from `Start`: the
     /// action is complete before the triggers later in the storyboard are evaluated.
     EndedAtStart,
