@@ -201,11 +201,19 @@ impl<'a> Sim<'a> {
                     en.controller_active = on;
                 }
                 // a name that names none of the entity's controllers activates nothing
-                if name.is_none_or(|n| self.controllers.iter().any(|c| c.entity == e && &c.name == n)) {
+                let found = self.controllers.iter().any(|c| c.entity == e && name.is_none_or(|n| &c.name == n));
+                if found {
                     self.switch_off_conflicting(e, *lateral, *longitudinal);
                 }
                 self.activate_controller(e, name.map(String::as_str), lateral.unwrap_or(true), longitudinal.unwrap_or(true));
-                ActionRt::Done
+                // ActivateControllerAction::Start ends the action only when it found a
+                // controller to activate; without one (none assigned, or none of that name) it
+                // neither starts nor ends it, and its event runs on until the stop.
+                if found {
+                    ActionRt::Done
+                } else {
+                    ActionRt::Lingers
+                }
             }
             PrivateAction::AssignController { controller, object_controller_name, activate_longitudinal, activate_lateral, .. } => {
                 if let Some(c) = controller {

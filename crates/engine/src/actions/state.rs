@@ -25,7 +25,8 @@ pub(crate) enum ActionRt {
     /// (external/overridden.rs).
     Overridden,
     /// Started, without anything left to do, and never ends: esmini's AssignControllerAction,
-    /// whose Step does nothing and which nothing ends (its event runs on until the stop).
+    /// whose Step does nothing and which nothing ends, and an ActivateControllerAction that
+    /// found no controller to activate (its event runs on until the stop).
     Lingers,
     /// Ended in its start, as esmini's actions that call `OSCAction::End` from `Start`: the
     /// action is complete before the triggers later in the storyboard are evaluated.
