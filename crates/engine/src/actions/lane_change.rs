@@ -57,6 +57,18 @@ fn snap_lane(net: &RoadNetwork, lp: &mut LanePos, sidewalks: bool) {
     }
 }
 
+/// The lane a position locked on its lane (a looming controller's) is attached to after a lane
+/// change step: esmini's XYZ2TrackPos with `lockOnLane_` takes the lane of the snapped-to types
+/// nearest the centre of the lane the position is in (`fixed_t`), keeps the offset from that
+/// centre and the point itself (SetX/SetY) — a lane change onto a border lane leaves the entity
+/// in the driving lane beside it.
+fn locked_lane_id(net: &RoadNetwork, lp: &LanePos, sidewalks: bool) -> Option<i32> {
+    let road = net.roads.get(lp.road)?;
+    let s = lp.s.clamp(0.0, road.length);
+    let fixed_t = lane_center_t(road, lp.lane_id, s)?;
+    crate::roads::lane_snap::snap(road, road.section_index_at(s), s, fixed_t, sidewalks).map(|(id, _)| id)
+}
+
 /// The lateral position (t) esmini gives the centre of a lane that does not exist: width 0 at
 /// the outer border of the last lane before it on its side (LaneSection::GetCenterOffset with
 /// GetWidth 0 for a missing lane). `None` for lane 0 or a road without sections.
@@ -228,18 +240,24 @@ impl<'a> Sim<'a> {
             l.internal.dir * sign(f64::from(l.internal.lane_id)) * angle
         };
         let mut attached = l.internal;
-        // XYZ2TrackPos re-attaches the position to the lane it is in, unless it is locked on
-        // its lane (a looming controller's): then it stays in the target lane.
+        // XYZ2TrackPos re-attaches the position to the lane it is in, or, locked on its lane
+        // (a looming controller's), to the lane nearest the target lane's centre (`locked_lane_id`).
         let locked = self.lane_locked(e);
         let en = &mut self.entities[e];
         // With a route esmini skips that re-attachment: the entity is in the target lane from
         // the first step, at the offset still to go (so an ACC no longer follows the vehicle
         // in the lane it leaves).
+        let sidewalks = en.kind == crate::entities::EntityKind::Pedestrian;
         if !locked && en.route.is_none() {
-            snap_lane(net, &mut attached, en.kind == crate::entities::EntityKind::Pedestrian);
+            snap_lane(net, &mut attached, sidewalks);
         }
         en.yaw_offset = yaw;
         en.set_lane_pos(net, attached);
+        if locked && en.route.is_none() {
+            if let (Some(lp), Some(id)) = (en.lane.as_mut(), locked_lane_id(net, &attached, sidewalks)) {
+                lp.lane_id = id;
+            }
+        }
         en.moved_by_action = true;
         if status == MoveStatus::EndOfRoad {
             // esmini ends the lane change where the road ends (POS_STATUS_END_OF_ROAD →

@@ -201,11 +201,19 @@ impl<'a> Sim<'a> {
                     en.controller_active = on;
                 }
                 // a name that names none of the entity's controllers activates nothing
-                if name.is_none_or(|n| self.controllers.iter().any(|c| c.entity == e && &c.name == n)) {
+                let found = self.controllers.iter().any(|c| c.entity == e && name.is_none_or(|n| &c.name == n));
+                if found {
                     self.switch_off_conflicting(e, *lateral, *longitudinal);
                 }
                 self.activate_controller(e, name.map(String::as_str), lateral.unwrap_or(true), longitudinal.unwrap_or(true));
-                ActionRt::Done
+                // ActivateControllerAction::Start ends the action only when it found a
+                // controller to activate; without one (none assigned, or none of that name) it
+                // neither starts nor ends it, and its event runs on until the stop.
+                if found {
+                    ActionRt::Done
+                } else {
+                    ActionRt::Lingers
+                }
             }
             PrivateAction::AssignController { controller, object_controller_name, activate_longitudinal, activate_lateral, .. } => {
                 if let Some(c) = controller {
@@ -222,9 +230,8 @@ impl<'a> Sim<'a> {
                         self.activate_controller(e, None, lat, long);
                     }
                 }
-                // AssignControllerAction::Step does nothing and nothing ends it: it runs on
-                // (its event does not complete) until something else ends it
-                ActionRt::Overridden
+                // AssignControllerAction::Start never ends it, and its Step is empty.
+                ActionRt::Lingers
             }
             PrivateAction::LightState { light_type, state, transition_time } => {
                 let (time, entity) = (self.time, self.entities.get(e).map_or(String::new(), |en| en.name.clone()));
@@ -317,7 +324,7 @@ impl<'a> Sim<'a> {
                 ActionRt::Synchronize(y) => self.step_synchronize(e, y),
                 ActionRt::LongDistance(d) => self.step_long_distance(e, d),
                 ActionRt::LatDistance(d) => self.step_lat_distance(e, d),
-                ActionRt::Overridden => false,
+                ActionRt::Overridden | ActionRt::Lingers => false,
                 ActionRt::Done | ActionRt::EndedAtStart => true,
             };
             self.time = saved;

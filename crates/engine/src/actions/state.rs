@@ -21,9 +21,13 @@ pub(crate) enum ActionRt {
     LatDistance(Box<super::lat_distance::state::LatDistanceRt>),
     /// Nothing left to do.
     Done,
-    /// Runs without effect and never ends: started on an entity driven from outside
-    /// (external/overridden.rs), or an AssignControllerAction (esmini's Step does nothing).
+    /// Started on an entity driven from outside: runs without effect and never ends
+    /// (external/overridden.rs).
     Overridden,
+    /// Started, without anything left to do, and never ends: esmini's AssignControllerAction,
+    /// whose Step does nothing and which nothing ends, and an ActivateControllerAction that
+    /// found no controller to activate (its event runs on until the stop).
+    Lingers,
     /// Ended in its start, as esmini's actions that call `OSCAction::End` from `Start`: the
     /// action is complete before the triggers later in the storyboard are evaluated.
     EndedAtStart,

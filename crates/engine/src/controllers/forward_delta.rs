@@ -11,7 +11,6 @@ use super::lane_router::connected_lane_at_s;
 use super::lane_router::connecting_lane_id;
 use super::looming::view::angle_difference;
 use super::natural_driver::view::LARGE_NUMBER;
-use crate::roads::junction_connections;
 use crate::roads::lane_geometry::lane_center_t;
 use crate::roads::LanePos;
 use opendrive::{ContactPoint, ElementType, JunctionType, RoadNetwork};
@@ -80,7 +79,7 @@ pub(crate) fn forward_delta(net: &RoadNetwork, a: &LanePos, a_h: f64, b: &LanePo
             ContactPoint::End => (0.0, len, rb.length),
         };
         adj = connected_lane_at_s(net, n.road, n.from_lane, from_s, to_s);
-        adj = connecting_lane(net, (n.road, n.end), adj, b.road);
+        adj = connecting_lane_id(net, (n.road, n.end), adj, b.road);
         adj = connected_lane_at_s(net, b.road, adj, b_from, b.s);
     }
     let mut d_lane = b.lane_id - adj;
@@ -157,49 +156,11 @@ fn search(net: &RoadNetwork, a: &LanePos, forward: bool, b: &LanePos, max: f64) 
     Some((tmp, *visited.last()?))
 }
 
-/// Road::GetConnectingLaneId: the lane `lane` of the link's road leads to on `next`; through a
-/// default junction by esmini's connections (counter connections too), through a direct one by
-/// its linked roads, else by the lane's own link.
-fn connecting_lane(net: &RoadNetwork, link: (usize, ContactPoint), lane: i32, next: usize) -> i32 {
-    let junction = net.roads.get(link.0).and_then(|r| r.link_at(link.1)).filter(|l| l.element_type == ElementType::Junction);
-    let j = junction.and_then(|l| net.junction_index(&l.element_id));
-    match j {
-        Some(j) if net.junctions.get(j).is_some_and(|j| j.kind != JunctionType::Direct) => junction_connections::entering(net, j, link.0)
-            .iter()
-            .filter(|c| c.connecting == next)
-            .find_map(|c| c.lane_links.iter().find(|l| l.0 == lane).map(|l| l.1))
-            .unwrap_or(0),
-        Some(j) => direct_connecting_lane(net, j, link.0, lane, next),
-        None => connecting_lane_id(net, link, lane, next),
-    }
-}
-
-/// Road::GetConnectingLaneId through a direct junction: the connection from `road` to `next`
-/// (its `linkedRoad`), else the counter connection esmini adds for the linked road (incoming
-/// and linked road swapped, lane links turned round).
-fn direct_connecting_lane(net: &RoadNetwork, j: usize, road: usize, lane: i32, next: usize) -> i32 {
-    let (Some(junction), Some(r), Some(n)) = (net.junctions.get(j), net.roads.get(road), net.roads.get(next)) else { return 0 };
-    let (id, next_id) = (Some(r.id.as_str()), Some(n.id.as_str()));
-    let forward = junction
-        .connections
-        .iter()
-        .filter(|c| c.incoming_road.as_deref() == id && c.target_road() == next_id)
-        .find_map(|c| c.lane_links.iter().find(|l| l.from == lane).map(|l| l.to));
-    let counter = || {
-        junction
-            .connections
-            .iter()
-            .filter(|c| c.target_road() == id && c.incoming_road.as_deref() == next_id)
-            .find_map(|c| c.lane_links.iter().find(|l| l.to == lane).map(|l| l.from))
-    };
-    forward.or_else(counter).unwrap_or(0)
-}
-
 /// RoadPath::CheckRoad: step from `src`'s link onto `check` when `src`'s lane continues there,
 /// queueing the link at `check`'s far end (always as a new node, as esmini's list scan leaves
 /// its index at the end; an equal link already queued only gets the shorter distance).
 fn check_road(net: &RoadNetwork, check: usize, src: &Node, visited: &[Node], unvisited: &mut Vec<Node>) {
-    let lane = connecting_lane(net, (src.road, src.end), src.from_lane, check);
+    let lane = connecting_lane_id(net, (src.road, src.end), src.from_lane, check);
     if lane == 0 {
         return;
     }

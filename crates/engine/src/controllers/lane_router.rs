@@ -5,6 +5,7 @@
 //! target). The open set is a binary heap kept exactly as libstdc++'s `std::priority_queue`
 //! keeps it, because esmini breaks equal weights by that heap's order.
 
+use crate::roads::junction_connections;
 use opendrive::{ContactPoint, ElementType, JunctionType, Road, RoadKind, RoadLink, RoadNetwork};
 use routing::Strategy;
 
@@ -69,7 +70,11 @@ pub(crate) fn average_speed(road: &Road) -> f64 {
 }
 
 /// esmini's `Road::GetConnectingLaneId`: the lane `from_lane` of `road` leads to on
-/// `next_road` across link `link`; 0 for none.
+/// `next_road` across link `link`; 0 for none. Through a default junction by esmini's
+/// connections (its counter connections too: `junction_connections::entering`), through a
+/// direct one by the connection to the linked road, else by the counter connection esmini adds
+/// for it (OpenDrive::CheckJunctionConnection: incoming and linked road swapped, lane links
+/// turned round); across a road link by the lane's own link.
 pub(crate) fn connecting_lane_id(net: &RoadNetwork, link: Link, from_lane: i32, next_road: usize) -> i32 {
     let Some(road) = net.roads.get(link.0) else { return 0 };
     let Some(rl) = road.link_at(link.1) else { return 0 };
@@ -84,22 +89,28 @@ pub(crate) fn connecting_lane_id(net: &RoadNetwork, link: Link, from_lane: i32, 
             ids.first().copied().unwrap_or(0)
         }
         ElementType::Junction => {
-            let Some(j) = net.junction(&rl.element_id) else { return 0 };
-            // esmini reads a direct junction's connection road from `linkedRoad`
-            // (OpenDrive::LoadOpenDriveFile), any other junction's from `connectingRoad`.
-            let direct = j.kind == JunctionType::Direct;
-            for c in &j.connections {
-                if c.incoming_road.as_deref() != Some(road.id.as_str()) {
-                    continue;
-                }
-                let leads_to = if direct { c.linked_road.as_deref() } else { c.connecting_road.as_deref() };
-                for ll in c.lane_links.iter().filter(|ll| ll.from == from_lane) {
-                    if leads_to == Some(next.id.as_str()) {
-                        return ll.to;
-                    }
-                }
+            let Some(ji) = net.junction_index(&rl.element_id) else { return 0 };
+            let Some(j) = net.junctions.get(ji) else { return 0 };
+            if j.kind != JunctionType::Direct {
+                return junction_connections::entering(net, ji, link.0)
+                    .iter()
+                    .filter(|c| c.connecting == next_road)
+                    .find_map(|c| c.lane_links.iter().find(|l| l.0 == from_lane).map(|l| l.1))
+                    .unwrap_or(0);
             }
-            0
+            let (id, next_id) = (Some(road.id.as_str()), Some(next.id.as_str()));
+            let forward = j
+                .connections
+                .iter()
+                .filter(|c| c.incoming_road.as_deref() == id && c.target_road() == next_id)
+                .find_map(|c| c.lane_links.iter().find(|l| l.from == from_lane).map(|l| l.to));
+            let counter = || {
+                j.connections
+                    .iter()
+                    .filter(|c| c.target_road() == id && c.incoming_road.as_deref() == next_id)
+                    .find_map(|c| c.lane_links.iter().find(|l| l.to == from_lane).map(|l| l.from))
+            };
+            forward.or_else(counter).unwrap_or(0)
         }
     }
 }
@@ -142,21 +153,15 @@ pub(crate) fn connected_lane_at_s(net: &RoadNetwork, road: usize, lane: i32, s_s
     id
 }
 
-/// Roads a link leads to: the linked road, or every connecting road of the junction whose
-/// incoming road is `road`, in connection order (esmini's `GetNextRoads`).
+/// Roads a link leads to (esmini's `GetNextRoads`): the linked road, or the road of every
+/// connection of the junction whose incoming road is `road`, in esmini's order, its counter
+/// connections too — a direct junction's lead to its linked roads (`road_path::next_roads`).
 pub(crate) fn next_roads(net: &RoadNetwork, link: Link) -> Vec<usize> {
     let Some(road) = net.roads.get(link.0) else { return Vec::new() };
     let Some(rl) = road.link_at(link.1) else { return Vec::new() };
     match rl.element_type {
         ElementType::Road => net.road_index(&rl.element_id).into_iter().collect(),
-        ElementType::Junction => {
-            let Some(j) = net.junction(&rl.element_id) else { return Vec::new() };
-            j.connections
-                .iter()
-                .filter(|c| c.incoming_road.as_deref() == Some(road.id.as_str()))
-                .filter_map(|c| c.connecting_road.as_deref().and_then(|id| net.road_index(id)))
-                .collect()
-        }
+        ElementType::Junction => crate::roads::road_path::next_roads(net, link.0, link.1).into_iter().map(|e| e.road).collect(),
     }
 }
 

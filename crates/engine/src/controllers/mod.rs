@@ -58,13 +58,10 @@ impl<'a> Sim<'a> {
                 continue;
             }
             // esmini's ScenarioEngine::step steps every active controller whether or not its
-            // entity is in the simulation. Done so for the ACC (a deleted entity's speed goes on
-            // changing: fixture acc_steps_while_away.xosc); the other models wait while their
-            // entity is deleted.
-            let away_acc = matches!(slot.rt, Some(ControllerRt::Acc(_)));
-            if !away_acc && !self.entities.get(e).is_some_and(|en| en.active) {
-                continue;
-            }
+            // entity is in the simulation (AddEntityAction and DeleteEntityAction leave the
+            // controllers alone): a deleted entity's speed goes on changing (fixture
+            // acc_steps_while_away.xosc) and a ghost follower's vehicle drives on, placing the
+            // entity where it drove once it is back (follow_ghost_steps_while_away.xosc).
             let Some(mut c) = self.controllers.get_mut(k).and_then(|s| s.rt.take()) else { continue };
             step(self, e, &mut c);
             if let Some(slot) = self.controllers.get_mut(k) {

@@ -198,3 +198,19 @@ fn a_lane_change_into_the_other_direction_misses_the_waypoint_and_no_path_is_fou
         assert!(close(e.speed, v, 1e-12) && close(e.x, x, 1e-9) && close(e.y, y, 1e-9), "{t}: {e:?}");
     }
 }
+
+#[test]
+fn a_direct_junction_leads_the_path_search_to_its_linked_road() {
+    // follow_route_direct_junction.xosc (`direct_junction_two_roads.xodr`: road 1 joins road 2
+    // through a direct junction): the path to road 2, lane −2 goes through the junction's
+    // linkedRoad, so the controller stays on (a path not found would switch it off and test
+    // mode would stop Ego) and changes to lane −2 at once. (time, x, y) from esmini 3.6.0.
+    let run = run_fixture_on("follow_route_direct_junction.xosc", "direct_junction_two_roads.xodr", 15.0);
+    assert!(run.warnings.is_empty(), "{:?}", run.warnings);
+    for (t, x, y) in
+        [(1.0, 19.953675, -2.593453), (2.0, 29.799172, -4.343069), (3.0, 39.746512, -5.249616), (10.0, 109.746511, -5.25), (15.0, 159.746511, -5.25)]
+    {
+        let e = at(&run, "Ego", t);
+        assert!(close(e.x, x, 1e-3) && close(e.y, y, 1e-3) && close(e.speed, 10.0, 1e-9), "at {t} s: {e:?}, esmini ({x}, {y})");
+    }
+}

@@ -70,6 +70,30 @@ fn a_lane_change_only_moves_the_lane_the_looming_car_is_locked_on() {
 }
 
 #[test]
+fn a_lane_change_onto_a_border_lane_leaves_the_looming_car_in_the_driving_lane() {
+    // looming_lane_change_onto_border.xosc (bay.xodr): the lane change from lane -2 towards the
+    // border lane -3 puts the position, locked on its lane, in the driving lane nearest lane
+    // -3's centre (-2, XYZ2TrackPos with lockOnLane_), at the lane change's point and heading,
+    // from where the controller looks before it places the car: the steering swings the car
+    // left, off the road. (time, x, y, speed, lane, offset) from esmini 3.6.0's trace.
+    let r = crate::common::run_fixture("looming_lane_change_onto_border.xosc", "bay.xodr");
+    let expected = [
+        (1.01, 22.644707, -5.000332, 14.659438, -2, -0.000332),
+        (1.5, 29.927425, -4.742871, 14.972416, -2, 0.257129),
+        (2.0, 37.20765, -3.066532, 14.997878, -2, 1.933468),
+        (3.0, 47.007952, 7.509488, 14.999987, -2, 12.509488),
+        (4.0, 47.379432, 22.461644, 14.998785, -2, 27.461644),
+        (6.0, 26.181054, 35.219927, 14.999309, -2, 40.219927),
+    ];
+    for (t, x, y, v, lane, offset) in expected {
+        let s = at(&r, "Ego", t);
+        let road = s.road.expect("on the road");
+        assert!(close(s.x, x, 1e-3) && close(s.y, y, 1e-3) && close(s.speed, v, 1e-4), "at {t} s: {s:?}, esmini ({x}, {y}) at {v} m/s");
+        assert!(road.lane_id == lane && close(road.lane_offset, offset, 1e-3), "at {t} s: {road:?}, esmini lane {lane} offset {offset}");
+    }
+}
+
+#[test]
 fn activated_laterally_it_turns_the_car_to_the_driving_direction_and_stays_inactive() {
     // looming_lateral_activation.xosc: lane 1 drives against s; the car starts facing along s.
     // esmini 3.6.0 turns it round on activation (Controller::Activate: AlignToRoadHeading); the

@@ -11,6 +11,7 @@ mod alks_r157_reference_driver;
 mod alks_r157_reversing_set_speed;
 mod alks_r157_route;
 mod alks_r157_rss_fsm;
+mod assign_never_ends;
 mod controllers_off_speed_from_displacement;
 mod follow_reference_ties;
 mod follow_route;

@@ -10,4 +10,5 @@ mod init_trajectory_position;
 mod lateral_only;
 mod restart;
 mod shares_trailer_hitch;
+mod steps_while_away;
 mod trail_end_lookahead;
