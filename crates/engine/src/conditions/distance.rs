@@ -5,6 +5,7 @@
 
 use super::boxes::{box_distance, corners, interval_gap};
 use super::free_space::free_space_road;
+use crate::controllers::natural_driver::view::LARGE_NUMBER;
 use crate::entities::Entity;
 use crate::roads::lane_geometry::lane_center_t;
 use opendrive::RoadNetwork;
@@ -72,17 +73,20 @@ pub(crate) fn between(net: Option<&RoadNetwork>, a: &Entity, b: &Entity, cs: Coo
                     dt
                 };
             }
+            // Where no road path joins the roads, esmini's Position::Delta leaves ds and dt at
+            // LARGE_NUMBER and Position::Distance fails: the conditions read LARGE_NUMBER
+            // (TrigByRelativeDistance, TrigByTimeHeadway, …), LongDistanceAction::Step the ds.
             if kind == RelativeDistanceType::Longitudinal && !freespace {
-                if let Some(ds) = path_ds(net, a, b) {
-                    return ds;
-                }
+                return path_ds(net, a, b).unwrap_or(LARGE_NUMBER);
             }
             // Position::Delta's dt across roads: b's t less a's, or plus it where the path
             // turns the lane ids around (a's lane mapped onto b's road changes sign)
             if kind == RelativeDistanceType::Lateral && !freespace {
-                if let Some(path) = a.lane.and_then(|la| crate::roads::road_path::path_ends(net, ra.0, ra.1, la.lane_id, rb.0)) {
-                    return if path.lanes_flip { rb.2 + ra.2 } else { rb.2 - ra.2 };
-                }
+                return match a.lane.and_then(|la| crate::roads::road_path::path_ends(net, ra.0, ra.1, la.lane_id, rb.0)) {
+                    Some(path) if path.lanes_flip => rb.2 + ra.2,
+                    Some(_) => rb.2 - ra.2,
+                    None => LARGE_NUMBER,
+                };
             }
         }
     }

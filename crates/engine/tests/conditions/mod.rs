@@ -7,6 +7,7 @@ mod clearance_across_roads;
 mod clearance_free_space_corners;
 mod clearance_offroad_headway;
 mod directed_speed;
+mod distance_unlinked_roads;
 mod end_of_road_acc;
 mod freespace_distance_sign;
 mod ignored_value_conditions;
