@@ -4,7 +4,7 @@
 //! (freespace). Longitudinal and lateral results are signed: positive ahead / to the left.
 
 use super::boxes::{box_distance, corners, interval_gap};
-use super::free_space::free_space_road;
+use super::free_space::{free_space_point_road, free_space_road};
 use crate::controllers::natural_driver::view::LARGE_NUMBER;
 use crate::entities::Entity;
 use crate::roads::lane_geometry::lane_center_t;
@@ -168,6 +168,13 @@ pub(crate) fn to_point(net: Option<&RoadNetwork>, a: &Entity, x: f64, y: f64, cs
             let hint = a.lane.map(|l| (l.road, l.s));
             if let Some(lp) = crate::roads::locate::world_to_lane_memo(n, x, y, hint) {
                 p.lane = Some(crate::roads::LanePos { road: lp.road, lane_id: lp.lane_id, s: lp.s, offset: lp.offset, dir: 1.0 });
+                // a box to a point on its own road: its corners, not its extents
+                if freespace && kind != RelativeDistanceType::EuclidianDistance {
+                    let own = a.lane.filter(|la| la.road == lp.road);
+                    if let Some((ds, dt)) = own.and_then(|la| free_space_point_road(n, a, lp.s, lp.t, lp.road, la.dir)) {
+                        return if kind == RelativeDistanceType::Longitudinal { ds } else { dt };
+                    }
+                }
             }
         }
     }

@@ -10,6 +10,7 @@ mod directed_speed;
 mod distance_unlinked_roads;
 mod end_of_road_acc;
 mod freespace_distance_sign;
+mod freespace_point_corners;
 mod ignored_value_conditions;
 mod offroad_lane_offset;
 mod reach_position_all;
