@@ -58,8 +58,10 @@ pub(crate) fn between(net: Option<&RoadNetwork>, a: &Entity, b: &Entity, cs: Coo
                         return if kind == RelativeDistanceType::Longitudinal { gap.ds } else { gap.dt };
                     }
                 }
+                // Position::Delta on one road: ds along the way `a` faces (RoadPath::Calculate),
+                // dt = tB − tA whichever way (a target right of the reference line is negative)
                 let ds = (rb.1 - ra.1) * ra.3;
-                let dt = (rb.2 - ra.2) * ra.3;
+                let dt = rb.2 - ra.2;
                 // (a euclidean distance does not come here)
                 return if kind == RelativeDistanceType::Longitudinal {
                     if freespace {

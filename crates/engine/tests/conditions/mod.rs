@@ -12,6 +12,7 @@ mod end_of_road_acc;
 mod freespace_distance_sign;
 mod freespace_point_corners;
 mod ignored_value_conditions;
+mod lateral_road_distance_sign;
 mod offroad_lane_offset;
 mod reach_position_all;
 mod standstill_clock;
