@@ -2,9 +2,11 @@
 //! triggering-entities rule (any: one true is enough; all: every one must be true).
 
 use super::boxes::{boxes_overlap, corners};
-use super::distance::{between, to_point};
+use super::distance::{between, between_chains, chain_to_point, to_point};
 use super::ConditionRt;
+use crate::controllers::natural_driver::view::LARGE_NUMBER;
 use crate::dynamics::SMALL;
+use crate::entities::Entity;
 use crate::entities::{in_frame, EntityKind};
 use crate::positions::resolve;
 use crate::rules::compare;
@@ -173,28 +175,20 @@ impl<'a> Sim<'a> {
             C::EndOfRoad { duration } => e.end_of_road && t - e.end_of_road_since >= duration - SMALL,
             C::Offroad { duration } => e.offroad_since.is_some_and(|s| self.clock - s > *duration),
             C::ReachPosition { tolerance, .. } => point.is_some_and(|(x, y)| (e.x - x).hypot(e.y - y) < *tolerance),
-            C::Distance { value, rule, options, .. } => point.is_some_and(|(x, y)| {
-                let kind = options.relative_distance_type.unwrap_or(RelativeDistanceType::EuclidianDistance);
-                compare(to_point(self.net, e, x, y, cs_of(options), kind, options.freespace).abs(), *value, *rule)
-            }),
-            C::RelativeDistance { value, rule, options, .. } => o.is_some_and(|o| {
-                let kind = options.relative_distance_type.unwrap_or(RelativeDistanceType::EuclidianDistance);
-                compare(between(self.net, e, o, cs_of(options), kind, options.freespace).abs(), *value, *rule)
-            }),
+            C::Distance { value, rule, options, .. } => point.is_some_and(|(x, y)| compare(self.distance_to_point(idx, x, y, options).abs(), *value, *rule)),
+            C::RelativeDistance { value, rule, options, .. } => other.is_some_and(|j| compare(self.distance_between(idx, j, options).abs(), *value, *rule)),
             C::TimeHeadway { value, rule, options, .. } => {
-                let Some(o) = o else { return Some(false) };
-                let kind = options.relative_distance_type.unwrap_or(RelativeDistanceType::EuclidianDistance);
-                let d = between(self.net, e, o, cs_of(options), kind, options.freespace);
+                let Some(j) = other.filter(|_| o.is_some()) else { return Some(false) };
+                let d = self.distance_between(idx, j, options);
                 if d < 0.0 || e.speed < SMALL {
                     return None;
                 }
                 compare((d / e.speed).abs(), *value, *rule)
             }
             C::TimeToCollision { value, rule, options, .. } => {
-                let kind = options.relative_distance_type.unwrap_or(RelativeDistanceType::EuclidianDistance);
                 let (d, rel_speed) = match (o, point) {
                     (Some(o), _) => {
-                        let d = between(self.net, e, o, cs_of(options), kind, options.freespace);
+                        let d = other.map_or(0.0, |j| self.distance_between(idx, j, options));
                         let (ovx, ovy) = o.vel;
                         let rel = if ovx.abs() < SMALL && ovy.abs() < SMALL {
                             e.speed
@@ -205,7 +199,7 @@ impl<'a> Sim<'a> {
                         };
                         (d, rel)
                     }
-                    (None, Some((x, y))) => (to_point(self.net, e, x, y, cs_of(options), kind, options.freespace), e.speed),
+                    (None, Some((x, y))) => (self.distance_to_point(idx, x, y, options), e.speed),
                     _ => return Some(false),
                 };
                 if d.abs() < SMALL || rel_speed.abs() < SMALL {
@@ -237,6 +231,37 @@ impl<'a> Sim<'a> {
             }
             C::RelativeAngle { .. } => false,
         })
+    }
+}
+
+impl Sim<'_> {
+    /// The distance of a condition from entity `idx` to entity `other`; with freespace esmini
+    /// measures from every vehicle of both towing chains (Object::Distance).
+    fn distance_between(&self, idx: usize, other: usize, options: &DistanceOptions) -> f64 {
+        let kind = options.relative_distance_type.unwrap_or(RelativeDistanceType::EuclidianDistance);
+        let (Some(e), Some(o)) = (self.entities.get(idx), self.entities.get(other)) else { return LARGE_NUMBER };
+        if !options.freespace {
+            return between(self.net, e, o, cs_of(options), kind, false);
+        }
+        let pivots: Vec<&Entity> = self.towing_chain(idx).into_iter().filter_map(|i| self.entities.get(i)).collect();
+        // esmini walks the target's trailers from the target itself
+        let targets: Vec<&Entity> = std::iter::once(other)
+            .chain(self.towing_chain(other).into_iter().skip_while(|&i| i != other).skip(1))
+            .filter_map(|i| self.entities.get(i))
+            .collect();
+        between_chains(self.net, &pivots, &targets, cs_of(options), kind)
+    }
+
+    /// The distance of a condition from entity `idx` to the point (x, y), with freespace from
+    /// every vehicle of its towing chain.
+    fn distance_to_point(&self, idx: usize, x: f64, y: f64, options: &DistanceOptions) -> f64 {
+        let kind = options.relative_distance_type.unwrap_or(RelativeDistanceType::EuclidianDistance);
+        let Some(e) = self.entities.get(idx) else { return LARGE_NUMBER };
+        if !options.freespace {
+            return to_point(self.net, e, x, y, cs_of(options), kind, false);
+        }
+        let pivots: Vec<&Entity> = self.towing_chain(idx).into_iter().filter_map(|i| self.entities.get(i)).collect();
+        chain_to_point(self.net, &pivots, x, y, cs_of(options), kind)
     }
 }
 

@@ -127,6 +127,93 @@ pub(crate) fn between(net: Option<&RoadNetwork>, a: &Entity, b: &Entity, cs: Coo
     }
 }
 
+/// What esmini's Object::FreeSpaceDistance gives for boxes `a` and `b`: the free distance,
+/// and the lateral and longitudinal gaps in `a`'s frame.
+fn box_gaps(a: &Entity, b: &Entity) -> (f64, f64, f64) {
+    let (ca, cb) = (corners(a), corners(b));
+    let (ux, uy) = (a.h.cos(), a.h.sin());
+    (box_distance(&ca, &cb), interval_gap(&ca, &cb, -uy, ux), interval_gap(&ca, &cb, ux, uy))
+}
+
+/// A freespace distance between towing chains, as esmini's Object::Distance measures it with
+/// freeSpace: `pivots` is the measuring entity's chain from its front-most tow vehicle back,
+/// `targets` the other's (or the point, as `to_point` makes it). Euclidean or in the entity
+/// frame: of the pairs of boxes, the one nearest each other (the first on a tie, stopping at a
+/// touch), its free distance signed by its longitudinal gap in the pivot's frame, or that pair's
+/// lateral / longitudinal gap. In road or lane coordinates each pivot is measured to the first
+/// target alone (FreeSpaceDistanceObjectRoadLane is handed the target, never its trailers):
+/// the smallest gap.
+pub(crate) fn between_chains(net: Option<&RoadNetwork>, pivots: &[&Entity], targets: &[&Entity], cs: CoordinateSystem, kind: RelativeDistanceType) -> f64 {
+    let (Some(&a), Some(&b)) = (pivots.first(), targets.first()) else { return LARGE_NUMBER };
+    if pivots.len() == 1 && targets.len() == 1 {
+        return between(net, a, b, cs, kind, true);
+    }
+    if matches!(cs, CoordinateSystem::Road | CoordinateSystem::Lane) && kind != RelativeDistanceType::EuclidianDistance {
+        let mut best = LARGE_NUMBER;
+        for &p in pivots {
+            let d = between(net, p, b, cs, kind, true);
+            if d.abs() < best.abs() {
+                best = d;
+            }
+            if best == 0.0 {
+                break;
+            }
+        }
+        return best;
+    }
+    let mut best: Option<(f64, f64, f64)> = None;
+    'pivots: for &p in pivots {
+        for &t in targets {
+            let g = box_gaps(p, t);
+            if best.is_none_or(|b| g.0.abs() < b.0.abs()) {
+                best = Some(g);
+            }
+            if best.is_some_and(|b| b.0 == 0.0) {
+                break 'pivots;
+            }
+        }
+    }
+    let Some((d, lat, lon)) = best else { return LARGE_NUMBER };
+    match (cs, kind) {
+        (CoordinateSystem::Entity, RelativeDistanceType::Lateral) => lat,
+        (CoordinateSystem::Entity, RelativeDistanceType::Longitudinal) => lon,
+        _ if lon < -crate::dynamics::ESMINI_SMALL_NUMBER => -d,
+        _ => d,
+    }
+}
+
+/// The point (x, y) as `a` measures to it: an entity without a box there.
+fn point_entity(a: &Entity, x: f64, y: f64) -> Entity {
+    let mut p = a.clone();
+    p.x = x;
+    p.y = y;
+    p.bbox = [0.0; 6];
+    p
+}
+
+/// A freespace distance from a towing chain (`pivots`, as for `between_chains`) to the point
+/// (x, y): esmini's Object::Distance(x, y) measures from each vehicle of the chain.
+pub(crate) fn chain_to_point(net: Option<&RoadNetwork>, pivots: &[&Entity], x: f64, y: f64, cs: CoordinateSystem, kind: RelativeDistanceType) -> f64 {
+    let Some(&a) = pivots.first() else { return LARGE_NUMBER };
+    if pivots.len() == 1 {
+        return to_point(net, a, x, y, cs, kind, true);
+    }
+    if matches!(cs, CoordinateSystem::Road | CoordinateSystem::Lane) && kind != RelativeDistanceType::EuclidianDistance {
+        let mut best = LARGE_NUMBER;
+        for &p in pivots {
+            let d = to_point(net, p, x, y, cs, kind, true);
+            if d.abs() < best.abs() {
+                best = d;
+            }
+            if best == 0.0 {
+                break;
+            }
+        }
+        return best;
+    }
+    between_chains(net, pivots, &[&point_entity(a, x, y)], cs, kind)
+}
+
 /// The free space between the boxes of `a` and `b`, negative when `b`'s box lies wholly behind
 /// `a`'s along `a`'s heading: esmini's Object::Distance with freeSpace and a euclidean distance
 /// (any coordinate system) signs Object::FreeSpaceDistance by the longitudinal gap
@@ -155,10 +242,7 @@ fn shrink(d: f64, ext_a: f64, ext_b: f64) -> f64 {
 
 /// Distance from entity `a` to the point (x, y).
 pub(crate) fn to_point(net: Option<&RoadNetwork>, a: &Entity, x: f64, y: f64, cs: CoordinateSystem, kind: RelativeDistanceType, freespace: bool) -> f64 {
-    let mut p = a.clone();
-    p.x = x;
-    p.y = y;
-    p.bbox = [0.0; 6];
+    let mut p = point_entity(a, x, y);
     if matches!(cs, CoordinateSystem::Road | CoordinateSystem::Lane) {
         if let Some(n) = net {
             // The entity's road first, then a search of all roads. esmini's Position::Distance

@@ -11,6 +11,7 @@ mod distance_unlinked_roads;
 mod end_of_road_acc;
 mod freespace_distance_sign;
 mod freespace_point_corners;
+mod freespace_towing_chains;
 mod ignored_value_conditions;
 mod lateral_road_distance_sign;
 mod offroad_lane_offset;
