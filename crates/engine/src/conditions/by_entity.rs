@@ -57,6 +57,11 @@ impl<'a> Sim<'a> {
         // esmini's TrigByRelativeClearance keeps whether an entity was found in the area from
         // one triggering entity to the next (see relative_clearance)
         let mut clearance_found = false;
+        // esmini's TrigByStandStill and TrigByOffRoad set their current duration only for an
+        // entity standing (off the road) and keep it for the next ones: an entity that is not
+        // counts with the duration of the last one that was (under the rule `all`, a moving
+        // entity after one that has stood long enough meets the condition too).
+        let mut held_duration = 0.0;
         let mut result = false;
         let sticky = matches!(cond, C::ReachPosition { .. } | C::EndOfRoad { .. } | C::Collision { .. });
         c.hits.clear();
@@ -72,9 +77,19 @@ impl<'a> Sim<'a> {
             if matches!(cond, C::Angle { coordinate_system: Some(CoordinateSystem::Trajectory), .. }) && self.trajectory_heading(idx).is_none() {
                 continue;
             }
-            let r = match &clearance {
-                Some(cl) => Some(self.relative_clearance(idx, cl, &mut clearance_found)),
-                None => self.check_one(idx, c.other, point, cond),
+            let r = match (&clearance, cond) {
+                (Some(cl), _) => Some(self.relative_clearance(idx, cl, &mut clearance_found)),
+                // strictly longer than the duration, on esmini's accumulated clock
+                // (`Sim::clock`; an exact duration of whole steps is usually one step short there)
+                (None, C::StandStill { duration } | C::Offroad { duration }) => {
+                    let stand_still = matches!(cond, C::StandStill { .. });
+                    let since = self.entities.get(idx).and_then(|e| if stand_still { e.standstill_since } else { e.offroad_since });
+                    if let Some(since) = since {
+                        held_duration = self.clock - since;
+                    }
+                    Some(held_duration > *duration)
+                }
+                (None, _) => self.check_one(idx, c.other, point, cond),
             };
             // esmini's TrigByTimeHeadway and TrigByTimeToCollision: an entity whose measure is
             // not defined makes the result false but leaves the triggering-entities rule
@@ -167,13 +182,10 @@ impl<'a> Sim<'a> {
             C::RelativeClearance { .. } => false,
             C::RelativeSpeed { value, rule, direction, .. } => o.is_some_and(|o| compare(relative_speed(e, o, *direction), *value, *rule)),
             C::Acceleration { value, rule, direction } => compare(directed_acceleration(e, *direction), *value, *rule),
-            // TrigByStandStill and TrigByOffRoad: strictly longer than the duration, on esmini's
-            // accumulated clock (`Sim::clock`; an exact duration of whole steps is usually one
-            // step short there)
-            C::StandStill { duration } => e.standstill_since.is_some_and(|s| self.clock - s > *duration),
+            // evaluated in check_entity: their duration carries over from entity to entity
+            C::StandStill { .. } | C::Offroad { .. } => false,
             C::TraveledDistance { value } => e.odometer >= *value,
             C::EndOfRoad { duration } => e.end_of_road && t - e.end_of_road_since >= duration - SMALL,
-            C::Offroad { duration } => e.offroad_since.is_some_and(|s| self.clock - s > *duration),
             C::ReachPosition { tolerance, .. } => point.is_some_and(|(x, y)| (e.x - x).hypot(e.y - y) < *tolerance),
             C::Distance { value, rule, options, .. } => point.is_some_and(|(x, y)| compare(self.distance_to_point(idx, x, y, options).abs(), *value, *rule)),
             C::RelativeDistance { value, rule, options, .. } => other.is_some_and(|j| compare(self.distance_between(idx, j, options).abs(), *value, *rule)),

@@ -8,6 +8,7 @@ mod clearance_free_space_corners;
 mod clearance_offroad_headway;
 mod directed_speed;
 mod distance_unlinked_roads;
+mod duration_held_for_next_entity;
 mod end_of_road_acc;
 mod freespace_distance_sign;
 mod freespace_point_corners;
