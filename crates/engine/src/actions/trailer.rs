@@ -126,6 +126,29 @@ impl<'a> Sim<'a> {
         tow.is_some_and(|t| self.trailers.hitch.get(t).copied().flatten().is_some())
     }
 
+    /// The vehicles a freespace distance from `e` measures from, in esmini's order
+    /// (Object::Distance): its front-most tow vehicle (Object::TowVehicle over and over), then
+    /// each one's trailer (Object::TrailerVehicle: on the hitch, with a coupler) in turn.
+    pub(crate) fn towing_chain(&self, e: usize) -> Vec<usize> {
+        let mut front = e;
+        for _ in 0..self.entities.len() {
+            match self.trailers.towed_by.get(front).copied().flatten() {
+                Some(t) if self.is_towed(front) && t != e => front = t,
+                _ => break,
+            }
+        }
+        let mut chain = vec![front];
+        while chain.len() <= self.entities.len() {
+            let Some(&last) = chain.last() else { break };
+            let has_coupler = |t: usize| self.trailers.coupler.get(t).copied().flatten().is_some();
+            match self.trailers.trailer_of(last) {
+                Some(t) if has_coupler(t) && !chain.contains(&t) => chain.push(t),
+                _ => break,
+            }
+        }
+        chain
+    }
+
     /// Keep the default controller off towed trailers: their tow vehicle moves them
     /// (ScenarioEngine::step skips an entity with a TowVehicle).
     pub(crate) fn hold_trailers(&mut self) {

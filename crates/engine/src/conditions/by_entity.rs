@@ -2,9 +2,11 @@
 //! triggering-entities rule (any: one true is enough; all: every one must be true).
 
 use super::boxes::{boxes_overlap, corners};
-use super::distance::{between, to_point};
+use super::distance::{between, between_chains, chain_to_point, to_point};
 use super::ConditionRt;
+use crate::controllers::natural_driver::view::LARGE_NUMBER;
 use crate::dynamics::SMALL;
+use crate::entities::Entity;
 use crate::entities::{in_frame, EntityKind};
 use crate::positions::resolve;
 use crate::rules::compare;
@@ -55,6 +57,11 @@ impl<'a> Sim<'a> {
         // esmini's TrigByRelativeClearance keeps whether an entity was found in the area from
         // one triggering entity to the next (see relative_clearance)
         let mut clearance_found = false;
+        // esmini's TrigByStandStill and TrigByOffRoad set their current duration only for an
+        // entity standing (off the road) and keep it for the next ones: an entity that is not
+        // counts with the duration of the last one that was (under the rule `all`, a moving
+        // entity after one that has stood long enough meets the condition too).
+        let mut held_duration = 0.0;
         let mut result = false;
         let sticky = matches!(cond, C::ReachPosition { .. } | C::EndOfRoad { .. } | C::Collision { .. });
         c.hits.clear();
@@ -70,9 +77,19 @@ impl<'a> Sim<'a> {
             if matches!(cond, C::Angle { coordinate_system: Some(CoordinateSystem::Trajectory), .. }) && self.trajectory_heading(idx).is_none() {
                 continue;
             }
-            let r = match &clearance {
-                Some(cl) => Some(self.relative_clearance(idx, cl, &mut clearance_found)),
-                None => self.check_one(idx, c.other, point, cond),
+            let r = match (&clearance, cond) {
+                (Some(cl), _) => Some(self.relative_clearance(idx, cl, &mut clearance_found)),
+                // strictly longer than the duration, on esmini's accumulated clock
+                // (`Sim::clock`; an exact duration of whole steps is usually one step short there)
+                (None, C::StandStill { duration } | C::Offroad { duration }) => {
+                    let stand_still = matches!(cond, C::StandStill { .. });
+                    let since = self.entities.get(idx).and_then(|e| if stand_still { e.standstill_since } else { e.offroad_since });
+                    if let Some(since) = since {
+                        held_duration = self.clock - since;
+                    }
+                    Some(held_duration > *duration)
+                }
+                (None, _) => self.check_one(idx, c.other, point, cond),
             };
             // esmini's TrigByTimeHeadway and TrigByTimeToCollision: an entity whose measure is
             // not defined makes the result false but leaves the triggering-entities rule
@@ -165,36 +182,25 @@ impl<'a> Sim<'a> {
             C::RelativeClearance { .. } => false,
             C::RelativeSpeed { value, rule, direction, .. } => o.is_some_and(|o| compare(relative_speed(e, o, *direction), *value, *rule)),
             C::Acceleration { value, rule, direction } => compare(directed_acceleration(e, *direction), *value, *rule),
-            // TrigByStandStill and TrigByOffRoad: strictly longer than the duration, on esmini's
-            // accumulated clock (`Sim::clock`; an exact duration of whole steps is usually one
-            // step short there)
-            C::StandStill { duration } => e.standstill_since.is_some_and(|s| self.clock - s > *duration),
+            // evaluated in check_entity: their duration carries over from entity to entity
+            C::StandStill { .. } | C::Offroad { .. } => false,
             C::TraveledDistance { value } => e.odometer >= *value,
             C::EndOfRoad { duration } => e.end_of_road && t - e.end_of_road_since >= duration - SMALL,
-            C::Offroad { duration } => e.offroad_since.is_some_and(|s| self.clock - s > *duration),
             C::ReachPosition { tolerance, .. } => point.is_some_and(|(x, y)| (e.x - x).hypot(e.y - y) < *tolerance),
-            C::Distance { value, rule, options, .. } => point.is_some_and(|(x, y)| {
-                let kind = options.relative_distance_type.unwrap_or(RelativeDistanceType::EuclidianDistance);
-                compare(to_point(self.net, e, x, y, cs_of(options), kind, options.freespace).abs(), *value, *rule)
-            }),
-            C::RelativeDistance { value, rule, options, .. } => o.is_some_and(|o| {
-                let kind = options.relative_distance_type.unwrap_or(RelativeDistanceType::EuclidianDistance);
-                compare(between(self.net, e, o, cs_of(options), kind, options.freespace).abs(), *value, *rule)
-            }),
+            C::Distance { value, rule, options, .. } => point.is_some_and(|(x, y)| compare(self.distance_to_point(idx, x, y, options).abs(), *value, *rule)),
+            C::RelativeDistance { value, rule, options, .. } => other.is_some_and(|j| compare(self.distance_between(idx, j, options).abs(), *value, *rule)),
             C::TimeHeadway { value, rule, options, .. } => {
-                let Some(o) = o else { return Some(false) };
-                let kind = options.relative_distance_type.unwrap_or(RelativeDistanceType::EuclidianDistance);
-                let d = between(self.net, e, o, cs_of(options), kind, options.freespace);
+                let Some(j) = other.filter(|_| o.is_some()) else { return Some(false) };
+                let d = self.distance_between(idx, j, options);
                 if d < 0.0 || e.speed < SMALL {
                     return None;
                 }
                 compare((d / e.speed).abs(), *value, *rule)
             }
             C::TimeToCollision { value, rule, options, .. } => {
-                let kind = options.relative_distance_type.unwrap_or(RelativeDistanceType::EuclidianDistance);
                 let (d, rel_speed) = match (o, point) {
                     (Some(o), _) => {
-                        let d = between(self.net, e, o, cs_of(options), kind, options.freespace);
+                        let d = other.map_or(0.0, |j| self.distance_between(idx, j, options));
                         let (ovx, ovy) = o.vel;
                         let rel = if ovx.abs() < SMALL && ovy.abs() < SMALL {
                             e.speed
@@ -205,7 +211,7 @@ impl<'a> Sim<'a> {
                         };
                         (d, rel)
                     }
-                    (None, Some((x, y))) => (to_point(self.net, e, x, y, cs_of(options), kind, options.freespace), e.speed),
+                    (None, Some((x, y))) => (self.distance_to_point(idx, x, y, options), e.speed),
                     _ => return Some(false),
                 };
                 if d.abs() < SMALL || rel_speed.abs() < SMALL {
@@ -237,6 +243,37 @@ impl<'a> Sim<'a> {
             }
             C::RelativeAngle { .. } => false,
         })
+    }
+}
+
+impl Sim<'_> {
+    /// The distance of a condition from entity `idx` to entity `other`; with freespace esmini
+    /// measures from every vehicle of both towing chains (Object::Distance).
+    fn distance_between(&self, idx: usize, other: usize, options: &DistanceOptions) -> f64 {
+        let kind = options.relative_distance_type.unwrap_or(RelativeDistanceType::EuclidianDistance);
+        let (Some(e), Some(o)) = (self.entities.get(idx), self.entities.get(other)) else { return LARGE_NUMBER };
+        if !options.freespace {
+            return between(self.net, e, o, cs_of(options), kind, false);
+        }
+        let pivots: Vec<&Entity> = self.towing_chain(idx).into_iter().filter_map(|i| self.entities.get(i)).collect();
+        // esmini walks the target's trailers from the target itself
+        let targets: Vec<&Entity> = std::iter::once(other)
+            .chain(self.towing_chain(other).into_iter().skip_while(|&i| i != other).skip(1))
+            .filter_map(|i| self.entities.get(i))
+            .collect();
+        between_chains(self.net, &pivots, &targets, cs_of(options), kind)
+    }
+
+    /// The distance of a condition from entity `idx` to the point (x, y), with freespace from
+    /// every vehicle of its towing chain.
+    fn distance_to_point(&self, idx: usize, x: f64, y: f64, options: &DistanceOptions) -> f64 {
+        let kind = options.relative_distance_type.unwrap_or(RelativeDistanceType::EuclidianDistance);
+        let Some(e) = self.entities.get(idx) else { return LARGE_NUMBER };
+        if !options.freespace {
+            return to_point(self.net, e, x, y, cs_of(options), kind, false);
+        }
+        let pivots: Vec<&Entity> = self.towing_chain(idx).into_iter().filter_map(|i| self.entities.get(i)).collect();
+        chain_to_point(self.net, &pivots, x, y, cs_of(options), kind)
     }
 }
 

@@ -4,7 +4,8 @@
 //! (freespace). Longitudinal and lateral results are signed: positive ahead / to the left.
 
 use super::boxes::{box_distance, corners, interval_gap};
-use super::free_space::free_space_road;
+use super::free_space::{free_space_point_road, free_space_road};
+use crate::controllers::natural_driver::view::LARGE_NUMBER;
 use crate::entities::Entity;
 use crate::roads::lane_geometry::lane_center_t;
 use opendrive::RoadNetwork;
@@ -57,8 +58,10 @@ pub(crate) fn between(net: Option<&RoadNetwork>, a: &Entity, b: &Entity, cs: Coo
                         return if kind == RelativeDistanceType::Longitudinal { gap.ds } else { gap.dt };
                     }
                 }
+                // Position::Delta on one road: ds along the way `a` faces (RoadPath::Calculate),
+                // dt = tB − tA whichever way (a target right of the reference line is negative)
                 let ds = (rb.1 - ra.1) * ra.3;
-                let dt = (rb.2 - ra.2) * ra.3;
+                let dt = rb.2 - ra.2;
                 // (a euclidean distance does not come here)
                 return if kind == RelativeDistanceType::Longitudinal {
                     if freespace {
@@ -72,17 +75,20 @@ pub(crate) fn between(net: Option<&RoadNetwork>, a: &Entity, b: &Entity, cs: Coo
                     dt
                 };
             }
+            // Where no road path joins the roads, esmini's Position::Delta leaves ds and dt at
+            // LARGE_NUMBER and Position::Distance fails: the conditions read LARGE_NUMBER
+            // (TrigByRelativeDistance, TrigByTimeHeadway, …), LongDistanceAction::Step the ds.
             if kind == RelativeDistanceType::Longitudinal && !freespace {
-                if let Some(ds) = path_ds(net, a, b) {
-                    return ds;
-                }
+                return path_ds(net, a, b).unwrap_or(LARGE_NUMBER);
             }
             // Position::Delta's dt across roads: b's t less a's, or plus it where the path
             // turns the lane ids around (a's lane mapped onto b's road changes sign)
             if kind == RelativeDistanceType::Lateral && !freespace {
-                if let Some(path) = a.lane.and_then(|la| crate::roads::road_path::path_ends(net, ra.0, ra.1, la.lane_id, rb.0)) {
-                    return if path.lanes_flip { rb.2 + ra.2 } else { rb.2 - ra.2 };
-                }
+                return match a.lane.and_then(|la| crate::roads::road_path::path_ends(net, ra.0, ra.1, la.lane_id, rb.0)) {
+                    Some(path) if path.lanes_flip => rb.2 + ra.2,
+                    Some(_) => rb.2 - ra.2,
+                    None => LARGE_NUMBER,
+                };
             }
         }
     }
@@ -121,6 +127,93 @@ pub(crate) fn between(net: Option<&RoadNetwork>, a: &Entity, b: &Entity, cs: Coo
     }
 }
 
+/// What esmini's Object::FreeSpaceDistance gives for boxes `a` and `b`: the free distance,
+/// and the lateral and longitudinal gaps in `a`'s frame.
+fn box_gaps(a: &Entity, b: &Entity) -> (f64, f64, f64) {
+    let (ca, cb) = (corners(a), corners(b));
+    let (ux, uy) = (a.h.cos(), a.h.sin());
+    (box_distance(&ca, &cb), interval_gap(&ca, &cb, -uy, ux), interval_gap(&ca, &cb, ux, uy))
+}
+
+/// A freespace distance between towing chains, as esmini's Object::Distance measures it with
+/// freeSpace: `pivots` is the measuring entity's chain from its front-most tow vehicle back,
+/// `targets` the other's (or the point, as `to_point` makes it). Euclidean or in the entity
+/// frame: of the pairs of boxes, the one nearest each other (the first on a tie, stopping at a
+/// touch), its free distance signed by its longitudinal gap in the pivot's frame, or that pair's
+/// lateral / longitudinal gap. In road or lane coordinates each pivot is measured to the first
+/// target alone (FreeSpaceDistanceObjectRoadLane is handed the target, never its trailers):
+/// the smallest gap.
+pub(crate) fn between_chains(net: Option<&RoadNetwork>, pivots: &[&Entity], targets: &[&Entity], cs: CoordinateSystem, kind: RelativeDistanceType) -> f64 {
+    let (Some(&a), Some(&b)) = (pivots.first(), targets.first()) else { return LARGE_NUMBER };
+    if pivots.len() == 1 && targets.len() == 1 {
+        return between(net, a, b, cs, kind, true);
+    }
+    if matches!(cs, CoordinateSystem::Road | CoordinateSystem::Lane) && kind != RelativeDistanceType::EuclidianDistance {
+        let mut best = LARGE_NUMBER;
+        for &p in pivots {
+            let d = between(net, p, b, cs, kind, true);
+            if d.abs() < best.abs() {
+                best = d;
+            }
+            if best == 0.0 {
+                break;
+            }
+        }
+        return best;
+    }
+    let mut best: Option<(f64, f64, f64)> = None;
+    'pivots: for &p in pivots {
+        for &t in targets {
+            let g = box_gaps(p, t);
+            if best.is_none_or(|b| g.0.abs() < b.0.abs()) {
+                best = Some(g);
+            }
+            if best.is_some_and(|b| b.0 == 0.0) {
+                break 'pivots;
+            }
+        }
+    }
+    let Some((d, lat, lon)) = best else { return LARGE_NUMBER };
+    match (cs, kind) {
+        (CoordinateSystem::Entity, RelativeDistanceType::Lateral) => lat,
+        (CoordinateSystem::Entity, RelativeDistanceType::Longitudinal) => lon,
+        _ if lon < -crate::dynamics::ESMINI_SMALL_NUMBER => -d,
+        _ => d,
+    }
+}
+
+/// The point (x, y) as `a` measures to it: an entity without a box there.
+fn point_entity(a: &Entity, x: f64, y: f64) -> Entity {
+    let mut p = a.clone();
+    p.x = x;
+    p.y = y;
+    p.bbox = [0.0; 6];
+    p
+}
+
+/// A freespace distance from a towing chain (`pivots`, as for `between_chains`) to the point
+/// (x, y): esmini's Object::Distance(x, y) measures from each vehicle of the chain.
+pub(crate) fn chain_to_point(net: Option<&RoadNetwork>, pivots: &[&Entity], x: f64, y: f64, cs: CoordinateSystem, kind: RelativeDistanceType) -> f64 {
+    let Some(&a) = pivots.first() else { return LARGE_NUMBER };
+    if pivots.len() == 1 {
+        return to_point(net, a, x, y, cs, kind, true);
+    }
+    if matches!(cs, CoordinateSystem::Road | CoordinateSystem::Lane) && kind != RelativeDistanceType::EuclidianDistance {
+        let mut best = LARGE_NUMBER;
+        for &p in pivots {
+            let d = to_point(net, p, x, y, cs, kind, true);
+            if d.abs() < best.abs() {
+                best = d;
+            }
+            if best == 0.0 {
+                break;
+            }
+        }
+        return best;
+    }
+    between_chains(net, pivots, &[&point_entity(a, x, y)], cs, kind)
+}
+
 /// The free space between the boxes of `a` and `b`, negative when `b`'s box lies wholly behind
 /// `a`'s along `a`'s heading: esmini's Object::Distance with freeSpace and a euclidean distance
 /// (any coordinate system) signs Object::FreeSpaceDistance by the longitudinal gap
@@ -149,10 +242,7 @@ fn shrink(d: f64, ext_a: f64, ext_b: f64) -> f64 {
 
 /// Distance from entity `a` to the point (x, y).
 pub(crate) fn to_point(net: Option<&RoadNetwork>, a: &Entity, x: f64, y: f64, cs: CoordinateSystem, kind: RelativeDistanceType, freespace: bool) -> f64 {
-    let mut p = a.clone();
-    p.x = x;
-    p.y = y;
-    p.bbox = [0.0; 6];
+    let mut p = point_entity(a, x, y);
     if matches!(cs, CoordinateSystem::Road | CoordinateSystem::Lane) {
         if let Some(n) = net {
             // The entity's road first, then a search of all roads. esmini's Position::Distance
@@ -164,6 +254,13 @@ pub(crate) fn to_point(net: Option<&RoadNetwork>, a: &Entity, x: f64, y: f64, cs
             let hint = a.lane.map(|l| (l.road, l.s));
             if let Some(lp) = crate::roads::locate::world_to_lane_memo(n, x, y, hint) {
                 p.lane = Some(crate::roads::LanePos { road: lp.road, lane_id: lp.lane_id, s: lp.s, offset: lp.offset, dir: 1.0 });
+                // a box to a point on its own road: its corners, not its extents
+                if freespace && kind != RelativeDistanceType::EuclidianDistance {
+                    let own = a.lane.filter(|la| la.road == lp.road);
+                    if let Some((ds, dt)) = own.and_then(|la| free_space_point_road(n, a, lp.s, lp.t, lp.road, la.dir)) {
+                        return if kind == RelativeDistanceType::Longitudinal { ds } else { dt };
+                    }
+                }
             }
         }
     }

@@ -136,3 +136,33 @@ pub(crate) fn free_space_roads(net: &RoadNetwork, a: &Entity, b: &Entity, road: 
         Some((dist, if path.lanes_flip { pb.t + pa.t } else { pb.t - pa.t }))
     })
 }
+
+/// Gaps from `a`'s box to the point at (`s`, `t`) on road `road`, `a` facing along s when `dir`
+/// is +1: esmini's Object::FreeSpaceDistancePointRoadLane. Each corner's delta to the point
+/// (Position::Delta on one road); the gap is the delta smallest in magnitude (the first corner
+/// wins ties), and zero only where it and the delta largest in magnitude differ in sign (the
+/// other corners are not looked at). `None` where a corner lies off `road`.
+pub(crate) fn free_space_point_road(net: &RoadNetwork, a: &Entity, s: f64, t: f64, road: usize, dir: f64) -> Option<(f64, f64)> {
+    let hint = a.lane.map_or(s, |l| l.s);
+    let ca = road_corners(net, a, road, hint, a.kind == EntityKind::Pedestrian)?;
+    let (mut min_ds, mut max_ds, mut min_dt, mut max_dt) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
+    for (j, c) in ca.iter().enumerate() {
+        let ds = (s - c.s) * dir;
+        let dt = t - c.t;
+        if j == 0 || ds.abs() < min_ds.abs() {
+            min_ds = ds;
+        }
+        if j == 0 || dt.abs() < min_dt.abs() {
+            min_dt = dt;
+        }
+        if j == 0 || ds.abs() > max_ds.abs() {
+            max_ds = ds;
+        }
+        if j == 0 || dt.abs() > max_dt.abs() {
+            max_dt = dt;
+        }
+    }
+    // esmini's SIGN: −1 below zero, +1 otherwise
+    let gap = |min: f64, max: f64| if (min < 0.0) != (max < 0.0) { 0.0 } else { min };
+    Some((gap(min_ds, max_ds), gap(min_dt, max_dt)))
+}

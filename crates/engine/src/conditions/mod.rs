@@ -25,11 +25,16 @@ impl<'a> TriggerRt<'a> {
         TriggerRt { groups }
     }
 
-    pub(crate) fn reset(&mut self) {
+    /// Back to fresh for another execution (esmini's Trigger::Reset). A StoryboardElementState
+    /// condition also forgets the state changes logged so far and not yet evaluated
+    /// (TrigByState::Reset clears its list; the latest state it saw stays): `logged` is the
+    /// length of the run's state log now.
+    pub(crate) fn reset(&mut self, logged: usize) {
         for g in &mut self.groups {
             for c in g {
                 c.history.clear();
                 c.value = false;
+                c.cursor = c.cursor.max(logged);
             }
         }
     }

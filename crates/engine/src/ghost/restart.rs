@@ -204,7 +204,7 @@ impl<'a> Sim<'a> {
         }
         self.nodes[id].state = State::Standby;
         for t in [self.nodes[id].start_trigger, self.nodes[id].stop_trigger].into_iter().flatten() {
-            self.triggers[t].reset();
+            self.triggers[t].reset(self.state_log.len());
         }
     }
 }

@@ -104,10 +104,10 @@ impl<'a> Sim<'a> {
             let repeatable = matches!(n.kind, Kind::ManeuverGroup | Kind::Event);
             if repeatable && n.executions < i64::from(n.max_executions) {
                 if let Some(t) = n.start_trigger {
-                    self.triggers[t].reset();
+                    self.triggers[t].reset(self.state_log.len());
                 }
                 if let Some(t) = n.stop_trigger {
-                    self.triggers[t].reset();
+                    self.triggers[t].reset(self.state_log.len());
                 }
                 self.set_state(id, Transition::End, State::Standby);
                 self.reset_children(id);
@@ -152,7 +152,7 @@ impl<'a> Sim<'a> {
             self.reset_children(c);
             self.nodes[c].state = State::Init;
             for t in [self.nodes[c].start_trigger, self.nodes[c].stop_trigger].into_iter().flatten() {
-                self.triggers[t].reset();
+                self.triggers[t].reset(self.state_log.len());
             }
             if let Some(slot) = self.nodes[c].action {
                 self.actions[slot].running = false;

@@ -22,3 +22,13 @@ fn a_repeated_group_waits_for_the_condition_delay_again() {
     assert!(close(starts[0], 1.01, 1e-9) && close(starts[1], 2.02, 1e-9), "{starts:?}");
     assert!(close(event_time(&run, "G", "start").unwrap_or(0.0), 0.0, 1e-9));
 }
+
+#[test]
+fn a_reset_forgets_the_state_changes_seen_so_far() {
+    // Fixture `state_changes_forgotten_on_reset.xosc`: a repeatable event started by its own
+    // running state. esmini 3.6.0 runs it once, at 1.00 s: ending back in standby resets its
+    // start trigger, and TrigByState::Reset drops the start registered before.
+    let run = run_straight_fixture("state_changes_forgotten_on_reset.xosc", 2.0);
+    let starts: Vec<f64> = run.trace.events.iter().filter(|e| e.element == "Repeat" && e.transition == "start").map(|e| e.time).collect();
+    assert_eq!(starts, vec![1.0]);
+}
