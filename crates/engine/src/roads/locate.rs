@@ -35,22 +35,15 @@ pub(crate) fn world_to_lane(net: &RoadNetwork, x: f64, y: f64, hint: Option<(usi
     }
 }
 
-/// A point nobody was at (esmini's fresh Position: no current road, z asked at 0) on a road
-/// that climbs more than 2 m: where XYZ2TrackPos's z penalty picks a segment of the road that
-/// does not hold the exact projection, the point is placed at that segment's s
-/// (`track_pos::segment_s`); an off-road point on any road takes the s XYZ2TrackPos
-/// interpolates on its OSI segment (the exact projection drifts 1-2 m from it near a change
-/// of curvature). Otherwise `None` (the exact projection stands).
+/// A point nobody was at (esmini's fresh Position: no current road, z asked at 0) takes the s
+/// XYZ2TrackPos interpolates on the lane-0 OSI segment it weighs nearest
+/// (`track_pos::segment_s`), on the road as off it: where a segment spans a change of
+/// curvature that s is not the exact projection's (ref_point.xodr past its bend: 5 cm on the
+/// road, 1-2 m off it), and on a road climbing more than 2 m the z penalty can pick a segment
+/// far from it. `None` where the road has no segment (the exact projection stands).
 fn on_chosen_segment(net: &RoadNetwork, lp: LanePosition, x: f64, y: f64) -> Option<LanePosition> {
     let road = net.roads.get(lp.road)?;
-    let off_road = !lp.is_on_road();
-    if !off_road && !super::track_pos::climbs(road) {
-        return None;
-    }
-    let (s, lo, hi) = super::track_pos::segment_s(road, x, y, 0.0)?;
-    if !off_road && lp.s >= lo - 1e-6 && lp.s <= hi + 1e-6 {
-        return None;
-    }
+    let s = super::track_pos::segment_s(road, x, y, 0.0)?;
     net.locate_at_s_by(lp.road, x, y, s, &surface_t)
 }
 
