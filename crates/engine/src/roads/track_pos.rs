@@ -160,10 +160,19 @@ pub(crate) fn segment_s(road: &Road, x: f64, y: f64, z_input: f64) -> Option<f64
         f.s
     } else {
         let s_norm = if (f.h - g.h).abs() < 1e-5 {
-            // ProjectPointOnLine2D, then the unsigned distance from the first vertex.
+            // ProjectPointOnLine2D, then the unsigned distance from the first vertex. On a
+            // road both rolled and sloped the closest vertex's normal, projected on the ground,
+            // is not square to the line: the point is first moved back along the heading by
+            // the shift Track2XYZ gives a point that far across (`banking::banked`).
+            let (bx, by) = {
+                let (sin_h, cos_h) = c.h.sin_cos();
+                let across = -(x - f.x) * sin_h + (y - f.y) * cos_h;
+                let along = super::banking::along_shift(road, c.s, across);
+                (x - along * cos_h, y - along * sin_h)
+            };
             let (dx, dy) = (g.x - f.x, g.y - f.y);
             let len2 = dx * dx + dy * dy;
-            let u = ((x - f.x) * dx + (y - f.y) * dy) / len2;
+            let u = ((bx - f.x) * dx + (by - f.y) * dy) / len2;
             (u * dx).hypot(u * dy) / len2.sqrt()
         } else {
             let (n0, n1) = (normal(f.h), normal(g.h));
