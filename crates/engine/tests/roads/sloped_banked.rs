@@ -34,3 +34,15 @@ fn a_world_point_on_a_sloped_banked_road_takes_the_s_it_came_from() {
     assert_esmini_rows(&run, "Ahead", &AHEAD[1..], 1e-4);
     assert!(close(at(&run, "Ego", 0.5).x, 55.067810, 1e-4) && close(at(&run, "Ahead", 0.5).x, 117.412816, 1e-4));
 }
+
+/// An entity moved by its world position (a polyline trajectory from x 40 to 55 along lane
+/// −1's centre) is re-attached by XYZ2TrackPos from where it was, with the same shift taken
+/// off: its s stays x − 0.067810, and when the trajectory ends at 1.5 s it drives on along the
+/// lane without a jump. Fixture `trajectory_onto_a_sloped_banked_road.xosc`. Expected values:
+/// esmini 3.6.0 on the fixture.
+#[test]
+fn an_entity_moved_by_its_world_position_keeps_its_place_on_a_sloped_banked_road() {
+    let run = run_fixture_on("trajectory_onto_a_sloped_banked_road.xosc", "sloped_banked.xodr", 3.0);
+    let rows = [(1.0, 50.0, -1.611857, 10.0), (2.0, 60.0, -1.611857, 10.0), (3.0, 70.0, -1.611857, 10.0)];
+    assert_esmini_rows(&run, "Ego", &rows, 1e-4);
+}
