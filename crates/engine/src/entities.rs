@@ -113,7 +113,9 @@ impl Entity {
     pub(crate) fn stop_if_stuck_at_road_end(&mut self) {
         use crate::dynamics::ESMINI_SMALL_NUMBER as SMALL;
         if self.at_road_end && self.end_of_road && self.vel.0.abs() < SMALL && self.vel.1.abs() < SMALL {
+            // Object::SetSpeed marks the speed as applied: it is not measured from the motion.
             self.speed = 0.0;
+            self.speed_set = true;
         }
     }
 

@@ -31,8 +31,9 @@ impl<'a> Sim<'a> {
             // A teleport keeps the position status (Position::TeleportTo copies the location
             // only, CopyLocation leaves `status_`), and ScenarioEngine::step checks it after
             // the (here skipped) default move: an entity stuck at a dead end and teleported
-            // away stays stopped, whatever speed an action set meanwhile.
-            if en.teleported && en.active && !en.outside && !en.roadless {
+            // away stays stopped, whatever speed an action set meanwhile. So does one added
+            // back (AddEntityAction::Start teleports it the same way).
+            if (en.teleported || en.appeared) && en.active && !en.outside && !en.roadless {
                 en.stop_if_stuck_at_road_end();
             }
             // ScenarioEngine::step: no default move at |speed| <= SMALL_NUMBER (1e-6).

@@ -65,8 +65,9 @@ impl<'a> Sim<'a> {
             if let Some(en) = self.entities.get_mut(t) {
                 en.active = true;
                 en.appeared = true;
-                en.at_road_end = false;
-                en.end_of_road = false;
+                // The end-of-road status and flag stay as the entity left them (TeleportTo
+                // copies the location only): one that stood stuck at a road's end is stopped
+                // again where it is added (motion.rs), until a move clears them.
                 en.standstill_since = None;
                 en.offroad_since = None;
             }

@@ -14,18 +14,39 @@ pub(crate) fn roll_at(road: &Road, s: f64) -> (f64, f64) {
 }
 
 /// For a point `t` across the road at `s` on a road of reference curvature `curvature`: the
-/// horizontal offset, the height above the reference line, and the heading added to the
-/// reference heading by the changing roll.
-pub(crate) fn banked(road: &Road, s: f64, t: f64, curvature: f64) -> (f64, f64, f64) {
+/// horizontal offset across the reference line, the height above it, the heading added to the
+/// reference heading by the changing roll, and the shift along the reference heading. esmini
+/// (Position::Track2XYZ) turns (0, t, 0) by the road's rotation, heading · pitch · roll
+/// (CreateRotationMatrix3d), the pitch being −atan of the elevation's slope: on a road both
+/// rolled and sloped the point also moves t·sin(roll)·sin(pitch) along the heading and rises
+/// t·sin(roll)·cos(pitch).
+pub(crate) fn banked(road: &Road, s: f64, t: f64, curvature: f64) -> (f64, f64, f64, f64) {
     if road.superelevation.is_empty() {
-        return (t, 0.0, 0.0);
+        return (t, 0.0, 0.0, 0.0);
     }
     let (roll, rate) = roll_at(road, s);
     let (sin, cos) = roll.sin_cos();
+    let (sin_p, cos_p) = (-road.elevation_slope_at(s).atan()).sin_cos();
     let th = t * cos;
     let dth = -t * sin * rate;
     let turn = if dth == 0.0 { 0.0 } else { dth.atan2(1.0 - curvature * th) };
-    (th, t * sin, turn)
+    (th, t * sin * cos_p, turn, t * sin * sin_p)
+}
+
+/// The shift along the heading of a point `across` m horizontally from the reference line at
+/// `s` ([`banked`]'s last part, from the horizontal distance): what esmini's
+/// Position::XYZ2TrackPos takes off a world point on a road both rolled and sloped (more than
+/// SMALL_NUMBER each) before it projects it on a straight piece of the reference line.
+pub(crate) fn along_shift(road: &Road, s: f64, across: f64) -> f64 {
+    if road.superelevation.is_empty() {
+        return 0.0;
+    }
+    let roll = roll_at(road, s).0;
+    let pitch = -road.elevation_slope_at(s).atan();
+    if roll.abs() <= crate::dynamics::ESMINI_SMALL_NUMBER || pitch.abs() <= crate::dynamics::ESMINI_SMALL_NUMBER {
+        return 0.0;
+    }
+    across * roll.tan() * pitch.sin()
 }
 
 /// cos(AVOID_ZERO(0)) = cos(1e-6) = 1 − 5e-13: `Position::XYZ2TrackPos` divides the lateral

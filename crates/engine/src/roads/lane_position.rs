@@ -40,8 +40,16 @@ impl LanePos {
         let p = super::pose_memo::reference_pose(road, s);
         let (sin, cos) = p.hdg.sin_cos();
         // On a banked road t lies along the tilted surface (see banking.rs).
-        let (th, dz, turn) = super::banking::banked(road, s, t, p.curvature);
-        Some(LanePose { x: p.x - th * sin, y: p.y + th * cos, z: road.elevation_at(s) + dz, road_heading: p.hdg + turn, curvature: p.curvature, t, lane })
+        let (th, dz, turn, along) = super::banking::banked(road, s, t, p.curvature);
+        Some(LanePose {
+            x: p.x - th * sin + along * cos,
+            y: p.y + th * cos + along * sin,
+            z: road.elevation_at(s) + dz,
+            road_heading: p.hdg + turn,
+            curvature: p.curvature,
+            t,
+            lane,
+        })
     }
 
     /// Heading of the driving direction the entity faces (reference heading, turned by π when

@@ -24,33 +24,47 @@ pub(crate) fn world_to_lane(net: &RoadNetwork, x: f64, y: f64, hint: Option<(usi
     if let Some((road, s)) = hint {
         if let Some(p) = net.locate_on_road_by(road, x, y, s, &surface_t) {
             if p.is_on_road() {
-                return Some(p);
+                return Some(unshifted(net, p, x, y));
             }
         }
     }
     let found = net.world_to_lane_by(x, y, hint.map(|h| h.0), &surface_t);
     match (hint, found) {
         (None, Some(lp)) => Some(on_chosen_segment(net, lp, x, y).unwrap_or(lp)),
-        _ => found,
+        _ => found.map(|p| unshifted(net, p, x, y)),
     }
 }
 
-/// A point nobody was at (esmini's fresh Position: no current road, z asked at 0) on a road
-/// that climbs more than 2 m: where XYZ2TrackPos's z penalty picks a segment of the road that
-/// does not hold the exact projection, the point is placed at that segment's s
-/// (`track_pos::segment_s`); an off-road point on any road takes the s XYZ2TrackPos
-/// interpolates on its OSI segment (the exact projection drifts 1-2 m from it near a change
-/// of curvature). Otherwise `None` (the exact projection stands).
+/// On a straight piece of a road both rolled and sloped: the s XYZ2TrackPos gives (x, y), that
+/// of the point moved back along the heading by the shift Track2XYZ gives a point that far
+/// across (`banking::along_shift`), so a lane position and its world point map onto each
+/// other. Elsewhere `p` as it is.
+fn unshifted(net: &RoadNetwork, p: LanePosition, x: f64, y: f64) -> LanePosition {
+    let Some(road) = net.roads.get(p.road) else { return p };
+    if road.superelevation.is_empty() {
+        return p;
+    }
+    let pose = road.reference_pose(p.s);
+    if pose.curvature != 0.0 {
+        return p;
+    }
+    let (sin, cos) = pose.hdg.sin_cos();
+    let along = super::banking::along_shift(road, p.s, -(x - pose.x) * sin + (y - pose.y) * cos);
+    if along == 0.0 {
+        return p;
+    }
+    net.locate_at_s_by(p.road, x, y, p.s - along, &surface_t).unwrap_or(p)
+}
+
+/// A point nobody was at (esmini's fresh Position: no current road, z asked at 0) takes the s
+/// XYZ2TrackPos interpolates on the lane-0 OSI segment it weighs nearest
+/// (`track_pos::segment_s`), on the road as off it: where a segment spans a change of
+/// curvature that s is not the exact projection's (ref_point.xodr past its bend: 5 cm on the
+/// road, 1-2 m off it), and on a road climbing more than 2 m the z penalty can pick a segment
+/// far from it. `None` where the road has no segment (the exact projection stands).
 fn on_chosen_segment(net: &RoadNetwork, lp: LanePosition, x: f64, y: f64) -> Option<LanePosition> {
     let road = net.roads.get(lp.road)?;
-    let off_road = !lp.is_on_road();
-    if !off_road && !super::track_pos::climbs(road) {
-        return None;
-    }
-    let (s, lo, hi) = super::track_pos::segment_s(road, x, y, 0.0)?;
-    if !off_road && lp.s >= lo - 1e-6 && lp.s <= hi + 1e-6 {
-        return None;
-    }
+    let s = super::track_pos::segment_s(road, x, y, 0.0)?;
     net.locate_at_s_by(lp.road, x, y, s, &surface_t)
 }
 
@@ -60,7 +74,7 @@ pub(crate) fn world_to_lane_memo(net: &RoadNetwork, x: f64, y: f64, hint: Option
     if let Some((road, s)) = hint {
         if let Some(p) = net.locate_on_road_by(road, x, y, s, &surface_t) {
             if p.is_on_road() {
-                return Some(p);
+                return Some(unshifted(net, p, x, y));
             }
         }
     }
@@ -68,7 +82,7 @@ pub(crate) fn world_to_lane_memo(net: &RoadNetwork, x: f64, y: f64, hint: Option
     if let Some(hit) = MEMO.with(|m| m.borrow().iter().find(|e| e.0 == k).map(|e| e.1)) {
         return hit;
     }
-    let r = net.world_to_lane_by(x, y, hint.map(|h| h.0), &surface_t);
+    let r = net.world_to_lane_by(x, y, hint.map(|h| h.0), &surface_t).map(|p| unshifted(net, p, x, y));
     MEMO.with(|m| {
         let mut m = m.borrow_mut();
         if m.len() >= MEMO_SIZE {

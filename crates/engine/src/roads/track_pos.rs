@@ -99,9 +99,9 @@ fn normal(h: f64) -> (f64, f64) {
     (cos, sin)
 }
 
-/// Where XYZ2TrackPos puts (x, y) at height `z_input` on `road` alone: the s and the s range
-/// of the segment it chose. `None` for a road without OSI points.
-pub(crate) fn segment_s(road: &Road, x: f64, y: f64, z_input: f64) -> Option<(f64, f64, f64)> {
+/// Where XYZ2TrackPos puts (x, y) at height `z_input` on `road` alone: the s. `None` for a
+/// road without OSI points.
+pub(crate) fn segment_s(road: &Road, x: f64, y: f64, z_input: f64) -> Option<f64> {
     let pts = vertices(road);
     let n = pts.len();
     if n < 2 {
@@ -122,7 +122,7 @@ pub(crate) fn segment_s(road: &Road, x: f64, y: f64, z_input: f64) -> Option<(f6
         }
     };
     let mut best = f64::INFINITY;
-    let mut chosen: Option<(usize, usize, usize)> = None;
+    let mut chosen: Option<usize> = None;
     // The segments, and the last vertex alone (the scan's extra round).
     for (a, b) in (0..n - 1).map(|i| (i, i + 1)).chain(std::iter::once((n - 1, n - 1))) {
         let (pa, pb) = (pos(a), pos(b));
@@ -146,10 +146,10 @@ pub(crate) fn segment_s(road: &Road, x: f64, y: f64, z_input: f64) -> Option<(f6
             best = weighted;
             let d2 = |(px, py): (f64, f64)| (x - px).powi(2) + (y - py).powi(2);
             let k = if d2(pa) < d2(pb) { a } else { b };
-            chosen = Some((k, a, b));
+            chosen = Some(k);
         }
     }
-    let (k, a, b) = chosen?;
+    let k = chosen?;
     // The s from the closest vertex and its neighbour on the point's side.
     let c = pts[k];
     let (nx, ny) = normal(c.h);
@@ -160,10 +160,19 @@ pub(crate) fn segment_s(road: &Road, x: f64, y: f64, z_input: f64) -> Option<(f6
         f.s
     } else {
         let s_norm = if (f.h - g.h).abs() < 1e-5 {
-            // ProjectPointOnLine2D, then the unsigned distance from the first vertex.
+            // ProjectPointOnLine2D, then the unsigned distance from the first vertex. On a
+            // road both rolled and sloped the closest vertex's normal, projected on the ground,
+            // is not square to the line: the point is first moved back along the heading by
+            // the shift Track2XYZ gives a point that far across (`banking::banked`).
+            let (bx, by) = {
+                let (sin_h, cos_h) = c.h.sin_cos();
+                let across = -(x - f.x) * sin_h + (y - f.y) * cos_h;
+                let along = super::banking::along_shift(road, c.s, across);
+                (x - along * cos_h, y - along * sin_h)
+            };
             let (dx, dy) = (g.x - f.x, g.y - f.y);
             let len2 = dx * dx + dy * dy;
-            let u = ((x - f.x) * dx + (y - f.y) * dy) / len2;
+            let u = ((bx - f.x) * dx + (by - f.y) * dy) / len2;
             (u * dx).hypot(u * dy) / len2.sqrt()
         } else {
             let (n0, n1) = (normal(f.h), normal(g.h));
@@ -189,11 +198,5 @@ pub(crate) fn segment_s(road: &Road, x: f64, y: f64, z_input: f64) -> Option<(f6
         let s_norm = if s_norm.is_finite() { s_norm } else { 0.0 };
         ((1.0 - s_norm) * f.s + s_norm * g.s).clamp(0.0, road.length)
     };
-    Some((s, pts[a].s, if b + 1 == n { road.length } else { pts[b].s }))
-}
-
-/// Whether the road's reference line climbs or falls more than 2 m anywhere (where the z
-/// penalty can decide), judged at its elevation records and its end.
-pub(crate) fn climbs(road: &Road) -> bool {
-    road.elevation.iter().map(|e| e.s).chain([road.length]).any(|s| road.elevation_at(s).abs() > Z_THRESHOLD)
+    Some(s)
 }

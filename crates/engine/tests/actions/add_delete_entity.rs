@@ -243,3 +243,18 @@ fn an_acc_steps_on_while_its_entity_is_away() {
     crate::common::oracle::assert_esmini_pose_at(&run, "Over", 4.0, 309.9, -5.25, 0.0);
     crate::common::oracle::assert_matches_esmini("acc_steps_while_away.xosc", &run, 1e-3);
 }
+
+/// An entity that stood stuck at its road's end when it was deleted keeps that end-of-road
+/// status (AddEntityAction::Start teleports with Position::TeleportTo, which copies the
+/// location only) and, not moving, is stopped again by ScenarioEngine::step where it is added:
+/// its speed stays 0 (Object::SetSpeed marks it applied, so prepareGroundTruth does not take
+/// the jump over dt as its speed) and it stays there. Fixture
+/// `added_back_after_stopping_at_road_end.xosc` on `bend_r5.xodr`: Ego in lane −1 at s 70,
+/// 10 m/s, reaches the end (s 87.853982) and stops; deleted at 3 s, added at 4 s at s 30.
+/// Expected values: esmini 3.6.0 on the fixture.
+#[test]
+fn an_entity_stuck_at_a_road_end_stays_stopped_when_added_back() {
+    let run = run_fixture_on("added_back_after_stopping_at_road_end.xosc", "bend_r5.xodr", 5.0);
+    let rows = [(2.0, 46.5, 45.0, 0.0), (4.02, 30.0, -1.5, 0.0), (4.5, 30.0, -1.5, 0.0), (5.0, 30.0, -1.5, 0.0)];
+    assert_esmini_rows(&run, "Ego", &rows, 1e-4);
+}

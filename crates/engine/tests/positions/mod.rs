@@ -18,4 +18,5 @@ mod route_position_on_missing_lane;
 mod route_position_past_route_end;
 mod world_point_off_road;
 mod world_point_on_overlapping_roads;
+mod world_point_on_road_past_a_bend;
 mod world_position_on_a_hill;
