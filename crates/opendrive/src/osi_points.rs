@@ -149,3 +149,30 @@ fn osi_points_limited(s_start: f64, s_end: f64, f: impl Fn(f64) -> Option<Xy>, l
     }
     points
 }
+
+impl Road {
+    /// The s of lane 0's OSI points over the road's lane sections, the duplicate first point
+    /// of each following section left out (esmini's OpenDrive::SetLaneOSIPoints for lane 0,
+    /// which follows the lane offset); computed once per road and kept.
+    pub fn lane0_osi_s(&self) -> &[f64] {
+        self.lane0_osi.get_or_init(|| {
+            let xy = |s: f64| {
+                let p = self.reference_pose(s);
+                let t = self.lane_offset_at(s);
+                let (sin, cos) = p.hdg.sin_cos();
+                Some((p.x - t * sin, p.y + t * cos))
+            };
+            let n = self.lane_sections.len();
+            let mut out = Vec::new();
+            for j in 0..n {
+                let Some((a, b)) = self.section_range(j) else { continue };
+                let mut pts = road_osi_points(self, a, b, xy);
+                if j + 1 < n && pts.len() > 1 {
+                    pts.pop();
+                }
+                out.extend(pts);
+            }
+            out
+        })
+    }
+}

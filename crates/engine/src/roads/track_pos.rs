@@ -36,24 +36,10 @@ fn lane0(road: &Road, s: f64) -> Vertex {
     Vertex { s, x: p.x - t * sin, y: p.y + t * cos, z: road.elevation_at(s), h: p.hdg }
 }
 
-/// Lane 0's OSI points over the road's lane sections, the duplicate first point of each
-/// following section left out (OpenDrive::SetLaneOSIPoints).
+/// Lane 0's OSI points over the road's lane sections (`Road::lane0_osi_s`, the duplicate
+/// first point of each following section left out: OpenDrive::SetLaneOSIPoints).
 fn vertices(road: &Road) -> Vec<Vertex> {
-    let mut out: Vec<Vertex> = Vec::new();
-    let n = road.lane_sections.len();
-    for j in 0..n {
-        let Some((a, b)) = road.section_range(j) else { continue };
-        let xy = |s: f64| {
-            let v = lane0(road, s);
-            Some((v.x, v.y))
-        };
-        let mut pts: Vec<Vertex> = opendrive::road_osi_points(road, a, b, xy).into_iter().map(|s| lane0(road, s)).collect();
-        if j + 1 < n && pts.len() > 1 {
-            pts.pop();
-        }
-        out.extend(pts);
-    }
-    out
+    road.lane0_osi_s().iter().map(|&s| lane0(road, s)).collect()
 }
 
 /// The road's width on the side of `sign` at s (Road::GetWidth): the outer border's distance

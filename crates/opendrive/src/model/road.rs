@@ -147,6 +147,9 @@ pub struct Road {
     pub signal_references: Vec<SignalReference>,
     /// Where `<road>` starts in the file.
     pub pos: LineCol,
+    /// The s of lane 0's OSI points, worked out on first use ([`Road::lane0_osi_s`]): a
+    /// network shared by many runs (a batch, a bench) samples each road once.
+    pub lane0_osi: std::sync::OnceLock<Vec<f64>>,
 }
 
 impl Road {

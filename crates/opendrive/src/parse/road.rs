@@ -77,6 +77,7 @@ pub(super) fn parse_road(ctx: &mut Ctx, node: Node) -> Result<Road, Error> {
         signals: Vec::new(),
         signal_references: Vec::new(),
         pos: ctx.pos(node),
+        lane0_osi: std::sync::OnceLock::new(),
     };
     let mut saw_plan_view = false;
     let mut saw_lanes = false;
