@@ -151,16 +151,23 @@ fn osi_points_limited(s_start: f64, s_end: f64, f: impl Fn(f64) -> Option<Xy>, l
 }
 
 impl Road {
+    /// Where lane 0 (the reference line moved by the lane offset) is at `s`, and the
+    /// reference line's heading there: (x, y, hdg).
+    pub fn lane0_at(&self, s: f64) -> (f64, f64, f64) {
+        let p = self.reference_pose(s);
+        let t = self.lane_offset_at(s);
+        let (sin, cos) = p.hdg.sin_cos();
+        (p.x - t * sin, p.y + t * cos, p.hdg)
+    }
+
     /// The s of lane 0's OSI points over the road's lane sections, the duplicate first point
     /// of each following section left out (esmini's OpenDrive::SetLaneOSIPoints for lane 0,
     /// which follows the lane offset); computed once per road and kept.
     pub fn lane0_osi_s(&self) -> &[f64] {
         self.lane0_osi.get_or_init(|| {
             let xy = |s: f64| {
-                let p = self.reference_pose(s);
-                let t = self.lane_offset_at(s);
-                let (sin, cos) = p.hdg.sin_cos();
-                Some((p.x - t * sin, p.y + t * cos))
+                let (x, y, _) = self.lane0_at(s);
+                Some((x, y))
             };
             let n = self.lane_sections.len();
             let mut out = Vec::new();

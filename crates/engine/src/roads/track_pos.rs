@@ -30,10 +30,8 @@ struct Vertex {
 }
 
 fn lane0(road: &Road, s: f64) -> Vertex {
-    let p = road.reference_pose(s);
-    let t = road.lane_offset_at(s);
-    let (sin, cos) = p.hdg.sin_cos();
-    Vertex { s, x: p.x - t * sin, y: p.y + t * cos, z: road.elevation_at(s), h: p.hdg }
+    let (x, y, h) = road.lane0_at(s);
+    Vertex { s, x, y, z: road.elevation_at(s), h }
 }
 
 /// Lane 0's OSI points over the road's lane sections (`Road::lane0_osi_s`, the duplicate
