@@ -265,7 +265,9 @@ impl Entity {
             return;
         };
         let hint = self.lane.map(|l| (l.road, l.s));
-        match crate::roads::locate::world_to_lane(net, x, y, hint) {
+        // A fresh position (no road yet) is asked at its z, 0 when not given (XYZ2TrackPos).
+        let z_asked = if hint.is_none() { Some(z.unwrap_or(0.0)) } else { z };
+        match crate::roads::locate::world_to_lane_at(net, x, y, z_asked, hint) {
             Some(lp) => {
                 // esmini's IsAngleForward of the heading its position holds (a heading within a
                 // micro-radian of ±π/2 is 1e-6 off, `esmini_reported_heading`): against the

@@ -196,6 +196,22 @@ impl RoadNetwork {
     /// [`Self::world_to_lane`] with lateral distances turned into t by `surface_t` (see
     /// [`Self::locate_on_road_by`]).
     pub fn world_to_lane_by(&self, x: f64, y: f64, hint: Option<usize>, surface_t: &dyn Fn(&Road, f64, f64) -> f64) -> Option<LanePosition> {
+        self.world_to_lane_at_height(x, y, None, hint, surface_t)
+    }
+
+    /// [`Self::world_to_lane_by`] for a point asked at height `z` (esmini's
+    /// Position::XYZ2TrackPos): a road whose reference line lies more than 2 m above or below
+    /// `z` where the point projects counts that height difference as distance, so of two
+    /// roads the point lies on (a bridge over a road) the one at the asked height wins. `None`:
+    /// heights are not weighed.
+    pub fn world_to_lane_at_height(
+        &self,
+        x: f64,
+        y: f64,
+        z: Option<f64>,
+        hint: Option<usize>,
+        surface_t: &dyn Fn(&Road, f64, f64) -> f64,
+    ) -> Option<LanePosition> {
         let mut ids = Vec::new();
         let start = self.index.first_ring(x, y);
         let mut ring = start;
@@ -213,28 +229,41 @@ impl RoadNetwork {
         }
         let mut cands = Vec::new();
         self.road_candidates(x, y, &ids, &mut cands);
-        let mut best: Option<LanePosition> = None;
+        let mut best: Option<(LanePosition, f64)> = None;
         for &(r, s, _) in &cands {
             let Some(p) = self.locate_on_road_by(r, x, y, s, surface_t) else { continue };
+            // XYZ2TrackPos adds a height difference above 2 m to a segment's distance.
+            let weighed = p.distance + z.map_or(0.0, |z| self.roads.get(r).map_or(0.0, |road| height_penalty(z - road.elevation_at(p.s))));
             let better = match &best {
                 None => true,
-                Some(b) => {
+                Some((b, wb)) => {
                     // With a current road esmini weighs roads by their connection to it
                     // (not modelled): the nearest lane centre stands in for that.
                     let centre = |q: &LanePosition| if hint.is_some() { q.offset.abs() } else { 0.0 };
-                    let key = |q: &LanePosition| (q.distance, if Some(q.road) == hint { 0 } else { 1 }, centre(q), q.road);
+                    let key = |q: &LanePosition| (if Some(q.road) == hint { 0 } else { 1 }, centre(q), q.road);
                     let (kp, kb) = (key(&p), key(b));
-                    if p.distance == 0.0 && b.distance == 0.0 {
-                        (kp.1, kp.2, kp.3) < (kb.1, kb.2, kb.3)
+                    if weighed == 0.0 && *wb == 0.0 {
+                        kp < kb
                     } else {
-                        kp.0 < kb.0 || (kp.0 == kb.0 && kp.3 < kb.3)
+                        weighed < *wb || (weighed == *wb && kp.2 < kb.2)
                     }
                 }
             };
             if better {
-                best = Some(p);
+                best = Some((p, weighed));
             }
         }
-        best
+        best.map(|(p, _)| p)
+    }
+}
+
+/// XYZ2TrackPos's weight of a height difference `dz` between the asked point and a road's
+/// reference line: counted only beyond 2 m ("to avoid noise in co-planar distance
+/// calculations").
+fn height_penalty(dz: f64) -> f64 {
+    if dz.abs() > 2.0 {
+        dz.abs()
+    } else {
+        0.0
     }
 }

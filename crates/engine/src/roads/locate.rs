@@ -19,8 +19,17 @@ thread_local! {
     static MEMO: RefCell<Vec<(Key, Option<LanePosition>)>> = const { RefCell::new(Vec::new()) };
 }
 
-/// Nearest lane of (x, y); `hint`: the road and s the caller was at.
+/// Nearest lane of (x, y); `hint`: the road and s the caller was at. Without a hint the point
+/// is a fresh position's, asked at z = 0 (see [`world_to_lane_at`]).
 pub(crate) fn world_to_lane(net: &RoadNetwork, x: f64, y: f64, hint: Option<(usize, f64)>) -> Option<LanePosition> {
+    world_to_lane_at(net, x, y, hint.is_none().then_some(0.0), hint)
+}
+
+/// [`world_to_lane`] for a point asked at height `z` (`None`: heights not weighed): esmini's
+/// XYZ2TrackPos adds to a road's distance the height difference from its reference line
+/// where it exceeds 2 m, so a point under a bridge takes the road below. A fresh Position
+/// (nobody was at it: an Init's WorldPosition without z) asks at z = 0.
+pub(crate) fn world_to_lane_at(net: &RoadNetwork, x: f64, y: f64, z: Option<f64>, hint: Option<(usize, f64)>) -> Option<LanePosition> {
     if let Some((road, s)) = hint {
         if let Some(p) = net.locate_on_road_by(road, x, y, s, &surface_t) {
             if p.is_on_road() {
@@ -28,9 +37,9 @@ pub(crate) fn world_to_lane(net: &RoadNetwork, x: f64, y: f64, hint: Option<(usi
             }
         }
     }
-    let found = net.world_to_lane_by(x, y, hint.map(|h| h.0), &surface_t);
+    let found = net.world_to_lane_at_height(x, y, z, hint.map(|h| h.0), &surface_t);
     match (hint, found) {
-        (None, Some(lp)) => Some(on_chosen_segment(net, lp, x, y).unwrap_or(lp)),
+        (None, Some(lp)) => Some(on_chosen_segment(net, lp, x, y, z.unwrap_or(0.0)).unwrap_or(lp)),
         _ => found.map(|p| unshifted(net, p, x, y)),
     }
 }
@@ -62,9 +71,9 @@ fn unshifted(net: &RoadNetwork, p: LanePosition, x: f64, y: f64) -> LanePosition
 /// curvature that s is not the exact projection's (ref_point.xodr past its bend: 5 cm on the
 /// road, 1-2 m off it), and on a road climbing more than 2 m the z penalty can pick a segment
 /// far from it. `None` where the road has no segment (the exact projection stands).
-fn on_chosen_segment(net: &RoadNetwork, lp: LanePosition, x: f64, y: f64) -> Option<LanePosition> {
+fn on_chosen_segment(net: &RoadNetwork, lp: LanePosition, x: f64, y: f64, z: f64) -> Option<LanePosition> {
     let road = net.roads.get(lp.road)?;
-    let s = super::track_pos::segment_s(road, x, y, 0.0)?;
+    let s = super::track_pos::segment_s(road, x, y, z)?;
     net.locate_at_s_by(lp.road, x, y, s, &surface_t)
 }
 
@@ -82,7 +91,7 @@ pub(crate) fn world_to_lane_memo(net: &RoadNetwork, x: f64, y: f64, hint: Option
     if let Some(hit) = MEMO.with(|m| m.borrow().iter().find(|e| e.0 == k).map(|e| e.1)) {
         return hit;
     }
-    let r = net.world_to_lane_by(x, y, hint.map(|h| h.0), &surface_t).map(|p| unshifted(net, p, x, y));
+    let r = net.world_to_lane_at_height(x, y, hint.is_none().then_some(0.0), hint.map(|h| h.0), &surface_t).map(|p| unshifted(net, p, x, y));
     MEMO.with(|m| {
         let mut m = m.borrow_mut();
         if m.len() >= MEMO_SIZE {

@@ -20,3 +20,4 @@ mod world_point_off_road;
 mod world_point_on_overlapping_roads;
 mod world_point_on_road_past_a_bend;
 mod world_position_on_a_hill;
+mod world_position_under_a_bridge;
