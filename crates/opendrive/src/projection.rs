@@ -172,6 +172,34 @@ impl RoadNetwork {
         }
     }
 
+    /// The roads near (x, y) that [`Self::world_to_lane`] weighs, by index: those with a piece
+    /// of reference line in the nearest ring of index cells that has any, or the ring after.
+    pub fn roads_near(&self, x: f64, y: f64) -> Vec<usize> {
+        let mut ids = Vec::new();
+        self.near_segments(x, y, &mut ids);
+        let mut roads: Vec<usize> = ids.iter().filter_map(|&i| self.index.segments.get(i as usize).map(|sg| sg.road)).collect();
+        roads.sort_unstable();
+        roads.dedup();
+        roads
+    }
+
+    /// The index segments of the nearest ring of cells holding any, and of the ring after (a
+    /// nearer segment may sit in a neighbouring cell).
+    fn near_segments(&self, x: f64, y: f64, ids: &mut Vec<u32>) {
+        let mut ring = self.index.first_ring(x, y);
+        let mut found_at = None;
+        loop {
+            let more = self.index.ring(x, y, ring, ids);
+            if found_at.is_none() && !ids.is_empty() {
+                found_at = Some(ring);
+            }
+            if found_at.is_some_and(|f| ring > f) || !more {
+                break;
+            }
+            ring += 1;
+        }
+    }
+
     /// Every lane (of any type) that contains (x, y), one per road, sorted by road index.
     pub fn lanes_containing(&self, x: f64, y: f64) -> Vec<LanePosition> {
         let mut ids = Vec::new();
@@ -213,20 +241,7 @@ impl RoadNetwork {
         surface_t: &dyn Fn(&Road, f64, f64) -> f64,
     ) -> Option<LanePosition> {
         let mut ids = Vec::new();
-        let start = self.index.first_ring(x, y);
-        let mut ring = start;
-        let mut found_at = None;
-        loop {
-            let more = self.index.ring(x, y, ring, &mut ids);
-            if found_at.is_none() && !ids.is_empty() {
-                found_at = Some(ring);
-            }
-            // One extra ring after the first hit: a nearer segment may sit in a neighbouring cell.
-            if found_at.is_some_and(|f| ring > f) || !more {
-                break;
-            }
-            ring += 1;
-        }
+        self.near_segments(x, y, &mut ids);
         let mut cands = Vec::new();
         self.road_candidates(x, y, &ids, &mut cands);
         let mut best: Option<(LanePosition, f64)> = None;

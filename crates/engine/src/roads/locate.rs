@@ -30,6 +30,11 @@ pub(crate) fn world_to_lane(net: &RoadNetwork, x: f64, y: f64, hint: Option<(usi
 /// where it exceeds 2 m, so a point under a bridge takes the road below. A fresh Position
 /// (nobody was at it: an Init's WorldPosition without z) asks at z = 0.
 pub(crate) fn world_to_lane_at(net: &RoadNetwork, x: f64, y: f64, z: Option<f64>, hint: Option<(usize, f64)>) -> Option<LanePosition> {
+    if hint.is_none() {
+        if let Some(p) = fresh_point(net, x, y, z.unwrap_or(0.0)) {
+            return Some(p);
+        }
+    }
     if let Some((road, s)) = hint {
         if let Some(p) = net.locate_on_road_by(road, x, y, s, &surface_t) {
             if p.is_on_road() {
@@ -63,6 +68,25 @@ fn unshifted(net: &RoadNetwork, p: LanePosition, x: f64, y: f64) -> LanePosition
         return p;
     }
     net.locate_at_s_by(p.road, x, y, p.s - along, &surface_t).unwrap_or(p)
+}
+
+/// A point nobody was at (esmini's fresh Position: no current road) asked at height `z`: of
+/// the roads near it, the one XYZ2TrackPos weighs nearest (`track_pos::segment_choice`: the
+/// distance beyond the road's width from its nearest lane-0 OSI segment, plus 3 m where the
+/// point lies beyond the road's ends and the height difference above 2 m; the first road in
+/// the file at a tie), at the s it interpolates there. So an off-road point beside a road's
+/// end takes the road going on from there, and a point under a bridge the road below.
+fn fresh_point(net: &RoadNetwork, x: f64, y: f64, z: f64) -> Option<LanePosition> {
+    let mut best: Option<(usize, f64, f64)> = None;
+    for r in net.roads_near(x, y) {
+        let Some(road) = net.roads.get(r) else { continue };
+        let Some((s, w)) = super::track_pos::segment_choice(road, x, y, z) else { continue };
+        if best.is_none_or(|(_, _, bw)| w < bw) {
+            best = Some((r, s, w));
+        }
+    }
+    let (r, s, _) = best?;
+    net.locate_at_s_by(r, x, y, s, &surface_t)
 }
 
 /// A point nobody was at (esmini's fresh Position: no current road, z asked at 0) takes the s

@@ -40,12 +40,19 @@ fn vertices(road: &Road) -> Vec<Vertex> {
     road.lane0_osi_s().iter().map(|&s| lane0(road, s)).collect()
 }
 
-/// The road's width on the side of `sign` at s (Road::GetWidth): the outer border's distance
-/// from lane 0.
+/// The road's width on the side of `sign` at s (Road::GetWidth with every lane type but
+/// none): the outer border's distance from lane 0 of the outermost lane not of type none.
 fn width(road: &Road, s: f64, left: bool) -> f64 {
     let section = road.section_index_at(s);
     let centre = road.lane_offset_at(s);
-    road.side_border_iter(section, left, s).map(|(_, b)| (b.outer - centre).abs()).fold(0.0, f64::max)
+    let Some(sec) = road.lane_sections.get(section) else { return 0.0 };
+    let lanes = if left { &sec.left } else { &sec.right };
+    // side_border_iter goes outwards over the same lanes, in the same order.
+    road.side_border_iter(section, left, s)
+        .zip(lanes)
+        .filter(|(_, lane)| lane.kind != opendrive::LaneType::None)
+        .last()
+        .map_or(0.0, |((_, b), _)| (b.outer - centre).abs())
 }
 
 /// DistanceFromPointToLine2D (the distance to the point itself for a degenerate line).
@@ -86,6 +93,12 @@ fn normal(h: f64) -> (f64, f64) {
 /// Where XYZ2TrackPos puts (x, y) at height `z_input` on `road` alone: the s. `None` for a
 /// road without OSI points.
 pub(crate) fn segment_s(road: &Road, x: f64, y: f64, z_input: f64) -> Option<f64> {
+    segment_choice(road, x, y, z_input).map(|(s, _)| s)
+}
+
+/// [`segment_s`] and the weighed distance of the segment chosen, by which XYZ2TrackPos
+/// compares roads (the smallest wins, the first road in the file at a tie).
+pub(crate) fn segment_choice(road: &Road, x: f64, y: f64, z_input: f64) -> Option<(f64, f64)> {
     let pts = vertices(road);
     let n = pts.len();
     if n < 2 {
@@ -182,5 +195,5 @@ pub(crate) fn segment_s(road: &Road, x: f64, y: f64, z_input: f64) -> Option<f64
         let s_norm = if s_norm.is_finite() { s_norm } else { 0.0 };
         ((1.0 - s_norm) * f.s + s_norm * g.s).clamp(0.0, road.length)
     };
-    Some(s)
+    Some((s, best))
 }
