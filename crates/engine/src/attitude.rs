@@ -96,6 +96,22 @@ pub(crate) fn on_road(road: &Road, s: f64, t: f64, h_rel: f64, offset_h_rel: f64
     Some(compose([h_road, -slope.atan(), roll], [h_rel, p_offset, 0.0]))
 }
 
+/// The heading esmini gives a relative lane or road position at `lp` turned by `h_rel` from
+/// the road's reference direction (the position's own relative heading, GetHRelative) on a
+/// sloped or banked road: Position::EvaluateRelation sets it relative (SetHeadingRelative:
+/// EvaluateHPR composes the road's rotation with h_rel plus the lane's `drift`), then calls
+/// EvaluateHPR once more in the position's SET mode, whose heading is absolute by default
+/// (GetModeDefault: H_ABS), so the heading found is taken as a turn from the road again and
+/// composed a second time. `None` where the road is level there (the plain sum stands).
+pub(crate) fn relative_position_heading(net: &RoadNetwork, lp: &LanePos, h_rel: f64, drift: f64) -> Option<f64> {
+    let road = net.roads.get(lp.road)?;
+    let s = lp.s.clamp(0.0, road.length);
+    let t = lp.pose(net)?.t;
+    let [first, _, _] = on_road(road, s, t, h_rel + drift, h_rel)?;
+    let h_road = crate::roads::pose_memo::reference_pose(road, s).hdg;
+    on_road(road, s, t, wrap(first - h_road), h_rel).map(|[h, _, _]| h)
+}
+
 impl<'a> Sim<'a> {
     /// World pitch and roll of entity `idx`.
     pub(crate) fn pitch_roll(&self, idx: usize) -> (f64, f64) {

@@ -70,6 +70,12 @@ impl<'a> Sim<'a> {
                 }
                 en.set_lane_pos(net, lp);
                 en.h = crate::entities::wrap_2pi(placement.h);
+                if let Some(h) = relative_heading_twice_composed(net, pos, &lp, en.yaw_offset) {
+                    en.h = h;
+                    if let Some(pose) = lp.pose(net) {
+                        en.yaw_offset = wrap(h - lp.facing_heading(&pose) - crate::positions::lane_drift(net, lp.road, lp.lane_id, lp.s));
+                    }
+                }
                 if placement.world_left {
                     (en.x, en.y, en.z) = (placement.x, placement.y, placement.z.unwrap_or(0.0));
                 }
@@ -91,4 +97,24 @@ impl<'a> Sim<'a> {
             _ => false,
         }
     }
+}
+
+/// A relative lane or road position facing relatively (no absolute heading, no pitch or roll
+/// of its own) on a sloped or banked road: the heading esmini's Position::EvaluateRelation
+/// leaves, the road's rotation composed twice (`attitude::relative_position_heading`).
+/// `yaw_offset`: the entity's turn from the way it faces along the lane, as placed.
+fn relative_heading_twice_composed(net: &opendrive::RoadNetwork, pos: &Position, lp: &crate::roads::LanePos, yaw_offset: f64) -> Option<f64> {
+    let orientation = match pos {
+        Position::RelativeLane { orientation, .. } | Position::RelativeRoad { orientation, .. } => orientation.as_ref(),
+        _ => return None,
+    };
+    if let Some(o) = orientation {
+        let absolute = o.reference == Some(openscenario::ReferenceContext::Absolute) && o.h.is_some();
+        if absolute || o.p.is_some() || o.r.is_some() {
+            return None;
+        }
+    }
+    let h_rel = yaw_offset + if lp.dir < 0.0 { std::f64::consts::PI } else { 0.0 };
+    let drift = crate::positions::lane_drift(net, lp.road, lp.lane_id, lp.s);
+    crate::attitude::relative_position_heading(net, lp, h_rel, drift)
 }
