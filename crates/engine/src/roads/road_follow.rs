@@ -142,7 +142,7 @@ fn move_along(
             pos.s = s;
             let section_now = road.section_index_at(s);
             if section_now != section_before && pos.road == road_before {
-                follow_section_change(net, pos, section_before, section_now);
+                follow_section_change(net, pos, section_before, section_now, sidewalks);
             }
             super::zero_width::leave_zero_width_lane_in(net, pos, section_now, sidewalks);
             return MoveStatus::Ok;
@@ -254,48 +254,56 @@ fn far_end(net: &RoadNetwork, road: usize, incoming: usize) -> Option<usize> {
 /// The lane continuing `here` across its `end`, and the contact point on that lane's road.
 /// `heading_in`: the road heading the entity drives in where it is.
 fn choose_continuation(net: &RoadNetwork, here: LaneRef, end: ContactPoint, heading_in: f64, arms: &mut Arms) -> Option<(LaneRef, ContactPoint)> {
-    let mut cands = net.lanes_across(here, end);
+    let junction = junction_at(net, here, end);
+    let cands: Vec<(LaneRef, ContactPoint)> = match junction {
+        // A default junction: esmini's connections from this road and lane, each entering its
+        // connecting road at the contact point it names (MoveToConnectingRoad trusts it, even
+        // where the connecting road's own link does not lead back here).
+        Some(j) if j.kind != opendrive::JunctionType::Direct => default_junction_arms(net, here, j),
+        _ => {
+            let mut lanes = net.lanes_across(here, end);
+            if let Some(j) = junction {
+                lanes = junction_arms(net, here, j, lanes);
+            }
+            let ends = net.roads_at(here.road, end);
+            let contact_of = |road: usize| -> ContactPoint {
+                let mut found: Option<ContactPoint> = None;
+                for e in &ends {
+                    if e.road == road {
+                        found = Some(e.contact);
+                        break;
+                    }
+                }
+                found.unwrap_or(ContactPoint::Start)
+            };
+            // Only lanes leading away in the same travel sense (lanes_across gives lane links,
+            // which are directional already).
+            let contact_at = |c: &LaneRef| -> ContactPoint {
+                if c.road != here.road {
+                    contact_of(c.road)
+                } else if end == ContactPoint::End {
+                    ContactPoint::Start
+                } else {
+                    ContactPoint::End
+                }
+            };
+            lanes.into_iter().map(|c| (c, contact_at(&c))).collect()
+        }
+    };
     if cands.is_empty() {
         return None;
     }
-    let ends = net.roads_at(here.road, end);
-    let contact_of = |road: usize| -> ContactPoint {
-        let mut found: Option<ContactPoint> = None;
-        for e in &ends {
-            if e.road == road {
-                found = Some(e.contact);
-                break;
-            }
-        }
-        found.unwrap_or(ContactPoint::Start)
-    };
-    let junction = junction_at(net, here, end);
-    if let Some(j) = junction {
-        cands = junction_arms(net, here, j, cands);
-    }
-    // Only lanes leading away in the same travel sense (lanes_across gives lane links, which
-    // are directional already).
-    let contact_at = |c: &LaneRef| -> ContactPoint {
-        if c.road != here.road {
-            contact_of(c.road)
-        } else if end == ContactPoint::End {
-            ContactPoint::Start
-        } else {
-            ContactPoint::End
-        }
-    };
     let mut random = match arms {
         Arms::Drawn(g) if junction.is_some() => {
             let n = i32::try_from(cands.len()).unwrap_or(i32::MAX);
             let k = if n > 1 { usize::try_from(g.number_between(0, n - 1)).unwrap_or(0) } else { 0 };
-            return cands.get(k).map(|c| (*c, contact_at(c)));
+            return cands.get(k).copied();
         }
         Arms::Drawn(_) => None,
         Arms::Straightest(g) => g.as_deref_mut(),
     };
     let mut best: Option<(f64, LaneRef, ContactPoint)> = None;
-    for c in cands {
-        let contact = contact_at(&c);
+    for (c, contact) in cands {
         let Some(r) = net.roads.get(c.road) else { continue };
         let far_heading = match contact {
             ContactPoint::Start => r.reference_pose(r.length).hdg,
@@ -315,6 +323,26 @@ fn choose_continuation(net: &RoadNetwork, here: LaneRef, end: ContactPoint, head
         }
     }
     best.map(|(_, l, c)| (l, c))
+}
+
+/// The arms of default junction `junction` lane `here` can take, in esmini's order
+/// (Junction::GetRoadConnectionByIdx over `junction_connections::entering`: the file's
+/// connections from this road, then its counter connections, lane links in order), each with
+/// the contact point its connection names; only lanes that exist.
+fn default_junction_arms(net: &RoadNetwork, here: LaneRef, junction: &opendrive::Junction) -> Vec<(LaneRef, ContactPoint)> {
+    let Some(ji) = net.junction_index(&junction.id) else { return Vec::new() };
+    let mut out = Vec::new();
+    for conn in super::junction_connections::entering(net, ji, here.road) {
+        let Some(r) = net.roads.get(conn.connecting) else { continue };
+        let section = opendrive::section_at_end(r, conn.contact);
+        for &(_, to) in conn.lane_links.iter().filter(|l| l.0 == here.lane) {
+            let lane = LaneRef { road: conn.connecting, section, lane: to };
+            if r.lane_sections.get(section).is_some_and(|sec| sec.left.iter().chain(&sec.right).any(|l| l.id == to)) {
+                out.push((lane, conn.contact));
+            }
+        }
+    }
+    out
 }
 
 /// The junction `here` leaves into across `end`, when there is one (not a lane-section change
@@ -364,23 +392,31 @@ fn junction_arms(net: &RoadNetwork, here: LaneRef, junction: &opendrive::Junctio
     cands
 }
 
-/// Keep the lane across a lane-section boundary inside one road, following lane links.
-fn follow_section_change(net: &RoadNetwork, pos: &mut LanePos, before: usize, now: usize) {
+/// Keep the lane across a lane-section boundary inside one road, following lane links (no
+/// link: the same id). Where that lane is missing or not of a type the entity snaps to
+/// (`sidewalks`: a pedestrian's), esmini's Road::GetLaneInfoByS takes the lane of those types
+/// nearest the old lane's centre there (LaneSection::GetClosestLaneIdx), the offset kept: a
+/// car whose merge lane ends in a stop lane moves into the lane beside it.
+fn follow_section_change(net: &RoadNetwork, pos: &mut LanePos, before: usize, now: usize, sidewalks: bool) {
     let Some(road) = net.roads.get(pos.road) else { return };
     let end = if now > before { ContactPoint::End } else { ContactPoint::Start };
-    let next = net.lanes_across(LaneRef { road: pos.road, section: before, lane: pos.lane_id }, end);
+    let old_lane = pos.lane_id;
+    let next = net.lanes_across(LaneRef { road: pos.road, section: before, lane: old_lane }, end);
     if let Some(n) = next.iter().find(|n| n.road == pos.road) {
         pos.lane_id = n.lane;
+    }
+    if old_lane == 0 {
         return;
     }
-    if lane_borders(road, now, pos.lane_id, pos.s).is_none() {
-        // No link and the lane id is gone: take the lane of the same side nearest the centre.
-        if let Some(sec) = road.lane_sections.get(now) {
-            let side = if pos.lane_id > 0 { &sec.left } else { &sec.right };
-            if let Some(l) = side.last() {
-                pos.lane_id = l.id;
-            }
-        }
+    let allowed = |k: opendrive::LaneType| k.is_any_driving() || (sidewalks && k == opendrive::LaneType::Sidewalk);
+    let usable = road.lane_sections.get(now).is_some_and(|sec| sec.left.iter().chain(&sec.right).any(|l| l.id == pos.lane_id && allowed(l.kind)));
+    if usable {
+        return;
+    }
+    // The old lane's centre at this s, its section's widths carried on past its end.
+    let Some(old) = lane_borders(road, before, old_lane, pos.s) else { return };
+    if let Some((lane_id, _)) = super::lane_snap::snap(road, now, pos.s, 0.5 * (old.0 + old.1), sidewalks) {
+        pos.lane_id = lane_id;
     }
 }
 

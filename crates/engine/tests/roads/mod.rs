@@ -2,7 +2,9 @@
 
 mod end_of_road_speed;
 mod ending_lane;
+mod junction_connection_entering_at_end;
 mod junction_random;
+mod lane_section_into_a_stop_lane;
 mod reversing_through_junctions;
 mod sloped_banked;
 mod superelevation;
