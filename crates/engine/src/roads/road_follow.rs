@@ -156,7 +156,11 @@ fn move_along(
         let against_s = if opendrive::drives_along_s(road.rule, pos.lane_id) { 0.0 } else { std::f64::consts::PI };
         let heading_in = super::pose_memo::reference_pose(road, s_here.clamp(0.0, road.length)).hdg + against_s;
         let routed = route.and_then(|r| routed_continuation(net, r, here, end));
-        let Some((next, contact)) = routed.or_else(|| choose_continuation(net, here, end, heading_in, &mut arms)) else {
+        let mut unlinked = false;
+        let Some((next, contact)) = routed.or_else(|| choose_continuation(net, here, end, heading_in, &mut arms)).or_else(|| {
+            unlinked = true;
+            unlinked_lane_continuation(net, road, here, end, pos, sidewalks)
+        }) else {
             pos.s = s.clamp(0.0, road.length);
             return MoveStatus::EndOfRoad;
         };
@@ -167,6 +171,10 @@ fn move_along(
         if flips {
             pos.dir = -pos.dir;
             pos.offset = -pos.offset;
+        }
+        if unlinked {
+            // "Reset lane offset when new move to new lane was enforced"
+            pos.offset = 0.0;
         }
         s_here = match contact {
             ContactPoint::Start => 0.0,
@@ -323,6 +331,37 @@ fn choose_continuation(net: &RoadNetwork, here: LaneRef, end: ContactPoint, head
         }
     }
     best.map(|(_, l, c)| (l, c))
+}
+
+/// A road linked to the next road whose lane `here` has no lane link there: esmini's
+/// Position::MoveToConnectingRoad ("No connection … trying move to closest lane") puts the
+/// entity on the next road's lane of its snap types (`sidewalks`: a pedestrian's) nearest
+/// the t it had (SetTrackPos at the contact point, t as it is), at that lane's centre.
+fn unlinked_lane_continuation(
+    net: &RoadNetwork,
+    road: &opendrive::Road,
+    here: LaneRef,
+    end: ContactPoint,
+    pos: &LanePos,
+    sidewalks: bool,
+) -> Option<(LaneRef, ContactPoint)> {
+    let link = road.link_at(end).filter(|l| l.element_type == ElementType::Road)?;
+    let lane = road.lane_sections.get(here.section)?.left.iter().chain(&road.lane_sections.get(here.section)?.right).find(|l| l.id == here.lane)?;
+    let linked = match end {
+        ContactPoint::Start => &lane.predecessors,
+        ContactPoint::End => &lane.successors,
+    };
+    if here.lane == 0 || !linked.is_empty() {
+        return None;
+    }
+    let next = net.road_index(&link.element_id)?;
+    let next_road = net.roads.get(next)?;
+    let contact = link.contact_point.unwrap_or(ContactPoint::Start);
+    let s_contact = if contact == ContactPoint::Start { 0.0 } else { next_road.length };
+    let t = pos.pose(net)?.t;
+    let section = opendrive::section_at_end(next_road, contact);
+    let (lane_id, _) = super::lane_snap::snap(next_road, section, s_contact, t, sidewalks)?;
+    Some((LaneRef { road: next, section, lane: lane_id }, contact))
 }
 
 /// The arms of default junction `junction` lane `here` can take, in esmini's order

@@ -6,5 +6,6 @@ mod junction_connection_entering_at_end;
 mod junction_random;
 mod lane_section_into_a_stop_lane;
 mod reversing_through_junctions;
+mod road_link_without_lane_links;
 mod sloped_banked;
 mod superelevation;
