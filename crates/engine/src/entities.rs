@@ -264,7 +264,7 @@ impl Entity {
             self.on_road = false;
             return;
         };
-        let hint = self.lane.map(|l| (l.road, l.s));
+        let hint = self.lane.map(|l| (l.road, l.s, l.lane_id));
         match crate::roads::locate::world_to_lane(net, x, y, hint) {
             Some(lp) => {
                 // esmini's IsAngleForward of the heading its position holds (a heading within a

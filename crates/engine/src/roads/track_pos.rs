@@ -42,7 +42,7 @@ fn vertices(road: &Road) -> Vec<Vertex> {
 
 /// The road's width on the side of `sign` at s (Road::GetWidth): the outer border's distance
 /// from lane 0.
-fn width(road: &Road, s: f64, left: bool) -> f64 {
+pub(crate) fn width(road: &Road, s: f64, left: bool) -> f64 {
     let section = road.section_index_at(s);
     let centre = road.lane_offset_at(s);
     road.side_border_iter(section, left, s).map(|(_, b)| (b.outer - centre).abs()).fold(0.0, f64::max)

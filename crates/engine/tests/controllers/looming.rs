@@ -216,3 +216,28 @@ fn past_a_dead_end_along_y_the_micro_radian_of_esmini_heading_picks_the_turn() {
     ];
     crate::common::assert_esmini_poses(&r, &rows, 1e-3, 1e-4);
 }
+
+#[test]
+fn a_looming_car_drifting_off_its_connecting_road_stays_on_it() {
+    // looming_beside_connecting_road.xosc on crossing.xodr: the car crosses the junction on the
+    // straight connecting road 106 (right lanes only), its lane offset action drifting it a few
+    // cm left of the reference line, where only the crossing connecting roads (107, 111) have
+    // lanes. esmini's XYZ2TrackPos keeps a point within 2 m of the current road on it and
+    // weighs roads not directly connected to it 3 m more: the car stays on road 106, lane -1,
+    // its offset from that lane's centre (1.86 m at 4.1 s). (time, x, y, h, lane, offset) from
+    // esmini 3.6.0's trace.
+    let r = crate::common::run_fixture("looming_beside_connecting_road.xosc", "crossing.xodr");
+    let rows = [
+        (3.9, -5.116806, -0.040916, 0.068995, -1, 1.709084),
+        (4.1, -1.564568, 0.109449, 0.027177, -1, 1.859449),
+        (4.5, 5.545284, -0.016417, 6.246402, -1, 1.733583),
+        (5.0, 14.424417, -0.41837, 6.233994, -1, 1.33163),
+        (6.0, 32.183834, -1.232425, 6.24488, -1, 0.517575),
+        (6.25, 36.626128, -1.386536, 6.250495, -1, 0.363464),
+    ];
+    for (t, x, y, h, lane, offset) in rows {
+        crate::common::assert_esmini_poses(&r, &[("Ego", t, x, y, h)], 1e-3, 1e-4);
+        let road = at(&r, "Ego", t).road.expect("on the road");
+        assert!(road.lane_id == lane && close(road.lane_offset, offset, 1e-3), "at {t} s: {road:?}, esmini lane {lane} offset {offset}");
+    }
+}
