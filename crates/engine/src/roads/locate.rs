@@ -21,8 +21,28 @@ thread_local! {
 
 /// Nearest lane of (x, y); `hint`: the road, s and lane the caller was at (lane 0: unknown).
 pub(crate) fn world_to_lane(net: &RoadNetwork, x: f64, y: f64, hint: Option<(usize, f64, i32)>) -> Option<LanePosition> {
-    if let Some((road, s, lane_id)) = hint {
+    world_to_lane_from(net, x, y, hint.map(|(road, s, _)| (road, s)), hint)
+}
+
+/// [`world_to_lane`] where the road preferred (`hint`: road and s) is not the one the position
+/// was on (`current`: road, s and lane; XYZ2TrackPos's current road), e.g. the road a move
+/// along the lane has led to.
+pub(crate) fn world_to_lane_from(net: &RoadNetwork, x: f64, y: f64, hint: Option<(usize, f64)>, current: Option<(usize, f64, i32)>) -> Option<LanePosition> {
+    let mut hinted = None;
+    if let Some((road, s)) = hint {
         if let Some(p) = net.locate_on_road_by(road, x, y, s, &surface_t) {
+            if p.is_on_road() {
+                return Some(unshifted(net, p, x, y));
+            }
+            hinted = Some(p);
+        }
+    }
+    if let Some((road, s, lane_id)) = current {
+        let p = match hinted.filter(|p| p.road == road) {
+            Some(p) => Some(p),
+            None => net.locate_on_road_by(road, x, y, s, &surface_t),
+        };
+        if let Some(p) = p {
             if p.is_on_road() {
                 return Some(unshifted(net, p, x, y));
             }
@@ -31,7 +51,6 @@ pub(crate) fn world_to_lane(net: &RoadNetwork, x: f64, y: f64, hint: Option<(usi
             }
         }
     }
-    let hint = hint.map(|(road, s, _)| (road, s));
     let found = net.world_to_lane_by(x, y, hint.map(|h| h.0), &surface_t);
     match (hint, found) {
         (None, Some(lp)) => Some(on_chosen_segment(net, lp, x, y).unwrap_or(lp)),
