@@ -241,3 +241,25 @@ fn a_looming_car_drifting_off_its_connecting_road_stays_on_it() {
         assert!(road.lane_id == lane && close(road.lane_offset, offset, 1e-3), "at {t} s: {road:?}, esmini lane {lane} offset {offset}");
     }
 }
+
+#[test]
+fn over_a_ridge_the_looming_car_looks_along_osi_points_cut_at_the_slope_break() {
+    // looming_over_a_ridge.xosc on hill.xodr: the car drives up the ridge (slope 0.5, then
+    // −0.5 from s = 50) and past the dead end at s = 100, where its far point is the tangent
+    // point of the lane's edges. esmini's lane OSI points are cut where the slope jumps
+    // (OpenDrive::CheckAndAddOSIPoint with GetMaxSegmentLen: a change of slope above 0.1 is a
+    // discontinuity), not one 50 m chord over the top as on a flat road; the tangent point,
+    // and so the turn past the end, follows from those points. (entity, time, x, y, h) from
+    // esmini 3.6.0's trace.
+    let r = crate::common::run_fixture("looming_over_a_ridge.xosc", "hill.xodr");
+    let rows = [
+        ("Ego", 5.0, 94.991184, -1.75, 0.0),
+        ("Ego", 7.0, 112.595634, -17.705746, 4.309142),
+        ("Ego", 7.5, 107.218601, -22.704072, 3.59818),
+        ("Ego", 8.0, 99.879142, -22.955078, 2.863094),
+        ("Ego", 9.0, 86.954752, -15.464888, 2.472566),
+        ("Ego", 10.0, 74.079695, -7.831436, 2.67867),
+        ("Ego", 12.0, 44.704649, -2.581182, 3.062575),
+    ];
+    crate::common::assert_esmini_poses(&r, &rows, 1e-3, 1e-4);
+}
