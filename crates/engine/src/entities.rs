@@ -222,7 +222,17 @@ impl Entity {
         let sidewalks = self.kind == EntityKind::Pedestrian;
         // The entity's own position: GetPOffset reads the heading from the road it held.
         let prior_h_rel = self.lane.map_or(0.0, |l| self.yaw_offset + if l.dir < 0.0 { std::f64::consts::PI } else { 0.0 });
-        self.place_world(net, x, y, z, h, sidewalks, prior_h_rel);
+        let current = self.lane;
+        self.place_world(net, x, y, z, h, sidewalks, prior_h_rel, current);
+    }
+
+    /// [`Entity::set_world`] where the entity's lane (preferred) is not where its position was
+    /// (`current`, XYZ2TrackPos's current road): the looming controller moves its lane along
+    /// the road before placing it.
+    pub(crate) fn set_world_from(&mut self, net: Option<&RoadNetwork>, x: f64, y: f64, h: f64, current: Option<LanePos>) {
+        let sidewalks = self.kind == EntityKind::Pedestrian;
+        let prior_h_rel = self.lane.map_or(0.0, |l| self.yaw_offset + if l.dir < 0.0 { std::f64::consts::PI } else { 0.0 });
+        self.place_world(net, x, y, None, h, sidewalks, prior_h_rel, current);
     }
 
     /// Where esmini leaves an entity whose position it could not set: the origin, heading 0,
@@ -243,7 +253,8 @@ impl Entity {
     /// TeleportAction: Position::CopyLocation).
     pub(crate) fn set_world_snapping(&mut self, net: Option<&RoadNetwork>, x: f64, y: f64, z: Option<f64>, h: f64, sidewalks: bool) {
         // The teleport's position was made afresh (relative heading 0 for GetPOffset).
-        self.place_world(net, x, y, z, h, sidewalks, 0.0);
+        let current = self.lane;
+        self.place_world(net, x, y, z, h, sidewalks, 0.0, current);
     }
 
     /// Place the entity at a world pose facing `h` (esmini's Position::SetInertiaPosMode with
@@ -252,9 +263,10 @@ impl Entity {
     /// `attitude::on_road`: on a banked road GetPOffset's pitch turns it), which a
     /// RelativeObjectPosition or a trajectory starting there takes; the turn from the lane
     /// (what moving along it keeps) is the plain difference; beyond the road's end the road
-    /// is taken as level. `prior_h_rel`: the heading from the road the position held before.
+    /// is taken as level. `prior_h_rel`: the heading from the road the position held before;
+    /// `current`: the lane it was on (XYZ2TrackPos's current road).
     #[allow(clippy::too_many_arguments)]
-    fn place_world(&mut self, net: Option<&RoadNetwork>, x: f64, y: f64, z: Option<f64>, h: f64, sidewalks: bool, prior_h_rel: f64) {
+    fn place_world(&mut self, net: Option<&RoadNetwork>, x: f64, y: f64, z: Option<f64>, h: f64, sidewalks: bool, prior_h_rel: f64, current: Option<LanePos>) {
         self.x = x;
         self.y = y;
         self.h = wrap_2pi(h);
@@ -267,7 +279,7 @@ impl Entity {
         let hint = self.lane.map(|l| (l.road, l.s));
         // A fresh position (no road yet) is asked at its z, 0 when not given (XYZ2TrackPos).
         let z_asked = if hint.is_none() { Some(z.unwrap_or(0.0)) } else { z };
-        match crate::roads::locate::world_to_lane_at(net, x, y, z_asked, hint) {
+        match crate::roads::locate::world_to_lane_at(net, x, y, z_asked, hint, current.map(|l| (l.road, l.s, l.lane_id))) {
             Some(lp) => {
                 // esmini's IsAngleForward of the heading its position holds (a heading within a
                 // micro-radian of ±π/2 is 1e-6 off, `esmini_reported_heading`): against the

@@ -43,7 +43,9 @@ fn located_corners(net: &RoadNetwork, e: &Entity, road: usize, hint_s: f64, side
     let [fl, fr, rr, rl] = corners(e);
     let mut out = [None; 4];
     for (k, (x, y)) in [fl, rl, rr, fr].into_iter().enumerate() {
-        let mut p = world_to_lane(net, x, y, Some((road, hint_s)))?;
+        // A copy of the entity's position: its lane is the current one (XYZ2TrackPos).
+        let lane_id = e.lane.filter(|l| l.road == road).map_or(0, |l| l.lane_id);
+        let mut p = world_to_lane(net, x, y, Some((road, hint_s, lane_id)))?;
         if only_road && p.road != road {
             return None;
         }

@@ -31,7 +31,7 @@ impl Entity {
     /// it in the lane at the lateral position of `before` (its lane before the move), the offset
     /// measured from that position (`latOffset − fixed_t`).
     pub(crate) fn set_world_lane_locked(&mut self, net: Option<&RoadNetwork>, x: f64, y: f64, h: f64, before: Option<LanePos>) {
-        self.set_world(net, x, y, None, h);
+        self.set_world_from(net, x, y, h, before);
         let (Some(net), Some(before), Some(now)) = (net, before, self.lane) else { return };
         let (Some(old_road), Some(road)) = (net.roads.get(before.road), net.roads.get(now.road)) else { return };
         let Some(centre) = centre_without_lane_offset(old_road, &before) else { return };

@@ -43,8 +43,9 @@ const K0: f64 = 1.8;
 const K1: f64 = 1.3;
 const K2: f64 = 1.5;
 
-/// What the run says about a LoomingController on roads with elevation or superelevation.
-pub(crate) const APPROXIMATION: &str = "LoomingController: the OSI points of its far tangent point are esmini's for flat roads; the shorter spacing esmini uses where the road's elevation or superelevation changes is not modelled";
+/// What the run says about a LoomingController on roads whose superelevation changes.
+pub(crate) const APPROXIMATION: &str =
+    "LoomingController: the OSI points of its far tangent point leave out the shorter spacing esmini uses where the road's superelevation changes";
 
 impl LoomingRt {
     /// ControllerLooming's constructor: `timeGap` (1.5 s) and `setSpeed` properties; the mode

@@ -115,8 +115,7 @@ impl<'a> Sim<'a> {
             "FollowRouteController" => Some(ControllerRt::FollowRoute(Box::new(follow_route::state::FollowRouteRt::new(c)))),
             "OffroadFollower" => Some(ControllerRt::OffroadFollower(Box::new(offroad_follower::state::OffroadFollowerRt::new(c)))),
             "LoomingController" => {
-                if self.net.is_some_and(|n| n.roads.iter().any(|r| r.elevation.iter().chain(&r.superelevation).any(|c| c.b != 0.0 || c.c != 0.0 || c.d != 0.0)))
-                {
+                if self.net.is_some_and(|n| n.roads.iter().any(|r| r.superelevation.iter().any(|c| c.b != 0.0 || c.c != 0.0 || c.d != 0.0))) {
                     self.warnings.push(Diagnostic::at(&c.origin, looming::APPROXIMATION.to_string()));
                 }
                 Some(ControllerRt::Looming(looming::state::LoomingRt::new(c)))

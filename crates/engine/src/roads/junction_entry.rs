@@ -41,6 +41,45 @@ fn contact_curvature(road: &Road, contact: ContactPoint) -> f64 {
     }
 }
 
+/// The connecting roads a junction at either end of road `road` (outside a junction) leads to
+/// from lane `lane_id` (Road::IsDirectlyConnected through a junction: a connection that road
+/// enters by, the counter connections included, with a lane link from that lane; lane 0: any
+/// connection), each once, with the contact point at the connecting road.
+fn junction_arms(net: &RoadNetwork, road_index: usize, lane_id: i32) -> Vec<(usize, ContactPoint)> {
+    let mut connected: Vec<(usize, ContactPoint)> = Vec::new();
+    let Some(road) = net.roads.get(road_index) else { return connected };
+    for link in [road.predecessor.as_ref(), road.successor.as_ref()].into_iter().flatten() {
+        if link.element_type != ElementType::Junction {
+            continue;
+        }
+        let Some(j) = net.junction_index(&link.element_id) else { continue };
+        for c in super::junction_connections::entering(net, j, road_index) {
+            let from_lane = lane_id == 0 || c.lane_links.iter().any(|l| l.0 == lane_id);
+            if from_lane && !connected.iter().any(|k| k.0 == c.connecting) {
+                connected.push((c.connecting, c.contact));
+            }
+        }
+    }
+    connected
+}
+
+/// The roads Road::IsDirectlyConnected finds from road `road` and its lane `lane_id`: those its
+/// road links name, and the connecting roads of a junction it links to (`junction_arms`).
+pub(crate) fn directly_connected(net: &RoadNetwork, road: usize, lane_id: i32) -> Vec<usize> {
+    let mut out: Vec<usize> = Vec::new();
+    if let Some(r) = net.roads.get(road) {
+        for link in [r.successor.as_ref(), r.predecessor.as_ref()].into_iter().flatten() {
+            if link.element_type == ElementType::Road {
+                if let Some(i) = net.road_index(&link.element_id) {
+                    out.push(i);
+                }
+            }
+        }
+    }
+    out.extend(junction_arms(net, road, lane_id).into_iter().map(|c| c.0));
+    out
+}
+
 /// The connecting road XYZ2TrackPos puts (x, y) on when the entity was at `from`, on a road
 /// outside a junction, and the point lies on a road directly connected to it from its lane;
 /// `None` when no such road contains the point (the general search then answers).
@@ -49,19 +88,7 @@ pub(crate) fn entry_connector(net: &RoadNetwork, from: &LanePos, x: f64, y: f64)
     if road.junction.is_some() {
         return None;
     }
-    // The connecting roads directly connected from this lane, by either end of the road.
-    let mut connected: Vec<(usize, ContactPoint)> = Vec::new();
-    for link in [road.predecessor.as_ref(), road.successor.as_ref()].into_iter().flatten() {
-        if link.element_type != ElementType::Junction {
-            continue;
-        }
-        let Some(j) = net.junction_index(&link.element_id) else { continue };
-        for c in super::junction_connections::entering(net, j, from.road) {
-            if c.lane_links.iter().any(|l| l.0 == from.lane_id) && !connected.iter().any(|k| k.0 == c.connecting) {
-                connected.push((c.connecting, c.contact));
-            }
-        }
-    }
+    let mut connected = junction_arms(net, from.road, from.lane_id);
     if connected.is_empty() {
         return None;
     }

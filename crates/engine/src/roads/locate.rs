@@ -19,26 +19,51 @@ thread_local! {
     static MEMO: RefCell<Vec<(Key, Option<LanePosition>)>> = const { RefCell::new(Vec::new()) };
 }
 
-/// Nearest lane of (x, y); `hint`: the road and s the caller was at. Without a hint the point
-/// is a fresh position's, asked at z = 0 (see [`world_to_lane_at`]).
-pub(crate) fn world_to_lane(net: &RoadNetwork, x: f64, y: f64, hint: Option<(usize, f64)>) -> Option<LanePosition> {
-    world_to_lane_at(net, x, y, hint.is_none().then_some(0.0), hint)
+/// Nearest lane of (x, y); `hint`: the road, s and lane the caller was at (lane 0: unknown).
+/// Without a hint the point is a fresh position's, asked at z = 0 (see [`world_to_lane_at`]).
+pub(crate) fn world_to_lane(net: &RoadNetwork, x: f64, y: f64, hint: Option<(usize, f64, i32)>) -> Option<LanePosition> {
+    world_to_lane_at(net, x, y, hint.is_none().then_some(0.0), hint.map(|(road, s, _)| (road, s)), hint)
 }
 
 /// [`world_to_lane`] for a point asked at height `z` (`None`: heights not weighed): esmini's
 /// XYZ2TrackPos adds to a road's distance the height difference from its reference line
 /// where it exceeds 2 m, so a point under a bridge takes the road below. A fresh Position
-/// (nobody was at it: an Init's WorldPosition without z) asks at z = 0.
-pub(crate) fn world_to_lane_at(net: &RoadNetwork, x: f64, y: f64, z: Option<f64>, hint: Option<(usize, f64)>) -> Option<LanePosition> {
+/// (nobody was at it: an Init's WorldPosition without z) asks at z = 0. The road preferred
+/// (`hint`: road and s) may differ from the one the position was on (`current`: road, s and
+/// lane; XYZ2TrackPos's current road), e.g. the road a move along the lane has led to.
+pub(crate) fn world_to_lane_at(
+    net: &RoadNetwork,
+    x: f64,
+    y: f64,
+    z: Option<f64>,
+    hint: Option<(usize, f64)>,
+    current: Option<(usize, f64, i32)>,
+) -> Option<LanePosition> {
     if hint.is_none() {
         if let Some(p) = fresh_point(net, x, y, z.unwrap_or(0.0)) {
             return Some(p);
         }
     }
+    let mut hinted = None;
     if let Some((road, s)) = hint {
         if let Some(p) = net.locate_on_road_by(road, x, y, s, &surface_t) {
             if p.is_on_road() {
                 return Some(unshifted(net, p, x, y));
+            }
+            hinted = Some(p);
+        }
+    }
+    if let Some((road, s, lane_id)) = current {
+        let p = match hinted.filter(|p| p.road == road) {
+            Some(p) => Some(p),
+            None => net.locate_on_road_by(road, x, y, s, &surface_t),
+        };
+        if let Some(p) = p {
+            if p.is_on_road() {
+                return Some(unshifted(net, p, x, y));
+            }
+            if let Some(held) = held_on_current(net, p, lane_id, x, y) {
+                return Some(unshifted(net, held, x, y));
             }
         }
     }
@@ -47,6 +72,41 @@ pub(crate) fn world_to_lane_at(net: &RoadNetwork, x: f64, y: f64, z: Option<f64>
         (None, Some(lp)) => Some(on_chosen_segment(net, lp, x, y, z.unwrap_or(0.0)).unwrap_or(lp)),
         _ => found.map(|p| unshifted(net, p, x, y)),
     }
+}
+
+/// XYZ2TrackPos: a point within the current road's s range and less than this beyond its
+/// lanes is inside it (`insideCurrentRoad`, "2 meter lateral slack").
+const CURRENT_ROAD_SLACK: f64 = 2.0;
+
+/// Position::XYZ2TrackPos's hold on the current road: a point beside the current road `p`
+/// (within its s range, less than 2 m beyond its outer lane border on that side) stays on it
+/// unless a road directly connected to it from lane `lane_id` (Road::IsDirectlyConnected)
+/// contains the point or lies nearer; any other road, even one containing the point, weighs 3 m
+/// more (the penalty of roads not directly connected) and so loses, and so does a connected
+/// road whose s range the point is beyond (3 m too). So an entity drifting a little off a
+/// connecting road stays on it instead of moving onto a crossing one. `None` when the point is
+/// not inside the current road (the plain search answers).
+fn held_on_current(net: &RoadNetwork, p: LanePosition, lane_id: i32, x: f64, y: f64) -> Option<LanePosition> {
+    // Inside the road's s range: the distance beyond the road's width on the point's side
+    // (XYZ2TrackPos: the distance from lane 0's OSI segment less Road::GetWidth).
+    let beyond = |q: &LanePosition| {
+        let road = net.roads.get(q.road)?;
+        if q.s <= 0.0 || q.s >= road.length {
+            return None;
+        }
+        let t = q.t - road.lane_offset_at(q.s);
+        Some((t.abs() - super::track_pos::width(road, q.s, t > 0.0)).max(0.0))
+    };
+    let d = beyond(&p).filter(|d| *d < CURRENT_ROAD_SLACK)?;
+    let mut best = (p, d);
+    for r in super::junction_entry::directly_connected(net, p.road, lane_id) {
+        let Some(other) = net.roads.get(r) else { continue };
+        let Some(q) = net.locate_on_road_by(r, x, y, 0.5 * other.length, &surface_t) else { continue };
+        if let Some(dq) = beyond(&q).filter(|dq| *dq < best.1) {
+            best = (q, dq);
+        }
+    }
+    Some(best.0)
 }
 
 /// On a straight piece of a road both rolled and sloped: the s XYZ2TrackPos gives (x, y), that
@@ -169,7 +229,7 @@ mod tests {
             // 1.75 m to the right of the reference line: lane -1's centre.
             let (x, y) = (p.x + 1.75 * p.hdg.sin(), p.y - 1.75 * p.hdg.cos());
             let full = n.world_to_lane(x, y, Some(0)).unwrap_or_else(|| panic!("full search"));
-            let fast = world_to_lane(&n, x, y, Some((0, (s - 3.0).max(0.0)))).unwrap_or_else(|| panic!("fast"));
+            let fast = world_to_lane(&n, x, y, Some((0, (s - 3.0).max(0.0), 0))).unwrap_or_else(|| panic!("fast"));
             assert_eq!((full.road, full.lane_id), (fast.road, fast.lane_id));
             assert!((full.s - s).abs() < 1e-6 && (fast.s - s).abs() < 1e-6, "{} {} {s}", full.s, fast.s);
             assert!((fast.offset - full.offset).abs() < 1e-9 && fast.offset.abs() < 1e-6);
@@ -180,7 +240,7 @@ mod tests {
     fn off_the_hinted_road_the_full_search_answers() {
         let n = net();
         // A point on road 1, hinted with road 0: found on road 1 all the same.
-        let p = world_to_lane(&n, 150.0, 298.25, Some((0, 50.0))).unwrap_or_else(|| panic!("found"));
+        let p = world_to_lane(&n, 150.0, 298.25, Some((0, 50.0, 0))).unwrap_or_else(|| panic!("found"));
         assert_eq!((p.road, p.lane_id), (1, -1));
         assert!((p.s - 50.0).abs() < 1e-9);
         // Asked twice, the memo answers the same.

@@ -42,7 +42,7 @@ fn vertices(road: &Road) -> Vec<Vertex> {
 
 /// The road's width on the side of `sign` at s (Road::GetWidth with every lane type but
 /// none): the outer border's distance from lane 0 of the outermost lane not of type none.
-fn width(road: &Road, s: f64, left: bool) -> f64 {
+pub(crate) fn width(road: &Road, s: f64, left: bool) -> f64 {
     let section = road.section_index_at(s);
     let centre = road.lane_offset_at(s);
     let Some(sec) = road.lane_sections.get(section) else { return 0.0 };

@@ -216,3 +216,50 @@ fn past_a_dead_end_along_y_the_micro_radian_of_esmini_heading_picks_the_turn() {
     ];
     crate::common::assert_esmini_poses(&r, &rows, 1e-3, 1e-4);
 }
+
+#[test]
+fn a_looming_car_drifting_off_its_connecting_road_stays_on_it() {
+    // looming_beside_connecting_road.xosc on crossing.xodr: the car crosses the junction on the
+    // straight connecting road 106 (right lanes only), its lane offset action drifting it a few
+    // cm left of the reference line, where only the crossing connecting roads (107, 111) have
+    // lanes. esmini's XYZ2TrackPos keeps a point within 2 m of the current road on it and
+    // weighs roads not directly connected to it 3 m more: the car stays on road 106, lane -1,
+    // its offset from that lane's centre (1.86 m at 4.1 s). (time, x, y, h, lane, offset) from
+    // esmini 3.6.0's trace.
+    let r = crate::common::run_fixture("looming_beside_connecting_road.xosc", "crossing.xodr");
+    let rows = [
+        (3.9, -5.116806, -0.040916, 0.068995, -1, 1.709084),
+        (4.1, -1.564568, 0.109449, 0.027177, -1, 1.859449),
+        (4.5, 5.545284, -0.016417, 6.246402, -1, 1.733583),
+        (5.0, 14.424417, -0.41837, 6.233994, -1, 1.33163),
+        (6.0, 32.183834, -1.232425, 6.24488, -1, 0.517575),
+        (6.25, 36.626128, -1.386536, 6.250495, -1, 0.363464),
+    ];
+    for (t, x, y, h, lane, offset) in rows {
+        crate::common::assert_esmini_poses(&r, &[("Ego", t, x, y, h)], 1e-3, 1e-4);
+        let road = at(&r, "Ego", t).road.expect("on the road");
+        assert!(road.lane_id == lane && close(road.lane_offset, offset, 1e-3), "at {t} s: {road:?}, esmini lane {lane} offset {offset}");
+    }
+}
+
+#[test]
+fn over_a_ridge_the_looming_car_looks_along_osi_points_cut_at_the_slope_break() {
+    // looming_over_a_ridge.xosc on hill.xodr: the car drives up the ridge (slope 0.5, then
+    // −0.5 from s = 50) and past the dead end at s = 100, where its far point is the tangent
+    // point of the lane's edges. esmini's lane OSI points are cut where the slope jumps
+    // (OpenDrive::CheckAndAddOSIPoint with GetMaxSegmentLen: a change of slope above 0.1 is a
+    // discontinuity), not one 50 m chord over the top as on a flat road; the tangent point,
+    // and so the turn past the end, follows from those points. (entity, time, x, y, h) from
+    // esmini 3.6.0's trace.
+    let r = crate::common::run_fixture("looming_over_a_ridge.xosc", "hill.xodr");
+    let rows = [
+        ("Ego", 5.0, 94.991184, -1.75, 0.0),
+        ("Ego", 7.0, 112.595634, -17.705746, 4.309142),
+        ("Ego", 7.5, 107.218601, -22.704072, 3.59818),
+        ("Ego", 8.0, 99.879142, -22.955078, 2.863094),
+        ("Ego", 9.0, 86.954752, -15.464888, 2.472566),
+        ("Ego", 10.0, 74.079695, -7.831436, 2.67867),
+        ("Ego", 12.0, 44.704649, -2.581182, 3.062575),
+    ];
+    crate::common::assert_esmini_poses(&r, &rows, 1e-3, 1e-4);
+}

@@ -3,7 +3,8 @@
 //! edge within 80 m, found on the lane's OSI points). The OSI points are esmini's
 //! (OpenDrive::SetLaneOSIPoints / CheckAndAddOSIPoint / CheckLaneOSIRequirement): points of
 //! the lane centre, a new one wherever the tangent lines at the last point and the candidate
-//! meet more than 5 cm off the chord, at most 50 m apart (flat roads).
+//! meet more than 5 cm off the chord, at most 50 m apart, closer where the elevation curves
+//! and cut where it breaks (`opendrive::road_osi_points`; superelevation is not modelled).
 
 use crate::roads::LanePos;
 use opendrive::{ContactPoint, ElementType, Road, RoadNetwork};
@@ -32,13 +33,13 @@ fn centre(net: &RoadNetwork, road: usize, lane_id: i32, s: f64) -> Option<OsiPoi
     Some(OsiPoint { s, x: p.x, y: p.y, h: p.road_heading })
 }
 
-/// OpenDrive::SetLaneOSIPoints for one lane of one lane section (`opendrive::osi_points`).
+/// OpenDrive::SetLaneOSIPoints for one lane of one lane section (`opendrive::road_osi_points`).
 pub(crate) fn lane_osi_points(net: &RoadNetwork, road_idx: usize, j: usize, lane_id: i32) -> Vec<OsiPoint> {
     let Some(road) = net.roads.get(road_idx) else { return Vec::new() };
     let Some(lsec) = road.lane_sections.get(j) else { return Vec::new() };
     let s_end = section_end(road, j);
     let xy = |s: f64| centre(net, road_idx, lane_id, s).map(|p| (p.x, p.y));
-    opendrive::osi_points(lsec.s, s_end, xy).into_iter().filter_map(|s| centre(net, road_idx, lane_id, s)).collect()
+    opendrive::road_osi_points(road, lsec.s, s_end, xy).into_iter().filter_map(|s| centre(net, road_idx, lane_id, s)).collect()
 }
 
 /// Where esmini's position, attached to the road by Position::XYZ2TrackPos, is at or past the
