@@ -69,6 +69,17 @@ impl<'a> Sim<'a> {
         self.entities.iter().position(|e| e.name == name)
     }
 
+    /// The entity a reference of action `slot` names: the ghost where the action was handed
+    /// over to it and names the ghost's entity (ScenarioEngine::SetupGhost's ReplaceObjectRefs:
+    /// a relative lane, lane offset or speed target, a speed profile's entity).
+    pub(crate) fn action_ref_index(&self, slot: usize, name: &str) -> Option<usize> {
+        let i = self.entity_index(name)?;
+        match self.actions.get(slot).and_then(|a| a.ghost_refs) {
+            Some((owner, ghost)) if owner == i => Some(ghost),
+            _ => Some(i),
+        }
+    }
+
     /// Record a state change of node `id` (event log + condition log).
     pub(crate) fn set_state(&mut self, id: usize, transition: Transition, to: State) {
         let Some(n) = self.nodes.get_mut(id) else { return };

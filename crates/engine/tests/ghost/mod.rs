@@ -9,6 +9,7 @@ mod follow;
 mod head_start_holds_others;
 mod init_trajectory_position;
 mod lateral_only;
+mod relative_lane_reference;
 mod restart;
 mod shares_trailer_hitch;
 mod steps_while_away;
