@@ -80,6 +80,27 @@ impl<'a> Sim<'a> {
         }
     }
 
+    /// `pos` as action `slot` reads it: where the action was handed over to a ghost and the
+    /// position is relative to the ghost's entity, relative to the ghost (TeleportAction::
+    /// ReplaceObjectRefs, Position::ReplaceObjectRefs); `None` where it reads `pos` as it is.
+    pub(crate) fn action_ref_position(&self, slot: usize, pos: &openscenario::Position) -> Option<openscenario::Position> {
+        let (owner, ghost) = self.actions.get(slot)?.ghost_refs?;
+        let owner_name = &self.entities.get(owner)?.name;
+        let ghost_name = &self.entities.get(ghost)?.name;
+        if pos.reference_entity() != Some(owner_name.as_str()) {
+            return None;
+        }
+        let mut out = pos.clone();
+        if let openscenario::Position::RelativeWorld { entity, .. }
+        | openscenario::Position::RelativeObject { entity, .. }
+        | openscenario::Position::RelativeRoad { entity, .. }
+        | openscenario::Position::RelativeLane { entity, .. } = &mut out
+        {
+            entity.clone_from(ghost_name);
+        }
+        Some(out)
+    }
+
     /// Record a state change of node `id` (event log + condition log).
     pub(crate) fn set_state(&mut self, id: usize, transition: Transition, to: State) {
         let Some(n) = self.nodes.get_mut(id) else { return };

@@ -1,6 +1,7 @@
 //! The ghost of FollowGhost/FollowReference controllers: its head start, trajectories, restarts.
 
 mod absolute_trajectory;
+mod acquire_position;
 mod act_of_other_entity;
 mod added_teleport_from_nowhere;
 mod back_on_road;
@@ -13,4 +14,5 @@ mod relative_lane_reference;
 mod restart;
 mod shares_trailer_hitch;
 mod steps_while_away;
+mod teleport_relative_to_entity;
 mod trail_end_lookahead;
