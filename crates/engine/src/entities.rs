@@ -295,6 +295,10 @@ impl Entity {
                     net.roads.get(lp.road).and_then(|r| crate::roads::lane_snap::snap(r, lp.section, lp.s, lp.t, sidewalks)).unwrap_or((lp.lane_id, lp.offset));
                 let l = LanePos { road: lp.road, lane_id, s: lp.s, offset, dir };
                 self.lane = Some(l);
+                // A position set from world coordinates (Position::XYZ2TrackPos) has a road
+                // again: an entity left nowhere (`place_nowhere`) that an action put back on
+                // the map (e.g. a ghost's trajectory) drives on from there.
+                self.roadless = false;
                 self.on_road = lp.is_on_road() && net.roads.get(lp.road).is_some_and(|r| !crate::roads::offroad::is_off_road(r, lp.s, lp.t));
                 // The heading relative to the lane leaves out the lane's drift (esmini's
                 // EvaluateHPR: h_relative = h − h_road − h_offset), which moving adds back.

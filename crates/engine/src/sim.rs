@@ -69,6 +69,38 @@ impl<'a> Sim<'a> {
         self.entities.iter().position(|e| e.name == name)
     }
 
+    /// The entity a reference of action `slot` names: the ghost where the action was handed
+    /// over to it and names the ghost's entity (ScenarioEngine::SetupGhost's ReplaceObjectRefs:
+    /// a relative lane, lane offset or speed target, a speed profile's entity).
+    pub(crate) fn action_ref_index(&self, slot: usize, name: &str) -> Option<usize> {
+        let i = self.entity_index(name)?;
+        match self.actions.get(slot).and_then(|a| a.ghost_refs) {
+            Some((owner, ghost)) if owner == i => Some(ghost),
+            _ => Some(i),
+        }
+    }
+
+    /// `pos` as action `slot` reads it: where the action was handed over to a ghost and the
+    /// position is relative to the ghost's entity, relative to the ghost (TeleportAction::
+    /// ReplaceObjectRefs, Position::ReplaceObjectRefs); `None` where it reads `pos` as it is.
+    pub(crate) fn action_ref_position(&self, slot: usize, pos: &openscenario::Position) -> Option<openscenario::Position> {
+        let (owner, ghost) = self.actions.get(slot)?.ghost_refs?;
+        let owner_name = &self.entities.get(owner)?.name;
+        let ghost_name = &self.entities.get(ghost)?.name;
+        if pos.reference_entity() != Some(owner_name.as_str()) {
+            return None;
+        }
+        let mut out = pos.clone();
+        if let openscenario::Position::RelativeWorld { entity, .. }
+        | openscenario::Position::RelativeObject { entity, .. }
+        | openscenario::Position::RelativeRoad { entity, .. }
+        | openscenario::Position::RelativeLane { entity, .. } = &mut out
+        {
+            entity.clone_from(ghost_name);
+        }
+        Some(out)
+    }
+
     /// Record a state change of node `id` (event log + condition log).
     pub(crate) fn set_state(&mut self, id: usize, transition: Transition, to: State) {
         let Some(n) = self.nodes.get_mut(id) else { return };

@@ -99,7 +99,7 @@ impl<'a> Sim<'a> {
         let target_lane = match target {
             LaneChangeTarget::Absolute { lane_id } => *lane_id,
             LaneChangeTarget::Relative { entity, value } => {
-                let Some(r) = self.entity_index(entity).and_then(|i| self.entities[i].lane) else {
+                let Some(r) = self.action_ref_index(slot, entity).and_then(|i| self.entities[i].lane) else {
                     self.warn_action(slot, format!("LaneChangeAction: reference entity `{entity}` unknown or off the road"));
                     return ActionRt::Done;
                 };

@@ -25,7 +25,7 @@ impl<'a> Sim<'a> {
         let target_offset = match target {
             LaneOffsetTarget::Absolute { value } => *value,
             LaneOffsetTarget::Relative { entity, value } => {
-                let Some(r) = self.entity_index(entity).and_then(|i| self.entities[i].lane) else {
+                let Some(r) = self.action_ref_index(slot, entity).and_then(|i| self.entities[i].lane) else {
                     self.warn_action(slot, format!("LaneOffsetAction: reference entity `{entity}` unknown or off the road"));
                     return ActionRt::Done;
                 };

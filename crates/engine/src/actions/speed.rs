@@ -36,7 +36,7 @@ impl<'a> Sim<'a> {
         }
         let target = match target {
             SpeedTarget::Absolute { value } => Target::Absolute(*value),
-            SpeedTarget::Relative { entity, value, value_type, continuous } => match self.entity_index(entity) {
+            SpeedTarget::Relative { entity, value, value_type, continuous } => match self.action_ref_index(slot, entity) {
                 Some(i) => Target::Relative { entity: i, value: *value, factor: *value_type == SpeedTargetValueType::Factor, continuous: *continuous },
                 None => {
                     self.warn_action(slot, format!("SpeedAction: unknown reference entity `{entity}`"));

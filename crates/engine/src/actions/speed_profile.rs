@@ -80,7 +80,7 @@ impl<'a> Sim<'a> {
             return ActionRt::Done;
         }
         let offset = match entity {
-            Some(name) => match self.entity_index(name) {
+            Some(name) => match self.action_ref_index(slot, name) {
                 Some(i) => self.entities[i].speed,
                 None => {
                     self.warn_action(slot, format!("SpeedProfileAction: unknown reference entity `{name}`"));

@@ -50,11 +50,14 @@ pub(crate) struct ActionSlot<'a> {
     /// An Init action copied for a ghost (`ghost/`): esmini copied its position with
     /// Position::Duplicate, which leaves a trajectory out.
     pub ghost_copy: bool,
+    /// A story action handed over to a ghost (`ghost/`): its references to the entity name
+    /// the ghost (entity, ghost), as esmini's OSCPrivateAction::ReplaceObjectRefs does.
+    pub ghost_refs: Option<(usize, usize)>,
 }
 
 impl<'a> ActionSlot<'a> {
     pub(crate) fn new(node: usize, model: &'a Action, actors: Vec<usize>) -> Self {
-        ActionSlot { node, model, actors, instances: Vec::new(), running: false, warned: false, ghost_copy: false }
+        ActionSlot { node, model, actors, instances: Vec::new(), running: false, warned: false, ghost_copy: false, ghost_refs: None }
     }
 
     /// Control domains the action takes over.

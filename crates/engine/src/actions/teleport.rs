@@ -22,7 +22,11 @@ impl<'a> Sim<'a> {
             self.warn_action(slot, "TeleportAction: ignored, as esmini does, while the trailer is towed (its tow vehicle places it)".into());
             return false;
         }
-        self.put_at(slot, e, pos, "TeleportAction")
+        // A teleport handed over to a ghost relative to its entity is relative to the ghost.
+        match self.action_ref_position(slot, pos) {
+            Some(pos) => self.put_at(slot, e, &pos, "TeleportAction"),
+            None => self.put_at(slot, e, pos, "TeleportAction"),
+        }
     }
 
     /// Put entity `e` at `pos` (esmini's Position::TeleportTo), whatever drives it: the

@@ -320,7 +320,10 @@ impl<'a> Sim<'a> {
                 }
                 ControllerRt::NaturalDriver(a) => {
                     // Decides and moves after the default controller (`step_controllers_in_order`).
-                    if a.active && self.entities.get(e).is_some_and(|en| en.active) {
+                    // Its lane change is an injected action, which ScenarioEngine::step steps
+                    // whether or not the entity exists: it runs on while the entity is deleted.
+                    let present = self.entities.get(e).is_some_and(|en| en.active);
+                    if a.active && (present || a.changes_lane()) {
                         self.step_natural_driver_action(e, a, dt);
                     }
                 }

@@ -33,7 +33,7 @@ use super::state::ControllerRt;
 use crate::actions::lane_change::state::LaneChangeRt;
 use crate::dynamics::{sign, Transition};
 use crate::roads::lane_geometry::lane_center_t;
-use crate::roads::{move_along_route, LanePos, MoveStatus};
+use crate::roads::{move_along_route_drawing, LanePos, MoveStatus};
 use crate::sim::Sim;
 use crate::trace::StoryboardEvent;
 use openscenario::{Controller, DynamicsDimension, DynamicsShape};
@@ -281,10 +281,14 @@ impl<'a> Sim<'a> {
     /// Move along the lane by speed·dt (straight on without a road), showing `yaw` off the lane.
     fn nd_move(&mut self, e: usize, speed: f64, dt: f64, yaw: f64) {
         let net = self.net;
+        let random = &mut self.random;
         let Some(en) = self.entities.get_mut(e) else { return };
         match (net, en.lane) {
             (Some(net), Some(mut lp)) => {
-                let status = move_along_route(net, &mut lp, speed * dt, en.route.as_deref());
+                // Object::MoveAlongS, the default controller's own move: a junction tie is
+                // broken by a draw from esmini's generator.
+                let pedestrian = en.kind == crate::entities::EntityKind::Pedestrian;
+                let status = move_along_route_drawing(net, &mut lp, speed * dt, en.route.as_deref(), random, pedestrian);
                 en.yaw_offset = yaw;
                 en.set_lane_pos(net, lp);
                 en.at_road_end = status == MoveStatus::EndOfRoad;

@@ -4,8 +4,10 @@
 //!
 //! At setup (first such entity only, as esmini): the ghost gets copies of the entity's Init
 //! actions (all but ActivateController, run after the others); the story's speed, speed
-//! profile, lane change, lane offset, synchronize, trajectory, route and teleport actions on
-//! the entity move to the ghost; in every act's start trigger, and in the start trigger of
+//! profile, lane change, lane offset, synchronize, trajectory, route, teleport and acquire
+//! position actions on the entity move to the ghost, and their relative lane, lane offset and
+//! speed targets and speed profile entity naming the entity name the ghost instead
+//! (ReplaceObjectRefs); in every act's start trigger, and in the start trigger of
 //! each event that now moves the ghost, SimulationTime conditions fire `headstart` seconds
 //! earlier and the entity's collision / reach-position / traveled-distance / speed /
 //! acceleration / end-of-road / off-road / stand-still conditions watch the ghost instead.
@@ -42,6 +44,7 @@ fn moves_to_ghost(p: &PrivateAction) -> bool {
             | PrivateAction::FollowTrajectory { .. }
             | PrivateAction::AssignRoute(_)
             | PrivateAction::Teleport(_)
+            | PrivateAction::AcquirePosition(_)
     )
 }
 
@@ -116,6 +119,7 @@ impl<'a> Sim<'a> {
                     *actor = ghost;
                 }
             }
+            a.ghost_refs = Some((owner, ghost));
             if let Some(ev) = self.nodes[a.node].parent.filter(|&p| self.nodes[p].kind == Kind::Event) {
                 if !events.contains(&ev) {
                     events.push(ev);

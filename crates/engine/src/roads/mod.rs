@@ -21,4 +21,4 @@ pub(crate) mod track_pos;
 pub(crate) mod zero_width;
 
 pub(crate) use lane_position::LanePos;
-pub(crate) use road_follow::{move_along_road_s, move_along_route, move_along_route_drawing, move_along_s, move_along_s_drawn, MoveStatus};
+pub(crate) use road_follow::{move_along_road_s, move_along_route_drawing, move_along_s, move_along_s_drawn, MoveStatus};

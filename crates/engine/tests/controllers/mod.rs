@@ -19,6 +19,8 @@ mod holds_lateral;
 mod looming;
 mod natural_driver;
 mod natural_driver_additive;
+mod natural_driver_junction_draw;
+mod natural_driver_lane_change_while_deleted;
 mod natural_driver_lanes_beside;
 mod natural_driver_leader_across_junction;
 mod natural_driver_standing_start;

@@ -50,3 +50,10 @@ pub(crate) struct NaturalDriverRt {
     /// Yaw off the lane the lane change gave the entity this frame (kept by the driver's move).
     pub(super) action_yaw: f64,
 }
+
+impl NaturalDriverRt {
+    /// Whether its injected lane change is started or running.
+    pub(crate) fn changes_lane(&self) -> bool {
+        self.pending.is_some() || self.lane_change.is_some()
+    }
+}
