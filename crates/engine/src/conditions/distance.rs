@@ -4,7 +4,7 @@
 //! (freespace). Longitudinal and lateral results are signed: positive ahead / to the left.
 
 use super::boxes::{box_distance, corners, interval_gap};
-use super::free_space::{free_space_point_road, free_space_road};
+use super::free_space::{free_space_point_road, free_space_point_roads, free_space_road, free_space_roads};
 use crate::controllers::natural_driver::view::LARGE_NUMBER;
 use crate::entities::Entity;
 use crate::roads::lane_geometry::lane_center_t;
@@ -48,16 +48,22 @@ pub(crate) fn between(net: Option<&RoadNetwork>, a: &Entity, b: &Entity, cs: Coo
     if matches!(cs, CoordinateSystem::Road | CoordinateSystem::Lane) && kind != RelativeDistanceType::EuclidianDistance {
         if let (Some(net), Some(ra), Some(rb)) = (net, net.and_then(|n| road_t(n, a)), net.and_then(|n| road_t(n, b))) {
             let _ = net;
+            // esmini's Object::Distance with freeSpace in road coordinates:
+            // FreeSpaceDistanceObjectRoadLane, corner by corner (dt as t grows, whichever way
+            // `a` faces), each corner located from `a`'s position and a pair on different roads
+            // measured along the road path between them; where no path joins a pair it fails
+            // and the conditions read LARGE_NUMBER. A point (to_point: no box) is
+            // FreeSpaceDistancePointRoadLane's, not this.
+            if freespace && b.bbox[3] > 0.0 {
+                let same = if ra.0 == rb.0 { free_space_road(net, a, b, ra.0, ra.3) } else { None };
+                let gap = same.or_else(|| free_space_roads(net, a, b, ra.0));
+                return match gap {
+                    Some(g) if kind == RelativeDistanceType::Longitudinal => g.ds,
+                    Some(g) => g.dt,
+                    None => LARGE_NUMBER,
+                };
+            }
             if ra.0 == rb.0 {
-                // esmini's Object::Distance with freeSpace in road coordinates:
-                // FreeSpaceDistanceObjectRoadLane, corner by corner (dt as t grows, whichever
-                // way `a` faces); where a corner lies off the road the boxes are turned rigidly.
-                // A point (to_point: no box) is FreeSpaceDistancePointRoadLane's, not this.
-                if freespace && b.bbox[3] > 0.0 {
-                    if let Some(gap) = free_space_road(net, a, b, ra.0, ra.3) {
-                        return if kind == RelativeDistanceType::Longitudinal { gap.ds } else { gap.dt };
-                    }
-                }
                 // Position::Delta on one road: ds along the way `a` faces (RoadPath::Calculate),
                 // dt = tB − tA whichever way (a target right of the reference line is negative)
                 let ds = (rb.1 - ra.1) * ra.3;
@@ -254,10 +260,14 @@ pub(crate) fn to_point(net: Option<&RoadNetwork>, a: &Entity, x: f64, y: f64, cs
             let hint = a.lane.map(|l| (l.road, l.s));
             if let Some(lp) = crate::roads::locate::world_to_lane_memo(n, x, y, hint) {
                 p.lane = Some(crate::roads::LanePos { road: lp.road, lane_id: lp.lane_id, s: lp.s, offset: lp.offset, dir: 1.0 });
-                // a box to a point on its own road: its corners, not its extents
+                // a box to a point: its corners, not its extents (FreeSpaceDistancePointRoadLane),
+                // each corner's Position::Delta to the point, along the road path where they
+                // lie on different roads; not measured (Object::Distance fails: the conditions
+                // read LARGE_NUMBER) where no path joins them
                 if freespace && kind != RelativeDistanceType::EuclidianDistance {
-                    let own = a.lane.filter(|la| la.road == lp.road);
-                    if let Some((ds, dt)) = own.and_then(|la| free_space_point_road(n, a, lp.s, lp.t, lp.road, la.dir)) {
+                    if let Some(la) = a.lane {
+                        let gap = if la.road == lp.road { free_space_point_road(n, a, lp.s, lp.t, lp.road, la.dir) } else { None };
+                        let (ds, dt) = gap.or_else(|| free_space_point_roads(n, a, &lp, la.road)).unwrap_or((LARGE_NUMBER, LARGE_NUMBER));
                         return if kind == RelativeDistanceType::Longitudinal { ds } else { dt };
                     }
                 }

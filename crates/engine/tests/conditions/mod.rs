@@ -10,6 +10,7 @@ mod directed_speed;
 mod distance_unlinked_roads;
 mod duration_held_for_next_entity;
 mod end_of_road_acc;
+mod freespace_across_roads;
 mod freespace_distance_sign;
 mod freespace_point_corners;
 mod freespace_towing_chains;
