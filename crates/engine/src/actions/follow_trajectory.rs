@@ -110,10 +110,17 @@ fn polyline_s_at_time(v: &[(f64, f64, f64, f64)], length: f64, t: f64) -> f64 {
 }
 
 /// Build a trajectory's path from the current state of the run.
-pub(crate) fn build_path(sim: &Sim, traj: &Trajectory, current: Pose) -> Result<Path, String> {
+pub(crate) fn build_path(sim: &Sim, slot: usize, traj: &Trajectory, current: Pose) -> Result<Path, String> {
     let net = sim.net;
     let entities = &sim.entities;
-    let resolver = |p: &openscenario::Position| crate::trajectory_position::vertex_pose(p, net, entities);
+    // A trajectory handed over to a ghost reads a polyline's vertices and a clothoid's start
+    // relative to the ghost where they are relative to its entity (FollowTrajectoryAction::
+    // ReplaceObjectRefs covers only these two shapes).
+    let handed_over = matches!(traj.shape, openscenario::Shape::Polyline(_) | openscenario::Shape::Clothoid { .. });
+    let resolver = |p: &openscenario::Position| match sim.action_ref_position(slot, p).filter(|_| handed_over) {
+        Some(q) => crate::trajectory_position::vertex_pose(&q, net, entities),
+        None => crate::trajectory_position::vertex_pose(p, net, entities),
+    };
     Path::from_trajectory(traj, current, &resolver).map_err(|e| e.to_string())
 }
 
@@ -139,7 +146,7 @@ impl<'a> Sim<'a> {
         let Some(en) = self.entities.get(e) else { return ActionRt::Done };
         let current = Pose::new(en.x, en.y, en.z, en.h);
         let entity_speed = en.speed;
-        let path = match build_path(self, traj, current) {
+        let path = match build_path(self, slot, traj, current) {
             // esmini's FollowTrajectoryAction::Start: a polyline's heading turns over whole
             // segments in the `follow` mode, across corners only in the `position` mode.
             Ok(mut p) => {

@@ -16,3 +16,4 @@ mod shares_trailer_hitch;
 mod steps_while_away;
 mod teleport_relative_to_entity;
 mod trail_end_lookahead;
+mod trajectory_relative_to_entity;
