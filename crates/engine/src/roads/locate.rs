@@ -50,9 +50,6 @@ pub(crate) fn world_to_lane_from(net: &RoadNetwork, x: f64, y: f64, hint: Option
                 return Some(unshifted(net, held, x, y));
             }
         }
-        if let Some(p) = first_containing(net, road, lane_id, x, y) {
-            return Some(unshifted(net, p, x, y));
-        }
     }
     let found = net.world_to_lane_by(x, y, hint.map(|h| h.0), &surface_t);
     match (hint, found) {
@@ -94,24 +91,6 @@ fn held_on_current(net: &RoadNetwork, p: LanePosition, lane_id: i32, x: f64, y: 
         }
     }
     Some(best.0)
-}
-
-/// XYZ2TrackPos away from the current road `road` (the point not held by it): among the roads
-/// whose lanes contain the point, all at distance 0, the first in the network's order, unless
-/// a later one is directly connected to the current road from lane `lane_id`
-/// (Road::IsDirectlyConnected: an equally near candidate replaces the best only then). `None`
-/// when no road contains the point.
-fn first_containing(net: &RoadNetwork, road: usize, lane_id: i32, x: f64, y: f64) -> Option<LanePosition> {
-    let containing = net.lanes_containing(x, y);
-    let connected = super::junction_entry::directly_connected(net, road, lane_id);
-    let mut best: Option<(LanePosition, bool)> = None;
-    for p in containing {
-        let linked = connected.contains(&p.road);
-        if best.is_none() || linked {
-            best = Some((p, linked));
-        }
-    }
-    best.map(|b| b.0)
 }
 
 /// On a straight piece of a road both rolled and sloped: the s XYZ2TrackPos gives (x, y), that

@@ -263,30 +263,3 @@ fn over_a_ridge_the_looming_car_looks_along_osi_points_cut_at_the_slope_break() 
     ];
     crate::common::assert_esmini_poses(&r, &rows, 1e-3, 1e-4);
 }
-
-#[test]
-fn a_looming_car_off_its_connecting_road_goes_to_the_first_road_containing_it() {
-    // looming_off_a_connecting_road.xosc on crossing.xodr: as in
-    // looming_beside_connecting_road.xosc, but the lane offset action drifts the car more than
-    // 2 m left of the straight connecting road 106, where three connecting roads overlap. Off
-    // the current road's hold, esmini's XYZ2TrackPos takes, among the roads containing the
-    // point (all at distance 0), the first in the file's order (an equally near road replaces
-    // it only when directly connected to the current road), and the car's lane is locked
-    // there; the looming steering then follows that road. (time, x, y, h, lane, offset) from
-    // esmini 3.6.0's trace.
-    let r = crate::common::run_fixture("looming_off_a_connecting_road.xosc", "crossing.xodr");
-    let rows = [
-        (3.6, -10.655306, 0.588483, 0.376633, -1, 2.338483),
-        (3.8, -7.506002, 2.230244, 0.52826, -1, -0.480244),
-        (3.9, -6.002357, 3.178032, 0.56242, -1, -1.428032),
-        (4.5, 3.702808, 7.419234, 0.208554, -1, -5.669234),
-        (5.0, 12.429407, 6.597628, 5.934065, -1, -4.847628),
-        (6.0, 20.750773, -7.825145, 4.730413, 1, -9.575145),
-        (6.25, 20.876203, -12.266396, 4.781939, 1, -14.016396),
-    ];
-    for (t, x, y, h, lane, offset) in rows {
-        crate::common::assert_esmini_poses(&r, &[("Ego", t, x, y, h)], 1e-3, 1e-4);
-        let road = at(&r, "Ego", t).road.expect("on the road");
-        assert!(road.lane_id == lane && close(road.lane_offset, offset, 1e-3), "at {t} s: {road:?}, esmini lane {lane} offset {offset}");
-    }
-}
