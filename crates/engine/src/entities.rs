@@ -252,9 +252,9 @@ impl Entity {
     /// position of its own, which snaps to driving lanes only, whatever the entity (esmini's
     /// TeleportAction: Position::CopyLocation).
     pub(crate) fn set_world_snapping(&mut self, net: Option<&RoadNetwork>, x: f64, y: f64, z: Option<f64>, h: f64, sidewalks: bool) {
-        // The teleport's position was made afresh (relative heading 0 for GetPOffset).
-        let current = self.lane;
-        self.place_world(net, x, y, z, h, sidewalks, 0.0, current);
+        // The teleport's position was made afresh (relative heading 0 for GetPOffset; no
+        // current road for XYZ2TrackPos to hold).
+        self.place_world(net, x, y, z, h, sidewalks, 0.0, None);
     }
 
     /// Place the entity at a world pose facing `h` (esmini's Position::SetInertiaPosMode with
