@@ -299,7 +299,10 @@ impl Entity {
                 // again: an entity left nowhere (`place_nowhere`) that an action put back on
                 // the map (e.g. a ghost's trajectory) drives on from there.
                 self.roadless = false;
-                self.on_road = lp.is_on_road() && net.roads.get(lp.road).is_some_and(|r| !crate::roads::offroad::is_off_road(r, lp.s, lp.t));
+                // esmini's Position::IsOffRoad looks across the road only: a point past the
+                // road's end (XYZ2TrackPos: s at the end, t across the heading there) within
+                // the road's width is on the road
+                self.on_road = net.roads.get(lp.road).is_some_and(|r| !crate::roads::offroad::is_off_road(r, lp.s, lp.t));
                 // The heading relative to the lane leaves out the lane's drift (esmini's
                 // EvaluateHPR: h_relative = h − h_road − h_offset), which moving adds back.
                 let drift = self.drift(net, &l);

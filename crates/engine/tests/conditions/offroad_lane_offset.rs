@@ -11,3 +11,17 @@ fn off_road_is_measured_from_the_centre_lane_and_noted_after_the_first_step() {
     let t = event_time(&run, "Off", "start").expect("went off road");
     assert!((0.505..=0.515).contains(&t), "{t}");
 }
+
+#[test]
+fn past_the_road_end_only_the_road_width_counts() {
+    // offroad_past_road_end.xosc on straight.xodr: teleported 5 m before the road's start and
+    // 3 m right of the reference line (within the right lanes' 7 m), the entity is on the road
+    // for esmini 3.6.0 (Position::IsOffRoad compares t with the width only): BeforeOff never
+    // starts. The same scenario with the entity 9 m right starts it at 0.62 s in esmini.
+    let run = run_straight_fixture("offroad_past_road_end.xosc", 1.0);
+    assert!(event_time(&run, "BeforeMove", "start").is_some_and(|t| close(t, 0.11, 1e-9)));
+    assert_eq!(event_time(&run, "BeforeOff", "start"), None);
+    let text = std::fs::read_to_string(fixtures().join("offroad_past_road_end.xosc")).expect("fixture reads");
+    let aside = run_on(&text.replace(r#"y="-3""#, r#"y="-9""#), "straight.xodr", &engine::Settings { step: 0.01, max_time: 1.0 });
+    assert!(event_time(&aside, "BeforeOff", "start").is_some_and(|t| close(t, 0.62, 1e-9)));
+}
