@@ -8,9 +8,9 @@
 //! pitch, corner-blended).
 
 use crate::actions::state::ActionRt;
+use crate::angles::wrap;
 use crate::entities::Entity;
 use crate::roads::banking::roll_at;
-use crate::roads::road_follow::wrap;
 use crate::roads::LanePos;
 use crate::sim::Sim;
 use opendrive::{Road, RoadNetwork};
@@ -64,7 +64,7 @@ pub(crate) fn compose(road: [f64; 3], rel: [f64; 3]) -> [f64; 3] {
     }
     m[0][0] = crate::entities::gimbal_guard(m[0][0]);
     m[2][2] = crate::entities::gimbal_guard(m[2][2]);
-    let h = crate::entities::wrap_2pi(m[1][0].atan2(m[0][0]));
+    let h = crate::angles::wrap_2pi(m[1][0].atan2(m[0][0]));
     let p = (-m[2][0]).atan2((m[2][1] * m[2][1] + m[2][2] * m[2][2]).sqrt());
     let r = m[2][1].atan2(m[2][2]);
     [h, p, r]

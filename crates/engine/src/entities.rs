@@ -1,8 +1,9 @@
 //! The engine's entities: each scenario entity's dimensions and performance, and its state
 //! (pose, speed, attachment to the road network, timers for the state conditions).
 
+use crate::angles::wrap;
+use crate::angles::wrap_2pi;
 use crate::roads::lane_position::LanePos;
-use crate::roads::road_follow::wrap;
 use opendrive::RoadNetwork;
 use openscenario::{EntityObject, Scenario};
 
@@ -353,17 +354,6 @@ fn inside_real_lane(net: &RoadNetwork, lp: &LanePos, p: &crate::roads::lane_posi
     }
     let Some(sec) = road.section_at(lp.s) else { return false };
     lp.lane_id == 0 || sec.left.iter().chain(&sec.right).any(|l| l.id == lp.lane_id && l.kind != opendrive::LaneType::None)
-}
-
-/// Angle in [0, 2π) as esmini reports headings.
-pub(crate) fn wrap_2pi(a: f64) -> f64 {
-    let two_pi = 2.0 * std::f64::consts::PI;
-    let x = a % two_pi;
-    if x < 0.0 {
-        x + two_pi
-    } else {
-        x
-    }
 }
 
 /// R0R12EulerAngles' guard against gimbal lock: a cosine of magnitude below SMALL_NUMBER

@@ -22,6 +22,7 @@
 #![cfg_attr(not(test), deny(clippy::print_stdout, clippy::print_stderr))]
 
 mod actions;
+mod angles;
 mod attitude;
 mod conditions;
 mod controllers;

@@ -3,9 +3,9 @@
 //! ahead when there is no road); then speed-derived quantities, odometer and the timers of the
 //! stand-still, off-road and end-of-road conditions are updated.
 
+use crate::angles::wrap;
 use crate::dynamics::{ESMINI_SMALL_NUMBER, SMALL};
 use crate::ghost::state::GhostMode;
-use crate::roads::road_follow::wrap;
 use crate::roads::{move_along_route_drawing, MoveStatus};
 use crate::sim::Sim;
 

@@ -4,10 +4,10 @@
 //! lane's driving direction; a relative orientation turns from there (a RoadPosition's from the
 //! road's reference direction, on either side); an absolute one is the world heading. Relative object/world positions take the reference entity's heading.
 
+use crate::angles::wrap;
 use crate::entities::Entity;
 use crate::roads::lane_geometry::lane_borders;
 use crate::roads::lane_position::LanePos;
-use crate::roads::road_follow::wrap;
 use opendrive::{drives_along_s, RoadNetwork};
 use openscenario::{Orientation, Position, ReferenceContext};
 use std::f64::consts::PI;

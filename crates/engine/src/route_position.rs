@@ -31,7 +31,7 @@ pub(crate) fn waypoint_of(pos: &openscenario::Position, p: &Placement, net: &Roa
     let at = crate::roads::locate::world_to_lane(net, p.x, p.y, None)?;
     let road = net.roads.get(at.road)?;
     let lane = crate::roads::lane_snap::snap(road, at.section, at.s, at.t, false).map_or(at.lane_id, |(id, _)| id);
-    let along_s = trajectory::gives_heading(pos).then(|| crate::roads::road_follow::wrap(p.h - at.heading).abs() <= std::f64::consts::FRAC_PI_2 + 1e-9);
+    let along_s = trajectory::gives_heading(pos).then(|| crate::angles::wrap(p.h - at.heading).abs() <= std::f64::consts::FRAC_PI_2 + 1e-9);
     Some(Waypoint { road: at.road, lane, s: at.s, along_s })
 }
 

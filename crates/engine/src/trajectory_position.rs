@@ -45,7 +45,7 @@ pub(crate) fn vertex_pose(pos: &openscenario::Position, net: Option<&RoadNetwork
                 let h = h.map_or_else(|| lp.heading + crate::positions::lane_drift(net, lp.road, lp.lane_id, lp.s), |_| p.h);
                 let past_end = crate::roads::past_end::past_road_end(net, lp.road, lp.s, p.x, p.y);
                 let road = net.roads.get(lp.road).filter(|_| !past_end);
-                let tilted = road.and_then(|r| crate::attitude::on_road(r, lp.s, lp.t, crate::roads::road_follow::wrap(h - lp.heading), 0.0));
+                let tilted = road.and_then(|r| crate::attitude::on_road(r, lp.s, lp.t, crate::angles::wrap(h - lp.heading), 0.0));
                 tilted.map_or(h, |o| o[0])
             }
             None => p.h,

@@ -11,8 +11,8 @@ pub(crate) mod state;
 use state::FollowTrajectoryRt;
 
 use super::state::ActionRt;
+use crate::angles::wrap;
 use crate::dynamics::SMALL;
-use crate::roads::road_follow::wrap;
 use crate::sim::Sim;
 use openscenario::{FollowingMode, ReferenceContext, TimeReference, Trajectory};
 use trajectory::{Interpolation, Path, Pose, TimeDomain, TimeMapping};

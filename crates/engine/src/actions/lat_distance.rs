@@ -22,11 +22,11 @@ use entity_frame::{entity_frame_step, Pose};
 use state::{Frame, LatDistanceRt, Phase};
 
 use super::state::ActionRt;
+use crate::angles::wrap;
 use crate::dynamics::ESMINI_SMALL_NUMBER as ESMINI_SMALL;
 use crate::roads::lane_geometry::lane_center_t;
 use crate::roads::lane_snap;
 use crate::roads::move_along_route_drawing;
-use crate::roads::road_follow::wrap;
 use crate::roads::road_path::path_ends;
 use crate::sim::Sim;
 use opendrive::ContactPoint;

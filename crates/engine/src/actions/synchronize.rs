@@ -19,8 +19,8 @@ pub(crate) mod state;
 use state::{Final, Mode, Submode, SynchronizeRt};
 
 use super::state::ActionRt;
-use crate::controllers::looming::view::angle_difference;
-use crate::entities::wrap_2pi;
+use crate::angles::angle_difference;
+use crate::angles::wrap_2pi;
 use crate::positions::{resolve, Placement};
 use crate::roads::road_path::path_ends;
 use crate::sim::Sim;

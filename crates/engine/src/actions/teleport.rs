@@ -1,7 +1,7 @@
 //! TeleportAction: put the entity at a position (speed unchanged).
 
+use crate::angles::wrap;
 use crate::positions::resolve_with_route;
-use crate::roads::road_follow::wrap;
 use crate::sim::Sim;
 use openscenario::Position;
 
@@ -73,7 +73,7 @@ impl<'a> Sim<'a> {
                     en.yaw_offset = wrap(placement.h - lp.facing_heading(&pose) - crate::positions::lane_drift(net, lp.road, lp.lane_id, lp.s));
                 }
                 en.set_lane_pos(net, lp);
-                en.h = crate::entities::wrap_2pi(placement.h);
+                en.h = crate::angles::wrap_2pi(placement.h);
                 if let Some(h) = relative_heading_twice_composed(net, pos, &lp, en.yaw_offset) {
                     en.h = h;
                     if let Some(pose) = lp.pose(net) {

@@ -175,8 +175,8 @@ impl<'a> Sim<'a> {
                     (_, CoordinateSystem::Trajectory, _, _) => own,
                     _ => 0.0,
                 };
-                let current = crate::roads::road_follow::wrap(own - frame);
-                crate::roads::road_follow::wrap(current - angle).abs() < tolerance + SMALL
+                let current = crate::angles::wrap(own - frame);
+                crate::angles::wrap(current - angle).abs() < tolerance + SMALL
             }
             // evaluated in check_entity: its result depends on the entities checked before
             C::RelativeClearance { .. } => false,

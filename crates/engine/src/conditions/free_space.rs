@@ -174,7 +174,7 @@ fn corner_delta(net: &RoadNetwork, h: f64, backwards: bool, pa: &LanePosition, p
     let mut dist = path.length_to(pb.s, rb.length) * if ahead { 1.0 } else { -1.0 };
     // GetHRelativeDrivingDirection in (pi/2, 3pi/2) as an angle difference in [-pi, pi]
     let drive_h = opendrive::driving_direction::driving_heading(ra.rule, pa.lane_id, pa.heading);
-    if crate::controllers::looming::view::angle_difference(h, drive_h) > std::f64::consts::FRAC_PI_2 {
+    if crate::angles::angle_difference(h, drive_h) > std::f64::consts::FRAC_PI_2 {
         dist = -dist;
     }
     Some((dist, if path.lanes_flip { pb.t + pa.t } else { pb.t - pa.t }))

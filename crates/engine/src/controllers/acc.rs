@@ -112,7 +112,7 @@ impl<'a> Sim<'a> {
                 // reaches a lead on any junction branch; dLaneId 0 is "in my lane".
                 if let Some(d) = forward_delta(net, &la, me.h, &lb, lookahead) {
                     let (ds, same_lane, dt_lat) = (d.ds, d.d_lane == 0, d.dt);
-                    let dh = crate::roads::road_follow::wrap(me.h - p.h).abs();
+                    let dh = crate::angles::wrap(me.h - p.h).abs();
                     let front = me.bbox[3] / 2.0 + me.bbox[0];
                     let back = if dh < std::f64::consts::FRAC_PI_2 { p.bbox[3] / 2.0 - p.bbox[0] } else { p.bbox[3] / 2.0 + p.bbox[0] };
                     let gap = ds - front - back;

@@ -17,9 +17,9 @@ pub(crate) mod state;
 
 use state::{AlksR157Rt, Info, Mode, Model, Phase, Scen, Trigger};
 
+use crate::angles::wrap;
 use crate::entities::EntityKind;
 use crate::roads::move_along_route_drawing;
-use crate::roads::road_follow::wrap;
 use crate::roads::road_follow::{at_unlinked_road_end, MoveStatus};
 use crate::sim::Sim;
 use openscenario::{Controller, EntityObject, VehicleCategory};

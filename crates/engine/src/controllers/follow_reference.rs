@@ -13,7 +13,7 @@ pub(crate) mod state;
 use state::FollowReferenceRt;
 
 use super::kinematic_vehicle::KinematicVehicle;
-use super::looming::view::angle_pi;
+use crate::angles::angle_pi;
 use crate::entities::Entity;
 use crate::sim::Sim;
 use openscenario::{Controller, EntityObject};

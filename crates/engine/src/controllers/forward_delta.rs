@@ -9,8 +9,8 @@
 
 use super::lane_router::connected_lane_at_s;
 use super::lane_router::connecting_lane_id;
-use super::looming::view::angle_difference;
 use super::natural_driver::view::LARGE_NUMBER;
+use crate::angles::angle_difference;
 use crate::roads::lane_geometry::lane_center_t;
 use crate::roads::LanePos;
 use opendrive::{ContactPoint, ElementType, JunctionType, RoadNetwork};

@@ -5,9 +5,9 @@
 //! from that lateral position. So a lane change under a longitudinal-only controller makes the
 //! target lane the entity's lane at once, and the controller's vehicle then steers towards it.
 
+use crate::angles::wrap;
 use crate::entities::{Entity, EntityKind};
 use crate::roads::lane_geometry::lane_borders;
-use crate::roads::road_follow::wrap;
 use crate::roads::LanePos;
 use opendrive::{ContactPoint, Road, RoadNetwork};
 

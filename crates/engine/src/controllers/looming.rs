@@ -98,7 +98,7 @@ impl LoomingRt {
 /// GetAngleDifference: `esmini_euler_heading`).
 pub(crate) fn position_heading(net: Option<&opendrive::RoadNetwork>, en: &crate::entities::Entity) -> f64 {
     match net.zip(en.lane).and_then(|(net, lp)| lp.pose(net)) {
-        Some(p) => esmini_euler_heading(p.road_heading, view::angle_difference(en.h, p.road_heading)),
+        Some(p) => esmini_euler_heading(p.road_heading, crate::angles::angle_difference(en.h, p.road_heading)),
         None => esmini_reported_heading(en.h),
     }
 }
@@ -197,7 +197,7 @@ impl<'a> Sim<'a> {
             if ds.abs() > LOOKAHEAD {
                 continue;
             }
-            let dh = crate::roads::road_follow::wrap(me.h - p.h).abs();
+            let dh = crate::angles::wrap(me.h - p.h).abs();
             let front = me.bbox[3] / 2.0 + me.bbox[0];
             let back = if dh < std::f64::consts::FRAC_PI_2 { p.bbox[3] / 2.0 - p.bbox[0] } else { p.bbox[3] / 2.0 + p.bbox[0] };
             let gap = ds - front - back;
@@ -213,7 +213,7 @@ impl<'a> Sim<'a> {
                         break;
                     }
                     has_lead_far = true;
-                    far_angle = view::angle_pi((me.y - p.y).atan2(me.x - p.x) - h_me);
+                    far_angle = crate::angles::angle_pi((me.y - p.y).atan2(me.x - p.x) - h_me);
                 }
             }
         }

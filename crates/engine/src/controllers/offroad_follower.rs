@@ -18,8 +18,8 @@ use state::OffroadFollowerRt;
 
 use super::analog_vehicle::AnalogVehicle;
 use super::kinematic_vehicle::KinematicVehicle;
-use super::looming::view::angle_difference;
 use crate::actions::lat_distance::entity_frame::angle_of_vector;
+use crate::angles::angle_difference;
 use crate::entities::esmini_reported_heading;
 use crate::sim::Sim;
 use openscenario::Controller;

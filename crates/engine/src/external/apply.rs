@@ -260,7 +260,7 @@ fn place(en: &mut Entity, net: Option<&RoadNetwork>, (x, y, z, h): (f64, f64, Op
     // The outside's heading is kept as given: a scenario's WorldPosition on a sloped or banked
     // road is turned by the road's rotation (EvaluateHPR), but in closed loop the entity is
     // where and as the driver outside says (a replayed run gives its own states back).
-    en.h = crate::entities::wrap_2pi(h);
+    en.h = crate::angles::wrap_2pi(h);
     let found = match (net, en.lane) {
         (Some(net), Some(lp)) => at_dead_end(net, &lp),
         _ => false,

@@ -19,6 +19,7 @@
 
 use super::lane_geometry::lane_borders;
 use super::lane_position::LanePos;
+use crate::angles::wrap;
 use crate::esmini_random::EsminiRandom;
 use opendrive::{ContactPoint, ElementType, LaneRef, RoadNetwork};
 
@@ -457,14 +458,4 @@ fn follow_section_change(net: &RoadNetwork, pos: &mut LanePos, before: usize, no
     if let Some((lane_id, _)) = super::lane_snap::snap(road, now, pos.s, 0.5 * (old.0 + old.1), sidewalks) {
         pos.lane_id = lane_id;
     }
-}
-
-/// Angle wrapped to (-π, π].
-pub(crate) fn wrap(a: f64) -> f64 {
-    let two_pi = 2.0 * std::f64::consts::PI;
-    let mut x = (a + std::f64::consts::PI) % two_pi;
-    if x < 0.0 {
-        x += two_pi;
-    }
-    x - std::f64::consts::PI
 }

@@ -9,7 +9,7 @@
 //! 2 m, the z penalty can pick a segment far from the exact projection (a road going up and
 //! down again: the descending half), which this reproduces.
 
-use crate::controllers::looming::view::angle_difference;
+use crate::angles::angle_difference;
 use crate::dynamics::ESMINI_SMALL_NUMBER as SMALL_NUMBER;
 use opendrive::model::road::Road;
 use std::f64::consts::FRAC_PI_2;

@@ -9,9 +9,9 @@
 //! from the arc left). The road plays no part; the action never ends by itself (esmini calls no
 //! `End` there), and it moves the entity itself (the default controller leaves it alone).
 
-use crate::controllers::looming::view::angle_difference;
+use crate::angles::angle_difference;
+use crate::angles::wrap_2pi;
 use crate::dynamics::{abs_limit, ESMINI_SMALL_NUMBER as SMALL_NUMBER};
-use crate::entities::wrap_2pi;
 use std::f64::consts::PI;
 
 /// esmini clamps the acceleration the turn radius is derived from, m/s².

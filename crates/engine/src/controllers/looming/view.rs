@@ -6,6 +6,7 @@
 //! meet more than 5 cm off the chord, at most 50 m apart, closer where the elevation curves
 //! and cut where it breaks (`opendrive::road_osi_points`; superelevation is not modelled).
 
+use crate::angles::{angle_difference, angle_pi};
 use crate::roads::LanePos;
 use opendrive::{ContactPoint, ElementType, Road, RoadNetwork};
 use std::collections::HashMap;
@@ -56,22 +57,6 @@ pub(crate) fn at_last_osi_point(net: &RoadNetwork, lp: LanePos) -> LanePos {
     } else {
         lp
     }
-}
-
-pub(crate) fn angle_pi(a: f64) -> f64 {
-    // GetAngleInIntervalMinusPIPlusPI
-    let mut b = a % (2.0 * std::f64::consts::PI);
-    if b < -std::f64::consts::PI {
-        b += 2.0 * std::f64::consts::PI;
-    } else if b > std::f64::consts::PI {
-        b -= 2.0 * std::f64::consts::PI;
-    }
-    b
-}
-
-/// GetAngleDifference
-pub(crate) fn angle_difference(a: f64, b: f64) -> f64 {
-    angle_pi(a - b)
 }
 
 /// The far tangent point ControllerLooming::Step finds, if any: (x, y, its absolute angle seen

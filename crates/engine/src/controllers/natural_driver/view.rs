@@ -5,9 +5,9 @@
 //! predicts for any follower/leader pair.
 
 use super::state::NdParams;
+use crate::angles::wrap;
 use crate::entities::Entity;
 use crate::roads::road_distance::road_distance_within;
-use crate::roads::road_follow::wrap;
 use crate::roads::{move_along_s, LanePos};
 use crate::sim::Sim;
 use opendrive::{ContactPoint, RoadNetwork};
