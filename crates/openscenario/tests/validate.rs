@@ -121,7 +121,16 @@ fn deprecated_and_later_version_elements_are_warnings() {
     let text = scenario(0, "", &speed("1"), "").replace("<CatalogLocations/>", "<VariableDeclarations/><CatalogLocations/>");
     let f = check(&text);
     assert!(errors(&f).is_empty(), "{f:#?}");
-    assert!(f.iter().any(|w| w.message.contains("are OpenSCENARIO 1.2") || w.message.contains("are OpenSCENARIO 1.3")), "{f:#?}");
+    // the warning names the version the construct came with, not the newest that has it
+    assert!(f.iter().any(|w| w.message.contains("are OpenSCENARIO 1.2 (the file declares 1.0)")), "{f:#?}");
+
+    // SpeedCondition's direction came with 1.2 (1.3 has it too)
+    let by_speed = r#"<ByEntityCondition><TriggeringEntities triggeringEntitiesRule="any"><EntityRef entityRef="Ego"/></TriggeringEntities><EntityCondition><SpeedCondition value="1" rule="greaterThan" direction="longitudinal"/></EntityCondition></ByEntityCondition>"#;
+    let text =
+        scenario(1, "", &init, &story.replace(r#"<ByValueCondition><SimulationTimeCondition value="1" rule="greaterThan"/></ByValueCondition>"#, by_speed));
+    let f = check(&text);
+    assert!(errors(&f).is_empty(), "{f:#?}");
+    assert!(f.iter().any(|w| w.message.contains("attribute 'direction' of <SpeedCondition> is OpenSCENARIO 1.2 (the file declares 1.1)")), "{f:#?}");
 }
 
 #[test]

@@ -27,7 +27,12 @@ impl Gen<'_> {
         }
         self.feature(format!("{prefix}/dynamic-constraints"));
         let rates = if self.chance(0.3) {
-            format!(r#" maxAccelerationRate="{}" maxDecelerationRate="{}""#, self.num(1.0, 10.0), self.num(1.0, 10.0))
+            let rates = format!(r#" maxAccelerationRate="{}" maxDecelerationRate="{}""#, self.num(1.0, 10.0), self.num(1.0, 10.0));
+            if self.since(2) {
+                rates
+            } else {
+                String::new()
+            }
         } else {
             String::new()
         };
@@ -98,10 +103,17 @@ impl Gen<'_> {
         let continuous = self.chance(0.6);
         let cs = self.pick(&["entity", "road", "lane"]);
         let displacement = self.pick(&["trailingReferencedEntity", "leadingReferencedEntity", "any"]);
-        self.feature(format!("long-distance:{cs}/{displacement}/freespace={freespace}/continuous={continuous}"));
+        let (cs, displacement) = if self.since(1) {
+            self.feature(format!("long-distance:{cs}/{displacement}/freespace={freespace}/continuous={continuous}"));
+            (format!(r#" coordinateSystem="{cs}""#), format!(r#" displacement="{displacement}""#))
+        } else {
+            // 1.0 has neither: the entity system, and the distance's sign says the side
+            self.feature(format!("long-distance:1.0/freespace={freespace}/continuous={continuous}"));
+            (String::new(), String::new())
+        };
         let constraints = self.constraints("long-distance");
         format!(
-            r#"<PrivateAction><LongitudinalAction><LongitudinalDistanceAction entityRef="{other}" {gap} freespace="{freespace}" continuous="{continuous}" coordinateSystem="{cs}" displacement="{displacement}">{constraints}</LongitudinalDistanceAction></LongitudinalAction></PrivateAction>"#
+            r#"<PrivateAction><LongitudinalAction><LongitudinalDistanceAction entityRef="{other}" {gap} freespace="{freespace}" continuous="{continuous}"{cs}{displacement}>{constraints}</LongitudinalDistanceAction></LongitudinalAction></PrivateAction>"#
         )
     }
 
@@ -162,11 +174,18 @@ impl Gen<'_> {
         let cs = self.pick(&["road", "lane", "road", "entity"]);
         // esmini reads no displacement "any" (it quits); leaving the attribute out means any
         let displacement = self.pick(&["any", "leftToReferencedEntity", "rightToReferencedEntity"]);
-        self.feature(format!("lat-distance:{cs}/{displacement}/freespace={freespace}/continuous={continuous}"));
+        let (cs, displacement) = if self.since(1) {
+            self.feature(format!("lat-distance:{cs}/{displacement}/freespace={freespace}/continuous={continuous}"));
+            let displacement = if displacement == "any" { String::new() } else { format!(r#" displacement="{displacement}""#) };
+            (format!(r#" coordinateSystem="{cs}""#), displacement)
+        } else {
+            // 1.0 has neither: the entity system, either side
+            self.feature(format!("lat-distance:1.0/freespace={freespace}/continuous={continuous}"));
+            (String::new(), String::new())
+        };
         let constraints = self.constraints("lat-distance");
-        let displacement = if displacement == "any" { String::new() } else { format!(r#" displacement="{displacement}""#) };
         format!(
-            r#"<PrivateAction><LateralAction><LateralDistanceAction entityRef="{other}" distance="{}" freespace="{freespace}" continuous="{continuous}" coordinateSystem="{cs}"{displacement}>{constraints}</LateralDistanceAction></LateralAction></PrivateAction>"#,
+            r#"<PrivateAction><LateralAction><LateralDistanceAction entityRef="{other}" distance="{}" freespace="{freespace}" continuous="{continuous}"{cs}{displacement}>{constraints}</LateralDistanceAction></LateralAction></PrivateAction>"#,
             self.num(0.5, 6.0)
         )
     }
@@ -193,7 +212,12 @@ impl Gen<'_> {
             }
         };
         let tolerances = if self.chance(0.3) {
-            format!(r#" targetToleranceMaster="{}" targetTolerance="{}""#, self.num(0.5, 3.0), self.num(0.5, 3.0))
+            let tolerances = format!(r#" targetToleranceMaster="{}" targetTolerance="{}""#, self.num(0.5, 3.0), self.num(0.5, 3.0));
+            if self.since(1) {
+                tolerances
+            } else {
+                String::new()
+            }
         } else {
             String::new()
         };

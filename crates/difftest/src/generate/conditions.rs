@@ -13,7 +13,8 @@ const RULES: [&str; 6] = ["greaterThan", "lessThan", "greaterOrEqual", "lessOrEq
 
 impl Gen<'_> {
     fn rule(&mut self) -> &'static str {
-        self.pick(&["greaterThan", "lessThan", "greaterThan", "lessThan", "greaterOrEqual", "lessOrEqual"])
+        let rule = self.pick(&["greaterThan", "lessThan", "greaterThan", "lessThan", "greaterOrEqual", "lessOrEqual"]);
+        self.rule_word(rule)
     }
 
     /// The measuring options of a distance: a coordinate system and a distance type that
@@ -24,6 +25,14 @@ impl Gen<'_> {
         let cs = self.pick(&["entity", "entity", "road", "lane", "world"]);
         let freespace = self.chance(0.5);
         let t = if cs == "world" { "euclidianDistance" } else { self.pick(&["longitudinal", "lateral", "euclidianDistance"]) };
+        if self.rev_minor == 0 {
+            // 1.0 has neither attribute: `alongRoute` says road coordinates (esmini reads it as
+            // the road system with the euclidean distance, ScenarioReader's parseOSCCondition)
+            let along = cs == "road" || cs == "lane";
+            self.feature(format!("{feature}/alongRoute={along}/freespace={freespace}"));
+            return format!(r#" freespace="{freespace}" alongRoute="{along}""#);
+        }
+        let cs = self.coordinate_system_word(cs);
         self.feature(format!("{feature}/{cs}/freespace={freespace}"));
         self.feature(format!("{feature}/{t}"));
         format!(r#" freespace="{freespace}" coordinateSystem="{cs}" relativeDistanceType="{t}""#)
@@ -34,6 +43,9 @@ impl Gen<'_> {
             return String::new();
         }
         let d = self.pick(&["longitudinal", "lateral", "vertical"]);
+        if !self.since(2) {
+            return String::new();
+        }
         self.feature(format!("{feature}/direction={d}"));
         format!(r#" direction="{d}""#)
     }
@@ -43,11 +55,13 @@ impl Gen<'_> {
             "ParameterCondition" => {
                 let p = self.parameter();
                 let rule = self.pick(&RULES);
+                let rule = self.rule_word(rule);
                 format!(r#"<ParameterCondition parameterRef="{p}" value="{}" rule="{rule}"/>"#, self.pick_index(6))
             }
             "VariableCondition" => {
                 let v = self.variable();
                 let rule = self.pick(&RULES);
+                let rule = self.rule_word(rule);
                 format!(r#"<VariableCondition variableRef="{v}" value="{}" rule="{rule}"/>"#, self.pick_index(6))
             }
             "StoryboardElementStateCondition" => {
@@ -69,6 +83,7 @@ impl Gen<'_> {
             }
             _ => {
                 let rule = self.pick(&["greaterThan", "greaterOrEqual"]);
+                let rule = self.rule_word(rule);
                 format!(r#"<SimulationTimeCondition value="{}" rule="{rule}"/>"#, self.num(0.0, 6.0))
             }
         };
@@ -171,10 +186,19 @@ impl Gen<'_> {
                 } else {
                     self.pick(&["entity", "road", "lane"])
                 };
+                let cs = self.coordinate_system_word(cs);
                 self.feature(format!("relative-distance:{t}/freespace={freespace}"));
-                self.feature(format!("relative-distance:coordinate-system/{cs}"));
+                let cs = if self.since(1) {
+                    self.feature(format!("relative-distance:coordinate-system/{cs}"));
+                    format!(r#" coordinateSystem="{cs}""#)
+                } else {
+                    // 1.0 has none: the entity system
+                    self.feature("relative-distance:coordinate-system/1.0");
+                    String::new()
+                };
+                let t = self.distance_type_word(t);
                 format!(
-                    r#"<RelativeDistanceCondition entityRef="{other}" relativeDistanceType="{t}" value="{}" freespace="{freespace}" rule="{rule}" coordinateSystem="{cs}"/>"#,
+                    r#"<RelativeDistanceCondition entityRef="{other}" relativeDistanceType="{t}" value="{}" freespace="{freespace}" rule="{rule}"{cs}/>"#,
                     self.num(2.0, 60.0)
                 )
             }

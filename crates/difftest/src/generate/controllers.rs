@@ -165,9 +165,14 @@ impl Gen<'_> {
                 }
             };
         }
-        format!(
-            r#"<PrivateAction><ControllerAction><ActivateControllerAction{reference} longitudinal="{long}" lateral="{lat}"/></ControllerAction></PrivateAction>"#
-        )
+        let activate = format!(r#"<ActivateControllerAction{reference} longitudinal="{long}" lateral="{lat}"/>"#);
+        if self.since(1) {
+            format!("<PrivateAction><ControllerAction>{activate}</ControllerAction></PrivateAction>")
+        } else {
+            // 1.0 has it right under the PrivateAction (esmini reads both places)
+            self.feature("controller:activate/1.0-place");
+            format!("<PrivateAction>{activate}</PrivateAction>")
+        }
     }
 
     /// An OverrideControllerValueAction: a throttle and/or a steering-wheel value, switched on

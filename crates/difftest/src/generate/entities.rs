@@ -46,7 +46,8 @@ impl Gen<'_> {
                 bounding_box(1.4, 2.0, 4.5, 1.2)
             ),
             EntityKind::Pedestrian => format!(
-                r#"<Pedestrian name="walker" mass="80" pedestrianCategory="pedestrian"><ParameterDeclarations/>{}<Properties/></Pedestrian>"#,
+                r#"<Pedestrian name="walker" mass="80"{} pedestrianCategory="pedestrian"><ParameterDeclarations/>{}<Properties/></Pedestrian>"#,
+                self.pedestrian_model(),
                 bounding_box(0.0, 0.5, 0.6, 1.8)
             ),
             EntityKind::Misc => {

@@ -115,7 +115,8 @@ impl Gen<'_> {
             _ => {
                 let friction = self.pick(&[1.0, 0.6, 0.3]);
                 format!(
-                    r#"<EnvironmentAction><Environment name="Env"><TimeOfDay animation="false" dateTime="2026-06-01T12:00:00"/><Weather fractionalCloudCover="zeroOktas"><Sun azimuth="0" elevation="1.2" illuminance="90000"/><Fog visualRange="100000"/><Precipitation precipitationType="dry" precipitationIntensity="0"/></Weather><RoadCondition frictionScaleFactor="{friction}"/></Environment></EnvironmentAction>"#
+                    r#"<EnvironmentAction><Environment name="Env"><TimeOfDay animation="false" dateTime="2026-06-01T12:00:00"/>{weather}<RoadCondition frictionScaleFactor="{friction}"/></Environment></EnvironmentAction>"#,
+                    weather = self.weather()
                 )
             }
         };

@@ -155,6 +155,7 @@ impl Gen<'_> {
         } else {
             self.pick(&["parallel", "parallel", "override"])
         };
+        let priority = self.priority_word(priority);
         if priority != "parallel" {
             self.feature(format!("priority:{priority}"));
         }
@@ -284,14 +285,15 @@ impl Gen<'_> {
 <Init><Actions>
 {init}</Actions></Init>
 <Story name="S"><Act name="Act">
-{groups}<StartTrigger><ConditionGroup><Condition name="start" delay="0" conditionEdge="none"><ByValueCondition><SimulationTimeCondition value="0" rule="greaterOrEqual"/></ByValueCondition></Condition></ConditionGroup></StartTrigger>
+{groups}<StartTrigger><ConditionGroup><Condition name="start" delay="0" conditionEdge="none"><ByValueCondition><SimulationTimeCondition value="0" rule="{start_rule}"/></ByValueCondition></Condition></ConditionGroup></StartTrigger>
 </Act></Story>
 {stop_trigger}
 </Storyboard>
 </OpenSCENARIO>
 "#,
             map = self.map.name,
-            rev_minor = self.rev_minor
+            rev_minor = self.rev_minor,
+            start_rule = self.rule_word("greaterOrEqual")
         )
     }
 }

@@ -45,8 +45,10 @@ impl Gen<'_> {
                 let prime = self.pick(&[0.0, 0.0002, -0.0003]);
                 let len = self.num(30.0, total.clamp(31.0, 150.0));
                 let stop = time_of(len);
+                // 1.0 spells the curvature's rate `curvatureDot`
+                let prime_word = if self.since(1) { "curvaturePrime" } else { "curvatureDot" };
                 format!(
-                    r#"<Clothoid curvature="{curvature}" curvaturePrime="{prime}" length="{len}" startTime="{}" stopTime="{stop}"><Position><WorldPosition x="{}" y="{}" h="{}"/></Position></Clothoid>"#,
+                    r#"<Clothoid curvature="{curvature}" {prime_word}="{prime}" length="{len}" startTime="{}" stopTime="{stop}"><Position><WorldPosition x="{}" y="{}" h="{}"/></Position></Clothoid>"#,
                     time_of(0.0),
                     f3(x),
                     f3(y),
@@ -143,8 +145,9 @@ impl Gen<'_> {
         let t0 = if timing == "absolute" { (t_start * 100.0).round() / 100.0 } else { 0.0 };
         if timing == "absolute" {
             // its times are the simulation's: the event starts when they begin
+            let rule = self.rule_word("greaterOrEqual");
             self.forced_condition = Some(format!(
-                r#"<Condition name="timed" delay="0" conditionEdge="none"><ByValueCondition><SimulationTimeCondition value="{t0}" rule="greaterOrEqual"/></ByValueCondition></Condition>"#
+                r#"<Condition name="timed" delay="0" conditionEdge="none"><ByValueCondition><SimulationTimeCondition value="{t0}" rule="{rule}"/></ByValueCondition></Condition>"#
             ));
         }
         let traj = self.trajectory_from(start, length, t0, speed);
@@ -165,14 +168,20 @@ impl Gen<'_> {
         let mode = self.pick(&["position", "follow"]);
         self.feature(format!("trajectory:following-mode/{mode}"));
         let offset = if self.chance(0.25) {
-            self.feature("trajectory:initial-distance-offset");
-            format!(r#" initialDistanceOffset="{}""#, self.num(0.0, 30.0))
+            let offset = format!(r#" initialDistanceOffset="{}""#, self.num(0.0, 30.0));
+            if self.since(1) {
+                self.feature("trajectory:initial-distance-offset");
+                offset
+            } else {
+                String::new()
+            }
         } else {
             String::new()
         };
+        // 1.0 has the trajectory itself where 1.1 wraps it in a TrajectoryRef
+        let traj = if self.since(1) { format!("<TrajectoryRef>{traj}</TrajectoryRef>") } else { traj };
         format!(
-            r#"<PrivateAction><RoutingAction><FollowTrajectoryAction{offset}><TrajectoryRef>{}</TrajectoryRef><TimeReference>{time_reference}</TimeReference><TrajectoryFollowingMode followingMode="{mode}"/></FollowTrajectoryAction></RoutingAction></PrivateAction>"#,
-            traj
+            r#"<PrivateAction><RoutingAction><FollowTrajectoryAction{offset}>{traj}<TimeReference>{time_reference}</TimeReference><TrajectoryFollowingMode followingMode="{mode}"/></FollowTrajectoryAction></RoutingAction></PrivateAction>"#
         )
     }
 

@@ -185,10 +185,11 @@ impl Walker {
             let other = all_schemas(schema.minor).skip(1).find(|s| s.complex_type(type_name).is_some_and(|t| match_children(s, t, &names).is_empty()));
             match other {
                 Some(s) => {
+                    let since = first_newer_with(schema.minor, |n| n.complex_type(type_name).is_some_and(|t| match_children(n, t, &names).is_empty()));
                     self.push(
                         Severity::Warning,
                         el.pos,
-                        format!("the children of <{}> are OpenSCENARIO 1.{} (the file declares 1.{})", el.name, s.minor, self.declared),
+                        format!("the children of <{}> are OpenSCENARIO 1.{} (the file declares 1.{})", el.name, since.unwrap_or(s.minor), self.declared),
                     );
                     content_schema = s;
                 }
@@ -249,10 +250,18 @@ impl Walker {
                         .find_map(|s| s.complex_type(type_name)?.attributes.iter().find(|a| a.name == attr.name).map(|d| (s, d)));
                     match other {
                         Some((s, d)) => {
+                            let since =
+                                first_newer_with(schema.minor, |n| n.complex_type(type_name).is_some_and(|t| t.attributes.iter().any(|a| a.name == attr.name)));
                             self.push(
                                 Severity::Warning,
                                 attr.pos,
-                                format!("attribute '{}' of <{}> is OpenSCENARIO 1.{} (the file declares 1.{})", attr.name, el.name, s.minor, self.declared),
+                                format!(
+                                    "attribute '{}' of <{}> is OpenSCENARIO 1.{} (the file declares 1.{})",
+                                    attr.name,
+                                    el.name,
+                                    since.unwrap_or(s.minor),
+                                    self.declared
+                                ),
                             );
                             (s, d)
                         }
@@ -480,6 +489,12 @@ impl Walker {
 }
 
 /// The first schema version that marks something deprecated.
+/// The first version after `minor` whose schema satisfies `has` (where a newer construct came
+/// from: the fallback itself reads the newest schema that has it).
+fn first_newer_with(minor: u16, has: impl Fn(&Schema) -> bool) -> Option<u16> {
+    (minor + 1..=schema::NEWEST_MINOR).filter_map(schema::for_minor).find(|s| has(s)).map(|s| s.minor)
+}
+
 fn deprecated_since(is_deprecated: impl Fn(&Schema) -> bool) -> u16 {
     (0..=schema::NEWEST_MINOR).filter_map(schema::for_minor).find(|s| is_deprecated(s)).map_or(schema::NEWEST_MINOR, |s| s.minor)
 }
