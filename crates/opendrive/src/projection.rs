@@ -274,8 +274,8 @@ impl RoadNetwork {
 
 /// XYZ2TrackPos's weight of a height difference `dz` between the asked point and a road's
 /// reference line: counted only beyond 2 m ("to avoid noise in co-planar distance
-/// calculations").
-fn height_penalty(dz: f64) -> f64 {
+/// calculations"). The engine's segment choice (`track_pos`) weighs its segments by it too.
+pub fn height_penalty(dz: f64) -> f64 {
     if dz.abs() > 2.0 {
         dz.abs()
     } else {

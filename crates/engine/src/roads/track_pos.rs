@@ -14,8 +14,6 @@ use crate::dynamics::ESMINI_SMALL_NUMBER as SMALL_NUMBER;
 use opendrive::model::road::Road;
 use std::f64::consts::FRAC_PI_2;
 
-/// XYZ2TrackPos: a z difference above this is added to the segment's distance.
-const Z_THRESHOLD: f64 = 2.0;
 /// XYZ2TrackPos: the penalty of a segment whose sector does not hold the point.
 const OUTSIDE_PENALTY: f64 = 3.0;
 
@@ -132,10 +130,7 @@ pub(crate) fn segment_choice(road: &Road, x: f64, y: f64, z_input: f64) -> Optio
         if !inside {
             dist = dist.hypot(s_norm);
         }
-        let mut weighted = dist;
-        if (z_input - zs).abs() > Z_THRESHOLD {
-            weighted += (z_input - zs).abs();
-        }
+        let mut weighted = dist + opendrive::projection::height_penalty(z_input - zs);
         if !inside {
             weighted += OUTSIDE_PENALTY;
         }
