@@ -9,6 +9,9 @@ use opendrive::Road;
 /// up, and along the reference heading; `None` when the lane has no height there to give.
 /// The roll and pitch are those of [`super::banking::banked`].
 pub(crate) fn lift(road: &Road, s: f64, lane_id: i32, offset: f64, borders: (f64, f64)) -> Option<(f64, f64, f64)> {
+    if !road.has_raised_lanes() {
+        return None;
+    }
     let section = road.lane_sections.get(road.section_index_at(s))?;
     let lane = section.lane(lane_id).filter(|l| !l.heights.is_empty())?;
     let height = lane.height_at(s - section.s, offset, (borders.1 - borders.0).abs());
