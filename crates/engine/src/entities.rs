@@ -315,10 +315,17 @@ impl Entity {
                 if let Some([h3, _, _]) = tilted {
                     self.h = h3;
                 }
-                // the road's surface there, its banking included (the height a move along the
-                // lane then keeps: a step's vertical speed reads the difference)
-                self.z =
-                    z.unwrap_or_else(|| net.roads.get(lp.road).map_or(0.0, |r| r.elevation_at(lp.s) + crate::roads::banking::banked(r, lp.s, lp.t, 0.0).1));
+                // the road's surface there, its banking and the lane's own height included (the
+                // height a move along the lane then keeps: a step's vertical speed reads the
+                // difference)
+                self.z = z.unwrap_or_else(|| {
+                    net.roads.get(lp.road).map_or(0.0, |r| {
+                        let raised = crate::roads::pose_memo::lane_borders_at(r, lane_id, lp.s)
+                            .and_then(|b| crate::roads::lane_height::lift(r, lp.s, lane_id, offset, b))
+                            .map_or(0.0, |lift| lift.1);
+                        r.elevation_at(lp.s) + crate::roads::banking::banked(r, lp.s, lp.t, 0.0).1 + raised
+                    })
+                });
             }
             None => {
                 self.lane = None;

@@ -30,7 +30,7 @@ pub use geometry::{CurvePose, Geometry, PRange, Shape};
 pub use links::{section_at_end, LaneRef, RoadEnd};
 pub use model::header::{Header, HeaderOffset};
 pub use model::junction::{Connection, Control, Controller, Junction, JunctionController, JunctionType, LaneLink};
-pub use model::lanes::{Lane, LaneChange, LaneSection, LaneSpeed, LaneType, RoadMark, RoadMarkType};
+pub use model::lanes::{Lane, LaneChange, LaneHeight, LaneSection, LaneSpeed, LaneType, RoadMark, RoadMarkType};
 pub use model::objects::{Object, ObjectRepeat, RepeatEnds};
 pub use model::poly::CubicRecord;
 pub use model::road::{ContactPoint, ElementDir, ElementType, Road, RoadKind, RoadLink, RoadTypeRecord, SpeedLimit, TrafficRule};

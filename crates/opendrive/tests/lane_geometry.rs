@@ -172,3 +172,33 @@ fn links_across_roads_and_junctions() {
     let pred_c = n.lane_predecessors(LaneRef { road: ic, section: 0, lane: -1 });
     assert_eq!(pred_c, vec![LaneRef { road: ib, section: 0, lane: -1 }]);
 }
+
+/// `<lane><height>` records are kept sorted (equal sOffsets in file order, as esmini's
+/// Lane::AddLaneHeight inserts them) and read as esmini's Lane::GetHeightBySAndOffset: the
+/// record at s (the first before it starts), interpolated towards the next one, and across the
+/// lane from the inner border (0) to the outer one (1), clamped.
+#[test]
+fn lane_heights_interpolate_along_and_across_the_lane() {
+    let map = r#"<?xml version="1.0"?>
+<OpenDRIVE><header revMajor="1" revMinor="6" name="h"/>
+  <road id="1" length="100" junction="-1">
+    <planView><geometry s="0" x="0" y="0" hdg="0" length="100"><line/></geometry></planView>
+    <lanes><laneSection s="0">
+      <center><lane id="0" type="none"/></center>
+      <right><lane id="-1" type="sidewalk"><width sOffset="0" a="2" b="0" c="0" d="0"/>
+        <height sOffset="50" inner="0.3" outer="0.5"/><height sOffset="10" inner="0.1" outer="0.2"/></lane></right>
+    </laneSection></lanes>
+  </road>
+</OpenDRIVE>"#;
+    let loaded = parse_str(map, Path::new("h.xodr")).expect("parses");
+    let lane = &loaded.network.roads[0].lane_sections[0].right[0];
+    let at: Vec<f64> = lane.heights.iter().map(|h| h.s_offset).collect();
+    assert_eq!(at, [10.0, 50.0], "sorted by sOffset");
+    let close = |a: f64, b: f64| (a - b).abs() < 1e-12;
+    // lane −1: its inner border is the reference line, so an offset to the right (−) is outward
+    assert!(close(lane.height_at(10.0, 0.0, 2.0), 0.15), "the middle at the first record");
+    assert!(close(lane.height_at(30.0, -1.0, 2.0), 0.35), "the outer border half way: 0.2 + (0.5 − 0.2)/2");
+    assert!(close(lane.height_at(30.0, 1.0, 2.0), 0.2), "the inner border half way: 0.1 + (0.3 − 0.1)/2");
+    assert!(close(lane.height_at(80.0, 3.0, 2.0), 0.3), "beyond the inner border: clamped, the last record");
+    assert!(close(lane.height_at(0.0, 0.0, 2.0), 0.0875), "before the first record: extrapolated, 0.15 − (0.4 − 0.15)/4");
+}

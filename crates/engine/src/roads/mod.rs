@@ -5,6 +5,7 @@ pub(crate) mod banking;
 pub(crate) mod junction_connections;
 pub(crate) mod junction_entry;
 pub(crate) mod lane_geometry;
+pub(crate) mod lane_height;
 pub(crate) mod lane_position;
 pub(crate) mod lane_shape;
 pub(crate) mod lane_slope;

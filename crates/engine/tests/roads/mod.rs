@@ -1,10 +1,11 @@
-//! Moving along the road: banking, lanes that end, junction choice.
+//! Moving along the road: banking, raised lanes, lanes that end, junction choice.
 
 mod end_of_road_speed;
 mod ending_lane;
 mod junction_connection_entering_at_end;
 mod junction_random;
 mod lane_section_into_a_stop_lane;
+mod raised_lanes;
 mod reversing_through_junctions;
 mod road_link_without_lane_links;
 mod sloped_banked;

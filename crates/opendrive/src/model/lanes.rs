@@ -171,6 +171,16 @@ pub struct LaneSpeed {
     pub unit: Option<String>,
 }
 
+/// `<lane><height>`: the lane's surface raised above the road (a kerb, a raised sidewalk),
+/// `inner` m at its inner border and `outer` m at its outer one, from `s_offset` (relative to
+/// the section start) on.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LaneHeight {
+    pub s_offset: f64,
+    pub inner: f64,
+    pub outer: f64,
+}
+
 /// One lane of a lane section.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Lane {
@@ -190,7 +200,33 @@ pub struct Lane {
     pub borders: Vec<CubicRecord>,
     pub road_marks: Vec<RoadMark>,
     pub speeds: Vec<LaneSpeed>,
+    /// Height records, sorted by `s_offset` (equal ones in file order).
+    pub heights: Vec<LaneHeight>,
     pub pos: LineCol,
+}
+
+impl Lane {
+    /// The lane's height above the road at `ds` from its section's start, `offset` m from its
+    /// centre (+ left of the reference line), the lane `width` m wide there; 0 without height
+    /// records. As esmini's Lane::GetHeightBySAndOffset: the record at `ds` (the first one before
+    /// it starts), inner and outer heights interpolated linearly towards the next record (and
+    /// extrapolated before the first), then across the lane from its inner border (0) to its
+    /// outer one (1), clamped to the lane.
+    pub fn height_at(&self, ds: f64, offset: f64, width: f64) -> f64 {
+        const SMALL_NUMBER: f64 = 1e-10;
+        let Some(first) = self.heights.first() else { return 0.0 };
+        let i = self.heights.iter().position(|h| ds < h.s_offset - SMALL_NUMBER).unwrap_or(self.heights.len());
+        let i = i.saturating_sub(1);
+        let h = self.heights.get(i).unwrap_or(first);
+        let (mut inner, mut outer) = (h.inner, h.outer);
+        if let Some(next) = self.heights.get(i + 1) {
+            let f = (ds - h.s_offset) / (next.s_offset - h.s_offset);
+            inner += f * (next.inner - h.inner);
+            outer += f * (next.outer - h.outer);
+        }
+        let across = if width > 0.0 { ((offset * f64::from(self.id.signum()) + 0.5 * width) / width).clamp(0.0, 1.0) } else { 0.0 };
+        inner + across * (outer - inner)
+    }
 }
 
 /// A lane section: lanes valid from `s` to the next section (or the road end).

@@ -150,9 +150,17 @@ pub struct Road {
     /// The s of lane 0's OSI points, worked out on first use ([`Road::lane0_osi_s`]): a
     /// network shared by many runs (a batch, a bench) samples each road once.
     pub lane0_osi: std::sync::OnceLock<Vec<f64>>,
+    /// Whether some lane has height records, worked out on first use ([`Road::has_raised_lanes`]).
+    pub raised_lanes: std::sync::OnceLock<bool>,
 }
 
 impl Road {
+    /// Whether some lane of the road has `<height>` records (a kerb, a raised sidewalk): the
+    /// question every lane position asks, answered once.
+    pub fn has_raised_lanes(&self) -> bool {
+        *self.raised_lanes.get_or_init(|| self.lane_sections.iter().any(|sec| sec.lanes_left_to_right().any(|l| !l.heights.is_empty())))
+    }
+
     /// Road type record in force at `s` (last with `record.s <= s`, else the first).
     pub fn type_at(&self, s: f64) -> Option<&RoadTypeRecord> {
         let i = self.types.partition_point(|t| t.s <= s);

@@ -2,7 +2,7 @@
 
 use super::xml::{children_named, elements, irrelevant, Ctx};
 use crate::error::Error;
-use crate::model::lanes::{Lane, LaneChange, LaneSection, LaneSpeed, LaneType, RoadMark, RoadMarkType};
+use crate::model::lanes::{Lane, LaneChange, LaneHeight, LaneSection, LaneSpeed, LaneType, RoadMark, RoadMarkType};
 use crate::model::poly::CubicRecord;
 use roxmltree::Node;
 
@@ -118,6 +118,7 @@ fn parse_lane(ctx: &mut Ctx, node: Node) -> Result<Lane, Error> {
         borders: Vec::new(),
         road_marks: Vec::new(),
         speeds: Vec::new(),
+        heights: Vec::new(),
         pos: ctx.pos(node),
     };
     if lane.kind == LaneType::Other {
@@ -143,7 +144,16 @@ fn parse_lane(ctx: &mut Ctx, node: Node) -> Result<Lane, Error> {
                 let unit = ctx.opt_string(child, "unit");
                 lane.speeds.push(LaneSpeed { s_offset: ctx.f64_or(child, "sOffset", 0.0)?, max_mps: speed_mps(&max_raw, unit.as_deref()), max_raw, unit });
             }
-            "height" => ctx.warn(child, "<lane><height> is not modelled; ignored"),
+            "height" => {
+                let h = LaneHeight {
+                    s_offset: ctx.f64_or(child, "sOffset", 0.0)?,
+                    inner: ctx.f64_or(child, "inner", 0.0)?,
+                    outer: ctx.f64_or(child, "outer", 0.0)?,
+                };
+                // kept sorted as esmini inserts them (Lane::AddLaneHeight): after equal ones
+                let at = lane.heights.partition_point(|e| e.s_offset <= h.s_offset);
+                lane.heights.insert(at, h);
+            }
             n if irrelevant(n) => {}
             n => ctx.warn(child, format!("<lane><{n}> is not modelled; ignored")),
         }

@@ -78,6 +78,7 @@ pub(super) fn parse_road(ctx: &mut Ctx, node: Node) -> Result<Road, Error> {
         signal_references: Vec::new(),
         pos: ctx.pos(node),
         lane0_osi: std::sync::OnceLock::new(),
+        raised_lanes: std::sync::OnceLock::new(),
     };
     let mut saw_plan_view = false;
     let mut saw_lanes = false;
