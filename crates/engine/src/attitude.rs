@@ -70,6 +70,64 @@ pub(crate) fn compose(road: [f64; 3], rel: [f64; 3]) -> [f64; 3] {
     [h, p, r]
 }
 
+/// esmini's CalcRelAnglesFromRoadAndAbsAngles: the turn (heading, pitch, roll) from the
+/// rotation `road` to the absolute one `abs`, as the road's inverse (InvertMatrix3's
+/// Gauss-Jordan elimination, no pivoting) times the absolute rotation, with the same guard
+/// against gimbal lock as `compose`; every angle in [0, 2π). The terms in esmini's order, so
+/// that a turn of a right angle falls on esmini's side of it (the guard keeps the sign of a
+/// cosine that is a rounding error away from 0).
+pub(crate) fn relative(road: [f64; 3], abs: [f64; 3]) -> [f64; 3] {
+    let inv = invert(rotation(road));
+    let m1 = rotation(abs);
+    let mut m = [[0.0; 3]; 3];
+    for (i, row) in m.iter_mut().enumerate() {
+        for (j, v) in row.iter_mut().enumerate() {
+            for k in 0..3 {
+                *v += inv[i][k] * m1[k][j];
+            }
+        }
+    }
+    m[0][0] = crate::entities::gimbal_guard(m[0][0]);
+    m[2][2] = crate::entities::gimbal_guard(m[2][2]);
+    let wrap = crate::angles::wrap_2pi;
+    [wrap(m[1][0].atan2(m[0][0])), wrap((-m[2][0]).atan2((m[2][1] * m[2][1] + m[2][2] * m[2][2]).sqrt())), wrap(m[2][1].atan2(m[2][2]))]
+}
+
+/// esmini's InvertMatrix3: Gauss-Jordan elimination on the matrix augmented with the identity,
+/// without pivoting (a rotation's diagonal is never exactly 0 here: its cosines of ±π/2 are
+/// rounding errors, not zeros; a zero pivot leaves the identity, where esmini logs an error
+/// and leaves its output untouched).
+fn invert(m: [[f64; 3]; 3]) -> [[f64; 3]; 3] {
+    let mut a = [[0.0; 6]; 3];
+    for i in 0..3 {
+        a[i][..3].copy_from_slice(&m[i]);
+        a[i][i + 3] = 1.0;
+    }
+    for i in 0..3 {
+        let pivot = a[i][i];
+        if pivot == 0.0 {
+            return [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+        }
+        for v in a[i].iter_mut() {
+            *v /= pivot;
+        }
+        let row = a[i];
+        for (k, other) in a.iter_mut().enumerate() {
+            if k != i {
+                let factor = other[i];
+                for (v, r) in other.iter_mut().zip(row.iter()) {
+                    *v -= factor * r;
+                }
+            }
+        }
+    }
+    let mut inv = [[0.0; 3]; 3];
+    for i in 0..3 {
+        inv[i].copy_from_slice(&a[i][3..]);
+    }
+    inv
+}
+
 /// Rz(h)·Ry(p)·Rx(r), each entry as esmini's R0R12EulerAngles writes it.
 fn rotation([h, p, r]: [f64; 3]) -> [[f64; 3]; 3] {
     let (sx, cx) = h.sin_cos();

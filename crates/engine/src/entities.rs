@@ -195,12 +195,26 @@ impl Entity {
     /// (EvaluateHPR with H_ABS): the angle to the road (h_relative, less the lane's drift) is
     /// what later moves along the lane keep, and they go the way it faces (MoveAlongS's
     /// HEADING_DIRECTION: IsAngleForward of that angle).
+    ///
+    /// On a lane the heading goes through esmini's matrices: the heading held is the road's
+    /// rotation composed with the turn from it (R0R12EulerAngles), and the angle to the road is
+    /// found back from it (CalcRelAnglesFromRoadAndAbsAngles against the road's heading plus
+    /// the lane's drift, GetHOffset); both guard their cosines against gimbal lock, so a
+    /// heading at a right angle to the road comes out a micro-radian to one side, and that
+    /// side decides which way the entity then drives (IsAngleForward: backward only strictly
+    /// between π/2 and 3π/2).
     pub(crate) fn set_heading_on_lane(&mut self, net: &RoadNetwork, h: f64) {
         self.h = wrap_2pi(h);
         let Some(mut lp) = self.lane else { return };
         let Some(p) = lp.pose(net) else { return };
-        lp.dir = if wrap(self.h - p.road_heading).abs() <= std::f64::consts::FRAC_PI_2 { 1.0 } else { -1.0 };
         let drift = self.drift(net, &lp);
+        // The road's heading as esmini's geometry gives it: the file's hdg in [0, 2π) (Geometry::
+        // GetHdg; a road along +x written with hdg 2π has heading 0, whose sine is exactly 0).
+        let h_road = wrap_2pi(p.road_heading);
+        self.h = esmini_euler_heading(h_road, crate::angles::angle_difference(h, h_road));
+        let [h_rel, _, _] = crate::attitude::relative([h_road + drift, 0.0, 0.0], [self.h, 0.0, 0.0]);
+        let (quarter, three_quarters) = (std::f64::consts::FRAC_PI_2, 3.0 * std::f64::consts::FRAC_PI_2);
+        lp.dir = if h_rel > quarter && h_rel < three_quarters { -1.0 } else { 1.0 };
         self.yaw_offset = wrap(self.h - drift - lp.facing_heading(&p));
         self.lane = Some(lp);
     }

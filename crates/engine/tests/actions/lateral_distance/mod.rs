@@ -6,5 +6,6 @@ mod domain;
 mod entity_frame;
 mod lane_path;
 mod rigid_heading;
+mod rigid_right_angle;
 mod road_coordinates;
 mod road_ends;
