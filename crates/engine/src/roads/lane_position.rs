@@ -36,7 +36,7 @@ impl LanePos {
         let road = net.roads.get(self.road)?;
         let s = self.s.clamp(0.0, road.length);
         let lane = super::pose_memo::lane_borders_at(road, self.lane_id, s);
-        let t = lane.map_or(0.0, |(a, b)| 0.5 * (a + b)) + self.offset;
+        let t = lane.map_or(0.0, |b| b.center) + self.offset;
         let p = super::pose_memo::reference_pose(road, s);
         let (sin, cos) = p.hdg.sin_cos();
         // On a banked road t lies along the tilted surface (see banking.rs).
@@ -48,7 +48,7 @@ impl LanePos {
             road_heading: p.hdg + turn,
             curvature: p.curvature,
             t,
-            lane,
+            lane: lane.map(|b| (b.inner, b.outer)),
         })
     }
 
