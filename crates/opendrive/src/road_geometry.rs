@@ -17,12 +17,18 @@ use crate::model::road::Road;
 pub struct LaneBorders {
     pub inner: f64,
     pub outer: f64,
+    /// t of the lane centre, rounded as esmini computes it (`LaneSection::GetCenterOffset`:
+    /// the summed widths out to this lane's outer border minus half its width, then signed
+    /// and added to the lane offset, `Position::Lane2Track`). The midpoint of the borders
+    /// can differ from it in the last bit, and entities placed on one lane then sit a hair
+    /// apart; that sign decides ties (e.g. the cross-track term of FollowReferenceController).
+    pub center: f64,
 }
 
 impl LaneBorders {
-    /// t of the lane centre.
+    /// t of the lane centre, as esmini rounds it (the field `center`).
     pub fn center(&self) -> f64 {
-        0.5 * (self.inner + self.outer)
+        self.center
     }
     /// Signed width |outer − inner| taken positive when the lane opens outward.
     pub fn width(&self) -> f64 {
@@ -114,15 +120,21 @@ impl Road {
         let sign = if left { 1.0 } else { -1.0 };
         let base = if lanes.is_empty() { 0.0 } else { self.lane_offset_at(s) };
         let mut inner = base;
+        // esmini's unsigned sum of the widths from the centre lane out (GetOuterOffset)
+        let mut summed = 0.0;
         lanes.iter().map(move |lane| {
-            let outer = if !lane.widths.is_empty() {
-                inner + sign * record_at(&lane.widths, ds).map_or(0.0, |r| r.value(ds - r.s))
+            let (outer, center) = if !lane.widths.is_empty() {
+                let w = record_at(&lane.widths, ds).map_or(0.0, |r| r.value(ds - r.s));
+                summed += w;
+                (inner + sign * w, base + sign * (summed - w / 2.0))
             } else if let Some(b) = record_at(&lane.borders, ds) {
-                base + b.value(ds - b.s)
+                let outer = base + b.value(ds - b.s);
+                summed = (outer - base).abs();
+                (outer, 0.5 * (inner + outer))
             } else {
-                inner
+                (inner, inner)
             };
-            let b = LaneBorders { inner, outer };
+            let b = LaneBorders { inner, outer, center };
             inner = outer;
             (lane.id, b)
         })
@@ -135,7 +147,7 @@ impl Road {
         if lane_id == 0 {
             sec.center.as_ref()?;
             let t = self.lane_offset_at(s);
-            return Some(LaneBorders { inner: t, outer: t });
+            return Some(LaneBorders { inner: t, outer: t, center: t });
         }
         self.side_border_iter(section_idx, lane_id > 0, s).find(|(id, _)| *id == lane_id).map(|(_, b)| b)
     }

@@ -28,11 +28,12 @@ pub(crate) fn relane(net: &RoadNetwork, lp: &mut LanePos) {
     let Some(t) = lane_center_t(road, lp.lane_id, s).map(|c| c + lp.offset) else { return };
     let Some(sec) = road.lane_sections.get(section) else { return };
     for lane in sec.left.iter().chain(sec.right.iter()) {
-        if let Some((a, b)) = lane_borders(road, section, lane.id, s) {
+        if let Some(bo) = lane_borders(road, section, lane.id, s) {
+            let (a, b) = (bo.inner, bo.outer);
             let (lo, hi) = if a <= b { (a, b) } else { (b, a) };
             if hi > lo && t >= lo && t <= hi {
                 lp.lane_id = lane.id;
-                lp.offset = t - 0.5 * (a + b);
+                lp.offset = t - bo.center;
                 return;
             }
         }
@@ -81,7 +82,7 @@ fn phantom_lane_center(road: &opendrive::Road, lane_id: i32, s: f64) -> Option<f
     let side = if lane_id > 0 { &sec.left } else { &sec.right };
     let inner = side.iter().filter(|l| l.id.abs() < lane_id.abs()).max_by_key(|l| l.id.abs());
     match inner {
-        Some(l) => lane_borders(road, section, l.id, s).map(|(_, outer)| outer),
+        Some(l) => lane_borders(road, section, l.id, s).map(|b| b.outer),
         None => Some(road.lane_offset_at(s)),
     }
 }

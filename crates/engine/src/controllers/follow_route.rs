@@ -269,7 +269,7 @@ impl<'a> Sim<'a> {
         if f.min_dist_for_collision <= 0.0 {
             return true;
         }
-        let width = lane_borders(road, section, lane, lp.s).map_or(0.0, |(a, b)| (b - a).abs());
+        let width = lane_borders(road, section, lane, lp.s).map_or(0.0, |b| b.width());
         if width < f.min_lane_width {
             return false;
         }

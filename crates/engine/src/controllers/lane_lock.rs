@@ -15,8 +15,8 @@ use opendrive::{ContactPoint, Road, RoadNetwork};
 /// (`SIGN(lane_id) · LaneSection::GetCenterOffset`), in the section at `lp.s`.
 fn centre_without_lane_offset(road: &Road, lp: &LanePos) -> Option<f64> {
     let section = road.section_index_at(lp.s);
-    let (a, b) = lane_borders(road, section, lp.lane_id, lp.s)?;
-    Some(0.5 * (a + b) - road.lane_offset_at(lp.s))
+    let b = lane_borders(road, section, lp.lane_id, lp.s)?;
+    Some(b.center - road.lane_offset_at(lp.s))
 }
 
 /// Whether `from` links directly to `to` end to end or start to start (XYZ2TrackPos's
@@ -36,8 +36,8 @@ impl Entity {
         let (Some(old_road), Some(road)) = (net.roads.get(before.road), net.roads.get(now.road)) else { return };
         let Some(centre) = centre_without_lane_offset(old_road, &before) else { return };
         let section = road.section_index_at(now.s);
-        let Some((a, b)) = lane_borders(road, section, now.lane_id, now.s) else { return };
-        let t = 0.5 * (a + b) + now.offset;
+        let Some(b) = lane_borders(road, section, now.lane_id, now.s) else { return };
+        let t = b.center + now.offset;
         let flip = before.road != now.road && turns_round(old_road, road);
         let fixed_t = if flip { -centre } else { centre } + road.lane_offset_at(now.s);
         let sidewalks = self.kind == EntityKind::Pedestrian;

@@ -36,13 +36,13 @@ impl LanePos {
         let road = net.roads.get(self.road)?;
         let s = self.s.clamp(0.0, road.length);
         let lane = super::pose_memo::lane_borders_at(road, self.lane_id, s);
-        let t = lane.map_or(0.0, |(a, b)| 0.5 * (a + b)) + self.offset;
+        let t = lane.map_or(0.0, |b| b.center) + self.offset;
         let p = super::pose_memo::reference_pose(road, s);
         let (sin, cos) = p.hdg.sin_cos();
         // On a banked road t lies along the tilted surface (see banking.rs).
         let (mut th, mut dz, turn, mut along) = super::banking::banked(road, s, t, p.curvature);
         // a raised lane (kerb, sidewalk) lifts the point along the road's normal
-        if let Some((d_th, d_z, d_along)) = lane.and_then(|b| super::lane_height::lift(road, s, self.lane_id, self.offset, b)) {
+        if let Some((d_th, d_z, d_along)) = lane.and_then(|b| super::lane_height::lift(road, s, self.lane_id, self.offset, (b.inner, b.outer))) {
             th += d_th;
             dz += d_z;
             along += d_along;
@@ -54,7 +54,7 @@ impl LanePos {
             road_heading: p.hdg + turn,
             curvature: p.curvature,
             t,
-            lane,
+            lane: lane.map(|b| (b.inner, b.outer)),
         })
     }
 

@@ -26,12 +26,12 @@ pub(crate) fn snap_on_side(road: &Road, section: usize, s: f64, t: f64, sidewalk
         if !allowed(lane.kind) || (side != 0 && lane.id.signum() != side) {
             continue;
         }
-        let Some((a, b)) = lane_borders(road, section, lane.id, s) else { continue };
-        let width = (b - a).abs();
+        let Some(b) = lane_borders(road, section, lane.id, s) else { continue };
+        let width = b.width();
         if width <= MIN_WIDTH {
             continue;
         }
-        let off = t - 0.5 * (a + b);
+        let off = t - b.center;
         if off.abs() < 0.5 * width {
             return Some((lane.id, off));
         }

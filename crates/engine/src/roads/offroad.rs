@@ -20,10 +20,5 @@ pub(crate) fn road_width(road: &Road, s: f64, left: bool) -> f64 {
     let Some(sec) = road.lane_sections.get(section) else { return 0.0 };
     let base = road.lane_offset_at(s);
     let lanes = if left { &sec.left } else { &sec.right };
-    lanes
-        .iter()
-        .filter(|l| l.kind != LaneType::None)
-        .filter_map(|l| lane_borders(road, section, l.id, s))
-        .map(|(_, outer)| (outer - base).abs())
-        .fold(0.0, f64::max)
+    lanes.iter().filter(|l| l.kind != LaneType::None).filter_map(|l| lane_borders(road, section, l.id, s)).map(|b| (b.outer - base).abs()).fold(0.0, f64::max)
 }

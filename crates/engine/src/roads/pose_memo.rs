@@ -68,7 +68,7 @@ pub(crate) fn clear() {
 }
 
 type LaneKey = (usize, i32, u64);
-type LaneEntry = Option<(LaneKey, Option<(f64, f64)>)>;
+type LaneEntry = Option<(LaneKey, Option<opendrive::LaneBorders>)>;
 
 thread_local! {
     static LANES: RefCell<Vec<LaneEntry>> = RefCell::new(vec![None; SLOTS]);
@@ -76,7 +76,7 @@ thread_local! {
 
 /// Borders (inner, outer) of lane `lane_id` at `s` (section looked up), from the memo when it
 /// was asked before: an entity's lane is asked at the s where it was placed when it moves on.
-pub(crate) fn lane_borders_at(road: &Road, lane_id: i32, s: f64) -> Option<(f64, f64)> {
+pub(crate) fn lane_borders_at(road: &Road, lane_id: i32, s: f64) -> Option<opendrive::LaneBorders> {
     let k: LaneKey = (road as *const Road as usize, lane_id, s.to_bits());
     let h = (k.0 as u64 ^ k.2.rotate_left(17) ^ u64::from(lane_id as u32).rotate_left(29)).wrapping_mul(0x9E37_79B9_7F4A_7C15);
     let i = (h >> 56) as usize % SLOTS;

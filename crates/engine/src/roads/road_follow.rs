@@ -127,7 +127,7 @@ fn move_along(
     let Some(road) = net.roads.get(pos.road) else { return MoveStatus::EndOfRoad };
     let s0 = pos.s.clamp(0.0, road.length);
     let p = super::pose_memo::reference_pose(road, s0);
-    let t = super::pose_memo::lane_borders_at(road, pos.lane_id, s0).map_or(0.0, |(a, b)| 0.5 * (a + b)) + pos.offset;
+    let t = super::pose_memo::lane_borders_at(road, pos.lane_id, s0).map_or(0.0, |b| b.center) + pos.offset;
     // Distance along the lane to distance along the reference line.
     let scale = if along_lane { (1.0 - p.curvature * t).max(0.1) } else { 1.0 };
     let ds = pos.dir * dist / scale;
@@ -455,7 +455,7 @@ fn follow_section_change(net: &RoadNetwork, pos: &mut LanePos, before: usize, no
     }
     // The old lane's centre at this s, its section's widths carried on past its end.
     let Some(old) = lane_borders(road, before, old_lane, pos.s) else { return };
-    if let Some((lane_id, _)) = super::lane_snap::snap(road, now, pos.s, 0.5 * (old.0 + old.1), sidewalks) {
+    if let Some((lane_id, _)) = super::lane_snap::snap(road, now, pos.s, old.center, sidewalks) {
         pos.lane_id = lane_id;
     }
 }

@@ -26,11 +26,11 @@ pub(crate) fn leave_zero_width_lane_in(net: &RoadNetwork, pos: &mut LanePos, sec
         return false;
     }
     // Memoised: the pose of this step asks for the same borders next.
-    let Some((a, b)) = super::pose_memo::lane_borders_at(road, pos.lane_id, pos.s) else { return false };
-    if pos.lane_id == 0 || (b - a).abs() >= ZERO_WIDTH {
+    let Some(b) = super::pose_memo::lane_borders_at(road, pos.lane_id, pos.s) else { return false };
+    if pos.lane_id == 0 || b.width() >= ZERO_WIDTH {
         return false;
     }
-    let t = 0.5 * (a + b) + pos.offset;
+    let t = b.center + pos.offset;
     let side = pos.lane_id.signum();
     let Some((lane_id, _)) = super::lane_snap::snap_on_side(road, section, pos.s, t, sidewalks, side) else { return false };
     if lane_id == pos.lane_id {

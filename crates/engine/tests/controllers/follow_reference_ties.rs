@@ -17,6 +17,13 @@
 //! its line and the turn goes the other way. Fixture
 //! `follow_reference_reversing_world_placed.xosc`.
 //!
+//! The same with the Ego placed at a lane centre that does not add up exactly in binary:
+//! esmini's LaneSection::GetCenterOffset takes the summed widths out to the lane's outer border
+//! less half its width, 10.4 − 1.95 = 8.450000000000001 for lane 3 of
+//! straight_odd_widths.xodr (widths 2.6, 3.9, 3.9), while the reference, placed by a
+//! RoadPosition at t = 8.45, sits on 8.45: the Ego is a hair left of the reference's line and,
+//! reversing, turns its wheels right. Fixture `follow_reference_reversing_lane_centre.xosc`.
+//!
 //! Numbers from esmini 3.6.0's runs.
 
 use crate::common::oracle::{assert_esmini_pose_at, assert_matches_esmini, run_fixture_scenario};
@@ -25,6 +32,7 @@ use crate::common::*;
 const FIXTURE: &str = "follow_reference_facing_away.xosc";
 const REVERSING: &str = "follow_reference_reversing_on_line.xosc";
 const WORLD_PLACED: &str = "follow_reference_reversing_world_placed.xosc";
+const LANE_CENTRE: &str = "follow_reference_reversing_lane_centre.xosc";
 
 #[test]
 fn a_reference_facing_the_other_way_turns_the_follower_left() {
@@ -63,4 +71,18 @@ fn a_reference_placed_in_the_world_lies_a_hair_right_of_its_lane_centre() {
     assert_esmini_pose_at(&run, "Ego", 1.0, 88.106302, -3.351319, 1.335193);
     assert_esmini_pose_at(&run, "Ego", 5.0, 84.999724, -6.172464, 6.053831);
     assert_matches_esmini(WORLD_PLACED, &run, 1e-3);
+}
+
+#[test]
+fn a_lane_centre_summed_as_esmini_sums_it_lies_a_hair_left_of_the_reference() {
+    let run = run_fixture_scenario(LANE_CENTRE, 20.0);
+    // Backwards with the wheels turned right: the heading goes up from 0 and the rear swings
+    // left of the lane centre (y = 8.45).
+    let early = at(&run, "Ego", 0.1);
+    assert!(early.speed < 0.0 && early.y > 8.45 && early.h > 0.0 && early.h < 1.0, "{early:?}");
+    assert_esmini_pose_at(&run, "Ego", 0.1, 99.715095, 8.520089, 0.112615);
+    assert_esmini_pose_at(&run, "Ego", 0.5, 93.107972, 10.009184, 5.630792);
+    assert_esmini_pose_at(&run, "Ego", 1.0, 88.106302, 6.848681, 1.335193);
+    assert_esmini_pose_at(&run, "Ego", 5.0, 84.999724, 4.027536, 6.053831);
+    assert_matches_esmini(LANE_CENTRE, &run, 1e-3);
 }

@@ -177,7 +177,7 @@ pub(crate) fn far_tangent(net: &RoadNetwork, memo: &mut OsiMemo, view: Viewpoint
                     if !ahead {
                         continue;
                     }
-                    let width = crate::roads::pose_memo::lane_borders_at(road, me.lane_id, p.s).map_or(0.0, |(a, b)| (b - a).abs());
+                    let width = crate::roads::pose_memo::lane_borders_at(road, me.lane_id, p.s).map_or(0.0, |b| b.width());
                     let mut ly = if m == 0 { 1.0 } else { -1.0 } * width / 2.0;
                     if direction != 1 {
                         ly = -ly;
