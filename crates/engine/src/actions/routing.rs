@@ -43,14 +43,30 @@ impl<'a> Sim<'a> {
             self.warn_action(slot, "AcquirePositionAction: the entity or the target is not on a lane".into());
             return ActionRt::Done;
         };
-        match routing::Route::plan(net, &[from, to], &[routing::Strategy::Shortest, routing::Strategy::Shortest], false) {
+        let strategies = [routing::Strategy::Shortest, routing::Strategy::Shortest];
+        let mut planned = routing::Route::plan(net, &[from, to], &strategies, false);
+        // esmini's RoadPath::Calculate joins two waypoints on one road by their s difference,
+        // whichever way that runs (behind the entity too): the route is that road alone and
+        // crosses no junction, where the entity then takes its lane's first connection
+        // (Position::MoveToConnectingRoad with a valid route). A route of that road alone:
+        if from.road == to.road && planned.as_ref().map_or(true, |r| r.legs().iter().any(|l| l.road != from.road)) {
+            planned = routing::Route::plan(net, &[from, from], &strategies, false);
+        }
+        match planned {
             Ok(r) => {
                 self.tell_route_follower_waypoints(e, &[from, to], &r);
                 if let Some(en) = self.entities.get_mut(e) {
                     en.route = Some(Arc::new(r));
                 }
             }
-            Err(msg) => self.warn_action(slot, format!("AcquirePositionAction: no route to the target: {msg}")),
+            Err(msg) => {
+                self.warn_action(slot, format!("AcquirePositionAction: no route to the target: {msg}"));
+                // The action's route replaces the old one even so; invalid, it is ignored
+                // (Route::CheckValid), as if the entity had none.
+                if let Some(en) = self.entities.get_mut(e) {
+                    en.route = None;
+                }
+            }
         }
         ActionRt::Done
     }

@@ -1,6 +1,7 @@
 //! RoutePosition, AssignRouteAction and AcquirePositionAction on the straight fixture road
-//! (one road along +x; lanes −1 and −2 drive along +s, lane 1 against).
+//! (one road along +x; lanes −1 and −2 drive along +s, lane 1 against), and one on the crossing.
 
+use crate::common::oracle::{assert_esmini_pose_at, run_fixture_scenario};
 use crate::common::*;
 
 fn lane(s: f64, lane: i32) -> String {
@@ -53,4 +54,20 @@ fn assign_route_and_acquire_position_complete_at_once_and_warn_about_nothing() {
     assert_eq!(event_time(&run, "AcquireAction", "end"), event_time(&run, "AcquireAction", "start"));
     // The route changes nothing on a road without junctions: 10 m/s along the lane.
     assert!(close(at(&run, "Ego", 2.0).x, 30.0, 1e-9));
+}
+
+#[test]
+fn acquire_position_behind_on_the_same_road_routes_along_that_road_alone() {
+    // Fixture `acquire_position_behind_on_same_road.xosc` on crossing.xodr: Car drives west on
+    // road 1 (lane 1, against s) towards the junction and at 0.5 s acquires a position behind
+    // it on the same road (lane −1, s = 200). esmini's RoadPath::Calculate joins two waypoints
+    // on one road by their s difference, so the route is valid and is road 1 alone: at the
+    // junction Route::GetRoadAtOtherEndOfIncomingRoad finds no road and
+    // Position::MoveToConnectingRoad takes the lane's first connection, the right turn north.
+    // Other, on road 3 without a route, goes straight on. Poses are esmini 3.6.0's.
+    let run = run_fixture_scenario("acquire_position_behind_on_same_road.xosc", 8.0);
+    assert!(run.warnings.is_empty(), "{:?}", run.warnings);
+    assert_esmini_pose_at(&run, "Car", 7.0, 10.492948, 4.42186, 2.593647);
+    assert_esmini_pose_at(&run, "Car", 8.0, 3.769623, 11.6551, 2.045702);
+    assert_esmini_pose_at(&run, "Other", 8.0, 0.0, -1.75, 0.0);
 }
