@@ -7,7 +7,7 @@ use crate::entities::Entity;
 use crate::positions::{resolve, Placement, PositionError};
 use opendrive::RoadNetwork;
 use openscenario::{Orientation, ReferenceContext, Trajectory};
-use trajectory::{Path, Pose};
+use trajectory::{Interpolation, Path, Pose};
 
 pub(crate) fn trajectory_placement(
     traj: &Trajectory,
@@ -18,7 +18,15 @@ pub(crate) fn trajectory_placement(
     entities: &[Entity],
 ) -> Result<Placement, PositionError> {
     let resolver = |p: &openscenario::Position| vertex_pose(p, net, entities);
-    let path = crate::position_cache::path(traj, || Path::from_trajectory(traj, Pose::default(), &resolver).map_err(|e| e.to_string()));
+    // esmini's OSCPositionTrajectory evaluates the shape as read: a polyline's heading is not
+    // interpolated (PolyLineBase's default INTERPOLATE_NONE; only FollowTrajectoryAction::Start
+    // sets a mode), so each segment faces as the vertex it starts at.
+    let build = || {
+        let mut p = Path::from_trajectory(traj, Pose::default(), &resolver).map_err(|e| e.to_string())?;
+        p.set_interpolation(Interpolation::None);
+        Ok(p)
+    };
+    let path = crate::position_cache::path(traj, build);
     let path = path.map_err(|e| format!("trajectory `{}`: {e}", traj.name))?;
     let p = path.pose_at(s);
     let (x, y) = p.offset(t.unwrap_or(0.0));

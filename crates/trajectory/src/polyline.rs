@@ -22,6 +22,10 @@ pub enum Interpolation {
     Corner,
     /// Linearly from vertex to vertex over each whole segment.
     Segment,
+    /// Not at all: each segment keeps the heading of the vertex it starts at (esmini's
+    /// INTERPOLATE_NONE, the mode of a polyline no FollowTrajectoryAction has set, e.g. one
+    /// read for a TrajectoryPosition).
+    None,
 }
 
 #[derive(Debug, Clone, PartialEq)]
@@ -150,6 +154,7 @@ impl Polyline {
                 (h + u * turn, if len > 0.0 { turn / len } else { 0.0 })
             }
             Interpolation::Corner => self.corner_heading(i, h, hn, len, local),
+            Interpolation::None => (h, 0.0),
         };
         PathPoint { s, x: lerp(0), y: lerp(1), z: lerp(2), heading: angle::normalize(heading), curvature }
     }

@@ -17,6 +17,7 @@ mod route_position_from_current_entity;
 mod route_position_missing_lane_waypoint;
 mod route_position_on_missing_lane;
 mod route_position_past_route_end;
+mod trajectory_position_polyline_headings;
 mod world_point_beside_a_road_end;
 mod world_point_off_road;
 mod world_point_on_overlapping_roads;
