@@ -258,7 +258,13 @@ pub(crate) fn to_point(net: Option<&RoadNetwork>, a: &Entity, x: f64, y: f64, cs
             // corpus (the speed bench), and gave the same verdicts on 11,983 generated
             // scenarios: the two differ only where roads overlap.
             let hint = a.lane.map(|l| (l.road, l.s));
-            if let Some(lp) = crate::roads::locate::world_to_lane_memo(n, x, y, hint) {
+            // Where the point is off the entity's road: with freespace
+            // (FreeSpaceDistancePointRoadLane) it is mapped from the entity's position, without
+            // it (Position::Distance) by a fresh Position, which on roads lying equally near
+            // keeps the first (the connecting roads through a junction's centre)
+            let located =
+                if freespace { crate::roads::locate::world_to_lane_memo(n, x, y, hint) } else { crate::roads::locate::world_to_lane_fresh(n, x, y, hint) };
+            if let Some(lp) = located {
                 p.lane = Some(crate::roads::LanePos { road: lp.road, lane_id: lp.lane_id, s: lp.s, offset: lp.offset, dir: 1.0 });
                 // a box to a point: its corners, not its extents (FreeSpaceDistancePointRoadLane),
                 // each corner's Position::Delta to the point, along the road path where they

@@ -161,6 +161,22 @@ fn on_chosen_segment(net: &RoadNetwork, lp: LanePosition, x: f64, y: f64, z: f64
     net.locate_at_s_by(lp.road, x, y, s, &surface_t)
 }
 
+/// A point measured to as esmini's Position::Distance maps it, by a fresh Position (no current
+/// road): the hinted road when the point lies on it (a shortcut, see `conditions::distance::
+/// to_point`), else the memoised full search without a current road, so that roads the point
+/// lies on equally (the connecting roads crossing a junction's centre) go to the first road, as
+/// XYZ2TrackPos keeps it, not to the one whose lane centre is a rounding nearer.
+pub(crate) fn world_to_lane_fresh(net: &RoadNetwork, x: f64, y: f64, hint: Option<(usize, f64)>) -> Option<LanePosition> {
+    if let Some((road, s)) = hint {
+        if let Some(p) = net.locate_on_road_by(road, x, y, s, &surface_t) {
+            if p.is_on_road() {
+                return Some(unshifted(net, p, x, y));
+            }
+        }
+    }
+    world_to_lane_memo(net, x, y, None)
+}
+
 /// [`world_to_lane`] for points that are asked about again and again (fixed positions): the
 /// hinted road first, then a memo of full searches.
 pub(crate) fn world_to_lane_memo(net: &RoadNetwork, x: f64, y: f64, hint: Option<(usize, f64)>) -> Option<LanePosition> {

@@ -19,6 +19,7 @@ mod lateral_road_distance_sign;
 mod offroad_lane_offset;
 mod reach_position_all;
 mod standstill_clock;
+mod ttc_point_on_overlapping_roads;
 mod ttc_relative_position;
 mod undefined_headway_ttc;
 mod vertical_motion;
