@@ -52,18 +52,7 @@ pub(crate) fn surface_pitch_roll(net: &RoadNetwork, e: &Entity) -> (f64, f64) {
 /// guard against gimbal lock; with no pitch and roll the heading is `entities::
 /// esmini_euler_heading`'s to the bit.
 pub(crate) fn compose(road: [f64; 3], rel: [f64; 3]) -> [f64; 3] {
-    let m0 = rotation(road);
-    let m1 = rotation(rel);
-    let mut m = [[0.0; 3]; 3];
-    for (i, row) in m.iter_mut().enumerate() {
-        for (j, v) in row.iter_mut().enumerate() {
-            for k in 0..3 {
-                *v += m0[i][k] * m1[k][j];
-            }
-        }
-    }
-    m[0][0] = crate::entities::gimbal_guard(m[0][0]);
-    m[2][2] = crate::entities::gimbal_guard(m[2][2]);
+    let m = guarded_product(rotation(road), rotation(rel));
     let h = crate::angles::wrap_2pi(m[1][0].atan2(m[0][0]));
     let p = (-m[2][0]).atan2((m[2][1] * m[2][1] + m[2][2] * m[2][2]).sqrt());
     let r = m[2][1].atan2(m[2][2]);
@@ -77,20 +66,25 @@ pub(crate) fn compose(road: [f64; 3], rel: [f64; 3]) -> [f64; 3] {
 /// that a turn of a right angle falls on esmini's side of it (the guard keeps the sign of a
 /// cosine that is a rounding error away from 0).
 pub(crate) fn relative(road: [f64; 3], abs: [f64; 3]) -> [f64; 3] {
-    let inv = invert(rotation(road));
-    let m1 = rotation(abs);
+    let m = guarded_product(invert(rotation(road)), rotation(abs));
+    let wrap = crate::angles::wrap_2pi;
+    [wrap(m[1][0].atan2(m[0][0])), wrap((-m[2][0]).atan2((m[2][1] * m[2][1] + m[2][2] * m[2][2]).sqrt())), wrap(m[2][1].atan2(m[2][2]))]
+}
+
+/// The product a·b, its terms summed in esmini's order, with esmini's guard against gimbal
+/// lock on the two cosines the angles are read from (`entities::gimbal_guard`).
+fn guarded_product(a: [[f64; 3]; 3], b: [[f64; 3]; 3]) -> [[f64; 3]; 3] {
     let mut m = [[0.0; 3]; 3];
     for (i, row) in m.iter_mut().enumerate() {
         for (j, v) in row.iter_mut().enumerate() {
             for k in 0..3 {
-                *v += inv[i][k] * m1[k][j];
+                *v += a[i][k] * b[k][j];
             }
         }
     }
     m[0][0] = crate::entities::gimbal_guard(m[0][0]);
     m[2][2] = crate::entities::gimbal_guard(m[2][2]);
-    let wrap = crate::angles::wrap_2pi;
-    [wrap(m[1][0].atan2(m[0][0])), wrap((-m[2][0]).atan2((m[2][1] * m[2][1] + m[2][2] * m[2][2]).sqrt())), wrap(m[2][1].atan2(m[2][2]))]
+    m
 }
 
 /// esmini's InvertMatrix3: Gauss-Jordan elimination on the matrix augmented with the identity,
