@@ -22,6 +22,7 @@ mod parse;
 pub mod projection;
 pub mod road_geometry;
 pub mod spatial_index;
+pub mod traffic_light;
 
 pub use diagnostic::{Diagnostic, LineCol};
 pub use driving_direction::{drives_along_s, driving_heading};
@@ -39,6 +40,7 @@ pub use network::{load, parse_str, Loaded, RoadNetwork};
 pub use osi_points::{osi_points, road_osi_points};
 pub use projection::LanePosition;
 pub use road_geometry::{LaneBorders, WorldPose};
+pub use traffic_light::traffic_light_lamps;
 
 // The README's example is compiled (and run, where it needs no file) with the doctests.
 #[cfg(doctest)]

@@ -6,8 +6,9 @@
 //! (`Entities::addObject`), in esmini's object order. So an entity's OSI id is the number of
 //! road items plus its object index, and a lane's id says where it stands in the file.
 //! Road-mark lines come from a mark's `<type>`/`<explicit>` lines, else from esmini's stand-in
-//! lines for its type (one, or two for the double types). Not counted (each a warning where the
-//! map has them): the lamps of traffic lights and the items of tunnels.
+//! lines for its type (one, or two for the double types). A traffic light's lamps take their ids
+//! just before the light (`opendrive::traffic_light_lamps` counts them). Not checked against
+//! esmini: maps with tunnels (esmini builds OSI items for a tunnel's walls).
 
 use std::collections::HashMap;
 
@@ -63,8 +64,8 @@ pub fn is_osi_intersection(net: &RoadNetwork, j: &opendrive::Junction) -> bool {
 }
 
 impl GlobalIds {
-    /// The ids of `net`'s items (none without a road network); `warnings` gets what is not counted.
-    pub fn new(net: Option<&RoadNetwork>, warnings: &mut Vec<String>) -> GlobalIds {
+    /// The ids of `net`'s items (none without a road network).
+    pub fn new(net: Option<&RoadNetwork>) -> GlobalIds {
         let mut ids = GlobalIds::default();
         let Some(net) = net else { return ids };
         let mut next = 0u64;
@@ -86,7 +87,12 @@ impl GlobalIds {
                     }
                 }
             }
-            for _ in &road.signals {
+            for signal in &road.signals {
+                // a traffic light's lamps are numbered as it is built, before the light itself
+                // (TrafficLight::SetTrafficLightInfo, then Signal::SetGlobalId)
+                for _ in 0..opendrive::traffic_light_lamps(signal).unwrap_or(0) {
+                    take();
+                }
                 take();
             }
             for _ in &road.objects {
@@ -107,9 +113,6 @@ impl GlobalIds {
                     }
                 }
             }
-        }
-        if net.roads.iter().any(|r| r.signals.iter().any(|s| s.dynamic)) {
-            warnings.push("OSI ids: the lamps esmini numbers for each traffic light are not counted, so ids after them may differ from esmini's".into());
         }
         ids.first_entity = next;
         ids

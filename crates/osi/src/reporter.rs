@@ -50,7 +50,7 @@ impl Reporter {
     /// `Trace::entities` order).
     pub fn new(scenario: &Scenario, roads: Option<&RoadNetwork>, names: &[String]) -> Reporter {
         let mut warnings = Vec::new();
-        let ids = GlobalIds::new(roads, &mut warnings);
+        let ids = GlobalIds::new(roads);
         let order = esmini_objects(scenario);
         let objects: Vec<Option<Object>> = names
             .iter()

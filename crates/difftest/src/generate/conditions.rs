@@ -5,7 +5,7 @@
 //! system, relative clearance, angle, end of road, off road, collision), with an edge, a delay,
 //! a triggering-entities rule, and condition groups (AND) under a trigger (OR).
 
-use super::global_actions::{PHASES, SIGNAL_STATES};
+use super::global_actions::PHASES;
 use super::positions::Scope;
 use super::{Area, EntityKind, Gen};
 
@@ -69,13 +69,18 @@ impl Gen<'_> {
                 let (kind, name) = self.elements[i].clone();
                 let state =
                     self.pick(&["startTransition", "endTransition", "completeState", "runningState", "standbyState", "stopTransition", "skipTransition"]);
-                self.feature(format!("storyboard-state:{kind}/{state}"));
+                if kind == "action" {
+                    self.action_state_refs.push((name.clone(), state.to_string()));
+                } else {
+                    self.feature(format!("storyboard-state:{kind}/{state}"));
+                }
                 format!(r#"<StoryboardElementStateCondition storyboardElementType="{kind}" storyboardElementRef="{name}" state="{state}"/>"#)
             }
             "TrafficSignalCondition" => {
                 self.uses_signals = true;
                 let s = self.map.signals[self.pick_index(self.map.signals.len())].clone();
-                format!(r#"<TrafficSignalCondition name="{s}" state="{}"/>"#, self.pick(&SIGNAL_STATES))
+                let states = s.states();
+                format!(r#"<TrafficSignalCondition name="{}" state="{}"/>"#, s.id, states[self.pick_index(states.len())])
             }
             "TrafficSignalControllerCondition" => {
                 self.uses_signals = true;

@@ -5,10 +5,9 @@
 use super::positions::Scope;
 use super::{Declared, Gen};
 
-/// The lamp states the generator's signals take (red;yellow;green).
-pub(super) const SIGNAL_STATES: [&str; 3] = ["on;off;off", "off;on;off", "off;off;on"];
-/// The phases of the generator's signal controller: (name, duration s, state of every signal).
-pub(super) const PHASES: [(&str, f64, &str); 3] = [("stop", 4.0, "on;off;off"), ("ready", 2.0, "off;on;off"), ("go", 5.0, "off;off;on")];
+/// The phases of the generator's signal controller: (name, duration s); each signal's state
+/// in a phase is `MapSignal::phase_state`.
+pub(super) const PHASES: [(&str, f64); 3] = [("stop", 4.0), ("ready", 2.0), ("go", 5.0)];
 
 impl Gen<'_> {
     /// A parameter (double): mostly the first one declared, else a new one; its name.
@@ -60,6 +59,10 @@ impl Gen<'_> {
         }
         let k = self.pick(&kinds);
         self.feature(format!("action:{k}"));
+        // esmini 3.6.0 reads these with a warning and keeps no action (parseOSCGlobalAction)
+        if matches!(k, "ParameterModifyAction" | "TrafficSignalControllerAction") {
+            self.dropped_actions.push(self.current_event);
+        }
         let body = match k {
             "ParameterSetAction" => {
                 let p = self.parameter();
@@ -100,7 +103,9 @@ impl Gen<'_> {
             "TrafficSignalStateAction" => {
                 self.uses_signals = true;
                 let signal = self.map.signals[self.pick_index(self.map.signals.len())].clone();
-                let state = self.pick(&SIGNAL_STATES);
+                let states = signal.states();
+                let state = states[self.pick_index(states.len())].clone();
+                let signal = signal.id;
                 format!(
                     r#"<InfrastructureAction><TrafficSignalAction><TrafficSignalStateAction name="{signal}" state="{state}"/></TrafficSignalAction></InfrastructureAction>"#
                 )
@@ -127,8 +132,10 @@ impl Gen<'_> {
     pub(crate) fn signal_controllers(&self) -> String {
         let phases: String = PHASES
             .iter()
-            .map(|(name, duration, state)| {
-                let states: String = self.map.signals.iter().map(|s| format!(r#"<TrafficSignalState trafficSignalId="{s}" state="{state}"/>"#)).collect();
+            .enumerate()
+            .map(|(phase, (name, duration))| {
+                let states: String =
+                    self.map.signals.iter().map(|s| format!(r#"<TrafficSignalState trafficSignalId="{}" state="{}"/>"#, s.id, s.phase_state(phase))).collect();
                 format!(r#"<Phase name="{name}" duration="{duration}">{states}</Phase>"#)
             })
             .collect();

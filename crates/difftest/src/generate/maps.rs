@@ -27,10 +27,40 @@ pub struct MapChoice {
     pub label: String,
     pub net: Arc<RoadNetwork>,
     pub spots: Vec<Spot>,
-    /// Ids of the map's dynamic signals (traffic lights a scenario may switch).
-    pub signals: Vec<String>,
+    /// The map's traffic lights a scenario may switch, each with its lamp count.
+    pub signals: Vec<MapSignal>,
     /// Some road drives on the left.
     pub left_hand: bool,
+}
+
+/// A traffic light of the map: its signal id and how many lamps it has.
+#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord)]
+pub struct MapSignal {
+    pub id: String,
+    pub lamps: usize,
+}
+
+impl MapSignal {
+    /// The states a scenario may set: one lamp on, the others off, for each lamp.
+    pub fn states(&self) -> Vec<String> {
+        (0..self.lamps).map(|on| self.one_on(on)).collect()
+    }
+
+    /// The state of phase `phase` (0 stop, 1 ready, 2 go) of the generator's signal controller:
+    /// the top lamp for stop, the bottom one for go, the middle one (or the top) for ready.
+    pub fn phase_state(&self, phase: usize) -> String {
+        let on = match phase {
+            0 => 0,
+            1 if self.lamps >= 3 => 1,
+            1 => 0,
+            _ => self.lamps.saturating_sub(1),
+        };
+        self.one_on(on)
+    }
+
+    fn one_on(&self, on: usize) -> String {
+        (0..self.lamps).map(|i| if i == on { "on" } else { "off" }).collect::<Vec<_>>().join(";")
+    }
 }
 
 impl MapChoice {
@@ -39,7 +69,14 @@ impl MapChoice {
         if !spots.iter().any(|s| !s.sidewalk) {
             return None;
         }
-        let signals: BTreeSet<String> = net.roads.iter().flat_map(|r| r.signals.iter()).filter(|s| s.dynamic).map(|s| s.id.clone()).collect();
+        // esmini switches only the traffic lights it knows, and wants a state of as many lamp
+        // modes as the light has lamps (TrafficLight::CheckValidLampModes)
+        let signals: BTreeSet<MapSignal> = net
+            .roads
+            .iter()
+            .flat_map(|r| r.signals.iter())
+            .filter_map(|s| Some(MapSignal { id: s.id.clone(), lamps: opendrive::traffic_light_lamps(s)? }))
+            .collect();
         let left_hand = net.roads.iter().any(|r| r.rule == TrafficRule::LeftHand);
         Some(MapChoice { name, path, label: label.to_string(), net: Arc::new(net), spots, signals: signals.into_iter().collect(), left_hand })
     }

@@ -151,6 +151,13 @@ pub(crate) struct Gen<'a> {
     pub rev_minor: u32,
     /// Entities whose ObjectController wrapper has a name (`{entity}Ctrl`).
     pub named_wrappers: Vec<String>,
+    /// Events whose action esmini 3.6.0 drops when reading (a ParameterModifyAction, a
+    /// TrafficSignalControllerAction): a StoryboardElementStateCondition on such an action is
+    /// fatal to esmini ("StoryboardElement … not found"), so it is turned onto the event.
+    pub dropped_actions: Vec<usize>,
+    /// The (action name, state) of every StoryboardElementStateCondition on an action; their
+    /// features are named once the dropped actions are known.
+    pub action_state_refs: Vec<(String, String)>,
 }
 
 impl<'a> Gen<'a> {
@@ -172,6 +179,8 @@ impl<'a> Gen<'a> {
             rich: 0,
             rev_minor: 3,
             named_wrappers: Vec::new(),
+            dropped_actions: Vec::new(),
+            action_state_refs: Vec::new(),
         }
     }
 

@@ -254,12 +254,27 @@ impl Gen<'_> {
         for k in 0..events {
             groups.push_str(&self.event(k, &mut pending_activation));
         }
+        let groups = self.retarget_dropped_actions(groups);
         let stop = self.num(6.0, 15.0);
         let stop_trigger = format!(
             r#"<StopTrigger><ConditionGroup><Condition name="stop" delay="0" conditionEdge="none"><ByValueCondition><SimulationTimeCondition value="{stop}" rule="greaterThan"/></ByValueCondition></Condition></ConditionGroup></StopTrigger>"#
         );
         let init: String = init.iter().map(|(n, a)| format!("<Private entityRef=\"{n}\">{a}</Private>\n")).collect();
         self.document(seed, index, &definitions, &init, &groups, &stop_trigger)
+    }
+
+    /// Turns every StoryboardElementStateCondition on an action esmini drops onto that
+    /// action's event (same name number), and names the conditions' features.
+    fn retarget_dropped_actions(&mut self, mut groups: String) -> String {
+        for k in &self.dropped_actions {
+            let on_action = format!(r#"storyboardElementType="action" storyboardElementRef="A{k}""#);
+            groups = groups.replace(&on_action, &format!(r#"storyboardElementType="event" storyboardElementRef="E{k}""#));
+        }
+        for (name, state) in std::mem::take(&mut self.action_state_refs) {
+            let dropped = self.dropped_actions.iter().any(|k| name == format!("A{k}"));
+            self.feature(format!("storyboard-state:{}/{state}", if dropped { "event" } else { "action" }));
+        }
+        groups
     }
 
     fn document(&self, seed: u64, index: u64, entities: &str, init: &str, groups: &str, stop_trigger: &str) -> String {

@@ -1,0 +1,127 @@
+//! The lamps of a traffic light: how many a signal of a given type has, as esmini 3.6.0 reads
+//! them. esmini refuses a signal state (TrafficSignalStateAction, TrafficSignalCondition) whose
+//! number of `;`-separated lamp modes differs from the light's lamp count, so whoever writes a
+//! state needs the count.
+
+use crate::model::signals::Signal;
+
+/// Lamp counts by `type[.subtype]` (the German catalogue's 1000xxx lights), as esmini's
+/// `traffic_light_type_map` lays them out (RoadManager.hpp).
+const LAMPS: &[(&str, usize)] = &[
+    ("1000001", 3),
+    ("1000011.10", 3),
+    ("1000011.20", 3),
+    ("1000011.30", 3),
+    ("1000011.40", 3),
+    ("1000011.50", 3),
+    ("1000002.30", 3),
+    ("1000013.10", 3),
+    ("1000002", 2),
+    ("1000009.10", 2),
+    ("1000009.20", 2),
+    ("1000009.30", 2),
+    ("1000010.10", 2),
+    ("1000010.20", 2),
+    ("1000007", 2),
+    ("1000013", 2),
+];
+
+/// One-lamp lights: these types, bare or with any subtype esmini lists
+/// (1000002.10/.20, 1000007.10-.30, 1000008, 1000012, 1000013.20-.100, 1000014.10, 1000015,
+/// 1000020, 1000021, 1000022.10/.20, 1000023).
+fn one_lamp(key: &str) -> bool {
+    const LISTED: &[&str] =
+        &["1000002.10", "1000002.20", "1000014.10", "1000007.10", "1000007.20", "1000007.30", "1000015", "1000021", "1000022.10", "1000022.20", "1000023"];
+    if LISTED.contains(&key) {
+        return true;
+    }
+    let tens = |base: &str, from: u32| {
+        key == base
+            || key
+                .strip_prefix(base)
+                .and_then(|r| r.strip_prefix('.'))
+                .and_then(|n| n.parse::<u32>().ok())
+                .is_some_and(|n| n % 10 == 0 && (from..=100).contains(&n))
+    };
+    ["1000008", "1000012", "1000020"].iter().any(|b| tens(b, 10)) || (key != "1000013" && tens("1000013", 20))
+}
+
+/// The number of lamps esmini gives `signal`, or None when esmini does not read it as a
+/// traffic light it knows. esmini makes a traffic light of a dynamic signal of country
+/// `OpenDRIVE` whose `countryRevision` is absent (RoadManager's OpenDrive::LoadOpenDriveFile:
+/// the revision defaults to 2013 and is read only when the attribute is empty, and a light
+/// needs a revision before 2013), then looks its `type` (dots removed) `.subtype` (unless
+/// empty, `none` or `-1`) `-value` (when given) up in its table (TrafficLight::SetTrafficLightInfo).
+pub fn traffic_light_lamps(signal: &Signal) -> Option<usize> {
+    let opendrive = signal.country.as_deref().is_some_and(|c| c.eq_ignore_ascii_case("opendrive"));
+    if !signal.dynamic || !opendrive || signal.country_revision.is_some() || signal.value.is_some() {
+        return None;
+    }
+    let mut key: String = signal.type_raw.chars().filter(|c| *c != '.').collect();
+    if let Some(sub) = signal.subtype.as_deref().filter(|s| !s.is_empty() && *s != "none" && *s != "-1") {
+        key.push('.');
+        key.push_str(sub);
+    }
+    LAMPS.iter().find(|(k, _)| *k == key).map(|(_, n)| *n).or_else(|| one_lamp(&key).then_some(1))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::signals::SignalOrientation;
+
+    fn light(kind: &str, subtype: Option<&str>) -> Signal {
+        Signal {
+            id: "1".into(),
+            name: None,
+            s: 0.0,
+            t: 0.0,
+            z_offset: 0.0,
+            h_offset: 0.0,
+            pitch: 0.0,
+            roll: 0.0,
+            country: Some("OpenDRIVE".into()),
+            country_revision: None,
+            type_raw: kind.into(),
+            subtype: subtype.map(Into::into),
+            value: None,
+            unit: None,
+            text: None,
+            dynamic: true,
+            orientation: SignalOrientation::Both,
+            height: None,
+            width: None,
+            validity: Vec::new(),
+        }
+    }
+
+    #[test]
+    fn lamp_counts_follow_type_and_subtype() {
+        assert_eq!(traffic_light_lamps(&light("1000001", Some("-1"))), Some(3));
+        assert_eq!(traffic_light_lamps(&light("1000002", Some("-1"))), Some(2));
+        assert_eq!(traffic_light_lamps(&light("1000002", Some("10"))), Some(1));
+        assert_eq!(traffic_light_lamps(&light("1000002", Some("30"))), Some(3));
+        assert_eq!(traffic_light_lamps(&light("1.000.001", None)), Some(3));
+        assert_eq!(traffic_light_lamps(&light("1000013", Some("none"))), Some(2));
+        assert_eq!(traffic_light_lamps(&light("1000013", Some("50"))), Some(1));
+        assert_eq!(traffic_light_lamps(&light("1000020", Some("100"))), Some(1));
+        assert_eq!(traffic_light_lamps(&light("1000020", Some("110"))), None);
+        assert_eq!(traffic_light_lamps(&light("206", None)), None);
+    }
+
+    #[test]
+    fn only_dynamic_opendrive_lights_without_revision_or_value() {
+        let mut s = light("1000001", None);
+        s.country_revision = Some("2017".into());
+        assert_eq!(traffic_light_lamps(&s), None);
+        let mut s = light("1000001", None);
+        s.country = Some("DE".into());
+        assert_eq!(traffic_light_lamps(&s), None);
+        let mut s = light("1000001", None);
+        s.dynamic = false;
+        assert_eq!(traffic_light_lamps(&s), None);
+        let mut s = light("1000001", None);
+        s.value = Some(1.0);
+        assert_eq!(traffic_light_lamps(&s), None);
+    }
+}
