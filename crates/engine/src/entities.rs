@@ -335,7 +335,7 @@ impl Entity {
                 self.z = z.unwrap_or_else(|| {
                     net.roads.get(lp.road).map_or(0.0, |r| {
                         let raised = crate::roads::pose_memo::lane_borders_at(r, lane_id, lp.s)
-                            .and_then(|b| crate::roads::lane_height::lift(r, lp.s, lane_id, offset, (b.inner, b.outer)))
+                            .and_then(|b| crate::roads::lane_height::lift(r, lp.s, lane_id, offset, b))
                             .map_or(0.0, |lift| lift.1);
                         r.elevation_at(lp.s) + crate::roads::banking::banked(r, lp.s, lp.t, 0.0).1 + raised
                     })

@@ -2,19 +2,19 @@
 //! esmini places it in the world: Position::Track2XYZ turns the point (0, t, height) by the
 //! road's heading, pitch and roll, so the height lifts the point along the road's tilted normal.
 
-use opendrive::Road;
+use opendrive::{LaneBorders, Road};
 
 /// The shift lane `lane_id`'s height gives a point `offset` m from the lane's centre at `s`
-/// (`borders`: the lane's inner and outer t there): across the reference line (horizontal),
+/// (`borders`: the lane's borders there): across the reference line (horizontal),
 /// up, and along the reference heading; `None` when the lane has no height there to give.
 /// The roll and pitch are those of [`super::banking::banked`].
-pub(crate) fn lift(road: &Road, s: f64, lane_id: i32, offset: f64, borders: (f64, f64)) -> Option<(f64, f64, f64)> {
+pub(crate) fn lift(road: &Road, s: f64, lane_id: i32, offset: f64, borders: LaneBorders) -> Option<(f64, f64, f64)> {
     if !road.has_raised_lanes() {
         return None;
     }
     let section = road.lane_sections.get(road.section_index_at(s))?;
     let lane = section.lane(lane_id).filter(|l| !l.heights.is_empty())?;
-    let height = lane.height_at(s - section.s, offset, (borders.1 - borders.0).abs());
+    let height = lane.height_at(s - section.s, offset, borders.width());
     if height == 0.0 {
         return None;
     }

@@ -42,7 +42,7 @@ impl LanePos {
         // On a banked road t lies along the tilted surface (see banking.rs).
         let (mut th, mut dz, turn, mut along) = super::banking::banked(road, s, t, p.curvature);
         // a raised lane (kerb, sidewalk) lifts the point along the road's normal
-        if let Some((d_th, d_z, d_along)) = lane.and_then(|b| super::lane_height::lift(road, s, self.lane_id, self.offset, (b.inner, b.outer))) {
+        if let Some((d_th, d_z, d_along)) = lane.and_then(|b| super::lane_height::lift(road, s, self.lane_id, self.offset, b)) {
             th += d_th;
             dz += d_z;
             along += d_along;
