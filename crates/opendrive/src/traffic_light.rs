@@ -6,7 +6,7 @@
 use crate::model::signals::Signal;
 
 /// Lamp counts by `type[.subtype]` (the German catalogue's 1000xxx lights), as esmini's
-/// `traffic_light_type_map` lays them out (RoadManager.hpp).
+/// `traffic_light_type_map` lists them (RoadManager.hpp), every key spelled out.
 const LAMPS: &[(&str, usize)] = &[
     ("1000001", 3),
     ("1000011.10", 3),
@@ -24,27 +24,60 @@ const LAMPS: &[(&str, usize)] = &[
     ("1000010.20", 2),
     ("1000007", 2),
     ("1000013", 2),
+    ("1000002.10", 1),
+    ("1000002.20", 1),
+    ("1000014.10", 1),
+    ("1000007.10", 1),
+    ("1000015", 1),
+    ("1000007.20", 1),
+    ("1000013.20", 1),
+    ("1000007.30", 1),
+    ("1000013.30", 1),
+    ("1000013.40", 1),
+    ("1000013.50", 1),
+    ("1000013.60", 1),
+    ("1000013.70", 1),
+    ("1000013.80", 1),
+    ("1000013.90", 1),
+    ("1000013.100", 1),
+    ("1000020", 1),
+    ("1000008", 1),
+    ("1000012", 1),
+    ("1000020.10", 1),
+    ("1000008.10", 1),
+    ("1000012.10", 1),
+    ("1000020.20", 1),
+    ("1000008.20", 1),
+    ("1000012.20", 1),
+    ("1000020.30", 1),
+    ("1000008.30", 1),
+    ("1000012.30", 1),
+    ("1000020.40", 1),
+    ("1000008.40", 1),
+    ("1000012.40", 1),
+    ("1000020.50", 1),
+    ("1000008.50", 1),
+    ("1000012.50", 1),
+    ("1000020.60", 1),
+    ("1000008.60", 1),
+    ("1000012.60", 1),
+    ("1000020.70", 1),
+    ("1000008.70", 1),
+    ("1000012.70", 1),
+    ("1000020.80", 1),
+    ("1000008.80", 1),
+    ("1000012.80", 1),
+    ("1000020.90", 1),
+    ("1000008.90", 1),
+    ("1000012.90", 1),
+    ("1000020.100", 1),
+    ("1000008.100", 1),
+    ("1000012.100", 1),
+    ("1000021", 1),
+    ("1000022.10", 1),
+    ("1000022.20", 1),
+    ("1000023", 1),
 ];
-
-/// One-lamp lights: these types, bare or with any subtype esmini lists
-/// (1000002.10/.20, 1000007.10-.30, 1000008, 1000012, 1000013.20-.100, 1000014.10, 1000015,
-/// 1000020, 1000021, 1000022.10/.20, 1000023).
-fn one_lamp(key: &str) -> bool {
-    const LISTED: &[&str] =
-        &["1000002.10", "1000002.20", "1000014.10", "1000007.10", "1000007.20", "1000007.30", "1000015", "1000021", "1000022.10", "1000022.20", "1000023"];
-    if LISTED.contains(&key) {
-        return true;
-    }
-    let tens = |base: &str, from: u32| {
-        key == base
-            || key
-                .strip_prefix(base)
-                .and_then(|r| r.strip_prefix('.'))
-                .and_then(|n| n.parse::<u32>().ok())
-                .is_some_and(|n| n % 10 == 0 && (from..=100).contains(&n))
-    };
-    ["1000008", "1000012", "1000020"].iter().any(|b| tens(b, 10)) || (key != "1000013" && tens("1000013", 20))
-}
 
 /// The number of lamps esmini gives `signal`, or None when esmini does not read it as a
 /// traffic light it knows. esmini makes a traffic light of a dynamic signal of country
@@ -62,7 +95,7 @@ pub fn traffic_light_lamps(signal: &Signal) -> Option<usize> {
         key.push('.');
         key.push_str(sub);
     }
-    LAMPS.iter().find(|(k, _)| *k == key).map(|(_, n)| *n).or_else(|| one_lamp(&key).then_some(1))
+    LAMPS.iter().find(|(k, _)| *k == key).map(|(_, n)| *n)
 }
 
 #[cfg(test)]
@@ -107,6 +140,8 @@ mod tests {
         assert_eq!(traffic_light_lamps(&light("1000020", Some("100"))), Some(1));
         assert_eq!(traffic_light_lamps(&light("1000020", Some("110"))), None);
         assert_eq!(traffic_light_lamps(&light("206", None)), None);
+        // esmini's keys are strings: a subtype spelled otherwise is not in its table
+        assert_eq!(traffic_light_lamps(&light("1000020", Some("010"))), None);
     }
 
     #[test]
