@@ -73,3 +73,17 @@ fn a_file_cut_off_is_reported_where_it_ends() {
     let e = err("<OpenDRIVE>\n<header revMajor=\"1\" revMinor=\"6\"/>\n");
     assert!(matches!(e, Error::Xml { line: 3, col: 1, .. }), "{}", e);
 }
+
+#[test]
+fn superelevation_warning_says_what_is_flat_and_what_is_banked() {
+    let text = ROAD_HEAD.to_string()
+        + "<geometry s=\"0\" x=\"0\" y=\"0\" hdg=\"0\" length=\"10\"><line/></geometry>\n"
+        + "</planView>\n<lateralProfile><superelevation s=\"0\" a=\"0.1\" b=\"0\" c=\"0\" d=\"0\"/></lateralProfile>\n"
+        + &ROAD_TAIL["</planView>\n".len()..];
+    let loaded = parse_str(&text, Path::new("banked.xodr")).expect("a banked road parses");
+    let w: Vec<String> = loaded.warnings.iter().map(|w| w.to_string()).collect();
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert!(w[0].contains("the simulation banks the road") && w[0].contains("lanelet borders"), "{w:?}");
+    assert!(w[0].contains("banked.xodr:7:17:"), "the warning carries file:line:col: {w:?}");
+    assert_eq!(loaded.network.roads[0].superelevation.len(), 1);
+}

@@ -136,7 +136,8 @@ pub struct Road {
     pub geometries: Vec<Geometry>,
     /// Elevation records (absolute s).
     pub elevation: Vec<CubicRecord>,
-    /// Superelevation records (absolute s); kept, not applied to positions.
+    /// Superelevation records (absolute s): the road's roll. The engine applies it; this crate's
+    /// 2D geometry (lane borders, OSI points) lays lateral offsets flat.
     pub superelevation: Vec<CubicRecord>,
     /// Lane offset records (absolute s).
     pub lane_offsets: Vec<CubicRecord>,

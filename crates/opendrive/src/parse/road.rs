@@ -130,7 +130,13 @@ pub(super) fn parse_road(ctx: &mut Ctx, node: Node) -> Result<Road, Error> {
                         "superelevation" => {
                             let rec = cubic(ctx, e, "s")?;
                             if rec.a != 0.0 || rec.b != 0.0 || rec.c != 0.0 || rec.d != 0.0 {
-                                ctx.warn(e, "non-zero superelevation is kept but not applied to positions");
+                                // The engine banks the road with it (esmini's Track2XYZ); only the
+                                // flat 2D geometry built here leaves lateral offsets unturned.
+                                ctx.warn(
+                                    e,
+                                    "non-zero superelevation: the simulation banks the road, but lanelet borders \
+                                     and OSI lane points lay lane offsets flat (not shortened by the roll)",
+                                );
                             }
                             road.superelevation.push(rec);
                         }
