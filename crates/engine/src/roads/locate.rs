@@ -161,6 +161,14 @@ fn on_chosen_segment(net: &RoadNetwork, lp: LanePosition, x: f64, y: f64, z: f64
     net.locate_at_s_by(lp.road, x, y, s, &surface_t)
 }
 
+/// [`world_to_lane`] from a current road, at the s XYZ2TrackPos interpolates on the lane-0 OSI
+/// segment of the road found (asked at height `z`): for a jump, where the point may lie far off
+/// the road and the segment's s then differs from the exact projection's by metres.
+pub(crate) fn world_to_lane_on_segment(net: &RoadNetwork, x: f64, y: f64, z: f64, current: (usize, f64, i32)) -> Option<LanePosition> {
+    let lp = world_to_lane(net, x, y, Some(current))?;
+    Some(on_chosen_segment(net, lp, x, y, z).unwrap_or(lp))
+}
+
 /// A point measured to as esmini's Position::Distance maps it, by a fresh Position (no current
 /// road): the hinted road when the point lies on it (a shortcut, see `conditions::distance::
 /// to_point`), else the memoised full search without a current road, so that roads the point

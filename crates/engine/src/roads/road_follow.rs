@@ -124,13 +124,15 @@ fn move_along(
     sidewalks: bool,
     along_lane: bool,
 ) -> MoveStatus {
+    if along_lane {
+        relocate_past_centre_of_curvature(net, pos);
+    }
     let Some(road) = net.roads.get(pos.road) else { return MoveStatus::EndOfRoad };
     let s0 = pos.s.clamp(0.0, road.length);
-    let p = super::pose_memo::reference_pose(road, s0);
-    let t = super::pose_memo::lane_borders_at(road, pos.lane_id, s0).map_or(0.0, |b| b.center) + pos.offset;
     // Distance along the lane to distance along the reference line.
-    let scale = if along_lane { (1.0 - p.curvature * t).max(0.1) } else { 1.0 };
-    let ds = pos.dir * dist / scale;
+    let ds = pos.dir * if along_lane { dist * step_scale(road, s0, pos) } else { dist };
+    // A standing entity exactly at the centre of curvature: 0·∞ (esmini's s turns NaN); stay.
+    let ds = if ds.is_nan() { 0.0 } else { ds };
     let mut s = s0 + ds;
     let section_before = road.section_index_at(s0);
     let road_before = pos.road;
@@ -192,6 +194,45 @@ fn move_along(
         }
     }
     MoveStatus::Ok
+}
+
+/// esmini's Position::DistanceToDS: a distance along a lane at lateral t is
+/// `1 / (1 − curvature·t)` of road s, the factor unguarded (on curves only, |curvature| above
+/// esmini's SMALL_NUMBER): a lane near a bend's centre of curvature moves fast in s, one at
+/// or past it jumps to a road end.
+fn step_scale(road: &opendrive::Road, s: f64, pos: &LanePos) -> f64 {
+    let (curvature, t) = curvature_and_t(road, s, pos);
+    if curvature.abs() > crate::dynamics::ESMINI_SMALL_NUMBER {
+        1.0 / (1.0 - curvature * t)
+    } else {
+        1.0
+    }
+}
+
+fn curvature_and_t(road: &opendrive::Road, s: f64, pos: &LanePos) -> (f64, f64) {
+    let p = super::pose_memo::reference_pose(road, s);
+    let t = super::pose_memo::lane_borders_at(road, pos.lane_id, s).map_or(0.0, |b| b.center) + pos.offset;
+    (p.curvature, t)
+}
+
+/// Position::DistanceToDS, before it scales: a position at or past its bend's centre of
+/// curvature (curvature·t above 1 − SMALL_NUMBER) is "probably closer to another road
+/// segment" and is located afresh from its world point (XYZ2TrackPos from its current road),
+/// keeping the way it faces.
+fn relocate_past_centre_of_curvature(net: &RoadNetwork, pos: &mut LanePos) {
+    let Some(road) = net.roads.get(pos.road) else { return };
+    let s = pos.s.clamp(0.0, road.length);
+    let (curvature, t) = curvature_and_t(road, s, pos);
+    if curvature.abs() <= crate::dynamics::ESMINI_SMALL_NUMBER || curvature * t <= 1.0 - crate::dynamics::ESMINI_SMALL_NUMBER {
+        return;
+    }
+    let Some(world) = pos.pose(net) else { return };
+    if let Some(found) = super::locate::world_to_lane_on_segment(net, world.x, world.y, world.z, (pos.road, pos.s, pos.lane_id)) {
+        pos.road = found.road;
+        pos.lane_id = found.lane_id;
+        pos.s = found.s;
+        pos.offset = found.offset;
+    }
 }
 
 /// The lane continuing `here` across its `end` onto the road the route takes next, if the
