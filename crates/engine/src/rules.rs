@@ -1,7 +1,8 @@
-//! Comparison rules of conditions, with esmini's tolerance (strict comparisons need a margin
-//! of 1e-10, equality accepts it).
+//! Comparison rules of conditions, with esmini's tolerance (EvaluateRule(double) in
+//! OSCCondition.cpp: strict comparisons need a margin of SMALL_NUMBER, 1e-6, equality accepts
+//! it).
 
-use crate::dynamics::SMALL;
+use crate::dynamics::ESMINI_SMALL_NUMBER as SMALL;
 use openscenario::Rule;
 
 pub(crate) fn compare(a: f64, b: f64, rule: Rule) -> bool {

@@ -18,6 +18,7 @@ mod ignored_value_conditions;
 mod lateral_road_distance_sign;
 mod offroad_lane_offset;
 mod reach_position_all;
+mod rule_tolerance;
 mod standstill_clock;
 mod ttc_point_on_overlapping_roads;
 mod ttc_relative_position;
