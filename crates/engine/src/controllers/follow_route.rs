@@ -23,8 +23,8 @@ use openscenario::{Controller, DynamicsDimension, DynamicsShape};
 use routing::Strategy;
 use std::sync::Arc;
 
-/// esmini's SMALL_NUMBER.
-const SMALL: f64 = 1e-10;
+/// esmini's SMALL_NUMBER (CommonMini.hpp: 1e-6).
+const SMALL: f64 = crate::dynamics::ESMINI_SMALL_NUMBER;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum WaypointStatus {

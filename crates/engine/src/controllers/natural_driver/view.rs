@@ -12,8 +12,8 @@ use crate::roads::{move_along_s, LanePos};
 use crate::sim::Sim;
 use opendrive::{ContactPoint, RoadNetwork};
 
-/// esmini's SMALL_NUMBER and LARGE_NUMBER.
-pub(crate) const SMALL_NUMBER: f64 = 1e-10;
+/// esmini's SMALL_NUMBER and LARGE_NUMBER (CommonMini.hpp: 1e-6 and 1e10).
+pub(crate) const SMALL_NUMBER: f64 = crate::dynamics::ESMINI_SMALL_NUMBER;
 pub(crate) const LARGE_NUMBER: f64 = 1e10;
 
 /// Slots of the vehicles of interest.
