@@ -5,7 +5,9 @@ use super::boxes::{boxes_overlap, corners};
 use super::distance::{between, between_chains, chain_to_point, to_point};
 use super::ConditionRt;
 use crate::controllers::natural_driver::view::LARGE_NUMBER;
-use crate::dynamics::SMALL;
+// esmini's SMALL_NUMBER (1e-6): the tolerances of TrigByTimeHeadway, Object::TimeToCollision,
+// TrigByEndOfRoad and TrigByAngle (OSCCondition.cpp, Entities.cpp).
+use crate::dynamics::ESMINI_SMALL_NUMBER as SMALL;
 use crate::entities::Entity;
 use crate::entities::{in_frame, EntityKind};
 use crate::positions::resolve;
@@ -185,7 +187,7 @@ impl<'a> Sim<'a> {
             // evaluated in check_entity: their duration carries over from entity to entity
             C::StandStill { .. } | C::Offroad { .. } => false,
             C::TraveledDistance { value } => e.odometer >= *value,
-            C::EndOfRoad { duration } => e.end_of_road && t - e.end_of_road_since >= duration - SMALL,
+            C::EndOfRoad { duration } => e.end_of_road && t - e.end_of_road_since > duration - SMALL,
             C::ReachPosition { tolerance, .. } => point.is_some_and(|(x, y)| (e.x - x).hypot(e.y - y) < *tolerance),
             C::Distance { value, rule, options, .. } => point.is_some_and(|(x, y)| compare(self.distance_to_point(idx, x, y, options).abs(), *value, *rule)),
             C::RelativeDistance { value, rule, options, .. } => other.is_some_and(|j| compare(self.distance_between(idx, j, options).abs(), *value, *rule)),

@@ -30,3 +30,18 @@ fn a_rule_compares_with_esmini_small_number() {
         assert!(close(e.x, x, 1e-6), "{name} at {t}: x {}, esmini {x}", e.x);
     }
 }
+
+/// The entity conditions' own tolerances are esmini's SMALL_NUMBER too: a time headway is
+/// undefined (false) while the triggering entity moves slower than 1e-6 m/s
+/// (TrigByTimeHeadway), and an angle within its tolerance plus 1e-6 holds (TrigByAngle).
+/// Fixture `entity_conditions_small_number.xosc`: Creeper at 5e-7 m/s behind a standing car
+/// (headway > 1 s would start Signal), Angled heading along the road against an angle of
+/// 0.1 ± 0.0999995 (would start Flag). esmini starts Flag, not Signal.
+#[test]
+fn entity_conditions_use_esmini_small_number() {
+    let run = run_fixture_on("entity_conditions_small_number.xosc", "straight.xodr", 1.0);
+    for (name, t, x) in [("Signal", 0.01, 60.01), ("Signal", 1.0, 61.0), ("Flag", 0.01, 130.1), ("Flag", 1.0, 140.0)] {
+        let e = at(&run, name, t);
+        assert!(close(e.x, x, 1e-6), "{name} at {t}: x {}, esmini {x}", e.x);
+    }
+}
