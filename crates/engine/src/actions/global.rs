@@ -28,8 +28,16 @@ impl<'a> Sim<'a> {
                 }
             }
             GlobalAction::VariableModify { variable, rule } => {
-                if !self.vars.modify(variable, rule) {
-                    self.warn_action(slot, format!("VariableModifyAction: variable `{variable}` is missing or not a number"));
+                match self.vars.modify(variable, rule) {
+                    crate::values::Modified::Done => {}
+                    crate::values::Modified::Missing => {
+                        self.warn_action(slot, format!("VariableModifyAction: variable `{variable}` is missing or not a number"))
+                    }
+                    // VariableAddAction / VariableMultiplyByAction act on integers and doubles only
+                    crate::values::Modified::NotNumeric => self.warn_action(
+                        slot,
+                        format!("VariableModifyAction: variable `{variable}` is a string or boolean; it keeps its value, as in esmini"),
+                    ),
                 }
             }
             GlobalAction::Environment(env) => {

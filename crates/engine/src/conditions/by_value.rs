@@ -1,7 +1,7 @@
 //! Value conditions: simulation time, parameters, variables, storyboard element states.
 
 use super::ConditionRt;
-use crate::rules::{compare, compare_text};
+use crate::rules::compare;
 use crate::sim::Sim;
 use crate::storyboard::{State, Transition};
 use openscenario::{StoryboardElementState as Want, ValueCondition};
@@ -10,12 +10,12 @@ impl<'a> Sim<'a> {
     pub(super) fn check_value(&mut self, c: &mut ConditionRt<'a>, v: &ValueCondition) -> bool {
         match v {
             ValueCondition::SimulationTime { value, rule } => compare(self.time, *value - c.time_shift, *rule),
-            ValueCondition::Parameter { parameter, value, rule } => match self.params.get(parameter) {
-                Some(cur) => compare_text(cur, value, *rule),
+            ValueCondition::Parameter { parameter, value, rule } => match self.params.compare(parameter, value, *rule) {
+                Some(result) => result,
                 None => self.warn_once(c, format!("parameter `{parameter}` is not declared")),
             },
-            ValueCondition::Variable { variable, value, rule } => match self.vars.get(variable) {
-                Some(cur) => compare_text(cur, value, *rule),
+            ValueCondition::Variable { variable, value, rule } => match self.vars.compare(variable, value, *rule) {
+                Some(result) => result,
                 None => self.warn_once(c, format!("variable `{variable}` is not declared")),
             },
             ValueCondition::StoryboardElementState { state, element, .. } => {

@@ -22,5 +22,6 @@ mod rule_tolerance;
 mod standstill_clock;
 mod ttc_point_on_overlapping_roads;
 mod ttc_relative_position;
+mod typed_values;
 mod undefined_headway_ttc;
 mod vertical_motion;
