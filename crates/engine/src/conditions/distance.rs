@@ -24,20 +24,11 @@ fn path_ds(net: &RoadNetwork, a: &Entity, b: &Entity) -> Option<f64> {
     let (la, lb) = (a.lane?, b.lane?);
     let d = crate::roads::road_distance::road_distance(net, la.road, la.s, lb.road, lb.s)?;
     let mut p = la;
-    crate::roads::move_along_s(net, &mut p, d / lane_scale(net, &la));
+    crate::roads::move_along_road_s(net, &mut p, d, None, None);
     if p.road == lb.road && (p.s - lb.s).abs() < (0.05 * d).max(1.0) {
         return Some(d);
     }
     Some(-d)
-}
-
-/// move_along_s moves along the lane (it scales by the curvature at the lane): the factor that
-/// turns a reference-line distance into the lane distance at `lp`.
-fn lane_scale(net: &RoadNetwork, lp: &crate::roads::LanePos) -> f64 {
-    let Some(road) = net.roads.get(lp.road) else { return 1.0 };
-    let p = crate::roads::pose_memo::reference_pose(road, lp.s.clamp(0.0, road.length));
-    let t = lane_center_t(road, lp.lane_id, lp.s).unwrap_or(0.0) + lp.offset;
-    1.0 / (1.0 - p.curvature * t).max(0.1)
 }
 
 /// Distance from entity `a` to entity `b`.
