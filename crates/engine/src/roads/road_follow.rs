@@ -125,7 +125,7 @@ fn move_along(
     along_lane: bool,
 ) -> MoveStatus {
     if along_lane {
-        relocate_past_centre_of_curvature(net, pos);
+        relocate_past_centre_of_curvature(net, pos, sidewalks);
     }
     let Some(road) = net.roads.get(pos.road) else { return MoveStatus::EndOfRoad };
     let s0 = pos.s.clamp(0.0, road.length);
@@ -219,7 +219,7 @@ fn curvature_and_t(road: &opendrive::Road, s: f64, pos: &LanePos) -> (f64, f64) 
 /// curvature (curvature·t above 1 − SMALL_NUMBER) is "probably closer to another road
 /// segment" and is located afresh from its world point (XYZ2TrackPos from its current road),
 /// keeping the way it faces.
-fn relocate_past_centre_of_curvature(net: &RoadNetwork, pos: &mut LanePos) {
+fn relocate_past_centre_of_curvature(net: &RoadNetwork, pos: &mut LanePos, sidewalks: bool) {
     let Some(road) = net.roads.get(pos.road) else { return };
     let s = pos.s.clamp(0.0, road.length);
     let (curvature, t) = curvature_and_t(road, s, pos);
@@ -228,10 +228,16 @@ fn relocate_past_centre_of_curvature(net: &RoadNetwork, pos: &mut LanePos) {
     }
     let Some(world) = pos.pose(net) else { return };
     if let Some(found) = super::locate::world_to_lane_on_segment(net, world.x, world.y, world.z, (pos.road, pos.s, pos.lane_id)) {
+        // attached to the nearest lane of the types it snaps to (LaneSection::GetClosestLaneIdx)
+        let (lane_id, offset) = net
+            .roads
+            .get(found.road)
+            .and_then(|r| super::lane_snap::snap(r, found.section, found.s, found.t, sidewalks))
+            .unwrap_or((found.lane_id, found.offset));
         pos.road = found.road;
-        pos.lane_id = found.lane_id;
+        pos.lane_id = lane_id;
         pos.s = found.s;
-        pos.offset = found.offset;
+        pos.offset = offset;
     }
 }
 
