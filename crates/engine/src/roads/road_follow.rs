@@ -124,13 +124,11 @@ fn move_along(
     sidewalks: bool,
     along_lane: bool,
 ) -> MoveStatus {
-    if along_lane {
-        relocate_past_centre_of_curvature(net, pos, sidewalks);
-    }
+    // Distance along the lane to distance along the reference line (may first relocate `pos`).
+    let scale = if along_lane { lane_step_scale(net, pos, sidewalks) } else { 1.0 };
     let Some(road) = net.roads.get(pos.road) else { return MoveStatus::EndOfRoad };
     let s0 = pos.s.clamp(0.0, road.length);
-    // Distance along the lane to distance along the reference line.
-    let ds = pos.dir * if along_lane { dist * step_scale(road, s0, pos) } else { dist };
+    let ds = pos.dir * if along_lane { dist * scale } else { dist };
     // A standing entity exactly at the centre of curvature: 0·∞ (esmini's s turns NaN); stay.
     let ds = if ds.is_nan() { 0.0 } else { ds };
     let mut s = s0 + ds;
@@ -198,47 +196,46 @@ fn move_along(
 
 /// esmini's Position::DistanceToDS: a distance along a lane at lateral t is
 /// `1 / (1 − curvature·t)` of road s, the factor unguarded (on curves only, |curvature| above
-/// esmini's SMALL_NUMBER): a lane near a bend's centre of curvature moves fast in s, one at
-/// or past it jumps to a road end.
-fn step_scale(road: &opendrive::Road, s: f64, pos: &LanePos) -> f64 {
-    let (curvature, t) = curvature_and_t(road, s, pos);
-    if curvature.abs() > crate::dynamics::ESMINI_SMALL_NUMBER {
-        1.0 / (1.0 - curvature * t)
-    } else {
-        1.0
-    }
-}
-
-fn curvature_and_t(road: &opendrive::Road, s: f64, pos: &LanePos) -> (f64, f64) {
-    let p = super::pose_memo::reference_pose(road, s);
-    let t = super::pose_memo::lane_borders_at(road, pos.lane_id, s).map_or(0.0, |b| b.center) + pos.offset;
-    (p.curvature, t)
-}
-
-/// Position::DistanceToDS, before it scales: a position at or past its bend's centre of
-/// curvature (curvature·t above 1 − SMALL_NUMBER) is "probably closer to another road
-/// segment" and is located afresh from its world point (XYZ2TrackPos from its current road),
-/// keeping the way it faces.
-fn relocate_past_centre_of_curvature(net: &RoadNetwork, pos: &mut LanePos, sidewalks: bool) {
-    let Some(road) = net.roads.get(pos.road) else { return };
+/// esmini's SMALL_NUMBER): a lane near a bend's centre of curvature moves fast in s. A position
+/// at or past it (curvature·t above 1 − SMALL_NUMBER) is "probably closer to another road
+/// segment" and is first located afresh from its world point (XYZ2TrackPos from its current
+/// road, on the nearest lane of the types it snaps to; SetHeadingRelative keeps the way it
+/// faces); where the factor is then still infinite or negative the move jumps to a road end.
+fn lane_step_scale(net: &RoadNetwork, pos: &mut LanePos, sidewalks: bool) -> f64 {
+    use crate::dynamics::ESMINI_SMALL_NUMBER as SMALL_NUMBER;
+    let Some(road) = net.roads.get(pos.road) else { return 1.0 };
     let s = pos.s.clamp(0.0, road.length);
-    let (curvature, t) = curvature_and_t(road, s, pos);
-    if curvature.abs() <= crate::dynamics::ESMINI_SMALL_NUMBER || curvature * t <= 1.0 - crate::dynamics::ESMINI_SMALL_NUMBER {
-        return;
+    let curvature = super::pose_memo::reference_pose(road, s).curvature;
+    if curvature.abs() <= SMALL_NUMBER {
+        return 1.0;
     }
+    let t = lane_t(road, s, pos);
+    if curvature * t <= 1.0 - SMALL_NUMBER {
+        return 1.0 / (1.0 - curvature * t);
+    }
+    relocate(net, pos, sidewalks);
+    let Some(road) = net.roads.get(pos.road) else { return 1.0 };
+    let s = pos.s.clamp(0.0, road.length);
+    let curvature = super::pose_memo::reference_pose(road, s).curvature;
+    1.0 / (1.0 - curvature * lane_t(road, s, pos))
+}
+
+/// The position's t: its lane's centre plus its offset.
+fn lane_t(road: &opendrive::Road, s: f64, pos: &LanePos) -> f64 {
+    super::pose_memo::lane_borders_at(road, pos.lane_id, s).map_or(0.0, |b| b.center) + pos.offset
+}
+
+/// Position::DistanceToDS's XYZ2TrackPos of the position's own world point.
+fn relocate(net: &RoadNetwork, pos: &mut LanePos, sidewalks: bool) {
     let Some(world) = pos.pose(net) else { return };
-    if let Some(found) = super::locate::world_to_lane_on_segment(net, world.x, world.y, world.z, (pos.road, pos.s, pos.lane_id)) {
-        // attached to the nearest lane of the types it snaps to (LaneSection::GetClosestLaneIdx)
-        let (lane_id, offset) = net
-            .roads
-            .get(found.road)
-            .and_then(|r| super::lane_snap::snap(r, found.section, found.s, found.t, sidewalks))
-            .unwrap_or((found.lane_id, found.offset));
-        pos.road = found.road;
-        pos.lane_id = lane_id;
-        pos.s = found.s;
-        pos.offset = offset;
-    }
+    let Some(found) = super::locate::world_to_lane_on_segment(net, world.x, world.y, world.z, (pos.road, pos.s, pos.lane_id)) else { return };
+    // attached to the nearest lane of the types it snaps to (LaneSection::GetClosestLaneIdx)
+    let (lane_id, offset) =
+        net.roads.get(found.road).and_then(|r| super::lane_snap::snap(r, found.section, found.s, found.t, sidewalks)).unwrap_or((found.lane_id, found.offset));
+    pos.road = found.road;
+    pos.lane_id = lane_id;
+    pos.s = found.s;
+    pos.offset = offset;
 }
 
 /// The lane continuing `here` across its `end` onto the road the route takes next, if the
