@@ -166,16 +166,18 @@ fn move_along(
             return MoveStatus::EndOfRoad;
         };
         let Some(next_road) = net.roads.get(next.road) else { return MoveStatus::EndOfRoad };
-        let flips = (end == ContactPoint::End) == (contact == ContactPoint::End);
         pos.road = next.road;
         pos.lane_id = next.lane;
-        if flips {
+        if unlinked {
+            // esmini's MoveToConnectingRoad returns from its closest-lane arm before it turns
+            // the heading round at a start-to-start or end-to-end link: the entity keeps its
+            // heading relative to the road (it may now face against the rest of this move, which
+            // goes into the new road from the contact point), and its offset is reset ("Reset
+            // lane offset when new move to new lane was enforced").
+            pos.offset = 0.0;
+        } else if (end == ContactPoint::End) == (contact == ContactPoint::End) {
             pos.dir = -pos.dir;
             pos.offset = -pos.offset;
-        }
-        if unlinked {
-            // "Reset lane offset when new move to new lane was enforced"
-            pos.offset = 0.0;
         }
         s_here = match contact {
             ContactPoint::Start => 0.0,

@@ -11,3 +11,4 @@ mod reversing_through_junctions;
 mod road_link_without_lane_links;
 mod sloped_banked;
 mod superelevation;
+mod unlinked_lane_keeps_heading;
