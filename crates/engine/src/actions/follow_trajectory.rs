@@ -12,7 +12,7 @@ use state::FollowTrajectoryRt;
 
 use super::state::ActionRt;
 use crate::angles::wrap;
-use crate::dynamics::SMALL;
+use crate::dynamics::{ESMINI_SMALL_NUMBER, SMALL};
 use crate::sim::Sim;
 use openscenario::{FollowingMode, ReferenceContext, TimeReference, Trajectory};
 use trajectory::{Interpolation, Path, Pose, TimeDomain, TimeMapping};
@@ -291,7 +291,7 @@ impl<'a> Sim<'a> {
                     TimeDomain::Relative => f.time + m.offset,
                     TimeDomain::Absolute => f.time,
                 };
-                if dt > SMALL && reached < end + SMALL {
+                if dt > ESMINI_SMALL_NUMBER && reached < end + ESMINI_SMALL_NUMBER {
                     // Relative timing takes the speed's sign from the way s moved (esmini's
                     // movingDirection_ = SIGN(Δs)); absolute timing keeps it positive.
                     let sign = match m.domain {
@@ -307,9 +307,15 @@ impl<'a> Sim<'a> {
         let time_offset = f.timing.map_or(0.0, |m| m.offset);
         let done = match f.timing {
             // esmini's FollowTrajectoryAction::Step: the end ahead, or the start when moving back.
-            None => !f.path.is_closed() && dt > 0.0 && speed != 0.0 && ((direction > 0.0 && f.s > len - SMALL) || (direction < 0.0 && f.s < SMALL)),
-            // Summed steps drift below the last stamp by rounding; esmini's sum reaches it.
-            Some(_) => f.path.time_range().is_some_and(|r| f.time + time_offset >= r.1 - 1e-9),
+            None => {
+                !f.path.is_closed()
+                    && dt > 0.0
+                    && speed != 0.0
+                    && ((direction > 0.0 && f.s > len - ESMINI_SMALL_NUMBER) || (direction < 0.0 && f.s < ESMINI_SMALL_NUMBER))
+            }
+            // esmini's end test, within its SMALL_NUMBER of the last stamp (which also takes
+            // summed steps that drift below the stamp by rounding).
+            Some(_) => f.path.time_range().is_some_and(|r| f.time + time_offset > r.1 - ESMINI_SMALL_NUMBER),
         };
         // A timed path that ends leaves the entity at its end, also when it is marked closed.
         let at_end = done && f.timing.is_some() && f.path.is_closed() && f.s >= len - SMALL;
