@@ -34,7 +34,6 @@ use openscenario::{CoordinateSystem, DynamicConstraints, LateralDisplacement};
 use std::f64::consts::FRAC_PI_2;
 
 const LARGE: f64 = 1e10;
-const SMALL: f64 = 1e-10;
 const SPRING: f64 = 0.4;
 /// parseDynamicConstraints' defaults for a limit given as (about) zero.
 const DEFAULT_MAX_ACC: f64 = 5.0;
@@ -218,7 +217,8 @@ impl<'a> Sim<'a> {
             Phase::Dynamic => {}
         }
         let mut done = false;
-        let speed_cap = r.max_speed.min(en.speed) - SMALL;
+        // esmini keeps SMALL_NUMBER (1e-6) of longitudinal speed when the lateral speed is capped
+        let speed_cap = r.max_speed.min(en.speed) - crate::dynamics::ESMINI_SMALL_NUMBER;
         if r.max_acc < LARGE {
             let k = SPRING * r.max_acc;
             let a_spring = k * error - 2.0 * k.sqrt() * (r.lat_vel - vel_lat);
