@@ -53,16 +53,18 @@ impl Gen<'_> {
     fn value_condition(&mut self, kind: &str) -> String {
         let body = match kind {
             "ParameterCondition" => {
-                let p = self.parameter();
+                let (p, kind) = self.parameter(false);
                 let rule = self.pick(&RULES);
                 let rule = self.rule_word(rule);
-                format!(r#"<ParameterCondition parameterRef="{p}" value="{}" rule="{rule}"/>"#, self.pick_index(6))
+                let value = self.value_of(kind);
+                format!(r#"<ParameterCondition parameterRef="{p}" value="{value}" rule="{rule}"/>"#)
             }
             "VariableCondition" => {
-                let v = self.variable();
+                let (v, kind) = self.variable(false);
                 let rule = self.pick(&RULES);
                 let rule = self.rule_word(rule);
-                format!(r#"<VariableCondition variableRef="{v}" value="{}" rule="{rule}"/>"#, self.pick_index(6))
+                let value = self.value_of(kind);
+                format!(r#"<VariableCondition variableRef="{v}" value="{value}" rule="{rule}"/>"#)
             }
             "StoryboardElementStateCondition" => {
                 let i = self.pick_index(self.elements.len());

@@ -10,37 +10,65 @@ use super::{Declared, Gen};
 pub(super) const PHASES: [(&str, f64); 3] = [("stop", 4.0), ("ready", 2.0), ("go", 5.0)];
 
 impl Gen<'_> {
-    /// A parameter (double): mostly the first one declared, else a new one; its name.
-    pub(crate) fn parameter(&mut self) -> String {
+    /// A parameter: mostly the first one declared, else a new one of a type drawn (double,
+    /// integer, string or boolean; `numeric`: integer or double); its name and type.
+    pub(crate) fn parameter(&mut self, numeric: bool) -> (String, &'static str) {
         let mut declared = std::mem::take(&mut self.parameters);
-        let name = self.declare(&mut declared, "P");
+        let d = self.declare(&mut declared, "P", numeric);
         self.parameters = declared;
-        name
+        d
     }
 
-    /// A variable (double), as `parameter`.
-    pub(crate) fn variable(&mut self) -> String {
+    /// A variable, as `parameter`; `numeric`: an integer or a double (what a modify rule
+    /// works on: esmini changes no string or boolean).
+    pub(crate) fn variable(&mut self, numeric: bool) -> (String, &'static str) {
         let mut declared = std::mem::take(&mut self.variables);
-        let name = self.declare(&mut declared, "V");
+        let d = self.declare(&mut declared, "V", numeric);
         self.variables = declared;
-        name
+        d
     }
 
-    fn declare(&mut self, declared: &mut Vec<Declared>, prefix: &str) -> String {
-        if !declared.is_empty() && self.chance(0.6) {
-            return declared[0].name.clone();
+    fn declare(&mut self, declared: &mut Vec<Declared>, prefix: &str, numeric: bool) -> (String, &'static str) {
+        let usable: Vec<usize> = (0..declared.len()).filter(|&i| !numeric || matches!(declared[i].kind, "double" | "integer")).collect();
+        if let Some(&first) = usable.first() {
+            if self.chance(0.6) {
+                return (declared[first].name.clone(), declared[first].kind);
+            }
         }
         let name = format!("{prefix}{}", declared.len());
-        let value = format!("{}", self.pick_index(5));
-        declared.push(Declared { name: name.clone(), kind: "double", value });
-        name
+        let kind = if numeric { self.pick(&["double", "double", "integer"]) } else { self.pick(&["double", "double", "integer", "string", "boolean"]) };
+        self.feature(format!("value-type:{prefix}/{kind}"));
+        let value = self.value_of(kind);
+        declared.push(Declared { name: name.clone(), kind, value });
+        (name, kind)
     }
 
-    fn modify_rule(&mut self) -> String {
+    /// A value of a declared type, as a set action or a condition writes it: small whole
+    /// numbers, some doubles with a fraction, strings that order differently as text than
+    /// as numbers ("10" before "9").
+    pub(crate) fn value_of(&mut self, kind: &str) -> String {
+        match kind {
+            "integer" => format!("{}", self.pick_index(6)),
+            "string" => self.pick(&["0", "1", "5", "9", "10", "25"]).to_string(),
+            "boolean" => self.pick(&["true", "false"]).to_string(),
+            _ if self.chance(0.3) => format!("{}.5", self.pick_index(5)),
+            _ => format!("{}", self.pick_index(6)),
+        }
+    }
+
+    /// A modify rule; on an integer a fractional value (esmini cuts it, or the product, to an
+    /// integer).
+    fn modify_rule(&mut self, kind: &str) -> String {
+        let fraction = self.chance(0.3);
+        if fraction {
+            self.feature(format!("modify-fraction:{kind}"));
+        }
         if self.chance(0.5) {
-            format!(r#"<AddValue value="{}"/>"#, self.pick(&[1, 2, -1]))
+            let v = if fraction { self.pick(&["1.5", "-0.5", "2.7"]) } else { self.pick(&["1", "2", "-1"]) };
+            format!(r#"<AddValue value="{v}"/>"#)
         } else {
-            format!(r#"<MultiplyByValue value="{}"/>"#, self.pick(&[2, 3]))
+            let v = if fraction { self.pick(&["1.5", "0.5"]) } else { self.pick(&["2", "3"]) };
+            format!(r#"<MultiplyByValue value="{v}"/>"#)
         }
     }
 
@@ -65,21 +93,23 @@ impl Gen<'_> {
         }
         let body = match k {
             "ParameterSetAction" => {
-                let p = self.parameter();
-                format!(r#"<ParameterAction parameterRef="{p}"><SetAction value="{}"/></ParameterAction>"#, self.pick_index(6))
+                let (p, kind) = self.parameter(false);
+                let value = self.value_of(kind);
+                format!(r#"<ParameterAction parameterRef="{p}"><SetAction value="{value}"/></ParameterAction>"#)
             }
             "ParameterModifyAction" => {
-                let p = self.parameter();
-                let rule = self.modify_rule();
+                let (p, kind) = self.parameter(true);
+                let rule = self.modify_rule(kind);
                 format!(r#"<ParameterAction parameterRef="{p}"><ModifyAction><Rule>{rule}</Rule></ModifyAction></ParameterAction>"#)
             }
             "VariableSetAction" => {
-                let v = self.variable();
-                format!(r#"<VariableAction variableRef="{v}"><SetAction value="{}"/></VariableAction>"#, self.pick_index(6))
+                let (v, kind) = self.variable(false);
+                let value = self.value_of(kind);
+                format!(r#"<VariableAction variableRef="{v}"><SetAction value="{value}"/></VariableAction>"#)
             }
             "VariableModifyAction" => {
-                let v = self.variable();
-                let rule = self.modify_rule();
+                let (v, kind) = self.variable(true);
+                let rule = self.modify_rule(kind);
                 format!(r#"<VariableAction variableRef="{v}"><ModifyAction><Rule>{rule}</Rule></ModifyAction></VariableAction>"#)
             }
             "DeleteEntityAction" => {
