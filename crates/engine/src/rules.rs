@@ -28,6 +28,12 @@ pub(crate) fn compare_text(a: &str, b: &str, rule: Rule) -> bool {
     if let (Some(x), Some(y)) = (num(a), num(b)) {
         return compare(x, y, rule);
     }
+    compare_exact(a, b, rule)
+}
+
+/// A rule without tolerance: esmini's EvaluateRule for ints, strings (byte order, as
+/// std::string compares) and bools (true above false).
+pub(crate) fn compare_exact<T: PartialOrd + ?Sized>(a: &T, b: &T, rule: Rule) -> bool {
     match rule {
         Rule::GreaterThan => a > b,
         Rule::GreaterOrEqual => a >= b,

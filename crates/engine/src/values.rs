@@ -6,7 +6,7 @@
 //! boolean as booleans (TrigByParameter / TrigByVariable::CheckCondition, EvaluateRule), and a
 //! modify rule works in the variable's type (VariableAddAction, VariableMultiplyByAction).
 
-use crate::rules::{compare, compare_text};
+use crate::rules::{compare, compare_exact, compare_text};
 use openscenario::{ModifyKind, ModifyRule, ParameterDeclaration, ParameterType, Rule};
 use std::collections::BTreeMap;
 
@@ -76,10 +76,10 @@ impl Values {
     pub(crate) fn compare(&self, name: &str, value: &str, rule: Rule) -> Option<bool> {
         let e = self.map.get(name.trim_start_matches('$'))?;
         Some(match e.kind {
-            Kind::Integer => compare_int(c_atoi(&e.text), c_atoi(value), rule),
+            Kind::Integer => compare_exact(&c_atoi(&e.text), &c_atoi(value), rule),
             Kind::Double => compare(c_atof(&e.text), c_atof(value), rule),
-            Kind::Text => compare_str(&e.text, value, rule),
-            Kind::Boolean => compare_bool(e.text == "true", value == "true", rule),
+            Kind::Text => compare_exact(e.text.as_str(), value, rule),
+            Kind::Boolean => compare_exact(&(e.text == "true"), &(value == "true"), rule),
             Kind::Other => compare_text(&e.text, value, rule),
         })
     }
@@ -177,42 +177,6 @@ fn c_atof(s: &str) -> f64 {
         }
     }
     t[..end].parse::<f64>().unwrap_or(0.0)
-}
-
-/// esmini's EvaluateRule(int, int, rule): exact.
-fn compare_int(a: i32, b: i32, rule: Rule) -> bool {
-    match rule {
-        Rule::GreaterThan => a > b,
-        Rule::GreaterOrEqual => a >= b,
-        Rule::LessThan => a < b,
-        Rule::LessOrEqual => a <= b,
-        Rule::EqualTo => a == b,
-        Rule::NotEqualTo => a != b,
-    }
-}
-
-/// esmini's EvaluateRule(std::string, std::string, rule): byte order, as std::string compares.
-fn compare_str(a: &str, b: &str, rule: Rule) -> bool {
-    match rule {
-        Rule::GreaterThan => a > b,
-        Rule::GreaterOrEqual => a >= b,
-        Rule::LessThan => a < b,
-        Rule::LessOrEqual => a <= b,
-        Rule::EqualTo => a == b,
-        Rule::NotEqualTo => a != b,
-    }
-}
-
-/// esmini's EvaluateRule(bool, bool, rule): true above false.
-fn compare_bool(a: bool, b: bool, rule: Rule) -> bool {
-    match rule {
-        Rule::GreaterThan => a && !b,
-        Rule::GreaterOrEqual => a || !b,
-        Rule::LessThan => !a && b,
-        Rule::LessOrEqual => !a || b,
-        Rule::EqualTo => a == b,
-        Rule::NotEqualTo => a != b,
-    }
 }
 
 #[cfg(test)]
