@@ -97,25 +97,22 @@ impl Values {
                 };
                 e.text = n.to_string();
             }
-            Kind::Double => {
-                let v = c_atof(&e.text);
-                let n = match rule.kind {
-                    ModifyKind::Add => v + rule.value,
-                    ModifyKind::Multiply => v * rule.value,
-                };
-                e.text = format_number(n);
-            }
+            Kind::Double => e.text = format_number(apply(c_atof(&e.text), rule)),
             Kind::Text | Kind::Boolean => return Modified::NotNumeric,
             Kind::Other => {
                 let Ok(v) = e.text.trim().parse::<f64>() else { return Modified::Missing };
-                let n = match rule.kind {
-                    ModifyKind::Add => v + rule.value,
-                    ModifyKind::Multiply => v * rule.value,
-                };
-                e.text = format_number(n);
+                e.text = format_number(apply(v, rule));
             }
         }
         Modified::Done
+    }
+}
+
+/// A modify rule on a double.
+fn apply(v: f64, rule: &ModifyRule) -> f64 {
+    match rule.kind {
+        ModifyKind::Add => v + rule.value,
+        ModifyKind::Multiply => v * rule.value,
     }
 }
 
