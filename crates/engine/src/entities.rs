@@ -306,8 +306,7 @@ impl Entity {
                 let dir = if rel.abs() <= std::f64::consts::FRAC_PI_2 + 1e-9 { 1.0 } else { -1.0 };
                 // esmini attaches the entity to the nearest lane of the types it snaps to
                 // (LaneSection::GetClosestLaneIdx), measuring the offset from that lane's centre.
-                let (lane_id, offset) =
-                    net.roads.get(lp.road).and_then(|r| crate::roads::lane_snap::snap(r, lp.section, lp.s, lp.t, sidewalks)).unwrap_or((lp.lane_id, lp.offset));
+                let (lane_id, offset) = crate::roads::lane_snap::snap_located(net, &lp, sidewalks);
                 let l = LanePos { road: lp.road, lane_id, s: lp.s, offset, dir };
                 self.lane = Some(l);
                 // A position set from world coordinates (Position::XYZ2TrackPos) has a road

@@ -203,8 +203,7 @@ impl<'a> Sim<'a> {
                 if let Some(q) = lp.pose(net) {
                     let (x, y) = (en.x - q.road_heading.sin() * error, en.y + q.road_heading.cos() * error);
                     if let Some(p) = crate::roads::locate::world_to_lane(net, x, y, None) {
-                        let (lane_id, offset) =
-                            net.roads.get(p.road).and_then(|rd| lane_snap::snap(rd, p.section, p.s, p.t, false)).unwrap_or((p.lane_id, p.offset));
+                        let (lane_id, offset) = lane_snap::snap_located(net, &p, false);
                         let dir = if is_angle_forward(en.h - p.heading) { 1.0 } else { -1.0 };
                         lp = crate::roads::LanePos { road: p.road, lane_id, s: p.s, offset, dir };
                     }

@@ -5,7 +5,7 @@
 //! in the nearest driving lane, at a large offset from its centre.
 
 use super::lane_geometry::lane_borders;
-use opendrive::{LaneType, Road};
+use opendrive::{LanePosition, LaneType, Road, RoadNetwork};
 
 /// esmini's SMALL_NUMBER: narrower lanes do not count.
 const MIN_WIDTH: f64 = 1e-6;
@@ -15,6 +15,12 @@ const MIN_WIDTH: f64 = 1e-6;
 /// keeps the reference lane).
 pub(crate) fn snap(road: &Road, section: usize, s: f64, t: f64, sidewalks: bool) -> Option<(i32, f64)> {
     snap_on_side(road, section, s, t, sidewalks, 0)
+}
+
+/// The lane and offset of a point located from world coordinates (Position::XYZ2TrackPos):
+/// [`snap`]ped, else the located lane and offset as they are.
+pub(crate) fn snap_located(net: &RoadNetwork, found: &LanePosition, sidewalks: bool) -> (i32, f64) {
+    net.roads.get(found.road).and_then(|r| snap(r, found.section, found.s, found.t, sidewalks)).unwrap_or((found.lane_id, found.offset))
 }
 
 /// [`snap`] among the lanes of one side (`side` −1 right, +1 left; 0 both).

@@ -232,8 +232,7 @@ fn relocate(net: &RoadNetwork, pos: &mut LanePos, sidewalks: bool) {
     let Some(world) = pos.pose(net) else { return };
     let Some(found) = super::locate::world_to_lane_on_segment(net, world.x, world.y, world.z, (pos.road, pos.s, pos.lane_id)) else { return };
     // attached to the nearest lane of the types it snaps to (LaneSection::GetClosestLaneIdx)
-    let (lane_id, offset) =
-        net.roads.get(found.road).and_then(|r| super::lane_snap::snap(r, found.section, found.s, found.t, sidewalks)).unwrap_or((found.lane_id, found.offset));
+    let (lane_id, offset) = super::lane_snap::snap_located(net, &found, sidewalks);
     pos.road = found.road;
     pos.lane_id = lane_id;
     pos.s = found.s;
