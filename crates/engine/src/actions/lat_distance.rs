@@ -19,9 +19,9 @@ pub(crate) mod entity_frame;
 pub(crate) mod state;
 
 use entity_frame::{entity_frame_step, Pose};
-use state::{Frame, LatDistanceRt, Phase};
+use state::{Frame, LatDistanceKept, LatDistanceRt, Phase};
 
-use super::state::ActionRt;
+use super::state::{ActionRt, Kept};
 use crate::angles::wrap;
 use crate::dynamics::ESMINI_SMALL_NUMBER as ESMINI_SMALL;
 use crate::roads::lane_geometry::lane_center_t;
@@ -71,18 +71,28 @@ impl<'a> Sim<'a> {
             }
         };
         let (Some(a), Some(b)) = (self.entities.get(e), self.entities.get(target)) else { return ActionRt::Done };
-        // Left of the reference: larger t (esmini's default for "any" too). Before 1.1 esmini
-        // reads no displacement and keeps the distance's sign; from 1.1 on it takes its magnitude
-        // (ScenarioReader::parseOSCPrivateAction). In road coordinates the sign never counts
-        // (LatDistanceAction::Start).
-        let right = spec.displacement == Some(LateralDisplacement::RightToReferencedEntity) && self.scenario.header.rev_minor >= 1;
-        let side = if right { -1.0 } else { 1.0 };
-        let distance = spec.distance.unwrap_or(0.0);
-        let magnitude = if frame == Frame::Entity && self.scenario.header.rev_minor < 1 { distance } else { distance.abs() };
-        let mut wanted = side * magnitude;
-        if spec.freespace {
-            wanted += side * (a.bbox[4] + b.bbox[4]) / 2.0;
-        }
+        // ScenarioReader::parseOSCPrivateAction: before 1.1 esmini reads no displacement and
+        // keeps the distance's sign; from 1.1 on it takes its magnitude, and a missing
+        // displacement is "any", which LatDistanceAction::Start takes as left.
+        let displacement = if self.scenario.header.rev_minor < 1 {
+            Displacement::Unread
+        } else if spec.displacement == Some(LateralDisplacement::RightToReferencedEntity) {
+            Displacement::Right
+        } else {
+            Displacement::Left
+        };
+        let kept = match self.actions.get(slot).and_then(|s| s.kept_for(e)) {
+            Some(Kept::LatDistance(k)) => k,
+            None => {
+                let distance = spec.distance.unwrap_or(0.0);
+                let distance = if displacement == Displacement::Unread { distance } else { distance.abs() };
+                LatDistanceKept { distance, sign: 0.0, lat_vel: 0.0, acceleration: 0.0 }
+            }
+        };
+        let half_widths = if spec.freespace { (a.bbox[4] + b.bbox[4]) / 2.0 } else { 0.0 };
+        let (esmini_distance, esmini_sign) = esmini_start(kept.distance, kept.sign, frame, displacement, half_widths);
+        // Our wanted t is + to the left; esmini's road-frame distance is − to the left.
+        let wanted = if frame == Frame::Road { -esmini_distance } else { esmini_distance };
         let c = spec.constraints;
         // ScenarioReader::parseDynamicConstraints without an entity: a missing limit is none, a
         // value under SMALL_NUMBER takes the default (maxSpeed 250 km/h, maxAcceleration 5,
@@ -106,9 +116,11 @@ impl<'a> Sim<'a> {
             max_speed,
             rigid: max_speed >= LARGE && max_acc >= LARGE && max_dec >= LARGE,
             phase: Phase::Init,
-            lat_vel: 0.0,
-            acceleration: 0.0,
+            lat_vel: kept.lat_vel,
+            acceleration: kept.acceleration,
             old: (a.x, a.y),
+            esmini_distance,
+            esmini_sign,
         }))
     }
 
@@ -262,6 +274,39 @@ impl<'a> Sim<'a> {
             en.set_heading_on_lane(net, dy.atan2(dx));
         }
         r.old = (en.x, en.y);
+    }
+}
+
+/// The side LatDistanceAction::Start reads from the displacement.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Displacement {
+    Left,
+    Right,
+    /// Before 1.1 (DisplacementType::NONE): neither side; the distance keeps its sign.
+    Unread,
+}
+
+/// LatDistanceAction::Start on the distance and side sign its object holds (the parsed
+/// distance at the first execution, what the last Start left at the next): in the entity frame
+/// the freespace half-widths are added, then the sign turned for the right side; in the road
+/// frame the distance is made negative for the left side (positive for the right) and the
+/// half-widths added on that side. Start changes the object's own distance, so an event
+/// executed again adds the half-widths again.
+fn esmini_start(distance: f64, sign: f64, frame: Frame, displacement: Displacement, half_widths: f64) -> (f64, f64) {
+    match frame {
+        Frame::Entity => {
+            let d = distance + half_widths;
+            (if displacement == Displacement::Right { -d } else { d }, sign)
+        }
+        Frame::Road => {
+            let (d, sign) = match displacement {
+                Displacement::Left => (-distance.abs(), -1.0),
+                Displacement::Right => (distance.abs(), 1.0),
+                Displacement::Unread => (distance, sign),
+            };
+            (d + sign * half_widths, sign)
+        }
+        Frame::Idle => (distance, sign),
     }
 }
 

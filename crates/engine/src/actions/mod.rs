@@ -95,7 +95,14 @@ impl<'a> Sim<'a> {
         let node = self.actions[slot].node;
         self.set_state(node, Transition::Start, State::Running);
         self.actions[slot].running = true;
-        self.actions[slot].instances.clear();
+        // An instance still holding its state (stopped, or overridden, before it finished)
+        // leaves it to the next execution as a finished one does.
+        let previous = std::mem::take(&mut self.actions[slot].instances);
+        for i in &previous {
+            if let Some(e) = i.entity {
+                self.actions[slot].keep(e, &i.rt);
+            }
+        }
         let model = self.actions[slot].model;
         match &model.kind {
             ActionKind::Private(p) => {
@@ -328,7 +335,9 @@ impl<'a> Sim<'a> {
                 ActionRt::Done | ActionRt::EndedAtStart => true,
             };
             self.time = saved;
-            if !done {
+            if done {
+                self.actions[slot].keep(e, &rt);
+            } else {
                 all_done = false;
                 self.actions[slot].instances[k].rt = rt;
             }

@@ -53,11 +53,37 @@ pub(crate) struct ActionSlot<'a> {
     /// A story action handed over to a ghost (`ghost/`): its references to the entity name
     /// the ghost (entity, ghost), as esmini's OSCPrivateAction::ReplaceObjectRefs does.
     pub ghost_refs: Option<(usize, usize)>,
+    /// Per actor, what esmini's action object keeps from the last execution for the next one
+    /// (its event or maneuver group started again).
+    pub kept: Vec<(usize, Kept)>,
+}
+
+/// State an action's esmini object keeps across executions.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Kept {
+    LatDistance(super::lat_distance::state::LatDistanceKept),
 }
 
 impl<'a> ActionSlot<'a> {
     pub(crate) fn new(node: usize, model: &'a Action, actors: Vec<usize>) -> Self {
-        ActionSlot { node, model, actors, instances: Vec::new(), running: false, warned: false, ghost_copy: false, ghost_refs: None }
+        ActionSlot { node, model, actors, instances: Vec::new(), running: false, warned: false, ghost_copy: false, ghost_refs: None, kept: Vec::new() }
+    }
+
+    /// Record what instance `rt` of actor `e` leaves for the next execution.
+    pub(crate) fn keep(&mut self, e: usize, rt: &ActionRt) {
+        let kept = match rt {
+            ActionRt::LatDistance(r) => Kept::LatDistance(r.kept()),
+            _ => return,
+        };
+        match self.kept.iter_mut().find(|(k, _)| *k == e) {
+            Some(slot) => slot.1 = kept,
+            None => self.kept.push((e, kept)),
+        }
+    }
+
+    /// What actor `e`'s last execution left, if anything.
+    pub(crate) fn kept_for(&self, e: usize) -> Option<Kept> {
+        self.kept.iter().find(|(k, _)| *k == e).map(|&(_, k)| k)
     }
 
     /// Control domains the action takes over.

@@ -36,4 +36,27 @@ pub(crate) struct LatDistanceRt {
     pub(super) lat_vel: f64,
     pub(super) acceleration: f64,
     pub(super) old: (f64, f64),
+    /// esmini's `distance_` and `sign_` as this execution's Start left them (in esmini's own
+    /// signs: the road frame's distance is negative to the left), for the next execution.
+    pub(super) esmini_distance: f64,
+    pub(super) esmini_sign: f64,
+}
+
+impl LatDistanceRt {
+    /// What esmini's action object keeps for its event's next execution.
+    pub(crate) fn kept(&self) -> LatDistanceKept {
+        LatDistanceKept { distance: self.esmini_distance, sign: self.esmini_sign, lat_vel: self.lat_vel, acceleration: self.acceleration }
+    }
+}
+
+/// What esmini's LatDistanceAction object carries from one execution of its event to the next:
+/// the object is built once per actor and only started again, and neither Start nor the first
+/// step resets its distance (Start adds the freespace half-widths to it again), its spring's
+/// lateral speed or its acceleration.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct LatDistanceKept {
+    pub(super) distance: f64,
+    pub(super) sign: f64,
+    pub(super) lat_vel: f64,
+    pub(super) acceleration: f64,
 }

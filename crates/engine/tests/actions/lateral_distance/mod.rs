@@ -5,6 +5,7 @@ mod across_roads;
 mod domain;
 mod entity_frame;
 mod lane_path;
+mod repeated;
 mod rigid_heading;
 mod rigid_right_angle;
 mod road_coordinates;
