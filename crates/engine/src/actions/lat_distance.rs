@@ -83,7 +83,7 @@ impl<'a> Sim<'a> {
         };
         let kept = match self.actions.get(slot).and_then(|s| s.kept_for(e)) {
             Some(Kept::LatDistance(k)) => k,
-            None => {
+            _ => {
                 let distance = spec.distance.unwrap_or(0.0);
                 let distance = if displacement == Displacement::Unread { distance } else { distance.abs() };
                 LatDistanceKept { distance, sign: 0.0, lat_vel: 0.0, acceleration: 0.0 }

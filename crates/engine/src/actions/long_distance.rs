@@ -13,7 +13,7 @@ pub(crate) mod state;
 
 use state::LongDistanceRt;
 
-use super::state::ActionRt;
+use super::state::{ActionRt, Kept};
 use crate::conditions::distance::between;
 use crate::roads::move_along_s_drawn;
 use crate::sim::Sim;
@@ -99,6 +99,11 @@ impl<'a> Sim<'a> {
                 }
             }
         };
+        if let Some(Kept::LongDistance(k)) = self.actions.get(slot).and_then(|s| s.kept_for(e)) {
+            // The object's state from the last execution (LongDistanceKept).
+            rt.side = k.side;
+            rt.acceleration = k.acceleration;
+        }
         ActionRt::LongDistance(Box::new(rt))
     }
 

@@ -168,8 +168,16 @@ impl<'a> Sim<'a> {
                 };
                 self.start_lat_distance(slot, e, &spec)
             }
-            PrivateAction::Synchronize { master, target_position_master, target_position, final_speed, target_tolerance_master, target_tolerance } => self
-                .start_synchronize(slot, master, target_position_master, target_position, final_speed.as_ref(), (*target_tolerance_master, *target_tolerance)),
+            PrivateAction::Synchronize { master, target_position_master, target_position, final_speed, target_tolerance_master, target_tolerance } => {
+                let spec = synchronize::SynchronizeSpec {
+                    master,
+                    target_master: target_position_master,
+                    target: target_position,
+                    final_speed: final_speed.as_ref(),
+                    tolerances: (*target_tolerance_master, *target_tolerance),
+                };
+                self.start_synchronize(slot, e, &spec)
+            }
             PrivateAction::LaneChange { dynamics, target, target_lane_offset } => {
                 self.start_lane_change(slot, e, dynamics, target, target_lane_offset.unwrap_or(0.0))
             }

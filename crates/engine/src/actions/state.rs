@@ -62,6 +62,8 @@ pub(crate) struct ActionSlot<'a> {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) enum Kept {
     LatDistance(super::lat_distance::state::LatDistanceKept),
+    LongDistance(super::long_distance::state::LongDistanceKept),
+    Synchronize(super::synchronize::state::SynchronizeKept),
 }
 
 impl<'a> ActionSlot<'a> {
@@ -73,6 +75,8 @@ impl<'a> ActionSlot<'a> {
     pub(crate) fn keep(&mut self, e: usize, rt: &ActionRt) {
         let kept = match rt {
             ActionRt::LatDistance(r) => Kept::LatDistance(r.kept()),
+            ActionRt::LongDistance(r) => Kept::LongDistance(r.kept()),
+            ActionRt::Synchronize(r) => Kept::Synchronize(r.kept()),
             _ => return,
         };
         match self.kept.iter_mut().find(|(k, _)| *k == e) {

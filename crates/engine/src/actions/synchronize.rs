@@ -18,7 +18,7 @@ pub(crate) mod state;
 
 use state::{Final, Mode, Submode, SynchronizeRt};
 
-use super::state::ActionRt;
+use super::state::{ActionRt, Kept};
 use crate::angles::angle_difference;
 use crate::angles::wrap_2pi;
 use crate::positions::{resolve, Placement};
@@ -34,16 +34,20 @@ const LARGE: f64 = 1e10;
 /// The deceleration esmini uses to stop at once, m/s².
 const STOP_DECELERATION: f64 = -8.0;
 
+/// The action's parameters as the model gives them.
+#[derive(Clone, Copy)]
+pub(crate) struct SynchronizeSpec<'s> {
+    pub master: &'s str,
+    pub target_master: &'s Position,
+    pub target: &'s Position,
+    pub final_speed: Option<&'s FinalSpeed>,
+    /// (targetToleranceMaster, targetTolerance).
+    pub tolerances: (Option<f64>, Option<f64>),
+}
+
 impl<'a> Sim<'a> {
-    pub(super) fn start_synchronize(
-        &mut self,
-        slot: usize,
-        master: &str,
-        target_master: &Position,
-        target: &Position,
-        final_speed: Option<&FinalSpeed>,
-        tolerances: (Option<f64>, Option<f64>),
-    ) -> ActionRt {
+    pub(super) fn start_synchronize(&mut self, slot: usize, e: usize, spec: &SynchronizeSpec) -> ActionRt {
+        let SynchronizeSpec { master, target_master, target, final_speed, tolerances } = *spec;
         let Some(master) = self.entity_index(master) else {
             self.warn_action(slot, format!("SynchronizeAction: unknown master entity `{master}`"));
             return ActionRt::Done;
@@ -83,6 +87,15 @@ impl<'a> Sim<'a> {
             last_dist: LARGE,
             last_master_dist: LARGE,
         };
+        if let Some(Kept::Synchronize(k)) = self.actions.get(slot).and_then(|s| s.kept_for(e)) {
+            // The object's state from the last execution (SynchronizeKept).
+            rt.mode = k.mode;
+            rt.submode = k.submode;
+            rt.last_dist = k.last_dist;
+            rt.last_master_dist = k.last_master_dist;
+            rt.steady_dist = k.steady_dist;
+            rt.steady_time = None;
+        }
         // A steady-state time becomes a distance at the final speed the action starts with.
         if let Some(st) = rt.steady_time.take() {
             rt.steady_dist = Some(st * self.final_speed_value(&rt));

@@ -3,6 +3,7 @@
 mod add_delete_entity;
 mod assign_controller_never_ends;
 mod basic;
+mod executed_again;
 mod lane_change;
 mod lane_offset_relative;
 mod lateral_distance;

@@ -21,3 +21,19 @@ pub(crate) struct LongDistanceRt {
     pub(super) max_speed: f64,
     pub(super) acceleration: f64,
 }
+
+impl LongDistanceRt {
+    /// What esmini's action object keeps for its event's next execution.
+    pub(crate) fn kept(&self) -> LongDistanceKept {
+        LongDistanceKept { side: self.side, acceleration: self.acceleration }
+    }
+}
+
+/// What esmini's LongDistanceAction object carries from one execution of its event to the next:
+/// an "any" displacement as the first Start resolved it (Start resolves only "any", and leaves
+/// the side it chose in the object), and the acceleration its jerk limit starts from.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct LongDistanceKept {
+    pub(super) side: Option<f64>,
+    pub(super) acceleration: f64,
+}

@@ -42,3 +42,29 @@ pub(crate) struct SynchronizeRt {
     pub(super) last_dist: f64,
     pub(super) last_master_dist: f64,
 }
+
+impl SynchronizeRt {
+    /// What esmini's action object keeps for its event's next execution.
+    pub(crate) fn kept(&self) -> SynchronizeKept {
+        SynchronizeKept {
+            mode: self.mode,
+            submode: self.submode,
+            last_dist: self.last_dist,
+            last_master_dist: self.last_master_dist,
+            steady_dist: self.steady_dist,
+        }
+    }
+}
+
+/// What esmini's SynchronizeAction object carries from one execution of its event to the next:
+/// Start resets none of its speed profile's mode and submode nor the last distances (so an
+/// execution that starts no nearer its target than the last one ended is done at once, "missed
+/// destination"), and a steady-state time stays the distance the first Start made of it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct SynchronizeKept {
+    pub(super) mode: Mode,
+    pub(super) submode: Submode,
+    pub(super) last_dist: f64,
+    pub(super) last_master_dist: f64,
+    pub(super) steady_dist: Option<f64>,
+}
