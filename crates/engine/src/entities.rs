@@ -413,6 +413,16 @@ pub(crate) fn esmini_euler_heading(h_road: f64, h_rel: f64) -> f64 {
     crate::attitude::compose([h_road, 0.0, 0.0], [h_rel, 0.0, 0.0])[0]
 }
 
+/// Object::pos_.GetH() of entity `en`: its heading as esmini's position holds it, composed
+/// with its road's (Position::EvaluateHPR with an absolute heading, turned from the road's by
+/// GetAngleDifference: `esmini_euler_heading`).
+pub(crate) fn position_heading(net: Option<&opendrive::RoadNetwork>, en: &Entity) -> f64 {
+    match net.zip(en.lane).and_then(|(net, lp)| lp.pose(net)) {
+        Some(p) => esmini_euler_heading(p.road_heading, crate::angles::angle_difference(en.h, p.road_heading)),
+        None => esmini_reported_heading(en.h),
+    }
+}
+
 /// Each entity's bounding box `(cx, cy, cz, length, width, height)`, in the order of the
 /// trace's entities (the argument [`crate::Trace::to_csv`] takes).
 pub fn bounding_boxes(scenario: &Scenario) -> Vec<[f64; 6]> {

@@ -185,7 +185,9 @@ impl<'a> Sim<'a> {
                 // master facing exactly against it the difference is ±pi by rounding;
                 // Position::GetDrivingDirection's own arithmetic decides (the road heading,
                 // turned by pi into [0, 2pi) for a left lane and again for left-hand
-                // traffic).
+                // traffic), against the heading esmini's position holds (EvaluateHPR's
+                // guarded matrices: along ±y it is a micro-radian off the road's, which
+                // turns an exact tie to one side).
                 if let (Some(r), Some(pose)) = (net.roads.get(a.road), a.pose(net)) {
                     let mut drive_h = pose.road_heading;
                     if a.lane_id > 0 {
@@ -194,7 +196,7 @@ impl<'a> Sim<'a> {
                     if r.rule == opendrive::TrafficRule::LeftHand {
                         drive_h = wrap_2pi(drive_h + PI);
                     }
-                    if angle_difference(en.h, drive_h) > FRAC_PI_2 {
+                    if angle_difference(crate::entities::position_heading(Some(net), en), drive_h) > FRAC_PI_2 {
                         dir = -dir;
                     }
                 }

@@ -18,7 +18,7 @@ pub(crate) mod view;
 use state::LoomingRt;
 
 use super::analog_vehicle::AnalogVehicle;
-use crate::entities::{esmini_euler_heading, esmini_reported_heading};
+use crate::entities::position_heading;
 use crate::roads::road_follow::at_dead_end;
 use crate::roads::{move_along_route_drawing, move_along_s};
 use crate::sim::Sim;
@@ -90,16 +90,6 @@ impl LoomingRt {
     /// The speed of its vehicle model (0 before it is activated).
     fn speed(&self) -> f64 {
         self.vehicle.map_or(0.0, |v| v.car.speed)
-    }
-}
-
-/// Object::pos_.GetH() of entity `en`: its heading as esmini's position holds it, composed
-/// with its road's (Position::EvaluateHPR with an absolute heading, turned from the road's by
-/// GetAngleDifference: `esmini_euler_heading`).
-pub(crate) fn position_heading(net: Option<&opendrive::RoadNetwork>, en: &crate::entities::Entity) -> f64 {
-    match net.zip(en.lane).and_then(|(net, lp)| lp.pose(net)) {
-        Some(p) => esmini_euler_heading(p.road_heading, crate::angles::angle_difference(en.h, p.road_heading)),
-        None => esmini_reported_heading(en.h),
     }
 }
 

@@ -206,7 +206,7 @@ impl<'a> Sim<'a> {
             Some(ControllerRt::FollowReference(f)) => f.activate(&en, follow_reference::wheelbase(scenario, e)),
             Some(ControllerRt::FollowRoute(f)) => f.activate(longitudinal),
             Some(ControllerRt::Looming(l)) => {
-                l.activate(&en, longitudinal, looming::position_heading(net, &en));
+                l.activate(&en, longitudinal, crate::entities::position_heading(net, &en));
                 align = lateral;
             }
             Some(ControllerRt::OffroadFollower(f)) => f.activate(&en, lateral, longitudinal),
