@@ -36,8 +36,14 @@ impl<'a> Sim<'a> {
             if (en.teleported || en.appeared) && en.active && !en.outside && !en.roadless {
                 en.stop_if_stuck_at_road_end();
             }
-            // ScenarioEngine::step: no default move at |speed| <= SMALL_NUMBER (1e-6).
+            // ScenarioEngine::step: no default move at |speed| <= SMALL_NUMBER (1e-6). Its
+            // end-of-road test follows for every object all the same, moved or not: one an
+            // action moved (a lane offset at a dead end) or standing there is stopped too, its
+            // speed applied, so none is measured from an action's sideways jump.
             if !en.active || en.outside || en.moved_by_action || en.speed.abs() <= ESMINI_SMALL_NUMBER {
+                if en.active && !en.outside && !en.roadless {
+                    en.stop_if_stuck_at_road_end();
+                }
                 continue;
             }
             if en.roadless {

@@ -27,3 +27,31 @@ fn a_standing_car_moved_sideways_takes_the_sideways_rate_as_speed() {
     let held = at(&run, "Held", 6.0);
     assert!(close(held.speed, 0.0, 1e-9) && close(held.x, 50.0, 1e-9) && close(held.y, 2.15, 1e-6), "{held:?}");
 }
+
+/// At a dead end the derivation does not happen: ScenarioEngine::step tests every object for
+/// the end of its road after the (possibly skipped) default move, and one whose position says
+/// end of road, flagged there before, whose last velocity is zero is stopped by SetSpeed(0),
+/// which marks the speed as set. Fixture `lane_offset_at_dead_end.xosc` on `straight.xodr`
+/// (no links): "Stuck" drives into the road's end (s = 1000), "Back" into its start (lane 1,
+/// s = 0), "Free" stands at s = 500; each gets a step lane offset of −0.5 m at 2 s. In esmini's
+/// run (3.6.0) Stuck and Back stay at 0 m/s, where they are; Free takes 50 m/s and drives off.
+#[test]
+fn a_car_stuck_at_a_dead_end_moved_sideways_stays_stopped() {
+    use crate::common::oracle::assert_fixture_matches_esmini;
+    let run = assert_fixture_matches_esmini(
+        "lane_offset_at_dead_end.xosc",
+        4.0,
+        &[
+            ("Stuck", 2.02, 1000.0, -2.25, 0.0),
+            ("Stuck", 3.0, 1000.0, -2.25, 0.0),
+            ("Back", 2.02, 0.0, 1.25, std::f64::consts::PI),
+            ("Back", 3.0, 0.0, 1.25, std::f64::consts::PI),
+            ("Free", 2.02, 500.0, -2.25, 0.0),
+            ("Free", 3.0, 549.0, -2.25, 0.0),
+        ],
+    );
+    for name in ["Stuck", "Back"] {
+        assert!(close(at(&run, name, 2.02).speed, 0.0, 1e-9), "{name}: {:?}", at(&run, name, 2.02));
+    }
+    assert!(close(at(&run, "Free", 2.02).speed, 50.0, 1e-6), "{:?}", at(&run, "Free", 2.02));
+}
