@@ -38,8 +38,8 @@ impl<'a> Sim<'a> {
             }
             // ScenarioEngine::step: no default move at |speed| <= SMALL_NUMBER (1e-6). Its
             // end-of-road test follows for every object all the same, moved or not: one an
-            // action moved (a lane offset at a dead end) or standing there is stopped too, its
-            // speed applied, so none is measured from an action's sideways jump.
+            // action or a controller moved, or one standing at a dead end, is stopped too, its
+            // speed applied, so none is measured from an action's sideways jump there.
             if !en.active || en.outside || en.moved_by_action || en.speed.abs() <= ESMINI_SMALL_NUMBER {
                 if en.active && !en.outside && !en.roadless {
                     en.stop_if_stuck_at_road_end();

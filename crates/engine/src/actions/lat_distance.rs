@@ -188,6 +188,11 @@ impl<'a> Sim<'a> {
         let z = if net.is_some() { None } else { Some(en.z) };
         en.set_world(net, to.x, to.y, z, to.h);
         en.moved_by_action = true;
+        // Position::SetInertiaPos's XYZ2TrackPos sets the end-of-road status afresh: only a
+        // point beyond the road's end has it (ScenarioEngine::step then stops one stuck there).
+        if let (Some(net), Some(lp)) = (net, en.lane) {
+            en.at_road_end = crate::roads::past_end::past_road_end(net, lp.road, lp.s, to.x, to.y);
+        }
     }
 
     fn step_lat_distance_road(&mut self, e: usize, r: &mut LatDistanceRt) -> bool {
@@ -268,6 +273,8 @@ impl<'a> Sim<'a> {
     /// heading, so the angle it makes with the road stays through the default controller's
     /// move in this step (a rigid jump's row faces along the jump, and a lateral speed
     /// condition sees none) and after the action, until something turns the entity again.
+    /// Without any displacement here esmini's is a rounding error whose atan2 we cannot
+    /// reproduce; the heading is kept.
     fn head_along(net: &opendrive::RoadNetwork, en: &mut crate::entities::Entity, r: &mut LatDistanceRt) {
         let (dx, dy) = (en.x - r.old.0, en.y - r.old.1);
         if dx * dx + dy * dy > 0.0 {

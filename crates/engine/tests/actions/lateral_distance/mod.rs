@@ -4,6 +4,7 @@ mod across_junction;
 mod across_roads;
 mod domain;
 mod entity_frame;
+mod entity_frame_dead_end;
 mod lane_path;
 mod repeated;
 mod rigid_heading;
