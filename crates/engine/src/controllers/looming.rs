@@ -95,9 +95,10 @@ impl LoomingRt {
 
 impl<'a> Sim<'a> {
     /// Whether entity `e`'s position is locked on its lane: a looming controller has driven it
-    /// (ControllerLooming::Step sets the lock and nothing clears it).
+    /// (ControllerLooming::Step sets the lock and nothing clears it; its Activate does not, so
+    /// a lane change stepped in the frame it is activated attaches the position unlocked).
     pub(crate) fn lane_locked(&self, e: usize) -> bool {
-        self.controllers_of(e).any(|c| matches!(c, super::state::ControllerRt::Looming(l) if l.vehicle.is_some()))
+        self.controllers_of(e).any(|c| matches!(c, super::state::ControllerRt::Looming(l) if l.placed_h.is_some()))
     }
 
     /// Controller::Activate of a controller that aligns to the road on activation (the

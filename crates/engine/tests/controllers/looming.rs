@@ -70,6 +70,29 @@ fn a_lane_change_only_moves_the_lane_the_looming_car_is_locked_on() {
 }
 
 #[test]
+fn assigned_during_a_lane_change_it_locks_the_lane_from_its_first_step_on() {
+    // looming_assigned_during_lane_change.xosc: a lane change from lane -1 to -2 runs from 4.12 s;
+    // the controller is assigned (both domains) at 5.11 s. ControllerLooming::Step sets the lane
+    // lock, its Activate does not: the lane change stepped in the activation frame re-attaches
+    // the position to lane -1 (where it is), the next one to the locked target lane -2, and the
+    // probes follow. (time, x, y, speed, lane, offset) from esmini 3.6.0's trace.
+    let r = crate::common::run_fixture("looming_assigned_during_lane_change.xosc", "straight.xodr");
+    let expected = [
+        (5.12, 246.987974, -2.276976, 28.61, -1, -0.526976),
+        (5.13, 247.27291, -2.286628, 28.51, -2, 2.963372),
+        (6.0, 268.099226, -4.657794, 19.81, -2, 0.592206),
+        (8.0, 293.465498, -3.922325, 10.700004, -2, 1.327675),
+        (12.6, 342.651116, -5.242807, 10.699999, -2, 0.007193),
+    ];
+    for (t, x, y, v, lane, offset) in expected {
+        let s = at(&r, "Ego", t);
+        let road = s.road.expect("on the road");
+        assert!(close(s.x, x, 1e-3) && close(s.y, y, 1e-3) && close(s.speed, v, 1e-4), "at {t} s: {s:?}, esmini ({x}, {y}) at {v} m/s");
+        assert!(road.lane_id == lane && close(road.lane_offset, offset, 1e-3), "at {t} s: {road:?}, esmini lane {lane} offset {offset}");
+    }
+}
+
+#[test]
 fn a_lane_change_onto_a_border_lane_leaves_the_looming_car_in_the_driving_lane() {
     // looming_lane_change_onto_border.xosc (bay.xodr): the lane change from lane -2 towards the
     // border lane -3 puts the position, locked on its lane, in the driving lane nearest lane
