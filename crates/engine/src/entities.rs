@@ -106,6 +106,15 @@ impl Entity {
         in_frame(self.acc_vec, self.h).0
     }
 
+    /// The end-of-road status a position set from world coordinates takes (Position::
+    /// SetInertiaPos → XYZ2TrackPos sets it afresh): only a point beyond its road's end has it.
+    /// A teleport, which copies the location only, keeps the status it had instead.
+    pub(crate) fn set_end_status_from_world(&mut self, net: &RoadNetwork) {
+        if let Some(lp) = self.lane {
+            self.at_road_end = crate::roads::past_end::past_road_end(net, lp.road, lp.s, self.x, self.y);
+        }
+    }
+
     /// esmini's ScenarioEngine::step, after every object's (default) move: an object whose
     /// position status says end of road (`at_road_end`), already flagged there in an earlier
     /// step (`end_of_road`), and whose velocity, measured at the last step, is zero is stopped

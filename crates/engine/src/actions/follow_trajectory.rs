@@ -345,8 +345,8 @@ impl<'a> Sim<'a> {
         // last step (its velocity, measured then, is zero) is stopped. A trajectory that ends
         // past a dead end so leaves the entity standing where it is, rather than driving on
         // along the road from the road's end.
-        if let (Some(net), Some(lp)) = (net, en.lane) {
-            en.at_road_end = crate::roads::past_end::past_road_end(net, lp.road, lp.s, x, y);
+        if let (Some(net), Some(_)) = (net, en.lane) {
+            en.set_end_status_from_world(net);
             en.stop_if_stuck_at_road_end();
         }
         f.clock += dt;

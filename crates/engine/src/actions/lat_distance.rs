@@ -188,10 +188,9 @@ impl<'a> Sim<'a> {
         let z = if net.is_some() { None } else { Some(en.z) };
         en.set_world(net, to.x, to.y, z, to.h);
         en.moved_by_action = true;
-        // Position::SetInertiaPos's XYZ2TrackPos sets the end-of-road status afresh: only a
-        // point beyond the road's end has it (ScenarioEngine::step then stops one stuck there).
-        if let (Some(net), Some(lp)) = (net, en.lane) {
-            en.at_road_end = crate::roads::past_end::past_road_end(net, lp.road, lp.s, to.x, to.y);
+        // Position::SetInertiaPos: ScenarioEngine::step then stops only one stuck past the end.
+        if let Some(net) = net {
+            en.set_end_status_from_world(net);
         }
     }
 
