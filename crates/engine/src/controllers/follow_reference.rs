@@ -86,9 +86,11 @@ impl<'a> Sim<'a> {
             Some(n) => self.entity_index(n),
             None => self.ghost.as_ref().filter(|g| g.owner == e).map(|g| g.entity),
         };
-        let (Some(r), Some(mut car)) = (reference.and_then(|r| self.entities.get(r)), f.vehicle) else { return };
-        // In override mode nothing else moves the entity: its state is the body's.
-        let (x, y, h, v) = (car.x, car.y, car.h, car.speed);
+        let (Some(r), Some(mut car), Some(en)) = (reference.and_then(|r| self.entities.get(r)), f.vehicle, self.entities.get(e)) else { return };
+        // ControllerFollowReference::Step measures from the entity's pose and speed, not from
+        // the body's own: an action that changes the entity's speed under override (a speed
+        // profile, which checks for none) steers and brakes the controller.
+        let (x, y, h, v) = (en.x, en.y, en.h, en.speed);
         // Lateral error measured at the front axle when driving forward, positive to the
         // reference's right; and the longitudinal distance along our own heading, positive when
         // ahead of the reference. Both written as esmini's DistanceFromPointToLine2DWithAngle

@@ -219,8 +219,9 @@ impl<'a> Sim<'a> {
 
     /// Whether a controller of entity `e` in override mode owns its longitudinal motion now
     /// (esmini's `Object::IsControllerModeOnDomains(MODE_OVERRIDE, DOMAIN_MASK_LONG)`): an
-    /// active ACC/ALKS, Looming or ALKS R157 in override mode, a FollowRoute controller during
-    /// its lane change.
+    /// active ACC/ALKS, Looming or ALKS R157 in override mode, a FollowReference (always in
+    /// override mode, with or without a ghost: the ghost takes the storyboard's actions, the
+    /// entity keeps its Init ones), a FollowRoute controller during its lane change.
     pub(crate) fn longitudinal_overridden(&self, e: usize) -> bool {
         if self.outside(e) {
             return true;
@@ -234,6 +235,8 @@ impl<'a> Sim<'a> {
             ControllerRt::Looming(l) => l.active && l.override_mode,
             // ControllerALKS_R157SM operates on both domains (the Controller default).
             ControllerRt::AlksR157(a) => a.active && a.override_mode && a.longitudinal,
+            // ControllerFollowReference forces override mode on both domains.
+            ControllerRt::FollowReference(f) => f.active,
             _ => false,
         })
     }
@@ -241,16 +244,15 @@ impl<'a> Sim<'a> {
     /// Whether any active controller of entity `e` holds its longitudinal domain in override mode:
     /// esmini's `Object::IsControllerModeOnDomains(MODE_OVERRIDE, DOMAIN_MASK_LONG)` over every
     /// controller type: `longitudinal_overridden`'s set (the one a SpeedAction is ended under so
-    /// far: ACC/ALKS, Looming, ALKS R157, OffroadFollower, FollowRoute during its lane change, an
-    /// entity driven from outside) and besides a NaturalDriver unless additive and a
-    /// FollowReference following an entity.
+    /// far: ACC/ALKS, Looming, ALKS R157, OffroadFollower, FollowReference, FollowRoute during
+    /// its lane change, an entity driven from outside) and besides a NaturalDriver unless
+    /// additive.
     pub(crate) fn long_domain_overridden(&self, e: usize) -> bool {
         if self.longitudinal_overridden(e) {
             return true;
         }
         self.controllers_of(e).any(|c| match c {
             ControllerRt::NaturalDriver(n) => n.active && n.override_mode,
-            ControllerRt::FollowReference(f) => f.active && !f.uses_ghost(),
             _ => false,
         })
     }

@@ -1,0 +1,30 @@
+//! FollowReferenceController measures from its entity, not from its own vehicle model: esmini's
+//! ControllerFollowReference::Step reads `object_->GetSpeed()` for the speed spring and the
+//! Stanley steering, and the controller forces override mode on both domains.
+//!
+//! Fixture `follow_reference_speed_under_override.xosc` on straight.xodr: Ego and Ego2 follow a
+//! lead 20 m ahead at 10 m/s, each from 8 m/s.
+//! - Each starts with an init SpeedAction of rate 2 m/s² that the init's activation ends in its
+//!   first step (LongSpeedAction::Step under override), so the speed is the spring's from then.
+//! - At t = 2 a SpeedProfileAction on Ego (LongSpeedProfileAction::Step checks no override) sets
+//!   Ego's speed every step, and the spring reacts to that speed, not to its model's: it
+//!   sees Ego slower than the lead, pulls, and Ego runs away ahead (6 m beyond Ego2 at t = 4).
+//! - At t = 2 a SpeedAction on Ego2 ends at once (LongSpeedAction::Start): Ego2 keeps following.
+//!
+//! Numbers from esmini 3.6.0's run.
+
+use crate::common::oracle::{assert_esmini_pose_at, assert_matches_esmini, run_fixture_scenario};
+use crate::common::*;
+
+const FIXTURE: &str = "follow_reference_speed_under_override.xosc";
+
+#[test]
+fn an_action_that_sets_the_speed_under_override_moves_the_controllers_input() {
+    let run = run_fixture_scenario(FIXTURE, 20.0);
+    let (ego, ego2) = (at(&run, "Ego", 4.0), at(&run, "Ego2", 4.0));
+    assert!(ego.x > ego2.x + 5.0, "the spring pulls on the profile's speed: {ego:?} {ego2:?}");
+    assert_esmini_pose_at(&run, "Ego", 4.0, 159.587037, -1.75, 0.0);
+    assert_esmini_pose_at(&run, "Ego2", 4.0, 153.242823, -5.25, 0.0);
+    assert_matches_esmini(FIXTURE, &run, 1e-3);
+}
+
