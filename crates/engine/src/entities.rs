@@ -60,6 +60,10 @@ pub(crate) struct Entity {
     pub speed_set: bool,
     /// The last move ended at a road end with no continuation (position status).
     pub at_road_end: bool,
+    /// The status a controller's placement found (`place_driven`), taken into `at_road_end`
+    /// at the next step's end-of-road test: esmini makes that test before it steps the
+    /// controllers, so it reads the placement of the step before.
+    pub road_end_after_controller: Option<bool>,
     /// Put where esmini leaves a position it could not set (a RoutePosition FromCurrentEntity,
     /// or a road-relative position from such an entity): at the origin without a road, where
     /// its default controller cannot move it (motion.rs).
@@ -169,6 +173,7 @@ impl Entity {
             moved_by_action: false,
             speed_set: false,
             at_road_end: false,
+            road_end_after_controller: None,
             roadless: false,
             end_of_road: false,
             end_of_road_since: 0.0,

@@ -28,6 +28,9 @@ impl<'a> Sim<'a> {
         let net = self.net;
         let random = &mut self.random;
         for en in &mut self.entities {
+            if let Some(status) = en.road_end_after_controller.take() {
+                en.at_road_end = status;
+            }
             // A teleport keeps the position status (Position::TeleportTo copies the location
             // only, CopyLocation leaves `status_`), and ScenarioEngine::step checks it after
             // the (here skipped) default move: an entity stuck at a dead end and teleported

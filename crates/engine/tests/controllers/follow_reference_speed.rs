@@ -28,3 +28,16 @@ fn an_action_that_sets_the_speed_under_override_moves_the_controllers_input() {
     assert_matches_esmini(FIXTURE, &run, 1e-3);
 }
 
+/// Fixture `follow_reference_off_a_dead_end.xosc`: the controller's placement locates the
+/// entity afresh (Position::SetInertiaPos), end-of-road status included, so an
+/// EndOfRoadCondition on a FollowReference entity that drives past a dead end fires: esmini
+/// starts Marker at 4.38 s, when Ego is 0.2 m past the road's end.
+#[test]
+fn a_follower_driven_past_a_dead_end_is_at_the_end_of_the_road() {
+    const OFF: &str = "follow_reference_off_a_dead_end.xosc";
+    let run = run_fixture_scenario(OFF, 20.0);
+    let started = event_time(&run, "End", "start");
+    assert!(started.is_some_and(|t| (t - 4.38).abs() < 1e-6), "Marker's event starts at {started:?}");
+    assert!(at(&run, "Marker", 4.39).speed > 0.5);
+    assert_matches_esmini(OFF, &run, 1e-3);
+}
