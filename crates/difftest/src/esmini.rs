@@ -56,7 +56,21 @@ pub fn run(esmini: &Path, xosc: &Path, csv: &Path, wall: Duration) -> Result<Esm
     if traces.is_empty() {
         return Err("esmini logged no state".into());
     }
+    if let Some(why) = non_finite(&traces) {
+        return Err(why);
+    }
     Ok(EsminiRun { traces, log_errors })
+}
+
+/// Why a log is no reference: esmini 3.6.0 writes NaN positions where its own arithmetic fails
+/// (a road-frame LateralDistanceAction whose actor stands at a dead end, for one). What follows
+/// is esmini's undefined state, not a behaviour to match (and the engine never writes a
+/// non-finite pose), so such a run is not compared. None when every position is finite.
+pub fn non_finite(traces: &Traces) -> Option<String> {
+    traces.iter().find_map(|(name, states)| {
+        let s = states.iter().find(|s| !s.x.is_finite() || !s.y.is_finite())?;
+        Some(format!("esmini logged a non-finite position ({name} at {:.2} s): no reference to compare", s.t))
+    })
 }
 
 /// esmini's CSV log as states per entity.

@@ -5,4 +5,5 @@ mod common;
 mod coverage_table;
 mod esmini_agreement;
 mod esmini_limits;
+mod esmini_log;
 mod generator;
