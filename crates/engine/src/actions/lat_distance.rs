@@ -21,9 +21,9 @@ pub(crate) mod state;
 use entity_frame::{entity_frame_step, Pose};
 use state::{Frame, LatDistanceKept, LatDistanceRt, Phase};
 
+use super::dynamic_constraints::{limits, Performance};
 use super::state::{ActionRt, Kept};
 use crate::angles::wrap;
-use crate::dynamics::ESMINI_SMALL_NUMBER as ESMINI_SMALL;
 use crate::roads::lane_geometry::lane_center_t;
 use crate::roads::lane_snap;
 use crate::roads::move_along_route_drawing;
@@ -33,12 +33,8 @@ use opendrive::ContactPoint;
 use openscenario::{CoordinateSystem, DynamicConstraints, LateralDisplacement};
 use std::f64::consts::FRAC_PI_2;
 
-const LARGE: f64 = 1e10;
+const LARGE: f64 = super::dynamic_constraints::UNLIMITED;
 const SPRING: f64 = 0.4;
-/// parseDynamicConstraints' defaults for a limit given as (about) zero.
-const DEFAULT_MAX_ACC: f64 = 5.0;
-const DEFAULT_MAX_DEC: f64 = 10.0;
-const DEFAULT_MAX_SPEED: f64 = 250.0 / 3.6;
 /// Distance error below which a non-continuous action is done, m.
 const THRESHOLD: f64 = 0.01;
 
@@ -93,18 +89,9 @@ impl<'a> Sim<'a> {
         let (esmini_distance, esmini_sign) = esmini_start(kept.distance, kept.sign, frame, displacement, half_widths);
         // Our wanted t is + to the left; esmini's road-frame distance is − to the left.
         let wanted = if frame == Frame::Road { -esmini_distance } else { esmini_distance };
-        let c = spec.constraints;
-        // ScenarioReader::parseDynamicConstraints without an entity: a missing limit is none, a
-        // value under SMALL_NUMBER takes the default (maxSpeed 250 km/h, maxAcceleration 5,
-        // maxDeceleration 10, the rates none).
-        let lim = |v: Option<f64>, default: f64| match v {
-            None => LARGE,
-            Some(x) if x < ESMINI_SMALL => default,
-            Some(x) => x,
-        };
-        let max_acc = lim(c.and_then(|c| c.max_acceleration), DEFAULT_MAX_ACC);
-        let max_speed = lim(c.and_then(|c| c.max_speed), DEFAULT_MAX_SPEED);
-        let max_dec = lim(c.and_then(|c| c.max_deceleration), DEFAULT_MAX_DEC);
+        // ScenarioReader::parseDynamicConstraints without an entity: a missing limit is none.
+        let c = limits(spec.constraints, Performance::NONE);
+        let (max_acc, max_speed, max_dec) = (c.acc, c.speed, c.dec);
         ActionRt::LatDistance(Box::new(LatDistanceRt {
             slot,
             target,
@@ -112,7 +99,7 @@ impl<'a> Sim<'a> {
             wanted,
             continuous: spec.continuous,
             max_acc,
-            max_acc_rate: lim(c.and_then(|c| c.max_acceleration_rate), LARGE),
+            max_acc_rate: c.acc_rate,
             max_speed,
             rigid: max_speed >= LARGE && max_acc >= LARGE && max_dec >= LARGE,
             phase: Phase::Init,

@@ -13,13 +13,14 @@ pub(crate) mod state;
 
 use state::LongDistanceRt;
 
+use super::dynamic_constraints::{limits, Performance};
 use super::state::{ActionRt, Kept};
 use crate::conditions::distance::between;
 use crate::roads::move_along_s_drawn;
 use crate::sim::Sim;
 use openscenario::{CoordinateSystem, DynamicConstraints, LongitudinalDisplacement, RelativeDistanceType};
 
-const LARGE: f64 = 1e10;
+const LARGE: f64 = super::dynamic_constraints::UNLIMITED;
 const SPRING: f64 = 0.4;
 /// Distance error below which a non-continuous action is done, m.
 const THRESHOLD: f64 = 0.1;
@@ -62,13 +63,10 @@ impl<'a> Sim<'a> {
                 return ActionRt::Done;
             }
         };
-        let c = spec.constraints.copied().unwrap_or(DynamicConstraints {
-            max_acceleration: None,
-            max_deceleration: None,
-            max_speed: None,
-            max_acceleration_rate: None,
-            max_deceleration_rate: None,
-        });
+        // ScenarioReader::parseDynamicConstraints with the actor: its performance fills in and
+        // caps the limits.
+        let performance = self.entities.get(e).map_or(Performance::NONE, |en| Performance { speed: en.max_speed, acc: en.max_acc, dec: en.max_dec });
+        let c = limits(spec.constraints, performance);
         let mut rt = LongDistanceRt {
             target,
             value,
@@ -77,11 +75,11 @@ impl<'a> Sim<'a> {
             continuous: spec.continuous,
             cs: spec.coordinate_system.unwrap_or(CoordinateSystem::Entity),
             side: Some(1.0),
-            max_acc: c.max_acceleration.unwrap_or(LARGE),
-            max_dec: c.max_deceleration.unwrap_or(LARGE),
-            max_acc_rate: c.max_acceleration_rate.unwrap_or(LARGE),
-            max_dec_rate: c.max_deceleration_rate.unwrap_or(LARGE),
-            max_speed: c.max_speed.unwrap_or(LARGE),
+            max_acc: c.acc,
+            max_dec: c.dec,
+            max_acc_rate: c.acc_rate,
+            max_dec_rate: c.dec_rate,
+            max_speed: c.speed,
             acceleration: 0.0,
         };
         // Before 1.1 esmini reads no displacement and keeps the sign of the distance or time

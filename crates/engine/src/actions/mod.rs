@@ -4,6 +4,7 @@
 //! done.
 
 pub(crate) mod add_delete_entity;
+pub(crate) mod dynamic_constraints;
 pub(crate) mod follow_trajectory;
 pub(crate) mod global;
 pub(crate) mod lane_change;

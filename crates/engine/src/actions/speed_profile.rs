@@ -9,14 +9,13 @@ pub(crate) mod state;
 
 use state::{Segment, SpeedProfileRt};
 
+use super::dynamic_constraints::{limits, Limits, Performance};
 use super::state::ActionRt;
 use crate::sim::Sim;
 use openscenario::{DynamicConstraints, FollowingMode, SpeedProfileEntry};
 
 /// esmini's SMALL_NUMBER, used for the planner's comparisons.
 const EPS: f64 = 1e-6;
-/// Constraint default when neither the action nor the vehicle gives one.
-const LARGE: f64 = 1e10;
 
 #[derive(Debug, Clone, Copy)]
 struct Vertex {
@@ -35,15 +34,6 @@ impl Vertex {
         self.k = k;
         self.m = self.v - k * self.t;
     }
-}
-
-#[derive(Debug, Clone, Copy)]
-struct Limits {
-    acc: f64,
-    dec: f64,
-    acc_rate: f64,
-    dec_rate: f64,
-    speed: f64,
 }
 
 struct Planner {
@@ -89,7 +79,7 @@ impl<'a> Sim<'a> {
             },
             None => 0.0,
         };
-        let lim = limits(constraints, en.max_speed, en.max_acc, en.max_dec);
+        let lim = limits(constraints, Performance { speed: en.max_speed, acc: en.max_acc, dec: en.max_dec });
         // LongSpeedProfileAction::Start: init_acc_ is Position::GetAccLong, the world
         // acceleration's component along the heading, not the speed's rate of change
         let segments = plan(self.time, en.speed, en.acc_long(), offset, mode == FollowingMode::Follow, lim, entries);
@@ -116,28 +106,6 @@ impl<'a> Sim<'a> {
             en.speed = p.speed;
         }
         done
-    }
-}
-
-/// The planner's limits, as esmini's ScenarioReader::parseDynamicConstraints reads them:
-/// without a DynamicConstraints element every limit is unbounded; a missing attribute is the
-/// vehicle's performance, a value above it is cut to it, a value under SMALL_NUMBER becomes
-/// the smaller of esmini's default and the performance.
-fn limits(constraints: Option<&DynamicConstraints>, max_speed: f64, max_acc: f64, max_dec: f64) -> Limits {
-    let Some(c) = constraints else {
-        return Limits { acc: LARGE, dec: LARGE, acc_rate: LARGE, dec_rate: LARGE, speed: LARGE };
-    };
-    let pick = |value: Option<f64>, default: f64, performance: f64| match value {
-        None => performance,
-        Some(v) if v < EPS => default.min(performance),
-        Some(v) => v.min(performance),
-    };
-    Limits {
-        speed: pick(c.max_speed, 250.0 / 3.6, max_speed.min(LARGE)),
-        acc: pick(c.max_acceleration, 5.0, max_acc.min(LARGE)),
-        acc_rate: pick(c.max_acceleration_rate, LARGE, LARGE),
-        dec: pick(c.max_deceleration, 10.0, max_dec.min(LARGE)),
-        dec_rate: pick(c.max_deceleration_rate, LARGE, LARGE),
     }
 }
 

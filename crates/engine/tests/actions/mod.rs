@@ -11,6 +11,7 @@ mod longitudinal_distance_and_acc;
 mod longitudinal_distance_freespace;
 mod longitudinal_distance_in_1_0;
 mod longitudinal_distance_junction_arm;
+mod longitudinal_distance_limits;
 mod override_controller_value;
 mod parameter_modify_ignored;
 mod recorded;
