@@ -50,6 +50,18 @@ impl<'a> Sim<'a> {
         }
     }
 
+    /// The gap LongDistanceAction::Start resolves "any" by: with freespace the one Step
+    /// measures (Object::FreeSpaceDistance); without, the reference's position along the
+    /// actor's heading (Position::getRelativeDistance's x: RotateVec2D by −h), whatever the
+    /// coordinate system. Two entities side by side at a road's end are a rounding apart there.
+    fn any_side_gap(&self, e: usize, r: &LongDistanceRt) -> f64 {
+        match (self.entities.get(e), self.entities.get(r.target)) {
+            _ if r.freespace => self.long_gap(e, r),
+            (Some(a), Some(b)) => crate::entities::in_frame((b.x - a.x, b.y - a.y), a.h).0,
+            _ => 0.0,
+        }
+    }
+
     pub(super) fn start_long_distance(&mut self, slot: usize, e: usize, spec: &LongDistanceSpec) -> ActionRt {
         let Some(target) = self.entity_index(spec.entity) else {
             self.warn_action(slot, format!("LongitudinalDistanceAction: unknown entity `{}`", spec.entity));
@@ -90,7 +102,7 @@ impl<'a> Sim<'a> {
             LongitudinalDisplacement::TrailingReferencedEntity => Some(1.0),
             LongitudinalDisplacement::LeadingReferencedEntity => Some(-1.0),
             LongitudinalDisplacement::Any => {
-                if self.long_gap(e, &rt) < 0.0 {
+                if self.any_side_gap(e, &rt) < 0.0 {
                     Some(-1.0)
                 } else {
                     Some(1.0)

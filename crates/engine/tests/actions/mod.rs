@@ -8,6 +8,7 @@ mod lane_change;
 mod lane_offset_relative;
 mod lateral_distance;
 mod longitudinal_distance_and_acc;
+mod longitudinal_distance_any_side;
 mod longitudinal_distance_freespace;
 mod longitudinal_distance_in_1_0;
 mod longitudinal_distance_junction_arm;
