@@ -66,7 +66,10 @@ impl<'a> Sim<'a> {
                     let pedestrian = en.kind == crate::entities::EntityKind::Pedestrian;
                     let status = move_along_route_drawing(net, &mut lp, en.speed * dt, en.route.as_deref(), random, pedestrian);
                     en.set_lane_pos(net, lp);
-                    if status == MoveStatus::EndOfRoad {
+                    // Position::MoveAlongS leaves the end-of-road status after a move that fails
+                    // at a dead end, and also after one that ends within SMALL_NUMBER of an end
+                    // without a link element (an arrival exactly there).
+                    if status == MoveStatus::EndOfRoad || crate::roads::past_end::unlinked_end_at(net, lp.road, lp.s) {
                         // ScenarioEngine::step, after the default controller's move: an entity
                         // already flagged at the end of the road (`end_of_road`, set after the
                         // step that reached it) whose velocity is zero (`vel` is still the last

@@ -260,19 +260,23 @@ impl<'a> Sim<'a> {
             }
         }
         en.moved_by_action = true;
-        if status == MoveStatus::EndOfRoad {
-            // esmini ends the lane change where the road ends (POS_STATUS_END_OF_ROAD →
-            // OSCAction::End), the offset reached so far kept; the speed is left to the
-            // default controller, which stops an entity stuck there. Without a route the
-            // status is not the move's but that of the re-attachment after it
-            // (LatLaneChangeAction::Step calls XYZ2TrackPos before it tests the status), set
-            // only at an end without a link element: at an end whose link leads to a road the
-            // map lacks, the lane change goes on, sideways only, until its offset is reached.
-            let past = en.route.is_some() || crate::roads::past_end::unlinked_end_at(net, attached.road, attached.s);
-            if past {
-                en.at_road_end = true;
-                return true;
-            }
+        // esmini ends the lane change where the road ends (POS_STATUS_END_OF_ROAD →
+        // OSCAction::End), the offset reached so far kept; the speed is left to the default
+        // controller, which stops an entity stuck there. The status is the one the step leaves:
+        // with a route, MoveAlongS's (a move stopped at a dead end, or one that ends within
+        // SMALL_NUMBER of an end without a link element, a step too short to move included);
+        // without, that of the re-attachment after it (LatLaneChangeAction::Step calls
+        // XYZ2TrackPos before it tests the status), set only at an end without a link element:
+        // at an end whose link leads to a road the map lacks, the lane change goes on,
+        // sideways only, until its offset is reached.
+        let past = if en.route.is_some() {
+            status == MoveStatus::EndOfRoad || crate::roads::past_end::unlinked_end_at(net, l.internal.road, l.internal.s)
+        } else {
+            crate::roads::past_end::unlinked_end_at(net, attached.road, attached.s)
+        };
+        if past {
+            en.at_road_end = true;
+            return true;
         }
         done
     }
