@@ -167,8 +167,11 @@ pub(crate) fn next_roads(net: &RoadNetwork, link: Link) -> Vec<usize> {
 
 /// The weight of driving `length` metres of `road` after `previous` (esmini's `CalcWeight`).
 fn weight(net: &RoadNetwork, previous: &Node, strategy: Strategy, length: f64, road: &Road) -> f64 {
+    // ScenarioReader reads a waypoint's routeStrategy as SHORTEST unless it says fastest or
+    // leastIntersections: `random` is planned as the shortest way (CalcWeight's RANDOM branch,
+    // weight 0, is never reached).
     match strategy {
-        Strategy::Shortest => length,
+        Strategy::Shortest | Strategy::Random => length,
         Strategy::Fastest => {
             let v = average_speed(road);
             if v == 0.0 {
@@ -185,8 +188,6 @@ fn weight(net: &RoadNetwork, previous: &Node, strategy: Strategy, length: f64, r
                 0.0
             }
         }
-        // esmini has no weight for it (an error, weight 0).
-        Strategy::Random => 0.0,
     }
 }
 
@@ -316,9 +317,9 @@ pub(crate) fn calculate_path(net: &RoadNetwork, start: LaneSpot, forward: bool, 
     }
     let first_length = if forward { start_road.length - start.s } else { start.s };
     let first_weight = match strategy {
-        Strategy::Shortest => first_length,
+        Strategy::Shortest | Strategy::Random => first_length,
         Strategy::Fastest => first_length / average_speed(start_road),
-        Strategy::LeastIntersections | Strategy::Random => 0.0,
+        Strategy::LeastIntersections => 0.0,
     };
     let mut nodes =
         vec![Node { road: start.road, current_lane: start.lane, from_lane: 0, weight: first_weight, link: Some((start.road, end)), previous: None }];

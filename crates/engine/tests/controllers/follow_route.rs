@@ -214,3 +214,19 @@ fn a_direct_junction_leads_the_path_search_to_its_linked_road() {
         assert!(close(e.x, x, 1e-3) && close(e.y, y, 1e-3) && close(e.speed, 10.0, 1e-9), "at {t} s: {e:?}, esmini ({x}, {y})");
     }
 }
+
+/// A waypoint's routeStrategy "random" is read as shortest (ScenarioReader: only fastest and
+/// leastIntersections are read), so FollowRoute's LaneIndependentRouter weighs the way by
+/// length. Fixture `follow_route_random_strategy.xosc` on the left-hand T: the car stays in
+/// lane -2, which leads to the target lane through the junction (esmini 3.6.0: never leaves
+/// it before the junction); weighing the random leg 0 tied the way through lane -1.
+#[test]
+fn a_random_route_strategy_is_planned_as_the_shortest() {
+    const FIXTURE: &str = "follow_route_random_strategy.xosc";
+    let run = crate::common::oracle::run_fixture_scenario(FIXTURE, 20.0);
+    for t in [0.5, 1.0, 2.0, 3.0] {
+        let s = at(&run, "Car0", t);
+        assert!(s.road.is_some_and(|r| r.lane_id == -2) && close(s.y, -5.25, 1e-9), "t {t}: {s:?}");
+    }
+    crate::common::oracle::assert_matches_esmini(FIXTURE, &run, 1e-3);
+}
