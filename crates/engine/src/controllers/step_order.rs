@@ -28,7 +28,9 @@ impl<'a> Sim<'a> {
 
     /// Step every active controller by `dt`, in esmini's order (ScenarioEngine::step's loop over
     /// `controller_`). In frame 0 (`frame0`, dt 0) esmini steps
-    /// them too; the ghost followers are left out there, their ghost not yet having a trail.
+    /// them too (a FollowReference's placement then turns its heading on a banked road, as
+    /// every SetInertiaPos does); the ghost followers are left out there, their ghost not yet
+    /// having a trail.
     pub(crate) fn step_controllers_in_order(&mut self, dt: f64, frame0: bool) {
         // The engine's stop at a road's end comes before every controller's step.
         self.for_each_controller(
@@ -42,7 +44,7 @@ impl<'a> Sim<'a> {
         self.for_each_controller(
             |c| match c {
                 ControllerRt::FollowGhost(f) => f.active && !frame0,
-                ControllerRt::FollowReference(f) => f.active && !frame0,
+                ControllerRt::FollowReference(f) => f.active,
                 ControllerRt::OffroadFollower(f) => f.active,
                 ControllerRt::Acc(a) => a.active,
                 ControllerRt::AlksR157(a) => a.active,

@@ -41,3 +41,17 @@ fn a_follower_driven_past_a_dead_end_is_at_the_end_of_the_road() {
     assert!(at(&run, "Marker", 4.39).speed > 0.5);
     assert_matches_esmini(OFF, &run, 1e-3);
 }
+
+/// Fixture `follow_reference_banked_frame0.xosc`: a FollowReferenceController is stepped in
+/// frame 0 too (ScenarioEngine::step steps every active controller, dt 0). Its
+/// Position::SetInertiaPos moves nothing but takes the entity's heading as absolute, and on
+/// a banked road EvaluateHPR turns it by the road's rotation again: esmini 3.6.0 reports Ego's
+/// heading at time 0 as 0.022681 rad, where the lane position alone gives about 0.015.
+#[test]
+fn a_follower_on_a_banked_road_is_placed_in_frame_0_too() {
+    const BANKED: &str = "follow_reference_banked_frame0.xosc";
+    let run = run_fixture_scenario(BANKED, 20.0);
+    assert!(close(at(&run, "Ego", 0.0).h, 0.022681, 1e-6), "{:?}", at(&run, "Ego", 0.0));
+    assert_esmini_pose_at(&run, "Ego", 2.0, 132.498381, -0.674289, 0.029183);
+    assert_matches_esmini(BANKED, &run, 1e-3);
+}
