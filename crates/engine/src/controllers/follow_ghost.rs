@@ -66,13 +66,11 @@ impl<'a> Sim<'a> {
     pub(super) fn step_follow_ghost(&mut self, e: usize, f: &mut FollowGhostRt, dt: f64) {
         let (Some(ghost), Some(mut car)) = (self.ghost.as_ref().filter(|g| g.owner == e), f.vehicle) else { return };
         // ControllerFollowGhost::Step measures from the entity's position and heading and
-        // drives the body from its own: the same pose while the controller holds the
-        // longitudinal domain; active laterally only, the default controller has moved the
-        // entity along its lane first.
-        let (x, y, h, speed) = match self.entities.get(e).filter(|_| !f.longitudinal) {
-            Some(en) => (en.x, en.y, en.h, car.speed),
-            None => (car.x, car.y, car.h, car.speed),
-        };
+        // drives the body from its own. Active laterally only, the default controller has moved
+        // the entity along its lane first; and the heading is the one the entity's position
+        // holds (SetInertiaPos turned the body's by a banked road's rotation).
+        let Some(en) = self.entities.get(e) else { return };
+        let (x, y, h, speed) = (en.x, en.y, en.h, car.speed);
         let trail = &ghost.trail;
         let (speed_point, steer_point): (Option<TrailPoint>, Option<TrailPoint>) = match f.mode {
             FollowMode::Position => {

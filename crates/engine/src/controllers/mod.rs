@@ -285,14 +285,17 @@ impl<'a> Sim<'a> {
     /// (LatLaneChangeAction, LatLaneOffsetAction, FollowTrajectoryAction: Start and Step return
     /// early; a lateral distance action waits on the longitudinal domain instead,
     /// `long_domain_overridden`): an ALKS R157 controller activated laterally in override mode, an
-    /// OffroadFollower, a FollowReference following another entity. (ACC, ALKS, Looming and
-    /// NaturalDriver operate on the longitudinal domain only; a ghost follower's actions drive
-    /// its ghost.)
+    /// OffroadFollower, an active FollowGhost or FollowReference. (ACC, ALKS, Looming and
+    /// NaturalDriver operate on the longitudinal domain only.)
     pub(crate) fn lateral_overridden(&self, e: usize) -> bool {
         self.controllers_of(e).any(|c| match c {
             ControllerRt::AlksR157(a) => a.active && a.override_mode && a.lateral,
             ControllerRt::OffroadFollower(f) => f.holds_lateral(),
-            ControllerRt::FollowReference(f) => f.active && !f.uses_ghost(),
+            // FollowGhost and FollowReference force override mode on both domains; with a
+            // ghost the storyboard's actions drive the ghost, but the entity keeps its Init
+            // actions (ScenarioEngine::SetupGhost copies them), which idle from activation.
+            ControllerRt::FollowReference(f) => f.active,
+            ControllerRt::FollowGhost(f) => f.active,
             _ => false,
         })
     }

@@ -5,6 +5,7 @@ mod acquire_position;
 mod act_of_other_entity;
 mod added_teleport_from_nowhere;
 mod back_on_road;
+mod banked;
 mod end_of_road_head_start;
 mod follow;
 mod head_start_holds_others;
