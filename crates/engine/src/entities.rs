@@ -114,9 +114,14 @@ impl Entity {
     /// SetInertiaPos → XYZ2TrackPos sets it afresh): only a point beyond its road's end has it.
     /// A teleport, which copies the location only, keeps the status it had instead.
     pub(crate) fn set_end_status_from_world(&mut self, net: &RoadNetwork) {
-        if let Some(lp) = self.lane {
-            self.at_road_end = crate::roads::past_end::past_road_end(net, lp.road, lp.s, self.x, self.y);
+        if let Some(status) = self.end_status_from_world(net) {
+            self.at_road_end = status;
         }
+    }
+
+    /// That status, for the entity's position as it is now; None off every road.
+    pub(crate) fn end_status_from_world(&self, net: &RoadNetwork) -> Option<bool> {
+        self.lane.map(|lp| crate::roads::past_end::past_road_end(net, lp.road, lp.s, self.x, self.y))
     }
 
     /// esmini's ScenarioEngine::step, after every object's (default) move: an object whose

@@ -21,8 +21,8 @@ impl<'a> Sim<'a> {
             en.set_world(net, car.x, car.y, z, car.h);
             // The controller's Position::SetInertiaPos locates the point afresh, end-of-road
             // status included: the next step's end-of-road test reads it.
-            if let (Some(net), Some(lp)) = (net, en.lane) {
-                en.road_end_after_controller = Some(crate::roads::past_end::past_road_end(net, lp.road, lp.s, en.x, en.y));
+            if let Some(status) = net.and_then(|net| en.end_status_from_world(net)) {
+                en.road_end_after_controller = Some(status);
             }
             en.speed = car.speed;
             en.moved_by_action = true;
