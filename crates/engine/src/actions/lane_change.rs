@@ -58,6 +58,26 @@ fn snap_lane(net: &RoadNetwork, lp: &mut LanePos, sidewalks: bool) {
     }
 }
 
+/// The road XYZ2TrackPos attaches the entity to after a lane change step without a route when
+/// that is not the road its internal position moved along (LatLaneChangeAction::Step): the
+/// search over every road (`roads::locate`: the current road holds a point less than 2 m beside
+/// it, a road not directly connected weighs 3 m more). A lane change carried into a direct
+/// junction's straight arm while the entity is still over the arm beside it leaves it on that
+/// other road. Only the attachment moves: XYZ2TrackPos keeps the point and the heading (SetX,
+/// SetY; its SetTrackPosMode evaluates no angle), and the heading relative to the road stays
+/// the one set on the internal position's road, so the direction (`dir`) is kept too. The
+/// internal position goes on along its own road. Also whether the point is on that road.
+fn attached_elsewhere(net: &RoadNetwork, en: &crate::entities::Entity, attached: &LanePos, sidewalks: bool) -> Option<(LanePos, bool)> {
+    let here = (attached.road, attached.s, attached.lane_id);
+    let found = crate::roads::locate::world_to_lane_at(net, en.x, en.y, Some(en.z), Some((attached.road, attached.s)), Some(here))?;
+    if found.road == attached.road {
+        return None;
+    }
+    let (lane_id, offset) = crate::roads::lane_snap::snap_located(net, &found, sidewalks);
+    let on_road = net.roads.get(found.road).is_some_and(|r| !crate::roads::offroad::is_off_road(r, found.s, found.t));
+    Some((LanePos { road: found.road, lane_id, s: found.s, offset, dir: attached.dir }, on_road))
+}
+
 /// The lane a position locked on its lane (a looming controller's) is attached to after a lane
 /// change step: esmini's XYZ2TrackPos with `lockOnLane_` takes the lane of the snapped-to types
 /// nearest the centre of the lane the position is in (`fixed_t`), keeps the offset from that
@@ -254,6 +274,13 @@ impl<'a> Sim<'a> {
         }
         en.yaw_offset = yaw;
         en.set_lane_pos(net, attached);
+        if !locked && en.route.is_none() {
+            if let Some((other, on_road)) = attached_elsewhere(net, en, &attached, sidewalks) {
+                en.lane = Some(other);
+                en.on_road = on_road;
+                attached = other;
+            }
+        }
         if locked && en.route.is_none() {
             if let (Some(lp), Some(id)) = (en.lane.as_mut(), locked_lane_id(net, &attached, sidewalks)) {
                 lp.lane_id = id;

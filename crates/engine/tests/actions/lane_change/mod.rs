@@ -1,6 +1,7 @@
 //! LaneChangeAction: its transition, a step of it, a target lane the road does not have, a
 //! change going on into a junction.
 
+mod across_a_split;
 mod at_a_dead_end;
 mod end_with_dangling_link;
 mod into_junction;
