@@ -48,6 +48,9 @@ pub(crate) fn world_to_lane_at(
     if let Some((road, s)) = hint {
         if let Some(p) = net.locate_on_road_by(road, x, y, s, &surface_t) {
             if p.is_on_road() {
+                if let Some(arm) = junction_arm_at_end(net, &p, current, x, y) {
+                    return Some(arm);
+                }
                 return Some(unshifted(net, p, x, y));
             }
             hinted = Some(p);
@@ -72,6 +75,27 @@ pub(crate) fn world_to_lane_at(
         (None, Some(lp)) => Some(on_chosen_segment(net, lp, x, y, z.unwrap_or(0.0)).unwrap_or(lp)),
         _ => found.map(|p| unshifted(net, p, x, y)),
     }
+}
+
+/// How far from the end of its road a point is looked for on the junction arms starting
+/// there: the arms begin at the end, so a point farther back lies before every arm's start.
+const ARM_REACH: f64 = 1.0;
+
+/// A point on the current road `p` (lane `current`'s) at its end, where junction arms start:
+/// XYZ2TrackPos lets a road directly connected to the current one replace it when it contains
+/// the point as closely (`weightedDist < closestPointDist + SMALL_NUMBER`; directly connected
+/// roads carry no extra weight), and among such arms takes the one bending least at its
+/// contact point, the later in the file at a tie (`junction_entry::entry_connector`). So an
+/// entity placed exactly where the arms start (a trajectory ending at the road's end) is on
+/// an arm already, which may not be the one the default controller would enter.
+fn junction_arm_at_end(net: &RoadNetwork, p: &LanePosition, current: Option<(usize, f64, i32)>, x: f64, y: f64) -> Option<LanePosition> {
+    let (road, _, lane_id) = current.filter(|c| c.0 == p.road)?;
+    let length = net.roads.get(road)?.length;
+    if p.s > ARM_REACH && p.s < length - ARM_REACH {
+        return None;
+    }
+    let from = super::LanePos { road, lane_id, s: p.s, offset: 0.0, dir: 1.0 };
+    super::junction_entry::entry_connector(net, &from, x, y)
 }
 
 /// XYZ2TrackPos: a point within the current road's s range and less than this beyond its

@@ -1,6 +1,7 @@
 //! FollowTrajectoryAction, forwards and backwards.
 
 mod clothoid_start_time;
+mod end_at_junction_entry;
 mod end_tolerance;
 mod follow;
 mod nurbs_headings;
