@@ -2,7 +2,8 @@
 //! an entity that moved a little is looked for first on the road it was on (starting the
 //! projection at its last s); only when the point is not on that road does the spatial-index
 //! search run. A point on the hinted road is what the full search returns too (it prefers the
-//! hinted road among the roads containing the point). Exact repeats of full searches (fixed
+//! hinted road among the roads containing the point), except at the road's end, where a
+//! junction arm starting there takes it (`junction_arm_at_end`). Exact repeats of full searches (fixed
 //! target points of distance conditions) come from a small memo. On a banked road t is
 //! measured along the tilted surface, as esmini's `Position::XYZ2TrackPos` measures it.
 
