@@ -66,7 +66,7 @@ fn located_corners(
             return None;
         }
         if let Some(f) = from.filter(|_| p.road != road) {
-            if let Some(q) = entry_connector(net, f, x, y) {
+            if let Some(q) = entry_connector(net, f.road, f.lane_id, x, y) {
                 p = q;
             } else if p.road != f.road && crate::roads::road_path::path_ends(net, f.road, f.s, f.lane_id, p.road).is_none() {
                 // XYZ2TrackPos with connectedOnly skips the roads no path reaches from `from`:

@@ -247,7 +247,7 @@ impl<'a> Sim<'a> {
                 if let (Some(net), Some(mut lp), Some(b)) = (net, en.lane, before) {
                     move_along_s(net, &mut lp, l.speed() * dt);
                     if lp.road != b.road {
-                        if let Some(p) = crate::roads::junction_entry::entry_connector(net, &b, v.x, v.y) {
+                        if let Some(p) = crate::roads::junction_entry::entry_connector(net, b.road, b.lane_id, v.x, v.y) {
                             lp = crate::roads::LanePos { road: p.road, lane_id: p.lane_id, s: p.s, offset: p.offset, dir: lp.dir };
                         }
                     }

@@ -9,7 +9,6 @@
 //! bend alike, the later arm in the file is taken — not the one a move along the lane would
 //! choose.
 
-use super::LanePos;
 use opendrive::{ContactPoint, ElementType, LanePosition, Road, RoadNetwork, Shape};
 
 // esmini's SMALL_NUMBER: a spiral whose end curvatures differ by less is a line or an arc.
@@ -80,15 +79,16 @@ pub(crate) fn directly_connected(net: &RoadNetwork, road: usize, lane_id: i32) -
     out
 }
 
-/// The connecting road XYZ2TrackPos puts (x, y) on when the entity was at `from`, on a road
-/// outside a junction, and the point lies on a road directly connected to it from its lane;
+/// The connecting road XYZ2TrackPos puts (x, y) on when the entity was on road `from_road`
+/// (outside a junction) in lane `from_lane`, and the point lies on a road directly connected to
+/// it from that lane;
 /// `None` when no such road contains the point (the general search then answers).
-pub(crate) fn entry_connector(net: &RoadNetwork, from: &LanePos, x: f64, y: f64) -> Option<LanePosition> {
-    let road = net.roads.get(from.road)?;
+pub(crate) fn entry_connector(net: &RoadNetwork, from_road: usize, from_lane: i32, x: f64, y: f64) -> Option<LanePosition> {
+    let road = net.roads.get(from_road)?;
     if road.junction.is_some() {
         return None;
     }
-    let mut connected = junction_arms(net, from.road, from.lane_id);
+    let mut connected = junction_arms(net, from_road, from_lane);
     if connected.is_empty() {
         return None;
     }

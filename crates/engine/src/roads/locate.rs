@@ -95,8 +95,7 @@ fn junction_arm_at_end(net: &RoadNetwork, p: &LanePosition, current: Option<(usi
     if p.s > ARM_REACH && p.s < length - ARM_REACH {
         return None;
     }
-    let from = super::LanePos { road, lane_id, s: p.s, offset: 0.0, dir: 1.0 };
-    super::junction_entry::entry_connector(net, &from, x, y)
+    super::junction_entry::entry_connector(net, road, lane_id, x, y)
 }
 
 /// XYZ2TrackPos: a point within the current road's s range and less than this beyond its
