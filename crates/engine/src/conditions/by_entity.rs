@@ -163,10 +163,16 @@ impl<'a> Sim<'a> {
                         -1.0
                     }
                 };
+                // the reference line's heading (esmini's GetHRoad, set from the geometry alone):
+                // on a banked road without the turn the changing roll gives the entity's own
+                // heading (`LanePose::road_heading` has it), which the angle then measures
+                let reference_heading = |lp: &crate::roads::LanePos, net: &opendrive::RoadNetwork| {
+                    net.roads.get(lp.road).map_or(0.0, |r| crate::roads::pose_memo::reference_pose(r, lp.s.clamp(0.0, r.length)).hdg)
+                };
                 let frame = match (angle_type, coordinate_system.unwrap_or(CoordinateSystem::World), self.net, e.lane) {
-                    (A::Heading, CoordinateSystem::Road, Some(net), Some(lp)) => lp.pose(net).map_or(0.0, |p| p.road_heading),
+                    (A::Heading, CoordinateSystem::Road, Some(net), Some(lp)) => reference_heading(&lp, net),
                     (A::Heading, CoordinateSystem::Lane, Some(net), Some(lp)) => {
-                        lp.pose(net).map_or(0.0, |p| p.road_heading + if lane_dir(&lp, net) > 0.0 { 0.0 } else { std::f64::consts::PI })
+                        reference_heading(&lp, net) + if lane_dir(&lp, net) > 0.0 { 0.0 } else { std::f64::consts::PI }
                     }
                     (_, CoordinateSystem::Road, Some(net), Some(lp)) => road_pr(&lp, net),
                     (_, CoordinateSystem::Lane, Some(net), Some(lp)) => road_pr(&lp, net) * lane_dir(&lp, net),
