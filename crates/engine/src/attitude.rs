@@ -28,6 +28,9 @@ pub(crate) fn road_pitch_roll(net: &RoadNetwork, lp: &LanePos) -> (f64, f64) {
 /// level stretch the road's own, turned around when the entity faces against s); (0, 0) off
 /// the road.
 pub(crate) fn surface_pitch_roll(net: &RoadNetwork, e: &Entity) -> (f64, f64) {
+    if let Some(placed) = e.placed_pitch_roll() {
+        return placed;
+    }
     let Some(lp) = e.lane else { return (0.0, 0.0) };
     let Some(road) = net.roads.get(lp.road) else { return (0.0, 0.0) };
     let s = lp.s.clamp(0.0, road.length);
@@ -146,6 +149,29 @@ pub(crate) fn on_road(road: &Road, s: f64, t: f64, h_rel: f64, offset_h_rel: f64
     let h_road = crate::roads::pose_memo::reference_pose(road, s).hdg;
     let p_offset = offset_h_rel.cos() * (rate.tan() * -t).atan();
     Some(compose([h_road, -slope.atan(), roll], [h_rel, p_offset, 0.0]))
+}
+
+/// The orientation esmini's Position::EvaluateRelation leaves a RelativeObject- or
+/// RelativeWorldPosition at (s, t) of `road` (t along the surface; `drift`: the lane's
+/// GetHOffset there), given the absolute orientation `abs` it asked for (the entity's heading,
+/// pitch and roll, turned by the position's own). SetInertiaPosMode sets all three absolute
+/// (EvaluateHPR then keeps them and finds the turn from the road, CalcRelAnglesFromRoadAndAbsAngles
+/// against its heading plus the drift); then EvaluateHPR runs once more in the position's SET
+/// mode (GetModeDefault: heading absolute, pitch and roll relative), composing the road's
+/// rotation with the heading's plain difference from the road's, the relative pitch plus
+/// GetPOffset (read with the relative heading just found) and the relative roll. On a level
+/// road with a level `abs` that is `abs` again: `None` then (the plain heading stands).
+pub(crate) fn relation_orientation(road: &Road, s: f64, t: f64, drift: f64, abs: [f64; 3]) -> Option<[f64; 3]> {
+    let slope = road.elevation_slope_at(s);
+    let (roll, rate) = roll_at(road, s);
+    if slope == 0.0 && roll == 0.0 && rate == 0.0 && abs[1] == 0.0 && abs[2] == 0.0 {
+        return None;
+    }
+    let h_road = crate::roads::pose_memo::reference_pose(road, s).hdg;
+    let road_rotation = [h_road, -slope.atan(), roll];
+    let [h_rel, p_rel, r_rel] = relative([h_road + drift, road_rotation[1], road_rotation[2]], abs);
+    let p_offset = h_rel.cos() * (rate.tan() * -t).atan();
+    Some(compose(road_rotation, [crate::angles::angle_difference(abs[0], h_road), p_rel + p_offset, r_rel]))
 }
 
 /// The heading esmini gives a relative lane or road position at `lp` turned by `h_rel` from

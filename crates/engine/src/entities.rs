@@ -94,6 +94,18 @@ pub(crate) struct Entity {
     pub parallel_lane: Option<(usize, i32, f64, f64)>,
     /// The route assigned by AssignRouteAction / AcquirePositionAction: junction choices follow it.
     pub route: Option<std::sync::Arc<routing::Route>>,
+    /// The attitude its last placement by world pose found on a sloped or banked road
+    /// (`place_world`), and the pose it was found for; see [`Entity::placed_pitch_roll`].
+    pub placed_attitude: Option<PlacedAttitude>,
+}
+
+/// Pitch and roll esmini's Position::EvaluateHPR gave a position set from world coordinates,
+/// kept with the pose (x, y, heading) it was computed for.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct PlacedAttitude {
+    pub pose: (f64, f64, f64),
+    pub pitch: f64,
+    pub roll: f64,
 }
 
 /// (longitudinal, lateral) parts of a world vector in a frame turned by `h` (esmini's
@@ -192,7 +204,18 @@ impl Entity {
             teleported: false,
             parallel_lane: None,
             route: None,
+            placed_attitude: None,
         }
+    }
+
+    /// The pitch and roll the entity's position holds while it stands where its last placement
+    /// by world pose put it. esmini's EvaluateHPR composes the road's rotation with the pitch
+    /// GetPOffset reads from the relative heading the position held *before*: 0 for a position
+    /// made afresh (a scenario's WorldPosition), so an entity placed facing against the road is
+    /// pitched the other way until its first move along the lane composes it again with the
+    /// heading it now holds (`attitude::surface_pitch_roll`). `None` once it moved or turned.
+    pub(crate) fn placed_pitch_roll(&self) -> Option<(f64, f64)> {
+        self.placed_attitude.filter(|a| a.pose == (self.x, self.y, self.h)).map(|a| (a.pitch, a.roll))
     }
 
     /// Place the entity on a lane position, heading along the direction it faces plus `yaw_offset`.
@@ -304,6 +327,7 @@ impl Entity {
         self.x = x;
         self.y = y;
         self.h = wrap_2pi(h);
+        self.placed_attitude = None;
         let Some(net) = net else {
             self.z = z.unwrap_or(0.0);
             self.lane = None;
@@ -344,8 +368,9 @@ impl Entity {
                 let past_end = crate::roads::past_end::past_road_end(net, lp.road, lp.s, x, y);
                 let tilted =
                     net.roads.get(lp.road).filter(|_| !past_end).and_then(|r| crate::attitude::on_road(r, lp.s, lp.t, wrap(h - lp.heading), prior_h_rel));
-                if let Some([h3, _, _]) = tilted {
+                if let Some([h3, pitch, roll]) = tilted {
                     self.h = h3;
+                    self.placed_attitude = Some(PlacedAttitude { pose: (x, y, h3), pitch, roll });
                 }
                 // the road's surface there, its banking and the lane's own height included (the
                 // height a move along the lane then keeps: a step's vertical speed reads the

@@ -60,6 +60,7 @@ impl<'a> Sim<'a> {
             }
         };
         let net = self.net;
+        let asked = self.relation_asked_orientation(pos, placement.h);
         let Some(en) = self.entities.get_mut(e) else { return false };
         // The position status (end of road) is not the target's: esmini's Position::TeleportTo
         // copies the location only (CopyLocation leaves `status_`), so the entity keeps the
@@ -84,12 +85,37 @@ impl<'a> Sim<'a> {
                     (en.x, en.y, en.z) = (placement.x, placement.y, placement.z.unwrap_or(0.0));
                 }
             }
-            _ => en.set_world_snapping(net, placement.x, placement.y, placement.z, placement.h, false),
+            _ => {
+                en.set_world_snapping(net, placement.x, placement.y, placement.z, placement.h, false);
+                if let (Some(abs), Some(net)) = (asked, net) {
+                    orient_as_relation(en, net, abs);
+                }
+            }
         }
         // esmini records a teleported entity where it was put: it does not move on this step.
         en.moved_by_action = true;
         en.teleported = true;
         true
+    }
+
+    /// The absolute orientation a RelativeObject- or RelativeWorldPosition asks for (esmini's
+    /// Position::EvaluateRelation passes SetInertiaPosMode the entity's heading, pitch and roll,
+    /// each turned by the position's own unless that one is absolute); `h`: the heading the
+    /// position resolved to. `None` for every other position.
+    fn relation_asked_orientation(&self, pos: &Position, h: f64) -> Option<[f64; 3]> {
+        let (entity, orientation) = match pos {
+            Position::RelativeObject { entity, orientation, .. } | Position::RelativeWorld { entity, orientation, .. } => (entity, orientation.as_ref()),
+            _ => return None,
+        };
+        let anchor = self.entities.iter().position(|en| &en.name == entity)?;
+        let (pitch, roll) = self.pitch_roll(anchor);
+        let absolute = orientation.is_some_and(|o| o.reference == Some(openscenario::ReferenceContext::Absolute));
+        let turn = |own: Option<f64>, of_anchor: f64| match own {
+            Some(v) if absolute => v,
+            Some(v) => of_anchor + v,
+            None => of_anchor,
+        };
+        Some([h, turn(orientation.and_then(|o| o.p), pitch), turn(orientation.and_then(|o| o.r), roll)])
     }
 
     /// Whether esmini leaves `pos` unset: a RoutePosition FromCurrentEntity, or a position
@@ -121,4 +147,23 @@ fn relative_heading_twice_composed(net: &opendrive::RoadNetwork, pos: &Position,
     let h_rel = yaw_offset + if lp.dir < 0.0 { std::f64::consts::PI } else { 0.0 };
     let drift = crate::positions::lane_drift(net, lp.road, lp.lane_id, lp.s);
     crate::attitude::relative_position_heading(net, lp, h_rel, drift)
+}
+
+/// The orientation an entity teleported to a RelativeObject- or RelativeWorldPosition takes
+/// on a sloped or banked road (`attitude::relation_orientation`, from the absolute orientation
+/// `abs` the position asked for); the turn from the lane that moving keeps stays the plain
+/// difference `set_world_snapping` found (EvaluateHPR's relative heading is the heading's
+/// difference from the road's again). Beyond its road's end the entity keeps the plain one.
+fn orient_as_relation(en: &mut crate::entities::Entity, net: &opendrive::RoadNetwork, abs: [f64; 3]) {
+    let Some(lp) = en.lane else { return };
+    let Some(road) = net.roads.get(lp.road) else { return };
+    if crate::roads::past_end::past_road_end(net, lp.road, lp.s, en.x, en.y) {
+        return;
+    }
+    let Some(t) = lp.pose(net).map(|p| p.t) else { return };
+    let drift = crate::positions::lane_drift(net, lp.road, lp.lane_id, lp.s);
+    if let Some([h, pitch, roll]) = crate::attitude::relation_orientation(road, lp.s.clamp(0.0, road.length), t, drift, abs) {
+        en.h = h;
+        en.placed_attitude = Some(crate::entities::PlacedAttitude { pose: (en.x, en.y, h), pitch, roll });
+    }
 }
