@@ -161,9 +161,13 @@ pub(crate) fn on_road(road: &Road, s: f64, t: f64, h_rel: f64, offset_h_rel: f64
 /// rotation with the heading's plain difference from the road's, the relative pitch plus
 /// GetPOffset (read with the relative heading just found) and the relative roll. On a level
 /// road with a level `abs` that is `abs` again: `None` then (the plain heading stands).
-pub(crate) fn relation_orientation(road: &Road, s: f64, t: f64, drift: f64, abs: [f64; 3]) -> Option<[f64; 3]> {
-    let slope = road.elevation_slope_at(s);
-    let (roll, rate) = roll_at(road, s);
+/// `past_end`: the point lies beyond the road's end, where XYZ2TrackPos leaves the road's
+/// pitch and roll at 0 but not the rate of its roll, which GetPOffset still reads.
+pub(crate) fn relation_orientation(road: &Road, s: f64, t: f64, drift: f64, abs: [f64; 3], past_end: bool) -> Option<[f64; 3]> {
+    let (slope, (roll, rate)) = match roll_at(road, s) {
+        (_, rate) if past_end => (0.0, (0.0, rate)),
+        banking => (road.elevation_slope_at(s), banking),
+    };
     if slope == 0.0 && roll == 0.0 && rate == 0.0 && abs[1] == 0.0 && abs[2] == 0.0 {
         return None;
     }

@@ -153,16 +153,14 @@ fn relative_heading_twice_composed(net: &opendrive::RoadNetwork, pos: &Position,
 /// on a sloped or banked road (`attitude::relation_orientation`, from the absolute orientation
 /// `abs` the position asked for); the turn from the lane that moving keeps stays the plain
 /// difference `set_world_snapping` found (EvaluateHPR's relative heading is the heading's
-/// difference from the road's again). Beyond its road's end the entity keeps the plain one.
+/// difference from the road's again).
 fn orient_as_relation(en: &mut crate::entities::Entity, net: &opendrive::RoadNetwork, abs: [f64; 3]) {
     let Some(lp) = en.lane else { return };
     let Some(road) = net.roads.get(lp.road) else { return };
-    if crate::roads::past_end::past_road_end(net, lp.road, lp.s, en.x, en.y) {
-        return;
-    }
+    let past_end = crate::roads::past_end::past_road_end(net, lp.road, lp.s, en.x, en.y);
     let Some(t) = lp.pose(net).map(|p| p.t) else { return };
     let drift = crate::positions::lane_drift(net, lp.road, lp.lane_id, lp.s);
-    if let Some([h, pitch, roll]) = crate::attitude::relation_orientation(road, lp.s.clamp(0.0, road.length), t, drift, abs) {
+    if let Some([h, pitch, roll]) = crate::attitude::relation_orientation(road, lp.s.clamp(0.0, road.length), t, drift, abs, past_end) {
         en.h = h;
         en.placed_attitude = Some(crate::entities::PlacedAttitude { pose: (en.x, en.y, h), pitch, roll });
     }
