@@ -60,8 +60,16 @@ impl CrCheckResult {
 /// Files per cr_check.py process: one interpreter start-up per batch instead of per file.
 const BATCH: usize = 64;
 
-/// Runs `<cr python> <shared>/tools/cr_check.py --extra-python <crd python> EXTRA... FILES...`
-/// and returns one result per file, in the order of `files`.
+/// Runs `<cr python> <shared>/tools/cr_check.py EXTRA... FILES...` and returns one result per
+/// file, in the order of `files`, each with the second reader's verdict as cr_check.py's
+/// `--extra-python <crd python>` gives it (`extra_reads`, a `read_extra` error when it fails).
+///
+/// cr_check.py's `--extra-python` starts the other interpreter once per file to read it; over
+/// a corpus that start-up (importing commonroad-io) costs three times the checks themselves.
+/// So the second reader runs as cr_check.py itself under the older interpreter, once per batch,
+/// and only its `read` (the same `read_with_commonroad_io` the per-file worker runs) is taken.
+/// With `--drivability`, whose checker may live only in the older environment, cr_check.py
+/// gets `--extra-python` as before.
 ///
 /// Test support: panics with a clear message when the tools cannot run (no shared directory,
 /// environments failing, unparsable output); callers check [`crate::shared_dir`] first.
@@ -69,31 +77,69 @@ pub fn cr_check<P: AsRef<Path>>(files: &[P], extra_args: &[&str]) -> Vec<CrCheck
     let shared = shared_dir().unwrap_or_else(|| panic!("cr_check: shared directory not found (set OSC2CR_SHARED)"));
     let envs = python_envs().unwrap_or_else(|e| panic!("cr_check: Python environments unavailable: {e}"));
     let script = shared.join("tools/cr_check.py");
+    let per_file_worker = extra_args.contains(&"--drivability");
     let mut results = Vec::with_capacity(files.len());
     for batch in files.chunks(BATCH) {
-        let out = Command::new(&envs.cr)
-            .arg(&script)
-            .arg("--extra-python")
-            .arg(&envs.crd)
-            .args(extra_args)
-            .args(batch.iter().map(AsRef::as_ref))
-            .output()
-            .unwrap_or_else(|e| panic!("cannot run {} {}: {e}", envs.cr.display(), script.display()));
-        let stdout = String::from_utf8_lossy(&out.stdout);
-        // exit 0 = all pass, 1 = some file failed; anything else is a usage error or a crash
-        if !matches!(out.status.code(), Some(0 | 1)) {
-            panic!("cr_check.py failed ({}):\nstdout:\n{stdout}\nstderr:\n{}", out.status, String::from_utf8_lossy(&out.stderr));
+        let batch: Vec<&Path> = batch.iter().map(AsRef::as_ref).collect();
+        let mut first = Command::new(&envs.cr);
+        first.arg(&script);
+        if per_file_worker {
+            first.arg("--extra-python").arg(&envs.crd);
         }
-        let lines: Vec<&str> = stdout.lines().filter(|l| l.trim_start().starts_with('{')).collect();
-        if lines.len() != batch.len() {
-            panic!("cr_check.py printed {} JSON lines for {} files:\n{stdout}\nstderr:\n{}", lines.len(), batch.len(), String::from_utf8_lossy(&out.stderr));
-        }
-        for (file, line) in batch.iter().zip(lines) {
-            let json: Value = serde_json::from_str(line).unwrap_or_else(|e| panic!("cr_check.py output is not JSON ({e}): {line}"));
-            results.push(parse(file.as_ref(), json));
+        let jsons = run_batch(first.args(extra_args), &batch);
+        let second = if per_file_worker { None } else { Some(run_batch(Command::new(&envs.crd).arg(&script), &batch)) };
+        for (i, (file, mut json)) in batch.iter().zip(jsons).enumerate() {
+            if let Some(second) = &second {
+                add_second_read(&mut json, &second[i], &envs.crd);
+            }
+            results.push(parse(file, json));
         }
     }
     results
+}
+
+/// One cr_check.py process over `batch`: its JSON line per file, in order.
+fn run_batch(cmd: &mut Command, batch: &[&Path]) -> Vec<Value> {
+    let out = cmd.args(batch).output().unwrap_or_else(|e| panic!("cannot run {cmd:?}: {e}"));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    // exit 0 = all pass, 1 = some file failed; anything else is a usage error or a crash
+    if !matches!(out.status.code(), Some(0 | 1)) {
+        panic!("cr_check.py failed ({}):\nstdout:\n{stdout}\nstderr:\n{}", out.status, String::from_utf8_lossy(&out.stderr));
+    }
+    let lines: Vec<&str> = stdout.lines().filter(|l| l.trim_start().starts_with('{')).collect();
+    if lines.len() != batch.len() {
+        panic!("cr_check.py printed {} JSON lines for {} files:\n{stdout}\nstderr:\n{}", lines.len(), batch.len(), String::from_utf8_lossy(&out.stderr));
+    }
+    lines.iter().map(|line| serde_json::from_str(line).unwrap_or_else(|e| panic!("cr_check.py output is not JSON ({e}): {line}"))).collect()
+}
+
+/// Adds the older interpreter's read of the file (from its own cr_check.py run, `second`) to
+/// the first run's `json` as cr_check.py's per-file worker would: under `extra_reads`, and, if
+/// it failed, as a `read_extra` error. Like cr_check.py, only where the first reader ran (not
+/// for a missing or malformed file).
+fn add_second_read(json: &mut Value, second: &Value, python: &Path) {
+    if json.get("read").is_none() {
+        return;
+    }
+    let mut read = match second.get("read") {
+        Some(r) => r.clone(),
+        None => serde_json::json!({"ok": false, "error": format!("the second reader did not run: {}", second["errors"])}),
+    };
+    read["python"] = Value::String(python.display().to_string());
+    if read.get("ok").and_then(Value::as_bool) != Some(true) {
+        let msg = format!("commonroad-io {} ({}): {}", read["commonroad_io"].as_str().unwrap_or("?"), python.display(), read["error"].as_str().unwrap_or("?"));
+        json["ok"] = Value::Bool(false);
+        if let Some(errors) = json.get_mut("errors").and_then(Value::as_array_mut) {
+            errors.push(serde_json::json!({"check": "read_extra", "msg": msg}));
+        }
+        // (a file with a reader has finding counts; `errors` is absent while there are none)
+        let n = json["finding_counts"]["errors"]["read_extra"].as_u64().unwrap_or(0);
+        json["finding_counts"]["errors"]["read_extra"] = Value::from(n + 1);
+        if let Some(n) = json.get("n_errors").and_then(Value::as_u64) {
+            json["n_errors"] = Value::from(n + 1);
+        }
+    }
+    json["extra_reads"] = Value::Array(vec![read]);
 }
 
 fn findings(v: &Value) -> Vec<Finding> {
@@ -134,5 +180,51 @@ fn parse(file: &Path, json: Value) -> CrCheckResult {
         error_counts,
         warning_counts,
         json,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use serde_json::json;
+
+    fn first_run() -> Value {
+        json!({"file": "a.xml", "ok": true, "read": {"ok": true, "commonroad_io": "2026.1"}, "errors": [], "warnings": [], "finding_counts": {"warnings": {"kinematics": 1}}})
+    }
+
+    #[test]
+    fn a_second_reader_that_fails_is_a_read_extra_error() {
+        let mut j = first_run();
+        add_second_read(&mut j, &json!({"read": {"ok": false, "commonroad_io": "2024.3", "error": "KeyError: x"}}), Path::new("/py/crd"));
+        let r = parse(Path::new("a.xml"), j);
+        assert!(!r.ok);
+        assert_eq!(r.error_counts.get("read_extra"), Some(&1));
+        assert_eq!(r.errors, vec![Finding { check: "read_extra".into(), msg: "commonroad-io 2024.3 (/py/crd): KeyError: x".into() }]);
+        assert_eq!(r.json["extra_reads"][0]["python"], "/py/crd");
+        assert_eq!(r.warning_counts.get("kinematics"), Some(&1));
+    }
+
+    #[test]
+    fn a_second_reader_that_reads_adds_its_read_only() {
+        let mut j = first_run();
+        add_second_read(
+            &mut j,
+            &json!({"read": {"ok": true, "commonroad_io": "2024.3", "counts": {"lanelets": 3}}, "errors": [{"check": "xsd", "msg": "m"}]}),
+            Path::new("/py/crd"),
+        );
+        let r = parse(Path::new("a.xml"), j);
+        assert!(r.ok, "{}", r.summary());
+        assert_eq!(r.n_errors(), 0);
+        assert_eq!(r.json["extra_reads"][0]["counts"]["lanelets"], 3);
+    }
+
+    #[test]
+    fn no_second_read_where_the_first_reader_did_not_run() {
+        let mut j = json!({"file": "m.xml", "ok": false, "errors": [{"check": "file", "msg": "not found"}]});
+        add_second_read(&mut j, &json!({"ok": false, "errors": [{"check": "file", "msg": "not found"}]}), Path::new("/py/crd"));
+        let r = parse(Path::new("m.xml"), j);
+        assert_eq!(r.error_counts.get("file"), Some(&1));
+        assert_eq!(r.n_errors(), 1);
+        assert!(r.json.get("extra_reads").is_none());
     }
 }
