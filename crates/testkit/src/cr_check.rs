@@ -66,10 +66,10 @@ const BATCH: usize = 64;
 ///
 /// cr_check.py's `--extra-python` starts the other interpreter once per file to read it; over
 /// a corpus that start-up (importing commonroad-io) costs three times the checks themselves.
-/// So the second reader runs as cr_check.py itself under the older interpreter, once per batch,
-/// and only its `read` (the same `read_with_commonroad_io` the per-file worker runs) is taken.
-/// With `--drivability`, whose checker may live only in the older environment, cr_check.py
-/// gets `--extra-python` as before.
+/// So the older interpreter runs once per batch, calling the function that worker runs,
+/// cr_check.py's `read_with_commonroad_io`, on each file (`SECOND_READER`). With
+/// `--drivability`, whose checker may live only in the older environment, cr_check.py gets
+/// `--extra-python` as before.
 ///
 /// Test support: panics with a clear message when the tools cannot run (no shared directory,
 /// environments failing, unparsable output); callers check [`crate::shared_dir`] first.
@@ -87,7 +87,12 @@ pub fn cr_check<P: AsRef<Path>>(files: &[P], extra_args: &[&str]) -> Vec<CrCheck
             first.arg("--extra-python").arg(&envs.crd);
         }
         let jsons = run_batch(first.args(extra_args), &batch);
-        let second = if per_file_worker { None } else { Some(run_batch(Command::new(&envs.crd).arg(&script), &batch)) };
+        let second = if per_file_worker {
+            None
+        } else {
+            let tools = script.parent().unwrap_or(Path::new("."));
+            Some(run_batch(Command::new(&envs.crd).arg("-c").arg(SECOND_READER).arg(tools), &batch))
+        };
         for (i, (file, mut json)) in batch.iter().zip(jsons).enumerate() {
             if let Some(second) = &second {
                 add_second_read(&mut json, &second[i], &envs.crd);
@@ -97,6 +102,19 @@ pub fn cr_check<P: AsRef<Path>>(files: &[P], extra_args: &[&str]) -> Vec<CrCheck
     }
     results
 }
+
+/// The second reader: cr_check.py's per-file `--internal-worker read` (the same quieting of
+/// warnings and logging as its `main`), over every file given after the tools folder, one JSON
+/// line (the read's verdict) per file.
+const SECOND_READER: &str = "import json, logging, sys, warnings
+sys.path.insert(0, sys.argv[1])
+import cr_check
+warnings.simplefilter('ignore')
+logging.disable(logging.WARNING)
+for path in sys.argv[2:]:
+    read, _, _ = cr_check.read_with_commonroad_io(path)
+    print(json.dumps(read), flush=True)
+";
 
 /// One cr_check.py process over `batch`: its JSON line per file, in order.
 fn run_batch(cmd: &mut Command, batch: &[&Path]) -> Vec<Value> {
@@ -113,18 +131,15 @@ fn run_batch(cmd: &mut Command, batch: &[&Path]) -> Vec<Value> {
     lines.iter().map(|line| serde_json::from_str(line).unwrap_or_else(|e| panic!("cr_check.py output is not JSON ({e}): {line}"))).collect()
 }
 
-/// Adds the older interpreter's read of the file (from its own cr_check.py run, `second`) to
-/// the first run's `json` as cr_check.py's per-file worker would: under `extra_reads`, and, if
-/// it failed, as a `read_extra` error. Like cr_check.py, only where the first reader ran (not
-/// for a missing or malformed file).
+/// Adds the older interpreter's read of the file (`second`, from `SECOND_READER`) to the first
+/// run's `json` as cr_check.py's per-file worker would: under `extra_reads`, and, if it failed,
+/// as a `read_extra` error. Like cr_check.py, only where the first reader ran (not for a
+/// missing or malformed file).
 fn add_second_read(json: &mut Value, second: &Value, python: &Path) {
     if json.get("read").is_none() {
         return;
     }
-    let mut read = match second.get("read") {
-        Some(r) => r.clone(),
-        None => serde_json::json!({"ok": false, "error": format!("the second reader did not run: {}", second["errors"])}),
-    };
+    let mut read = second.clone();
     read["python"] = Value::String(python.display().to_string());
     if read.get("ok").and_then(Value::as_bool) != Some(true) {
         let msg = format!("commonroad-io {} ({}): {}", read["commonroad_io"].as_str().unwrap_or("?"), python.display(), read["error"].as_str().unwrap_or("?"));
@@ -195,7 +210,7 @@ mod tests {
     #[test]
     fn a_second_reader_that_fails_is_a_read_extra_error() {
         let mut j = first_run();
-        add_second_read(&mut j, &json!({"read": {"ok": false, "commonroad_io": "2024.3", "error": "KeyError: x"}}), Path::new("/py/crd"));
+        add_second_read(&mut j, &json!({"ok": false, "commonroad_io": "2024.3", "error": "KeyError: x"}), Path::new("/py/crd"));
         let r = parse(Path::new("a.xml"), j);
         assert!(!r.ok);
         assert_eq!(r.error_counts.get("read_extra"), Some(&1));
@@ -207,11 +222,7 @@ mod tests {
     #[test]
     fn a_second_reader_that_reads_adds_its_read_only() {
         let mut j = first_run();
-        add_second_read(
-            &mut j,
-            &json!({"read": {"ok": true, "commonroad_io": "2024.3", "counts": {"lanelets": 3}}, "errors": [{"check": "xsd", "msg": "m"}]}),
-            Path::new("/py/crd"),
-        );
+        add_second_read(&mut j, &json!({"ok": true, "commonroad_io": "2024.3", "counts": {"lanelets": 3}}), Path::new("/py/crd"));
         let r = parse(Path::new("a.xml"), j);
         assert!(r.ok, "{}", r.summary());
         assert_eq!(r.n_errors(), 0);
@@ -221,7 +232,7 @@ mod tests {
     #[test]
     fn no_second_read_where_the_first_reader_did_not_run() {
         let mut j = json!({"file": "m.xml", "ok": false, "errors": [{"check": "file", "msg": "not found"}]});
-        add_second_read(&mut j, &json!({"ok": false, "errors": [{"check": "file", "msg": "not found"}]}), Path::new("/py/crd"));
+        add_second_read(&mut j, &json!({"ok": false, "commonroad_io": "2024.3", "error": "FileNotFoundError"}), Path::new("/py/crd"));
         let r = parse(Path::new("m.xml"), j);
         assert_eq!(r.error_counts.get("file"), Some(&1));
         assert_eq!(r.n_errors(), 1);
