@@ -66,8 +66,8 @@ const BATCH: usize = 64;
 ///
 /// cr_check.py's `--extra-python` starts the other interpreter once per file to read it; over
 /// a corpus that start-up (importing commonroad-io) costs three times the checks themselves.
-/// So the older interpreter runs once per batch, calling the function that worker runs,
-/// cr_check.py's `read_with_commonroad_io`, on each file (`SECOND_READER`). With
+/// So the older interpreter runs once per batch, beside the first, calling the function that
+/// worker runs, cr_check.py's `read_with_commonroad_io`, on each file (`SECOND_READER`). With
 /// `--drivability`, whose checker may live only in the older environment, cr_check.py gets
 /// `--extra-python` as before.
 ///
@@ -86,13 +86,13 @@ pub fn cr_check<P: AsRef<Path>>(files: &[P], extra_args: &[&str]) -> Vec<CrCheck
         if per_file_worker {
             first.arg("--extra-python").arg(&envs.crd);
         }
-        let jsons = run_batch(first.args(extra_args), &batch);
-        let second = if per_file_worker {
-            None
-        } else {
-            let tools = script.parent().unwrap_or(Path::new("."));
-            Some(run_batch(Command::new(&envs.crd).arg("-c").arg(SECOND_READER).arg(tools), &batch))
-        };
+        // the two interpreters read the batch side by side
+        let tools = script.parent().unwrap_or(Path::new("."));
+        let (jsons, second) = std::thread::scope(|scope| {
+            let second = (!per_file_worker).then(|| scope.spawn(|| run_batch(Command::new(&envs.crd).arg("-c").arg(SECOND_READER).arg(tools), &batch)));
+            let jsons = run_batch(first.args(extra_args), &batch);
+            (jsons, second.map(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e))))
+        });
         for (i, (file, mut json)) in batch.iter().zip(jsons).enumerate() {
             if let Some(second) = &second {
                 add_second_read(&mut json, &second[i], &envs.crd);
