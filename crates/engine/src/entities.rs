@@ -123,7 +123,9 @@ impl Entity {
     }
 
     /// The end-of-road status a position set from world coordinates takes (Position::
-    /// SetInertiaPos → XYZ2TrackPos sets it afresh): only a point beyond its road's end has it.
+    /// SetInertiaPos → XYZ2TrackPos sets it afresh): a point beyond its road's end has it, and so
+    /// does a point on an end without a link element (XYZ2TrackPos ends with
+    /// SetLongitudinalTrackPos, which flags s within SMALL_NUMBER of such an end).
     /// A teleport, which copies the location only, keeps the status it had instead.
     pub(crate) fn set_end_status_from_world(&mut self, net: &RoadNetwork) {
         if let Some(status) = self.end_status_from_world(net) {
@@ -133,7 +135,8 @@ impl Entity {
 
     /// That status, for the entity's position as it is now; None off every road.
     pub(crate) fn end_status_from_world(&self, net: &RoadNetwork) -> Option<bool> {
-        self.lane.map(|lp| crate::roads::past_end::past_road_end(net, lp.road, lp.s, self.x, self.y))
+        self.lane
+            .map(|lp| crate::roads::past_end::past_road_end(net, lp.road, lp.s, self.x, self.y) || crate::roads::past_end::unlinked_end_at(net, lp.road, lp.s))
     }
 
     /// esmini's ScenarioEngine::step, after every object's (default) move: an object whose

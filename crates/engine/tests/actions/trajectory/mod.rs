@@ -4,6 +4,7 @@ mod clothoid_start_time;
 mod end_at_junction_entry;
 mod end_tolerance;
 mod follow;
+mod held_at_unlinked_start;
 mod nurbs_headings;
 mod offset_start_time;
 mod past_road_end;
