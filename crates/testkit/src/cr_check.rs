@@ -116,7 +116,8 @@ for path in sys.argv[2:]:
     print(json.dumps(read), flush=True)
 ";
 
-/// One cr_check.py process over `batch`: its JSON line per file, in order.
+/// One Python process over `batch` (cr_check.py, or `SECOND_READER`): its JSON line per file,
+/// in order.
 fn run_batch(cmd: &mut Command, batch: &[&Path]) -> Vec<Value> {
     let out = cmd.args(batch).output().unwrap_or_else(|e| panic!("cannot run {cmd:?}: {e}"));
     let stdout = String::from_utf8_lossy(&out.stdout);

@@ -107,7 +107,7 @@ impl<'a> Sim<'a> {
             Position::RelativeObject { entity, orientation, .. } | Position::RelativeWorld { entity, orientation, .. } => (entity, orientation.as_ref()),
             _ => return None,
         };
-        let anchor = self.entities.iter().position(|en| &en.name == entity)?;
+        let anchor = self.entity_index(entity)?;
         let (pitch, roll) = self.pitch_roll(anchor);
         let absolute = orientation.is_some_and(|o| o.reference == Some(openscenario::ReferenceContext::Absolute));
         let turn = |own: Option<f64>, of_anchor: f64| match own {
