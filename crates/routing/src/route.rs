@@ -83,8 +83,9 @@ impl Route {
     /// Plan a route through `waypoints`. `strategies[i]` is the strategy of waypoint i and
     /// rules the leg that reaches it (missing entries: shortest). A closed route returns
     /// from the last waypoint to the first. If no leg obeys driving directions and the
-    /// target lane, the search retries with any lane of the target's road and then
-    /// without driving directions, with a warning.
+    /// target lane, the search retries with any lane of the target's road, then without
+    /// driving directions, then entering the target's road from a lane that does not continue
+    /// into it (as esmini's route finds its way), with a warning.
     pub fn plan(net: &RoadNetwork, waypoints: &[Waypoint], strategies: &[Strategy], closed: bool) -> Result<Route, Error> {
         if waypoints.len() > MAX_WAYPOINTS {
             return Err(Error::TooManyWaypoints { max: MAX_WAYPOINTS, found: waypoints.len() });
@@ -112,9 +113,13 @@ impl Route {
             let target = points[to_i];
             let mut found = None;
             let tries = [
-                (Rules { obey_direction: true, exact_target: true }, None),
-                (Rules { obey_direction: true, exact_target: false }, Some("reached on another lane of its road")),
-                (Rules { obey_direction: false, exact_target: false }, Some("reached only against a lane's driving direction")),
+                (Rules { obey_direction: true, exact_target: true, lane_free_target_entry: false }, None),
+                (Rules { obey_direction: true, exact_target: false, lane_free_target_entry: false }, Some("reached on another lane of its road")),
+                (Rules { obey_direction: false, exact_target: false, lane_free_target_entry: false }, Some("reached only against a lane's driving direction")),
+                (
+                    Rules { obey_direction: false, exact_target: false, lane_free_target_entry: true },
+                    Some("reached only from a lane that does not continue into its road (esmini's route takes that way)"),
+                ),
             ];
             for (rules, note) in tries {
                 let search = Search { net, strategy, rules, extra_kind };

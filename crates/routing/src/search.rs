@@ -40,6 +40,11 @@ pub(crate) struct Rules {
     pub obey_direction: bool,
     /// The goal must be the target's lane and direction (else any lane of its section).
     pub exact_target: bool,
+    /// The target's road may be entered from a road end it meets whether or not the lane
+    /// driven continues into it (esmini's RoadPath::Calculate takes a linked road, or a
+    /// junction's connecting road, that is the target road as reached before
+    /// RoadPath::CheckRoad looks at lanes); it is entered on the target's lane.
+    pub lane_free_target_entry: bool,
 }
 
 /// One step of a found path: the state, its entry s, and whether it was reached by a lane change.
@@ -184,8 +189,42 @@ impl Search<'_> {
                 let c = base + cost::transition(self.strategy, self.net, key.lane.road, next.road);
                 relax(&mut heap, &mut labels, Key { lane: next, along_s: along, fresh: false }, c, entry, false);
             }
+            if self.rules.lane_free_target_entry {
+                for (next, along) in self.target_entries(key.lane, end, target) {
+                    let Some((n0, n1)) = self.section_range(next) else { continue };
+                    let entry = if along { n0 } else { n1 };
+                    let c = base + cost::transition(self.strategy, self.net, key.lane.road, next.road);
+                    relax(&mut heap, &mut labels, Key { lane: next, along_s: along, fresh: false }, c, entry, false);
+                }
+            }
         }
         None
+    }
+
+    /// The target's lane where the target's road meets `end` of `lane`'s road, and whether it
+    /// is then driven along s (entered at its start), for `Rules::lane_free_target_entry`:
+    /// only from a road's last lane section on that end, as a road link or a junction joins
+    /// road ends.
+    fn target_entries(&self, lane: LaneRef, end: ContactPoint, target: &Point) -> Vec<(LaneRef, bool)> {
+        let Some(r) = self.net.roads.get(lane.road) else { return Vec::new() };
+        let at_end = match end {
+            ContactPoint::Start => lane.section == 0,
+            ContactPoint::End => lane.section + 1 >= r.lane_sections.len(),
+        };
+        if !at_end || target.lane.road == lane.road {
+            return Vec::new();
+        }
+        let Some(tr) = self.net.roads.get(target.lane.road) else { return Vec::new() };
+        self.net
+            .roads_at(lane.road, end)
+            .into_iter()
+            .filter(|e| e.road == target.lane.road)
+            .filter_map(|e| {
+                let section = opendrive::section_at_end(tr, e.contact);
+                let next = LaneRef { road: e.road, section, lane: target.lane.lane };
+                tr.lane_sections.get(section).and_then(|sec| sec.lane(next.lane)).map(|_| (next, e.contact == ContactPoint::Start))
+            })
+            .collect()
     }
 
     fn unwind(&self, labels: &BTreeMap<Key, Label>, last: Key) -> Vec<Step> {
