@@ -203,8 +203,10 @@ impl<'a> Sim<'a> {
                 // heading from where the actor is, looked up afresh (XYZ2TrackPos on a new
                 // Position: the nearest road, snapped to its nearest driving lane), whose
                 // road, lane, s and offset the actor takes — near a junction another road.
+                let mut desired = None;
                 if let Some(q) = lp.pose(net) {
                     let (x, y) = (en.x - q.road_heading.sin() * error, en.y + q.road_heading.cos() * error);
+                    desired = Some((x, y));
                     if let Some(p) = crate::roads::locate::world_to_lane(net, x, y, None) {
                         let (lane_id, offset) = lane_snap::snap_located(net, &p, false);
                         let dir = if is_angle_forward(en.h - p.heading) { 1.0 } else { -1.0 };
@@ -213,7 +215,19 @@ impl<'a> Sim<'a> {
                 }
                 en.set_lane_pos(net, lp);
                 let done = !r.continuous && error.abs() < THRESHOLD;
-                Self::head_along(net, en, r);
+                // The heading is the direction to the desired point as XYZ2TrackPos holds it
+                // (the point as given, not the lane position taken from it): across a road
+                // along x that is exactly a right angle, which IsAngleForward counts as forward.
+                match desired {
+                    Some((x, y)) => {
+                        let (dx, dy) = (x - r.old.0, y - r.old.1);
+                        if dx * dx + dy * dy > 0.0 {
+                            en.set_heading_on_lane(net, dy.atan2(dx));
+                        }
+                        r.old = (en.x, en.y);
+                    }
+                    None => Self::head_along(net, en, r),
+                }
                 return done;
             }
             Phase::Dynamic => {}
