@@ -3,7 +3,7 @@
 //! relative lane range, *and* the range names at least one existing driving lane at the
 //! entity's position (a free but non-existent lane is not clearance).
 
-use super::free_space::{free_space_road, FreeSpaceGap};
+use super::free_space::{free_space_road, free_space_roads, FreeSpaceGap};
 use crate::entities::Entity;
 use crate::roads::road_distance::road_distance_within;
 use crate::sim::Sim;
@@ -85,8 +85,16 @@ fn delta(net: &RoadNetwork, a: &Entity, b: &Entity, max: f64, free_space: bool) 
     let (la, lb) = (a.lane?, b.lane?);
     // esmini's Object::FreeSpaceDistanceObjectRoadLane: the gap between the boxes' corners, and
     // the lane difference of the last corners compared, the front right ones (0 when the boxes
-    // overlap). Measured here where every corner lies on one road.
-    let gap = if free_space && la.road == lb.road { free_space_road(net, a, b, la.road, la.dir) } else { None };
+    // overlap). Corners on other roads than `a`'s are located from `a`'s position and measured
+    // along the road path (`free_space_roads`: where the corners straddle a road end the
+    // deltas of one corner disagree in sign and the gap is 0); where no path joins a pair the
+    // function fails and the entity is not found.
+    let gap = if free_space {
+        let same = if la.road == lb.road { free_space_road(net, a, b, la.road, la.dir) } else { None };
+        Some(same.or_else(|| free_space_roads(net, a, b, la.road))?)
+    } else {
+        None
+    };
     let (ds, la_id, lb_id) = match gap {
         Some(FreeSpaceGap { front_right_lanes: None, .. }) => return Some((0.0, 0, false)),
         Some(FreeSpaceGap { ds, front_right_lanes: Some((ia, ib)), .. }) => (ds, ia, ib),
