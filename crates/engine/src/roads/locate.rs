@@ -3,7 +3,8 @@
 //! projection at its last s); only when the point is not on that road does the spatial-index
 //! search run. A point on the hinted road is what the full search returns too (it prefers the
 //! hinted road among the roads containing the point), except at the road's end, where a
-//! junction arm starting there takes it (`junction_arm_at_end`). Exact repeats of full searches (fixed
+//! junction arm starting there takes it (`junction_arm_at_end`); past the end, a junction arm
+//! containing the point wins over the other roads containing it (`entry_connector`). Exact repeats of full searches (fixed
 //! target points of distance conditions) come from a small memo. On a banked road t is
 //! measured along the tilted surface, as esmini's `Position::XYZ2TrackPos` measures it.
 
@@ -69,6 +70,14 @@ pub(crate) fn world_to_lane_at(
             if let Some(held) = held_on_current(net, p, lane_id, x, y) {
                 return Some(unshifted(net, held, x, y));
             }
+        }
+        // Off the current road: a road directly connected to it from its lane that contains
+        // the point wins over any other containing it (XYZ2TrackPos replaces the best by a
+        // directly connected road as close, by another road only when strictly closer), the
+        // straightest at its contact point among them — so a point where a junction's
+        // connecting roads overlap goes on the one going most straight on.
+        if let Some(arm) = super::junction_entry::entry_connector(net, road, lane_id, x, y) {
+            return Some(unshifted(net, arm, x, y));
         }
     }
     let found = net.world_to_lane_at_height(x, y, z, hint.map(|h| h.0), &surface_t);

@@ -2,6 +2,7 @@
 
 mod clothoid_start_time;
 mod end_at_junction_entry;
+mod end_inside_junction;
 mod end_tolerance;
 mod follow;
 mod held_at_unlinked_start;
