@@ -313,7 +313,9 @@ impl Entity {
     /// TeleportAction: Position::CopyLocation).
     pub(crate) fn set_world_snapping(&mut self, net: Option<&RoadNetwork>, x: f64, y: f64, z: Option<f64>, h: f64, sidewalks: bool) {
         // The teleport's position was made afresh (relative heading 0 for GetPOffset; no
-        // current road for XYZ2TrackPos to hold).
+        // current road for XYZ2TrackPos to hold, nor one to prefer: the entity's own road is
+        // not asked first).
+        self.lane = None;
         self.place_world(net, x, y, z, h, sidewalks, 0.0, None);
     }
 
