@@ -57,9 +57,16 @@ impl<'a> Sim<'a> {
         }
         t.set_start(speed);
         let v1 = target.value(&self.entities);
+        let mut distance_span = None;
         if dyn_.dimension == DynamicsDimension::Distance {
-            // The shape runs over time: the time that covers the distance.
-            let (v0, dist) = (speed, value);
+            // The shape runs over time: the time that covers the distance. esmini's transition
+            // keeps that time in place of the distance (SetParamTargetVal), and the action
+            // executed again reads it as its distance.
+            let dist = match self.actions.get(slot).and_then(|s| s.kept_for(e)) {
+                Some(super::state::Kept::Speed(k)) => k.param_target,
+                _ => value,
+            };
+            let v0 = speed;
             let span = if (v1 - v0).abs() < SMALL_NUMBER {
                 0.0
             } else if v0.abs() > SMALL_NUMBER && v1.abs() > SMALL_NUMBER && sign(v0) != sign(v1) {
@@ -72,6 +79,7 @@ impl<'a> Sim<'a> {
             };
             t.dimension = DynamicsDimension::Time;
             t.param_target = span;
+            distance_span = Some(span);
         }
         t.set_target(abs_limit(v1, max_speed));
         // The peak rate is checked once, against the limit of the direction of change.
@@ -79,7 +87,7 @@ impl<'a> Sim<'a> {
         if let Some(en) = self.entities.get_mut(e) {
             en.speed = evaluate(&t);
         }
-        ActionRt::Speed(SpeedRt { transition: t, target, reached: false })
+        ActionRt::Speed(SpeedRt { transition: t, target, reached: false, distance_span })
     }
 
     /// One step (esmini's LongSpeedAction::Step); true when the action is done.

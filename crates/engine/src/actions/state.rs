@@ -64,6 +64,7 @@ pub(crate) enum Kept {
     LatDistance(super::lat_distance::state::LatDistanceKept),
     LongDistance(super::long_distance::state::LongDistanceKept),
     Synchronize(super::synchronize::state::SynchronizeKept),
+    Speed(super::speed::state::SpeedKept),
 }
 
 impl<'a> ActionSlot<'a> {
@@ -77,6 +78,10 @@ impl<'a> ActionSlot<'a> {
             ActionRt::LatDistance(r) => Kept::LatDistance(r.kept()),
             ActionRt::LongDistance(r) => Kept::LongDistance(r.kept()),
             ActionRt::Synchronize(r) => Kept::Synchronize(r.kept()),
+            ActionRt::Speed(r) => match r.distance_span {
+                Some(span) => Kept::Speed(super::speed::state::SpeedKept { param_target: span }),
+                None => return,
+            },
             _ => return,
         };
         match self.kept.iter_mut().find(|(k, _)| *k == e) {

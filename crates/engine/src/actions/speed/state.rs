@@ -40,4 +40,15 @@ pub(crate) struct SpeedRt {
     pub transition: Transition,
     pub target: Target,
     pub reached: bool,
+    /// For a distance's dynamics: the time span Start made of it, which esmini's transition
+    /// keeps in place of the distance (SetParamTargetVal) and its next Start reads as the
+    /// distance (`Kept::Speed`).
+    pub distance_span: Option<f64>,
+}
+
+/// What a distance-dimensioned SpeedAction's esmini object keeps for its next execution.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct SpeedKept {
+    /// The transition's parameter target: the time span the last Start computed.
+    pub param_target: f64,
 }
