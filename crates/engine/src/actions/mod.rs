@@ -26,7 +26,7 @@ use crate::external::overridden::{overridden, Overridden};
 use crate::sim::Sim;
 use crate::storyboard::{State, Transition};
 use crate::Diagnostic;
-use openscenario::{ActionKind, PrivateAction};
+use openscenario::{Action, ActionKind, GlobalAction, PrivateAction};
 
 impl<'a> Sim<'a> {
     /// Warn once about action slot `slot`.
@@ -353,7 +353,29 @@ impl<'a> Sim<'a> {
         }
         if all_done && self.actions[slot].running {
             let node = self.actions[slot].node;
-            self.end_element(node);
+            if finishes_by_stop(self.actions[slot].model) {
+                self.stop_element(node);
+            } else {
+                self.end_element(node);
+            }
         }
     }
+}
+
+/// The global actions esmini finishes with OSCAction::Stop in their Step (OSCGlobalAction.cpp):
+/// they go running → stopTransition → complete, so a StoryboardElementStateCondition on their
+/// endTransition never holds (one on their event's end still does).
+fn finishes_by_stop(model: &Action) -> bool {
+    matches!(
+        &model.kind,
+        ActionKind::Global(
+            GlobalAction::Environment(_)
+                | GlobalAction::ParameterSet { .. }
+                | GlobalAction::VariableSet { .. }
+                | GlobalAction::VariableModify { .. }
+                | GlobalAction::TrafficSignalState { .. }
+                | GlobalAction::AddEntity { .. }
+                | GlobalAction::DeleteEntity { .. }
+        )
+    )
 }
