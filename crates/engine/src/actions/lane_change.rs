@@ -170,7 +170,15 @@ impl<'a> Sim<'a> {
         t.set_start(lane_sign * offset_in_target);
         t.set_target(lane_sign * target_offset);
         if let Some(en) = self.entities.get_mut(e) {
+            // LatLaneChangeAction::Start "aligns to road": SetHeadingRelativeRoadDirection(0)
+            // evaluates the heading at once (EvaluateHPR), facing the way the entity faced
+            // along the road, so an entity standing still (whose Step then returns early) turns
+            // to the road's direction already.
             en.yaw_offset = 0.0;
+            if let (Some(lp), Some(pose)) = (en.lane, en.lane.and_then(|lp| lp.pose(net))) {
+                let drift = en.drift(net, &lp);
+                en.h = crate::angles::wrap_2pi(lp.facing_heading(&pose) + drift);
+            }
         }
         let missing_lane_sign = (internal_lane != target_lane).then_some(lane_sign);
         ActionRt::LaneChange(LaneChangeRt { transition: t, internal, missing_lane_sign })

@@ -6,6 +6,7 @@ mod at_a_dead_end;
 mod end_with_dangling_link;
 mod into_junction;
 mod missing_lane;
+mod standing_aligns;
 mod step;
 mod too_fast_and_road_end;
 mod transition;
