@@ -194,17 +194,22 @@ impl<'a> Sim<'a> {
         // way the entity faces (against the path when reversing), and that sign is kept for
         // the whole action.
         let speed_sign = if timing.is_none() && entity_speed < 0.0 { -1.0 } else { 1.0 };
-        // Started reversing on a polyline whose every vertex gives its heading, esmini faces the
-        // entity as the vertices say (IsHSetExplicitly) and takes its motion's sign from how
-        // that heading lies to the path (initialHeadingSign_: against it when more than π/2
-        // off): along a path whose headings point forward the entity backs off the start and
-        // the action ends at once.
+        // Started reversing on a polyline whose first vertex gives its heading, esmini faces the
+        // entity as the vertices say (IsHSetExplicitly: the mode of the vertex the first
+        // segment starts at) and takes its motion's sign from how that heading lies to the path
+        // (initialHeadingSign_: against it when more than π/2 off): along a path whose headings
+        // point forward the entity backs off the start and the action ends at once.
         let (some_headings, all_headings) = vertex_headings(traj);
-        let faces_vertex_headings = speed_sign < 0.0 && all_headings;
-        if speed_sign < 0.0 && some_headings && !faces_vertex_headings {
+        let faces_vertex_headings = speed_sign < 0.0 && (all_headings || (s == 0.0 && first_vertex_heading(traj)));
+        if speed_sign < 0.0 && some_headings && !all_headings {
+            let how = if faces_vertex_headings {
+                "the entity faces as its first vertex says and moves by how that heading lies to the path"
+            } else {
+                "the entity faces against the path and advances along it"
+            };
             self.warn_action(
                 slot,
-                format!("FollowTrajectoryAction: trajectory `{}` is started reversing and some of its vertices give headings; esmini's motion along partly explicit vertex headings is not modelled (the entity faces against the path and advances along it)", traj.name),
+                format!("FollowTrajectoryAction: trajectory `{}` is started reversing and some of its vertices give headings; esmini's motion along partly explicit vertex headings is not modelled where they change ({how})", traj.name),
             );
         }
         // A timed polyline is timed vertex by vertex (PolyLineShape::CalculatePolyLine); the other
@@ -398,6 +403,14 @@ fn vertex_headings(traj: &Trajectory) -> (bool, bool) {
             (giving > 0, giving > 0 && giving == vs.len())
         }
         _ => (false, false),
+    }
+}
+
+/// Whether the first polyline vertex of `traj` gives a heading of its own.
+fn first_vertex_heading(traj: &Trajectory) -> bool {
+    match &traj.shape {
+        openscenario::Shape::Polyline(vs) => vs.first().is_some_and(|v| trajectory::gives_heading(&v.position)),
+        _ => false,
     }
 }
 

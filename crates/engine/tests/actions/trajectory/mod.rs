@@ -10,6 +10,7 @@ mod nurbs_headings;
 mod offset_start_time;
 mod past_road_end;
 mod reverse;
+mod reverse_first_vertex_heading;
 mod reverse_vertex_headings;
 mod start_at_rest;
 mod time_out_of_range;
