@@ -73,13 +73,8 @@ impl<'a> Sim<'a> {
         if a.override_mode {
             // ...and notes the end of the road (the EndOfRoadCondition's time stamp) from the
             // status of that last move: one step after the arrival, where the default
-            // controller's move is noted in its own step. An action that placed the entity in
-            // this step (a trajectory) set its position's status afresh: that status counts.
-            let net = self.net;
+            // controller's move is noted in its own step.
             if let Some(en) = self.entities.get_mut(e) {
-                if en.moved_by_action {
-                    a.at_end = net.and_then(|n| en.end_status_from_world(n)).unwrap_or(false);
-                }
                 en.at_road_end = a.at_end;
             }
             if !a.at_end {

@@ -23,5 +23,4 @@ mod override_speed_action;
 mod override_speed_profile;
 mod override_teleport;
 mod override_timed_trajectory;
-mod stopped_at_road_end_moved_by_trajectory;
 mod timed_clothoid_start_speed;
