@@ -228,12 +228,18 @@ impl Entity {
             self.x = p.x;
             self.y = p.y;
             self.z = p.z;
-            // Along a lane that widens or narrows the path drifts sideways; esmini's heading follows it.
-            let known_parallel = self.parallel_lane.is_some_and(|(r, l, a, b)| r == lp.road && l == lp.lane_id && lp.s >= a && lp.s < b);
-            let drift = if known_parallel { 0.0 } else { self.drift(net, &lp) };
-            self.h = wrap_2pi(lp.facing_heading(&p) + self.yaw_offset + drift);
+            self.h = self.heading_on(net, &lp, &p);
             self.on_road = inside_real_lane(net, &lp, &p) || self.lane_contains(net, &lp, p.t);
         }
+    }
+
+    /// The heading on lane position `lp` (at pose `p`): the direction it faces plus
+    /// `yaw_offset`, plus the lane's drift (along a lane that widens or narrows the path drifts
+    /// sideways; esmini's heading follows it).
+    pub(crate) fn heading_on(&mut self, net: &RoadNetwork, lp: &LanePos, p: &crate::roads::lane_position::LanePose) -> f64 {
+        let known_parallel = self.parallel_lane.is_some_and(|(r, l, a, b)| r == lp.road && l == lp.lane_id && lp.s >= a && lp.s < b);
+        let drift = if known_parallel { 0.0 } else { self.drift(net, lp) };
+        wrap_2pi(lp.facing_heading(p) + self.yaw_offset + drift)
     }
 
     /// Turn the entity to the absolute heading `h` as esmini's Position::SetHeading does

@@ -199,8 +199,8 @@ impl<'a> Sim<'a> {
         // segment starts at) and takes its motion's sign from how that heading lies to the path
         // (initialHeadingSign_: against it when more than π/2 off): along a path whose headings
         // point forward the entity backs off the start and the action ends at once.
-        let (some_headings, all_headings) = vertex_headings(traj);
-        let faces_vertex_headings = speed_sign < 0.0 && (all_headings || (s == 0.0 && first_vertex_heading(traj)));
+        let VertexHeadings { some: some_headings, all: all_headings, first: first_heading } = vertex_headings(traj);
+        let faces_vertex_headings = speed_sign < 0.0 && (all_headings || (s == 0.0 && first_heading));
         if speed_sign < 0.0 && some_headings && !all_headings {
             let how = if faces_vertex_headings {
                 "the entity faces as its first vertex says and moves by how that heading lies to the path"
@@ -394,23 +394,22 @@ fn time_at_start(traj: &Trajectory, path: &Path, s: f64) -> Option<f64> {
     Some(first + s.clamp(0.0, length.floor()) / length * last)
 }
 
-/// Whether some and whether every polyline vertex of `traj` gives a heading of its own (both
-/// false for other shapes and an empty polyline).
-fn vertex_headings(traj: &Trajectory) -> (bool, bool) {
+/// Which polyline vertices of `traj` give a heading of their own (none for other shapes and
+/// an empty polyline).
+struct VertexHeadings {
+    some: bool,
+    all: bool,
+    first: bool,
+}
+
+fn vertex_headings(traj: &Trajectory) -> VertexHeadings {
     match &traj.shape {
         openscenario::Shape::Polyline(vs) => {
             let giving = vs.iter().filter(|v| trajectory::gives_heading(&v.position)).count();
-            (giving > 0, giving > 0 && giving == vs.len())
+            let first = vs.first().is_some_and(|v| trajectory::gives_heading(&v.position));
+            VertexHeadings { some: giving > 0, all: giving > 0 && giving == vs.len(), first }
         }
-        _ => (false, false),
-    }
-}
-
-/// Whether the first polyline vertex of `traj` gives a heading of its own.
-fn first_vertex_heading(traj: &Trajectory) -> bool {
-    match &traj.shape {
-        openscenario::Shape::Polyline(vs) => vs.first().is_some_and(|v| trajectory::gives_heading(&v.position)),
-        _ => false,
+        _ => VertexHeadings { some: false, all: false, first: false },
     }
 }
 

@@ -176,8 +176,7 @@ impl<'a> Sim<'a> {
             // to the road's direction already.
             en.yaw_offset = 0.0;
             if let (Some(lp), Some(pose)) = (en.lane, en.lane.and_then(|lp| lp.pose(net))) {
-                let drift = en.drift(net, &lp);
-                en.h = crate::angles::wrap_2pi(lp.facing_heading(&pose) + drift);
+                en.h = en.heading_on(net, &lp, &pose);
             }
         }
         let missing_lane_sign = (internal_lane != target_lane).then_some(lane_sign);

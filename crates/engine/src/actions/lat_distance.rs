@@ -218,16 +218,8 @@ impl<'a> Sim<'a> {
                 // The heading is the direction to the desired point as XYZ2TrackPos holds it
                 // (the point as given, not the lane position taken from it): across a road
                 // along x that is exactly a right angle, which IsAngleForward counts as forward.
-                match desired {
-                    Some((x, y)) => {
-                        let (dx, dy) = (x - r.old.0, y - r.old.1);
-                        if dx * dx + dy * dy > 0.0 {
-                            en.set_heading_on_lane(net, dy.atan2(dx));
-                        }
-                        r.old = (en.x, en.y);
-                    }
-                    None => Self::head_along(net, en, r),
-                }
+                let to = desired.unwrap_or((en.x, en.y));
+                Self::head_along(net, en, r, to);
                 return done;
             }
             Phase::Dynamic => {}
@@ -264,7 +256,8 @@ impl<'a> Sim<'a> {
         move_along_route_drawing(net, &mut lp, long_vel * dt, en.route.as_deref(), &mut self.random, pedestrian);
         lp.offset += r.lat_vel * dt;
         en.set_lane_pos(net, lp);
-        Self::head_along(net, en, r);
+        let to = (en.x, en.y);
+        Self::head_along(net, en, r, to);
         en.moved_by_action = true;
         done
     }
@@ -274,9 +267,10 @@ impl<'a> Sim<'a> {
     /// move in this step (a rigid jump's row faces along the jump, and a lateral speed
     /// condition sees none) and after the action, until something turns the entity again.
     /// Without any displacement here esmini's is a rounding error whose atan2 we cannot
-    /// reproduce; the heading is kept.
-    fn head_along(net: &opendrive::RoadNetwork, en: &mut crate::entities::Entity, r: &mut LatDistanceRt) {
-        let (dx, dy) = (en.x - r.old.0, en.y - r.old.1);
+    /// reproduce; the heading is kept. `to`: the point the displacement ends at (the entity's
+    /// position, or the point a rigid jump aimed at).
+    fn head_along(net: &opendrive::RoadNetwork, en: &mut crate::entities::Entity, r: &mut LatDistanceRt, to: (f64, f64)) {
+        let (dx, dy) = (to.0 - r.old.0, to.1 - r.old.1);
         if dx * dx + dy * dy > 0.0 {
             en.set_heading_on_lane(net, dy.atan2(dx));
         }
