@@ -395,7 +395,10 @@ fn time_at_start(traj: &Trajectory, path: &Path, s: f64) -> Option<f64> {
 }
 
 /// Which polyline vertices of `traj` give a heading of their own (none for other shapes and
-/// an empty polyline).
+/// an empty polyline). A NURBS curve counts as giving its heading everywhere when its first
+/// control point gives one: esmini's NurbsShape::EvaluateInternal takes every evaluated point's
+/// position mode from the first control point whose parameter the point has passed, which is
+/// always the first, so IsHSetExplicitly answers for the whole curve by it.
 struct VertexHeadings {
     some: bool,
     all: bool,
@@ -408,6 +411,10 @@ fn vertex_headings(traj: &Trajectory) -> VertexHeadings {
             let giving = vs.iter().filter(|v| trajectory::gives_heading(&v.position)).count();
             let first = vs.first().is_some_and(|v| trajectory::gives_heading(&v.position));
             VertexHeadings { some: giving > 0, all: giving > 0 && giving == vs.len(), first }
+        }
+        openscenario::Shape::Nurbs { control_points, .. } => {
+            let first = control_points.first().is_some_and(|c| trajectory::gives_heading(&c.position));
+            VertexHeadings { some: first, all: first, first }
         }
         _ => VertexHeadings { some: false, all: false, first: false },
     }
