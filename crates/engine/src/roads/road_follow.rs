@@ -50,8 +50,10 @@ pub(crate) fn at_unlinked_road_end(net: &RoadNetwork, lp: &LanePos) -> bool {
     net.roads.get(lp.road).is_some_and(|r| (lp.s < SMALL && r.predecessor.is_none()) || (lp.s > r.length - SMALL && r.successor.is_none()))
 }
 
-/// Most road changes one move may cross (guards against zero-length road loops).
-const MAX_HOPS: usize = 16;
+/// Most road changes one move may cross: esmini's Position::MoveAlongS follows at most
+/// `max_links` (8) links, and a move that would land past the eighth stays where it entered the
+/// eighth road (it is also what bounds a loop of zero-length roads).
+const MAX_HOPS: usize = 8;
 
 /// esmini's SMALL_NUMBER (CommonMini.hpp: 1e-6): junction arms turning within this of each
 /// other are a tie, rad (Position::MoveToConnectingRoad compares `heading_diff` with it). Maps
@@ -137,7 +139,7 @@ fn move_along(
     // Where the entity is when it leaves a road: esmini measures the turn of each junction arm
     // from the road heading there (the start of the move, then the end of the road it came in by).
     let mut s_here = s0;
-    for _ in 0..MAX_HOPS {
+    for hop in 0..MAX_HOPS {
         let Some(road) = net.roads.get(pos.road) else { return MoveStatus::EndOfRoad };
         if s >= 0.0 && s <= road.length {
             pos.s = s;
@@ -187,12 +189,17 @@ fn move_along(
             ContactPoint::Start => overshoot,
             ContactPoint::End => next_road.length - overshoot,
         };
-        if s >= 0.0 && s <= next_road.length {
+        // esmini checks where the rest of the move lands at the top of its next pass, and there
+        // is none after the eighth link
+        if hop + 1 < MAX_HOPS && s >= 0.0 && s <= next_road.length {
             pos.s = s;
             super::zero_width::leave_zero_width_lane(net, pos, sidewalks);
             return MoveStatus::Ok;
         }
     }
+    // Past the last link: at the contact point of the road entered last (MoveAlongS's
+    // SetLanePos there, `s_ + 0`), status OK.
+    pos.s = s_here;
     MoveStatus::Ok
 }
 

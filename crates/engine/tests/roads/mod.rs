@@ -1,6 +1,7 @@
 //! Moving along the road: banking, raised lanes, lanes that end, junction choice.
 
 mod centre_of_curvature;
+mod eight_links_per_move;
 mod end_of_road_speed;
 mod ending_lane;
 mod junction_connection_entering_at_end;
