@@ -20,13 +20,12 @@ use state::{Final, Mode, Submode, SynchronizeRt};
 
 use super::state::{ActionRt, Kept};
 use crate::angles::angle_difference;
-use crate::angles::wrap_2pi;
 use crate::positions::{resolve, Placement};
 use crate::roads::road_path::path_ends;
 use crate::sim::Sim;
 use opendrive::ContactPoint;
 use openscenario::{FinalSpeed, Position, SpeedTargetValueType, SteadyState};
-use std::f64::consts::{FRAC_PI_2, PI};
+use std::f64::consts::FRAC_PI_2;
 
 /// esmini's SMALL_NUMBER, every tolerance of SynchronizeAction::Step.
 const SMALL: f64 = crate::dynamics::ESMINI_SMALL_NUMBER;
@@ -189,14 +188,7 @@ impl<'a> Sim<'a> {
                 // guarded matrices: along ±y it is a micro-radian off the road's, which
                 // turns an exact tie to one side).
                 if let (Some(r), Some(pose)) = (net.roads.get(a.road), a.pose(net)) {
-                    let mut drive_h = pose.road_heading;
-                    if a.lane_id > 0 {
-                        drive_h = wrap_2pi(drive_h + PI);
-                    }
-                    if r.rule == opendrive::TrafficRule::LeftHand {
-                        drive_h = wrap_2pi(drive_h + PI);
-                    }
-                    if angle_difference(crate::entities::position_heading(Some(net), en), drive_h) > FRAC_PI_2 {
+                    if crate::roads::driving_direction::faces_against(r.rule, a.lane_id, pose.road_heading, crate::entities::position_heading(Some(net), en)) {
                         dir = -dir;
                     }
                 }

@@ -25,10 +25,15 @@ fn path_ds(net: &RoadNetwork, a: &Entity, b: &Entity) -> Option<f64> {
     let d = crate::roads::road_distance::road_distance(net, la.road, la.s, lb.road, lb.s)?;
     let mut p = la;
     crate::roads::move_along_road_s(net, &mut p, d, None, None);
-    if p.road == lb.road && (p.s - lb.s).abs() < (0.05 * d).max(1.0) {
-        return Some(d);
+    let d = if p.road == lb.road && (p.s - lb.s).abs() < (0.05 * d).max(1.0) { d } else { -d };
+    // RoadPath::Calculate (across roads only) turns the sign once more for a start position
+    // facing against its lane's driving direction, as in SynchronizeAction's master_distance
+    if let (Some(r), Some(pose)) = (net.roads.get(la.road), la.pose(net)) {
+        if crate::roads::driving_direction::faces_against(r.rule, la.lane_id, pose.road_heading, crate::entities::position_heading(Some(net), a)) {
+            return Some(-d);
+        }
     }
-    Some(-d)
+    Some(d)
 }
 
 /// Distance from entity `a` to entity `b`.

@@ -63,19 +63,10 @@ pub(crate) fn forward_delta(net: &RoadNetwork, a: &LanePos, a_h: f64, b: &LanePo
         // direction (GetHRelativeDrivingDirection in (pi/2, 3pi/2): an angle difference in
         // [-pi, pi], so only one turned to the left of it).
         let road_h = a.pose(net)?.road_heading;
-        // Position::GetDrivingDirection's own arithmetic (the road heading turned by pi into
-        // [0, 2pi) for a left lane and again for left-hand traffic) against the heading the
-        // position holds (EvaluateHPR): an exact +-pi tie falls as esmini's bits make it.
-        let mut drive_h = road_h;
-        if a.lane_id > 0 {
-            drive_h = crate::angles::wrap_2pi(drive_h + std::f64::consts::PI);
-        }
-        if ra.rule == opendrive::TrafficRule::LeftHand {
-            drive_h = crate::angles::wrap_2pi(drive_h + std::f64::consts::PI);
-        }
+        // against the heading the position holds (EvaluateHPR)
         let held_h = crate::entities::esmini_euler_heading(road_h, angle_difference(a_h, road_h));
-        let rel = angle_difference(held_h, drive_h);
-        (if rel > std::f64::consts::FRAC_PI_2 { -d } else { d }, Some(last))
+        let against = crate::roads::driving_direction::faces_against(ra.rule, a.lane_id, road_h, held_h);
+        (if against { -d } else { d }, Some(last))
     };
     if ds.abs() >= max {
         return None;

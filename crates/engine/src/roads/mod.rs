@@ -2,6 +2,7 @@
 //! attached to a lane, and moving along the lanes through sections, roads and junctions.
 
 pub(crate) mod banking;
+pub(crate) mod driving_direction;
 pub(crate) mod junction_connections;
 pub(crate) mod junction_entry;
 pub(crate) mod lane_geometry;
