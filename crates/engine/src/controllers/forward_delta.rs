@@ -10,7 +10,6 @@
 use super::lane_router::connected_lane_at_s;
 use super::lane_router::connecting_lane_id;
 use super::natural_driver::view::LARGE_NUMBER;
-use crate::angles::angle_difference;
 use crate::roads::lane_geometry::lane_center_t;
 use crate::roads::LanePos;
 use opendrive::{ContactPoint, ElementType, JunctionType, RoadNetwork};
@@ -63,9 +62,11 @@ pub(crate) fn forward_delta(net: &RoadNetwork, a: &LanePos, a_h: f64, b: &LanePo
         // direction (GetHRelativeDrivingDirection in (pi/2, 3pi/2): an angle difference in
         // [-pi, pi], so only one turned to the left of it).
         let road_h = a.pose(net)?.road_heading;
-        // against the heading the position holds (EvaluateHPR)
-        let held_h = crate::entities::esmini_euler_heading(road_h, angle_difference(a_h, road_h));
-        let against = crate::roads::driving_direction::faces_against(ra.rule, a.lane_id, road_h, held_h);
+        // GetDrivingDirection's wrapped arithmetic against the entity's heading as the
+        // controller holds it: composing it with the road's (EvaluateHPR, as for
+        // SynchronizeAction) turned a car facing along s on a road ending at heading 2π by π
+        // (s59059_00475, where esmini keeps its lead), so the heading is taken as it is
+        let against = crate::roads::driving_direction::faces_against(ra.rule, a.lane_id, road_h, a_h);
         (if against { -d } else { d }, Some(last))
     };
     if ds.abs() >= max {

@@ -21,3 +21,18 @@ fn a_car_facing_against_its_lane_on_a_road_heading_pi_sees_no_lead_ahead() {
         &[("Car1", 1.0, 115.0, -1.75, std::f64::consts::PI), ("Car1", 1.9, 101.5, -1.75, std::f64::consts::PI)],
     );
 }
+
+/// The same car on a road whose heading is given as 2π (its geometry's `hdg`, which esmini's
+/// road heading keeps unwrapped): the driving direction wraps to π and the car's own heading,
+/// 0, differs from it by −π, so the car ahead on the next road is a lead and the ACC brakes.
+/// Composing the heading with the road's first (as SynchronizeAction's master does) gave 2π and
+/// +π, and no lead. Fixture `acc_facing_against_lane_on_heading_two_pi.xosc` on
+/// heading_two_pi.xodr; found on s59059_00475.
+#[test]
+fn on_a_road_heading_two_pi_the_car_ahead_is_a_lead() {
+    assert_fixture_matches_esmini(
+        "acc_facing_against_lane_on_heading_two_pi.xosc",
+        2.0,
+        &[("Car1", 1.0, -15.0, 1.75, 0.0), ("Car1", 2.0, -0.669921, 1.75, 0.0)],
+    );
+}
