@@ -253,7 +253,7 @@ impl Path {
             h_offset: 0.0,
             time_start: time.0,
         };
-        let mut path = Path::spirals(start, &[seg], time.1, closed)?;
+        let mut path = Path::spirals(start, &[seg], time.1, closed, &|p| p)?;
         for w in path.warnings.iter_mut() {
             *w = w.replace("ClothoidSpline", "Clothoid");
         }
@@ -264,7 +264,22 @@ impl Path {
     /// Zero-length segments are skipped with a warning. The path is esmini's one-metre polyline
     /// of the segments (see `sampled.rs`).
     pub fn clothoid_spline(start: Pose, segments: &[SplineSegment], time_end: Option<f64>, closed: bool) -> Result<Path, Error> {
-        let exact = Path::spirals(start, segments, time_end, closed)?;
+        Path::clothoid_spline_placed(start, segments, time_end, closed, &|p| p)
+    }
+
+    /// [`Path::clothoid_spline`] where a segment without a start of its own begins at the previous
+    /// one's end as `place` puts that pose in the world: esmini's ClothoidSplineShape::Freeze
+    /// starts it from the previous segment's end set by SetInertiaPos(x, y, h), whose heading is
+    /// composed with the road's pitch and roll there (EvaluateHPR), so on a sloped or banked road
+    /// it is not the spiral's own end heading. Only the heading of the placed pose is taken.
+    pub fn clothoid_spline_placed(
+        start: Pose,
+        segments: &[SplineSegment],
+        time_end: Option<f64>,
+        closed: bool,
+        place: &dyn Fn(Pose) -> Pose,
+    ) -> Result<Path, Error> {
+        let exact = Path::spirals(start, segments, time_end, closed, place)?;
         if exact.length < 1.0 {
             return Ok(exact);
         }
@@ -275,7 +290,7 @@ impl Path {
     }
 
     /// The exact clothoid segments (a Clothoid shape; the base of a ClothoidSpline).
-    fn spirals(start: Pose, segments: &[SplineSegment], time_end: Option<f64>, closed: bool) -> Result<Path, Error> {
+    fn spirals(start: Pose, segments: &[SplineSegment], time_end: Option<f64>, closed: bool, place: &dyn Fn(Pose) -> Pose) -> Result<Path, Error> {
         const SHAPE: &str = "ClothoidSpline";
         check_count(SHAPE, "segments", segments.len(), 1)?;
         check_pose(SHAPE, "the start pose", &start)?;
@@ -298,6 +313,11 @@ impl Path {
             if let Some(p) = seg.start {
                 check_pose(SHAPE, format!("start of segment {i}"), &p)?;
                 at = p;
+            } else if i > 0 {
+                let placed = place(at);
+                if placed.heading.is_finite() {
+                    at.heading = placed.heading;
+                }
             }
             at.heading += h_off;
             stamps.push((s, seg.time_start));

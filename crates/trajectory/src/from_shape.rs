@@ -55,7 +55,12 @@ impl Path {
                         time_start: s.time_start,
                     });
                 }
-                Path::clothoid_spline(current, &segs, *time_end, closed)
+                // the previous segment's end placed as a world position with its heading
+                let place = |p: Pose| {
+                    let w = Position::World { x: p.x, y: p.y, z: None, h: Some(p.heading), p: None, r: None };
+                    resolver(&w).unwrap_or(p)
+                };
+                Path::clothoid_spline_placed(current, &segs, *time_end, closed, &place)
             }
             Shape::Nurbs { order, control_points, knots } => {
                 let mut cps = Vec::with_capacity(control_points.len().min(crate::constructors::MAX_ITEMS + 1));

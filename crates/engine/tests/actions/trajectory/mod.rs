@@ -1,5 +1,6 @@
 //! FollowTrajectoryAction, forwards and backwards.
 
+mod clothoid_spline_chained_on_slope;
 mod clothoid_start_time;
 mod end_at_junction_entry;
 mod end_inside_junction;
