@@ -22,7 +22,8 @@ pub(crate) fn trajectory_placement(
     // interpolated (PolyLineBase's default INTERPOLATE_NONE; only FollowTrajectoryAction::Start
     // sets a mode), so each segment faces as the vertex it starts at.
     let build = || {
-        let mut p = Path::from_trajectory(traj, Pose::default(), &resolver).map_err(|e| e.to_string())?;
+        let place = |p: Pose| placed_pose(net, p);
+        let mut p = Path::from_trajectory_placed(traj, Pose::default(), &resolver, &place).map_err(|e| e.to_string())?;
         p.set_interpolation(Interpolation::None);
         Ok(p)
     };
@@ -48,17 +49,31 @@ pub(crate) fn trajectory_placement(
 pub(crate) fn vertex_pose(pos: &openscenario::Position, net: Option<&RoadNetwork>, entities: &[Entity]) -> Option<Pose> {
     let p = resolve(pos, net, entities).ok()?;
     let h = match (pos, net) {
-        (openscenario::Position::World { h, .. }, Some(net)) => match crate::roads::locate::world_to_lane(net, p.x, p.y, None) {
-            Some(lp) => {
-                let h = h.map_or_else(|| lp.heading + crate::positions::lane_drift(net, lp.road, lp.lane_id, lp.s), |_| p.h);
-                let past_end = crate::roads::past_end::past_road_end(net, lp.road, lp.s, p.x, p.y);
-                let road = net.roads.get(lp.road).filter(|_| !past_end);
-                let tilted = road.and_then(|r| crate::attitude::on_road(r, lp.s, lp.t, crate::angles::wrap(h - lp.heading), 0.0));
-                tilted.map_or(h, |o| o[0])
-            }
-            None => p.h,
-        },
+        (openscenario::Position::World { h, .. }, Some(net)) => held_heading(net, p.x, p.y, h.map(|_| p.h)).unwrap_or(p.h),
         _ => p.h,
     };
     Some(Pose::new(p.x, p.y, p.z.unwrap_or(0.0), h))
+}
+
+/// A resolved world pose placed as esmini's Position::SetInertiaPos places it: the same point,
+/// its heading composed with the road's where it lies ([`held_heading`]). For a ClothoidSpline
+/// segment chained to the previous one's end (ClothoidSplineShape::Freeze).
+pub(crate) fn placed_pose(net: Option<&RoadNetwork>, p: Pose) -> Pose {
+    match net.and_then(|net| held_heading(net, p.x, p.y, Some(p.heading))) {
+        Some(h) => Pose { heading: h, ..p },
+        None => p,
+    }
+}
+
+/// The heading esmini's position holds at world point (x, y) given heading `h` (None: the
+/// road's reference direction plus the lane's drift): composed with a sloped or banked road's
+/// rotation there (`attitude::on_road`, a fresh position; level beyond the road's end). None
+/// off the roads.
+fn held_heading(net: &RoadNetwork, x: f64, y: f64, h: Option<f64>) -> Option<f64> {
+    let lp = crate::roads::locate::world_to_lane(net, x, y, None)?;
+    let h = h.unwrap_or_else(|| lp.heading + crate::positions::lane_drift(net, lp.road, lp.lane_id, lp.s));
+    let past_end = crate::roads::past_end::past_road_end(net, lp.road, lp.s, x, y);
+    let road = net.roads.get(lp.road).filter(|_| !past_end);
+    let tilted = road.and_then(|r| crate::attitude::on_road(r, lp.s, lp.t, crate::angles::wrap(h - lp.heading), 0.0));
+    Some(tilted.map_or(h, |o| o[0]))
 }

@@ -9,6 +9,10 @@ use openscenario::model::{Position, Shape, Trajectory};
 /// The engine's position resolver: world pose of a position, None if it cannot be placed.
 pub type Resolver<'a> = &'a dyn Fn(&Position) -> Option<Pose>;
 
+/// The engine's placement of an already resolved world pose: the pose esmini's position holds
+/// there (SetInertiaPos), whose heading is composed with the road's pitch and roll.
+pub type Placer<'a> = &'a dyn Fn(Pose) -> Pose;
+
 fn resolve(shape: &'static str, what: String, resolver: Resolver, p: &Position) -> Result<Pose, Error> {
     resolver(p).ok_or(Error::Unresolved { shape, what })
 }
@@ -19,10 +23,21 @@ impl Path {
         Path::from_shape(&trajectory.shape, trajectory.closed, current, resolver)
     }
 
+    /// [`Path::from_trajectory`] with the engine's `place` for the poses esmini puts in the world
+    /// while it builds the shape (a ClothoidSpline segment chained to the previous one's end).
+    pub fn from_trajectory_placed(trajectory: &Trajectory, current: Pose, resolver: Resolver, place: Placer) -> Result<Path, Error> {
+        Path::from_shape_placed(&trajectory.shape, trajectory.closed, current, resolver, place)
+    }
+
     /// Build the path of a shape. `current` is the entity's pose when the action starts: the
     /// start of a Clothoid without a Position and of a ClothoidSpline whose first segment
     /// has no PositionStart. Positions are resolved in document order.
     pub fn from_shape(shape: &Shape, closed: bool, current: Pose, resolver: Resolver) -> Result<Path, Error> {
+        Path::from_shape_placed(shape, closed, current, resolver, &|p| p)
+    }
+
+    /// [`Path::from_shape`] with the engine's `place` (see [`Path::from_trajectory_placed`]).
+    pub fn from_shape_placed(shape: &Shape, closed: bool, current: Pose, resolver: Resolver, place: Placer) -> Result<Path, Error> {
         match shape {
             Shape::Polyline(vertices) => {
                 let mut v = Vec::with_capacity(vertices.len().min(crate::constructors::MAX_ITEMS + 1));
@@ -55,12 +70,7 @@ impl Path {
                         time_start: s.time_start,
                     });
                 }
-                // the previous segment's end placed as a world position with its heading
-                let place = |p: Pose| {
-                    let w = Position::World { x: p.x, y: p.y, z: None, h: Some(p.heading), p: None, r: None };
-                    resolver(&w).unwrap_or(p)
-                };
-                Path::clothoid_spline_placed(current, &segs, *time_end, closed, &place)
+                Path::clothoid_spline_placed(current, &segs, *time_end, closed, place)
             }
             Shape::Nurbs { order, control_points, knots } => {
                 let mut cps = Vec::with_capacity(control_points.len().min(crate::constructors::MAX_ITEMS + 1));

@@ -29,7 +29,7 @@ mod time_table;
 
 pub use constructors::{filter_vertices, PolylineVertex, SplineSegment, MAX_ITEMS, MAX_LENGTH};
 pub use error::Error;
-pub use from_shape::{gives_heading, Resolver};
+pub use from_shape::{gives_heading, Placer, Resolver};
 pub use nurbs::Nurbs;
 pub use path::Path;
 pub use polyline::Interpolation;

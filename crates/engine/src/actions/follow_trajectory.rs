@@ -121,7 +121,8 @@ pub(crate) fn build_path(sim: &Sim, slot: usize, traj: &Trajectory, current: Pos
         Some(q) => crate::trajectory_position::vertex_pose(&q, net, entities),
         None => crate::trajectory_position::vertex_pose(p, net, entities),
     };
-    Path::from_trajectory(traj, current, &resolver).map_err(|e| e.to_string())
+    let place = |p: Pose| crate::trajectory_position::placed_pose(net, p);
+    Path::from_trajectory_placed(traj, current, &resolver, &place).map_err(|e| e.to_string())
 }
 
 impl<'a> Sim<'a> {

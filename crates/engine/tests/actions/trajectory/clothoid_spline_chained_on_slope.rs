@@ -20,3 +20,14 @@ fn a_chained_segment_starts_at_the_previous_end_as_placed_on_the_road() {
         &[("Car0", 3.0, 65.003148, -1.333824, 0.051786), ("Car0", 6.0, 82.859884, 0.847687, 0.15536), ("Car0", 8.0, 94.70837, 2.744931, 0.125746)],
     );
 }
+
+/// The chained segment's start is placed where the first segment ends, in the map's own
+/// coordinates: on a map whose header offsets and turns them, resolving that end again as a
+/// scenario's world position moved it by the offset a second time (s33033_00154 on offset.xodr,
+/// found when the rule above was first written that way). Fixture
+/// `trajectory_position_chained_clothoid_on_offset_map.xosc` on straight_offset.xodr: Car0
+/// placed 32.5 m along the spline (on the chained segment), 0.5 m to its left.
+#[test]
+fn on_an_offset_map_the_chained_segment_starts_where_the_first_ends() {
+    assert_fixture_matches_esmini("trajectory_position_chained_clothoid_on_offset_map.xosc", 0.5, &[("Car0", 0.0, 6.265352, 31.489203, 1.597833)]);
+}
