@@ -1,5 +1,5 @@
 //! One run's memos. The per-step memos of `roads` (reference poses, lane borders, lane shapes,
-//! world → lane searches, esmini's junction connections) and `position_cache` (routes, trajectory paths) are keyed by the
+//! world → lane searches, esmini's junction connections, lane 0's OSI points) and `position_cache` (routes, trajectory paths) are keyed by the
 //! addresses of the network and scenario a run borrows, and live in thread-local slots so
 //! that the hot paths reach them without a handle. A run owns its own set and swaps it into
 //! the slots of the thread stepping it for the duration of a step (`RunMemos::enter`): two
@@ -8,7 +8,7 @@
 //! network reuses never finds a stale one.
 
 use crate::position_cache;
-use crate::roads::{junction_connections, lane_shape, locate, pose_memo};
+use crate::roads::{junction_connections, lane_shape, locate, pose_memo, track_pos};
 
 /// The memo entries of one run; `None` while they are held in the thread's slots for all of
 /// a run's frames ([`RunMemos::take`]).
@@ -21,6 +21,7 @@ struct Stores {
     located: locate::Store,
     positions: position_cache::Store,
     connections: junction_connections::Store,
+    lane0_points: track_pos::Store,
 }
 
 impl RunMemos {
@@ -32,6 +33,7 @@ impl RunMemos {
             located: locate::Store::new(),
             positions: position_cache::Store::new(),
             connections: junction_connections::Store::new(),
+            lane0_points: track_pos::Store::new(),
         }))
     }
 
@@ -60,6 +62,7 @@ impl Stores {
         self.located.swap_with_thread();
         self.positions.swap_with_thread();
         self.connections.swap_with_thread();
+        self.lane0_points.swap_with_thread();
     }
 }
 

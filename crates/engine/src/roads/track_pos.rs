@@ -12,7 +12,10 @@
 use crate::angles::angle_difference;
 use crate::dynamics::ESMINI_SMALL_NUMBER as SMALL_NUMBER;
 use opendrive::model::road::Road;
+use std::cell::RefCell;
+use std::collections::HashMap;
 use std::f64::consts::FRAC_PI_2;
+use std::sync::Arc;
 
 /// XYZ2TrackPos: the penalty of a segment whose sector does not hold the point.
 const OUTSIDE_PENALTY: f64 = 3.0;
@@ -33,9 +36,40 @@ fn lane0(road: &Road, s: f64) -> Vertex {
 }
 
 /// Lane 0's OSI points over the road's lane sections (`Road::lane0_osi_s`, the duplicate
-/// first point of each following section left out: OpenDrive::SetLaneOSIPoints).
-fn vertices(road: &Road) -> Vec<Vertex> {
-    road.lane0_osi_s().iter().map(|&s| lane0(road, s)).collect()
+/// first point of each following section left out: OpenDrive::SetLaneOSIPoints), computed
+/// once per road and run: a free-space condition asks for them at every corner every step.
+fn vertices(road: &Road) -> Arc<[Vertex]> {
+    let key: VertexKey = (road as *const Road as usize, road.geometries.as_ptr() as usize, road.length.to_bits());
+    if let Some(v) = VERTICES.with(|m| m.borrow().get(&key).cloned()) {
+        return v;
+    }
+    let v: Arc<[Vertex]> = road.lane0_osi_s().iter().map(|&s| lane0(road, s)).collect();
+    VERTICES.with(|m| m.borrow_mut().insert(key, v.clone()));
+    v
+}
+
+/// (road address, geometry address, length bits): a road of the network a run borrows.
+type VertexKey = (usize, usize, u64);
+type VertexMemo = HashMap<VertexKey, Arc<[Vertex]>>;
+
+thread_local! {
+    static VERTICES: RefCell<VertexMemo> = RefCell::new(HashMap::new());
+}
+
+/// One run's lane-0 OSI points (`crate::run_memos`: addresses are only stable while a
+/// network is borrowed).
+pub(crate) struct Store(VertexMemo);
+
+impl Store {
+    /// No entries.
+    pub(crate) fn new() -> Store {
+        Store(HashMap::new())
+    }
+
+    /// Exchange these entries with the thread's.
+    pub(crate) fn swap_with_thread(&mut self) {
+        VERTICES.with(|m| std::mem::swap(&mut *m.borrow_mut(), &mut self.0));
+    }
 }
 
 /// The road's width on the side of `sign` at s (Road::GetWidth with every lane type but
