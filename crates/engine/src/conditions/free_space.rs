@@ -14,7 +14,7 @@ use crate::conditions::boxes::{boxes_overlap, corners};
 use crate::entities::{Entity, EntityKind};
 use crate::roads::junction_entry::entry_connector;
 use crate::roads::lane_snap::snap;
-use crate::roads::locate::{on_chosen_segment, world_to_lane};
+use crate::roads::locate::world_to_lane;
 use crate::roads::LanePos;
 use opendrive::{LanePosition, RoadNetwork};
 
@@ -46,8 +46,7 @@ fn road_corners(net: &RoadNetwork, e: &Entity, road: usize, hint_s: f64, sidewal
 /// position, which XYZ2TrackPos starts from) a corner past its road's end into a junction goes
 /// on the connecting road XYZ2TrackPos prefers (junction_entry: directly connected from its
 /// lane, the straightest), not merely the nearest, and a corner on a road no path reaches from
-/// `from` is placed on `from`'s road (connectedOnly). Each corner's s is the one XYZ2TrackPos
-/// interpolates on the road's lane-0 segment ([`on_chosen_segment`]).
+/// `from` is placed on `from`'s road (connectedOnly).
 fn located_corners(
     net: &RoadNetwork,
     e: &Entity,
@@ -75,10 +74,6 @@ fn located_corners(
                 p = net.locate_on_road_by(f.road, x, y, f.s, &crate::roads::banking::surface_t)?;
             }
         }
-        // XYZ2TrackPos(x, y, 0) gives the corner the s it interpolates on the road's lane-0 OSI
-        // segment, not the exact projection: the two part where lane 0 runs off the reference
-        // line (a laneOffset), by tenths of a metre for a corner a few metres from lane 0
-        p = on_chosen_segment(net, p, x, y, 0.0).unwrap_or(p);
         if let Some((lane, offset)) = net.roads.get(p.road).and_then(|r| snap(r, p.section, p.s, p.t, sidewalks)) {
             (p.lane_id, p.offset) = (lane, offset);
         }

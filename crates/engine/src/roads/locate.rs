@@ -188,7 +188,7 @@ fn fresh_point(net: &RoadNetwork, x: f64, y: f64, z: f64) -> Option<LanePosition
 /// curvature that s is not the exact projection's (ref_point.xodr past its bend: 5 cm on the
 /// road, 1-2 m off it), and on a road climbing more than 2 m the z penalty can pick a segment
 /// far from it. `None` where the road has no segment (the exact projection stands).
-pub(crate) fn on_chosen_segment(net: &RoadNetwork, lp: LanePosition, x: f64, y: f64, z: f64) -> Option<LanePosition> {
+fn on_chosen_segment(net: &RoadNetwork, lp: LanePosition, x: f64, y: f64, z: f64) -> Option<LanePosition> {
     let road = net.roads.get(lp.road)?;
     let s = super::track_pos::segment_s(road, x, y, z)?;
     net.locate_at_s_by(lp.road, x, y, s, &surface_t)

@@ -5,7 +5,6 @@ mod angle;
 mod basic;
 mod clearance_across_roads;
 mod clearance_corners_across_road_end;
-mod clearance_corners_on_lane_offset;
 mod clearance_free_space_corners;
 mod clearance_offroad_headway;
 mod directed_speed;
