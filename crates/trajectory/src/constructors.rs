@@ -272,13 +272,7 @@ impl Path {
     /// starts it from the previous segment's end set by SetInertiaPos(x, y, h), whose heading is
     /// composed with the road's pitch and roll there (EvaluateHPR), so on a sloped or banked road
     /// it is not the spiral's own end heading. Only the heading of the placed pose is taken.
-    pub fn clothoid_spline_placed(
-        start: Pose,
-        segments: &[SplineSegment],
-        time_end: Option<f64>,
-        closed: bool,
-        place: &dyn Fn(Pose) -> Pose,
-    ) -> Result<Path, Error> {
+    pub fn clothoid_spline_placed(start: Pose, segments: &[SplineSegment], time_end: Option<f64>, closed: bool, place: crate::Placer) -> Result<Path, Error> {
         let exact = Path::spirals(start, segments, time_end, closed, place)?;
         if exact.length < 1.0 {
             return Ok(exact);
@@ -290,7 +284,7 @@ impl Path {
     }
 
     /// The exact clothoid segments (a Clothoid shape; the base of a ClothoidSpline).
-    fn spirals(start: Pose, segments: &[SplineSegment], time_end: Option<f64>, closed: bool, place: &dyn Fn(Pose) -> Pose) -> Result<Path, Error> {
+    fn spirals(start: Pose, segments: &[SplineSegment], time_end: Option<f64>, closed: bool, place: crate::Placer) -> Result<Path, Error> {
         const SHAPE: &str = "ClothoidSpline";
         check_count(SHAPE, "segments", segments.len(), 1)?;
         check_pose(SHAPE, "the start pose", &start)?;

@@ -37,7 +37,8 @@ fn lane0(road: &Road, s: f64) -> Vertex {
 
 /// Lane 0's OSI points over the road's lane sections (`Road::lane0_osi_s`, the duplicate
 /// first point of each following section left out: OpenDrive::SetLaneOSIPoints), computed
-/// once per road and run: a free-space condition asks for them at every corner every step.
+/// once per road and run: a fresh placement (`locate::fresh_point`) weighs every road near the
+/// point, and a jump's placement (`locate::on_chosen_segment`) asks again for the road it found.
 fn vertices(road: &Road) -> Arc<[Vertex]> {
     let key: VertexKey = (road as *const Road as usize, road.geometries.as_ptr() as usize, road.length.to_bits());
     if let Some(v) = VERTICES.with(|m| m.borrow().get(&key).cloned()) {
