@@ -95,14 +95,16 @@ fn delta(net: &RoadNetwork, a: &Entity, b: &Entity, max: f64, free_space: bool) 
     } else {
         None
     };
+    // esmini's Position::Delta: the first position's lane carried along the road path onto the
+    // second's road
+    let carried = |(ra, sa, ia): (usize, f64, i32), (rb, sb): (usize, f64)| crate::roads::road_path::lane_carried(net, ra, sa, ia, rb, sb).unwrap_or(ia);
     let (ds, la_id, lb_id) = match gap {
-        Some(FreeSpaceGap { front_right_lanes: None, .. }) => return Some((0.0, 0, false)),
-        Some(FreeSpaceGap { ds, front_right_lanes: Some((ia, ib)), .. }) => (ds, ia, ib),
+        Some(FreeSpaceGap { front_right: None, .. }) => return Some((0.0, 0, false)),
+        // the front right corners' Delta: the corners may lie on two roads
+        Some(FreeSpaceGap { ds, front_right: Some((ca, cb)), .. }) => (ds, carried((ca.road, ca.s, ca.lane_id), (cb.road, cb.s)), cb.lane_id),
         None => {
             let ds = centre_ds(net, a, b, max, free_space)?;
-            // esmini's Position::Delta: `a`'s lane carried along the lane links onto `b`'s road.
-            let la_id = if la.road == lb.road { la.lane_id } else { lane_on_linked_road(net, la, lb).unwrap_or(la.lane_id) };
-            (ds, la_id, lb.lane_id)
+            (ds, carried((la.road, la.s, la.lane_id), (lb.road, lb.s)), lb.lane_id)
         }
     };
     if ds.abs() > max + 1e-9 {
@@ -110,7 +112,9 @@ fn delta(net: &RoadNetwork, a: &Entity, b: &Entity, max: f64, free_space: bool) 
     }
     // across the reference line the centre lane is not counted
     let mut dlane = lb_id as i64 - la_id as i64;
-    let opposite = (la_id as i64).signum() != (lb_id as i64).signum();
+    // esmini's SIGN: -1 below zero, +1 otherwise (a lane that does not continue is 0)
+    let sign = |id: i32| if id < 0 { -1 } else { 1 };
+    let opposite = sign(la_id) != sign(lb_id);
     if opposite {
         dlane = (dlane.abs() - 1) * dlane.signum();
     }
@@ -138,37 +142,4 @@ fn centre_ds(net: &RoadNetwork, a: &Entity, b: &Entity, max: f64, free_space: bo
         ds = if ds.abs() <= ext { 0.0 } else { ds - ext * ds.signum() };
     }
     Some(ds)
-}
-
-/// Steps a lane-link walk may take from one road to the next through its lane sections.
-const MAX_LINK_STEPS: usize = 64;
-
-/// The lane of `la` continued along the lane links onto the road of `lb` (a road directly
-/// linked to `la`'s), at `lb`'s s; `None` when the roads are not directly linked or a lane
-/// ends on the way.
-fn lane_on_linked_road(net: &RoadNetwork, la: crate::roads::LanePos, lb: crate::roads::LanePos) -> Option<i32> {
-    let ra = net.roads.get(la.road)?;
-    let rb = net.roads.get(lb.road)?;
-    for end in [opendrive::ContactPoint::End, opendrive::ContactPoint::Start] {
-        let Some(entry) = net.roads_at(la.road, end).into_iter().find(|e| e.road == lb.road) else { continue };
-        let mut lane = opendrive::LaneRef { road: la.road, section: ra.section_index_at(la.s), lane: la.lane_id };
-        let mut walk = end;
-        let target_section = rb.section_index_at(lb.s);
-        for _ in 0..MAX_LINK_STEPS {
-            if lane.road == lb.road && lane.section == target_section {
-                return Some(lane.lane);
-            }
-            let next = *net.lanes_across(lane, walk).first()?;
-            if next.road != lane.road {
-                // Entered `b`'s road at its `entry` end: walk on into it from there.
-                walk = match entry.contact {
-                    opendrive::ContactPoint::Start => opendrive::ContactPoint::End,
-                    opendrive::ContactPoint::End => opendrive::ContactPoint::Start,
-                };
-            }
-            lane = next;
-        }
-        return None;
-    }
-    None
 }

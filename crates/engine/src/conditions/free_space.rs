@@ -25,9 +25,10 @@ pub(crate) struct FreeSpaceGap {
     pub ds: f64,
     /// Gap across t, as t grows.
     pub dt: f64,
-    /// The lanes of the front right corners (first entity, second); `None` when the boxes
-    /// overlap (esmini then reports a lane difference of 0).
-    pub front_right_lanes: Option<(i32, i32)>,
+    /// The front right corners located on the road (first entity, second), the last pair
+    /// esmini compares, whose lane difference it reports; `None` when the boxes overlap (esmini
+    /// then reports a lane difference of 0).
+    pub front_right: Option<(LanePosition, LanePosition)>,
 }
 
 /// The corners in esmini's order (first quadrant first, counter-clockwise: front left, rear
@@ -87,7 +88,7 @@ fn located_corners(
 /// where a corner lies off that road.
 pub(crate) fn free_space_road(net: &RoadNetwork, a: &Entity, b: &Entity, road: usize, dir: f64) -> Option<FreeSpaceGap> {
     if boxes_overlap(&corners(a), &corners(b)) {
-        return Some(FreeSpaceGap { ds: 0.0, dt: 0.0, front_right_lanes: None });
+        return Some(FreeSpaceGap { ds: 0.0, dt: 0.0, front_right: None });
     }
     let hint = a.lane.map_or(0.0, |l| l.s);
     let sidewalks = a.kind == EntityKind::Pedestrian;
@@ -123,7 +124,7 @@ fn gap_of(ca: &[LanePosition; 4], cb: &[LanePosition; 4], delta: impl Fn(&LanePo
     if dt.iter().any(mixed) {
         min_dt = 0.0;
     }
-    Some(FreeSpaceGap { ds: min_ds, dt: min_dt, front_right_lanes: Some((ca[3].lane_id, cb[3].lane_id)) })
+    Some(FreeSpaceGap { ds: min_ds, dt: min_dt, front_right: Some((ca[3], cb[3])) })
 }
 
 /// [`free_space_road`] where the corners may lie on other roads than `road` (`a`'s), as
@@ -136,7 +137,7 @@ fn gap_of(ca: &[LanePosition; 4], cb: &[LanePosition; 4], delta: impl Fn(&LanePo
 /// corner is on no road or two corners are not joined by a path (esmini: not measured).
 pub(crate) fn free_space_roads(net: &RoadNetwork, a: &Entity, b: &Entity, road: usize) -> Option<FreeSpaceGap> {
     if boxes_overlap(&corners(a), &corners(b)) {
-        return Some(FreeSpaceGap { ds: 0.0, dt: 0.0, front_right_lanes: None });
+        return Some(FreeSpaceGap { ds: 0.0, dt: 0.0, front_right: None });
     }
     let hint = a.lane.map_or(0.0, |l| l.s);
     let sidewalks = a.kind == EntityKind::Pedestrian;

@@ -25,6 +25,9 @@ pub(crate) struct PathEnds {
     /// position (RoadPath::Calculate's distance less the part on the target road).
     pub entry: ContactPoint,
     pub to_entry: f64,
+    /// The first position's lane carried along the path into the target road at its `entry`
+    /// end (Road::GetConnectingLaneId across the last link); 0 where it does not continue.
+    pub entry_lane: i32,
 }
 
 impl PathEnds {
@@ -85,12 +88,30 @@ pub(crate) fn path_ends(net: &RoadNetwork, a: usize, sa: f64, lane_a: i32, b: us
         }
         settled.push((road, entry));
         if road == b {
-            return Some(PathEnds { first_exit: first, last_exit: last, lanes_flip: flip, entry, to_entry: d });
+            return Some(PathEnds { first_exit: first, last_exit: last, lanes_flip: flip, entry, to_entry: d, entry_lane: lane });
         }
         let Some(r) = net.roads.get(road) else { continue };
         push(&mut frontier, road, section_at_end(r, entry), lane, entry.opposite(), d + r.length, Some(first), flip);
     }
     None
+}
+
+/// Position::Delta's lane of (road `a`, s `sa`, lane `lane_a`) on road `b` at s `sb`: the same
+/// lane on one road; else the lane the path to `b` enters it by, carried across `b`'s lane
+/// sections to `sb` (Road::GetConnectedLaneIdAtS), 0 where the lane does not continue; `None`
+/// where no path joins the roads.
+pub(crate) fn lane_carried(net: &RoadNetwork, a: usize, sa: f64, lane_a: i32, b: usize, sb: f64) -> Option<i32> {
+    if a == b {
+        return Some(lane_a);
+    }
+    let path = path_ends(net, a, sa, lane_a, b)?;
+    let rb = net.roads.get(b)?;
+    let target = rb.section_index_at(sb);
+    let mut lane = LaneRef { road: b, section: section_at_end(rb, path.entry), lane: path.entry_lane };
+    while lane.lane != 0 && lane.section != target {
+        lane = net.lanes_across(lane, path.entry.opposite()).first().copied().filter(|l| l.road == b).unwrap_or(LaneRef { lane: 0, ..lane });
+    }
+    Some(lane.lane)
 }
 
 /// The lane `lane` continues into at the `end` of its road, section by section (the first

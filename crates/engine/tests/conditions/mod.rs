@@ -6,6 +6,7 @@ mod basic;
 mod clearance_across_roads;
 mod clearance_corners_across_road_end;
 mod clearance_free_space_corners;
+mod clearance_lane_across_link;
 mod clearance_offroad_headway;
 mod directed_speed;
 mod distance_unlinked_roads;
