@@ -139,6 +139,7 @@ fn move_along(
     // Where the entity is when it leaves a road: esmini measures the turn of each junction arm
     // from the road heading there (the start of the move, then the end of the road it came in by).
     let mut s_here = s0;
+    let mut entered_section = section_before;
     for hop in 0..MAX_HOPS {
         let Some(road) = net.roads.get(pos.road) else { return MoveStatus::EndOfRoad };
         if s >= 0.0 && s <= road.length {
@@ -152,7 +153,21 @@ fn move_along(
         }
         let (end, overshoot) = if s > road.length { (ContactPoint::End, s - road.length) } else { (ContactPoint::Start, -s) };
         let section = opendrive::section_at_end(road, end);
-        let here = LaneRef { road: pos.road, section, lane: pos.lane_id };
+        // esmini's MoveAlongS sets the lane section to the end's without updating the lane
+        // index (Position::lane_idx_, the place in the section's lanes sorted by id, most
+        // positive first): MoveToConnectingRoad continues the lane at that index of the end
+        // section, the index the lane had in the section the position was last set in (the
+        // start of the move, or the contact end of a road entered on the way); no lane there:
+        // no connection, the move stops at the road's end.
+        let from_section = if hop == 0 { section_before } else { entered_section };
+        let lane_id = match stale_index_lane(road, from_section, section, pos.lane_id) {
+            Some(l) => l,
+            None => {
+                pos.s = s.clamp(0.0, road.length);
+                return MoveStatus::EndOfRoad;
+            }
+        };
+        let here = LaneRef { road: pos.road, section, lane: lane_id };
         // esmini measures from the heading of the lane's driving direction
         // (Position::GetHRoadInDrivingDirection), not from the way the entity faces or moves: a
         // car reversing into a junction picks the arm a car driving its lane would.
@@ -185,6 +200,7 @@ fn move_along(
             ContactPoint::Start => 0.0,
             ContactPoint::End => next_road.length,
         };
+        entered_section = opendrive::section_at_end(next_road, contact);
         s = match contact {
             ContactPoint::Start => overshoot,
             ContactPoint::End => next_road.length - overshoot,
@@ -201,6 +217,19 @@ fn move_along(
     // SetLanePos there, `s_ + 0`), status OK.
     pos.s = s_here;
     MoveStatus::Ok
+}
+
+/// The lane at the index `lane_id` has among `from`'s lanes (sorted by id, most positive
+/// first, as esmini's LaneSection keeps them) in section `to` of the same road: esmini's stale
+/// `lane_idx_` after MoveAlongS switched the lane section to the road end's. `None`: the index
+/// is past `to`'s lanes (GetLaneByIdx returns no lane).
+fn stale_index_lane(road: &opendrive::Road, from: usize, to: usize, lane_id: i32) -> Option<i32> {
+    if from == to {
+        return Some(lane_id);
+    }
+    let (Some(a), Some(b)) = (road.lane_sections.get(from), road.lane_sections.get(to)) else { return Some(lane_id) };
+    let Some(idx) = a.lanes_left_to_right().position(|l| l.id == lane_id) else { return Some(lane_id) };
+    b.lanes_left_to_right().nth(idx).map(|l| l.id)
 }
 
 /// esmini's Position::DistanceToDS: a distance along a lane at lateral t is
@@ -399,13 +428,17 @@ fn unlinked_lane_continuation(
     sidewalks: bool,
 ) -> Option<(LaneRef, ContactPoint)> {
     let link = road.link_at(end).filter(|l| l.element_type == ElementType::Road)?;
-    let lane = road.lane_sections.get(here.section)?.left.iter().chain(&road.lane_sections.get(here.section)?.right).find(|l| l.id == here.lane)?;
-    let linked = match end {
-        ContactPoint::Start => &lane.predecessors,
-        ContactPoint::End => &lane.successors,
-    };
-    if here.lane == 0 || !linked.is_empty() {
-        return None;
+    // the centre lane (which esmini's stale lane index can name) has no links
+    if here.lane != 0 {
+        let sec = road.lane_sections.get(here.section)?;
+        let lane = sec.left.iter().chain(&sec.right).find(|l| l.id == here.lane)?;
+        let linked = match end {
+            ContactPoint::Start => &lane.predecessors,
+            ContactPoint::End => &lane.successors,
+        };
+        if !linked.is_empty() {
+            return None;
+        }
     }
     let next = net.road_index(&link.element_id)?;
     let next_road = net.roads.get(next)?;

@@ -6,6 +6,7 @@ mod end_of_road_speed;
 mod ending_lane;
 mod junction_connection_entering_at_end;
 mod junction_random;
+mod lane_index_past_section;
 mod lane_section_into_a_stop_lane;
 mod raised_lanes;
 mod reversing_through_junctions;
