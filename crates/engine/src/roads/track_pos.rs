@@ -36,22 +36,62 @@ fn lane0(road: &Road, s: f64) -> Vertex {
 }
 
 /// Lane 0's OSI points over the road's lane sections (`Road::lane0_osi_s`, the duplicate
-/// first point of each following section left out: OpenDrive::SetLaneOSIPoints), computed
-/// once per road and run: a fresh placement (`locate::fresh_point`) weighs every road near the
-/// point, and a jump's placement (`locate::on_chosen_segment`) asks again for the road it found.
-fn vertices(road: &Road) -> Arc<[Vertex]> {
+/// first point of each following section left out: OpenDrive::SetLaneOSIPoints) and what the
+/// segment scan derives from each, computed once per road and run: a fresh placement
+/// (`locate::fresh_point`) weighs every road near the point, a point off every road weighs the
+/// current road and those near it, and a jump's placement (`locate::on_chosen_segment`) asks
+/// again for the road it found.
+fn scan_of(road: &Road) -> Arc<Scan> {
     let key: VertexKey = (road as *const Road as usize, road.geometries.as_ptr() as usize, road.length.to_bits());
     if let Some(v) = VERTICES.with(|m| m.borrow().get(&key).cloned()) {
         return v;
     }
-    let v: Arc<[Vertex]> = road.lane0_osi_s().iter().map(|&s| lane0(road, s)).collect();
+    let v = Arc::new(Scan::new(road));
     VERTICES.with(|m| m.borrow_mut().insert(key, v.clone()));
     v
 }
 
+/// The segment scan's view of lane 0's OSI points, per vertex: where the scan puts it (the
+/// road's own end pose for the last), its elevation, its normal (the bisector of the segments
+/// meeting there; the road's own at the ends), the cosine and sine of its heading and the
+/// road's width right and left at its s. The same arithmetic as the scan did per segment.
+struct Scan {
+    pts: Vec<Vertex>,
+    pos: Vec<(f64, f64)>,
+    z: Vec<f64>,
+    norm: Vec<(f64, f64)>,
+    dir: Vec<(f64, f64)>,
+    width: Vec<[f64; 2]>,
+}
+
+impl Scan {
+    fn new(road: &Road) -> Scan {
+        let pts: Vec<Vertex> = road.lane0_osi_s().iter().map(|&s| lane0(road, s)).collect();
+        let n = pts.len();
+        let end = lane0(road, road.length);
+        let pos: Vec<(f64, f64)> = (0..n).map(|i| if i + 1 == n { (end.x, end.y) } else { (pts[i].x, pts[i].y) }).collect();
+        let z = (0..n).map(|i| if i + 1 == n { end.z } else { pts[i].z }).collect();
+        let heading = |i: usize| if i + 1 < n { (pos[i + 1].1 - pos[i].1).atan2(pos[i + 1].0 - pos[i].0) } else { end.h };
+        let norm = (0..n)
+            .map(|i| {
+                if i == 0 {
+                    normal(pts[0].h)
+                } else if i + 1 == n {
+                    normal(end.h)
+                } else {
+                    normal(heading(i - 1) + 0.5 * angle_difference(heading(i), heading(i - 1)))
+                }
+            })
+            .collect();
+        let dir = pts.iter().map(|p| (p.h.cos(), p.h.sin())).collect();
+        let width = pts.iter().map(|p| [width(road, p.s, false), width(road, p.s, true)]).collect();
+        Scan { pts, pos, z, norm, dir, width }
+    }
+}
+
 /// (road address, geometry address, length bits): a road of the network a run borrows.
 type VertexKey = (usize, usize, u64);
-type VertexMemo = HashMap<VertexKey, Arc<[Vertex]>>;
+type VertexMemo = HashMap<VertexKey, Arc<Scan>>;
 
 thread_local! {
     static VERTICES: RefCell<VertexMemo> = RefCell::new(HashMap::new());
@@ -132,36 +172,24 @@ pub(crate) fn segment_s(road: &Road, x: f64, y: f64, z_input: f64) -> Option<f64
 /// [`segment_s`] and the weighed distance of the segment chosen, by which XYZ2TrackPos
 /// compares roads (the smallest wins, the first road in the file at a tie).
 pub(crate) fn segment_choice(road: &Road, x: f64, y: f64, z_input: f64) -> Option<(f64, f64)> {
-    let pts = vertices(road);
+    let scan = scan_of(road);
+    let pts = &scan.pts;
     let n = pts.len();
     if n < 2 {
         return None;
     }
-    // The vertices of the scan: the road's own start and end poses at the ends.
-    let end = lane0(road, road.length);
-    let pos = |i: usize| if i + 1 == n { (end.x, end.y) } else { (pts[i].x, pts[i].y) };
-    let z = |i: usize| if i + 1 == n { end.z } else { pts[i].z };
-    let heading = |i: usize| if i + 1 < n { (pos(i + 1).1 - pos(i).1).atan2(pos(i + 1).0 - pos(i).0) } else { end.h };
-    let norm = |i: usize| {
-        if i == 0 {
-            normal(pts[0].h)
-        } else if i + 1 == n {
-            normal(end.h)
-        } else {
-            normal(heading(i - 1) + 0.5 * angle_difference(heading(i), heading(i - 1)))
-        }
-    };
     let mut best = f64::INFINITY;
     let mut chosen: Option<usize> = None;
     // The segments, and the last vertex alone (the scan's extra round).
     for (a, b) in (0..n - 1).map(|i| (i, i + 1)).chain(std::iter::once((n - 1, n - 1))) {
-        let (pa, pb) = (pos(a), pos(b));
-        let cp = pts[a].h.cos() * (y - pa.1) - pts[a].h.sin() * (x - pa.0);
-        let w = width(road, pts[a].s, cp > 0.0);
-        let (inside, s_norm) = sector((x, y), pa, norm(a), pb, norm(b));
+        let (pa, pb) = (scan.pos[a], scan.pos[b]);
+        let (cos_h, sin_h) = scan.dir[a];
+        let cp = cos_h * (y - pa.1) - sin_h * (x - pa.0);
+        let w = scan.width[a][usize::from(cp > 0.0)];
+        let (inside, s_norm) = sector((x, y), pa, scan.norm[a], pb, scan.norm[b]);
         let inside = inside && s_norm >= 0.0;
         let mut dist = (line_distance(x, y, pa, pb) - w).max(0.0);
-        let zs = if inside { (1.0 - s_norm) * z(a) + s_norm * z(b) } else { z(b) };
+        let zs = if inside { (1.0 - s_norm) * scan.z[a] + s_norm * scan.z[b] } else { scan.z[b] };
         if !inside {
             dist = dist.hypot(s_norm);
         }
