@@ -24,6 +24,7 @@ mod natural_driver_junction_draw;
 mod natural_driver_lane_change_while_deleted;
 mod natural_driver_lanes_beside;
 mod natural_driver_leader_across_junction;
+mod natural_driver_look_ahead_along_roads;
 mod natural_driver_standing_start;
 mod offroad_follower;
 mod teleport_under_controllers;

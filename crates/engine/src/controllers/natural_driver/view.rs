@@ -34,6 +34,11 @@ pub(crate) type Vois = [Option<(usize, f64)>; 6];
 /// roads the shortest chain within `max`, searched forward and, when `both`, backward. `None`
 /// when no path is found.
 pub(crate) fn road_delta(net: &RoadNetwork, a: &LanePos, b: &LanePos, both: bool, max: f64) -> Option<(f64, i32)> {
+    // Position::Delta: found only when RoadPath::Calculate succeeds and |dist| < maxDist.
+    road_delta_any(net, a, b, both, max).filter(|(d, _)| d.abs() < max)
+}
+
+fn road_delta_any(net: &RoadNetwork, a: &LanePos, b: &LanePos, both: bool, max: f64) -> Option<(f64, i32)> {
     // esmini's SIGN counts 0 as positive.
     let side = |id: i32| if id < 0 { -1 } else { 1 };
     let lane_diff = |from: i32, to: i32| {
