@@ -89,6 +89,9 @@ pub(crate) struct Entity {
     /// Teleported during this step: the jump is not travel (esmini's `DirtyBit::TELEPORT`
     /// skips the odometer and takes the velocity from speed and heading).
     pub teleported: bool,
+    /// The end-of-road status an action's placement by a world point left this step
+    /// (XYZ2TrackPos sets POS_STATUS_END_OF_ROAD anew), for the ACC's stop at a road's end.
+    pub placed_end_status: Option<bool>,
     /// (road, lane, section start, section end) where the entity's lane is known to run
     /// parallel to the reference line: no heading drift to compute while it stays there.
     pub parallel_lane: Option<(usize, i32, f64, f64)>,
@@ -205,6 +208,7 @@ impl Entity {
             active: true,
             appeared: false,
             teleported: false,
+            placed_end_status: None,
             parallel_lane: None,
             route: None,
             placed_attitude: None,

@@ -227,6 +227,7 @@ impl<'a> Sim<'a> {
         let net = self.net;
         let en = &mut self.entities[e];
         en.set_world(net, p.x, p.y, None, heading);
+        en.placed_end_status = net.and_then(|n| en.end_status_from_world(n));
         if let Some(v) = start_speed {
             en.speed = speed_sign * v;
         }
@@ -344,6 +345,7 @@ impl<'a> Sim<'a> {
         let net = self.net;
         let en = &mut self.entities[e];
         en.set_world(net, x, y, None, heading);
+        en.placed_end_status = net.and_then(|n| en.end_status_from_world(n));
         en.speed = new_speed;
         en.moved_by_action = true;
         // ScenarioEngine::step, after every move: an entity whose position lies past the end of

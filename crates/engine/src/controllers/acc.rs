@@ -70,6 +70,11 @@ impl<'a> Sim<'a> {
     /// sees the 0). The default controller's entities get this in `default_controller`; the ACC
     /// moves its own in override mode.
     pub(crate) fn acc_stop_at_road_end(&mut self, e: usize, a: &mut AccRt) {
+        // An action that placed the entity by a world point this step (a trajectory) left the
+        // status its XYZ2TrackPos found, which the engine's check reads before the ACC moves.
+        if let Some(st) = self.entities.get_mut(e).and_then(|en| en.placed_end_status.take()) {
+            a.at_end = st;
+        }
         if a.override_mode {
             // ...and notes the end of the road (the EndOfRoadCondition's time stamp) from the
             // status of that last move: one step after the arrival, where the default
