@@ -25,6 +25,9 @@ pub(crate) struct Placement {
     /// the world point (a RoutePosition on a lane the road does not have); moving goes on from
     /// the lane position.
     pub world_left: bool,
+    /// With `world_left`: the heading relative to the road esmini's position holds (a failed
+    /// RoutePosition: SetHeadingRelative after the lane was not found), which moving keeps.
+    pub h_rel: Option<f64>,
 }
 
 /// Why a position could not be resolved.
@@ -55,15 +58,15 @@ pub(crate) fn resolve_with_route(
                 Some(o) => {
                     let (x, y, _) = o.apply(*x, *y, 0.0);
                     let h = (h + o.hdg).rem_euclid(std::f64::consts::TAU);
-                    Ok(Placement { x, y, z: z.map(|z| z + o.z), h, lane: None, world_left: false })
+                    Ok(Placement { x, y, z: z.map(|z| z + o.z), h, lane: None, world_left: false, h_rel: None })
                 }
-                None => Ok(Placement { x: *x, y: *y, z: *z, h, lane: None, world_left: false }),
+                None => Ok(Placement { x: *x, y: *y, z: *z, h, lane: None, world_left: false, h_rel: None }),
             }
         }
         Position::RelativeWorld { entity, dx, dy, dz, orientation } => {
             let e = find(entity)?;
             let h = orient(e.h, orientation.as_ref());
-            Ok(Placement { x: e.x + dx, y: e.y + dy, z: dz.map(|d| e.z + d), h, lane: None, world_left: false })
+            Ok(Placement { x: e.x + dx, y: e.y + dy, z: dz.map(|d| e.z + d), h, lane: None, world_left: false, h_rel: None })
         }
         Position::RelativeObject { entity, dx, dy, dz, orientation } => {
             let e = find(entity)?;
@@ -73,7 +76,7 @@ pub(crate) fn resolve_with_route(
             // sloped road the offsets shrink horizontally.
             let (pitch, roll) = net.map_or((0.0, 0.0), |n| crate::attitude::surface_pitch_roll(n, e));
             let [vx, vy, vz] = rotate_hpr(e.h, pitch, roll, [*dx, *dy, dz.unwrap_or(0.0)]);
-            Ok(Placement { x: e.x + vx, y: e.y + vy, z: dz.map(|_| e.z + vz), h, lane: None, world_left: false })
+            Ok(Placement { x: e.x + vx, y: e.y + vy, z: dz.map(|_| e.z + vz), h, lane: None, world_left: false, h_rel: None })
         }
         Position::Lane { road_id, lane_id, s, offset, orientation } => {
             let net = net.ok_or("a LanePosition needs a road network")?;
@@ -173,7 +176,7 @@ pub(crate) fn place(
     // Facing the other way than the lane's direction makes the entity drive against s.
     let rel = wrap(h - pose.road_heading);
     lp.dir = if rel.abs() <= std::f64::consts::FRAC_PI_2 + 1e-9 { 1.0 } else { -1.0 };
-    Ok(Placement { x: pose.x, y: pose.y, z: Some(pose.z), h, lane: Some(lp), world_left: false })
+    Ok(Placement { x: pose.x, y: pose.y, z: Some(pose.z), h, lane: Some(lp), world_left: false, h_rel: None })
 }
 
 /// Face `p` as esmini faces a road position (OSCPositionRoad, a RELATIVE_ROAD position): an

@@ -90,7 +90,8 @@ pub(crate) fn relative_lane(
         Along::Road(d) => (d, false),
         // MoveDirectionMode::LANE_DIRECTION: −sign(lane id) in right-hand traffic, +sign in left.
         Along::Lane(d) => {
-            let sign = f64::from(reference.lane_id.signum());
+            // esmini's SIGN: lane 0 counts as positive.
+            let sign = if reference.lane_id < 0 { -1.0 } else { 1.0 };
             (d * if ref_road.rule == TrafficRule::LeftHand { sign } else { -sign }, true)
         }
     };

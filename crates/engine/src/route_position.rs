@@ -97,7 +97,7 @@ pub(crate) fn esmini_deviation(pos: &openscenario::Position, net: Option<&RoadNe
 
 /// The world origin, where esmini leaves a position it could not set.
 fn origin(h: f64) -> Placement {
-    Placement { x: 0.0, y: 0.0, z: Some(0.0), h, lane: None, world_left: false }
+    Placement { x: 0.0, y: 0.0, z: Some(0.0), h, lane: None, world_left: false, h_rel: None }
 }
 
 fn resolve_route(
@@ -170,6 +170,7 @@ fn resolve_route(
             // those road coordinates: lane 0, the RoutePosition's offset.
             let mut p = origin(turn);
             p.world_left = true;
+            p.h_rel = Some(turn);
             p.lane = (lane.is_some() && road < net.roads.len()).then_some(crate::roads::lane_position::LanePos {
                 road,
                 lane_id: 0,

@@ -36,7 +36,7 @@ pub(crate) fn trajectory_placement(
         Some(Orientation { h: Some(h), .. }) => p.heading + h,
         _ => p.heading,
     };
-    Ok(Placement { x, y, z: None, h, lane: None, world_left: false })
+    Ok(Placement { x, y, z: None, h, lane: None, world_left: false, h_rel: None })
 }
 
 /// The world pose of a position resolved for a trajectory's vertex or control point. A world

@@ -82,6 +82,10 @@ impl<'a> Sim<'a> {
                     }
                 }
                 if placement.world_left {
+                    if let (Some(rel), Some(pose)) = (placement.h_rel, lp.pose(net)) {
+                        en.yaw_offset =
+                            wrap(rel - (lp.facing_heading(&pose) - pose.road_heading) - crate::positions::lane_drift(net, lp.road, lp.lane_id, lp.s));
+                    }
                     (en.x, en.y, en.z) = (placement.x, placement.y, placement.z.unwrap_or(0.0));
                 }
             }

@@ -16,6 +16,7 @@ mod route_position_against_lane;
 mod route_position_dropped_waypoints;
 mod route_position_from_current_entity;
 mod route_position_lane_free_last_hop;
+mod route_position_missing_lane_heading;
 mod route_position_missing_lane_waypoint;
 mod route_position_on_missing_lane;
 mod route_position_past_route_end;
