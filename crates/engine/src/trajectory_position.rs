@@ -71,9 +71,27 @@ pub(crate) fn placed_pose(net: Option<&RoadNetwork>, p: Pose) -> Pose {
 /// off the roads.
 fn held_heading(net: &RoadNetwork, x: f64, y: f64, h: Option<f64>) -> Option<f64> {
     let lp = crate::roads::locate::world_to_lane(net, x, y, None)?;
-    let h = h.unwrap_or_else(|| lp.heading + crate::positions::lane_drift(net, lp.road, lp.lane_id, lp.s));
     let past_end = crate::roads::past_end::past_road_end(net, lp.road, lp.s, x, y);
+    // Without a heading of its own the position keeps a fresh one's absolute 0 when it lies
+    // beyond the road's end (XYZ2TrackPos: closestPointInside false, EvaluateHPR with h_ = 0),
+    // else it faces the road's reference direction.
+    let h = match h {
+        Some(h) => h,
+        None if strictly_past_end(net, lp.road, lp.s, x, y) => {
+            crate::entities::esmini_euler_heading(lp.heading, crate::angles::angle_difference(0.0, lp.heading))
+        }
+        None => lp.heading + crate::positions::lane_drift(net, lp.road, lp.lane_id, lp.s),
+    };
     let road = net.roads.get(lp.road).filter(|_| !past_end);
     let tilted = road.and_then(|r| crate::attitude::on_road(r, lp.s, lp.t, crate::angles::wrap(h - lp.heading), 0.0));
     Some(tilted.map_or(h, |o| o[0]))
+}
+
+/// (x, y) projects beyond the start or the end of `road` by any amount (XYZ2TrackPos: the closest
+/// lane-0 OSI point is the first or last one and the point lies outward of its normal, by the
+/// cross product's sign, no tolerance: closestPointInside false).
+fn strictly_past_end(net: &RoadNetwork, road: usize, s: f64, x: f64, y: f64) -> bool {
+    let Some(r) = net.roads.get(road) else { return false };
+    let (s, _, along) = opendrive::projection::project_onto_road(r, x, y, s);
+    (s >= r.length && along > 0.0) || (s <= 0.0 && along < 0.0)
 }

@@ -60,7 +60,8 @@ impl NurbsPath {
         let u_max = b;
         let du = u_max / n as f64;
         let probe = du.abs().min(TANGENT_DU);
-        let at = |u: f64| curve.point(u.clamp(a, (b - SMALL).max(a)));
+        // NurbsShape::EvaluateInternal clamps t to the last knot less SMALL_NUMBER (1e-6).
+        let at = |u: f64| curve.point(u.clamp(a, (b - ESMINI_SMALL).max(a)));
         let mut samples: Vec<(f64, f64, f64)> = Vec::with_capacity(n + 1);
         let mut probe_u = Vec::with_capacity(n + 1);
         let mut s = 0.0;
@@ -118,9 +119,9 @@ impl NurbsPath {
         let ds = s1 - s0;
         let a = if ds > 0.0 { ((s - s0) / ds).clamp(0.0, 1.0) } else { 0.0 };
         let (lo, hi) = self.curve.domain();
-        let p = self.curve.point((u0 + a * (u1 - u0)).clamp(lo, (hi - SMALL).max(lo)));
+        let p = self.curve.point((u0 + a * (u1 - u0)).clamp(lo, (hi - ESMINI_SMALL).max(lo)));
         let turn = angle::diff(h1, h0);
-        let u = (u0 + a * (u1 - u0)).clamp(lo, (hi - SMALL).max(lo));
+        let u = (u0 + a * (u1 - u0)).clamp(lo, (hi - ESMINI_SMALL).max(lo));
         let heading = match &self.cp_headings {
             Some(hs) => self.blended_heading(hs, u),
             None => angle::normalize(h0 + a * turn),

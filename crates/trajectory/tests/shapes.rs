@@ -213,8 +213,9 @@ fn nurbs_with_clamped_knots_interpolates_the_end_control_points() {
     let a = path.pose_at(0.0);
     let b = path.pose_at(path.length());
     assert!(close(a.x, 0.0, 1e-12) && close(a.y, 0.0, 1e-12));
-    // the end is evaluated just inside the last knot, as esmini does
-    assert!(close(b.x, 40.0, 1e-6) && close(b.y, 10.0, 1e-6));
+    // the end is evaluated just inside the last knot (less esmini's SMALL_NUMBER, 1e-6), as
+    // esmini does: tens of µm short of the last control point
+    assert!(close(b.x, 40.0, 1e-4) && close(b.y, 10.0, 1e-4), "{b:?}");
     // end tangents point along the first and last legs of the control polygon; the start takes
     // the heading of the second sample (about 1 m on), as esmini does, so only roughly
     assert!(angle_close(a.heading, 20f64.atan2(10.0), 0.1));
@@ -230,7 +231,8 @@ fn nurbs_times_follow_control_point_peaks() {
     // is sample 20 and the sampled polyline is the polygon itself.
     let cps = [(p(0.0, 0.0), None, Some(0.0)), (p(10.0, 0.0), None, Some(1.0)), (p(10.0, 29.5), None, Some(4.0))];
     let path = Path::nurbs(2, &cps, &[0.0, 0.0, 1.0, 2.0, 2.0], false).unwrap();
-    assert!(close(path.length(), 39.5, 1e-6), "{}", path.length());
+    // (up to the last knot less esmini's SMALL_NUMBER, 1e-6: 29.5 µm short)
+    assert!(close(path.length(), 39.5, 1e-4), "{}", path.length());
     assert!(close(path.s_at_time(0.5).unwrap(), 5.0, 1e-6));
     // t = 2.5 is halfway from 1 s to 4 s: u = 1.5, s = 10 + 29.5 / 2
     assert!(close(path.s_at_time(2.5).unwrap(), 24.75, 1e-6));
