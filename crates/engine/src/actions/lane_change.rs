@@ -293,6 +293,15 @@ impl<'a> Sim<'a> {
                 lp.lane_id = id;
             }
         }
+        // esmini turns the entity (SetHeadingRelativeRoadDirection: EvaluateHPR adds GetHOffset)
+        // while its position is still on the internal position's lane, the target lane, and
+        // XYZ2TrackPos then keeps that heading: the drift is the target lane's.
+        if l.internal.road == attached.road && l.internal.lane_id != attached.lane_id {
+            if let Some(p) = attached.pose(net) {
+                let drift = crate::positions::lane_drift(net, l.internal.road, l.internal.lane_id, l.internal.s);
+                en.h = crate::angles::wrap_2pi(attached.facing_heading(&p) + en.yaw_offset + drift);
+            }
+        }
         en.moved_by_action = true;
         // esmini ends the lane change where the road ends (POS_STATUS_END_OF_ROAD →
         // OSCAction::End), the offset reached so far kept; the speed is left to the default

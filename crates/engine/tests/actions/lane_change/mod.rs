@@ -8,5 +8,6 @@ mod into_junction;
 mod missing_lane;
 mod standing_aligns;
 mod step;
+mod target_lane_drift;
 mod too_fast_and_road_end;
 mod transition;
