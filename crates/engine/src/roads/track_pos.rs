@@ -62,6 +62,36 @@ struct Scan {
     norm: Vec<(f64, f64)>,
     dir: Vec<(f64, f64)>,
     width: Vec<[f64; 2]>,
+    /// Each segment's line (from vertex i to i + 1; the last vertex alone: none), as
+    /// DistanceFromPointToLine2D takes it: the difference of its ends and its length.
+    seg_line: Vec<Line>,
+    /// Each vertex's normal line (the vertex to the vertex plus the normal), likewise.
+    norm_line: Vec<Line>,
+}
+
+/// A line through a point as DistanceFromPointToLine2D measures from it: the difference of
+/// its two defining points and their distance, computed once.
+#[derive(Clone, Copy)]
+struct Line {
+    dx: f64,
+    dy: f64,
+    len: f64,
+}
+
+impl Line {
+    fn through((ax, ay): (f64, f64), (bx, by): (f64, f64)) -> Line {
+        let (dx, dy) = (bx - ax, by - ay);
+        Line { dx, dy, len: dx.hypot(dy) }
+    }
+
+    /// DistanceFromPointToLine2D from (px, py) to this line through `a` (the distance to `a`
+    /// itself for a degenerate line).
+    fn distance(&self, px: f64, py: f64, (ax, ay): (f64, f64)) -> f64 {
+        if self.len < 1e-300 {
+            return (px - ax).hypot(py - ay);
+        }
+        ((px - ax) * self.dy - (py - ay) * self.dx).abs() / self.len
+    }
 }
 
 impl Scan {
@@ -72,7 +102,7 @@ impl Scan {
         let pos: Vec<(f64, f64)> = (0..n).map(|i| if i + 1 == n { (end.x, end.y) } else { (pts[i].x, pts[i].y) }).collect();
         let z = (0..n).map(|i| if i + 1 == n { end.z } else { pts[i].z }).collect();
         let heading = |i: usize| if i + 1 < n { (pos[i + 1].1 - pos[i].1).atan2(pos[i + 1].0 - pos[i].0) } else { end.h };
-        let norm = (0..n)
+        let norm: Vec<(f64, f64)> = (0..n)
             .map(|i| {
                 if i == 0 {
                     normal(pts[0].h)
@@ -85,7 +115,9 @@ impl Scan {
             .collect();
         let dir = pts.iter().map(|p| (p.h.cos(), p.h.sin())).collect();
         let width = pts.iter().map(|p| [width(road, p.s, false), width(road, p.s, true)]).collect();
-        Scan { pts, pos, z, norm, dir, width }
+        let seg_line = (0..n).map(|i| Line::through(pos[i], pos[(i + 1).min(n - 1)])).collect();
+        let norm_line = (0..n).map(|i: usize| Line::through(pos[i], (pos[i].0 + norm[i].0, pos[i].1 + norm[i].1))).collect();
+        Scan { pts, pos, z, norm, dir, width, seg_line, norm_line }
     }
 }
 
@@ -128,24 +160,15 @@ pub(crate) fn width(road: &Road, s: f64, left: bool) -> f64 {
         .map_or(0.0, |((_, b), _)| (b.outer - centre).abs())
 }
 
-/// DistanceFromPointToLine2D (the distance to the point itself for a degenerate line).
-fn line_distance(px: f64, py: f64, (ax, ay): (f64, f64), (bx, by): (f64, f64)) -> f64 {
-    let (dx, dy) = (bx - ax, by - ay);
-    let len = dx.hypot(dy);
-    if len < 1e-300 {
-        return (px - ax).hypot(py - ay);
-    }
-    ((px - ax) * dy - (py - ay) * dx).abs() / len
-}
-
 /// IsPointWithinSectorBetweenTwoLines: whether p lies between the normal lines at a and b,
 /// and its normalised place between them (negative or a distance when outside).
-fn sector(p: (f64, f64), a: (f64, f64), na: (f64, f64), b: (f64, f64), nb: (f64, f64)) -> (bool, f64) {
+/// `la` and `lb` are the normal lines at a and b ([`Line::through`] a and a + na).
+fn sector(p: (f64, f64), a: (f64, f64), na: (f64, f64), la: Line, b: (f64, f64), nb: (f64, f64), lb: Line) -> (bool, f64) {
     let cross = |(ux, uy): (f64, f64), (vx, vy): (f64, f64)| ux * vy - uy * vx;
     let d0 = cross((p.0 - a.0, p.1 - a.1), na);
     let d1 = cross((p.0 - b.0, p.1 - b.1), nb);
-    let dist0 = line_distance(p.0, p.1, a, (a.0 + na.0, a.1 + na.1));
-    let dist1 = line_distance(p.0, p.1, b, (b.0 + nb.0, b.1 + nb.1));
+    let dist0 = la.distance(p.0, p.1, a);
+    let dist1 = lb.distance(p.0, p.1, b);
     let s_norm = dist0 / SMALL_NUMBER.max(dist0 + dist1);
     if d0 > 0.0 && d1 < 0.0 {
         (true, s_norm)
@@ -186,9 +209,9 @@ pub(crate) fn segment_choice(road: &Road, x: f64, y: f64, z_input: f64) -> Optio
         let (cos_h, sin_h) = scan.dir[a];
         let cp = cos_h * (y - pa.1) - sin_h * (x - pa.0);
         let w = scan.width[a][usize::from(cp > 0.0)];
-        let (inside, s_norm) = sector((x, y), pa, scan.norm[a], pb, scan.norm[b]);
+        let (inside, s_norm) = sector((x, y), pa, scan.norm[a], scan.norm_line[a], pb, scan.norm[b], scan.norm_line[b]);
         let inside = inside && s_norm >= 0.0;
-        let mut dist = (line_distance(x, y, pa, pb) - w).max(0.0);
+        let mut dist = (scan.seg_line[a].distance(x, y, pa) - w).max(0.0);
         let zs = if inside { (1.0 - s_norm) * scan.z[a] + s_norm * scan.z[b] } else { scan.z[b] };
         if !inside {
             dist = dist.hypot(s_norm);
