@@ -53,7 +53,7 @@ pub(crate) fn world_to_lane_at(
                 if let Some(arm) = junction_arm_at_end(net, &p, current, x, y) {
                     return Some(arm);
                 }
-                return Some(unshifted(net, p, x, y));
+                return Some(offset_road_s(net, unshifted(net, p, x, y), x, y));
             }
             hinted = Some(p);
         }
@@ -65,7 +65,7 @@ pub(crate) fn world_to_lane_at(
         };
         if let Some(p) = p {
             if p.is_on_road() {
-                return Some(unshifted(net, p, x, y));
+                return Some(offset_road_s(net, unshifted(net, p, x, y), x, y));
             }
             if let Some(held) = held_on_current(net, p, lane_id, x, y) {
                 return Some(unshifted(net, held, x, y));
@@ -90,8 +90,19 @@ pub(crate) fn world_to_lane_at(
     }
     match (hint, found) {
         (None, Some(lp)) => Some(on_chosen_segment(net, lp, x, y, z.unwrap_or(0.0)).unwrap_or(lp)),
-        _ => found.map(|p| unshifted(net, p, x, y)),
+        _ => found.map(|p| offset_road_s(net, unshifted(net, p, x, y), x, y)),
     }
+}
+
+/// On a road with a lane offset, the s XYZ2TrackPos interpolates on lane 0's OSI segments
+/// (lane 0 runs at the offset, tilted against the reference line, so a point beside it gets an
+/// s shifted by about its distance from lane 0 times the offset's slope); elsewhere `lp`.
+fn offset_road_s(net: &RoadNetwork, lp: LanePosition, x: f64, y: f64) -> LanePosition {
+    let Some(road) = net.roads.get(lp.road) else { return lp };
+    if road.lane_offsets.iter().all(|o| o.b == 0.0 && o.c == 0.0 && o.d == 0.0) {
+        return lp;
+    }
+    on_chosen_segment(net, lp, x, y, road.elevation_at(lp.s)).unwrap_or(lp)
 }
 
 /// XYZ2TrackPos for a point on no road, with a current road `current`: each road weighs the

@@ -7,6 +7,7 @@ mod ending_lane;
 mod junction_connection_entering_at_end;
 mod junction_random;
 mod lane_index_past_section;
+mod lane_offset_s_after_trajectory_jump;
 mod lane_section_into_a_stop_lane;
 mod offroad_past_road_end;
 mod raised_lanes;
