@@ -211,12 +211,21 @@ pub(crate) fn segment_choice(road: &Road, x: f64, y: f64, z_input: f64) -> Optio
         let w = scan.width[a][usize::from(cp > 0.0)];
         let (inside, s_norm) = sector((x, y), pa, scan.norm[a], scan.norm_line[a], pb, scan.norm[b], scan.norm_line[b]);
         let inside = inside && s_norm >= 0.0;
+        // A segment outside weighs at least 3 m more than the larger of its two distances: one
+        // that cannot get below the best so far is passed over (the same choice, cheaper).
+        if !inside && best <= OUTSIDE_PENALTY {
+            continue;
+        }
         let mut dist = (scan.seg_line[a].distance(x, y, pa) - w).max(0.0);
         let zs = if inside { (1.0 - s_norm) * scan.z[a] + s_norm * scan.z[b] } else { scan.z[b] };
+        let penalty = opendrive::projection::height_penalty(z_input - zs);
         if !inside {
+            if (dist.max(s_norm.abs()) + penalty) + OUTSIDE_PENALTY >= best {
+                continue;
+            }
             dist = dist.hypot(s_norm);
         }
-        let mut weighted = dist + opendrive::projection::height_penalty(z_input - zs);
+        let mut weighted = dist + penalty;
         if !inside {
             weighted += OUTSIDE_PENALTY;
         }
