@@ -80,14 +80,7 @@ pub(crate) fn world_to_lane_at(
             return Some(unshifted(net, arm, x, y));
         }
     }
-    let mut found = net.world_to_lane_at_height(x, y, z, hint.map(|h| h.0), &surface_t);
-    if let (Some((hr, _)), Some(f)) = (hint, found) {
-        if !f.is_on_road() {
-            if let Some(p) = offroad_weighed(net, x, y, z, hr, f.road) {
-                found = Some(p);
-            }
-        }
-    }
+    let found = net.world_to_lane_at_height(x, y, z, hint.map(|h| h.0), &surface_t);
     match (hint, found) {
         (None, Some(lp)) => Some(on_chosen_segment(net, lp, x, y, z.unwrap_or(0.0)).unwrap_or(lp)),
         _ => found.map(|p| offset_road_s(net, unshifted(net, p, x, y), x, y)),
@@ -103,34 +96,6 @@ fn offset_road_s(net: &RoadNetwork, lp: LanePosition, x: f64, y: f64) -> LanePos
         return lp;
     }
     on_chosen_segment(net, lp, x, y, road.elevation_at(lp.s)).unwrap_or(lp)
-}
-
-/// XYZ2TrackPos for a point on no road, with a current road `current`: each road weighs the
-/// distance from its nearest lane-0 OSI segment beyond its width, plus 3 m where the point is
-/// outside the segment's sector (past the road's ends); the current road is asked first and
-/// another replaces it only when strictly lighter.
-fn offroad_weighed(net: &RoadNetwork, x: f64, y: f64, z: Option<f64>, current: usize, found: usize) -> Option<LanePosition> {
-    let z_in = z.unwrap_or(f64::NAN);
-    let weigh = |r: usize| net.roads.get(r).and_then(|road| super::track_pos::segment_choice(road, x, y, z_in));
-    let mut best = weigh(current).map(|(s, w)| (current, s, w));
-    let mut cands = net.roads_near(x, y);
-    if !cands.contains(&found) {
-        cands.push(found);
-        cands.sort_unstable();
-    }
-    for r in cands {
-        if r == current {
-            continue;
-        }
-        if let Some((s, w)) = weigh(r) {
-            if best.is_none_or(|b| w < b.2) {
-                best = Some((r, s, w));
-            }
-        }
-    }
-    let (r, s, _) = best?;
-    // The s XYZ2TrackPos interpolates on the chosen segment (as a fresh placement takes it).
-    net.locate_at_s_by(r, x, y, s, &surface_t).or_else(|| net.locate_on_road_by(r, x, y, s, &surface_t))
 }
 
 /// How far from the end of its road a point is looked for on the junction arms starting

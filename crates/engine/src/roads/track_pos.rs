@@ -38,9 +38,9 @@ fn lane0(road: &Road, s: f64) -> Vertex {
 /// Lane 0's OSI points over the road's lane sections (`Road::lane0_osi_s`, the duplicate
 /// first point of each following section left out: OpenDrive::SetLaneOSIPoints) and what the
 /// segment scan derives from each, computed once per road and run: a fresh placement
-/// (`locate::fresh_point`) weighs every road near the point, a point off every road weighs the
-/// current road and those near it, and a jump's placement (`locate::on_chosen_segment`) asks
-/// again for the road it found.
+/// (`locate::fresh_point`) weighs every road near the point, and a jump's placement or a point
+/// on a road whose laneOffset varies (`locate::on_chosen_segment`) asks again for the road it
+/// found.
 fn scan_of(road: &Road) -> Arc<Scan> {
     let key: VertexKey = (road as *const Road as usize, road.geometries.as_ptr() as usize, road.length.to_bits());
     if let Some(v) = VERTICES.with(|m| m.borrow().get(&key).cloned()) {
