@@ -91,7 +91,7 @@ pub(crate) fn relative_lane(
         // MoveDirectionMode::LANE_DIRECTION: −sign(lane id) in right-hand traffic, +sign in left.
         Along::Lane(d) => {
             // esmini's SIGN: lane 0 counts as positive.
-            let sign = if reference.lane_id < 0 { -1.0 } else { 1.0 };
+            let sign = f64::from(crate::roads::lane_side::side(reference.lane_id));
             (d * if ref_road.rule == TrafficRule::LeftHand { sign } else { -sign }, true)
         }
     };

@@ -119,9 +119,9 @@ impl NurbsPath {
         let ds = s1 - s0;
         let a = if ds > 0.0 { ((s - s0) / ds).clamp(0.0, 1.0) } else { 0.0 };
         let (lo, hi) = self.curve.domain();
-        let p = self.curve.point((u0 + a * (u1 - u0)).clamp(lo, (hi - ESMINI_SMALL).max(lo)));
-        let turn = angle::diff(h1, h0);
         let u = (u0 + a * (u1 - u0)).clamp(lo, (hi - ESMINI_SMALL).max(lo));
+        let p = self.curve.point(u);
+        let turn = angle::diff(h1, h0);
         let heading = match &self.cp_headings {
             Some(hs) => self.blended_heading(hs, u),
             None => angle::normalize(h0 + a * turn),

@@ -112,9 +112,8 @@ fn delta(net: &RoadNetwork, a: &Entity, b: &Entity, max: f64, free_space: bool) 
     }
     // across the reference line the centre lane is not counted
     let mut dlane = lb_id as i64 - la_id as i64;
-    // esmini's SIGN: -1 below zero, +1 otherwise (a lane that does not continue is 0)
-    let sign = |id: i32| if id < 0 { -1 } else { 1 };
-    let opposite = sign(la_id) != sign(lb_id);
+    // esmini's SIGN (a lane that does not continue is 0, on the positive side)
+    let opposite = crate::roads::lane_side::side(la_id) != crate::roads::lane_side::side(lb_id);
     if opposite {
         dlane = (dlane.abs() - 1) * dlane.signum();
     }

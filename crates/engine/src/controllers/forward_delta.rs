@@ -11,6 +11,7 @@ use super::lane_router::connected_lane_at_s;
 use super::lane_router::connecting_lane_id;
 use super::natural_driver::view::LARGE_NUMBER;
 use crate::roads::lane_geometry::lane_center_t;
+use crate::roads::lane_side::{lane_delta, side};
 use crate::roads::LanePos;
 use opendrive::{ContactPoint, ElementType, JunctionType, RoadNetwork};
 
@@ -34,15 +35,6 @@ struct Node {
     road: usize,
     end: ContactPoint,
     from_lane: i32,
-}
-
-/// esmini's SIGN: 0 counts as positive.
-fn side(id: i32) -> i32 {
-    if id < 0 {
-        -1
-    } else {
-        1
-    }
 }
 
 /// esmini's `Position::Delta(pos_b, diff, false, max)` from `a` (world heading `a_h`) to `b`;
@@ -84,10 +76,7 @@ pub(crate) fn forward_delta(net: &RoadNetwork, a: &LanePos, a_h: f64, b: &LanePo
         adj = connecting_lane_id(net, (n.road, n.end), adj, b.road);
         adj = connected_lane_at_s(net, b.road, adj, b_from, b.s);
     }
-    let mut d_lane = b.lane_id - adj;
-    if side(b.lane_id) != side(adj) {
-        d_lane = (d_lane.abs() - 1) * side(d_lane);
-    }
+    let d_lane = lane_delta(adj, b.lane_id);
     let dt = if side(adj) == side(a.lane_id) { tb - ta } else { tb + ta };
     Some(Delta { ds, d_lane, dt })
 }

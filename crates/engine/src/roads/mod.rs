@@ -9,6 +9,7 @@ pub(crate) mod lane_geometry;
 pub(crate) mod lane_height;
 pub(crate) mod lane_position;
 pub(crate) mod lane_shape;
+pub(crate) mod lane_side;
 pub(crate) mod lane_slope;
 pub(crate) mod lane_snap;
 pub(crate) mod locate;

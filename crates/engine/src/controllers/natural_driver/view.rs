@@ -7,6 +7,7 @@
 use super::state::NdParams;
 use crate::angles::wrap;
 use crate::entities::Entity;
+use crate::roads::lane_side::lane_delta;
 use crate::roads::road_distance::road_distance_within;
 use crate::roads::{move_along_s, LanePos};
 use crate::sim::Sim;
@@ -39,30 +40,20 @@ pub(crate) fn road_delta(net: &RoadNetwork, a: &LanePos, b: &LanePos, both: bool
 }
 
 fn road_delta_any(net: &RoadNetwork, a: &LanePos, b: &LanePos, both: bool, max: f64) -> Option<(f64, i32)> {
-    // esmini's SIGN counts 0 as positive.
-    let side = |id: i32| if id < 0 { -1 } else { 1 };
-    let lane_diff = |from: i32, to: i32| {
-        let d = to - from;
-        if side(from) != side(to) {
-            (d.abs() - 1) * side(d)
-        } else {
-            d
-        }
-    };
     if a.road == b.road {
-        return Some(((b.s - a.s) * a.dir, lane_diff(a.lane_id, b.lane_id)));
+        return Some(((b.s - a.s) * a.dir, lane_delta(a.lane_id, b.lane_id)));
     }
     let d = road_distance_within(net, a.road, a.s, b.road, b.s, max)?;
     let mut p = *a;
     move_along_s(net, &mut p, d);
     if p.road == b.road {
-        return Some((d, lane_diff(p.lane_id, b.lane_id)));
+        return Some((d, lane_delta(p.lane_id, b.lane_id)));
     }
     if both {
         let mut p = *a;
         move_along_s(net, &mut p, -d);
         if p.road == b.road {
-            return Some((-d, lane_diff(p.lane_id, b.lane_id)));
+            return Some((-d, lane_delta(p.lane_id, b.lane_id)));
         }
     }
     // `a`'s lane leads elsewhere, but b's road is linked to a's own end (by a road link or a
@@ -72,10 +63,10 @@ fn road_delta_any(net: &RoadNetwork, a: &LanePos, b: &LanePos, both: bool, max: 
     let linked = |end: ContactPoint| net.roads_at(a.road, end).iter().any(|e| e.road == b.road);
     let (ahead, behind) = if a.dir >= 0.0 { (ContactPoint::End, ContactPoint::Start) } else { (ContactPoint::Start, ContactPoint::End) };
     if linked(ahead) {
-        return Some((d, lane_diff(0, b.lane_id)));
+        return Some((d, lane_delta(0, b.lane_id)));
     }
     if both && linked(behind) {
-        return Some((-d, lane_diff(0, b.lane_id)));
+        return Some((-d, lane_delta(0, b.lane_id)));
     }
     None
 }
