@@ -20,7 +20,8 @@ use std::sync::Arc;
 /// XYZ2TrackPos: the penalty of a segment whose sector does not hold the point.
 const OUTSIDE_PENALTY: f64 = 3.0;
 
-/// One OSI point of lane 0 (PointStruct): s, position, elevation and heading.
+/// One OSI point of lane 0 (PointStruct): s, position, elevation and heading; `geometry_h` is
+/// the heading as esmini's PointStruct holds it (see `geometry_heading`).
 #[derive(Clone, Copy)]
 struct Vertex {
     s: f64,
@@ -28,11 +29,24 @@ struct Vertex {
     y: f64,
     z: f64,
     h: f64,
+    geometry_h: f64,
 }
 
 fn lane0(road: &Road, s: f64) -> Vertex {
     let (x, y, h) = road.lane0_at(s);
-    Vertex { s, x, y, z: road.elevation_at(s), h }
+    Vertex { s, x, y, z: road.elevation_at(s), h, geometry_h: geometry_heading(road, s, h) }
+}
+
+/// The heading esmini's Geometry::EvaluateDS gives at `s` (`h` ours there): the geometry's start
+/// heading taken into [0, 2π) (Geometry::GetHdg) plus the turn along it. It matters where
+/// XYZ2TrackPos compares two vertices' headings to call a segment straight: a straight road
+/// whose pieces point a hair either side of 0 (hdg 8e-10, then −8e-10 read as 2π − 8e-10) is
+/// taken for a curve there, and its normals, being parallel, give no intersection.
+fn geometry_heading(road: &Road, s: f64, h: f64) -> f64 {
+    match road.geometries.get(road.geometry_index_at(s.clamp(0.0, road.length))) {
+        Some(g) => h - g.hdg + crate::angles::wrap_2pi(g.hdg),
+        None => h,
+    }
 }
 
 /// Lane 0's OSI points over the road's lane sections (`Road::lane0_osi_s`, the duplicate
@@ -246,7 +260,7 @@ pub(crate) fn segment_choice(road: &Road, x: f64, y: f64, z_input: f64) -> Optio
     let s = if first == second {
         f.s
     } else {
-        let s_norm = if (f.h - g.h).abs() < 1e-5 {
+        let s_norm = if (f.geometry_h - g.geometry_h).abs() < 1e-5 {
             // ProjectPointOnLine2D, then the unsigned distance from the first vertex. On a
             // road both rolled and sloped the closest vertex's normal, projected on the ground,
             // is not square to the line: the point is first moved back along the heading by
@@ -265,6 +279,12 @@ pub(crate) fn segment_choice(road: &Road, x: f64, y: f64, z_input: f64) -> Optio
             let (n0, n1) = (normal(f.h), normal(g.h));
             // GetIntersectionOfTwoLineSegments of the two normal lines.
             let den = n0.0 * n1.1 - n0.1 * n1.0;
+            if den.abs() < SMALL_NUMBER {
+                // Parallel normals: GetIntersectionOfTwoLineSegments refuses and leaves the
+                // intersection unset; esmini 3.6.0 then puts the point at the first vertex
+                // (measured: every point along such a segment gets its first vertex's s).
+                return Some((f.s, best));
+            }
             let tt = ((g.x - f.x) * n1.1 - (g.y - f.y) * n1.0) / den;
             let (ix, iy) = (f.x + tt * n0.0, f.y + tt * n0.1);
             let unit = |(ux, uy): (f64, f64)| {

@@ -13,5 +13,6 @@ mod raised_lanes;
 mod reversing_through_junctions;
 mod road_link_without_lane_links;
 mod sloped_banked;
+mod straight_heading_either_side_of_zero;
 mod superelevation;
 mod unlinked_lane_keeps_heading;
