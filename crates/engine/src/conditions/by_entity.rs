@@ -37,6 +37,7 @@ impl<'a> Sim<'a> {
             return self.warn_once(c, "the referenced entity is unknown".into());
         }
         // Positions are resolved once per evaluation (they may be relative to moving entities).
+        let mut wanted_attitude = None;
         let point = match cond {
             // esmini's TrigByTimeToCollision::CheckCondition reads its position's x and y without
             // Position::EvaluateRelation (TrigByReachPosition and TrigByDistance call it), and a
@@ -45,7 +46,12 @@ impl<'a> Sim<'a> {
             C::TimeToCollision { target: TtcTarget::Position(position), .. } if relative_to_entity(position) => Some((0.0, 0.0)),
             C::ReachPosition { position, .. } | C::Distance { position, .. } | C::TimeToCollision { target: TtcTarget::Position(position), .. } => {
                 match resolve(position, self.net, &self.entities) {
-                    Ok(p) => Some((p.x, p.y)),
+                    Ok(p) => {
+                        if matches!(cond, C::ReachPosition { .. }) && super::reach_orientation::has_orientation(position) {
+                            wanted_attitude = Some(super::reach_orientation::position_attitude(self.net, &p));
+                        }
+                        Some((p.x, p.y))
+                    }
                     Err(e) => return self.warn_once(c, e),
                 }
             }
@@ -91,7 +97,13 @@ impl<'a> Sim<'a> {
                     }
                     Some(held_duration > *duration)
                 }
-                (None, _) => self.check_one(idx, c.other, point, cond),
+                (None, _) => {
+                    let r = self.check_one(idx, c.other, point, cond);
+                    match wanted_attitude {
+                        Some(wanted) => r.map(|r| r && self.faces_as(idx, wanted)),
+                        None => r,
+                    }
+                }
             };
             // esmini's TrigByTimeHeadway and TrigByTimeToCollision: an entity whose measure is
             // not defined makes the result false but leaves the triggering-entities rule

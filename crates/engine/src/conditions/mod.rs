@@ -9,6 +9,7 @@ pub(crate) mod by_value;
 pub(crate) mod clearance;
 pub(crate) mod distance;
 pub(crate) mod free_space;
+pub(crate) mod reach_orientation;
 pub(crate) mod state;
 pub(crate) mod traffic_signal;
 pub(crate) mod triggering;

@@ -20,6 +20,7 @@ mod ignored_value_conditions;
 mod lateral_road_distance_sign;
 mod offroad_lane_offset;
 mod reach_position_all;
+mod reach_position_orientation;
 mod rule_tolerance;
 mod standstill_clock;
 mod ttc_point_on_overlapping_roads;
