@@ -45,6 +45,7 @@ impl<'a> Sim<'a> {
             random: Default::default(),
             external_choice: external.clone(),
             external: vec![None; scenario.entities.len()],
+            nd_distances: Default::default(),
         };
         sim.signals = crate::signals::Signals::new(scenario, net, &mut sim.warnings);
         sim.trailers = crate::actions::trailer::state::Trailers::build(scenario, &mut sim.entities);

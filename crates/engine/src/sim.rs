@@ -62,6 +62,9 @@ pub(crate) struct Sim<'a> {
     /// Which entities the caller drives (external/), and each one's state.
     pub external_choice: crate::external::External,
     pub external: Vec<Option<crate::external::driven::Driven>>,
+    /// When the NaturalDriver may measure each pair of entities again
+    /// (controllers/natural_driver/distance_cache.rs).
+    pub nd_distances: crate::controllers::natural_driver::state::DistanceCache,
 }
 
 impl<'a> Sim<'a> {

@@ -23,6 +23,7 @@
 //! the driving state. In the additive `mode` the default controller moves the entity by its speed
 //! before the driver moves it again, as in esmini.
 
+pub(crate) mod distance_cache;
 pub(crate) mod state;
 pub(crate) mod view;
 

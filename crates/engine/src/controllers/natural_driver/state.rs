@@ -57,3 +57,10 @@ impl NaturalDriverRt {
         self.pending.is_some() || self.lane_change.is_some()
     }
 }
+
+/// ScenarioEngine's object_distance_map_: when each ordered pair is due again (its
+/// next_update_, on esmini's accumulated clock). Pairs are only looked up, never iterated.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct DistanceCache {
+    pub(crate) next_update: std::collections::HashMap<(usize, usize), f64>,
+}

@@ -125,13 +125,10 @@ pub(crate) fn adjacent_lanes(net: &RoadNetwork, lp: &LanePos) -> Option<[i32; 2]
 }
 
 impl<'a> Sim<'a> {
-    /// Other active entities within `radius` (straight-line distance of the reference points).
-    pub(super) fn nd_in_radius(&self, e: usize, radius: f64) -> Vec<usize> {
-        let Some(me) = self.entities.get(e) else { return Vec::new() };
-        (0..self.entities.len())
-            .filter(|&i| i != e)
-            .filter(|&i| self.entities[i].active && (self.entities[i].x - me.x).hypot(self.entities[i].y - me.y) <= radius)
-            .collect()
+    /// Other active entities within `radius` (straight-line distance of the reference points),
+    /// as esmini's distance cache lets the driver measure them (`distance_cache.rs`).
+    pub(super) fn nd_in_radius(&mut self, e: usize, radius: f64) -> Vec<usize> {
+        (0..self.entities.len()).filter(|&i| i != e).filter(|&i| self.nd_cached_distance(e, i, 2.0 * radius).is_some_and(|d| d.abs() <= radius)).collect()
     }
 
     /// Delta from entity `a` to entity `b` with esmini's fallback when no path is found
