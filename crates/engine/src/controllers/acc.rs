@@ -46,7 +46,6 @@ impl AccRt {
             override_mode: c.properties.get("mode") == Some("override"),
             moved_by_action: false,
             at_end: false,
-            moved: true,
             end_seen: false,
         }
     }
@@ -65,7 +64,7 @@ impl AccRt {
 
 impl<'a> Sim<'a> {
     /// esmini's ScenarioEngine::step, before it steps any controller: an entity at the end of
-    /// its road since the step before that did not move in the last step gets speed 0 (which
+    /// its road since the step before whose velocity is zero gets speed 0 (which
     /// its ACC then takes as its set speed and brakes to; a controller stepping before that ACC
     /// sees the 0). The default controller's entities get this in `default_controller`; the ACC
     /// moves its own in override mode.
@@ -86,8 +85,10 @@ impl<'a> Sim<'a> {
                 a.end_seen = false;
             } else if !a.end_seen {
                 a.end_seen = true;
-            } else if !a.moved {
-                if let Some(en) = self.entities.get_mut(e) {
+            } else if let Some(en) = self.entities.get_mut(e) {
+                // NEAR_ZERO of the entity's velocity: its whole last step, a lateral action's
+                // move too, not the ACC's own move alone.
+                if en.vel.0.abs() < crate::dynamics::ESMINI_SMALL_NUMBER && en.vel.1.abs() < crate::dynamics::ESMINI_SMALL_NUMBER {
                     en.speed = 0.0;
                 }
             }
@@ -168,7 +169,6 @@ impl<'a> Sim<'a> {
         // the default controller's own: it follows an assigned route (Position::MoveAlongS with
         // updateRoute, MoveRouteDS) and takes a junction arm by the object's drawn selector angle.
         if a.override_mode {
-            let (x0, y0) = (en.x, en.y);
             match (net, en.lane) {
                 (Some(net), Some(mut lp)) => {
                     let pedestrian = en.kind == crate::entities::EntityKind::Pedestrian;
@@ -183,7 +183,6 @@ impl<'a> Sim<'a> {
                 // Position::MoveAlongS returns an error without moving (track_idx_ undefined).
                 _ => a.at_end = false,
             }
-            a.moved = (en.x - x0).hypot(en.y - y0) > 1e-9;
             en.moved_by_action = true;
         }
         en.speed = a.current_speed;

@@ -11,10 +11,8 @@ pub(crate) struct AccRt {
     pub(in crate::controllers) override_mode: bool,
     /// An action moved the entity this step (seen before the default controller ran).
     pub(in crate::controllers) moved_by_action: bool,
-    /// In override mode: its last move ended at the end of the road, whether that move changed
-    /// the position, and whether the end of road was already seen one step before (esmini's
-    /// `Object::IsEndOfRoad`).
+    /// In override mode: its last move ended at the end of the road, and whether the end of
+    /// road was already seen one step before (esmini's `Object::IsEndOfRoad`).
     pub(super) at_end: bool,
-    pub(super) moved: bool,
     pub(super) end_seen: bool,
 }

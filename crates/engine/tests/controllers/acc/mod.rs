@@ -24,5 +24,6 @@ mod override_speed_action;
 mod override_speed_profile;
 mod override_teleport;
 mod override_timed_trajectory;
+mod road_end_moving_sideways;
 mod road_end_then_trajectory;
 mod timed_clothoid_start_speed;
