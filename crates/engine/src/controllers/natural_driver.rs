@@ -95,7 +95,7 @@ impl NaturalDriverRt {
             pending: None,
             lane_change: None,
             injections: 0,
-            action_yaw: 0.0,
+            action_yaw: f64::NAN,
         }
     }
 
@@ -117,7 +117,10 @@ impl<'a> Sim<'a> {
     /// motion as done (its dirty bits), a starting one does not.
     pub(super) fn step_natural_driver_action(&mut self, e: usize, nd: &mut NaturalDriverRt, dt: f64) {
         let time = self.time - dt;
-        nd.action_yaw = 0.0;
+        // NaN: no lane change of its own stepped, and the move keeps the heading relative to
+        // the road (the driver acts on the longitudinal domain only, so nothing aligns the
+        // heading; Position::MoveAlongS keeps h_relative).
+        nd.action_yaw = f64::NAN;
         let mut stepped = false;
         if let Some((lane, name)) = nd.pending.take() {
             if let Some(rt) = self.nd_start_lane_change(e, lane, nd.p.lane_change_duration as f32 as f64) {
@@ -127,6 +130,7 @@ impl<'a> Sim<'a> {
         } else if let Some((mut lc, name)) = nd.lane_change.take() {
             stepped = true;
             if self.step_lane_change(e, &mut lc) {
+                nd.action_yaw = 0.0;
                 self.nd_event(time, &name, "running", "end", "complete");
             } else {
                 nd.action_yaw = self.entities.get(e).map_or(0.0, |en| en.yaw_offset);
@@ -290,7 +294,9 @@ impl<'a> Sim<'a> {
                 // broken by a draw from esmini's generator.
                 let pedestrian = en.kind == crate::entities::EntityKind::Pedestrian;
                 let status = move_along_route_drawing(net, &mut lp, speed * dt, en.route.as_deref(), random, pedestrian);
-                en.yaw_offset = yaw;
+                if !yaw.is_nan() {
+                    en.yaw_offset = yaw;
+                }
                 en.set_lane_pos(net, lp);
                 en.at_road_end = status == MoveStatus::EndOfRoad;
             }
