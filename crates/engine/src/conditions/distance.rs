@@ -23,9 +23,28 @@ fn road_t(net: &RoadNetwork, e: &Entity) -> Option<(usize, f64, f64, f64)> {
 fn path_ds(net: &RoadNetwork, a: &Entity, b: &Entity) -> Option<f64> {
     let (la, lb) = (a.lane?, b.lane?);
     let d = crate::roads::road_distance::road_distance(net, la.road, la.s, lb.road, lb.s)?;
-    let mut p = la;
-    crate::roads::move_along_road_s(net, &mut p, d, None, None);
-    let d = if p.road == lb.road && (p.s - lb.s).abs() < (0.05 * d).max(1.0) { d } else { -d };
+    // RoadPath::Calculate's direction: ahead (+) when the path leaves a's road by its end
+    // and a faces along s, or by its start and a faces against s; behind (−) otherwise. A
+    // trial move along the roads only where no path is found.
+    let d = match crate::roads::road_path::path_ends(net, la.road, la.s, la.lane_id, lb.road) {
+        Some(pe) => {
+            let fwd = la.dir > 0.0;
+            if (pe.first_exit == opendrive::ContactPoint::Start) != fwd {
+                d
+            } else {
+                -d
+            }
+        }
+        None => {
+            let mut p = la;
+            crate::roads::move_along_road_s(net, &mut p, d, None, None);
+            if p.road == lb.road && (p.s - lb.s).abs() < (0.05 * d).max(1.0) {
+                d
+            } else {
+                -d
+            }
+        }
+    };
     // RoadPath::Calculate (across roads only) turns the sign once more for a start position
     // facing against its lane's driving direction, as in SynchronizeAction's master_distance
     if let (Some(r), Some(pose)) = (net.roads.get(la.road), la.pose(net)) {

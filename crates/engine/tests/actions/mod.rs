@@ -7,6 +7,7 @@ mod executed_again;
 mod lane_change;
 mod lane_offset_relative;
 mod lateral_distance;
+mod longitudinal_distance_across_junction_turn;
 mod longitudinal_distance_against_lane;
 mod longitudinal_distance_and_acc;
 mod longitudinal_distance_any_side;
