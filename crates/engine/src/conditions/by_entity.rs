@@ -2,7 +2,7 @@
 //! triggering-entities rule (any: one true is enough; all: every one must be true).
 
 use super::boxes::{boxes_overlap, corners};
-use super::distance::{between, between_chains, chain_to_point, to_point};
+use super::distance::{between, between_chains, chain_to_point, to_point_with_hint};
 use super::ConditionRt;
 use crate::controllers::natural_driver::view::LARGE_NUMBER;
 // esmini's SMALL_NUMBER (1e-6): the tolerances of TrigByTimeHeadway, Object::TimeToCollision,
@@ -207,7 +207,9 @@ impl<'a> Sim<'a> {
             C::TraveledDistance { value } => e.odometer >= *value,
             C::EndOfRoad { duration } => e.end_of_road && t - e.end_of_road_since > duration - SMALL,
             C::ReachPosition { tolerance, .. } => point.is_some_and(|(x, y)| (e.x - x).hypot(e.y - y) < *tolerance),
-            C::Distance { value, rule, options, .. } => point.is_some_and(|(x, y)| compare(self.distance_to_point(idx, x, y, options).abs(), *value, *rule)),
+            C::Distance { value, rule, options, position, .. } => {
+                point.is_some_and(|(x, y)| compare(self.distance_to_point(idx, x, y, options, relative_to_entity(position)).abs(), *value, *rule))
+            }
             C::RelativeDistance { value, rule, options, .. } => other.is_some_and(|j| compare(self.distance_between(idx, j, options).abs(), *value, *rule)),
             C::TimeHeadway { value, rule, options, .. } => {
                 let Some(j) = other.filter(|_| o.is_some()) else { return Some(false) };
@@ -231,7 +233,7 @@ impl<'a> Sim<'a> {
                         };
                         (d, rel)
                     }
-                    (None, Some((x, y))) => (self.distance_to_point(idx, x, y, options), e.speed),
+                    (None, Some((x, y))) => (self.distance_to_point(idx, x, y, options, true), e.speed),
                     _ => return Some(false),
                 };
                 if d.abs() < SMALL || rel_speed.abs() < SMALL {
@@ -286,11 +288,11 @@ impl Sim<'_> {
 
     /// The distance of a condition from entity `idx` to the point (x, y), with freespace from
     /// every vehicle of its towing chain.
-    fn distance_to_point(&self, idx: usize, x: f64, y: f64, options: &DistanceOptions) -> f64 {
+    fn distance_to_point(&self, idx: usize, x: f64, y: f64, options: &DistanceOptions, moving: bool) -> f64 {
         let kind = options.relative_distance_type.unwrap_or(RelativeDistanceType::EuclidianDistance);
         let Some(e) = self.entities.get(idx) else { return LARGE_NUMBER };
         if !options.freespace {
-            return to_point(self.net, e, x, y, cs_of(options), kind, false);
+            return to_point_with_hint(self.net, e, x, y, cs_of(options), kind, false, moving);
         }
         let pivots: Vec<&Entity> = self.towing_chain(idx).into_iter().filter_map(|i| self.entities.get(i)).collect();
         chain_to_point(self.net, &pivots, x, y, cs_of(options), kind)

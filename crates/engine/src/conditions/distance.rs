@@ -261,18 +261,35 @@ fn shrink(d: f64, ext_a: f64, ext_b: f64) -> f64 {
     }
 }
 
-/// Distance from entity `a` to the point (x, y).
+/// Distance from entity `a` to the point (x, y), a point that may move (relative to an entity).
 pub(crate) fn to_point(net: Option<&RoadNetwork>, a: &Entity, x: f64, y: f64, cs: CoordinateSystem, kind: RelativeDistanceType, freespace: bool) -> f64 {
+    to_point_with_hint(net, a, x, y, cs, kind, freespace, true)
+}
+
+/// [`to_point`]; `moving` false for a fixed point, which in road coordinates is placed as
+/// esmini places it, by a search of all roads (its result memoised), never from the entity's
+/// road: from a road with no path to the point's, the distance is LARGE_NUMBER.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn to_point_with_hint(
+    net: Option<&RoadNetwork>,
+    a: &Entity,
+    x: f64,
+    y: f64,
+    cs: CoordinateSystem,
+    kind: RelativeDistanceType,
+    freespace: bool,
+    moving: bool,
+) -> f64 {
     let mut p = point_entity(a, x, y);
     if matches!(cs, CoordinateSystem::Road | CoordinateSystem::Lane) {
         if let Some(n) = net {
-            // The entity's road first, then a search of all roads. esmini's Position::Distance
-            // maps the point by a fresh Position (a search of all roads; only
-            // Object::FreeSpaceDistancePointRoadLane starts from the entity's road), but that
-            // search on every step of a moving target cost 6 % of the engine's time on the
-            // corpus (the speed bench), and gave the same verdicts on 11,983 generated
-            // scenarios: the two differ only where roads overlap.
-            let hint = a.lane.map(|l| (l.road, l.s));
+            // A moving point: the entity's road first, then a search of all roads. esmini's
+            // Position::Distance maps the point by a fresh Position (a search of all roads;
+            // only Object::FreeSpaceDistancePointRoadLane starts from the entity's road), but
+            // that search on every step of a moving target cost 6 % of the engine's time on the
+            // corpus (the speed bench); the two differ only where roads overlap. A fixed point
+            // is searched for once and remembered.
+            let hint = if moving || freespace { a.lane.map(|l| (l.road, l.s)) } else { None };
             // Where the point is off the entity's road: with freespace
             // (FreeSpaceDistancePointRoadLane) it is mapped from the entity's position, without
             // it (Position::Distance) by a fresh Position, which on roads lying equally near

@@ -9,6 +9,7 @@ mod clearance_free_space_corners;
 mod clearance_lane_across_link;
 mod clearance_offroad_headway;
 mod directed_speed;
+mod distance_to_fixed_point;
 mod distance_unlinked_roads;
 mod duration_held_for_next_entity;
 mod end_of_road_acc;
