@@ -120,13 +120,18 @@ impl<'a> Sim<'a> {
         let target_lane = match target {
             LaneChangeTarget::Absolute { lane_id } => *lane_id,
             LaneChangeTarget::Relative { entity, value } => {
-                let Some(r) = self.action_ref_index(slot, entity).and_then(|i| self.entities[i].lane) else {
-                    self.warn_action(slot, format!("LaneChangeAction: reference entity `{entity}` unknown or off the road"));
-                    return ActionRt::Done;
-                };
-                let forward = if r.dir < 0.0 { -1 } else { 1 };
-                // A positive value is to the left of the reference entity's driving direction.
-                step_lane(r.lane_id, value * forward)
+                let ref_index = self.action_ref_index(slot, entity);
+                if ref_index.is_some_and(|i| self.entities[i].roadless && self.entities[i].lane.is_none()) {
+                    from_unplaced_reference(*value)
+                } else {
+                    let Some(r) = ref_index.and_then(|i| self.entities[i].lane) else {
+                        self.warn_action(slot, format!("LaneChangeAction: reference entity `{entity}` unknown or off the road"));
+                        return ActionRt::Done;
+                    };
+                    let forward = if r.dir < 0.0 { -1 } else { 1 };
+                    // A positive value is to the left of the reference entity's driving direction.
+                    step_lane(r.lane_id, value * forward)
+                }
             }
         };
         let Some(road) = net.roads.get(lp.road) else { return ActionRt::Done };
@@ -322,5 +327,17 @@ impl<'a> Sim<'a> {
             return true;
         }
         done
+    }
+}
+
+/// The target lane of a lane change `value` lanes from a reference entity esmini never placed
+/// (a RoutePosition FromCurrentEntity, which esmini 3.6.0 does not implement): Position's
+/// defaults, lane 0 facing along s. LatLaneChangeAction::Start adds the value to lane 0 and,
+/// as esmini's SIGN(0) is +1, skips the centre lane on the way right: −1 → −2, 0 → 1.
+fn from_unplaced_reference(value: i32) -> i32 {
+    match value {
+        0 => 1,
+        v if v < 0 => v - 1,
+        v => v,
     }
 }

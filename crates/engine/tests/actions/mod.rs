@@ -5,6 +5,7 @@ mod assign_controller_never_ends;
 mod basic;
 mod executed_again;
 mod lane_change;
+mod lane_change_relative_to_unplaced_entity;
 mod lane_offset_relative;
 mod lateral_distance;
 mod longitudinal_distance_across_junction_turn;
