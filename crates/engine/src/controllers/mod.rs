@@ -217,16 +217,53 @@ impl<'a> Sim<'a> {
         }
     }
 
+    /// Entity `e`'s modelled controllers in its assignment order (esmini's `Object::controllers_`:
+    /// Object::AssignController appends, and one assigned again moves to the end).
+    fn controllers_by_assignment(&self, e: usize) -> Vec<&ControllerRt> {
+        let mut v: Vec<(u64, &ControllerRt)> =
+            self.controllers.iter().filter(|c| c.entity == e).filter_map(|c| c.rt.as_ref().map(|rt| (c.assigned, rt))).collect();
+        v.sort_by_key(|(a, _)| *a);
+        v.into_iter().map(|(_, rt)| rt).collect()
+    }
+
+    /// Whether controller `c` is active on the longitudinal domain.
+    fn active_on_long(c: &ControllerRt) -> bool {
+        match c {
+            ControllerRt::Acc(a) => a.active,
+            ControllerRt::AlksR157(a) => a.active && a.longitudinal,
+            ControllerRt::Looming(l) => l.active,
+            ControllerRt::NaturalDriver(n) => n.active,
+            ControllerRt::FollowGhost(f) => f.active && f.longitudinal,
+            ControllerRt::FollowReference(f) => f.active,
+            ControllerRt::FollowRoute(f) => f.active_longitudinal(),
+            ControllerRt::OffroadFollower(f) => f.holds_longitudinal(),
+        }
+    }
+
+    /// Whether controller `c` is active on the lateral domain (the types that hold it).
+    fn active_on_lat(c: &ControllerRt) -> bool {
+        match c {
+            ControllerRt::AlksR157(a) => a.active && a.lateral,
+            ControllerRt::OffroadFollower(f) => f.holds_lateral(),
+            ControllerRt::FollowReference(f) => f.active,
+            ControllerRt::FollowGhost(f) => f.active,
+            _ => false,
+        }
+    }
+
     /// Whether a controller of entity `e` in override mode owns its longitudinal motion now
     /// (esmini's `Object::IsControllerModeOnDomains(MODE_OVERRIDE, DOMAIN_MASK_LONG)`): an
     /// active ACC/ALKS, Looming or ALKS R157 in override mode, a FollowReference (always in
     /// override mode, with or without a ghost: the ghost takes the storyboard's actions, the
     /// entity keeps its Init ones), a FollowRoute controller during its lane change.
+    /// esmini asks only the first controller of the entity's list (assignment order) that is
+    /// active on the domain: an additive ACC assigned before an ALKS R157 in override mode
+    /// leaves the domain to the actions.
     pub(crate) fn longitudinal_overridden(&self, e: usize) -> bool {
         if self.outside(e) {
             return true;
         }
-        self.controllers_of(e).any(|c| match c {
+        self.controllers_by_assignment(e).into_iter().find(|c| Self::active_on_long(c)).is_some_and(|c| match c {
             ControllerRt::Acc(a) => a.overrides_longitudinal(),
             ControllerRt::FollowRoute(f) => f.overrides_longitudinal(),
             ControllerRt::OffroadFollower(f) => f.holds_longitudinal(),
@@ -241,20 +278,20 @@ impl<'a> Sim<'a> {
         })
     }
 
-    /// Whether any active controller of entity `e` holds its longitudinal domain in override mode:
-    /// esmini's `Object::IsControllerModeOnDomains(MODE_OVERRIDE, DOMAIN_MASK_LONG)` over every
-    /// controller type: `longitudinal_overridden`'s set (the one a SpeedAction is ended under so
-    /// far: ACC/ALKS, Looming, ALKS R157, OffroadFollower, FollowReference, FollowRoute during
-    /// its lane change, an entity driven from outside) and besides a NaturalDriver unless
-    /// additive.
+    /// Whether the first controller of entity `e` active on its longitudinal domain holds it
+    /// in override mode: esmini's `Object::IsControllerModeOnDomains(MODE_OVERRIDE,
+    /// DOMAIN_MASK_LONG)` over every controller type: `longitudinal_overridden`'s set (the one
+    /// a SpeedAction is ended under so far: ACC/ALKS, Looming, ALKS R157, OffroadFollower,
+    /// FollowReference, FollowRoute during its lane change, an entity driven from outside) and
+    /// besides a NaturalDriver unless additive.
     pub(crate) fn long_domain_overridden(&self, e: usize) -> bool {
         if self.longitudinal_overridden(e) {
             return true;
         }
-        self.controllers_of(e).any(|c| match c {
-            ControllerRt::NaturalDriver(n) => n.active && n.override_mode,
-            _ => false,
-        })
+        self.controllers_by_assignment(e)
+            .into_iter()
+            .find(|c| Self::active_on_long(c))
+            .is_some_and(|c| matches!(c, ControllerRt::NaturalDriver(n) if n.active && n.override_mode))
     }
 
     /// Whether an active controller of entity `e` in override mode owns its lateral or
@@ -265,9 +302,10 @@ impl<'a> Sim<'a> {
     /// base); FollowGhost and FollowReference always override; FollowRoute only while it
     /// changes lanes; an OffroadFollower on whichever domain it is active (ControllerOffroadFollower
     /// keeps the Controller base's mode, override unless a `mode` property says additive; the
-    /// engine reads no `mode` for it).
+    /// engine reads no `mode` for it). Only the first controller active on either domain
+    /// (assignment order) is asked.
     pub(crate) fn overrides_motion(&self, e: usize) -> bool {
-        self.controllers_of(e).any(|c| match c {
+        self.controllers_by_assignment(e).into_iter().find(|c| Self::active_on_long(c) || Self::active_on_lat(c)).is_some_and(|c| match c {
             ControllerRt::Acc(a) => a.overrides_longitudinal(),
             ControllerRt::Looming(l) => l.active && l.override_mode,
             ControllerRt::NaturalDriver(n) => n.active && n.override_mode,
@@ -279,16 +317,16 @@ impl<'a> Sim<'a> {
         })
     }
 
-    /// Whether an active controller of entity `e` in override mode holds its lateral domain
-    /// (esmini's `IsControllerModeOnDomains(MODE_OVERRIDE, DOMAIN_MASK_LAT)`), under which a
-    /// lane change, a lane offset or a trajectory does nothing and never ends
+    /// Whether the first controller of entity `e` active on its lateral domain holds it in
+    /// override mode (esmini's `IsControllerModeOnDomains(MODE_OVERRIDE, DOMAIN_MASK_LAT)`),
+    /// under which a lane change, a lane offset or a trajectory does nothing and never ends
     /// (LatLaneChangeAction, LatLaneOffsetAction, FollowTrajectoryAction: Start and Step return
     /// early; a lateral distance action waits on the longitudinal domain instead,
     /// `long_domain_overridden`): an ALKS R157 controller activated laterally in override mode, an
     /// OffroadFollower, an active FollowGhost or FollowReference. (ACC, ALKS, Looming and
     /// NaturalDriver operate on the longitudinal domain only.)
     pub(crate) fn lateral_overridden(&self, e: usize) -> bool {
-        self.controllers_of(e).any(|c| match c {
+        self.controllers_by_assignment(e).into_iter().find(|c| Self::active_on_lat(c)).is_some_and(|c| match c {
             ControllerRt::AlksR157(a) => a.active && a.override_mode && a.lateral,
             ControllerRt::OffroadFollower(f) => f.holds_lateral(),
             // FollowGhost and FollowReference force override mode on both domains; with a

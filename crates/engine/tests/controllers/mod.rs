@@ -13,6 +13,7 @@ mod alks_r157_route;
 mod alks_r157_rss_fsm;
 mod assign_never_ends;
 mod controllers_off_speed_from_displacement;
+mod first_active_controller_decides;
 mod follow_reference_speed;
 mod follow_reference_ties;
 mod follow_route;
