@@ -461,10 +461,12 @@ fn default_junction_arms(net: &RoadNetwork, here: LaneRef, junction: &opendrive:
         let Some(r) = net.roads.get(conn.connecting) else { continue };
         let section = opendrive::section_at_end(r, conn.contact);
         for &(_, to) in conn.lane_links.iter().filter(|l| l.0 == here.lane) {
-            let lane = LaneRef { road: conn.connecting, section, lane: to };
-            if r.lane_sections.get(section).is_some_and(|sec| sec.left.iter().chain(&sec.right).any(|l| l.id == to)) {
-                out.push((lane, conn.contact));
-            }
+            // A lane link to a lane the connecting road lacks is still an arm (esmini's
+            // Junction::GetRoadConnectionByIdx only logs "target lane not found"): entering it,
+            // Position::SetLanePos fails after SetLongitudinalTrackPos switched the road, which
+            // reset the lane id to 0, and keeps the offset; the entity goes on in lane 0.
+            let exists = r.lane_sections.get(section).is_some_and(|sec| sec.left.iter().chain(&sec.right).any(|l| l.id == to));
+            out.push((LaneRef { road: conn.connecting, section, lane: if exists { to } else { 0 } }, conn.contact));
         }
     }
     out

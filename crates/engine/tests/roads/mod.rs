@@ -5,6 +5,7 @@ mod eight_links_per_move;
 mod end_of_road_speed;
 mod ending_lane;
 mod junction_connection_entering_at_end;
+mod junction_lane_link_to_missing_lane;
 mod junction_random;
 mod lane_index_past_section;
 mod lane_offset_s_after_trajectory_jump;
