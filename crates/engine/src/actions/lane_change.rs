@@ -193,6 +193,12 @@ impl<'a> Sim<'a> {
         let Some(en) = self.entities.get(e) else { return true };
         let speed = en.speed;
         if speed.abs() < ESMINI_SMALL_NUMBER {
+            // LatLaneChangeAction::Step marks the longitudinal domain as owned (dirty bits) before
+            // it returns at standstill: the default controller moves nothing this step, and an
+            // entity stopped at a dead end stays stopped whatever speed a later action sets.
+            if let Some(en) = self.entities.get_mut(e) {
+                en.moved_by_action = true;
+            }
             return false;
         }
         // esmini puts the entity back on its internal position with Position::SetLanePos, which

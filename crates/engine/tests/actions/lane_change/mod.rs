@@ -3,6 +3,7 @@
 
 mod across_a_split;
 mod at_a_dead_end;
+mod at_standstill_keeps_road_end_stop;
 mod end_with_dangling_link;
 mod into_junction;
 mod missing_lane;
