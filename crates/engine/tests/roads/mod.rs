@@ -10,6 +10,7 @@ mod junction_random;
 mod lane_index_past_section;
 mod lane_offset_s_after_trajectory_jump;
 mod lane_section_into_a_stop_lane;
+mod looming_lane_lock_on_steep_bank;
 mod raised_lanes;
 mod reversing_through_junctions;
 mod road_link_without_lane_links;
