@@ -345,6 +345,20 @@ impl<'a> Sim<'a> {
         let net = self.net;
         let en = &mut self.entities[e];
         en.set_world(net, x, y, None, heading);
+        // At the trajectory's end the position the default controller goes on from keeps the s
+        // esmini's XYZ2TrackPos interpolated on the lane-0 OSI segment, not the exact
+        // projection's (before a tight curve the two differ by a metre).
+        if done {
+            if let (Some(n), Some(lp)) = (net, en.lane) {
+                if let Some(found) = crate::roads::locate::world_to_lane_on_segment(n, x, y, en.z, (lp.road, lp.s, lp.lane_id)) {
+                    if found.road == lp.road {
+                        let sidewalks = en.kind == crate::entities::EntityKind::Pedestrian;
+                        let (lane_id, offset) = crate::roads::lane_snap::snap_located(n, &found, sidewalks);
+                        en.lane = Some(crate::roads::LanePos { lane_id, s: found.s, offset, ..lp });
+                    }
+                }
+            }
+        }
         en.placed_end_status = net.and_then(|n| en.end_status_from_world(n));
         en.speed = new_speed;
         en.moved_by_action = true;

@@ -3,6 +3,7 @@
 mod clothoid_spline_chained_on_slope;
 mod clothoid_start_time;
 mod end_at_junction_entry;
+mod end_before_tight_curve;
 mod end_inside_junction;
 mod end_tolerance;
 mod follow;
