@@ -25,24 +25,16 @@ fn path_ds(net: &RoadNetwork, a: &Entity, b: &Entity) -> Option<f64> {
     let d = crate::roads::road_distance::road_distance(net, la.road, la.s, lb.road, lb.s)?;
     // RoadPath::Calculate's direction: ahead (+) when the path leaves a's road by its end
     // and a faces along s, or by its start and a faces against s; behind (−) otherwise. A
-    // trial move along the roads only where no path is found.
-    let d = match crate::roads::road_path::path_ends(net, la.road, la.s, la.lane_id, lb.road) {
-        Some(pe) => {
-            let fwd = la.dir > 0.0;
-            if (pe.first_exit == opendrive::ContactPoint::Start) != fwd {
-                d
-            } else {
-                -d
-            }
-        }
-        None => {
-            let mut p = la;
-            crate::roads::move_along_road_s(net, &mut p, d, None, None);
-            if p.road == lb.road && (p.s - lb.s).abs() < (0.05 * d).max(1.0) {
-                d
-            } else {
-                -d
-            }
+    // trial move that far along the roads (the straightest arms) settles most pairs without
+    // the path search: where it reaches b, b is ahead.
+    let mut p = la;
+    crate::roads::move_along_road_s(net, &mut p, d, None, None);
+    let d = if p.road == lb.road && (p.s - lb.s).abs() < (0.05 * d).max(1.0) {
+        d
+    } else {
+        match crate::roads::road_path::path_ends(net, la.road, la.s, la.lane_id, lb.road) {
+            Some(pe) if (pe.first_exit == opendrive::ContactPoint::Start) != (la.dir > 0.0) => d,
+            _ => -d,
         }
     };
     // RoadPath::Calculate (across roads only) turns the sign once more for a start position

@@ -217,13 +217,16 @@ impl<'a> Sim<'a> {
         }
     }
 
-    /// Entity `e`'s modelled controllers in its assignment order (esmini's `Object::controllers_`:
-    /// Object::AssignController appends, and one assigned again moves to the end).
-    fn controllers_by_assignment(&self, e: usize) -> Vec<&ControllerRt> {
-        let mut v: Vec<(u64, &ControllerRt)> =
-            self.controllers.iter().filter(|c| c.entity == e).filter_map(|c| c.rt.as_ref().map(|rt| (c.assigned, rt))).collect();
-        v.sort_by_key(|(a, _)| *a);
-        v.into_iter().map(|(_, rt)| rt).collect()
+    /// The first of entity `e`'s modelled controllers, in its assignment order, that `active`
+    /// takes (esmini's `Object::controllers_`: Object::AssignController appends, and one assigned
+    /// again moves to the end).
+    fn first_active(&self, e: usize, active: impl Fn(&ControllerRt) -> bool) -> Option<&ControllerRt> {
+        self.controllers
+            .iter()
+            .filter(|c| c.entity == e)
+            .filter_map(|c| c.rt.as_ref().filter(|rt| active(rt)).map(|rt| (c.assigned, rt)))
+            .min_by_key(|(assigned, _)| *assigned)
+            .map(|(_, rt)| rt)
     }
 
     /// Whether controller `c` is active on the longitudinal domain.
@@ -263,7 +266,7 @@ impl<'a> Sim<'a> {
         if self.outside(e) {
             return true;
         }
-        self.controllers_by_assignment(e).into_iter().find(|c| Self::active_on_long(c)).is_some_and(|c| match c {
+        self.first_active(e, Self::active_on_long).is_some_and(|c| match c {
             ControllerRt::Acc(a) => a.overrides_longitudinal(),
             ControllerRt::FollowRoute(f) => f.overrides_longitudinal(),
             ControllerRt::OffroadFollower(f) => f.holds_longitudinal(),
@@ -288,10 +291,7 @@ impl<'a> Sim<'a> {
         if self.longitudinal_overridden(e) {
             return true;
         }
-        self.controllers_by_assignment(e)
-            .into_iter()
-            .find(|c| Self::active_on_long(c))
-            .is_some_and(|c| matches!(c, ControllerRt::NaturalDriver(n) if n.active && n.override_mode))
+        self.first_active(e, Self::active_on_long).is_some_and(|c| matches!(c, ControllerRt::NaturalDriver(n) if n.active && n.override_mode))
     }
 
     /// Whether an active controller of entity `e` in override mode owns its lateral or
@@ -305,7 +305,7 @@ impl<'a> Sim<'a> {
     /// engine reads no `mode` for it). Only the first controller active on either domain
     /// (assignment order) is asked.
     pub(crate) fn overrides_motion(&self, e: usize) -> bool {
-        self.controllers_by_assignment(e).into_iter().find(|c| Self::active_on_long(c) || Self::active_on_lat(c)).is_some_and(|c| match c {
+        self.first_active(e, |c| Self::active_on_long(c) || Self::active_on_lat(c)).is_some_and(|c| match c {
             ControllerRt::Acc(a) => a.overrides_longitudinal(),
             ControllerRt::Looming(l) => l.active && l.override_mode,
             ControllerRt::NaturalDriver(n) => n.active && n.override_mode,
@@ -326,7 +326,7 @@ impl<'a> Sim<'a> {
     /// OffroadFollower, an active FollowGhost or FollowReference. (ACC, ALKS, Looming and
     /// NaturalDriver operate on the longitudinal domain only.)
     pub(crate) fn lateral_overridden(&self, e: usize) -> bool {
-        self.controllers_by_assignment(e).into_iter().find(|c| Self::active_on_lat(c)).is_some_and(|c| match c {
+        self.first_active(e, Self::active_on_lat).is_some_and(|c| match c {
             ControllerRt::AlksR157(a) => a.active && a.override_mode && a.lateral,
             ControllerRt::OffroadFollower(f) => f.holds_lateral(),
             // FollowGhost and FollowReference force override mode on both domains; with a

@@ -19,28 +19,30 @@ impl Sim<'_> {
     /// straight-line distance when measured now, `None` when held (or either is inactive).
     pub(super) fn nd_cached_distance(&mut self, a: usize, b: usize, limit: f64) -> Option<f64> {
         let (ea, eb) = (self.entities.get(a)?, self.entities.get(b)?);
-        let cache = &mut self.nd_distances.next_update;
+        let cache = &mut self.nd_distances;
         if !ea.active || !eb.active {
-            cache.remove(&(a, b));
-            cache.remove(&(b, a));
+            cache.remove(a, b);
+            cache.remove(b, a);
             return None;
         }
-        let due = cache.get(&(a, b)).is_none_or(|&next| self.clock > next) || ea.teleported || eb.teleported;
+        let due = cache.get(a, b).is_none_or(|next| self.clock > next) || ea.teleported || eb.teleported;
         if !due {
             return None;
         }
         // UpdateDistance creates both orders' entries (due at once, next_update_ 0).
-        cache.entry((b, a)).or_insert(0.0);
+        if cache.get(b, a).is_none() {
+            cache.set(b, a, 0.0);
+        }
         let (dx, dy) = (eb.x - ea.x, eb.y - ea.y);
         if dx * dx + dy * dy > FAR_SQUARED {
-            cache.insert((a, b), self.clock + HOLD);
-            cache.insert((b, a), self.clock + HOLD);
+            cache.set(a, b, self.clock + HOLD);
+            cache.set(b, a, self.clock + HOLD);
             return None;
         }
         // Position::getRelativeDistance: negative unless strictly ahead of a's heading.
         let ahead = dx * ea.h.cos() + dy * ea.h.sin();
         let d = if ahead > 0.0 { 1.0 } else { -1.0 } * dx.hypot(dy);
-        cache.insert((a, b), if d > limit { self.clock + HOLD } else { self.clock });
+        cache.set(a, b, if d > limit { self.clock + HOLD } else { self.clock });
         Some(d)
     }
 }

@@ -58,9 +58,42 @@ impl NaturalDriverRt {
     }
 }
 
-/// ScenarioEngine's object_distance_map_: when each ordered pair is due again (its
-/// next_update_, on esmini's accumulated clock). Pairs are only looked up, never iterated.
+/// ScenarioEngine's object_distance_map_: when each ordered pair of entities is due again (its
+/// next_update_, on esmini's accumulated clock), a square table by entity index; NaN where the
+/// pair has no entry.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct DistanceCache {
-    pub(crate) next_update: std::collections::HashMap<(usize, usize), f64>,
+    n: usize,
+    next_update: Vec<f64>,
+}
+
+impl DistanceCache {
+    /// The entry of pair (a, b), if it has one.
+    pub(crate) fn get(&self, a: usize, b: usize) -> Option<f64> {
+        if a >= self.n || b >= self.n {
+            return None;
+        }
+        self.next_update.get(a * self.n + b).copied().filter(|t| !t.is_nan())
+    }
+
+    /// Set the entry of pair (a, b), growing the table to hold it.
+    pub(crate) fn set(&mut self, a: usize, b: usize, next: f64) {
+        let need = a.max(b) + 1;
+        if need > self.n {
+            let mut grown = vec![f64::NAN; need * need];
+            for i in 0..self.n {
+                grown[i * need..i * need + self.n].copy_from_slice(&self.next_update[i * self.n..(i + 1) * self.n]);
+            }
+            self.n = need;
+            self.next_update = grown;
+        }
+        self.next_update[a * self.n + b] = next;
+    }
+
+    /// Drop the entry of pair (a, b).
+    pub(crate) fn remove(&mut self, a: usize, b: usize) {
+        if a < self.n && b < self.n {
+            self.next_update[a * self.n + b] = f64::NAN;
+        }
+    }
 }
