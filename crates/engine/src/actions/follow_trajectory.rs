@@ -229,7 +229,10 @@ impl<'a> Sim<'a> {
         en.set_world(net, p.x, p.y, None, heading);
         en.placed_end_status = net.and_then(|n| en.end_status_from_world(n));
         if let Some(v) = start_speed {
+            // Object::SetSpeed marks the speed as set (SPEED dirty bit): prepareGroundTruth
+            // derives none from the placement jump, also when the action ends in this step.
             en.speed = speed_sign * v;
+            en.speed_set = true;
         }
 
         let clock = esmini_clock(self.time_origin(), self.dt, self.time);

@@ -17,5 +17,6 @@ mod reverse;
 mod reverse_first_vertex_heading;
 mod reverse_vertex_headings;
 mod start_at_rest;
+mod start_speed_counts_as_set;
 mod time_out_of_range;
 mod timing;
