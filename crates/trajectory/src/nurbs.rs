@@ -110,6 +110,34 @@ impl Nurbs {
         [h[0] / w, h[1] / w, h[2] / w]
     }
 
+    /// Point (x, y, z) at parameter `u` as esmini's NurbsShape::EvaluateInternal sums it: the
+    /// rational weight takes every basis value, but a control point adds to the position only
+    /// where its basis value is above SMALL_NUMBER (1e-6). Right after a knot (and at the start)
+    /// a basis value that small is left out of the sum while the weight still counts it, which
+    /// pulls the point towards the origin by up to about 1e-6 of its coordinates (a millimetre
+    /// at a thousand metres).
+    pub fn esmini_point(&self, u: f64) -> [f64; 3] {
+        let (first, vals) = self.basis_nonzero(u);
+        let mut weight = 0.0;
+        let mut sum = [0.0; 3];
+        for (r, v) in vals.iter().enumerate() {
+            let Some(c) = self.points.get(first + r) else { continue };
+            weight += v * c[3];
+        }
+        if weight == 0.0 {
+            return self.point(u);
+        }
+        for (r, v) in vals.iter().enumerate() {
+            let Some(c) = self.points.get(first + r) else { continue };
+            if *v > 1e-6 {
+                for k in 0..3 {
+                    sum[k] += v * c[k] * c[3] / weight;
+                }
+            }
+        }
+        sum
+    }
+
     /// Values of the (non-rational) basis functions N_i(u) for every control point.
     pub fn basis(&self, u: f64) -> Vec<f64> {
         let (first, vals) = self.basis_nonzero(u);

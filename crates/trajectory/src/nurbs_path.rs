@@ -61,7 +61,7 @@ impl NurbsPath {
         let du = u_max / n as f64;
         let probe = du.abs().min(TANGENT_DU);
         // NurbsShape::EvaluateInternal clamps t to the last knot less SMALL_NUMBER (1e-6).
-        let at = |u: f64| curve.point(u.clamp(a, (b - ESMINI_SMALL).max(a)));
+        let at = |u: f64| curve.esmini_point(u.clamp(a, (b - ESMINI_SMALL).max(a)));
         let mut samples: Vec<(f64, f64, f64)> = Vec::with_capacity(n + 1);
         let mut probe_u = Vec::with_capacity(n + 1);
         let mut s = 0.0;
@@ -120,7 +120,7 @@ impl NurbsPath {
         let a = if ds > 0.0 { ((s - s0) / ds).clamp(0.0, 1.0) } else { 0.0 };
         let (lo, hi) = self.curve.domain();
         let u = (u0 + a * (u1 - u0)).clamp(lo, (hi - ESMINI_SMALL).max(lo));
-        let p = self.curve.point(u);
+        let p = self.curve.esmini_point(u);
         let turn = angle::diff(h1, h0);
         let heading = match &self.cp_headings {
             Some(hs) => self.blended_heading(hs, u),

@@ -193,7 +193,10 @@ fn nurbs_full_circle_lies_on_the_circle() {
     assert!(path.length() <= 2.0 * PI * r && path.length() > 2.0 * PI * r * (1.0 - 1e-3), "{}", path.length());
     for i in 0..=200 {
         let q = path.pose_at(path.length() * i as f64 / 200.0);
-        assert!(close(q.x.hypot(q.y), r, 1e-9), "{q:?}");
+        // esmini's NurbsShape::EvaluateInternal leaves control points of basis value ≤ 1e-6
+        // out of the position's sum (not out of the weight), so just past a knot the point
+        // sits up to about 1e-6 of the radius inside the circle: 8.4e-6 m here.
+        assert!(close(q.x.hypot(q.y), r, 2e-5), "{q:?}");
         // tangent perpendicular to the radius, counter-clockwise; the first sample borrows the
         // heading of the second (esmini), so the first metre or so is off by up to one step's turn
         let expect = q.y.atan2(q.x) + FRAC_PI_2;

@@ -11,6 +11,7 @@ mod held_at_unlinked_start;
 mod nurbs_control_point_past_road_end;
 mod nurbs_headings;
 mod nurbs_reverse_first_heading;
+mod nurbs_small_basis_values;
 mod offset_start_time;
 mod past_road_end;
 mod reverse;
