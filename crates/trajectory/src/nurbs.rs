@@ -117,7 +117,17 @@ impl Nurbs {
     /// pulls the point towards the origin by up to about 1e-6 of its coordinates (a millimetre
     /// at a thousand metres).
     pub fn esmini_point(&self, u: f64) -> [f64; 3] {
-        let (first, vals) = self.basis_nonzero(u);
+        // The basis values on the stack for the usual orders (a path is evaluated per step).
+        let mut stack = [0.0; 8];
+        let mut heap = Vec::new();
+        let buf: &mut [f64] = if self.order <= stack.len() {
+            &mut stack[..self.order]
+        } else {
+            heap.resize(self.order, 0.0);
+            &mut heap
+        };
+        let first = self.basis_into(u, buf);
+        let vals: &[f64] = buf;
         let mut weight = 0.0;
         let mut sum = [0.0; 3];
         for (r, v) in vals.iter().enumerate() {
@@ -152,10 +162,18 @@ impl Nurbs {
 
     /// The order-many basis functions that may be non-zero at u: (index of the first, values).
     pub(crate) fn basis_nonzero(&self, u: f64) -> (usize, Vec<f64>) {
+        let mut nvals = vec![0.0; self.order];
+        let first = self.basis_into(u, &mut nvals);
+        (first, nvals)
+    }
+
+    /// [`Nurbs::basis_nonzero`] written into `nvals` (at least order long): the index of the
+    /// first control point; the values are `nvals[..order]`.
+    fn basis_into(&self, u: f64, nvals: &mut [f64]) -> usize {
         let (j, u) = self.span(u);
         let p = self.order - 1;
         // Cox–de Boor, triangular scheme on the p+1 functions non-zero in span j.
-        let mut nvals = vec![0.0; p + 1];
+        nvals.iter_mut().for_each(|v| *v = 0.0);
         if let Some(f) = nvals.first_mut() {
             *f = 1.0;
         }
@@ -178,6 +196,6 @@ impl Nurbs {
                 *slot = saved;
             }
         }
-        (j - p, nvals)
+        j - p
     }
 }
