@@ -5,7 +5,6 @@ mod across_roads;
 mod domain;
 mod entity_frame;
 mod entity_frame_dead_end;
-mod entity_frame_opposite_headings;
 mod jump_point_as_given;
 mod lane_path;
 mod repeated;
