@@ -13,11 +13,11 @@ use openscenario::Position;
 /// TrigByReachPosition's angularTolerance_.
 const ANGULAR_TOLERANCE: f64 = 0.05;
 
-/// Whether esmini checks the orientation: the position element has an Orientation child (a
-/// WorldPosition gives its angles as attributes and never has one).
+/// Whether esmini checks the orientation: the position element has an Orientation child. A
+/// WorldPosition gives its angles as attributes and never has one; the positions the engine
+/// cannot place never get here (the condition warns and stays false before).
 pub(super) fn has_orientation(position: &Position) -> bool {
     match position {
-        Position::World { .. } => false,
         Position::RelativeWorld { orientation, .. }
         | Position::RelativeObject { orientation, .. }
         | Position::Road { orientation, .. }
@@ -25,8 +25,8 @@ pub(super) fn has_orientation(position: &Position) -> bool {
         | Position::Lane { orientation, .. }
         | Position::RelativeLane { orientation, .. }
         | Position::Route { orientation, .. }
-        | Position::Geo { orientation, .. }
         | Position::Trajectory { orientation, .. } => orientation.is_some(),
+        _ => false,
     }
 }
 
