@@ -148,12 +148,18 @@ impl Entity {
     /// ("object at end of road and not moving, enforce zero speed"). Not moving is NEAR_ZERO:
     /// below SMALL_NUMBER (1e-6 m/s), so the rounding left by the move onto the end counts.
     pub(crate) fn stop_if_stuck_at_road_end(&mut self) {
-        use crate::dynamics::ESMINI_SMALL_NUMBER as SMALL;
-        if self.at_road_end && self.end_of_road && self.vel.0.abs() < SMALL && self.vel.1.abs() < SMALL {
+        if self.at_road_end && self.end_of_road && self.standing_still() {
             // Object::SetSpeed marks the speed as applied: it is not measured from the motion.
             self.speed = 0.0;
             self.speed_set = true;
         }
+    }
+
+    /// esmini's NEAR_ZERO of the velocity x and y (ScenarioEngine::step's end-of-road rule): the
+    /// whole last step's motion, an action's included.
+    pub(crate) fn standing_still(&self) -> bool {
+        use crate::dynamics::ESMINI_SMALL_NUMBER as SMALL;
+        self.vel.0.abs() < SMALL && self.vel.1.abs() < SMALL
     }
 
     pub(crate) fn from_scenario(scenario: &Scenario) -> Vec<Entity> {

@@ -85,12 +85,9 @@ impl<'a> Sim<'a> {
                 a.end_seen = false;
             } else if !a.end_seen {
                 a.end_seen = true;
-            } else if let Some(en) = self.entities.get_mut(e) {
-                // NEAR_ZERO of the entity's velocity: its whole last step, a lateral action's
-                // move too, not the ACC's own move alone.
-                if en.vel.0.abs() < crate::dynamics::ESMINI_SMALL_NUMBER && en.vel.1.abs() < crate::dynamics::ESMINI_SMALL_NUMBER {
-                    en.speed = 0.0;
-                }
+            } else if let Some(en) = self.entities.get_mut(e).filter(|en| en.standing_still()) {
+                // The entity's velocity, not the ACC's own move: a lateral action's move counts.
+                en.speed = 0.0;
             }
         }
     }

@@ -42,9 +42,7 @@ impl Entity {
         // XYZ2TrackPos divides fixed_t by cos(GetRRoad()) ("compensate for banking"): the roll
         // the position still holds, the road's at the position before the move.
         let roll_before = crate::roads::banking::roll_at(old_road, before.s).0;
-        let cos_roll = roll_before.cos();
-        let fixed_t =
-            (if flip { -centre } else { centre } + road.lane_offset_at(now.s)) / cos_roll.abs().max(crate::dynamics::ESMINI_SMALL_NUMBER).copysign(cos_roll);
+        let fixed_t = (if flip { -centre } else { centre } + road.lane_offset_at(now.s)) / crate::dynamics::esmini_avoid_zero(roll_before.cos());
         let sidewalks = self.kind == EntityKind::Pedestrian;
         let Some((lane_id, _)) = crate::roads::lane_snap::snap(road, section, now.s, fixed_t, sidewalks) else { return };
         if lane_id == now.lane_id && (t - fixed_t - now.offset).abs() < 1e-12 {
