@@ -95,7 +95,7 @@ impl NaturalDriverRt {
             pending: None,
             lane_change: None,
             injections: 0,
-            action_yaw: f64::NAN,
+            action_yaw: None,
         }
     }
 
@@ -117,10 +117,10 @@ impl<'a> Sim<'a> {
     /// motion as done (its dirty bits), a starting one does not.
     pub(super) fn step_natural_driver_action(&mut self, e: usize, nd: &mut NaturalDriverRt, dt: f64) {
         let time = self.time - dt;
-        // NaN: no lane change of its own stepped, and the move keeps the heading relative to
-        // the road (the driver acts on the longitudinal domain only, so nothing aligns the
-        // heading; Position::MoveAlongS keeps h_relative).
-        nd.action_yaw = f64::NAN;
+        // No lane change of its own stepped yet: the move keeps the heading relative to the
+        // road (the driver acts on the longitudinal domain only, so nothing aligns the heading;
+        // Position::MoveAlongS keeps h_relative).
+        nd.action_yaw = None;
         let mut stepped = false;
         if let Some((lane, name)) = nd.pending.take() {
             if let Some(rt) = self.nd_start_lane_change(e, lane, nd.p.lane_change_duration as f32 as f64) {
@@ -130,10 +130,10 @@ impl<'a> Sim<'a> {
         } else if let Some((mut lc, name)) = nd.lane_change.take() {
             stepped = true;
             if self.step_lane_change(e, &mut lc) {
-                nd.action_yaw = 0.0;
+                nd.action_yaw = Some(0.0);
                 self.nd_event(time, &name, "running", "end", "complete");
             } else {
-                nd.action_yaw = self.entities.get(e).map_or(0.0, |en| en.yaw_offset);
+                nd.action_yaw = Some(self.entities.get(e).map_or(0.0, |en| en.yaw_offset));
                 nd.lane_change = Some((lc, name));
             }
         }
@@ -283,8 +283,9 @@ impl<'a> Sim<'a> {
         self.events.push(StoryboardEvent { time, element: name.to_string(), from: from.into(), transition: transition.into(), to: to.into() });
     }
 
-    /// Move along the lane by speed·dt (straight on without a road), showing `yaw` off the lane.
-    fn nd_move(&mut self, e: usize, speed: f64, dt: f64, yaw: f64) {
+    /// Move along the lane by speed·dt (straight on without a road), showing `yaw` off the lane
+    /// where given (else the turn from the road the entity holds).
+    fn nd_move(&mut self, e: usize, speed: f64, dt: f64, yaw: Option<f64>) {
         let net = self.net;
         let random = &mut self.random;
         let Some(en) = self.entities.get_mut(e) else { return };
@@ -294,7 +295,7 @@ impl<'a> Sim<'a> {
                 // broken by a draw from esmini's generator.
                 let pedestrian = en.kind == crate::entities::EntityKind::Pedestrian;
                 let status = move_along_route_drawing(net, &mut lp, speed * dt, en.route.as_deref(), random, pedestrian);
-                if !yaw.is_nan() {
+                if let Some(yaw) = yaw {
                     en.yaw_offset = yaw;
                 }
                 en.set_lane_pos(net, lp);

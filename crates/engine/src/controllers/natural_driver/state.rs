@@ -47,8 +47,10 @@ pub(crate) struct NaturalDriverRt {
     pub(super) lane_change: Option<(LaneChangeRt, String)>,
     /// Injections so far (esmini numbers injected actions across the run).
     pub injections: u32,
-    /// Yaw off the lane the lane change gave the entity this frame (kept by the driver's move).
-    pub(super) action_yaw: f64,
+    /// Yaw off the lane that the driver's own lane change gave the entity this frame (kept by
+    /// the driver's move); `None` when none of its own stepped: the move keeps the heading the
+    /// entity holds relative to the road.
+    pub(super) action_yaw: Option<f64>,
 }
 
 impl NaturalDriverRt {
