@@ -10,6 +10,7 @@ use crate::pose::Pose;
 use crate::sampled::Sampled;
 use crate::spiral::Spiral;
 use crate::time_table::TimeTable;
+use crate::ESMINI_SMALL;
 
 /// Upper bound on vertices / control points / knots / segments accepted from a file.
 pub const MAX_ITEMS: usize = 100_000;
@@ -25,8 +26,6 @@ const FILTER_RADIUS: f64 = 0.1;
 const FILTER_HEADING: f64 = 0.1;
 /// ... unless the next distinct vertex is this much later (s): then the entity stands still.
 const FILTER_TIME: f64 = 1.0;
-/// esmini's SMALL_NUMBER.
-const ESMINI_SMALL: f64 = 1e-6;
 
 /// A polyline vertex as resolved: its pose, time stamp, whether its position gives a heading
 /// of its own and whether it is a relative position (esmini never merges those).

@@ -27,6 +27,10 @@ mod spiral;
 mod time_mapping;
 mod time_table;
 
+/// esmini's SMALL_NUMBER (CommonMini.hpp), the tolerance of its trajectory code: vertex
+/// filtering, the NURBS parameter clamp and which basis values count.
+const ESMINI_SMALL: f64 = 1e-6;
+
 pub use constructors::{filter_vertices, PolylineVertex, SplineSegment, MAX_ITEMS, MAX_LENGTH};
 pub use error::Error;
 pub use from_shape::{gives_heading, Placer, Resolver};

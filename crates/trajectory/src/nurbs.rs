@@ -139,7 +139,7 @@ impl Nurbs {
         }
         for (r, v) in vals.iter().enumerate() {
             let Some(c) = self.points.get(first + r) else { continue };
-            if *v > 1e-6 {
+            if *v > crate::ESMINI_SMALL {
                 for k in 0..3 {
                     sum[k] += v * c[k] * c[3] / weight;
                 }

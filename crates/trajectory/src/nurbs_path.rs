@@ -11,6 +11,7 @@ use crate::angle;
 use crate::error::Error;
 use crate::nurbs::Nurbs;
 use crate::pose::PathPoint;
+use crate::ESMINI_SMALL;
 
 /// Control-polygon length per sample (m), as esmini's NURBS_STEPLENGTH.
 const STEP_LENGTH: f64 = 1.0;
@@ -19,8 +20,6 @@ const TANGENT_DU: f64 = 0.001;
 /// Points closer than this count as coincident (esmini's SMALL_NUMBER).
 const SMALL: f64 = 1e-10;
 const MAX_SAMPLES: usize = 200_000;
-/// Basis values at or below this do not count in the heading blend (esmini's SMALL_NUMBER).
-const ESMINI_SMALL: f64 = 1e-6;
 
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct NurbsPath {
