@@ -98,6 +98,17 @@ impl Path {
         }
     }
 
+    /// [`Path::true_heading_at`] as esmini's trajectory holds it after evaluating `s`
+    /// (`RMTrajectory::GetHTrue`): on a polyline exactly at a vertex, the heading of the segment
+    /// that ends there.
+    pub fn true_heading_reaching(&self, s: f64) -> f64 {
+        let s = self.normalize_s(s);
+        match &self.curve {
+            Curve::Polyline(p) => p.heading_of_segment_reaching(s),
+            _ => self.eval(s).heading,
+        }
+    }
+
     /// Pitch at `s` from the vertices' heights: a polyline's, blended across corners; 0 for
     /// the other shapes (their points carry no heights of their own).
     pub fn pitch_at(&self, s: f64) -> f64 {

@@ -10,6 +10,7 @@
 
 use crate::angle;
 use crate::pose::PathPoint;
+use crate::ESMINI_SMALL;
 
 /// Half-width of esmini's corner blending (at most half the segment).
 const CORNER_RADIUS: f64 = 2.0;
@@ -75,6 +76,15 @@ impl Polyline {
     fn segment_at(&self, s: f64) -> usize {
         let nseg = self.headings.len();
         self.pts.partition_point(|p| p[3] <= s).saturating_sub(1).min(nseg.saturating_sub(1))
+    }
+
+    /// The heading of the first segment that reaches `s` within esmini's SMALL_NUMBER
+    /// (PolyLineBase::Evaluate's search): at a vertex, the segment that ends there; at and past
+    /// the end, the last.
+    pub(crate) fn heading_of_segment_reaching(&self, s: f64) -> f64 {
+        let nseg = self.headings.len();
+        let i = self.pts.get(1..).map_or(0, |rest| rest.partition_point(|p| p[3] + ESMINI_SMALL < s));
+        self.heading(Some(i.min(nseg.saturating_sub(1)))).unwrap_or(0.0)
     }
 
     /// The segments before and after segment `i` (across the end of a closed polyline).

@@ -218,9 +218,11 @@ impl<'a> Sim<'a> {
         let vertices = if timing.is_some() && path.is_polyline() { polyline_timing(&path, mode == FollowingMode::Follow, entity_speed) } else { None };
         let start_speed = timing.map(|_| start_speed(s, vertices.as_deref()));
         let p = path.pose_at(s);
+        // esmini's Start: a timed trajectory's speed takes its sign from how the heading its
+        // vertices give lies to the path (speedSign, only where the heading is explicit).
+        let timed_sign = if all_headings || (s == 0.0 && first_heading) { facing_sign(p.heading, path.true_heading_reaching(s)) } else { 1.0 };
         let (heading, heading_sign) = if faces_vertex_headings {
-            let off = wrap(p.heading - path.true_heading_at(s)).abs();
-            (p.heading, if off > std::f64::consts::FRAC_PI_2 + SMALL_NUMBER { -1.0 } else { 1.0 })
+            (p.heading, facing_sign(p.heading, path.true_heading_at(s)))
         } else {
             (p.heading + if speed_sign < 0.0 { std::f64::consts::PI } else { 0.0 }, speed_sign)
         };
@@ -231,7 +233,8 @@ impl<'a> Sim<'a> {
         if let Some(v) = start_speed {
             // Object::SetSpeed marks the speed as set (SPEED dirty bit): prepareGroundTruth
             // derives none from the placement jump, also when the action ends in this step.
-            en.speed = speed_sign * v;
+            // A timed path whose vertex headings face against it starts with a negative speed.
+            en.speed = timed_sign * v;
             en.speed_set = true;
         }
 
@@ -275,6 +278,7 @@ impl<'a> Sim<'a> {
         // entity's speed: its clock stands still (so its time stamps never end it) and the
         // speed stays the controller's.
         let speed_held = f.timing.is_some() && self.long_domain_overridden(e);
+        let heading_direction = if f.timing.is_some() { facing_sign(en.h, f.path.true_heading_reaching(old_s)) } else { 1.0 };
         match f.timing.filter(|_| !speed_held) {
             None => {
                 let ds = direction * speed.abs() * dt;
@@ -303,12 +307,15 @@ impl<'a> Sim<'a> {
                 };
                 if dt > ESMINI_SMALL_NUMBER && reached < end + ESMINI_SMALL_NUMBER {
                     // Relative timing takes the speed's sign from the way s moved (esmini's
-                    // movingDirection_ = SIGN(Δs)); absolute timing keeps it positive.
+                    // movingDirection_ = SIGN(Δs)); absolute timing keeps it positive. Both
+                    // turn it when the entity, before the move, faced more than π/2 away from
+                    // the path where it stood (headingDirection: vertices whose headings point
+                    // against the path, or a polyline turning back further than the entity).
                     let sign = match m.domain {
                         TimeDomain::Relative => esmini_sign(f.s - old_s),
                         TimeDomain::Absolute => 1.0,
                     };
-                    new_speed = sign * (f.s - old_s).abs() / dt;
+                    new_speed = sign * heading_direction * (f.s - old_s).abs() / dt;
                 }
             }
         }
@@ -376,6 +383,16 @@ impl<'a> Sim<'a> {
         }
         f.clock += dt;
         done
+    }
+}
+
+/// −1 when `heading` lies more than π/2 (and esmini's SMALL_NUMBER) from the path's own
+/// direction `true_heading`, else +1 (FollowTrajectoryAction's speedSign and headingDirection).
+fn facing_sign(heading: f64, true_heading: f64) -> f64 {
+    if wrap(heading - true_heading).abs() > std::f64::consts::FRAC_PI_2 + ESMINI_SMALL_NUMBER {
+        -1.0
+    } else {
+        1.0
     }
 }
 

@@ -20,4 +20,5 @@ mod reverse_vertex_headings;
 mod start_at_rest;
 mod start_speed_counts_as_set;
 mod time_out_of_range;
+mod timed_speed_sign;
 mod timing;
