@@ -26,7 +26,21 @@ impl<'a> Sim<'a> {
                     en.route = Some(Arc::new(r));
                 }
             }
-            Err(msg) => self.warn_action(slot, format!("AssignRouteAction: route `{}` cannot be planned: {msg}", route.name)),
+            // esmini's Route::AddWaypoint marks a route without a way between two waypoints
+            // invalid, CheckValid then drops its waypoints, and AssignRouteAction::Start still
+            // gives the entity that empty route: it replaces the route it had.
+            Err(msg) => {
+                self.warn_action(
+                    slot,
+                    format!(
+                        "AssignRouteAction: route `{}` cannot be planned: {msg}; as in esmini, the entity drops the route it had and drives on without one",
+                        route.name
+                    ),
+                );
+                if let Some(en) = self.entities.get_mut(e) {
+                    en.route = None;
+                }
+            }
         }
         ActionRt::Done
     }

@@ -2,6 +2,7 @@
 
 mod add_delete_entity;
 mod assign_controller_never_ends;
+mod assign_invalid_route;
 mod basic;
 mod executed_again;
 mod lane_change;
