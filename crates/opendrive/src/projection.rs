@@ -240,6 +240,22 @@ impl RoadNetwork {
         hint: Option<usize>,
         surface_t: &dyn Fn(&Road, f64, f64) -> f64,
     ) -> Option<LanePosition> {
+        self.world_to_lane_ranked(x, y, z, hint, surface_t, None)
+    }
+
+    /// [`Self::world_to_lane_at_height`] where roads containing the point alike are ranked by
+    /// `rank` (lower first, then the network's order) after the hinted road, in place of the
+    /// nearest lane centre (esmini's XYZ2TrackPos with a current road: a road directly
+    /// connected to it replaces an equally close one, any other road only a farther one).
+    pub fn world_to_lane_ranked(
+        &self,
+        x: f64,
+        y: f64,
+        z: Option<f64>,
+        hint: Option<usize>,
+        surface_t: &dyn Fn(&Road, f64, f64) -> f64,
+        rank: Option<&dyn Fn(usize) -> u8>,
+    ) -> Option<LanePosition> {
         let mut ids = Vec::new();
         self.near_segments(x, y, &mut ids);
         let mut cands = Vec::new();
@@ -252,9 +268,15 @@ impl RoadNetwork {
             let better = match &best {
                 None => true,
                 Some((b, wb)) => {
-                    // With a current road esmini weighs roads by their connection to it
-                    // (not modelled): the nearest lane centre stands in for that.
-                    let centre = |q: &LanePosition| if hint.is_some() { q.offset.abs() } else { 0.0 };
+                    // Among roads that contain the point alike: the hinted road first, then
+                    // the caller's rank (esmini: roads directly connected to the current road),
+                    // then the file's order; a caller with a hint and no rank still takes the
+                    // nearest lane centre.
+                    let centre = |q: &LanePosition| match rank {
+                        Some(r) => f64::from(r(q.road)),
+                        None if hint.is_some() => q.offset.abs(),
+                        None => 0.0,
+                    };
                     let key = |q: &LanePosition| (if Some(q.road) == hint { 0 } else { 1 }, centre(q), q.road);
                     let (kp, kb) = (key(&p), key(b));
                     if weighed == 0.0 && *wb == 0.0 {

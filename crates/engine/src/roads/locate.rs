@@ -80,7 +80,14 @@ pub(crate) fn world_to_lane_at(
             return Some(unshifted(net, arm, x, y));
         }
     }
-    let found = net.world_to_lane_at_height(x, y, z, hint.map(|h| h.0), &surface_t);
+    // Off the current road, roads containing the point alike: one directly connected to the
+    // current road (from its lane) first, then the network's order (XYZ2TrackPos).
+    let connected = current.map(|(road, _, lane_id)| super::junction_entry::directly_connected(net, road, lane_id));
+    let rank = |r: usize| u8::from(!connected.as_ref().is_some_and(|c| c.contains(&r)));
+    let found = match current {
+        Some(_) => net.world_to_lane_ranked(x, y, z, hint.map(|h| h.0), &surface_t, Some(&rank)),
+        None => net.world_to_lane_at_height(x, y, z, hint.map(|h| h.0), &surface_t),
+    };
     match (hint, found) {
         (None, Some(lp)) => Some(on_chosen_segment(net, lp, x, y, z.unwrap_or(0.0)).unwrap_or(lp)),
         _ => found.map(|p| offset_road_s(net, unshifted(net, p, x, y), x, y)),

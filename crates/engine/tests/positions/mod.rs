@@ -22,6 +22,7 @@ mod route_position_on_missing_lane;
 mod route_position_past_route_end;
 mod trajectory_position_polyline_headings;
 mod world_point_beside_a_road_end;
+mod world_point_leaving_its_road_on_overlapping_roads;
 mod world_point_off_road;
 mod world_point_on_overlapping_roads;
 mod world_point_on_road_past_a_bend;
