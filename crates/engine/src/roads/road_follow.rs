@@ -325,7 +325,15 @@ fn junction_arm_on_route(
     let leads_to_target = |c: &&LaneRef| target.is_some() && far_end(net, c.road, here.road) == target;
     let on_route = |c: &&LaneRef| route.legs().iter().any(|l| l.road == c.road);
     let pick = cands.iter().filter(leads_to_target).find(on_route).or_else(|| cands.iter().rfind(leads_to_target)).or(cands.first())?;
-    let contact = net.roads_at(here.road, end).into_iter().find(|e| e.road == pick.road).map_or(ContactPoint::Start, |e| e.contact);
+    // MoveToConnectingRoad enters at the contact point the connection names (a counter
+    // connection's is the flip of its original's, whatever the geometry), as without a route.
+    let contact = entering
+        .iter()
+        .find(|c| c.connecting == pick.road && c.lane_links.iter().any(|&(from, _)| from == here.lane))
+        .or_else(|| entering.iter().find(|c| c.connecting == pick.road))
+        .map(|c| c.contact)
+        .or_else(|| net.roads_at(here.road, end).into_iter().find(|e| e.road == pick.road).map(|e| e.contact))
+        .unwrap_or(ContactPoint::Start);
     Some((*pick, contact))
 }
 

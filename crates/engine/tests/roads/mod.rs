@@ -14,6 +14,7 @@ mod looming_lane_lock_on_steep_bank;
 mod raised_lanes;
 mod reversing_through_junctions;
 mod road_link_without_lane_links;
+mod route_into_counter_connection;
 mod sloped_banked;
 mod straight_heading_either_side_of_zero;
 mod superelevation;
