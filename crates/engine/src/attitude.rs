@@ -151,6 +151,20 @@ pub(crate) fn on_road(road: &Road, s: f64, t: f64, h_rel: f64, offset_h_rel: f64
     Some(compose([h_road, -slope.atan(), roll], [h_rel, p_offset, 0.0]))
 }
 
+/// The heading esmini's position holds after SetInertiaPosMode(x, y, 0, h, 0, 0, Z_ABS | H_ABS |
+/// P_REL | R_ABS) (ControllerOffroadFollower::Step): EvaluateHPR composes the road's heading
+/// and pitch but no roll (R_ABS) with (h − h_road, GetPOffset, 0), so on a road without slope
+/// the heading is `h` itself, whatever the banking. `None` where the road has no slope.
+/// (GetPOffset left out: it turns the heading only together with a slope.)
+pub(crate) fn heading_roll_absolute(road: &Road, s: f64, h: f64) -> Option<f64> {
+    let slope = road.elevation_slope_at(s);
+    if slope == 0.0 {
+        return None;
+    }
+    let h_road = crate::roads::pose_memo::reference_pose(road, s).hdg;
+    Some(compose([h_road, -slope.atan(), 0.0], [crate::angles::angle_difference(h, h_road), 0.0, 0.0])[0])
+}
+
 /// The orientation esmini's Position::EvaluateRelation leaves a RelativeObject- or
 /// RelativeWorldPosition at (s, t) of `road` (t along the surface; `drift`: the lane's
 /// GetHOffset there), given the absolute orientation `abs` it asked for (the entity's heading,

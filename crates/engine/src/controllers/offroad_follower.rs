@@ -94,6 +94,19 @@ impl<'a> Sim<'a> {
         let throttle = (0.5 * (dist - f.target_distance) - 0.5 * (me.speed - lead.speed)).clamp(-1.0, 1.0);
         v.drive(dt, throttle, steering);
         if self.place_driven(e, &v.car) {
+            // ControllerOffroadFollower::Step sets the roll absolute (0): no banking turns the
+            // heading the model drives with (set_world composed it, as a plain SetInertiaPos).
+            let net = self.net;
+            if let Some(en) = self.entities.get_mut(e) {
+                if let (Some(net), Some(lp), Some(mut a)) = (net, en.lane, en.placed_attitude) {
+                    let h = crate::angles::wrap_2pi(v.car.h);
+                    let h = net.roads.get(lp.road).and_then(|r| crate::attitude::heading_roll_absolute(r, lp.s, h)).map_or(h, crate::angles::wrap_2pi);
+                    en.h = h;
+                    a.pose.2 = h;
+                    a.roll = 0.0;
+                    en.placed_attitude = Some(a);
+                }
+            }
             f.vehicle = Some(v);
         }
     }

@@ -30,4 +30,5 @@ mod natural_driver_leader_across_junction;
 mod natural_driver_look_ahead_along_roads;
 mod natural_driver_standing_start;
 mod offroad_follower;
+mod offroad_follower_roll_absolute;
 mod teleport_under_controllers;
