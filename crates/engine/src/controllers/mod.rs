@@ -291,7 +291,11 @@ impl<'a> Sim<'a> {
         if self.longitudinal_overridden(e) {
             return true;
         }
-        self.first_active(e, Self::active_on_long).is_some_and(|c| matches!(c, ControllerRt::NaturalDriver(n) if n.active && n.override_mode))
+        // (ControllerFollowGhost is in override mode on the domains it is active on.)
+        self.first_active(e, Self::active_on_long).is_some_and(|c| {
+            matches!(c, ControllerRt::NaturalDriver(n) if n.active && n.override_mode)
+                || matches!(c, ControllerRt::FollowGhost(f) if f.active && f.longitudinal)
+        })
     }
 
     /// Whether an active controller of entity `e` in override mode owns its lateral or

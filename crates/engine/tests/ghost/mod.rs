@@ -10,6 +10,7 @@ mod end_of_road_head_start;
 mod follow;
 mod head_start_holds_others;
 mod init_trajectory_position;
+mod lateral_distance_waits_on_follower;
 mod lateral_only;
 mod relative_lane_reference;
 mod restart;
