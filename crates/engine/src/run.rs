@@ -315,6 +315,10 @@ fn frame(sim: &mut Sim, before: &mut [Before], t: f64, dt: f64) -> bool {
     sim.clock += dt;
     if restarting {
         sim.hold_during_restart();
+        // ScenarioEngine::step steps injected actions (a NaturalDriver's lane change) whatever
+        // the ghost mode; LatLaneChangeAction::Step only returns early for a non-ghost while
+        // the (rewound) time before the step is below 0.
+        sim.step_injected_during_restart(t, dt);
     } else {
         sim.step_controllers(dt);
     }

@@ -106,6 +106,14 @@ impl<'a> Sim<'a> {
         };
         let (target_speed, tx, ty) = match (speed_point, steer_point) {
             (Some(sp), Some(st)) => (sp.speed, st.x, st.y),
+            // In position mode an empty trail (the step a restart cleared it, TeleportAction::
+            // Start) is no error to esmini's FindPointAhead (it says "past the end"): the points
+            // stay default TrajVertex values, so the car steers at the world origin with target
+            // speed 0, and the segment index is left undefined (the next search starts at 0).
+            _ if f.mode == FollowMode::Position && trail.vertices.is_empty() => {
+                f.follow_index = 0;
+                (0.0, 0.0, 0.0)
+            }
             _ => (0.0, x, y),
         };
         // Heading error to the steering point: asin of the cross product of unit vectors.

@@ -342,6 +342,34 @@ impl<'a> Sim<'a> {
         })
     }
 
+    /// While the ghost's run is rewound (RESTARTING) controllers do not step, but injected
+    /// actions do: a NaturalDriver's pending lane change starts, a running one steps once the
+    /// time before the step (`t`) is no longer below 0 (LatLaneChangeAction::Step).
+    pub(crate) fn step_injected_during_restart(&mut self, t: f64, dt: f64) {
+        if !self.any_controller {
+            return;
+        }
+        for k in 0..self.controllers.len() {
+            let Some(e) = self.controllers.get(k).map(|c| c.entity) else { continue };
+            let runs = matches!(self.controllers[k].rt.as_ref(), Some(ControllerRt::NaturalDriver(a))
+                if a.active && (a.lane_change_pending() || (a.changes_lane() && t > -crate::dynamics::ESMINI_SMALL_NUMBER)));
+            if !runs {
+                continue;
+            }
+            let Some(mut rt) = self.controllers.get_mut(k).and_then(|c| c.rt.take()) else { continue };
+            if let ControllerRt::NaturalDriver(a) = &mut rt {
+                self.step_natural_driver_action(e, a, dt);
+                // the default controller stays off (hold_during_restart)
+                if let Some(en) = self.entities.get_mut(e) {
+                    en.moved_by_action = true;
+                }
+            }
+            if let Some(slot) = self.controllers.get_mut(k) {
+                slot.rt = Some(rt);
+            }
+        }
+    }
+
     /// Step every active controller by `dt` (after the storyboard, before the default controller).
     pub(crate) fn step_controllers(&mut self, dt: f64) {
         if !self.any_controller {

@@ -14,6 +14,7 @@ mod lateral_distance_waits_on_follower;
 mod lateral_only;
 mod relative_lane_reference;
 mod restart;
+mod restart_steps_injected_lane_change;
 mod shares_trailer_hitch;
 mod steps_while_away;
 mod teleport_relative_to_entity;

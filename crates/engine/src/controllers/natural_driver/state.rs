@@ -54,6 +54,11 @@ pub(crate) struct NaturalDriverRt {
 }
 
 impl NaturalDriverRt {
+    /// Whether its injected lane change waits to start.
+    pub(crate) fn lane_change_pending(&self) -> bool {
+        self.pending.is_some()
+    }
+
     /// Whether its injected lane change is started or running.
     pub(crate) fn changes_lane(&self) -> bool {
         self.pending.is_some() || self.lane_change.is_some()
