@@ -78,6 +78,20 @@ fn attached_elsewhere(net: &RoadNetwork, en: &crate::entities::Entity, attached:
     Some((LanePos { road: found.road, lane_id, s: found.s, offset, dir: attached.dir }, on_road))
 }
 
+/// Where XYZ2TrackPos leaves the position on its own road: at the s it interpolates on the
+/// lane-0 OSI segment (between the vertices' normals, by angle), x and y kept. On curved
+/// geometry that is millimetres to centimetres from the exact projection; the internal position
+/// goes on from its exact s, but whatever moves the entity from its position after this step
+/// (an ACC in override mode, the first default move after the change) starts from this s.
+fn on_own_road_segment(net: &RoadNetwork, en: &crate::entities::Entity, attached: &LanePos, sidewalks: bool) -> Option<LanePos> {
+    let found = crate::roads::locate::on_segment_near(net, attached.road, en.x, en.y, en.z, attached.s)?;
+    if found.s == attached.s {
+        return None;
+    }
+    let (lane_id, offset) = crate::roads::lane_snap::snap_located(net, &found, sidewalks);
+    Some(LanePos { lane_id, s: found.s, offset, ..*attached })
+}
+
 /// The lane a position locked on its lane (a looming controller's) is attached to after a lane
 /// change step: esmini's XYZ2TrackPos with `lockOnLane_` takes the lane of the snapped-to types
 /// nearest the centre of the lane the position is in (`fixed_t`), keeps the offset from that
@@ -297,6 +311,8 @@ impl<'a> Sim<'a> {
                 en.lane = Some(other);
                 en.on_road = on_road;
                 attached = other;
+            } else if let Some(lp) = on_own_road_segment(net, en, &attached, sidewalks) {
+                en.lane = Some(lp);
             }
         }
         if locked && en.route.is_none() {

@@ -212,6 +212,14 @@ fn on_chosen_segment(net: &RoadNetwork, lp: LanePosition, x: f64, y: f64, z: f64
     net.locate_at_s_by(lp.road, x, y, s, &surface_t)
 }
 
+/// (x, y) on `road` at the s XYZ2TrackPos interpolates on the lane-0 OSI segment among the
+/// points around `s_near` (its first round on the current road; see
+/// [`super::track_pos::segment_s_near`]), the offset measured across the road there.
+pub(crate) fn on_segment_near(net: &RoadNetwork, road: usize, x: f64, y: f64, z: f64, s_near: f64) -> Option<LanePosition> {
+    let s = super::track_pos::segment_s_near(net.roads.get(road)?, x, y, z, s_near)?;
+    net.locate_at_s_by(road, x, y, s, &surface_t)
+}
+
 /// [`world_to_lane`] from a current road, at the s XYZ2TrackPos interpolates on the lane-0 OSI
 /// segment of the road found (asked at height `z`): for a jump, where the point may lie far off
 /// the road and the segment's s then differs from the exact projection's by metres.

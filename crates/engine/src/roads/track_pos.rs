@@ -209,16 +209,37 @@ pub(crate) fn segment_s(road: &Road, x: f64, y: f64, z_input: f64) -> Option<f64
 /// [`segment_s`] and the weighed distance of the segment chosen, by which XYZ2TrackPos
 /// compares roads (the smallest wins, the first road in the file at a tie).
 pub(crate) fn segment_choice(road: &Road, x: f64, y: f64, z_input: f64) -> Option<(f64, f64)> {
+    segment_choice_in(road, x, y, z_input, None)
+}
+
+/// [`segment_s`] over the OSI points around the one nearest `s_near` only: XYZ2TrackPos's
+/// first round on the current road, for a point within 5 m of where the position was, scans
+/// ten points from five before the vertex it last chose (`search_win`).
+pub(crate) fn segment_s_near(road: &Road, x: f64, y: f64, z_input: f64, s_near: f64) -> Option<f64> {
+    let scan = scan_of(road);
+    let pts = &scan.pts;
+    let i = pts.partition_point(|p| p.s <= s_near).saturating_sub(1);
+    let nearest = if pts.get(i + 1).is_some_and(|q| q.s - s_near < s_near - pts[i].s) { i + 1 } else { i };
+    let lo = nearest.saturating_sub(SEARCH_WINDOW / 2);
+    segment_choice_in(road, x, y, z_input, Some((lo, lo + SEARCH_WINDOW))).map(|(s, _)| s)
+}
+
+/// The OSI points XYZ2TrackPos's first round scans on the current road.
+const SEARCH_WINDOW: usize = 10;
+
+/// [`segment_choice`] over the segments starting at the vertices of `window` (all when `None`).
+fn segment_choice_in(road: &Road, x: f64, y: f64, z_input: f64, window: Option<(usize, usize)>) -> Option<(f64, f64)> {
     let scan = scan_of(road);
     let pts = &scan.pts;
     let n = pts.len();
     if n < 2 {
         return None;
     }
+    let (lo, hi) = window.map_or((0, n), |(lo, hi)| (lo.min(n - 1), hi.min(n)));
     let mut best = f64::INFINITY;
     let mut chosen: Option<usize> = None;
-    // The segments, and the last vertex alone (the scan's extra round).
-    for (a, b) in (0..n - 1).map(|i| (i, i + 1)).chain(std::iter::once((n - 1, n - 1))) {
+    // The segments, and the last vertex alone (the scan's extra round) when the window reaches it.
+    for (a, b) in (lo..hi.min(n - 1)).map(|i| (i, i + 1)).chain((hi == n).then_some((n - 1, n - 1))) {
         let (pa, pb) = (scan.pos[a], scan.pos[b]);
         let (cos_h, sin_h) = scan.dir[a];
         let cp = cos_h * (y - pa.1) - sin_h * (x - pa.0);

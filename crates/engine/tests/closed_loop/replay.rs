@@ -1,7 +1,8 @@
 //! Closed loop, replayed: the ego driven from outside and fed, step by step, the states it had
 //! in the open-loop run. With the outside replacing the scripted motion
 //! (`ScriptedMotion::Replaced`) every entity of every compared corpus scenario is where the
-//! open-loop run had it, within 1e-8 (`REPLAYED`). Under esmini's override rule (the default) the ego's own
+//! open-loop run had it, within 1e-8 (`REPLAYED`), or within 0.1 mm where the open-loop ego's
+//! road s came from a lane change's OSI-segment attachment (`REPLAYED_FROM_SEGMENT_S`). Under esmini's override rule (the default) the ego's own
 //! motion actions end at once or never, its driver model is not stepped, its end-of-road
 //! status comes a step later (esmini's order), so the storyboard may take another course: then
 //! the run says so, naming the ego as driven from outside.
@@ -47,9 +48,29 @@ fn worst_difference(open: &engine::Trace, closed: &engine::Trace) -> (f64, Strin
     worst
 }
 
+/// Whether the ego's road s differs between the runs somewhere its pose agrees: in the open
+/// loop a lane change leaves its s where esmini's XYZ2TrackPos interpolates it on the OSI
+/// segment (millimetres from the exact projection on curved roads), a pose fed from outside is
+/// located by the exact projection.
+fn ego_s_differs(open: &engine::Trace, closed: &engine::Trace, ego: usize) -> bool {
+    let (Some(a), Some(b)) = (open.entities.get(ego), closed.entities.get(ego)) else { return false };
+    a.samples.iter().zip(&b.samples).any(|(x, y)| match (x, y) {
+        (Some(x), Some(y)) => {
+            (x.x - y.x).abs() < 1e-8 && (x.y - y.y).abs() < 1e-8 && matches!((x.road, y.road), (Some(p), Some(q)) if (p.s - q.s).abs() > 1e-8)
+        }
+        _ => false,
+    })
+}
+
+/// How far the others may then follow the ego's s: a lateral or longitudinal distance action
+/// measured from it moves by what the s moved, micrometres.
+const REPLAYED_FROM_SEGMENT_S: f64 = 1e-4;
+
 struct Replayed {
     file: PathBuf,
     worst: (f64, String),
+    /// The ego's s came from the OSI segment in the open loop (`ego_s_differs`).
+    ego_segment_s: bool,
     /// A warning names the ego as driven from outside.
     said: bool,
 }
@@ -80,7 +101,12 @@ fn replay_corpus(motion: ScriptedMotion) -> Vec<Replayed> {
         }
         let closed = sim.finish();
         let said = closed.warnings.iter().any(|w| w.message.contains(&format!("`{}`", names[ego])) && w.message.contains("driven from outside"));
-        out.push(Replayed { file: f.clone(), worst: worst_difference(&open.trace, &closed.trace), said });
+        out.push(Replayed {
+            file: f.clone(),
+            worst: worst_difference(&open.trace, &closed.trace),
+            ego_segment_s: ego_s_differs(&open.trace, &closed.trace, ego),
+            said,
+        });
     }
     out
 }
@@ -95,8 +121,9 @@ const REPLAYED: f64 = 1e-8;
 #[test]
 fn the_outside_replacing_the_scripted_motion_reproduces_every_open_loop_run() {
     let runs = replay_corpus(ScriptedMotion::Replaced);
-    let off: Vec<String> = runs.iter().filter(|r| r.worst.0 > REPLAYED).map(|r| format!("{}: {:.3e} {}", r.file.display(), r.worst.0, r.worst.1)).collect();
-    eprintln!("replaced: {} of {} replay within {REPLAYED:e}", runs.len() - off.len(), runs.len());
+    let bound = |r: &Replayed| if r.ego_segment_s { REPLAYED_FROM_SEGMENT_S } else { REPLAYED };
+    let off: Vec<String> = runs.iter().filter(|r| r.worst.0 > bound(r)).map(|r| format!("{}: {:.3e} {}", r.file.display(), r.worst.0, r.worst.1)).collect();
+    eprintln!("replaced: {} of {} replay within their bound", runs.len() - off.len(), runs.len());
     assert!(off.is_empty(), "replays that differ from the open-loop run:\n{}", off.join("\n"));
 }
 

@@ -7,6 +7,7 @@ mod at_standstill_keeps_road_end_stop;
 mod end_with_dangling_link;
 mod into_junction;
 mod missing_lane;
+mod segment_s;
 mod standing_aligns;
 mod step;
 mod target_lane_drift;
