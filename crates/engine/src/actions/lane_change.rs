@@ -82,14 +82,21 @@ fn attached_elsewhere(net: &RoadNetwork, en: &crate::entities::Entity, attached:
 /// lane-0 OSI segment (between the vertices' normals, by angle), x and y kept. On curved
 /// geometry that is millimetres to centimetres from the exact projection; the internal position
 /// goes on from its exact s, but whatever moves the entity from its position after this step
-/// (an ACC in override mode, the first default move after the change) starts from this s.
-fn on_own_road_segment(net: &RoadNetwork, en: &crate::entities::Entity, attached: &LanePos, sidewalks: bool) -> Option<LanePos> {
-    let found = crate::roads::locate::on_segment_near(net, attached.road, en.x, en.y, en.z, attached.s)?;
-    if found.s == attached.s {
+/// (an ACC in override mode, the first default move after the change) starts from this s. The
+/// lane and t stay the exact projection's (moving s by centimetres along a curve moves t by less
+/// than a micrometre); the offset is taken from the lane centre at the new s.
+fn on_own_road_segment(net: &RoadNetwork, en: &crate::entities::Entity, attached: &LanePos) -> Option<LanePos> {
+    let s = crate::roads::locate::segment_s_near(net, attached.road, en.x, en.y, attached.s)?;
+    if s == attached.s {
         return None;
     }
-    let (lane_id, offset) = crate::roads::lane_snap::snap_located(net, &found, sidewalks);
-    Some(LanePos { lane_id, s: found.s, offset, ..*attached })
+    let road = net.roads.get(attached.road)?;
+    let centre = |s| crate::roads::lane_geometry::lane_center_t(road, attached.lane_id, s);
+    let offset = match (centre(attached.s), centre(s)) {
+        (Some(a), Some(b)) => attached.offset + a - b,
+        _ => attached.offset,
+    };
+    Some(LanePos { s, offset, ..*attached })
 }
 
 /// The lane a position locked on its lane (a looming controller's) is attached to after a lane
@@ -311,7 +318,7 @@ impl<'a> Sim<'a> {
                 en.lane = Some(other);
                 en.on_road = on_road;
                 attached = other;
-            } else if let Some(lp) = on_own_road_segment(net, en, &attached, sidewalks) {
+            } else if let Some(lp) = on_own_road_segment(net, en, &attached) {
                 en.lane = Some(lp);
             }
         }

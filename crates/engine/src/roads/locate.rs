@@ -212,12 +212,20 @@ fn on_chosen_segment(net: &RoadNetwork, lp: LanePosition, x: f64, y: f64, z: f64
     net.locate_at_s_by(lp.road, x, y, s, &surface_t)
 }
 
-/// (x, y) on `road` at the s XYZ2TrackPos interpolates on the lane-0 OSI segment among the
-/// points around `s_near` (its first round on the current road; see
-/// [`super::track_pos::segment_s_near`]), the offset measured across the road there.
-pub(crate) fn on_segment_near(net: &RoadNetwork, road: usize, x: f64, y: f64, z: f64, s_near: f64) -> Option<LanePosition> {
-    let s = super::track_pos::segment_s_near(net.roads.get(road)?, x, y, z, s_near)?;
-    net.locate_at_s_by(road, x, y, s, &surface_t)
+/// The s XYZ2TrackPos interpolates for (x, y) on the lane-0 OSI segment of `road` holding
+/// `s_near`, the point's exact projection ([`super::track_pos::segment_s_near`]). `None` inside
+/// a line geometry (a metre or more from its ends) of a road without a varying lane offset,
+/// where that s is the exact projection's: lane 0's vertices there share one heading and
+/// XYZ2TrackPos projects on their line.
+pub(crate) fn segment_s_near(net: &RoadNetwork, road: usize, x: f64, y: f64, s_near: f64) -> Option<f64> {
+    let r = net.roads.get(road)?;
+    if let Some(g) = r.geometries.get(r.geometry_index_at(s_near)) {
+        let straight_lane0 = r.lane_offsets.iter().all(|o| o.b == 0.0 && o.c == 0.0 && o.d == 0.0);
+        if straight_lane0 && matches!(g.shape, opendrive::Shape::Line) && s_near - g.s >= 1.0 && g.s + g.length - s_near >= 1.0 {
+            return None;
+        }
+    }
+    super::track_pos::segment_s_near(r, x, y, s_near)
 }
 
 /// [`world_to_lane`] from a current road, at the s XYZ2TrackPos interpolates on the lane-0 OSI

@@ -209,37 +209,16 @@ pub(crate) fn segment_s(road: &Road, x: f64, y: f64, z_input: f64) -> Option<f64
 /// [`segment_s`] and the weighed distance of the segment chosen, by which XYZ2TrackPos
 /// compares roads (the smallest wins, the first road in the file at a tie).
 pub(crate) fn segment_choice(road: &Road, x: f64, y: f64, z_input: f64) -> Option<(f64, f64)> {
-    segment_choice_in(road, x, y, z_input, None)
-}
-
-/// [`segment_s`] over the OSI points around the one nearest `s_near` only: XYZ2TrackPos's
-/// first round on the current road, for a point within 5 m of where the position was, scans
-/// ten points from five before the vertex it last chose (`search_win`).
-pub(crate) fn segment_s_near(road: &Road, x: f64, y: f64, z_input: f64, s_near: f64) -> Option<f64> {
-    let scan = scan_of(road);
-    let pts = &scan.pts;
-    let i = pts.partition_point(|p| p.s <= s_near).saturating_sub(1);
-    let nearest = if pts.get(i + 1).is_some_and(|q| q.s - s_near < s_near - pts[i].s) { i + 1 } else { i };
-    let lo = nearest.saturating_sub(SEARCH_WINDOW / 2);
-    segment_choice_in(road, x, y, z_input, Some((lo, lo + SEARCH_WINDOW))).map(|(s, _)| s)
-}
-
-/// The OSI points XYZ2TrackPos's first round scans on the current road.
-const SEARCH_WINDOW: usize = 10;
-
-/// [`segment_choice`] over the segments starting at the vertices of `window` (all when `None`).
-fn segment_choice_in(road: &Road, x: f64, y: f64, z_input: f64, window: Option<(usize, usize)>) -> Option<(f64, f64)> {
     let scan = scan_of(road);
     let pts = &scan.pts;
     let n = pts.len();
     if n < 2 {
         return None;
     }
-    let (lo, hi) = window.map_or((0, n), |(lo, hi)| (lo.min(n - 1), hi.min(n)));
     let mut best = f64::INFINITY;
     let mut chosen: Option<usize> = None;
-    // The segments, and the last vertex alone (the scan's extra round) when the window reaches it.
-    for (a, b) in (lo..hi.min(n - 1)).map(|i| (i, i + 1)).chain((hi == n).then_some((n - 1, n - 1))) {
+    // The segments, and the last vertex alone (the scan's extra round).
+    for (a, b) in (0..n - 1).map(|i| (i, i + 1)).chain(std::iter::once((n - 1, n - 1))) {
         let (pa, pb) = (scan.pos[a], scan.pos[b]);
         let (cos_h, sin_h) = scan.dir[a];
         let cp = cos_h * (y - pa.1) - sin_h * (x - pa.0);
@@ -272,13 +251,40 @@ fn segment_choice_in(road: &Road, x: f64, y: f64, z_input: f64, window: Option<(
         }
     }
     let k = chosen?;
+    Some((s_from_vertex(road, &scan, k, x, y), best))
+}
+
+/// [`segment_s`] for a point on the road whose exact projection is at `s_near`, without the
+/// scan: XYZ2TrackPos's first round on the current road (a point within 5 m of where the
+/// position was, among the ten OSI points around it) finds that point inside the segment
+/// holding `s_near`.
+pub(crate) fn segment_s_near(road: &Road, x: f64, y: f64, s_near: f64) -> Option<f64> {
+    let scan = scan_of(road);
+    let n = scan.pts.len();
+    if n < 2 {
+        return None;
+    }
+    // The point lies inside the segment holding its exact s, the one the scan weighs nearest
+    // (the others are outside it and weigh 3 m more); its closer vertex decides.
+    let i = scan.pts.partition_point(|p| p.s <= s_near).saturating_sub(1).min(n - 2);
+    let d2 = |(px, py): (f64, f64)| (x - px).powi(2) + (y - py).powi(2);
+    let k = if d2(scan.pos[i]) < d2(scan.pos[i + 1]) { i } else { i + 1 };
+    Some(s_from_vertex(road, &scan, k, x, y))
+}
+
+/// The s XYZ2TrackPos interpolates for (x, y) from vertex `k`, the closest of the segment it
+/// chose, and its neighbour on the point's side (by angle between their normals, or along their
+/// line where the vertices' headings agree).
+fn s_from_vertex(road: &Road, scan: &Scan, k: usize, x: f64, y: f64) -> f64 {
+    let pts = &scan.pts;
+    let n = pts.len();
     // The s from the closest vertex and its neighbour on the point's side.
     let c = pts[k];
     let (nx, ny) = normal(c.h);
     let cross = nx * (y - c.y) - ny * (x - c.x);
     let (first, second) = if cross < 0.0 { (k, (k + 1).min(n - 1)) } else { (k.saturating_sub(1), k) };
     let (f, g) = (pts[first], pts[second]);
-    let s = if first == second {
+    if first == second {
         f.s
     } else {
         let s_norm = if (f.geometry_h - g.geometry_h).abs() < 1e-5 {
@@ -304,7 +310,7 @@ fn segment_choice_in(road: &Road, x: f64, y: f64, z_input: f64, window: Option<(
                 // Parallel normals: GetIntersectionOfTwoLineSegments refuses and leaves the
                 // intersection unset; esmini 3.6.0 then puts the point at the first vertex
                 // (measured: every point along such a segment gets its first vertex's s).
-                return Some((f.s, best));
+                return f.s;
             }
             let tt = ((g.x - f.x) * n1.1 - (g.y - f.y) * n1.0) / den;
             let (ix, iy) = (f.x + tt * n0.0, f.y + tt * n0.1);
@@ -325,6 +331,5 @@ fn segment_choice_in(road: &Road, x: f64, y: f64, z_input: f64, window: Option<(
         // Coincident points or parallel normals (hostile input): the first vertex.
         let s_norm = if s_norm.is_finite() { s_norm } else { 0.0 };
         ((1.0 - s_norm) * f.s + s_norm * g.s).clamp(0.0, road.length)
-    };
-    Some((s, best))
+    }
 }
