@@ -68,6 +68,10 @@ fn snap_lane(net: &RoadNetwork, lp: &mut LanePos, sidewalks: bool) {
 /// the one set on the internal position's road, so the direction (`dir`) is kept too. The
 /// internal position goes on along its own road. Also whether the point is on that road.
 fn attached_elsewhere(net: &RoadNetwork, en: &crate::entities::Entity, attached: &LanePos, sidewalks: bool) -> Option<(LanePos, bool)> {
+    // Inside a real lane away from the road's ends the search would keep the road: skip it.
+    if en.on_road && crate::roads::locate::stays_on_its_road(net, attached.road, attached.s) {
+        return None;
+    }
     let here = (attached.road, attached.s, attached.lane_id);
     let found = crate::roads::locate::world_to_lane_at(net, en.x, en.y, Some(en.z), Some((attached.road, attached.s)), Some(here))?;
     if found.road == attached.road {

@@ -125,6 +125,13 @@ fn junction_arm_at_end(net: &RoadNetwork, p: &LanePosition, current: Option<(usi
     super::junction_entry::entry_connector(net, road, lane_id, x, y)
 }
 
+/// Whether a point inside a real lane of `road` at `s` certainly stays on it in
+/// [`world_to_lane_at`] with that road current: it is on the road, and no junction arm can take
+/// it (they start at the ends, `junction_arm_at_end`; a centimetre spares rounding).
+pub(crate) fn stays_on_its_road(net: &RoadNetwork, road: usize, s: f64) -> bool {
+    net.roads.get(road).is_some_and(|r| s > ARM_REACH + 0.01 && s < r.length - ARM_REACH - 0.01)
+}
+
 /// XYZ2TrackPos: a point within the current road's s range and less than this beyond its
 /// lanes is inside it (`insideCurrentRoad`, "2 meter lateral slack").
 const CURRENT_ROAD_SLACK: f64 = 2.0;
