@@ -307,6 +307,10 @@ impl<'a> Sim<'a> {
         // XYZ2TrackPos re-attaches the position to the lane it is in, or, locked on its lane
         // (a looming controller's), to the lane nearest the target lane's centre (`locked_lane_id`).
         let locked = self.lane_locked(e);
+        // What moves the entity from its position reads the s XYZ2TrackPos leaves: a controller
+        // every step, the default controller after the last one. Elsewhere the exact s stands
+        // in for it (millimetres on a curve, in the trace's s column and road-frame conditions).
+        let segment_s_read = done || (self.any_controller && self.controllers_of(e).next().is_some());
         let en = &mut self.entities[e];
         // With a route esmini skips that re-attachment: the entity is in the target lane from
         // the first step, at the offset still to go (so an ACC no longer follows the vehicle
@@ -322,8 +326,10 @@ impl<'a> Sim<'a> {
                 en.lane = Some(other);
                 en.on_road = on_road;
                 attached = other;
-            } else if let Some(lp) = on_own_road_segment(net, en, &attached) {
-                en.lane = Some(lp);
+            } else if segment_s_read {
+                if let Some(lp) = on_own_road_segment(net, en, &attached) {
+                    en.lane = Some(lp);
+                }
             }
         }
         if locked && en.route.is_none() {
