@@ -82,12 +82,13 @@ pub(crate) fn world_to_lane_at(
     }
     // Off the current road, roads containing the point alike: one directly connected to the
     // current road (from its lane) first, then the network's order (XYZ2TrackPos).
-    let connected = current.map(|(road, _, lane_id)| super::junction_entry::directly_connected(net, road, lane_id));
-    let rank = |r: usize| u8::from(!connected.as_ref().is_some_and(|c| c.contains(&r)));
-    let found = match current {
-        Some(_) => net.world_to_lane_ranked(x, y, z, hint.map(|h| h.0), &surface_t, Some(&rank)),
-        None => net.world_to_lane_at_height(x, y, z, hint.map(|h| h.0), &surface_t),
+    // (The connected roads are listed only when a tie asks.)
+    let connected = std::cell::OnceCell::new();
+    let rank = |r: usize| {
+        let connected = current.map(|(road, _, lane_id)| connected.get_or_init(|| super::junction_entry::directly_connected(net, road, lane_id)));
+        u8::from(!connected.is_some_and(|c| c.contains(&r)))
     };
+    let found = net.world_to_lane_ranked(x, y, z, hint.map(|h| h.0), &surface_t, current.is_some().then_some(&rank as &dyn Fn(usize) -> u8));
     match (hint, found) {
         (None, Some(lp)) => Some(on_chosen_segment(net, lp, x, y, z.unwrap_or(0.0)).unwrap_or(lp)),
         _ => found.map(|p| offset_road_s(net, unshifted(net, p, x, y), x, y)),
@@ -99,10 +100,16 @@ pub(crate) fn world_to_lane_at(
 /// s shifted by about its distance from lane 0 times the offset's slope); elsewhere `lp`.
 fn offset_road_s(net: &RoadNetwork, lp: LanePosition, x: f64, y: f64) -> LanePosition {
     let Some(road) = net.roads.get(lp.road) else { return lp };
-    if road.lane_offsets.iter().all(|o| o.b == 0.0 && o.c == 0.0 && o.d == 0.0) {
+    if !lane_offset_varies(road) {
         return lp;
     }
     on_chosen_segment(net, lp, x, y, road.elevation_at(lp.s)).unwrap_or(lp)
+}
+
+/// Whether the road's laneOffset changes along it (a linear or higher term): lane 0 then runs
+/// tilted against the reference line.
+fn lane_offset_varies(road: &opendrive::Road) -> bool {
+    road.lane_offsets.iter().any(|o| o.b != 0.0 || o.c != 0.0 || o.d != 0.0)
 }
 
 /// How far from the end of its road a point is looked for on the junction arms starting
@@ -227,8 +234,7 @@ fn on_chosen_segment(net: &RoadNetwork, lp: LanePosition, x: f64, y: f64, z: f64
 pub(crate) fn segment_s_near(net: &RoadNetwork, road: usize, x: f64, y: f64, s_near: f64) -> Option<f64> {
     let r = net.roads.get(road)?;
     if let Some(g) = r.geometries.get(r.geometry_index_at(s_near)) {
-        let straight_lane0 = r.lane_offsets.iter().all(|o| o.b == 0.0 && o.c == 0.0 && o.d == 0.0);
-        if straight_lane0 && matches!(g.shape, opendrive::Shape::Line) && s_near - g.s >= 1.0 && g.s + g.length - s_near >= 1.0 {
+        if !lane_offset_varies(r) && matches!(g.shape, opendrive::Shape::Line) && s_near - g.s >= 1.0 && g.s + g.length - s_near >= 1.0 {
             return None;
         }
     }
