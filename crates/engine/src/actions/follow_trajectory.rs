@@ -201,7 +201,9 @@ impl<'a> Sim<'a> {
         // (initialHeadingSign_: against it when more than π/2 off): along a path whose headings
         // point forward the entity backs off the start and the action ends at once.
         let VertexHeadings { some: some_headings, all: all_headings, first: first_heading } = vertex_headings(traj);
-        let faces_vertex_headings = speed_sign < 0.0 && (all_headings || (s == 0.0 && first_heading));
+        // The vertex the start lies on gives the heading (esmini's IsHSetExplicitly).
+        let heading_given_at_start = all_headings || (s == 0.0 && first_heading);
+        let faces_vertex_headings = speed_sign < 0.0 && heading_given_at_start;
         if speed_sign < 0.0 && some_headings && !all_headings {
             let how = if faces_vertex_headings {
                 "the entity faces as its first vertex says and moves by how that heading lies to the path"
@@ -220,7 +222,7 @@ impl<'a> Sim<'a> {
         let p = path.pose_at(s);
         // esmini's Start: a timed trajectory's speed takes its sign from how the heading its
         // vertices give lies to the path (speedSign, only where the heading is explicit).
-        let timed_sign = if all_headings || (s == 0.0 && first_heading) { facing_sign(p.heading, path.true_heading_reaching(s)) } else { 1.0 };
+        let timed_sign = if heading_given_at_start { facing_sign(p.heading, path.true_heading_reaching(s)) } else { 1.0 };
         let (heading, heading_sign) = if faces_vertex_headings {
             (p.heading, facing_sign(p.heading, path.true_heading_at(s)))
         } else {
