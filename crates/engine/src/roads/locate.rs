@@ -91,7 +91,21 @@ pub(crate) fn world_to_lane_at(
     let found = net.world_to_lane_ranked(x, y, z, hint.map(|h| h.0), &surface_t, current.is_some().then_some(&rank as &dyn Fn(usize) -> u8));
     match (hint, found) {
         (None, Some(lp)) => Some(on_chosen_segment(net, lp, x, y, z.unwrap_or(0.0)).unwrap_or(lp)),
-        _ => found.map(|p| offset_road_s(net, unshifted(net, p, x, y), x, y)),
+        _ => found.map(|p| past_end_at_last_osi_point(net, offset_road_s(net, unshifted(net, p, x, y), x, y))),
+    }
+}
+
+/// A point beyond the end of the road it is attached to: XYZ2TrackPos gives it the s of the
+/// road's last OSI point (its "same point" case), which OpenDrive::SetLaneOSIPoints puts
+/// `SMALL_NUMBER / 2` short of the end; the projection stops at the end itself. So of two
+/// cars at a road's end, one driven past it (a ghost's follower, a trajectory) is that much
+/// nearer than one stopped there by a move along s, and an ACC takes it as its lead. (Before
+/// the start the first OSI point is the start: s 0 either way.)
+fn past_end_at_last_osi_point(net: &RoadNetwork, lp: LanePosition) -> LanePosition {
+    use crate::dynamics::ESMINI_SMALL_NUMBER as SMALL_NUMBER;
+    match net.roads.get(lp.road) {
+        Some(road) if !lp.is_on_road() && lp.s >= road.length => LanePosition { s: road.length - SMALL_NUMBER / 2.0, ..lp },
+        _ => lp,
     }
 }
 

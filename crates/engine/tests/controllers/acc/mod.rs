@@ -12,6 +12,7 @@ mod lane_change_on_route;
 mod lane_change_onto_opposite_road;
 mod lead_after_section_walk;
 mod lead_behind_wrapped_driving_direction;
+mod lead_driven_past_road_end;
 mod lead_stopped_at_road_end;
 mod leads_across_junctions;
 mod lookahead_same_road;
