@@ -128,13 +128,9 @@ fn centre_ds(net: &RoadNetwork, a: &Entity, b: &Entity, max: f64, free_space: bo
         (lb.s - la.s) * la.dir
     } else {
         let d = road_distance_within(net, la.road, la.s, lb.road, lb.s, max)?;
-        // Across roads the sign comes from which side of `a` `b` lies on along its heading.
-        let ahead = (b.x - a.x) * a.h.cos() + (b.y - a.y) * a.h.sin();
-        if ahead < 0.0 {
-            -d
-        } else {
-            d
-        }
+        // RoadPath::Calculate's sign (direction_, turned again for `a` facing against its
+        // lane's driving direction), as Position::Distance's
+        super::distance::signed_path_ds(net, a, b, d)?
     };
     if free_space {
         let ext = if ds >= 0.0 { 0.5 * a.bbox[3] + a.bbox[0] + 0.5 * b.bbox[3] - b.bbox[0] } else { 0.5 * a.bbox[3] - a.bbox[0] + 0.5 * b.bbox[3] + b.bbox[0] };

@@ -23,6 +23,12 @@ fn road_t(net: &RoadNetwork, e: &Entity) -> Option<(usize, f64, f64, f64)> {
 fn path_ds(net: &RoadNetwork, a: &Entity, b: &Entity) -> Option<f64> {
     let (la, lb) = (a.lane?, b.lane?);
     let d = crate::roads::road_distance::road_distance(net, la.road, la.s, lb.road, lb.s)?;
+    signed_path_ds(net, a, b, d)
+}
+
+/// `path_ds`'s sign for an unsigned road-path length `d` from `a` to `b` (on different roads).
+pub(crate) fn signed_path_ds(net: &RoadNetwork, a: &Entity, b: &Entity, d: f64) -> Option<f64> {
+    let (la, lb) = (a.lane?, b.lane?);
     // RoadPath::Calculate's direction: ahead (+) when the path leaves a's road by its end
     // and a faces along s, or by its start and a faces against s; behind (−) otherwise. A
     // trial move that far along the roads (the straightest arms) settles most pairs without

@@ -4,6 +4,7 @@ mod acceleration_curve;
 mod angle;
 mod basic;
 mod clearance_across_roads;
+mod clearance_across_roads_facing_against_lane;
 mod clearance_corners_across_road_end;
 mod clearance_free_space_corners;
 mod clearance_lane_across_link;
