@@ -141,7 +141,7 @@ impl<'a> Sim<'a> {
         } else {
             let path = path_ends(net, b.road, b.s, b.lane_id, a.road)?;
             // Position::Delta: lanes of A mapped along the path to B's road.
-            let ref_t = if path.lanes_flip { -tb } else { tb };
+            let ref_t = if path.dt_flips(net, a.road, a.s, b.lane_id) { -tb } else { tb };
             let a_forward = path.last_exit == ContactPoint::Start;
             // RoadPath::Calculate's direction: the path starts ahead of A (leaves A's road by
             // the end A faces) or behind it.

@@ -178,7 +178,7 @@ fn corner_delta(net: &RoadNetwork, h: f64, backwards: bool, pa: &LanePosition, p
     if crate::angles::angle_difference(h, drive_h) > std::f64::consts::FRAC_PI_2 {
         dist = -dist;
     }
-    Some((dist, if path.lanes_flip { pb.t + pa.t } else { pb.t - pa.t }))
+    Some((dist, if path.dt_flips(net, pb.road, pb.s, pa.lane_id) { pb.t + pa.t } else { pb.t - pa.t }))
 }
 
 /// Gaps from `a`'s box to the point at (`s`, `t`) on road `road`, `a` facing along s when `dir`

@@ -104,14 +104,30 @@ pub(crate) fn lane_carried(net: &RoadNetwork, a: usize, sa: f64, lane_a: i32, b:
     if a == b {
         return Some(lane_a);
     }
-    let path = path_ends(net, a, sa, lane_a, b)?;
-    let rb = net.roads.get(b)?;
-    let target = rb.section_index_at(sb);
-    let mut lane = LaneRef { road: b, section: section_at_end(rb, path.entry), lane: path.entry_lane };
-    while lane.lane != 0 && lane.section != target {
-        lane = net.lanes_across(lane, path.entry.opposite()).first().copied().filter(|l| l.road == b).unwrap_or(LaneRef { lane: 0, ..lane });
+    path_ends(net, a, sa, lane_a, b)?.carried_lane(net, b, sb)
+}
+
+impl PathEnds {
+    /// `lane_carried`'s lane on the path's last road `b` at s `sb`.
+    pub(crate) fn carried_lane(&self, net: &RoadNetwork, b: usize, sb: f64) -> Option<i32> {
+        let rb = net.roads.get(b)?;
+        let target = rb.section_index_at(sb);
+        let mut lane = LaneRef { road: b, section: section_at_end(rb, self.entry), lane: self.entry_lane };
+        while lane.lane != 0 && lane.section != target {
+            lane = net.lanes_across(lane, self.entry.opposite()).first().copied().filter(|l| l.road == b).unwrap_or(LaneRef { lane: 0, ..lane });
+        }
+        Some(lane.lane)
     }
-    Some(lane.lane)
+
+    /// Position::Delta's dt is tB + tA (not tB − tA) when SIGN(adjustedLaneIdA) differs from
+    /// SIGN(laneIdA), SIGN(0) = +1: a lane that does not continue onto `b` (carried lane 0)
+    /// turns the sum on for a start lane on the right (negative ids).
+    pub(crate) fn dt_flips(&self, net: &RoadNetwork, b: usize, sb: f64, lane_a: i32) -> bool {
+        match self.carried_lane(net, b, sb) {
+            Some(c) => (c < 0) != (lane_a < 0),
+            None => self.lanes_flip,
+        }
+    }
 }
 
 /// The lane `lane` continues into at the `end` of its road, section by section (the first

@@ -7,6 +7,7 @@ mod entity_frame;
 mod entity_frame_dead_end;
 mod jump_point_as_given;
 mod lane_path;
+mod reference_lane_unlinked;
 mod repeated;
 mod rigid_heading;
 mod rigid_right_angle;
