@@ -89,6 +89,11 @@ pub(crate) struct Entity {
     /// Teleported during this step: the jump is not travel (esmini's `DirtyBit::TELEPORT`
     /// skips the odometer and takes the velocity from speed and heading).
     pub teleported: bool,
+    /// esmini's last write of the position's orientation was absolute (SetInertiaPos,
+    /// SetHeading: EvaluateHPR with H_ABS, turned from the road by GetAngleDifference, in
+    /// [-π, π]); false after a move along the lane (SetLanePos: H_REL, the relative heading
+    /// held in [0, 2π)). Decides Object::pos_.GetH()'s bits at exactly ±π from the road.
+    pub heading_abs: bool,
     /// The end-of-road status an action's placement by a world point left this step
     /// (XYZ2TrackPos sets POS_STATUS_END_OF_ROAD anew), for the ACC's stop at a road's end.
     pub placed_end_status: Option<bool>,
@@ -214,6 +219,7 @@ impl Entity {
             active: true,
             appeared: false,
             teleported: false,
+            heading_abs: false,
             placed_end_status: None,
             parallel_lane: None,
             route: None,
@@ -234,6 +240,7 @@ impl Entity {
     /// Place the entity on a lane position, heading along the direction it faces plus `yaw_offset`.
     pub(crate) fn set_lane_pos(&mut self, net: &RoadNetwork, lp: LanePos) {
         self.lane = Some(lp);
+        self.heading_abs = false;
         if let Some(p) = lp.pose(net) {
             self.x = p.x;
             self.y = p.y;
@@ -266,6 +273,7 @@ impl Entity {
     /// between π/2 and 3π/2).
     pub(crate) fn set_heading_on_lane(&mut self, net: &RoadNetwork, h: f64) {
         self.h = wrap_2pi(h);
+        self.heading_abs = true;
         let Some(mut lp) = self.lane else { return };
         let Some(p) = lp.pose(net) else { return };
         let drift = self.drift(net, &lp);
@@ -345,6 +353,7 @@ impl Entity {
     /// `current`: the lane it was on (XYZ2TrackPos's current road).
     #[allow(clippy::too_many_arguments)]
     fn place_world(&mut self, net: Option<&RoadNetwork>, x: f64, y: f64, z: Option<f64>, h: f64, sidewalks: bool, prior_h_rel: f64, current: Option<LanePos>) {
+        self.heading_abs = true;
         self.x = x;
         self.y = y;
         self.h = wrap_2pi(h);
@@ -476,6 +485,24 @@ pub(crate) fn esmini_reported_heading(h: f64) -> f64 {
 /// car turns past a dead end.
 pub(crate) fn esmini_euler_heading(h_road: f64, h_rel: f64) -> f64 {
     crate::attitude::compose([h_road, 0.0, 0.0], [h_rel, 0.0, 0.0])[0]
+}
+
+/// Object::pos_.GetH() of entity `en` as its last orientation write left it: after an
+/// absolute one (SetInertiaPos, SetHeading: EvaluateHPR with H_ABS) the road's rotation
+/// composed with GetAngleDifference(h, road), in [-π, π]; after a move along the lane
+/// (SetLanePos: H_REL) with the relative heading esmini holds, in [0, 2π). Facing exactly
+/// against a road along π, the first is 0 and the second 2π (6.283185307179586), which decides
+/// the sign of the angle to a reference facing the other way (LatDistanceAction, entity frame).
+pub(crate) fn position_heading_by_mode(net: Option<&opendrive::RoadNetwork>, en: &Entity) -> f64 {
+    match net.zip(en.lane).and_then(|(net, lp)| lp.pose(net)) {
+        Some(p) => {
+            let rel = crate::angles::angle_difference(en.h, p.road_heading);
+            // H_REL: the relative heading esmini holds is in [0, 2π) (CalcRelAnglesFromRoadAndAbsAngles).
+            let rel = if en.heading_abs { rel } else { wrap_2pi(rel) };
+            esmini_euler_heading(p.road_heading, rel)
+        }
+        None => esmini_reported_heading(en.h),
+    }
 }
 
 /// Object::pos_.GetH() of entity `en`: its heading as esmini's position holds it, composed

@@ -207,6 +207,7 @@ impl<'a> Sim<'a> {
             en.yaw_offset = 0.0;
             if let (Some(lp), Some(pose)) = (en.lane, en.lane.and_then(|lp| lp.pose(net))) {
                 en.h = en.heading_on(net, &lp, &pose);
+                en.heading_abs = false;
             }
         }
         let missing_lane_sign = (internal_lane != target_lane).then_some(lane_sign);

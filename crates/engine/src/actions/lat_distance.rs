@@ -167,8 +167,8 @@ impl<'a> Sim<'a> {
     /// puts it, facing as it says, and attached to the lane it is over.
     fn step_lat_distance_entity(&mut self, e: usize, r: &LatDistanceRt) {
         let (Some(a), Some(b)) = (self.entities.get(e), self.entities.get(r.target)) else { return };
-        let actor = Pose { x: a.x, y: a.y, h: a.h };
-        let reference = Pose { x: b.x, y: b.y, h: b.h };
+        let actor = Pose { x: a.x, y: a.y, h: crate::entities::position_heading_by_mode(self.net, a) };
+        let reference = Pose { x: b.x, y: b.y, h: crate::entities::position_heading_by_mode(self.net, b) };
         let to = entity_frame_step(actor, reference, r.wanted, a.speed, r.max_acc, LARGE, self.dt);
         let net = self.net;
         let Some(en) = self.entities.get_mut(e) else { return };

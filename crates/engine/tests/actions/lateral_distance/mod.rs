@@ -5,6 +5,7 @@ mod across_roads;
 mod domain;
 mod entity_frame;
 mod entity_frame_dead_end;
+mod entity_frame_heading_against_road;
 mod jump_point_as_given;
 mod lane_path;
 mod reference_lane_unlinked;
