@@ -205,7 +205,10 @@ impl<'a> Sim<'a> {
                 // road, lane, s and offset the actor takes — near a junction another road.
                 let mut desired = None;
                 if let Some(q) = lp.pose(net) {
-                    let (x, y) = (en.x - q.road_heading.sin() * error, en.y + q.road_heading.cos() * error);
+                    // GetRoadH: Geometry::EvaluateDS's heading from GetHdg, the file's hdg in
+                    // [0, 2π) (GetAngleInInterval2PI): its sine and cosine to esmini's bits.
+                    let h_road = crate::angles::wrap_2pi(q.road_heading);
+                    let (x, y) = (en.x - h_road.sin() * error, en.y + h_road.cos() * error);
                     desired = Some((x, y));
                     if let Some(p) = crate::roads::locate::world_to_lane(net, x, y, None) {
                         let (lane_id, offset) = lane_snap::snap_located(net, &p, false);

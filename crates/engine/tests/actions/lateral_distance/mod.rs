@@ -6,6 +6,7 @@ mod domain;
 mod entity_frame;
 mod entity_frame_dead_end;
 mod entity_frame_heading_against_road;
+mod jump_across_negative_heading;
 mod jump_point_as_given;
 mod lane_path;
 mod reference_lane_unlinked;
