@@ -75,7 +75,11 @@ pub(crate) fn resolve_with_route(
             // entity's whole attitude, heading, pitch and roll (RotateVec3d): on a banked or
             // sloped road the offsets shrink horizontally.
             let (pitch, roll) = net.map_or((0.0, 0.0), |n| crate::attitude::surface_pitch_roll(n, e));
-            let [vx, vy, vz] = rotate_hpr(e.h, pitch, roll, [*dx, *dy, dz.unwrap_or(0.0)]);
+            // rel_pos_->GetH(): the heading esmini's position holds (EvaluateHPR: along ±y the
+            // gimbal guard turns it 1e-6 rad), so a dx along ±y lands dx·1e-6 aside. (The guard
+            // alone: elsewhere the held heading differs from `e.h` in its last bits only.)
+            let h_rel_pos = crate::entities::esmini_reported_heading(e.h);
+            let [vx, vy, vz] = rotate_hpr(h_rel_pos, pitch, roll, [*dx, *dy, dz.unwrap_or(0.0)]);
             Ok(Placement { x: e.x + vx, y: e.y + vy, z: dz.map(|_| e.z + vz), h, lane: None, world_left: false, h_rel: None })
         }
         Position::Lane { road_id, lane_id, s, offset, orientation } => {

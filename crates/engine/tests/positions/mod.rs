@@ -7,6 +7,7 @@ mod relative_across_junctions;
 mod relative_junction_tie;
 mod relative_lane_ds;
 mod relative_lane_missing_lane;
+mod relative_object_along_y;
 mod relative_object_on_a_banked_road;
 mod relative_position_on_a_banked_road;
 mod road_id_leading_number;
