@@ -246,9 +246,16 @@ impl<'a> Sim<'a> {
         })
     }
 
-    /// Queue a lane change to `nd.target_lane`; esmini's player server refuses a second one
-    /// while the previous is still listed.
+    /// Queue a lane change to `nd.target_lane`, unless one is queued already (it starts in the
+    /// next frame). esmini's player server ends an injected lane change of the entity still
+    /// running (PlayerServer::AddAction: "already ongoing …, stopping it") and lists the new one.
     fn nd_inject(&mut self, nd: &mut NaturalDriverRt) {
+        if nd.pending.is_none() {
+            if let Some((_, name)) = nd.lane_change.take() {
+                let time = self.time;
+                self.nd_event(time, &name, "running", "end", "complete");
+            }
+        }
         if nd.pending.is_none() && nd.lane_change.is_none() {
             let n: u32 = self
                 .controllers

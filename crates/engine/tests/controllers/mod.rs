@@ -24,6 +24,7 @@ mod natural_driver_additive;
 mod natural_driver_far_lead_held;
 mod natural_driver_junction_draw;
 mod natural_driver_keeps_heading;
+mod natural_driver_lane_change_replaced;
 mod natural_driver_lane_change_while_deleted;
 mod natural_driver_lanes_beside;
 mod natural_driver_leader_across_junction;
