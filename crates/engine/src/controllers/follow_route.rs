@@ -52,6 +52,7 @@ impl FollowRouteRt {
             scenario_index: 0,
             changing_lane: false,
             lane_change: None,
+            lane_change_placed: false,
         }
     }
 
@@ -134,8 +135,9 @@ pub(crate) fn route_waypoints(route: &routing::Route, scenario: &[(LaneSpot, Str
 
 /// The lane position esmini's controller sees: during its lane change esmini keeps the entity
 /// on the target lane with an offset (the trace's lane_id says so) until the change ends.
+/// LatLaneChangeAction::Start leaves the entity on its own lane; its first Step at speed moves it.
 fn route_lane(sim: &Sim, e: usize, f: &FollowRouteRt) -> Option<crate::roads::LanePos> {
-    f.lane_change.as_ref().map(|l| l.internal).or_else(|| sim.entities.get(e).and_then(|en| en.lane))
+    f.lane_change.as_ref().filter(|_| f.lane_change_placed).map(|l| l.internal).or_else(|| sim.entities.get(e).and_then(|en| en.lane))
 }
 
 /// esmini's `Position::GetDrivingDirectionRelativeRoad`: whether traffic in the entity's lane
@@ -219,13 +221,25 @@ impl<'a> Sim<'a> {
                 // entity) and steps it from the next one on, instead of the default controller.
                 if let Some(lc) = self.new_route_lane_change(net, e, next.lane, f.lane_change_time) {
                     f.lane_change = Some(lc);
+                    f.lane_change_placed = false;
                     created = true;
+                    // LatLaneChangeAction::Start (ControllerFollowRoute::ChangeLane, this step)
+                    // aligns the entity to the road at once: SetHeadingRelativeRoadDirection(0).
+                    if let Some(en) = self.entities.get_mut(e) {
+                        en.yaw_offset = 0.0;
+                        if let (Some(lp), Some(pose)) = (en.lane, en.lane.and_then(|lp| lp.pose(net))) {
+                            en.h = en.heading_on(net, &lp, &pose);
+                        }
+                    }
                 }
                 f.changing_lane = true;
             }
         }
         if !created {
             if let Some(mut lc) = f.lane_change.take() {
+                if self.entities.get(e).is_some_and(|en| en.speed.abs() >= crate::dynamics::ESMINI_SMALL_NUMBER) {
+                    f.lane_change_placed = true;
+                }
                 if self.step_lane_change(e, &mut lc) {
                     f.changing_lane = false;
                 } else {

@@ -17,6 +17,7 @@ mod first_active_controller_decides;
 mod follow_reference_speed;
 mod follow_reference_ties;
 mod follow_route;
+mod follow_route_lane_change_start;
 mod holds_lateral;
 mod looming;
 mod natural_driver;

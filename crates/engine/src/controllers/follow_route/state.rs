@@ -25,4 +25,7 @@ pub(crate) struct FollowRouteRt {
     pub(super) scenario_index: usize,
     pub(super) changing_lane: bool,
     pub(super) lane_change: Option<LaneChangeRt>,
+    /// The lane change has put the entity on its internal position (a Step at speed): only
+    /// then is esmini's entity on the change's target lane.
+    pub(super) lane_change_placed: bool,
 }
