@@ -102,6 +102,11 @@ pub(crate) struct Entity {
     pub parallel_lane: Option<(usize, i32, f64, f64)>,
     /// The route assigned by AssignRouteAction / AcquirePositionAction: junction choices follow it.
     pub route: Option<std::sync::Arc<routing::Route>>,
+    /// esmini's Route::ReplaceMinimalWaypoints found the route's first waypoint not directly
+    /// linked to the second (CalculcateWPDirWrtWP leaves its direction 0): every move along
+    /// the route fails ("Unexpected lack of connection in route"), so the default controller
+    /// stops the entity where it is (ScenarioEngine::defaultController, SetSpeed(0)).
+    pub route_broken: bool,
     /// The attitude its last placement by world pose found on a sloped or banked road
     /// (`place_world`), and the pose it was found for; see [`Entity::placed_pitch_roll`].
     pub placed_attitude: Option<PlacedAttitude>,
@@ -223,6 +228,7 @@ impl Entity {
             placed_end_status: None,
             parallel_lane: None,
             route: None,
+            route_broken: false,
             placed_attitude: None,
         }
     }

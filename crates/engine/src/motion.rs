@@ -60,6 +60,12 @@ impl<'a> Sim<'a> {
             }
             // ScenarioEngine::defaultController marks the speed as applied.
             en.speed_set = true;
+            if en.route_broken && en.route.is_some() {
+                // Position::MoveAlongS: the route move fails (ERROR_GENERIC, the route's first
+                // waypoint has no direction) before the entity moves; defaultController stops it.
+                en.speed = 0.0;
+                continue;
+            }
             match (net, en.lane) {
                 (Some(net), Some(mut lp)) => {
                     // esmini's own move: a junction tie is decided by its generator.

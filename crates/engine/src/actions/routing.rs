@@ -24,6 +24,7 @@ impl<'a> Sim<'a> {
                 self.tell_route_follower(e, route, &r);
                 if let Some(en) = self.entities.get_mut(e) {
                     en.route = Some(Arc::new(r));
+                    en.route_broken = false;
                 }
             }
             // esmini's Route::AddWaypoint marks a route without a way between two waypoints
@@ -39,6 +40,7 @@ impl<'a> Sim<'a> {
                 );
                 if let Some(en) = self.entities.get_mut(e) {
                     en.route = None;
+                    en.route_broken = false;
                 }
             }
         }
@@ -71,6 +73,7 @@ impl<'a> Sim<'a> {
                 self.tell_route_follower_waypoints(e, &[from, to], &r);
                 if let Some(en) = self.entities.get_mut(e) {
                     en.route = Some(Arc::new(r));
+                    en.route_broken = false;
                 }
             }
             Err(msg) => {
@@ -79,6 +82,7 @@ impl<'a> Sim<'a> {
                 // (Route::CheckValid), as if the entity had none.
                 if let Some(en) = self.entities.get_mut(e) {
                     en.route = None;
+                    en.route_broken = false;
                 }
             }
         }

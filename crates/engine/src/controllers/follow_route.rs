@@ -351,11 +351,23 @@ impl<'a> Sim<'a> {
     /// esmini's `Route::ReplaceMinimalWaypoints`: the route the default controller follows at
     /// junctions becomes the way from `a` to `b`.
     fn narrow_route(&mut self, net: &RoadNetwork, e: usize, a: LaneSpot, b: LaneSpot, forward: bool) {
+        // Route::CalculcateWPDirWrtWP gives the first waypoint a direction only when its road
+        // is the second's or links to it directly (Road::IsPredecessor / IsSuccessor: a road
+        // link, or a junction connection from it to that road). Without one the route is
+        // broken: Route::SetPathS fails at waypoint 0 on every move.
+        let linked = a.road == b.road || [ContactPoint::Start, ContactPoint::End].iter().any(|&c| next_roads(net, (a.road, c)).contains(&b.road));
+        if !linked {
+            if let Some(en) = self.entities.get_mut(e) {
+                en.route_broken = true;
+            }
+            return;
+        }
         let from = routing::Waypoint { road: a.road, lane: a.lane, s: a.s, along_s: Some(forward) };
         let to = routing::Waypoint { road: b.road, lane: b.lane, s: b.s, along_s: None };
         if let Ok(r) = routing::Route::plan(net, &[from, to], &[Strategy::Shortest, Strategy::Shortest], false) {
             if let Some(en) = self.entities.get_mut(e) {
                 en.route = Some(Arc::new(r));
+                en.route_broken = false;
             }
         }
     }
@@ -400,6 +412,7 @@ impl<'a> Sim<'a> {
                 en.speed_set = true;
             }
             en.route = None;
+            en.route_broken = false;
             en.controller_active = false;
         }
         f.active = false;

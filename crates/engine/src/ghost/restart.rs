@@ -75,6 +75,7 @@ impl<'a> Sim<'a> {
                 en.yaw_offset = src.yaw_offset;
                 en.parallel_lane = None;
                 en.route = src.route.clone();
+                en.route_broken = src.route_broken;
                 en.speed = src.speed;
             } else {
                 // A relative object position with no offsets: the entity's pose. It is a real

@@ -18,6 +18,7 @@ mod follow_reference_speed;
 mod follow_reference_ties;
 mod follow_route;
 mod follow_route_lane_change_start;
+mod follow_route_waypoints_not_linked;
 mod holds_lateral;
 mod looming;
 mod natural_driver;
