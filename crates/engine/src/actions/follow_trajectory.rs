@@ -258,6 +258,7 @@ impl<'a> Sim<'a> {
             elevated: elevated(traj),
             end_outside_times,
             clothoid_times,
+            true_heading_at: None,
         }))
     }
 
@@ -280,7 +281,15 @@ impl<'a> Sim<'a> {
         // entity's speed: its clock stands still (so its time stamps never end it) and the
         // speed stays the controller's.
         let speed_held = f.timing.is_some() && self.long_domain_overridden(e);
-        let heading_direction = if f.timing.is_some() { facing_sign(en.h, f.path.true_heading_reaching(old_s)) } else { 1.0 };
+        let heading_direction = if f.timing.is_some() {
+            let true_heading = match f.true_heading_at {
+                Some((s, h)) if s.to_bits() == old_s.to_bits() => h,
+                _ => f.path.true_heading_reaching(old_s),
+            };
+            facing_sign(en.h, true_heading)
+        } else {
+            1.0
+        };
         match f.timing.filter(|_| !speed_held) {
             None => {
                 let ds = direction * speed.abs() * dt;
@@ -341,6 +350,7 @@ impl<'a> Sim<'a> {
         // A clothoid's s may run below zero (clothoid_times); its pose stays at the start.
         let pose_s = if f.clothoid_times.is_some() { f.s.clamp(0.0, len) } else { f.s };
         let p = if at_end { f.path.end_pose() } else { f.path.pose_at(pose_s) };
+        f.true_heading_at = (!at_end && !f.path.is_polyline()).then_some((pose_s, p.heading));
         let (mut x, mut y) = (p.x, p.y);
         // The entity keeps facing the way it faced at the start (esmini's Move: turned by π
         // while the initial heading sign is negative), whatever the speed's sign now.

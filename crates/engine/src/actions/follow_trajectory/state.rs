@@ -34,4 +34,8 @@ pub(crate) struct FollowTrajectoryRt {
     /// maps a time in range to s = length · (t − 2·start) / (stop − start) (the start time
     /// taken off twice), kept unclamped for the speed while the pose is clamped to the path.
     pub clothoid_times: Option<(f64, f64)>,
+    /// The s and heading of the pose last evaluated on a path that is not a polyline: there
+    /// the heading is the path's own (esmini's GetHTrue after that evaluation), which the next
+    /// timed step's headingDirection reads back instead of evaluating the path again.
+    pub true_heading_at: Option<(f64, f64)>,
 }
