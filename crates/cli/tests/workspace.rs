@@ -1,7 +1,8 @@
 //! Rules of the workspace's own layout. Every crate's tests are one binary (`autotests = false`,
 //! `tests/tests.rs` declaring modules), so a test file no `mod` line reaches would never be
 //! compiled and its tests would silently stop running: every `.rs` file under a crate's `tests/`
-//! must be reachable from the crate's test targets.
+//! must be reachable from the crate's test targets. A target built without its unit-test
+//! harness (`test = false`, which spares CI a compile) must have no unit tests to lose.
 
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
@@ -93,4 +94,29 @@ fn every_test_file_is_compiled_into_a_test_binary() {
     }
     // the engine alone has more than 50 test files: the walk found the tree
     assert!(checked > 100, "{checked} test files checked");
+}
+
+#[test]
+fn a_target_without_a_test_harness_has_no_unit_tests() {
+    let crates = testkit::workspace_root().join("crates");
+    let mut checked = 0;
+    for e in std::fs::read_dir(&crates).expect("crates/").flatten() {
+        let krate = e.path();
+        let manifest = std::fs::read_to_string(krate.join("Cargo.toml")).unwrap_or_default();
+        if !manifest.lines().any(|l| l.trim() == "test = false") {
+            continue;
+        }
+        let mut files = BTreeSet::new();
+        rust_files(&krate.join("src"), &mut files);
+        let with_tests: Vec<_> =
+            files.iter().filter(|f| std::fs::read_to_string(f).is_ok_and(|t| t.contains("#[test]") || t.contains("#[cfg(test)]"))).collect();
+        assert!(
+            with_tests.is_empty(),
+            "{}: `test = false` in Cargo.toml, but these files have unit tests that would never run: {with_tests:?}",
+            krate.display()
+        );
+        checked += 1;
+    }
+    // the seven libraries without unit tests, and the Python module
+    assert!(checked >= 8, "{checked} crates checked");
 }
