@@ -256,6 +256,17 @@ impl Entity {
         }
     }
 
+    /// esmini's SetHeadingRelativeRoadDirection(0) (LatLaneChangeAction::Start's "align to
+    /// road"): no turn from the direction the entity faces along its lane, the heading evaluated
+    /// at once. Whether there was a lane pose to evaluate it on.
+    pub(crate) fn align_with_lane(&mut self, net: &RoadNetwork) -> bool {
+        self.yaw_offset = 0.0;
+        let Some(lp) = self.lane else { return false };
+        let Some(pose) = lp.pose(net) else { return false };
+        self.h = self.heading_on(net, &lp, &pose);
+        true
+    }
+
     /// The heading on lane position `lp` (at pose `p`): the direction it faces plus
     /// `yaw_offset`, plus the lane's drift (along a lane that widens or narrows the path drifts
     /// sideways; esmini's heading follows it).

@@ -204,9 +204,7 @@ impl<'a> Sim<'a> {
             // evaluates the heading at once (EvaluateHPR), facing the way the entity faced
             // along the road, so an entity standing still (whose Step then returns early) turns
             // to the road's direction already.
-            en.yaw_offset = 0.0;
-            if let (Some(lp), Some(pose)) = (en.lane, en.lane.and_then(|lp| lp.pose(net))) {
-                en.h = en.heading_on(net, &lp, &pose);
+            if en.align_with_lane(net) {
                 en.heading_abs = false;
             }
         }

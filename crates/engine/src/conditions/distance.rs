@@ -103,9 +103,11 @@ pub(crate) fn between(net: Option<&RoadNetwork>, a: &Entity, b: &Entity, cs: Coo
             // Position::Delta's dt across roads: b's t less a's, or plus it where the path
             // turns the lane ids around (a's lane mapped onto b's road changes sign)
             if kind == RelativeDistanceType::Lateral && !freespace {
-                return match a.lane.and_then(|la| crate::roads::road_path::path_ends(net, ra.0, ra.1, la.lane_id, rb.0)) {
-                    Some(path) if a.lane.is_some_and(|la| path.dt_flips(net, rb.0, rb.1, la.lane_id)) => rb.2 + ra.2,
-                    Some(_) => rb.2 - ra.2,
+                let flips =
+                    a.lane.and_then(|la| Some(crate::roads::road_path::path_ends(net, ra.0, ra.1, la.lane_id, rb.0)?.dt_flips(net, rb.0, rb.1, la.lane_id)));
+                return match flips {
+                    Some(true) => rb.2 + ra.2,
+                    Some(false) => rb.2 - ra.2,
                     None => LARGE_NUMBER,
                 };
             }

@@ -226,10 +226,7 @@ impl<'a> Sim<'a> {
                     // LatLaneChangeAction::Start (ControllerFollowRoute::ChangeLane, this step)
                     // aligns the entity to the road at once: SetHeadingRelativeRoadDirection(0).
                     if let Some(en) = self.entities.get_mut(e) {
-                        en.yaw_offset = 0.0;
-                        if let (Some(lp), Some(pose)) = (en.lane, en.lane.and_then(|lp| lp.pose(net))) {
-                            en.h = en.heading_on(net, &lp, &pose);
-                        }
+                        en.align_with_lane(net);
                     }
                 }
                 f.changing_lane = true;

@@ -255,8 +255,6 @@ impl<'a> Sim<'a> {
                 let time = self.time;
                 self.nd_event(time, &name, "running", "end", "complete");
             }
-        }
-        if nd.pending.is_none() && nd.lane_change.is_none() {
             let n: u32 = self
                 .controllers
                 .iter()
