@@ -73,12 +73,16 @@ fn test_roots(krate: &Path) -> Vec<PathBuf> {
     roots
 }
 
+/// The workspace's crate folders.
+fn crate_dirs() -> Vec<PathBuf> {
+    let crates = testkit::workspace_root().join("crates");
+    std::fs::read_dir(&crates).expect("crates/").flatten().map(|e| e.path()).collect()
+}
+
 #[test]
 fn every_test_file_is_compiled_into_a_test_binary() {
-    let crates = testkit::workspace_root().join("crates");
     let mut checked = 0;
-    for e in std::fs::read_dir(&crates).expect("crates/").flatten() {
-        let krate = e.path();
+    for krate in crate_dirs() {
         let mut files = BTreeSet::new();
         rust_files(&krate.join("tests"), &mut files);
         if files.is_empty() {
@@ -98,10 +102,8 @@ fn every_test_file_is_compiled_into_a_test_binary() {
 
 #[test]
 fn a_target_without_a_test_harness_has_no_unit_tests() {
-    let crates = testkit::workspace_root().join("crates");
     let mut checked = 0;
-    for e in std::fs::read_dir(&crates).expect("crates/").flatten() {
-        let krate = e.path();
+    for krate in crate_dirs() {
         let manifest = std::fs::read_to_string(krate.join("Cargo.toml")).unwrap_or_default();
         if !manifest.lines().any(|l| l.trim() == "test = false") {
             continue;
