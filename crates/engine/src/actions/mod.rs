@@ -226,7 +226,8 @@ impl<'a> Sim<'a> {
                 // controller to activate; without one (none assigned, or none of that name) it
                 // neither starts nor ends it, and its event runs on until the stop.
                 if found {
-                    ActionRt::Done
+                    // it calls End() from Start: complete before later triggers are evaluated
+                    ActionRt::EndedAtStart
                 } else {
                     ActionRt::Lingers
                 }

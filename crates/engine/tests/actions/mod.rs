@@ -1,5 +1,6 @@
 //! Each action, checked against hand computations or esmini 3.6.0's runs.
 
+mod activate_controller_ends_at_start;
 mod add_delete_entity;
 mod assign_controller_never_ends;
 mod assign_invalid_route;
