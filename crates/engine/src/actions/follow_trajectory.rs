@@ -229,8 +229,16 @@ impl<'a> Sim<'a> {
             (p.heading + if speed_sign < 0.0 { std::f64::consts::PI } else { 0.0 }, speed_sign)
         };
         let net = self.net;
+        let locked = self.lane_locked(e);
         let en = &mut self.entities[e];
-        en.set_world(net, p.x, p.y, None, heading);
+        if locked {
+            // ControllerLooming::Step's SetLockOnLane(true) is never cleared: XYZ2TrackPos keeps
+            // the lane at the lateral position of the lane before the placement.
+            let before = en.lane;
+            en.set_world_lane_locked(net, p.x, p.y, heading, before);
+        } else {
+            en.set_world(net, p.x, p.y, None, heading);
+        }
         en.placed_end_status = net.and_then(|n| en.end_status_from_world(n));
         if let Some(v) = start_speed {
             // Object::SetSpeed marks the speed as set (SPEED dirty bit): prepareGroundTruth
@@ -365,8 +373,14 @@ impl<'a> Sim<'a> {
             y += rest * p.heading.sin();
         }
         let net = self.net;
+        let locked = self.lane_locked(e);
         let en = &mut self.entities[e];
-        en.set_world(net, x, y, None, heading);
+        if locked {
+            let before = en.lane;
+            en.set_world_lane_locked(net, x, y, heading, before);
+        } else {
+            en.set_world(net, x, y, None, heading);
+        }
         // At the trajectory's end the position the default controller goes on from keeps the s
         // esmini's XYZ2TrackPos interpolated on the lane-0 OSI segment, not the exact
         // projection's (before a tight curve the two differ by a metre).
@@ -376,6 +390,18 @@ impl<'a> Sim<'a> {
                     if found.road == lp.road {
                         let sidewalks = en.kind == crate::entities::EntityKind::Pedestrian;
                         let (lane_id, offset) = crate::roads::lane_snap::snap_located(n, &found, sidewalks);
+                        // Locked on its lane (looming): the lane stays, the offset is measured from it.
+                        let kept = if locked && lane_id != lp.lane_id {
+                            n.roads.get(lp.road).and_then(|road| {
+                                let section = road.section_index_at(found.s);
+                                let snapped = crate::roads::lane_geometry::lane_borders(road, section, lane_id, found.s)?;
+                                let held = crate::roads::lane_geometry::lane_borders(road, section, lp.lane_id, found.s)?;
+                                Some((lp.lane_id, snapped.center + offset - held.center))
+                            })
+                        } else {
+                            None
+                        };
+                        let (lane_id, offset) = kept.unwrap_or((lane_id, offset));
                         en.lane = Some(crate::roads::LanePos { lane_id, s: found.s, offset, ..lp });
                     }
                 }

@@ -21,6 +21,7 @@ mod follow_route_lane_change_start;
 mod follow_route_waypoints_not_linked;
 mod holds_lateral;
 mod looming;
+mod looming_lock_through_trajectory;
 mod natural_driver;
 mod natural_driver_additive;
 mod natural_driver_far_lead_held;
