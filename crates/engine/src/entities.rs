@@ -298,7 +298,10 @@ impl Entity {
         // GetHdg; a road along +x written with hdg 2π has heading 0, whose sine is exactly 0).
         let h_road = wrap_2pi(p.road_heading);
         self.h = esmini_euler_heading(h_road, crate::angles::angle_difference(h, h_road));
-        let [h_rel, _, _] = crate::attitude::relative([h_road + drift, 0.0, 0.0], [self.h, 0.0, 0.0]);
+        // esmini's h_relative_ is taken from GetHRoad() (the reference line's heading, no turn
+        // from a changing superelevation) plus GetHOffset.
+        let h_ref = net.roads.get(lp.road).map_or(h_road, |rd| wrap_2pi(crate::roads::pose_memo::reference_pose(rd, lp.s.clamp(0.0, rd.length)).hdg));
+        let [h_rel, _, _] = crate::attitude::relative([h_ref + drift, 0.0, 0.0], [self.h, 0.0, 0.0]);
         let (quarter, three_quarters) = (std::f64::consts::FRAC_PI_2, 3.0 * std::f64::consts::FRAC_PI_2);
         lp.dir = if h_rel > quarter && h_rel < three_quarters { -1.0 } else { 1.0 };
         self.yaw_offset = wrap(self.h - drift - lp.facing_heading(&p));

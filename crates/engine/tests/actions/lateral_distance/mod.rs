@@ -7,6 +7,7 @@ mod entity_frame;
 mod entity_frame_dead_end;
 mod entity_frame_heading_against_road;
 mod jump_across_negative_heading;
+mod jump_on_banked_road;
 mod jump_point_as_given;
 mod lane_path;
 mod reference_lane_unlinked;
