@@ -112,9 +112,13 @@ impl PathEnds {
     pub(crate) fn carried_lane(&self, net: &RoadNetwork, b: usize, sb: f64) -> Option<i32> {
         let rb = net.roads.get(b)?;
         let target = rb.section_index_at(sb);
-        let mut lane = LaneRef { road: b, section: section_at_end(rb, self.entry), lane: self.entry_lane };
+        // Position::Delta carries the lane from the end of `b` it takes the path to enter by:
+        // the end the last road before `b` is left by (last_node->contactPoint), not `b`'s own
+        // contact point (a start left into b's end is carried from b's start).
+        let from = self.last_exit;
+        let mut lane = LaneRef { road: b, section: section_at_end(rb, from), lane: self.entry_lane };
         while lane.lane != 0 && lane.section != target {
-            lane = net.lanes_across(lane, self.entry.opposite()).first().copied().filter(|l| l.road == b).unwrap_or(LaneRef { lane: 0, ..lane });
+            lane = net.lanes_across(lane, from.opposite()).first().copied().filter(|l| l.road == b).unwrap_or(LaneRef { lane: 0, ..lane });
         }
         Some(lane.lane)
     }

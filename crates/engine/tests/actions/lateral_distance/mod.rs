@@ -11,6 +11,7 @@ mod jump_on_banked_road;
 mod jump_point_as_given;
 mod lane_path;
 mod reference_lane_unlinked;
+mod reference_on_road_entered_at_its_start;
 mod repeated;
 mod rigid_heading;
 mod rigid_right_angle;
