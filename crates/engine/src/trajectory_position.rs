@@ -69,7 +69,7 @@ pub(crate) fn placed_pose(net: Option<&RoadNetwork>, p: Pose) -> Pose {
 /// road's reference direction plus the lane's drift): composed with a sloped or banked road's
 /// rotation there (`attitude::on_road`, a fresh position; level beyond the road's end). None
 /// off the roads.
-fn held_heading(net: &RoadNetwork, x: f64, y: f64, h: Option<f64>) -> Option<f64> {
+pub(crate) fn held_heading(net: &RoadNetwork, x: f64, y: f64, h: Option<f64>) -> Option<f64> {
     let lp = crate::roads::locate::world_to_lane(net, x, y, None)?;
     let past_end = crate::roads::past_end::past_road_end(net, lp.road, lp.s, x, y);
     // Without a heading of its own the position keeps a fresh one's absolute 0 when it lies
@@ -93,5 +93,8 @@ fn held_heading(net: &RoadNetwork, x: f64, y: f64, h: Option<f64>) -> Option<f64
 fn strictly_past_end(net: &RoadNetwork, road: usize, s: f64, x: f64, y: f64) -> bool {
     let Some(r) = net.roads.get(road) else { return false };
     let (s, _, along) = opendrive::projection::project_onto_road(r, x, y, s);
-    (s >= r.length && along > 0.0) || (s <= 0.0 && along < 0.0)
+    // The last OSI point is at L - SMALL_NUMBER/2 (5e-7): a point beyond it, the road's very
+    // end included, is outside too.
+    let last_osi = r.length - 0.5 * crate::dynamics::ESMINI_SMALL_NUMBER;
+    (s + along > last_osi && s >= last_osi) || (s <= 0.0 && along < 0.0)
 }

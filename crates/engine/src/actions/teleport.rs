@@ -90,7 +90,16 @@ impl<'a> Sim<'a> {
                 }
             }
             _ => {
-                en.set_world_snapping(net, placement.x, placement.y, placement.z, placement.h, false);
+                // A world position without h faces the road's reference direction where it lies
+                // (esmini's OSCPositionWorld: heading relative to the road, 0), absolute 0 beyond
+                // the road's last OSI point (`held_heading`).
+                let h = match (pos, net) {
+                    (Position::World { h: None, .. }, Some(n)) => {
+                        crate::trajectory_position::held_heading(n, placement.x, placement.y, None).unwrap_or(placement.h)
+                    }
+                    _ => placement.h,
+                };
+                en.set_world_snapping(net, placement.x, placement.y, placement.z, h, false);
                 if let (Some(abs), Some(net)) = (asked, net) {
                     orient_as_relation(en, net, abs);
                 }

@@ -8,6 +8,7 @@ mod end_inside_junction;
 mod end_tolerance;
 mod follow;
 mod held_at_unlinked_start;
+mod nurbs_control_point_at_road_end;
 mod nurbs_control_point_past_road_end;
 mod nurbs_headings;
 mod nurbs_reverse_first_heading;
