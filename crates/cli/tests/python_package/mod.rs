@@ -20,7 +20,8 @@ mod closed_loop_example;
 mod export;
 mod osi;
 
-/// What the test environment holds besides the package (a change remakes the environment).
+/// What the test environment holds besides the package (a change remakes the environment);
+/// maturin, first, is installed alone before the others, for the wheel.
 const REQUIREMENTS: &str = "maturin>=1.7,<2\ncommonroad-io==2024.3\ndask==2026.8.0\ndistributed==2026.8.0\ngymnasium==1.4.0\n";
 
 struct Env {
@@ -60,27 +61,44 @@ fn setup() -> Result<Env, String> {
     let bin = venv.join("bin");
     let python = bin.join("python");
     let stamp = venv.join(".ready");
-    if std::fs::read_to_string(&stamp).ok().as_deref() != Some(REQUIREMENTS) {
+    let fresh = std::fs::read_to_string(&stamp).ok().as_deref() != Some(REQUIREMENTS);
+    if fresh {
         let _ = std::fs::remove_dir_all(&venv);
         run(Command::new("python3").args(["-m", "venv"]).arg(&venv))?;
-        let req = venv.join("requirements.txt");
-        std::fs::write(&req, REQUIREMENTS).map_err(|e| e.to_string())?;
-        run(Command::new(&python).args(["-m", "pip", "install", "--quiet", "--disable-pip-version-check", "-r"]).arg(&req))?;
-        std::fs::write(&stamp, REQUIREMENTS).map_err(|e| e.to_string())?;
+        // maturin first: the wheel below needs only it
+        let maturin = REQUIREMENTS.lines().next().unwrap_or_default();
+        run(Command::new(&python).args(["-m", "pip", "install", "--quiet", "--disable-pip-version-check", maturin]))?;
     }
 
     // `pip wheel .` as a user's `pip install .` does it (maturin from the environment),
-    // compiling into this run's target directory so that built crates are reused
+    // compiling into this run's target directory so that built crates are reused; in a fresh
+    // environment the other requirements install meanwhile (pip unpacks on one core while
+    // cargo builds on the others)
     let wheels = py.join("osc2cr-wheel");
     let _ = std::fs::remove_dir_all(&wheels);
     let path = format!("{}:{}", bin.display(), std::env::var("PATH").unwrap_or_default());
-    run(Command::new(&python)
-        .args(["-m", "pip", "wheel", "--quiet", "--disable-pip-version-check"])
-        .args(["--no-deps", "--no-build-isolation", "-w"])
-        .arg(&wheels)
-        .arg(&root)
-        .env("PATH", &path)
-        .env("CARGO_TARGET_DIR", target_dir()?))?;
+    let target = target_dir()?;
+    let (built, installed) = std::thread::scope(|scope| {
+        let rest = scope.spawn(|| -> Result<(), String> {
+            if !fresh {
+                return Ok(());
+            }
+            let req = venv.join("requirements.txt");
+            std::fs::write(&req, REQUIREMENTS).map_err(|e| e.to_string())?;
+            run(Command::new(&python).args(["-m", "pip", "install", "--quiet", "--disable-pip-version-check", "-r"]).arg(&req))?;
+            std::fs::write(&stamp, REQUIREMENTS).map_err(|e| e.to_string())
+        });
+        let built = run(Command::new(&python)
+            .args(["-m", "pip", "wheel", "--quiet", "--disable-pip-version-check"])
+            .args(["--no-deps", "--no-build-isolation", "-w"])
+            .arg(&wheels)
+            .arg(&root)
+            .env("PATH", &path)
+            .env("CARGO_TARGET_DIR", &target));
+        (built, rest.join().unwrap_or_else(|_| Err("the requirements' thread panicked".into())))
+    });
+    installed?;
+    built?;
     let wheel = std::fs::read_dir(&wheels)
         .map_err(|e| e.to_string())?
         .flatten()
@@ -332,8 +350,10 @@ fn readme_example(heading: &str) -> String {
     block.split("\n```").next().expect("closed").to_string()
 }
 
+// named to start among the first of this binary's Python tests (libtest starts them in name
+// order): its own environment takes a minute, which the others then share the cores with
 #[test]
-fn the_wheel_installs_without_rust_and_runs_the_readme_example() {
+fn a_wheel_installs_without_rust_and_runs_the_readme_example() {
     let Some(env) = env() else { return };
     let name = env.wheel.file_name().and_then(|n| n.to_str()).unwrap_or_default().to_string();
     // one wheel for every CPython >= 3.9
