@@ -228,17 +228,9 @@ impl<'a> Sim<'a> {
         } else {
             (p.heading + if speed_sign < 0.0 { std::f64::consts::PI } else { 0.0 }, speed_sign)
         };
+        self.place_on_trajectory(e, p.x, p.y, heading);
         let net = self.net;
-        let locked = self.lane_locked(e);
         let en = &mut self.entities[e];
-        if locked {
-            // ControllerLooming::Step's SetLockOnLane(true) is never cleared: XYZ2TrackPos keeps
-            // the lane at the lateral position of the lane before the placement.
-            let before = en.lane;
-            en.set_world_lane_locked(net, p.x, p.y, heading, before);
-        } else {
-            en.set_world(net, p.x, p.y, None, heading);
-        }
         en.placed_end_status = net.and_then(|n| en.end_status_from_world(n));
         if let Some(v) = start_speed {
             // Object::SetSpeed marks the speed as set (SPEED dirty bit): prepareGroundTruth
@@ -372,15 +364,9 @@ impl<'a> Sim<'a> {
             x += rest * p.heading.cos();
             y += rest * p.heading.sin();
         }
+        let locked = self.place_on_trajectory(e, x, y, heading);
         let net = self.net;
-        let locked = self.lane_locked(e);
         let en = &mut self.entities[e];
-        if locked {
-            let before = en.lane;
-            en.set_world_lane_locked(net, x, y, heading, before);
-        } else {
-            en.set_world(net, x, y, None, heading);
-        }
         // At the trajectory's end the position the default controller goes on from keeps the s
         // esmini's XYZ2TrackPos interpolated on the lane-0 OSI segment, not the exact
         // projection's (before a tight curve the two differ by a metre).
@@ -535,5 +521,23 @@ fn start_speed(s: f64, vertices: Option<&[(f64, f64, f64, f64)]>) -> f64 {
         }
         (Some(a), _) => a.2,
         _ => 0.0,
+    }
+}
+
+impl Sim<'_> {
+    /// Puts entity `e` at (x, y) on its trajectory: on its lane when a looming controller has
+    /// locked it there (ControllerLooming::Step's SetLockOnLane(true) is never cleared, so
+    /// XYZ2TrackPos keeps the lane and measures the offset from it), else as a fresh world
+    /// position. Whether it was locked.
+    fn place_on_trajectory(&mut self, e: usize, x: f64, y: f64, heading: f64) -> bool {
+        let (net, locked) = (self.net, self.lane_locked(e));
+        let en = &mut self.entities[e];
+        if locked {
+            let before = en.lane;
+            en.set_world_lane_locked(net, x, y, heading, before);
+        } else {
+            en.set_world(net, x, y, None, heading);
+        }
+        locked
     }
 }

@@ -98,7 +98,8 @@ pub(crate) fn path_ends(net: &RoadNetwork, a: usize, sa: f64, lane_a: i32, b: us
 
 /// Position::Delta's lane of (road `a`, s `sa`, lane `lane_a`) on road `b` at s `sb`: the same
 /// lane on one road; else the lane the path to `b` enters it by, carried across `b`'s lane
-/// sections to `sb` (Road::GetConnectedLaneIdAtS), 0 where the lane does not continue; `None`
+/// sections to `sb` (Road::GetConnectedLaneIdAtS) from the end esmini takes
+/// ([`PathEnds::carried_lane`]), 0 where the lane does not continue; `None`
 /// where no path joins the roads.
 pub(crate) fn lane_carried(net: &RoadNetwork, a: usize, sa: f64, lane_a: i32, b: usize, sb: f64) -> Option<i32> {
     if a == b {
@@ -112,9 +113,10 @@ impl PathEnds {
     pub(crate) fn carried_lane(&self, net: &RoadNetwork, b: usize, sb: f64) -> Option<i32> {
         let rb = net.roads.get(b)?;
         let target = rb.section_index_at(sb);
-        // Position::Delta carries the lane from the end of `b` it takes the path to enter by:
-        // the end the last road before `b` is left by (last_node->contactPoint), not `b`'s own
-        // contact point (a start left into b's end is carried from b's start).
+        // Position::Delta carries the lane across `b` from the end last_node->contactPoint
+        // names: the end by which the path leaves the road before `b`, not the end by which it
+        // enters `b` (entered at its end from a road left by its start, the lane is carried
+        // from `b`'s start).
         let from = self.last_exit;
         let mut lane = LaneRef { road: b, section: section_at_end(rb, from), lane: self.entry_lane };
         while lane.lane != 0 && lane.section != target {
