@@ -300,7 +300,7 @@ impl Entity {
         self.h = esmini_euler_heading(h_road, crate::angles::angle_difference(h, h_road));
         // esmini's h_relative_ is taken from GetHRoad() (the reference line's heading, no turn
         // from a changing superelevation) plus GetHOffset.
-        let h_ref = net.roads.get(lp.road).map_or(h_road, |rd| wrap_2pi(crate::roads::pose_memo::reference_pose(rd, lp.s.clamp(0.0, rd.length)).hdg));
+        let h_ref = lp.reference_heading(net).map_or(h_road, wrap_2pi);
         let [h_rel, _, _] = crate::attitude::relative([h_ref + drift, 0.0, 0.0], [self.h, 0.0, 0.0]);
         let (quarter, three_quarters) = (std::f64::consts::FRAC_PI_2, 3.0 * std::f64::consts::FRAC_PI_2);
         lp.dir = if h_rel > quarter && h_rel < three_quarters { -1.0 } else { 1.0 };

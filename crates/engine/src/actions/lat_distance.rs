@@ -208,7 +208,7 @@ impl<'a> Sim<'a> {
                     // GetRoadH: Geometry::EvaluateDS's heading from GetHdg, the file's hdg in
                     // [0, 2π) (GetAngleInInterval2PI): its sine and cosine to esmini's bits.
                     // (the reference line's own heading: no turn from a changing superelevation)
-                    let h_ref = net.roads.get(lp.road).map_or(q.road_heading, |rd| crate::roads::pose_memo::reference_pose(rd, lp.s.clamp(0.0, rd.length)).hdg);
+                    let h_ref = lp.reference_heading(net).unwrap_or(q.road_heading);
                     let h_road = crate::angles::wrap_2pi(h_ref);
                     let (x, y) = (en.x - h_road.sin() * error, en.y + h_road.cos() * error);
                     desired = Some((x, y));

@@ -178,9 +178,7 @@ impl<'a> Sim<'a> {
                 // the reference line's heading (esmini's GetHRoad, set from the geometry alone):
                 // on a banked road without the turn the changing roll gives the entity's own
                 // heading (`LanePose::road_heading` has it), which the angle then measures
-                let reference_heading = |lp: &crate::roads::LanePos, net: &opendrive::RoadNetwork| {
-                    net.roads.get(lp.road).map_or(0.0, |r| crate::roads::pose_memo::reference_pose(r, lp.s.clamp(0.0, r.length)).hdg)
-                };
+                let reference_heading = |lp: &crate::roads::LanePos, net: &opendrive::RoadNetwork| lp.reference_heading(net).unwrap_or(0.0);
                 let frame = match (angle_type, coordinate_system.unwrap_or(CoordinateSystem::World), self.net, e.lane) {
                     (A::Heading, CoordinateSystem::Road, Some(net), Some(lp)) => reference_heading(&lp, net),
                     (A::Heading, CoordinateSystem::Lane, Some(net), Some(lp)) => {

@@ -31,6 +31,14 @@ pub(crate) struct LanePose {
 }
 
 impl LanePos {
+    /// The reference line's heading at the position's s (esmini's GetHRoad, set from the
+    /// geometry alone: no turn from a changing superelevation, which `LanePose::road_heading`
+    /// has); `None` if the road is missing.
+    pub(crate) fn reference_heading(&self, net: &RoadNetwork) -> Option<f64> {
+        let road = net.roads.get(self.road)?;
+        Some(super::pose_memo::reference_pose(road, self.s.clamp(0.0, road.length)).hdg)
+    }
+
     /// World pose; `None` if the road or lane is missing.
     pub(crate) fn pose(&self, net: &RoadNetwork) -> Option<LanePose> {
         let road = net.roads.get(self.road)?;
