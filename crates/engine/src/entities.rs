@@ -256,6 +256,13 @@ impl Entity {
         }
     }
 
+    /// Gives the entity `route` (or none) in place of the one it had: a new route is not broken
+    /// (`route_broken` belongs to the route it replaces).
+    pub(crate) fn set_route(&mut self, route: Option<std::sync::Arc<routing::Route>>) {
+        self.route = route;
+        self.route_broken = false;
+    }
+
     /// esmini's SetHeadingRelativeRoadDirection(0) (LatLaneChangeAction::Start's "align to
     /// road"): no turn from the direction the entity faces along its lane, the heading evaluated
     /// at once. Whether there was a lane pose to evaluate it on.

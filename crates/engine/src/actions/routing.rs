@@ -23,8 +23,7 @@ impl<'a> Sim<'a> {
                 }
                 self.tell_route_follower(e, route, &r);
                 if let Some(en) = self.entities.get_mut(e) {
-                    en.route = Some(Arc::new(r));
-                    en.route_broken = false;
+                    en.set_route(Some(Arc::new(r)));
                 }
             }
             // esmini's Route::AddWaypoint marks a route without a way between two waypoints
@@ -39,8 +38,7 @@ impl<'a> Sim<'a> {
                     ),
                 );
                 if let Some(en) = self.entities.get_mut(e) {
-                    en.route = None;
-                    en.route_broken = false;
+                    en.set_route(None);
                 }
             }
         }
@@ -72,8 +70,7 @@ impl<'a> Sim<'a> {
             Ok(r) => {
                 self.tell_route_follower_waypoints(e, &[from, to], &r);
                 if let Some(en) = self.entities.get_mut(e) {
-                    en.route = Some(Arc::new(r));
-                    en.route_broken = false;
+                    en.set_route(Some(Arc::new(r)));
                 }
             }
             Err(msg) => {
@@ -81,8 +78,7 @@ impl<'a> Sim<'a> {
                 // The action's route replaces the old one even so; invalid, it is ignored
                 // (Route::CheckValid), as if the entity had none.
                 if let Some(en) = self.entities.get_mut(e) {
-                    en.route = None;
-                    en.route_broken = false;
+                    en.set_route(None);
                 }
             }
         }

@@ -363,8 +363,7 @@ impl<'a> Sim<'a> {
         let to = routing::Waypoint { road: b.road, lane: b.lane, s: b.s, along_s: None };
         if let Ok(r) = routing::Route::plan(net, &[from, to], &[Strategy::Shortest, Strategy::Shortest], false) {
             if let Some(en) = self.entities.get_mut(e) {
-                en.route = Some(Arc::new(r));
-                en.route_broken = false;
+                en.set_route(Some(Arc::new(r)));
             }
         }
     }
@@ -408,8 +407,7 @@ impl<'a> Sim<'a> {
                 en.speed = 0.0;
                 en.speed_set = true;
             }
-            en.route = None;
-            en.route_broken = false;
+            en.set_route(None);
             en.controller_active = false;
         }
         f.active = false;
